@@ -1,0 +1,53 @@
+"""Command-line interface ``fem-racket``: thin wrappers that parse, call the library, print.
+
+Each sub-command lives in its own module exposing ``register(subparsers)``; the parser sets
+``args.func(args) -> int``. Bad input prints one line to stderr and exits with code 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import sys
+from collections.abc import Sequence
+
+from .. import __version__
+from ..validation import InputError
+from . import modes, simulate
+
+__all__ = ["main"]
+
+#: Sub-command modules, in the order ``--help`` lists them.
+COMMANDS = (simulate, modes)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The top-level parser with every sub-command registered."""
+    parser = argparse.ArgumentParser(
+        prog="fem-racket",
+        description="Finite-element simulation of a tennis ball striking a racket frame "
+        "(Kawazoe & Kanda 1997).",
+    )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for module in COMMANDS:
+        module.register(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the CLI; returns the exit code (0 ok, 2 bad input)."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help
+        return int(exc.code or 0)
+    logging.basicConfig(
+        level=logging.INFO if args.verbose else logging.WARNING, format="%(message)s"
+    )
+    try:
+        return int(args.func(args))
+    except InputError as exc:
+        print(f"fem-racket {args.command}: error: {exc}", file=sys.stderr)
+        return 2

@@ -1,0 +1,55 @@
+"""``fem-racket modes``: free-free mass properties, natural frequencies and vibration nodes."""
+
+from __future__ import annotations
+
+import argparse
+
+from ..modal import mode_nodes
+from .common import add_frame_options, build_model, print_json
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``modes`` command."""
+    p = sub.add_parser("modes", help="free-free modal analysis of the frame")
+    add_frame_options(p)
+    p.add_argument(
+        "--count",
+        type=int,
+        default=4,
+        metavar="N",
+        help="number of flexible modes to report (default 4)",
+    )
+    p.add_argument("--json", action="store_true", help="print a JSON object")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Compute and print the modal analysis."""
+    from ..validation import InputError
+
+    if args.count < 1:
+        raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
+    model = build_model(args)
+    fm = model.modes(args.count)
+    props = fm.props
+    nodes = [mode_nodes(model.fe, fm.shapes[:, k]).tolist() for k in range(fm.omega.size)]
+    data = {
+        "mass_kg": props.mass,
+        "cg_x_over_l": props.cg_over_length,
+        "cg_m": props.cg,
+        "inertia_cg_kg_m2": props.inertia,
+        "length_m": props.length,
+        "elements": model.mesh.n_elements,
+        "frequencies_hz": fm.frequencies.tolist(),
+        "nodes_x_over_l": nodes,
+    }
+    if args.json:
+        print_json(data)
+        return 0
+    print(f"{'mass':<28} {props.mass:>12.4f} kg")
+    print(f"{'centre of gravity':<28} {props.cg_over_length:>12.4f} x/L ({props.cg * 1e3:.1f} mm)")
+    print(f"{'inertia about CG':<28} {props.inertia:>12.6f} kg m^2")
+    print(f"{'mode':>4} {'frequency [Hz]':>16}  nodes [x/L]")
+    for k, (f, nd) in enumerate(zip(fm.frequencies, nodes, strict=True), start=1):
+        print(f"{k:>4} {f:>16.2f}  " + ", ".join(f"{x:.3f}" for x in nd))
+    return 0

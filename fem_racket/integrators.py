@@ -1,0 +1,280 @@
+"""Integrators of the coupled system, all behind one signature.
+
+``solver(system, *, separation, output_step, t_max, rtol, atol) -> Trajectory``
+
+- ``exact``: closed-form solution of the linear system in modal coordinates. The rigid-body
+  modes are eliminated through the spring deflection delta, leaving a reduced state
+  ``z = [delta, eta_f, delta', eta_f']`` with ``z' = A z`` and no zero eigenvalue::
+
+      delta'' = -mu F + sum_f a_f omega_f^2 eta_f,   mu = 1/m_B + sum_k a_k^2
+      eta_f'' = -omega_f^2 eta_f + a_f F,            F = K_CB delta + C_CB delta'
+
+  so ``z(t) = V exp(Lambda t) V^-1 z0`` and ``F(t) = sum_j f_j exp(lambda_j t)``. The impulse
+  J = int F and its integral P = int J are summed in closed form, giving the ball
+  (u_B = V_B0 t - P/m_B) and rigid modes (eta_r = a_r P). The separation time is the first sign
+  change of the event function on a fine grid, refined by Brent's method on the closed form.
+- ``cvode``: SUNDIALS CVODE (BDF, scikit-sundae) with a dense Jacobian and a root-finding event.
+- ``bdf``: scipy ``solve_ivp`` BDF with a terminal event, the fallback of ``cvode``.
+
+The BDF paths accept either basis (``modal`` or the full ``physical`` FE system).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .system import CoupledSystem, Trajectory
+from .validation import InputError, check_choice
+
+__all__ = ["SOLVERS", "NoSeparationError", "get_solver", "solve_bdf", "solve_cvode", "solve_exact"]
+
+Solver = Callable[..., Trajectory]
+
+
+class NoSeparationError(InputError):
+    """The ball did not leave the strings within the time limit."""
+
+
+def _no_separation(t_max: float) -> NoSeparationError:
+    return NoSeparationError(
+        f"t_max = {t_max:g} s is not enough: the ball did not separate within it; "
+        "raise t_max (it must exceed the contact time)"
+    )
+
+
+def output_times(step: float | None, t_end: float) -> np.ndarray:
+    """Uniform times 0, step, 2 step, ... below ``t_end``, then ``t_end`` itself [s].
+
+    With ``step`` None only the two end points are returned.
+    """
+    if step is None:
+        return np.array([0.0, t_end])
+    t = np.arange(0.0, t_end, step)
+    if t_end - t[-1] < 1e-9 * step:
+        t = t[:-1]
+    return np.append(t, t_end)
+
+
+class _ModalClosedForm:
+    """Closed-form evaluation of the linear modal system at arbitrary times."""
+
+    def __init__(self, system: CoupledSystem) -> None:
+        if system.basis != "modal":
+            raise InputError(
+                f"basis = {system.basis!r} is not allowed with solver 'exact': must be 'modal'"
+            )
+        om = system.omega
+        self.mb = system.ball_mass
+        self.v0 = system.speed
+        self.a = -system.h[1:]
+        self.rigid = om == 0.0
+        af, wf2 = self.a[~self.rigid], om[~self.rigid] ** 2
+        k, c = system.kcb, system.ccb
+        mu = 1.0 / self.mb + float(np.sum(self.a**2))
+        n = af.size + 1
+        A = np.zeros((2 * n, 2 * n))
+        A[:n, n:] = np.eye(n)
+        A[n, 0], A[n, n] = -mu * k, -mu * c
+        A[n, 1:n] = af * wf2
+        A[n + 1 :, 0], A[n + 1 :, n] = af * k, af * c
+        A[n + 1 :, 1:n] = -np.diag(wf2)
+        lam, V = np.linalg.eig(A)
+        z0 = np.zeros(2 * n)
+        z0[n] = self.v0
+        coef = np.linalg.solve(V, z0)
+        self.n, self.lam, self.V, self.coef = n, lam, V, coef
+        self.fvec = (k * V[0] + c * V[n]) * coef
+        self.k, self.c = k, c
+
+    def event(self, separation: str) -> Callable[[np.ndarray], np.ndarray]:
+        """Vectorised event function of time (delta, or F)."""
+        if separation == "displacement":
+            w = self.V[0] * self.coef
+        else:
+            w = (self.k * self.V[0] + self.c * self.V[self.n]) * self.coef
+        lam = self.lam
+        return lambda t: (np.exp(np.multiply.outer(t, lam)) @ w).real
+
+    def states(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Coordinates [u_B, eta] and their rates at times ``t``."""
+        lt = np.multiply.outer(t, self.lam)
+        E = np.exp(lt)
+        z = ((E * self.coef) @ self.V.T).real
+        with np.errstate(invalid="ignore", divide="ignore"):
+            em1 = np.expm1(lt)
+        J = (em1 / self.lam) @ self.fvec
+        P = ((em1 - lt) / self.lam**2) @ self.fvec
+        J, P = J.real, P.real
+        n = self.n
+        nt, m = t.size, self.a.size
+        x, v = np.empty((nt, m + 1)), np.empty((nt, m + 1))
+        x[:, 0] = self.v0 * t - P / self.mb
+        v[:, 0] = self.v0 - J / self.mb
+        x[:, 1:][:, self.rigid] = np.outer(P, self.a[self.rigid])
+        v[:, 1:][:, self.rigid] = np.outer(J, self.a[self.rigid])
+        x[:, 1:][:, ~self.rigid] = z[:, 1:n]
+        v[:, 1:][:, ~self.rigid] = z[:, n + 1 :]
+        # Self-check: u_B - w(x_i) must equal the reduced state's delta.
+        delta = x[:, 0] - x[:, 1:] @ self.a
+        scale = max(float(np.max(np.abs(x[:, 0]))), 1e-300)
+        if np.max(np.abs(delta - z[:, 0])) > 1e-7 * scale:
+            raise RuntimeError(
+                "the exact solution is ill-conditioned for this case; use solver 'cvode'"
+            )
+        return x, v
+
+
+def solve_exact(
+    system: CoupledSystem,
+    *,
+    separation: str = "displacement",
+    output_step: float | None = 1e-5,
+    t_max: float | None = None,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+) -> Trajectory:
+    """Closed-form (eigen-solution) path; see the module docstring. Tolerances are unused."""
+    check_choice("separation", separation, ("displacement", "force"))
+    cf = _ModalClosedForm(system)
+    g = cf.event(separation)
+    t_est = system.contact_time_estimate()
+    t_max = 20.0 * t_est if t_max is None else t_max
+    t0 = 0.0
+    while t0 < t_max:
+        grid = np.linspace(t0, min(t0 + 2.0 * t_est, t_max), 513)
+        vals = g(grid)
+        start = 1 if t0 == 0.0 else 0
+        falls = np.flatnonzero((vals[start:-1] > 0.0) & (vals[start + 1 :] <= 0.0))
+        if falls.size:
+            i = falls[0] + start
+            if vals[i + 1] == 0.0:
+                tc = float(grid[i + 1])
+            else:
+                tc = brentq(
+                    lambda s: float(g(np.array([s]))[0]),
+                    grid[i],
+                    grid[i + 1],
+                    xtol=1e-15,
+                    rtol=4 * np.finfo(float).eps,
+                )
+            t = output_times(output_step, tc)
+            x, v = cf.states(t)
+            return Trajectory(t, x, v)
+        t0 = grid[-1]
+    raise _no_separation(t_max)
+
+
+def _bdf_setup(
+    system: CoupledSystem, separation: str, output_step: float | None, t_max: float | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    check_choice("separation", separation, ("displacement", "force"))
+    A = system.state_matrix
+    c = system.event_vector(separation)
+    t_est = system.contact_time_estimate()
+    t_max = 20.0 * t_est if t_max is None else t_max
+    step = t_est / 200.0 if output_step is None else output_step
+    tspan = np.arange(0.0, t_max + 0.5 * step, step)
+    return A, c, tspan, system.initial_state()
+
+
+def _trajectory(system: CoupledSystem, t: np.ndarray, y: np.ndarray, keep_all: bool) -> Trajectory:
+    n = system.size
+    if not keep_all:
+        t, y = t[[0, -1]], y[[0, -1]]
+    return Trajectory(np.asarray(t), y[:, :n].copy(), y[:, n:].copy())
+
+
+def solve_cvode(
+    system: CoupledSystem,
+    *,
+    separation: str = "displacement",
+    output_step: float | None = 1e-5,
+    t_max: float | None = None,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+) -> Trajectory:
+    """SUNDIALS CVODE (BDF) through scikit-sundae, dense constant Jacobian, root-found event."""
+    from sksundae.cvode import CVODE
+
+    A, c, tspan, y0 = _bdf_setup(system, separation, output_step, t_max)
+
+    def rhs(t: float, y: np.ndarray, yp: np.ndarray) -> None:
+        yp[:] = A @ y
+
+    def jac(t: float, y: np.ndarray, yp: np.ndarray, JJ: np.ndarray) -> None:
+        JJ[:, :] = A
+
+    def events(t: float, y: np.ndarray, ev: np.ndarray) -> None:
+        ev[0] = c @ y
+
+    events.terminal = [True]
+    events.direction = [-1]
+    solver = CVODE(
+        rhs,
+        method="BDF",
+        rtol=rtol,
+        atol=atol,
+        jacfn=jac,
+        eventsfn=events,
+        num_events=1,
+        max_num_steps=100000,
+    )
+    sol = solver.solve(tspan, y0)
+    if not sol.success:
+        raise RuntimeError(f"CVODE failed: {sol.message}")
+    if sol.t_events is None or len(sol.t_events) == 0:
+        raise _no_separation(float(tspan[-1]))
+    return _trajectory(system, sol.t, sol.y, output_step is not None)
+
+
+def solve_bdf(
+    system: CoupledSystem,
+    *,
+    separation: str = "displacement",
+    output_step: float | None = 1e-5,
+    t_max: float | None = None,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+) -> Trajectory:
+    """scipy ``solve_ivp`` BDF with a constant Jacobian and a terminal event."""
+    from scipy.integrate import solve_ivp
+
+    A, c, tspan, y0 = _bdf_setup(system, separation, output_step, t_max)
+
+    def event(t: float, y: np.ndarray) -> float:
+        return float(c @ y)
+
+    event.terminal = True
+    event.direction = -1
+    sol = solve_ivp(
+        lambda t, y: A @ y,
+        (0.0, float(tspan[-1])),
+        y0,
+        method="BDF",
+        t_eval=tspan,
+        events=event,
+        jac=lambda t, y: A,
+        rtol=rtol,
+        atol=atol,
+    )
+    if sol.status == -1:
+        raise RuntimeError(f"scipy BDF failed: {sol.message}")
+    if sol.t_events[0].size == 0:
+        raise _no_separation(float(tspan[-1]))
+    t = np.append(sol.t, sol.t_events[0][0])
+    y = np.vstack([sol.y.T, sol.y_events[0][0]])
+    if t.size > 1 and t[-1] - t[-2] < 1e-12:
+        t, y = np.delete(t, -2), np.delete(y, -2, axis=0)
+    return _trajectory(system, t, y, output_step is not None)
+
+
+#: Solver name -> function, all with the signature of :func:`solve_exact`.
+SOLVERS: dict[str, Solver] = {"exact": solve_exact, "cvode": solve_cvode, "bdf": solve_bdf}
+
+
+def get_solver(name: str) -> Solver:
+    """The integrator called ``name`` (one of :data:`SOLVERS`)."""
+    return SOLVERS[check_choice("solver", name, SOLVERS)]

@@ -1,0 +1,241 @@
+"""Model parameters: frame segments, ball, ball/string law, impact; the paper's presets.
+
+All quantities in SI. Positions along the frame are measured from the grip end.
+
+The compound ball/string system (Kawazoe & Kanda 1997, section 2.1) is a linear spring-dashpot
+``F = K_CB * delta + C_CB * d(delta)/dt`` with damping ratio
+``zeta = C_CB / (2 sqrt(m_B K_CB))``. The clamped-frame coefficient of restitution ``e`` fixes
+``zeta`` through eqs (1)-(4): ``e = exp(-pi zeta / sqrt(1 - zeta**2))``, i.e.
+``zeta = -ln e / sqrt(pi**2 + ln(e)**2)`` (0.0592 for e = 0.83).
+
+``K_CB`` depends on impact speed. The paper states three points (section 2.1.1): 2.74e4 N/m at
+20 m/s, 5.0e4 N/m at 30 m/s and 8.33e4 N/m at 40 m/s. Between them we interpolate linearly in
+log K - log V (a piecewise power law through all three points); outside 20-40 m/s the power law
+of the nearest end segment is extended.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from .validation import InputError, check_positive, check_range
+
+__all__ = [
+    "DEFAULT_BALL_MASS",
+    "PAPER_CLAMPED_COR",
+    "PAPER_KCB_POINTS",
+    "Ball",
+    "Frame",
+    "Impact",
+    "LinearContact",
+    "Segment",
+    "cor_from_zeta",
+    "kcb_from_speed",
+    "rigid_frame",
+    "standard_frame",
+    "zeta_from_cor",
+]
+
+#: Ball mass [kg]. The paper does not print it; the rules allow 56.0-59.4 g.
+DEFAULT_BALL_MASS = 0.057
+#: Clamped-frame coefficient of restitution of ball on strings, eq (4).
+PAPER_CLAMPED_COR = 0.83
+#: (impact speed [m/s], K_CB [N/m]) stated in section 2.1.1 of the paper.
+PAPER_KCB_POINTS = ((20.0, 2.74e4), (30.0, 5.0e4), (40.0, 8.33e4))
+#: EI2 / EI1 of the paper's stepped beam (section 2.2).
+EI_RATIO = 0.88
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A uniform piece of the frame.
+
+    Parameters
+    ----------
+    length : float
+        Segment length [m].
+    EI : float
+        Bending rigidity [N m^2].
+    rhoA : float
+        Mass per unit length [kg/m].
+    """
+
+    length: float
+    EI: float
+    rhoA: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "length", check_positive("segment length", self.length, "m"))
+        object.__setattr__(self, "EI", check_positive("EI", self.EI, "N m^2"))
+        object.__setattr__(self, "rhoA", check_positive("rhoA", self.rhoA, "kg/m"))
+
+
+@dataclass(frozen=True)
+class Frame:
+    """A free-free stepped beam: segments listed from the grip end to the tip.
+
+    Parameters
+    ----------
+    segments : tuple of Segment
+        At least one segment.
+    """
+
+    segments: tuple[Segment, ...]
+
+    def __post_init__(self) -> None:
+        segments = tuple(self.segments)
+        if not segments:
+            raise InputError("segments = () is not allowed: must hold at least one Segment")
+        for seg in segments:
+            if not isinstance(seg, Segment):
+                raise InputError(f"segments item {seg!r} is not allowed: must be a Segment")
+        object.__setattr__(self, "segments", segments)
+
+    @property
+    def length(self) -> float:
+        """Total length L [m]."""
+        return float(sum(s.length for s in self.segments))
+
+    @property
+    def steps(self) -> np.ndarray:
+        """Coordinates of the segment boundaries including both ends [m]."""
+        return np.concatenate([[0.0], np.cumsum([s.length for s in self.segments])])
+
+    def scaled(self, ei_factor: float = 1.0, rhoa_factor: float = 1.0) -> Frame:
+        """Return a frame with every segment's EI and rhoA multiplied by the given factors."""
+        check_positive("ei_factor", ei_factor)
+        check_positive("rhoa_factor", rhoa_factor)
+        return Frame(
+            tuple(replace(s, EI=s.EI * ei_factor, rhoA=s.rhoA * rhoa_factor) for s in self.segments)
+        )
+
+
+def standard_frame(ei1: float = 146.0, ei2: float | None = None) -> Frame:
+    """The paper's stepped beam (section 2.2): L = 680 mm, step at 204 mm from the grip.
+
+    Parameters
+    ----------
+    ei1 : float
+        Grip-side bending rigidity EI1 [N m^2]; the paper's standard racket has 146.
+    ei2 : float, optional
+        Top-side rigidity EI2 [N m^2]; defaults to 0.88 * EI1 as in the paper (128.5 for 146).
+
+    Returns
+    -------
+    Frame
+        Grip side 0.204 m with rhoA1 = 0.696 kg/m, top side 0.476 m with rhoA2 = 0.458 kg/m.
+    """
+    ei1 = check_positive("ei1", ei1, "N m^2")
+    ei2 = EI_RATIO * ei1 if ei2 is None else check_positive("ei2", ei2, "N m^2")
+    return Frame((Segment(0.204, ei1, 0.696), Segment(0.476, ei2, 0.458)))
+
+
+def rigid_frame() -> Frame:
+    """The paper's 'rigid' frame: EI1 = 9999 N m^2, EI2 = 0.88 EI1, same masses."""
+    return standard_frame(9999.0)
+
+
+@dataclass(frozen=True)
+class Ball:
+    """The ball as a point mass.
+
+    Parameters
+    ----------
+    mass : float
+        m_B [kg]; default 0.057 (an assumption: the paper does not print it).
+    """
+
+    mass: float = DEFAULT_BALL_MASS
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "mass", check_positive("ball mass", self.mass, "kg"))
+
+
+def zeta_from_cor(cor: float) -> float:
+    """Damping ratio giving clamped-frame COR ``cor`` (from eqs 1-4).
+
+    ``zeta = -ln e / sqrt(pi^2 + ln^2 e)``; 0.83 gives 0.0592.
+    """
+    e = check_range("clamped COR", cor, 0.0, 1.0, include_low=False)
+    le = math.log(e)
+    return -le / math.sqrt(math.pi**2 + le**2)
+
+
+def cor_from_zeta(zeta: float) -> float:
+    """Clamped-frame COR for damping ratio ``zeta`` (eqs 1-2): exp(-pi zeta / sqrt(1 - zeta^2))."""
+    z = check_range("zeta", zeta, 0.0, 1.0, include_high=False)
+    return math.exp(-math.pi * z / math.sqrt(1.0 - z**2))
+
+
+def kcb_from_speed(speed: float) -> float:
+    """K_CB [N/m] at impact speed ``speed`` [m/s] by piecewise log-log interpolation.
+
+    Passes through the paper's 2.74e4 (20 m/s), 5.0e4 (30 m/s) and 8.33e4 N/m (40 m/s); below
+    20 or above 40 m/s the power law of the end segment is extended.
+    """
+    v = check_positive("speed", speed, "m/s")
+    logv = np.log([p[0] for p in PAPER_KCB_POINTS])
+    logk = np.log([p[1] for p in PAPER_KCB_POINTS])
+    x = math.log(v)
+    i = int(np.clip(np.searchsorted(logv, x) - 1, 0, len(logv) - 2))
+    slope = (logk[i + 1] - logk[i]) / (logv[i + 1] - logv[i])
+    return float(math.exp(logk[i] + slope * (x - logv[i])))
+
+
+@dataclass(frozen=True)
+class LinearContact:
+    """Linear compound ball/string spring-dashpot.
+
+    Parameters
+    ----------
+    stiffness : float
+        K_CB [N/m].
+    zeta : float
+        Damping ratio C_CB / (2 sqrt(m_B K_CB)), in [0, 1).
+    """
+
+    stiffness: float
+    zeta: float = field(default_factory=lambda: zeta_from_cor(PAPER_CLAMPED_COR))
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "stiffness", check_positive("kcb", self.stiffness, "N/m"))
+        object.__setattr__(
+            self, "zeta", check_range("zeta", self.zeta, 0.0, 1.0, include_high=False)
+        )
+
+    @classmethod
+    def for_speed(
+        cls, speed: float, *, zeta: float | None = None, clamped_cor: float = PAPER_CLAMPED_COR
+    ) -> LinearContact:
+        """K_CB from the impact speed (:func:`kcb_from_speed`); zeta given or from a clamped COR."""
+        z = zeta_from_cor(clamped_cor) if zeta is None else zeta
+        return cls(kcb_from_speed(speed), z)
+
+    def damping(self, ball_mass: float) -> float:
+        """C_CB = 2 zeta sqrt(m_B K_CB) [N s/m]."""
+        return 2.0 * self.zeta * math.sqrt(ball_mass * self.stiffness)
+
+
+@dataclass(frozen=True)
+class Impact:
+    """Where and how fast the ball strikes.
+
+    Parameters
+    ----------
+    position : float
+        Impact point as x/L from the grip end, in [0, 1].
+    speed : float
+        Ball speed V_B0 [m/s] towards the stationary frame, > 0.
+    """
+
+    position: float
+    speed: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(
+            self, "position", check_range("position", self.position, 0.0, 1.0, unit="x/L")
+        )
+        object.__setattr__(self, "speed", check_positive("speed", self.speed, "m/s"))

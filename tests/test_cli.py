@@ -1,0 +1,121 @@
+"""The CLI, called in-process: JSON contracts, tables with units, exit code 2 on bad input."""
+
+import json
+
+import pytest
+
+from fem_racket.cli import main
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_simulate_json_contract(capsys):
+    code, out, _ = run(capsys, "simulate", "--speed", "20", "--position", "0.75", "--json")
+    assert code == 0
+    data = json.loads(out)
+    for key in (
+        "cor",
+        "contact_time_s",
+        "rebound_speed_m_s",
+        "peak_force_n",
+        "solver",
+        "elements",
+        "position_x_over_l",
+        "speed_m_s",
+    ):
+        assert key in data
+    assert data["solver"] == "exact"
+    assert data["elements"] == 20
+    assert 0.3 < data["cor"] < 0.5
+    assert data["rebound_speed_m_s"] == pytest.approx(data["cor"] * 20.0)
+
+
+def test_simulate_table_has_units(capsys):
+    code, out, _ = run(capsys, "simulate", "--speed", "30", "--position", "0.6", "--ei1", "300")
+    assert code == 0
+    assert "coefficient of restitution" in out
+    assert "ms" in out and "m/s" in out and " N" in out
+
+
+def test_simulate_options_reach_the_library(capsys):
+    _, a, _ = run(
+        capsys,
+        "simulate",
+        "--json",
+        "--solver",
+        "cvode",
+        "--separation",
+        "force",
+        "--ei1",
+        "500",
+        "--ei2",
+        "300",
+        "--ball-mass",
+        "0.058",
+        "--kcb",
+        "30000",
+        "--zeta",
+        "0.05",
+        "--elements",
+        "10",
+    )
+    data = json.loads(a)
+    assert data["solver"] == "cvode"
+    assert data["separation"] == "force"
+    assert data["elements"] == 10
+    assert data["kcb_n_m"] == 30000.0
+    assert data["zeta"] == 0.05
+    assert data["ball_mass_kg"] == 0.058
+
+
+def test_modes_json_contract(capsys):
+    code, out, _ = run(capsys, "modes", "--json")
+    assert code == 0
+    data = json.loads(out)
+    assert data["mass_kg"] == pytest.approx(0.360, abs=5e-4)
+    assert data["cg_x_over_l"] == pytest.approx(0.453, abs=5e-4)
+    assert data["frequencies_hz"][:2] == pytest.approx([122.1, 337.2], abs=0.05)
+    assert data["frequencies_hz"] == sorted(data["frequencies_hz"])
+    assert len(data["nodes_x_over_l"][0]) == 2 and len(data["nodes_x_over_l"][1]) == 3
+
+
+def test_modes_table(capsys):
+    code, out, _ = run(capsys, "modes")
+    assert code == 0
+    assert "122.14" in out and "Hz" in out and "kg" in out
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        (["simulate", "--speed", "0"], "speed"),
+        (["simulate", "--speed", "nan"], "speed"),
+        (["simulate", "--speed", "inf"], "speed"),
+        (["simulate", "--position", "1.5"], "position"),
+        (["simulate", "--position", "-0.1"], "position"),
+        (["simulate", "--zeta", "1"], "zeta"),
+        (["simulate", "--zeta", "-0.2"], "zeta"),
+        (["simulate", "--ei1", "-146"], "ei1"),
+        (["simulate", "--ei1", "0"], "ei1"),
+        (["simulate", "--ei2", "nan"], "ei2"),
+        (["simulate", "--ball-mass", "0"], "ball mass"),
+        (["simulate", "--kcb", "-1"], "kcb"),
+        (["simulate", "--elements", "1"], "elements"),
+        (["simulate", "--modes", "0"], "modes"),
+        (["simulate", "--solver", "euler"], "--solver"),
+        (["simulate", "--speed", "fast"], "--speed"),
+        (["modes", "--count", "0"], "count"),
+        (["nonsense"], "invalid choice"),
+    ],
+)
+def test_bad_input_exits_2_without_traceback(capsys, argv, needle):
+    code, out, err = run(capsys, *argv)
+    assert code == 2
+    assert needle in err
+    assert "Traceback" not in err
+    lines = [ln for ln in err.splitlines() if "error" in ln]
+    assert len(lines) == 1
