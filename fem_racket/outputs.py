@@ -1,0 +1,80 @@
+"""Safe output files: atomic writes, no silent overwrite, provenance.
+
+Every file the library or CLI writes goes through :func:`atomic_output`: the content is written
+to a temporary name in the destination folder and renamed into place only when complete, so an
+interrupted run never leaves a half-written file. :func:`provenance` is the metadata every output
+carries (package version, date, parameters, solver and tolerances).
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import os
+import platform
+import tempfile
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any
+
+from .validation import InputError
+
+__all__ = ["atomic_output", "check_output_path", "provenance"]
+
+
+def check_output_path(path: str | os.PathLike, *, overwrite: bool = False) -> Path:
+    """Validate an output file path before any work is done.
+
+    Raises :class:`InputError` if the file exists and ``overwrite`` is False, or if its folder
+    cannot be created or written. Creates the folder if needed.
+    """
+    path = Path(path)
+    if path.exists() and not overwrite:
+        raise InputError(f"output = '{path}' already exists: pass --overwrite to replace it")
+    if path.is_dir():
+        raise InputError(f"output = '{path}' is a folder: must be a file path")
+    folder = path.parent if str(path.parent) else Path(".")
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"output folder = '{folder}' cannot be created: {exc.strerror}") from None
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise InputError(f"output folder = '{folder}' is not writable")
+    return path
+
+
+@contextmanager
+def atomic_output(path: str | os.PathLike, *, overwrite: bool = False) -> Iterator[Path]:
+    """Yield a temporary path beside ``path``; rename it to ``path`` when the block succeeds.
+
+    The temporary file keeps the suffix of ``path`` so writers that pick a format by suffix
+    (meshio, xarray, matplotlib) work unchanged. On any exception it is removed.
+    """
+    path = check_output_path(path, overwrite=overwrite)
+    fd, tmp_name = tempfile.mkstemp(
+        prefix=f".{path.stem}.", suffix=f".part{path.suffix}", dir=path.parent
+    )
+    os.close(fd)
+    tmp = Path(tmp_name)
+    try:
+        yield tmp
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
+
+
+def provenance(parameters: Mapping[str, Any] | None = None) -> dict[str, Any]:
+    """Metadata for an output file: package version, UTC date, platform and ``parameters``."""
+    from . import __version__
+
+    out: dict[str, Any] = {
+        "software": "fem_racket",
+        "version": __version__,
+        "created_utc": _dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
+        "python": platform.python_version(),
+        "source": "Kawazoe & Kanda (1997), JSME Int. J. C 40(1)",
+    }
+    if parameters:
+        out["parameters"] = dict(parameters)
+    return out
