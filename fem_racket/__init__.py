@@ -6,10 +6,12 @@ ball-racket system", JSME Int. J. C 40(1).
 
 from importlib.metadata import PackageNotFoundError, version
 
+from .exact import free_free_frequencies
 from .forms import FrameFE, assemble
+from .hermite import assemble_closed_form
 from .impact import ImpactResult, simulate
 from .integrators import SOLVERS, NoSeparationError
-from .mesh import FrameMesh, frame_mesh, read_mesh, write_mesh
+from .mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh, read_mesh, write_mesh
 from .modal import FreeModes, MassProperties, free_modes, mass_properties, mode_nodes
 from .model import FrameModel
 from .params import (
@@ -24,6 +26,7 @@ from .params import (
     standard_frame,
     zeta_from_cor,
 )
+from .refine import RefinementStudy, refinement_study
 from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact
 from .validation import InputError
 
@@ -47,18 +50,24 @@ __all__ = [
     "LinearContact",
     "MassProperties",
     "NoSeparationError",
+    "RefinementStudy",
     "RigidImpact",
     "Segment",
     "__version__",
     "assemble",
+    "assemble_closed_form",
     "clamped_impact",
     "cor_from_zeta",
+    "frame_from_mesh",
     "frame_mesh",
+    "free_free_frequencies",
     "free_modes",
     "kcb_from_speed",
+    "graded_mesh",
     "mass_properties",
     "mode_nodes",
     "read_mesh",
+    "refinement_study",
     "rigid_frame",
     "rigid_impact",
     "simulate",

@@ -18,7 +18,15 @@ import numpy as np
 from .params import Frame
 from .validation import InputError
 
-__all__ = ["FrameMesh", "frame_mesh", "read_mesh", "write_mesh"]
+__all__ = [
+    "FrameMesh",
+    "frame_from_mesh",
+    "frame_mesh",
+    "graded_mesh",
+    "insert_nodes",
+    "read_mesh",
+    "write_mesh",
+]
 
 
 @dataclass(frozen=True, eq=False)
@@ -65,8 +73,8 @@ class FrameMesh:
             if np.any(bad):
                 i = int(np.argmax(bad))
                 raise InputError(
-                    f"mesh cell data {name} = {arr[i]!r} {unit} in cell {i} is not allowed: "
-                    "must be a finite number > 0"
+                    f"mesh cell data {name} = {float(arr[i])!r} {unit} in cell {i} "
+                    f"(x = {p[i]:g}..{p[i + 1]:g} m) is not allowed: must be a finite number > 0"
                 )
         p = p - p[0]
         for name, arr in (("points", p), ("EI", ei), ("rhoA", ra)):
@@ -88,6 +96,36 @@ class FrameMesh:
         return FrameMesh(self.points, self.EI * ei_factor, self.rhoA)
 
 
+def _check_elements(frame: Frame, elements: int) -> None:
+    n_seg = len(frame.segments)
+    if isinstance(elements, bool) or not isinstance(elements, (int, np.integer)):
+        raise InputError(f"elements = {elements!r} is not allowed: must be an integer >= {n_seg}")
+    if elements < n_seg:
+        raise InputError(
+            f"elements = {elements} is not allowed: must be an integer >= {n_seg} "
+            "(one per frame segment)"
+        )
+
+
+def _mesh_segments(frame: Frame, elements: int, spacing) -> FrameMesh:
+    """Cells shared among segments by length; ``spacing(n)`` gives n+1 points on [0, 1]."""
+    _check_elements(frame, elements)
+    lengths = np.array([s.length for s in frame.segments])
+    counts = _share(elements, lengths)
+    pts = [np.zeros(1)]
+    ei, ra = [], []
+    steps = frame.steps
+    for k, (seg, n) in enumerate(zip(frame.segments, counts, strict=True)):
+        inner = steps[k] + seg.length * spacing(int(n))[1:]
+        inner[-1] = steps[k + 1]  # the step itself, bit for bit
+        pts.append(inner)
+        ei.append(np.full(n, seg.EI))
+        ra.append(np.full(n, seg.rhoA))
+    points = np.concatenate(pts)
+    points[-1] = frame.length
+    return FrameMesh(points, np.concatenate(ei), np.concatenate(ra))
+
+
 def frame_mesh(frame: Frame, elements: int = 20, extra_points: Sequence[float] = ()) -> FrameMesh:
     """Mesh a stepped frame with a node at every section step.
 
@@ -106,28 +144,46 @@ def frame_mesh(frame: Frame, elements: int = 20, extra_points: Sequence[float] =
     -------
     FrameMesh
     """
-    n_seg = len(frame.segments)
-    if isinstance(elements, bool) or not isinstance(elements, (int, np.integer)):
-        raise InputError(f"elements = {elements!r} is not allowed: must be an integer >= {n_seg}")
-    if elements < n_seg:
-        raise InputError(
-            f"elements = {elements} is not allowed: must be an integer >= {n_seg} "
-            "(one per frame segment)"
-        )
-    lengths = np.array([s.length for s in frame.segments])
-    counts = _share(elements, lengths)
-    pts = [np.zeros(1)]
-    ei, ra = [], []
-    x0 = 0.0
-    for seg, n in zip(frame.segments, counts, strict=True):
-        pts.append(x0 + seg.length * np.arange(1, n + 1) / n)
-        ei.append(np.full(n, seg.EI))
-        ra.append(np.full(n, seg.rhoA))
-        x0 += seg.length
-    points = np.concatenate(pts)
-    points[-1] = frame.length
-    mesh = FrameMesh(points, np.concatenate(ei), np.concatenate(ra))
+    mesh = _mesh_segments(frame, elements, lambda n: np.arange(n + 1) / n)
     return insert_nodes(mesh, extra_points)
+
+
+def graded_mesh(
+    frame: Frame,
+    elements: int = 20,
+    grading: float = 4.0,
+    extra_points: Sequence[float] = (),
+) -> FrameMesh:
+    """Mesh a stepped frame with cells graded towards every section step and both free ends.
+
+    Inside each segment the nodes are the image of a uniform grid s_j = j/n under the smooth map
+    ``x(s) = s - c sin(2 pi s) / (2 pi)``, ``c = (grading - 1) / (grading + 1)``: the cells at
+    the segment ends are ``grading`` times shorter than those in its middle, and neighbouring
+    cells differ by a factor that tends to 1 as n grows, so a sequence of graded meshes keeps the
+    convergence order of uniform ones. Every step stays a node.
+
+    Parameters
+    ----------
+    frame : Frame
+    elements : int
+        Total number of cells (at least one per segment), shared among segments by length.
+    grading : float
+        Ratio of the largest to the smallest cell in a segment (>= 1; 1 is uniform).
+    extra_points : sequence of float
+        Positions x/L that must also be nodes (see :func:`frame_mesh`).
+    """
+    from .validation import check_finite
+
+    g = check_finite("grading", grading)
+    if g < 1.0:
+        raise InputError(f"grading = {grading!r} is not allowed: must be a finite number >= 1")
+    c = (g - 1.0) / (g + 1.0)
+
+    def spacing(n: int) -> np.ndarray:
+        s = np.arange(n + 1) / n
+        return s - c * np.sin(2.0 * np.pi * s) / (2.0 * np.pi)
+
+    return insert_nodes(_mesh_segments(frame, elements, spacing), extra_points)
 
 
 def insert_nodes(mesh: FrameMesh, positions: Sequence[float]) -> FrameMesh:
@@ -147,6 +203,27 @@ def insert_nodes(mesh: FrameMesh, positions: Sequence[float]) -> FrameMesh:
     return FrameMesh(points, ei, ra)
 
 
+def frame_from_mesh(mesh: FrameMesh) -> Frame:
+    """The piecewise-uniform frame a mesh describes.
+
+    Consecutive cells with equal EI and rhoA merge into one
+    :class:`~fem_racket.params.Segment`, so re-meshing the result with :func:`frame_mesh` keeps
+    every section step of ``mesh`` on a node.
+    """
+    from .params import Segment
+
+    p, ei, ra = mesh.points, mesh.EI, mesh.rhoA
+    change = np.flatnonzero((ei[1:] != ei[:-1]) | (ra[1:] != ra[:-1])) + 1
+    starts = np.concatenate([[0], change])
+    ends = np.concatenate([change, [ei.size]])
+    return Frame(
+        tuple(
+            Segment(float(p[e] - p[s]), float(ei[s]), float(ra[s]))
+            for s, e in zip(starts, ends, strict=True)
+        )
+    )
+
+
 def _share(total: int, lengths: np.ndarray) -> np.ndarray:
     """Split ``total`` cells among segments in proportion to length, at least one each."""
     ideal = total * lengths / lengths.sum()
@@ -159,65 +236,137 @@ def _share(total: int, lengths: np.ndarray) -> np.ndarray:
     return counts
 
 
+#: Relative tolerance (of the mesh length) within which cell ends must meet.
+JOIN_TOL = 1e-9
+
+
 def read_mesh(path: str | os.PathLike) -> FrameMesh:
     """Read a 1-D line mesh with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] through meshio.
 
-    The cells must be 2-node lines along x; they are sorted by position and must join without
-    gaps or overlaps.
+    Any format meshio reads (.vtu, .vtk, .xdmf, .msh, ...). The cells must be 2-node ``line``
+    cells along x (y and z constant); they may come in any order and are sorted by position, but
+    must join end to end (within ``JOIN_TOL`` of the length) without gaps, overlaps or zero-length
+    cells. Coordinates are shifted so the grip end is at x = 0. Other cell types (e.g. vertices)
+    are ignored.
+
+    Raises
+    ------
+    InputError
+        One line naming the file and what is wrong, and where.
     """
     import meshio
 
     path = Path(path)
+    where = f"mesh = '{path}'"
     if not path.is_file():
-        raise InputError(f"mesh = '{path}' is not allowed: no such file")
+        raise InputError(f"{where} is not allowed: no such file")
     try:
         m = meshio.read(path)
-    except Exception as exc:  # meshio raises many types for malformed files
-        raise InputError(f"mesh = '{path}' could not be read: {exc}".splitlines()[0]) from None
+    except (Exception, SystemExit) as exc:  # meshio raises many types, even SystemExit
+        msg = " ".join(str(exc).split()) or type(exc).__name__
+        raise InputError(f"{where} could not be read: {msg}") from None
     lines = [(i, b) for i, b in enumerate(m.cells) if b.type == "line"]
     if not lines:
-        raise InputError(f"mesh = '{path}' is not allowed: it has no 'line' cells")
-    conn, ei, ra = [], [], []
-    for i, block in lines:
-        for name, store in (("EI", ei), ("rhoA", ra)):
-            if name not in m.cell_data:
+        types = ", ".join(sorted({b.type for b in m.cells})) or "none"
+        raise InputError(
+            f"{where} is not allowed: it has no 'line' cells (cell types: {types}); "
+            "need 2-node line cells along x"
+        )
+    pts = np.asarray(m.points, dtype=float)
+    if pts.ndim != 2 or pts.shape[0] < 2 or not np.all(np.isfinite(pts)):
+        raise InputError(f"{where} is not allowed: point coordinates must be finite numbers")
+    conn, data = [], {"EI": [], "rhoA": []}
+    for name, store in data.items():
+        if name not in m.cell_data:
+            have = ", ".join(sorted(m.cell_data)) or "none"
+            raise InputError(
+                f"{where} is not allowed: cell data '{name}' is missing (have: {have}); "
+                "need EI [N m^2] and rhoA [kg/m] on every cell"
+            )
+        for i, block in lines:
+            values = np.asarray(m.cell_data[name][i])
+            if values.ndim > 1 and values.size != len(block.data):
                 raise InputError(
-                    f"mesh = '{path}' is not allowed: cell data '{name}' is missing "
-                    "(need EI [N m^2] and rhoA [kg/m] on every cell)"
+                    f"{where} is not allowed: cell data '{name}' has shape {values.shape}; "
+                    "need one number per cell"
                 )
-            store.append(np.asarray(m.cell_data[name][i], dtype=float).ravel())
-        conn.append(block.data)
+            try:
+                store.append(values.astype(float).ravel())
+            except (TypeError, ValueError):
+                raise InputError(
+                    f"{where} is not allowed: cell data '{name}' is not numeric"
+                ) from None
+    for _, block in lines:
+        conn.append(np.asarray(block.data))
     conn = np.concatenate(conn)
-    ei, ra = np.concatenate(ei), np.concatenate(ra)
-    x = np.asarray(m.points, dtype=float)[:, 0]
+    ei, ra = np.concatenate(data["EI"]), np.concatenate(data["rhoA"])
+    if conn.min() < 0 or conn.max() >= len(pts):
+        raise InputError(f"{where} is not allowed: a line cell refers to a point that is not there")
+    span = np.ptp(pts[:, 0])
+    if pts.shape[1] > 1 and np.any(np.ptp(pts[:, 1:], axis=0) > JOIN_TOL * max(span, 1e-300)):
+        raise InputError(
+            f"{where} is not allowed: points are not on one line along x (y or z varies); "
+            "the frame axis must be x"
+        )
+    x = pts[:, 0]
     xa, xb = x[conn[:, 0]], x[conn[:, 1]]
     left, right = np.minimum(xa, xb), np.maximum(xa, xb)
-    order = np.argsort(left)
+    order = np.argsort(left, kind="stable")
     left, right, ei, ra = left[order], right[order], ei[order], ra[order]
-    if np.any(right - left <= 0.0):
-        i = int(np.argmax(right - left <= 0.0))
-        raise InputError(f"mesh = '{path}' is not allowed: zero-length cell at x = {left[i]:g} m")
+    length = right.max() - left.min()
+    if length <= 0.0:
+        raise InputError(f"{where} is not allowed: the mesh has zero length")
+    tol = JOIN_TOL * length
+    short = right - left <= tol
+    if np.any(short):
+        i = int(np.argmax(short))
+        raise InputError(
+            f"{where} is not allowed: zero-length cell at x = {left[i]:g} m "
+            f"(cell {int(order[i])} of the file)"
+        )
     gap = left[1:] - right[:-1]
-    tol = 1e-9 * (right[-1] - left[0])
-    if np.any(np.abs(gap) > tol):
-        i = int(np.argmax(np.abs(gap) > tol))
+    bad = np.abs(gap) > tol
+    if np.any(bad):
+        i = int(np.argmax(bad))
         kind = "gap" if gap[i] > 0 else "overlap"
         raise InputError(
-            f"mesh = '{path}' is not allowed: {kind} between x = {right[i]:g} m and "
-            f"x = {left[i + 1]:g} m; cells must join end to end"
+            f"{where} is not allowed: {kind} between x = {right[i]:g} m and "
+            f"x = {left[i + 1]:g} m (cells {int(order[i])} and {int(order[i + 1])} of the file); "
+            "cells must join end to end"
         )
-    points = np.concatenate([left, right[-1:]])
-    if points[0] != 0.0:
-        points = points - points[0]
-    return FrameMesh(points, ei, ra)
+    points = np.concatenate([left, right[-1:]]) - left[0]
+    try:
+        return FrameMesh(points, ei, ra)
+    except InputError as exc:
+        raise InputError(f"{where}: {exc}") from None
 
 
-def write_mesh(mesh: FrameMesh, path: str | os.PathLike) -> Path:
-    """Write ``mesh`` with cell data ``EI`` and ``rhoA`` in any meshio format (by suffix).
+def write_mesh(
+    mesh: FrameMesh,
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = True,
+    binary: bool = True,
+) -> Path:
+    """Write ``mesh`` with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] in any meshio format.
 
-    The file is written to a temporary name in the same folder and renamed into place.
+    The format follows the suffix (.vtu recommended: one self-contained file that ParaView
+    opens). The file is written under a temporary name in the same folder and renamed into place
+    (:func:`fem_racket.outputs.atomic_output`).
+
+    Parameters
+    ----------
+    mesh : FrameMesh
+    path : path-like
+    overwrite : bool
+        Replace an existing file (default True); False raises :class:`InputError` instead.
+    binary : bool
+        For .vtu / .vtk: base64/binary data (exact round trip, the default) or ASCII text (easy
+        to read and diff, 12 significant digits). .xdmf is written with its data inline (XML).
     """
     import meshio
+
+    from .outputs import atomic_output
 
     path = Path(path)
     pts = np.zeros((mesh.points.size, 3))
@@ -226,11 +375,18 @@ def write_mesh(mesh: FrameMesh, path: str | os.PathLike) -> Path:
     out = meshio.Mesh(
         pts, [("line", cells)], cell_data={"EI": [mesh.EI.copy()], "rhoA": [mesh.rhoA.copy()]}
     )
-    tmp = path.with_name(f".{path.stem}.tmp{path.suffix}")
-    try:
-        meshio.write(tmp, out)
-        os.replace(tmp, path)
-    finally:
-        if tmp.exists():
-            tmp.unlink()
+    suffix = path.suffix.lower()
+    kwargs: dict = {}
+    if suffix in (".vtu", ".vtk"):
+        kwargs["binary"] = binary
+    elif suffix == ".xdmf":
+        kwargs["data_format"] = "XML"  # no .h5 beside it (meshio would put it in the cwd)
+    elif suffix == ".msh":
+        kwargs["file_format"] = "gmsh"  # meshio would otherwise pick ANSYS for .msh
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        try:
+            meshio.write(tmp, out, **kwargs)
+        except Exception as exc:  # unknown suffix, unsupported cell data, ...
+            msg = " ".join(str(exc).split()) or type(exc).__name__
+            raise InputError(f"mesh output = '{path}' cannot be written: {msg}") from None
     return path

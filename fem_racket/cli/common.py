@@ -10,21 +10,54 @@ from typing import Any
 
 from ..impact import BASES
 from ..integrators import SOLVERS
+from ..mesh import FrameMesh, read_mesh
 from ..model import DEFAULT_MODES, FrameModel
-from ..params import standard_frame
+from ..params import Frame, standard_frame
 from ..system import SEPARATION_EVENTS
+from ..validation import InputError
 
-__all__ = ["add_frame_options", "add_impact_options", "build_model", "impact_kwargs", "print_json"]
+__all__ = [
+    "add_frame_options",
+    "add_impact_options",
+    "add_mesh_option",
+    "build_model",
+    "frame_from_args",
+    "impact_kwargs",
+    "print_json",
+]
+
+#: Frame options that a mesh file replaces (giving one with --mesh is an error).
+MESH_EXCLUSIVE = ("ei1", "ei2", "elements")
+
+
+class _Explicit(argparse._StoreAction):
+    """Store the value and remember that the option was given on the command line."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        super().__call__(parser, namespace, values, option_string)
+        namespace.explicit_options = {*getattr(namespace, "explicit_options", ()), self.dest}
+
+
+def add_mesh_option(group: argparse._ArgumentGroup) -> None:
+    """--mesh FILE: a 1-D line mesh with cell data EI [N m^2] and rhoA [kg/m]."""
+    group.add_argument(
+        "--mesh",
+        default=None,
+        metavar="FILE",
+        help="frame from a mesh file meshio reads (.vtu, ...; line cells along x with cell "
+        "data EI [N m^2] and rhoA [kg/m]); replaces --ei1, --ei2 and --elements",
+    )
 
 
 def add_frame_options(parser: argparse.ArgumentParser) -> None:
-    """Frame options: --ei1, --ei2, --elements."""
+    """Frame options: --ei1, --ei2, --elements, --mesh."""
     g = parser.add_argument_group("frame")
     g.add_argument(
         "--ei1",
         type=float,
         default=146.0,
         metavar="N_M2",
+        action=_Explicit,
         help="grip-side bending rigidity EI1 [N m^2] (default 146, the paper's)",
     )
     g.add_argument(
@@ -32,6 +65,7 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=None,
         metavar="N_M2",
+        action=_Explicit,
         help="top-side bending rigidity EI2 [N m^2] (default 0.88 * EI1)",
     )
     g.add_argument(
@@ -39,8 +73,28 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         type=int,
         default=20,
         metavar="N",
+        action=_Explicit,
         help="number of beam elements (default 20, as in the paper)",
     )
+    add_mesh_option(g)
+
+
+def frame_from_args(args: argparse.Namespace) -> Frame | FrameMesh:
+    """The mesh read from --mesh, or the paper's stepped frame with --ei1/--ei2.
+
+    --mesh together with an explicit --ei1, --ei2 or --elements is an error: the file fixes the
+    cells and their EI and rhoA.
+    """
+    path = getattr(args, "mesh", None)
+    if path is None:
+        return standard_frame(args.ei1, args.ei2)
+    clash = sorted(set(getattr(args, "explicit_options", ())) & set(MESH_EXCLUSIVE))
+    if clash:
+        raise InputError(
+            f"--{clash[0]} is not allowed with --mesh: the mesh file gives the cells and their "
+            "EI and rhoA"
+        )
+    return read_mesh(path)
 
 
 def add_impact_options(parser: argparse.ArgumentParser) -> None:
@@ -108,8 +162,8 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
 
 
 def build_model(args: argparse.Namespace) -> FrameModel:
-    """Assemble the frame the options describe."""
-    return FrameModel.build(standard_frame(args.ei1, args.ei2), args.elements)
+    """Assemble the frame the options describe (a --mesh file as it is)."""
+    return FrameModel.build(frame_from_args(args), args.elements)
 
 
 def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:

@@ -1,0 +1,138 @@
+"""``fem-racket refine``: mesh-refinement study against the exact beam frequencies."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..model import DEFAULT_MODES
+from ..params import standard_frame
+from ..refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
+from ..system import SEPARATION_EVENTS
+from .common import add_mesh_option, print_json
+
+FAMILY_CHOICES = (*FAMILIES, "both")
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``refine`` command."""
+    p = sub.add_parser(
+        "refine",
+        help="mesh-refinement study: frequencies vs the exact beam, COR and contact time",
+    )
+    g = p.add_argument_group("frame")
+    g.add_argument("--ei1", type=float, default=146.0, metavar="N_M2", help="EI1 [N m^2]")
+    g.add_argument("--ei2", type=float, default=None, metavar="N_M2", help="EI2 [N m^2]")
+    add_mesh_option(g)
+    r = p.add_argument_group("refinement")
+    r.add_argument(
+        "--elements",
+        type=int,
+        nargs="+",
+        default=list(DEFAULT_ELEMENTS),
+        metavar="N",
+        help="element counts (default " + " ".join(map(str, DEFAULT_ELEMENTS)) + ")",
+    )
+    r.add_argument(
+        "--family",
+        default="both",
+        choices=FAMILY_CHOICES,
+        help="uniform cells per segment, cells graded towards steps and ends, or both (default)",
+    )
+    r.add_argument(
+        "--grading",
+        type=float,
+        default=DEFAULT_GRADING,
+        help=f"largest / smallest cell of a graded segment (default {DEFAULT_GRADING:g})",
+    )
+    r.add_argument(
+        "--count", type=int, default=4, metavar="N", help="flexible frequencies (default 4)"
+    )
+    i = p.add_argument_group("impact")
+    i.add_argument(
+        "--positions",
+        type=float,
+        nargs="+",
+        default=list(DEFAULT_POSITIONS),
+        metavar="X_OVER_L",
+        help="impact points x/L (default " + " ".join(map(str, DEFAULT_POSITIONS)) + ")",
+    )
+    i.add_argument("--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s]")
+    i.add_argument("--ball-mass", type=float, default=None, metavar="KG", help="m_B [kg]")
+    i.add_argument("--kcb", type=float, default=None, metavar="N_M", help="K_CB [N/m]")
+    i.add_argument("--zeta", type=float, default=None, help="ball/string damping ratio")
+    i.add_argument("--separation", default="displacement", choices=SEPARATION_EVENTS)
+    i.add_argument(
+        "--impact-modes",
+        type=int,
+        default=DEFAULT_MODES,
+        metavar="N",
+        help=f"flexible modes in the impact's modal basis (default {DEFAULT_MODES})",
+    )
+    i.add_argument(
+        "--impact-nodes", action="store_true", help="put a mesh node at every impact point"
+    )
+    o = p.add_argument_group("output")
+    o.add_argument(
+        "--csv", default="output/refine.csv", metavar="FILE", help="CSV table (default %(default)s)"
+    )
+    o.add_argument(
+        "--plot",
+        default="output/refine.png",
+        metavar="FILE",
+        help="log-log convergence plot (default %(default)s)",
+    )
+    o.add_argument("--no-files", action="store_true", help="write neither the CSV nor the plot")
+    o.add_argument("--overwrite", action="store_true", help="replace existing output files")
+    o.add_argument("--json", action="store_true", help="print a JSON object")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the study, print the table (or JSON), write the CSV and the plot."""
+    from ..mesh import read_mesh
+    from ..outputs import check_output_path
+    from ..refine import refinement_study
+    from ..refine_output import format_study, plot_studies, write_csv
+
+    frame = read_mesh(args.mesh) if args.mesh else standard_frame(args.ei1, args.ei2)
+    outputs = [] if args.no_files else [Path(args.csv), Path(args.plot)]
+    for path in outputs:  # fail before the work, not after it
+        check_output_path(path, overwrite=args.overwrite)
+    families = FAMILIES if args.family == "both" else (args.family,)
+    impact = {
+        "ball_mass": args.ball_mass,
+        "kcb": args.kcb,
+        "zeta": args.zeta,
+        "separation": args.separation,
+    }
+    studies = {
+        fam: refinement_study(
+            frame,
+            args.elements,
+            family=fam,
+            n_modes=args.count,
+            positions=args.positions,
+            speed=args.speed,
+            grading=args.grading,
+            impact_nodes=args.impact_nodes,
+            impact_modes=args.impact_modes,
+            **impact,
+        )
+        for fam in families
+    }
+    if outputs:
+        write_csv(studies, outputs[0], overwrite=args.overwrite)
+        plot_studies(studies, outputs[1], overwrite=args.overwrite)
+    first, *rest = studies.values()
+    if args.json:
+        data = first.to_dict()
+        for s in rest:
+            data[s.family] = s.to_dict()
+        data["files"] = [str(p) for p in outputs]
+        print_json(data)
+        return 0
+    print("\n\n".join(format_study(s) for s in studies.values()))
+    for path in outputs:
+        print(f"wrote {path}")
+    return 0

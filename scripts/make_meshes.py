@@ -1,0 +1,88 @@
+"""Write the example frame meshes in meshes/ (VTU, cell data EI [N m^2] and rhoA [kg/m]).
+
+- ``standard_racket.vtu``: the paper's stepped beam (Kawazoe & Kanda 1997, section 2.2) with its
+  20 elements: 6 cells on the 204 mm grip side (EI1 = 146 N m^2, rhoA1 = 0.696 kg/m) and 14 on the
+  476 mm top side (EI2 = 128.48 N m^2, rhoA2 = 0.458 kg/m).
+- ``tapered_racket.vtu``: a modern 685 mm frame, 8 segments of 3 cells: stiff, heavy handle;
+  throat; head hoop whose rigidity falls towards the tip. Illustrative numbers (not a measured
+  racket) giving 0.317 kg, balance 0.320 m and a first free-free mode at 145 Hz.
+- ``head_heavy_racket.vtu``: the same length with a light handle and a heavy head (3 segments):
+  0.322 kg, balance 0.374 m, first mode 128 Hz.
+
+Usage: python scripts/make_meshes.py [--out-dir meshes] [--check]
+
+``--check`` writes nothing and exits 1 if a committed file differs from what this script builds.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from fem_racket import FrameMesh, frame_mesh, read_mesh, standard_frame, write_mesh
+from fem_racket.params import Frame, Segment
+
+MESH_DIR = Path(__file__).resolve().parent.parent / "meshes"
+
+#: (length [m], EI [N m^2], rhoA [kg/m]) from the grip end; 3 cells each.
+TAPERED = (
+    (0.090, 220.0, 0.660),  # butt cap and handle
+    (0.090, 210.0, 0.600),  # handle, top of grip
+    (0.075, 190.0, 0.330),  # shaft
+    (0.075, 175.0, 0.300),  # throat (open)
+    (0.090, 160.0, 0.420),  # lower hoop + strings
+    (0.090, 145.0, 0.460),  # hoop at the sweet spot
+    (0.090, 125.0, 0.460),  # upper hoop
+    (0.085, 105.0, 0.420),  # tip of the hoop
+)
+
+#: (length [m], EI [N m^2], rhoA [kg/m]); 6, 4 and 10 cells.
+HEAD_HEAVY = (
+    (0.200, 170.0, 0.400),
+    (0.130, 160.0, 0.330),
+    (0.355, 120.0, 0.560),
+)
+
+
+def _frame(rows: tuple[tuple[float, float, float], ...]) -> Frame:
+    return Frame(tuple(Segment(*r) for r in rows))
+
+
+def build_meshes() -> dict[str, FrameMesh]:
+    """The example meshes by file name."""
+    return {
+        "standard_racket.vtu": frame_mesh(standard_frame(), 20),
+        "tapered_racket.vtu": frame_mesh(_frame(TAPERED), 3 * len(TAPERED)),
+        "head_heavy_racket.vtu": frame_mesh(_frame(HEAD_HEAVY), 20),
+    }
+
+
+def same_mesh(a: FrameMesh, b: FrameMesh) -> bool:
+    """Bit-for-bit equal points, EI and rhoA."""
+    return all(np.array_equal(getattr(a, k), getattr(b, k)) for k in ("points", "EI", "rhoA"))
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Write (or check) the meshes; returns the exit code."""
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out-dir", type=Path, default=MESH_DIR)
+    ap.add_argument("--check", action="store_true", help="compare with the files, write nothing")
+    args = ap.parse_args(argv)
+    status = 0
+    for name, mesh in build_meshes().items():
+        path = args.out_dir / name
+        if args.check:
+            ok = path.is_file() and same_mesh(read_mesh(path), mesh)
+            print(f"{'ok' if ok else 'DIFFERS'}  {path}")
+            status |= not ok
+        else:
+            write_mesh(mesh, path)
+            print(f"wrote {path}")
+    return int(status)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
