@@ -6,6 +6,7 @@ ball-racket system", JSME Int. J. C 40(1).
 
 from importlib.metadata import PackageNotFoundError, version
 
+from .coupled import CoupledModes, coupled_modes
 from .forms import FrameFE, assemble
 from .impact import ImpactResult, simulate
 from .integrators import SOLVERS, NoSeparationError
@@ -36,6 +37,7 @@ __all__ = [
     "SOLVERS",
     "Ball",
     "ClampedImpact",
+    "CoupledModes",
     "Frame",
     "FrameFE",
     "FrameMesh",
@@ -53,6 +55,7 @@ __all__ = [
     "assemble",
     "clamped_impact",
     "cor_from_zeta",
+    "coupled_modes",
     "frame_mesh",
     "free_modes",
     "kcb_from_speed",
