@@ -216,8 +216,8 @@ def cor_position(data: FigureData, path: str | os.PathLike) -> None:
     ax.plot(x, c["COR standard undamped [-]"], "C0--", label="standard, no damping (ζ = 0)")
     ax.plot(x, c["COR rigid undamped [-]"], "C3--", label="rigid, no damping (ζ = 0)")
     ax.plot(
-        x[::4],
-        c["COR eq 12 rigid undamped [-]"][::4],
+        x[::2],
+        c["COR eq 12 rigid undamped [-]"][::2],
         "kx",
         label="rigid closed form, eq 12 (no damping)",
     )
@@ -267,7 +267,7 @@ def contact_time_position(data: FigureData, path: str | os.PathLike) -> None:
         "rigid undamped": "rigid, ζ = 0",
     }
     for k, st in styles.items():
-        ax.plot(x[::4], c[f"contact time {k} [s]"][::4] * 1e3, st, mfc="none", label=labels[k])
+        ax.plot(x[::2], c[f"contact time {k} [s]"][::2] * 1e3, st, mfc="none", label=labels[k])
     _mark(ax, v["node_x_over_l"], "mode-1 node", "C4")
     ax.set(
         xlabel="impact position from the grip end x/L [-]",
@@ -325,10 +325,11 @@ def system_modes(data: FigureData, path: str | os.PathLike) -> None:
             a.axhline(0.0, color="k", lw=0.6)
             a.axvline(p * mm, color="0.5", ls=":", lw=1)
             f, vi = md["frequency [Hz]"][r][0], md["V_i [m/s]"][r][0]
+            vtxt = f"{vi:.3g}" if vi > 1e-12 else "0"  # below round-off: exactly 0
             name = f"{p:.2f} L" if abs(p - 0.6) < 1e-9 else f"{p:.4f} L (node)"
             a.set(ylim=(-1.2, 1.2), ylabel="amplitude [-]")
             a.set_title(
-                f"impact {name}: mode {j + 1}, {f:.1f} Hz, V_{j + 1} = {vi:.2g} m/s", fontsize=10
+                f"impact {name}: mode {j + 1}, {f:.1f} Hz, V_{j + 1} = {vtxt} m/s", fontsize=10
             )
             a.grid(alpha=0.3)
             if j == 0:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["AGREES", "DIFFERS", "NOT_CHECKABLE", "Claim", "claim", "close"]
+__all__ = ["AGREES", "DIFFERS", "NOT_CHECKABLE", "Claim", "below", "claim", "close"]
 
 AGREES, DIFFERS, NOT_CHECKABLE = "agrees", "differs", "not checkable"
 
@@ -57,3 +57,11 @@ def claim(
 def close(ours: float, paper: float, unit: float) -> bool:
     """Equal to within one unit of the paper's last printed digit (plus round-off)."""
     return abs(ours - paper) <= unit * (1.0 + 1e-9)
+
+
+def below(value: float, floor: float) -> str:
+    """``"= 1.2e-05"``, or ``"< 1e-12"`` when ``|value|`` is under ``floor`` (round-off level,
+    whose digits would change from machine to machine)."""
+    if abs(value) < floor:
+        return f"< {floor:.0e}"
+    return f"= {value:.1e}"

@@ -28,7 +28,7 @@ POSITIONS = (0.60, 0.75, 0.90)
 def ball_string(quick: bool = False) -> FigureData:
     """K_CB, C_CB, clamped COR and contact times against impact speed (Figs 2-3 inputs)."""
     m_b = Ball().mass
-    speeds = np.linspace(10.0, 50.0, 9 if quick else 81)
+    speeds = np.linspace(10.0, 50.0, 9 if quick else 41)
     kcb = np.array([kcb_from_speed(v) for v in speeds])
     contacts = [LinearContact.for_speed(v) for v in speeds]
     zeta = contacts[0].zeta

@@ -31,7 +31,7 @@ def position_sweep(quick: bool = False) -> tuple[dict[str, np.ndarray], dict[str
     base = FrameModel.build(standard_frame(), 20)
     base.modes()  # computed once, reused by the scaled model
     rigid = base.scaled(RIGID_EI1 / 146.0)
-    x = np.linspace(0.55, 0.95, 9 if quick else 81)
+    x = np.linspace(0.55, 0.95, 9 if quick else 41)
     out: dict[str, np.ndarray] = {"position [x/L]": x}
     cases = {
         "standard": (base, None, None),
@@ -61,7 +61,7 @@ def position_sweep(quick: bool = False) -> tuple[dict[str, np.ndarray], dict[str
     ]
     out["COR eq 12 rigid undamped [-]"] = np.array([c.cor for c in closed])
     out["contact time eq 11 rigid undamped [s]"] = np.array([c.contact_time for c in closed])
-    xw = np.linspace(0.30, 0.95, 27 if quick else 131)
+    xw = np.linspace(0.30, 0.95, 27 if quick else 66)
     cor_wide = [simulate(rigid, position=p, speed=SPEED, output_step=None).cor for p in xw]
     refs = {
         "node_x_over_l": float(mode_nodes(base.fe, base.modes(1).shapes[:, 0])[-1]),

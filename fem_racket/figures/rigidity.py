@@ -47,7 +47,7 @@ def cor_rigidity(quick: bool = False) -> FigureData:
     """COR against EI1 at three speeds, three positions, with and without damping."""
     base = FrameModel.build(standard_frame(146.0), 20)
     base.modes()  # computed once, reused by every scaled model
-    ei = np.geomspace(50.0, 3000.0, 10 if quick else 50)
+    ei = np.geomspace(50.0, 3000.0, 8 if quick else 40)
     models = [base.scaled(e / 146.0) for e in ei]
     rigid = base.scaled(RIGID_EI1 / 146.0)
     cols: dict[str, list] = {}
