@@ -6,6 +6,7 @@ ball-racket system", JSME Int. J. C 40(1).
 
 from importlib.metadata import PackageNotFoundError, version
 
+from .coupled import CoupledModes, coupled_modes
 from .exact import free_free_frequencies
 from .forms import FrameFE, assemble
 from .hermite import assemble_closed_form
@@ -39,6 +40,7 @@ __all__ = [
     "SOLVERS",
     "Ball",
     "ClampedImpact",
+    "CoupledModes",
     "Frame",
     "FrameFE",
     "FrameMesh",
@@ -59,6 +61,7 @@ __all__ = [
     "clamped_impact",
     "cor_from_zeta",
     "frame_from_mesh",
+    "coupled_modes",
     "frame_mesh",
     "free_free_frequencies",
     "free_modes",

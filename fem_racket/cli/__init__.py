@@ -13,12 +13,12 @@ from collections.abc import Sequence
 
 from .. import __version__
 from ..validation import InputError
-from . import modes, refine, simulate
+from . import modes, refine, reproduce, simulate
 
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, refine)
+COMMANDS = (simulate, modes, refine, reproduce)
 
 
 def build_parser() -> argparse.ArgumentParser:

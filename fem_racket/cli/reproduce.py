@@ -1,0 +1,54 @@
+"""``fem-racket reproduce``: every figure of the paper, its data, and REPRODUCTION.md."""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+DEFAULT_OUT = "output/paper"
+DEFAULT_REPORT = "REPRODUCTION.md"
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``reproduce`` command."""
+    p = sub.add_parser(
+        "reproduce",
+        help="reproduce every figure of Kawazoe & Kanda (1997) and write REPRODUCTION.md",
+        description="Compute every figure of the paper, write its data (CSV) and PNG into "
+        "--out, and write the side-by-side report --report (image links relative to it).",
+    )
+    p.add_argument(
+        "--out",
+        default=DEFAULT_OUT,
+        metavar="DIR",
+        help=f"folder for figures and data (default {DEFAULT_OUT}/)",
+    )
+    p.add_argument(
+        "--report",
+        default=DEFAULT_REPORT,
+        metavar="FILE",
+        help=f"Markdown report to write (default {DEFAULT_REPORT} in the current folder)",
+    )
+    p.add_argument("--quick", action="store_true", help="coarse grids (seconds; for tests)")
+    p.add_argument("--overwrite", action="store_true", help="replace existing output files")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the reproduction and print one line per figure and the verdict counts."""
+    from ..reproduce import reproduce
+
+    t0 = time.perf_counter()
+    result = reproduce(args.out, args.report, quick=args.quick, overwrite=args.overwrite)
+    total = time.perf_counter() - t0
+    print(f"{'figure':<10} {'time [s]':>9}  files")
+    for key, sec in result.seconds.items():
+        names = [p.name for p in result.files if p.name.startswith(key[:5])]
+        print(f"{key:<10} {sec:>9.2f}  {', '.join(names)}")
+    counts = result.counts()
+    print(
+        f"report: {args.report} ({len(result.claims)} statements: {counts['agrees']} agree, "
+        f"{counts['differs']} differ, {counts['not checkable']} not checkable)"
+    )
+    print(f"total: {total:.1f} s, output in {args.out}/")
+    return 0

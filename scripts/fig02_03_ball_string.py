@@ -1,0 +1,24 @@
+"""Figs 2-3 inputs of Kawazoe & Kanda (1997): ball/string inputs against impact speed.
+
+K_CB (the three points and the interpolation), C_CB, clamped COR and contact times.
+
+Writes the figure's CSV tables (units in the column names) and its PNG into --out.
+
+Usage: python scripts/fig02_03_ball_string.py [--out DIR] [--quick] [--overwrite]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+from fem_racket.figures.script import figure_main
+
+
+def main(argv: Sequence[str] | None = None) -> list[Path]:
+    """Compute and write the figure; returns the files written."""
+    return figure_main("fig02_03", __doc__.splitlines()[0], argv, default_out="output/paper")
+
+
+if __name__ == "__main__":
+    main()

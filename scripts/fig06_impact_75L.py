@@ -1,0 +1,22 @@
+"""Fig 6 of Kawazoe & Kanda (1997): impact behaviour at 0.75 L, 20 m/s, standard and rigid frames.
+
+Writes the figure's CSV tables (units in the column names) and its PNG into --out.
+
+Usage: python scripts/fig06_impact_75L.py [--out DIR] [--quick] [--overwrite]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+from fem_racket.figures.script import figure_main
+
+
+def main(argv: Sequence[str] | None = None) -> list[Path]:
+    """Compute and write the figure; returns the files written."""
+    return figure_main("fig06", __doc__.splitlines()[0], argv, default_out="output/paper")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,24 @@
+"""Fig 9 of Kawazoe & Kanda (1997): contact time against impact position.
+
+Standard and rigid frames, with and without damping; eq 11 as a line.
+
+Writes the figure's CSV tables (units in the column names) and its PNG into --out.
+
+Usage: python scripts/fig09_contact_time_position.py [--out DIR] [--quick] [--overwrite]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+from fem_racket.figures.script import figure_main
+
+
+def main(argv: Sequence[str] | None = None) -> list[Path]:
+    """Compute and write the figure; returns the files written."""
+    return figure_main("fig09", __doc__.splitlines()[0], argv, default_out="output/paper")
+
+
+if __name__ == "__main__":
+    main()

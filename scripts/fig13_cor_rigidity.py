@@ -1,0 +1,22 @@
+"""Fig 13 of Kawazoe & Kanda (1997): COR against frame rigidity EI1 at 20, 30 and 40 m/s.
+
+Writes the figure's CSV tables (units in the column names) and its PNG into --out.
+
+Usage: python scripts/fig13_cor_rigidity.py [--out DIR] [--quick] [--overwrite]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+from fem_racket.figures.script import figure_main
+
+
+def main(argv: Sequence[str] | None = None) -> list[Path]:
+    """Compute and write the figure; returns the files written."""
+    return figure_main("fig13", __doc__.splitlines()[0], argv, default_out="output/paper")
+
+
+if __name__ == "__main__":
+    main()
