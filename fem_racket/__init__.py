@@ -6,6 +6,7 @@ ball-racket system", JSME Int. J. C 40(1).
 
 from importlib.metadata import PackageNotFoundError, version
 
+from .animate import render_animation
 from .forms import FrameFE, assemble
 from .impact import ImpactResult, simulate
 from .integrators import SOLVERS, NoSeparationError
@@ -26,6 +27,7 @@ from .params import (
 )
 from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact
 from .validation import InputError
+from .vtk import ImpactSeries, impact_series, write_vtk_series
 
 try:
     __version__ = version("fem_racket")
@@ -43,6 +45,7 @@ __all__ = [
     "FreeModes",
     "Impact",
     "ImpactResult",
+    "ImpactSeries",
     "InputError",
     "LinearContact",
     "MassProperties",
@@ -55,14 +58,17 @@ __all__ = [
     "cor_from_zeta",
     "frame_mesh",
     "free_modes",
+    "impact_series",
     "kcb_from_speed",
     "mass_properties",
     "mode_nodes",
     "read_mesh",
+    "render_animation",
     "rigid_frame",
     "rigid_impact",
     "simulate",
     "standard_frame",
     "write_mesh",
+    "write_vtk_series",
     "zeta_from_cor",
 ]
