@@ -15,14 +15,18 @@ Fields, with their units in the names:
 - ball points: ``displacement [m]`` u_B, ``velocity [m/s]`` v_B and ``contact force [N]``
   F = K_CB delta + C_CB delta' (eq 1's spring-dashpot).
 
-Format, chosen by measurement (``scripts/bench_vtk.py --compare-hdf``): one ``.vtu`` per step and
-dataset plus a ``.pvd`` collection carrying the physical times. A single transient ``.vtkhdf``
-(VTK's ``vtkHDFWriter``) was as small but slower to write, stores the times as float32 (errors
-~1e-10 s on 1e-5 s steps), can be read by neither meshio nor pyvista's HDF reader as a time
-series; the ``.vtu`` files read back exactly with meshio, pyvista and ParaView. meshio, pyvista
-and VTK have no ``.pvd`` writer (pyvista only reads it), so the small XML collection is written
-here with ``xml.etree``; the ``.vtu`` files are written by pyvista (meshio's VTU writer drops field
-data; meshio cannot read VTK string arrays, hence the provenance is a sidecar JSON).
+Format, chosen by measurement (``scripts/bench_vtk.py --compare-hdf``, 200 steps of the standard
+impact): one ``.vtu`` per step and dataset plus a ``.pvd`` collection carrying the physical times
+(0.9 s, 4.7 MB with the ball). A single transient ``.vtkhdf`` from VTK's ``vtkHDFWriter`` is
+faster (0.3 s, 3.5 MB, frame only) but stores the step times as float32 (errors up to 2e-10 s),
+renames fields containing '/' (``velocity [m/s]`` becomes ``velocity [m_s]``), and neither meshio
+nor pyvista reads it as a time series (pyvista's HDF reader has no time support), whereas the
+``.vtu`` files read back exactly with meshio and pyvista (``PVDReader.time_values``) and the
+``.pvd`` opens in ParaView. meshio, pyvista and VTK have no ``.pvd`` writer (pyvista only reads
+it), so that small XML collection is written here with ``xml.etree``; the ``.vtu`` files are
+written by pyvista, because meshio's VTU writer drops field data (the ``TimeValue`` that ParaView
+reads from a single file). meshio cannot read VTK string arrays, hence the provenance is a sidecar
+JSON, ``provenance.json``.
 """
 
 from __future__ import annotations
@@ -341,6 +345,8 @@ def write_vtk_series(
         entries = []
         for i in range(series.n_steps):
             frame = series.frame_grid(i)
+            if field in series.cell_fields:  # readers colour by the active point scalars first
+                frame.point_data.active_scalars_name = None
             frame.set_active_scalars(field)
             frame.save(tmp / f"frame_{i:04d}.vtu")
             series.ball_grid(i).save(tmp / f"ball_{i:04d}.vtu")
