@@ -70,8 +70,8 @@ def _camera(pl: Any, series: ImpactSeries, size: tuple[int, int]) -> None:
     z_hi = max(float(zf.max()), float(series.ball_z.max()) + r)
     centre = np.array([0.5 * length, 0.0, 0.5 * (z_lo + z_hi)])
     aspect = size[0] / size[1]
-    # parallel_scale is half the view height [m]; 30 % margin for the texts and colour bar.
-    half = 1.25 * max(0.5 * (z_hi - z_lo), 0.5 * length / (0.8 * aspect))
+    # parallel_scale is half the view height [m]; 40 % margin for the texts and colour bar.
+    half = 1.4 * max(0.5 * (z_hi - z_lo), 0.5 * length / (0.8 * aspect))
     centre[0] += 0.12 * half * aspect  # room for the colour bar on the right
     pl.camera.SetParallelProjection(True)
     pl.camera.focal_point = tuple(centre)
