@@ -6,6 +6,7 @@ ball-racket system", JSME Int. J. C 40(1).
 
 from importlib.metadata import PackageNotFoundError, version
 
+from .animate import render_animation
 from .coupled import CoupledModes, coupled_modes
 from .exact import free_free_frequencies
 from .forms import FrameFE, assemble
@@ -30,6 +31,7 @@ from .params import (
 from .refine import RefinementStudy, refinement_study
 from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact
 from .validation import InputError
+from .vtk import ImpactSeries, impact_series, write_vtk_series
 
 try:
     __version__ = version("fem_racket")
@@ -48,6 +50,7 @@ __all__ = [
     "FreeModes",
     "Impact",
     "ImpactResult",
+    "ImpactSeries",
     "InputError",
     "LinearContact",
     "MassProperties",
@@ -65,16 +68,19 @@ __all__ = [
     "frame_mesh",
     "free_free_frequencies",
     "free_modes",
+    "impact_series",
     "kcb_from_speed",
     "graded_mesh",
     "mass_properties",
     "mode_nodes",
     "read_mesh",
     "refinement_study",
+    "render_animation",
     "rigid_frame",
     "rigid_impact",
     "simulate",
     "standard_frame",
     "write_mesh",
+    "write_vtk_series",
     "zeta_from_cor",
 ]

@@ -11,6 +11,7 @@ from __future__ import annotations
 import datetime as _dt
 import os
 import platform
+import shutil
 import tempfile
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
@@ -19,7 +20,20 @@ from typing import Any
 
 from .validation import InputError
 
-__all__ = ["atomic_output", "check_output_path", "provenance"]
+__all__ = [
+    "atomic_folder",
+    "atomic_output",
+    "check_output_folder",
+    "check_output_path",
+    "provenance",
+]
+
+
+def _umask_mode(mode: int) -> int:
+    """``mode`` less the process umask (tempfile creates 0600 files and 0700 folders)."""
+    mask = os.umask(0)
+    os.umask(mask)
+    return mode & ~mask
 
 
 def check_output_path(path: str | os.PathLike, *, overwrite: bool = False) -> Path:
@@ -58,10 +72,71 @@ def atomic_output(path: str | os.PathLike, *, overwrite: bool = False) -> Iterat
     tmp = Path(tmp_name)
     try:
         yield tmp
+        os.chmod(tmp, _umask_mode(0o666))
         os.replace(tmp, path)
     finally:
         if tmp.exists():
             tmp.unlink()
+
+
+def check_output_folder(
+    path: str | os.PathLike, *, overwrite: bool = False, marker: str | None = None
+) -> Path:
+    """Validate an output folder path before any work is done.
+
+    Raises :class:`InputError` if ``path`` is a file, if it exists and ``overwrite`` is False, if
+    it exists, is not empty and lacks the file ``marker`` (so ``--overwrite`` never deletes a
+    folder this program did not write), or if its parent cannot be created or written. Creates
+    the parent if needed.
+    """
+    path = Path(path)
+    if path.exists() and not path.is_dir():
+        raise InputError(f"output = '{path}' is a file: must be a folder path")
+    if path.is_dir():
+        if not overwrite:
+            raise InputError(f"output = '{path}' already exists: pass --overwrite to replace it")
+        if marker is not None and any(path.iterdir()) and not (path / marker).is_file():
+            raise InputError(
+                f"output = '{path}' is a folder without '{marker}', so not one this program "
+                "wrote: refusing to replace it"
+            )
+    parent = path.resolve().parent
+    try:
+        parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"output folder = '{parent}' cannot be created: {exc.strerror}") from None
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise InputError(f"output folder = '{parent}' is not writable")
+    return path
+
+
+@contextmanager
+def atomic_folder(
+    path: str | os.PathLike, *, overwrite: bool = False, marker: str | None = None
+) -> Iterator[Path]:
+    """Yield a temporary folder beside ``path``; rename it to ``path`` when the block succeeds.
+
+    For outputs made of many files (a VTK time series): readers never see a half-written
+    folder, and on any exception the temporary folder is removed and an existing ``path`` is left
+    as it was. An existing ``path`` is replaced only with ``overwrite`` (see
+    :func:`check_output_folder` for ``marker``).
+    """
+    path = check_output_folder(path, overwrite=overwrite, marker=marker)
+    parent = path.resolve().parent
+    tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", suffix=".part", dir=parent))
+    try:
+        yield tmp
+        os.chmod(tmp, _umask_mode(0o777))
+        if path.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{path.name}.", suffix=".old", dir=parent))
+            os.replace(path, old / path.name)
+            os.replace(tmp, path)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
 
 
 def provenance(parameters: Mapping[str, Any] | None = None) -> dict[str, Any]:

@@ -13,12 +13,12 @@ from collections.abc import Sequence
 
 from .. import __version__
 from ..validation import InputError
-from . import modes, refine, reproduce, simulate
+from . import modes, refine, reproduce, simulate, vtk
 
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, refine, reproduce)
+COMMANDS = (simulate, modes, vtk, refine, reproduce)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -1,0 +1,166 @@
+"""``fem-racket export-vtk`` and ``fem-racket animate``: the impact for ParaView, GIF or MP4."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..impact import simulate
+from ..validation import InputError
+from .common import add_impact_options, build_model, impact_kwargs
+
+
+def _size(text: str) -> tuple[int, int]:
+    try:
+        w, h = text.lower().split("x")
+        return int(w), int(h)
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"size = {text!r}: must be WIDTHxHEIGHT, e.g. 960x400"
+        ) from None
+
+
+def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None) -> None:
+    add_impact_options(p)
+    g = p.add_argument_group("drawing")
+    g.add_argument(
+        "--subdivide",
+        type=int,
+        default=8,
+        metavar="N",
+        help="straight segments per element along the Hermite shape (default 8)",
+    )
+    g.add_argument(
+        "--frames",
+        type=int,
+        default=frames,
+        metavar="N",
+        help="output times kept, evenly spread, first and last included (default "
+        + ("every output time" if frames is None else str(frames))
+        + ")",
+    )
+    g.add_argument(
+        "--output-step",
+        type=float,
+        default=1e-5,
+        metavar="S",
+        help="spacing of the simulation's output times [s] (default 1e-5)",
+    )
+    g.add_argument(
+        "--scale",
+        type=float,
+        default=scale,
+        help=f"deflection exaggeration of the geometry, > 0 (default {scale:g})",
+    )
+    g.add_argument(
+        "--field",
+        default="deflection",
+        metavar="NAME",
+        help="frame colouring: deflection, slope, velocity, curvature or moment "
+        "(default deflection)",
+    )
+    p.add_argument("--overwrite", action="store_true", help="replace an existing output")
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``export-vtk`` and ``animate`` commands."""
+    p = sub.add_parser(
+        "export-vtk",
+        help="write the impact as a VTK time series (.pvd + .vtu) for ParaView",
+    )
+    p.add_argument(
+        "--out",
+        type=Path,
+        default=Path("output/impact_vtk"),
+        metavar="DIR",
+        help="output folder (default output/impact_vtk); open DIR/impact.pvd in ParaView",
+    )
+    _add_common(p, scale=1.0, frames=None)
+    p.set_defaults(func=run_export)
+
+    a = sub.add_parser("animate", help="render the impact offscreen as a GIF or MP4")
+    a.add_argument(
+        "--out",
+        type=Path,
+        default=Path("output/impact.gif"),
+        metavar="FILE",
+        help="output file, .gif or .mp4 (default output/impact.gif)",
+    )
+    _add_common(a, scale=10.0, frames=100)
+    a.add_argument(
+        "--fps", type=float, default=25.0, help="frames per second, (0, 100] (default 25)"
+    )
+    a.add_argument(
+        "--size",
+        type=_size,
+        default=(960, 400),
+        metavar="WxH",
+        help="image size in pixels, multiples of 16 (default 960x400)",
+    )
+    a.set_defaults(func=run_animate)
+
+
+def _simulate(args: argparse.Namespace):
+    if not args.output_step > 0:  # also catches NaN
+        raise InputError(
+            f"output_step = {args.output_step!r} s is not allowed: must be a finite number > 0"
+        )
+    return simulate(build_model(args), output_step=args.output_step, **impact_kwargs(args))
+
+
+def _check_early(args: argparse.Namespace) -> None:
+    """Reject bad drawing options before the simulation runs."""
+    from ..outputs import check_output_folder, check_output_path
+    from ..validation import check_positive
+    from ..vtk import PROVENANCE_NAME, field_name
+
+    field_name(args.field)
+    check_positive("scale", args.scale)
+    if args.frames is not None and args.frames < 2:
+        raise InputError(f"frames = {args.frames} is not allowed: must be an integer >= 2")
+    if args.subdivide < 1:
+        raise InputError(f"subdivide = {args.subdivide} is not allowed: must be an integer >= 1")
+    if args.command == "export-vtk":
+        check_output_folder(args.out, overwrite=args.overwrite, marker=PROVENANCE_NAME)
+    elif args.out.suffix.lower() in (".gif", ".mp4"):
+        check_output_path(args.out, overwrite=args.overwrite)
+
+
+def run_export(args: argparse.Namespace) -> int:
+    """Simulate and write the VTK time series."""
+    from ..vtk import write_vtk_series
+
+    _check_early(args)
+    result = _simulate(args)
+    pvd = write_vtk_series(
+        result,
+        args.out,
+        subdivide=args.subdivide,
+        frames=args.frames,
+        scale=args.scale,
+        field=args.field,
+        overwrite=args.overwrite,
+    )
+    print(pvd)
+    return 0
+
+
+def run_animate(args: argparse.Namespace) -> int:
+    """Simulate and render the animation."""
+    from ..animate import render_animation
+
+    _check_early(args)
+    result = _simulate(args)
+    path = render_animation(
+        result,
+        args.out,
+        field=args.field,
+        frames=args.frames,
+        fps=args.fps,
+        scale=args.scale,
+        subdivide=args.subdivide,
+        size=args.size,
+        overwrite=args.overwrite,
+    )
+    print(path)
+    return 0
