@@ -25,6 +25,7 @@ from .params import (
     zeta_from_cor,
 )
 from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact
+from .sweep import sweep
 from .validation import InputError
 
 try:
@@ -63,6 +64,7 @@ __all__ = [
     "rigid_impact",
     "simulate",
     "standard_frame",
+    "sweep",
     "write_mesh",
     "zeta_from_cor",
 ]

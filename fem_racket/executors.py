@@ -47,9 +47,12 @@ def check_scheduler(address: str) -> str:
 def _progress(total: int, enabled: bool | None, initial: int) -> Any:
     from tqdm import tqdm
 
+    class Bar(tqdm):
+        monitor_interval = 0  # no monitor thread: the process pool may fork
+
     if enabled is None:
         enabled = sys.stderr.isatty()
-    return tqdm(
+    return Bar(
         total=total,
         initial=initial,
         unit="impact",
@@ -67,9 +70,16 @@ def _serial(work: Work, chunks: Sequence[np.ndarray], kwargs: dict, done: Done, 
 
 
 def _pool_context() -> Any:
+    """``fork`` when this process has no other thread (fast: no re-import, works from stdin and
+    notebooks), else ``forkserver`` with the package preloaded (forking a threaded process is
+    unsafe), else ``spawn``."""
     import multiprocessing as mp
+    import threading
 
-    if "forkserver" in mp.get_all_start_methods():
+    methods = mp.get_all_start_methods()
+    if "fork" in methods and threading.active_count() == 1:
+        return mp.get_context("fork")
+    if "forkserver" in methods:
         ctx = mp.get_context("forkserver")
         ctx.set_forkserver_preload(["fem_racket.sweep"])
         return ctx
@@ -119,7 +129,7 @@ def _dask(
         log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
         futures = client.map(work, list(chunks), pure=False, **kwargs)
         index = {f.key: c for f, c in zip(futures, chunks, strict=True)}
-        for fut in as_completed(futures):
+        for fut in as_completed(futures, loop=client.loop):
             chunk = index[fut.key]
             done(chunk, fut.result())
             bar.update(len(chunk))

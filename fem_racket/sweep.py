@@ -65,6 +65,8 @@ KCB_LAW = (
     "from the speed: piecewise power law through the paper's 2.74e4, 5.0e4, 8.33e4 N/m "
     "at 20, 30, 40 m/s"
 )
+#: Below this many exact impacts the default backend is serial (a pool takes ~0.5 s to start).
+SERIAL_BELOW = 200
 #: Output step of the BDF solvers in sweeps [s] (their peak force is the maximum over it).
 BDF_OUTPUT_STEP = 1e-6
 
@@ -272,7 +274,8 @@ def sweep(
     restart : bool
         Discard an existing checkpoint instead of resuming it.
     backend : {"serial", "processes", "dask"}, optional
-        Default: "dask" when ``scheduler`` is given, else "processes".
+        Default: "dask" when ``scheduler`` is given, else "processes" (serial for fewer than
+        :data:`SERIAL_BELOW` exact impacts).
     workers : int, optional
         Processes of the local pool; all cores when None.
     scheduler : str, optional
@@ -306,8 +309,8 @@ def sweep(
         rtol=rtol,
         atol=atol,
     )
-    backend = ("dask" if scheduler is not None else "processes") if backend is None else backend
-    check_choice("backend", backend, BACKENDS)
+    if backend is not None:
+        check_choice("backend", backend, BACKENDS)
     for name, value in (("workers", workers), ("chunk_size", chunk_size)):
         if value is not None and (
             isinstance(value, bool) or not isinstance(value, int) or value < 1
@@ -337,6 +340,9 @@ def sweep(
         if ckpt is not None:
             ckpt.save(chunk, result)
 
+    if backend is None:
+        small = spec.solver == "exact" and todo.size < SERIAL_BELOW
+        backend = "dask" if scheduler is not None else ("serial" if small else "processes")
     n_workers = workers or (os.cpu_count() or 1)
     size = chunk_size or _chunk_size(spec, todo.size, 1 if backend == "serial" else n_workers)
     run_chunks(

@@ -13,12 +13,12 @@ from collections.abc import Sequence
 
 from .. import __version__
 from ..validation import InputError
-from . import modes, simulate
+from . import modes, simulate, sweep
 
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes)
+COMMANDS = (simulate, modes, sweep)
 
 
 def build_parser() -> argparse.ArgumentParser:
