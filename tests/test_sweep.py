@@ -272,3 +272,16 @@ def test_progress_bar_shows_rate_and_eta(capsys):
     sweep(position=[0.6, 0.7, 0.8], backend="serial", chunk_size=1, progress=True)
     err = capsys.readouterr().err
     assert "3/3" in err and "impact/s" in err and "<" in err  # [elapsed<remaining, rate]
+
+
+def test_bench_sweep_script_runs(capsys):
+    sys.path.insert(0, str(ROOT / "scripts"))
+    try:
+        import bench_sweep
+    finally:
+        sys.path.remove(str(ROOT / "scripts"))
+    rows = bench_sweep.main(["--quick"])
+    out = capsys.readouterr().out
+    assert "impacts/s" in out and "process pool" in out
+    assert {r["solver"] for r in rows} == {"exact", "cvode"}
+    assert all(r["rate"] > 0 for r in rows)
