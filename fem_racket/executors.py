@@ -81,7 +81,7 @@ def _pool_context() -> Any:
         return mp.get_context("fork")
     if "forkserver" in methods:
         ctx = mp.get_context("forkserver")
-        ctx.set_forkserver_preload(["fem_racket.sweep"])
+        ctx.set_forkserver_preload(["fem_racket.cases"])
         return ctx
     return mp.get_context("spawn")
 

@@ -69,7 +69,7 @@ def reused_loop(cases: list, solver: str) -> float:
 
 def sweep_time(grid: dict, solver: str, backend: str) -> float:
     """Wall time [s] of fem_racket.sweep over ``grid``, nothing cached beforehand."""
-    from fem_racket.sweep import clear_caches
+    from fem_racket.cases import clear_caches
 
     clear_caches()
     t0 = time.perf_counter()

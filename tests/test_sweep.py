@@ -22,10 +22,10 @@ from fem_racket import (
     standard_frame,
     sweep,
 )
+from fem_racket.cases import VARIABLES, clear_caches
 from fem_racket.checkpoint import Checkpoint, checkpoint_path
 from fem_racket.cli import main
 from fem_racket.grid import parse_values
-from fem_racket.sweep import VARIABLES, clear_caches
 
 ROOT = Path(__file__).resolve().parents[1]
 SMALL = {"position": [0.6, 0.769, 0.9], "speed": [20.0, 40.0], "ei1": [60.0, 146.0, 2000.0]}
