@@ -14,6 +14,7 @@ Exact solver: :func:`fem_racket.integrators.exact_outcome` (scalars only). BDF s
 
 from __future__ import annotations
 
+import logging
 from collections import OrderedDict
 from typing import Any
 
@@ -21,7 +22,7 @@ import numpy as np
 
 from .grid import REFERENCE_EI1, SweepSpec
 from .impact import simulate
-from .integrators import exact_outcome
+from .integrators import NoSeparationError, exact_outcome
 from .model import FrameModel
 from .params import (
     PAPER_CLAMPED_COR,
@@ -33,6 +34,8 @@ from .params import (
 from .system import modal_system
 
 __all__ = ["VARIABLES", "clear_caches", "run_chunk"]
+
+log = logging.getLogger(__name__)
 
 #: Result variables: name -> (units, description).
 VARIABLES: dict[str, tuple[str, str]] = {
@@ -135,8 +138,16 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
-    """Results of the cases ``chunk`` (flat indices), shape (len(chunk), len(VARIABLES))."""
+    """Results of the cases ``chunk`` (flat indices), shape (len(chunk), len(VARIABLES)).
+
+    A case whose ball does not separate within the time limit, or whose solver fails, gets NaN
+    (the sweep reports how many); any other error stops the sweep.
+    """
     out = np.empty((len(chunk), len(VARIABLES)))
     for row, index in enumerate(chunk):
-        out[row] = _case(spec, spec.case(int(index)))
+        try:
+            out[row] = _case(spec, spec.case(int(index)))
+        except (NoSeparationError, RuntimeError, np.linalg.LinAlgError) as exc:
+            log.warning("case %d failed (NaN in the results): %s", index, exc)
+            out[row] = np.nan
     return out

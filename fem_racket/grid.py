@@ -171,7 +171,8 @@ class SweepSpec:
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
         """Validated spec from user values (numbers, strings, sequences); see
         :func:`fem_racket.sweep` for the keywords."""
-        values = {name: as_values(name, kwargs.pop(name, None)) for name in PARAMETERS}
+        raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
+        values = {name: as_values(name, value) for name, value in raw.items()}
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
         defaults["ball_mass"] = DEFAULT_BALL_MASS
         for name, default in defaults.items():
@@ -186,8 +187,16 @@ class SweepSpec:
                 raise InputError(
                     "ei1 and ei2 are not allowed with a custom frame: use ei_factor to scale its EI"
                 )
-            if isinstance(frame, FrameMesh) and np.ndim(values["elements"]) == 1:
-                raise InputError("elements is not allowed to vary with a mesh: the mesh fixes it")
+            if isinstance(frame, FrameMesh):
+                given = raw["elements"]
+                if given is not None and (
+                    np.ndim(values["elements"]) == 1 or values["elements"] != frame.n_elements
+                ):
+                    raise InputError(
+                        f"elements = {given!r} is not allowed with a mesh: it has "
+                        f"{frame.n_elements} elements"
+                    )
+                values["elements"] = frame.n_elements
         spec = cls(values=values, frame=frame, ei2=ei2, **kwargs)
         check_choice("solver", spec.solver, SOLVERS)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)

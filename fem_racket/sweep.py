@@ -240,6 +240,10 @@ def sweep(
         initial=spec.size - todo.size,
     )
     ds = _dataset(spec, values)
+    failed = int(np.count_nonzero(np.isnan(values[:, 0])))
+    ds.attrs["failed_cases"] = failed
+    if failed:
+        log.warning("%d of %d cases failed: NaN in the dataset", failed, spec.size)
     if output is not None:
         with atomic_output(Path(output), overwrite=overwrite) as tmp:
             ds.to_netcdf(tmp)

@@ -285,3 +285,15 @@ def test_bench_sweep_script_runs(capsys):
     assert "impacts/s" in out and "process pool" in out
     assert {r["solver"] for r in rows} == {"exact", "cvode"}
     assert all(r["rate"] > 0 for r in rows)
+
+
+def test_mesh_frame():
+    from fem_racket import frame_mesh
+
+    mesh = frame_mesh(standard_frame(), 12)
+    ds = sweep(mesh, position=[0.6, 0.8], ei_factor=[1.0, 3.0], backend="serial", progress=False)
+    assert ds.attrs["elements"] == 12 and "mesh of 12 elements" in ds.attrs["frame"]
+    r = simulate(FrameModel.build(mesh).scaled(3.0), position=0.8, output_step=None)
+    assert float(ds.cor.sel(position=0.8, ei_factor=3.0)) == pytest.approx(r.cor, abs=1e-9)
+    with pytest.raises(InputError, match="elements = 20 is not allowed with a mesh"):
+        sweep(mesh, elements=20, progress=False)
