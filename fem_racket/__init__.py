@@ -30,6 +30,7 @@ from .params import (
 )
 from .refine import RefinementStudy, refinement_study
 from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact
+from .sweep import sweep
 from .validation import InputError
 from .vtk import ImpactSeries, impact_series, write_vtk_series
 
@@ -80,6 +81,7 @@ __all__ = [
     "rigid_impact",
     "simulate",
     "standard_frame",
+    "sweep",
     "write_mesh",
     "write_vtk_series",
     "zeta_from_cor",

@@ -13,12 +13,12 @@ from collections.abc import Sequence
 
 from .. import __version__
 from ..validation import InputError
-from . import modes, refine, reproduce, simulate, vtk
+from . import modes, refine, reproduce, simulate, sweep, vtk
 
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, vtk, refine, reproduce)
+COMMANDS = (simulate, modes, sweep, vtk, refine, reproduce)
 
 
 def build_parser() -> argparse.ArgumentParser:
