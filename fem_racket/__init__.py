@@ -6,6 +6,7 @@ ball-racket system", JSME Int. J. C 40(1).
 
 from importlib.metadata import PackageNotFoundError, version
 
+from .config import RunConfig, example_config, load_config, parse_config
 from .forms import FrameFE, assemble
 from .impact import ImpactResult, simulate
 from .integrators import SOLVERS, NoSeparationError
@@ -48,16 +49,20 @@ __all__ = [
     "MassProperties",
     "NoSeparationError",
     "RigidImpact",
+    "RunConfig",
     "Segment",
     "__version__",
     "assemble",
     "clamped_impact",
     "cor_from_zeta",
+    "example_config",
     "frame_mesh",
     "free_modes",
     "kcb_from_speed",
+    "load_config",
     "mass_properties",
     "mode_nodes",
+    "parse_config",
     "read_mesh",
     "rigid_frame",
     "rigid_impact",

@@ -37,9 +37,14 @@ def check_output_path(path: str | os.PathLike, *, overwrite: bool = False) -> Pa
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise InputError(f"output folder = '{folder}' cannot be created: {exc.strerror}") from None
+        raise InputError(
+            f"output folder = '{folder}' cannot be created ({exc.strerror}): "
+            "must be a folder you can write to"
+        ) from None
     if not os.access(folder, os.W_OK | os.X_OK):
-        raise InputError(f"output folder = '{folder}' is not writable")
+        raise InputError(
+            f"output folder = '{folder}' is not writable: must be a folder you can write to"
+        )
     return path
 
 
