@@ -322,7 +322,7 @@ def load_config(path: str | os.PathLike, *, command_tables: Any = None) -> RunCo
         raise InputError(f"config = '{p}' is not allowed: no such file") from None
     except (OSError, UnicodeDecodeError) as exc:
         why = getattr(exc, "strerror", None) or str(exc)
-        raise InputError(f"config = '{p}' cannot be read: {why}") from None
+        raise InputError(f"config = '{p}' cannot be read ({why}): must be a TOML file") from None
     return parse_config(text, p, command_tables=command_tables)
 
 
@@ -340,7 +340,14 @@ def _check(data: dict[str, Any], source: Path | None, known: set[str]) -> RunCon
         _reject_unknown(table, CORE_KEYS[name], name)
         values[name] = {k: CORE_KEYS[name][k].check(f"{name}.{k}", v) for k, v in table.items()}
     _check_combinations(values)
-    return RunConfig(values, tables, source)
+    cfg = RunConfig(values, tables, source)
+    mesh = cfg.get("frame.mesh")
+    if mesh is not None and not cfg.resolve(mesh).is_file():
+        raise InputError(
+            f"frame.mesh = '{mesh}' is not allowed: no such file ({cfg.resolve(mesh)}; "
+            "must be a mesh file, relative to the run file's folder)"
+        )
+    return cfg
 
 
 def _check_combinations(values: dict[str, dict[str, Any]]) -> None:

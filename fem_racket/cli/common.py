@@ -395,9 +395,7 @@ def apply_config(
     if frame_file and clash and "mesh" not in given:
         opts = ", ".join(f"--{d}" for d in sorted(clash))
         key = "frame." + next(iter(sorted(frame_file)))
-        raise InputError(
-            f"{opts} cannot be combined with {key} from {path}: give --mesh, or remove {key}"
-        )
+        raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
     if "mesh" in given:
         values.pop("segments", None)
     for dest, value in values.items():
