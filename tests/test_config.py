@@ -167,3 +167,58 @@ def test_library_api(tmp_path):
     path = tmp_path / "run.toml"
     path.write_text("[frame]\nsegments = [{length_m = 0.5, ei_n_m2 = 100, rhoa_kg_m = 0.6}]\n")
     assert load_config(path).frame() == Frame((Segment(0.5, 100.0, 0.6),))
+
+
+def test_a_new_command_plugs_in_with_one_call(tmp_path):
+    """How sweep/refine/export-vtk/animate adopt run files: add_config_option(p), nothing else.
+
+    A stand-in sub-command with the kinds of options those commands have (a list, a flag, a
+    choice, a positional) reads its own table, converted and checked like the command line."""
+    import argparse
+
+    from fem_racket import InputError
+    from fem_racket.cli.common import (
+        OneLineErrorParser,
+        add_config_option,
+        add_impact_options,
+        add_output_options,
+        apply_config,
+    )
+
+    parser = OneLineErrorParser(prog="fem-racket")
+    sub = parser.add_subparsers(dest="command")
+    p = sub.add_parser("sweep")
+    p.add_argument("name")
+    add_impact_options(p)
+    p.add_argument("--ei1-values", type=float, nargs="+", default=[146.0])
+    p.add_argument("--backend", choices=["serial", "dask"], default="serial")
+    p.add_argument("--progress", action="store_true")
+    add_output_options(p, "output/sweep.nc")
+    add_config_option(p)
+
+    def apply(text, *argv):
+        path = tmp_path / "run.toml"
+        path.write_text(text)
+        argv = ["sweep", "case", *argv, "--config", str(path)]
+        return apply_config(parser, argv, parser.parse_args(argv))
+
+    text = (
+        "[impact]\nspeed_m_s = 30\n[output]\noverwrite = true\n"
+        "[sweep]\nei1_values = [50, 100.5]\nbackend = 'dask'\nprogress = true\n"
+        "out = 'output/s.nc'\n"
+    )
+    args = apply(text)
+    assert isinstance(args, argparse.Namespace) and args.name == "case"
+    assert args.ei1_values == [50.0, 100.5] and args.backend == "dask" and args.progress
+    assert args.speed == 30.0 and args.overwrite is True and args.out == "output/s.nc"
+    args = apply(text, "--backend", "serial", "--ei1-values", "7")
+    assert args.backend == "serial" and args.ei1_values == [7.0] and args.progress
+    for bad, words in (
+        ("[sweep]\nbackend = 'mpi'\n", "sweep.backend = 'mpi' is not allowed: must be one of"),
+        ("[sweep]\nei1_values = 3\n", "sweep.ei1_values = 3 is not allowed: must be an array"),
+        ("[sweep]\nei1_values = ['a']\n", "sweep.ei1_values = 'a' is not allowed"),
+        ("[sweep]\nprogres = true\n", "did you mean 'progress'"),
+        ("[sweep]\nprogress = 1\n", "must be true or false"),
+    ):
+        with pytest.raises(InputError, match=words):
+            apply(bad)

@@ -31,7 +31,14 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow],
 )
 settings.register_profile("explore", deadline=None, max_examples=200)
-settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+PROFILE = os.environ.get("HYPOTHESIS_PROFILE", "ci")
+settings.load_profile(PROFILE)
+
+
+def budget(n: int) -> settings:
+    """``n`` examples in CI (keeps this file under ~60 s); the profile's count when exploring."""
+    return settings(max_examples=n if PROFILE == "ci" else settings.default.max_examples)
+
 
 ELEMENTS = 20  # the paper's mesh
 
@@ -56,7 +63,7 @@ def _impact(frame, position, speed, **kw):
     return simulate(FrameModel.build(frame, ELEMENTS), position=position, speed=speed, **kw)
 
 
-@settings(max_examples=25)
+@budget(25)
 @given(frame=frames(), position=positions, speed=speeds)
 def test_momentum_conserved_during_contact(frame, position, speed):
     r = _impact(frame, position, speed)
@@ -71,7 +78,7 @@ def test_momentum_conserved_during_contact(frame, position, speed):
     assert np.max(np.abs(h - h0)) <= 1e-9 * p0 * frame.length
 
 
-@settings(max_examples=25)
+@budget(25)
 @given(frame=frames(), position=positions, speed=speeds)
 def test_energy_conserved_without_damping(frame, position, speed):
     r = _impact(frame, position, speed, zeta=0.0)
@@ -84,7 +91,7 @@ def test_energy_conserved_without_damping(frame, position, speed):
     assert np.max(np.abs(e["total"] - e0)) <= 1e-9 * e0
 
 
-@settings(max_examples=25)
+@budget(25)
 @given(frame=frames(), position=positions, speed=speeds)
 def test_energy_balanced_by_dashpot_work(frame, position, speed):
     r = _impact(frame, position, speed, output_step=1e-6)
@@ -98,7 +105,7 @@ def test_energy_balanced_by_dashpot_work(frame, position, speed):
     assert np.max(np.abs(e["total"] - e0)) <= 1e-5 * e0
 
 
-@settings(max_examples=40)
+@budget(40)
 @given(frame=frames(), position=positions, speed=speeds)
 def test_cor_and_contact_time_are_physical(frame, position, speed):
     r = _impact(frame, position, speed, output_step=None)
@@ -110,7 +117,7 @@ def test_cor_and_contact_time_are_physical(frame, position, speed):
     assert r.contact_time < 20.0 * math.pi * math.sqrt(r.ball.mass / r.contact.stiffness)
 
 
-@settings(max_examples=12)
+@budget(12)
 @given(frame=frames(), position=positions, speed=speeds)
 def test_exact_and_cvode_agree(frame, position, speed):
     model = FrameModel.build(frame, ELEMENTS)
@@ -123,7 +130,7 @@ def test_exact_and_cvode_agree(frame, position, speed):
     assert abs(exact.contact_time - cvode.contact_time) <= 1e-6 * exact.contact_time
 
 
-@settings(max_examples=3)
+@budget(3)
 @given(frame=frames(), position=positions, speed=speeds)
 def test_exact_and_cvode_agree_with_all_modes(frame, position, speed):
     model = FrameModel.build(frame, ELEMENTS)

@@ -12,7 +12,8 @@ from typing import Any
 
 from ..config import COMMAND_TABLES, example_config, load_config, toml_value
 from ..validation import InputError
-from .common import add_output_options, config_values, file_options
+from .common import add_output_options
+from .runfile import config_values, file_options
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -70,7 +71,8 @@ def _check(path: str) -> str:
         used = file_options(sub).keys() | {a.dest for a in sub._actions}
         used |= {"segments", "mesh"}
         shown = {k: v for k, v in values.items() if k in used}
-        out.append(f"[{name}] " + ", ".join(f"{k} = {_show(v)}" for k, v in shown.items()))
+        listed = ", ".join(f"{k} = {_show(v)}" for k, v in shown.items())
+        out.append(f"[{name}] {listed or '(all defaults)'}")
     known = {COMMAND_TABLES.get(n, n) for n in commands}
     for table in cfg.tables:
         if table not in known:
