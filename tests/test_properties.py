@@ -94,15 +94,19 @@ def test_energy_conserved_without_damping(frame, position, speed):
 @budget(25)
 @given(frame=frames(), position=positions, speed=speeds)
 def test_energy_balanced_by_dashpot_work(frame, position, speed):
-    r = _impact(frame, position, speed, output_step=1e-6)
+    # The dashpot's work is the one quadrature here (cumulative Simpson on the output times), so
+    # the output step must resolve the fastest frame mode kept: 20 points per period of the
+    # 20th mode (a consistent truncated system; all 40 modes would need steps of ~0.05 us).
+    model = FrameModel.build(frame, ELEMENTS)
+    step = min(1e-6, 1.0 / (20.0 * model.modes(20).frequencies[-1]))
+    r = simulate(model, position=position, speed=speed, modes=20, output_step=step)
     e = r.energies()
     e0 = 0.5 * r.ball.mass * speed**2
-    assert np.all(np.diff(e["dissipated"]) >= -1e-12 * e0)  # the dashpot only takes energy
-    # Only the dashpot's work is a quadrature (cumulative Simpson, step 1e-6 s, over a
-    # 2-6 ms contact). The integrand C delta'^2 carries frame modes up to ~5e5 Hz that the
-    # 1 MHz sampling cannot resolve; their share of the dissipated energy is small: errors up
-    # to 6e-7 of the initial kinetic energy measured over random frames. 1e-5 bounds that.
-    assert np.max(np.abs(e["total"] - e0)) <= 1e-5 * e0
+    assert 0.0 < e["dissipated"][-1] < e0
+    # Simpson's error on a sinusoid sampled 20 times a period is (2 pi / 20)^4 / 180 = 5e-5 of
+    # its share of the dissipated energy, and the fastest modes carry a small share:
+    # measured up to 2e-9 of e0 over 200 random frames. 1e-7 bounds that.
+    assert np.max(np.abs(e["total"] - e0)) <= 1e-7 * e0
 
 
 @budget(40)
