@@ -7,6 +7,7 @@ ball-racket system", JSME Int. J. C 40(1).
 from importlib.metadata import PackageNotFoundError, version
 
 from .animate import render_animation
+from .config import RunConfig, example_config, load_config, parse_config
 from .coupled import CoupledModes, coupled_modes
 from .exact import free_free_frequencies
 from .forms import FrameFE, assemble
@@ -58,6 +59,7 @@ __all__ = [
     "NoSeparationError",
     "RefinementStudy",
     "RigidImpact",
+    "RunConfig",
     "Segment",
     "__version__",
     "assemble",
@@ -66,14 +68,17 @@ __all__ = [
     "cor_from_zeta",
     "frame_from_mesh",
     "coupled_modes",
+    "example_config",
     "frame_mesh",
     "free_free_frequencies",
     "free_modes",
     "impact_series",
     "kcb_from_speed",
     "graded_mesh",
+    "load_config",
     "mass_properties",
     "mode_nodes",
+    "parse_config",
     "read_mesh",
     "refinement_study",
     "render_animation",

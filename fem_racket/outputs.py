@@ -4,6 +4,20 @@ Every file the library or CLI writes goes through :func:`atomic_output`: the con
 to a temporary name in the destination folder and renamed into place only when complete, so an
 interrupted run never leaves a half-written file. :func:`provenance` is the metadata every output
 carries (package version, date, parameters, solver and tolerances).
+
+The conventions, the same for every command (README, "Outputs, --overwrite and provenance"):
+
+1. Library functions take the output path; only the CLI and scripts default to ``output/``.
+   Commands take ``--out PATH`` and ``--overwrite``
+   (:func:`fem_racket.cli.common.add_output_options`).
+2. Check the path with :func:`check_output_path` *before* the work, so a long run does not fail
+   at the end: an existing file is refused unless ``overwrite``; the folder is created, and one
+   that cannot be created or written is an :class:`~fem_racket.validation.InputError`.
+3. Write inside ``with atomic_output(path, overwrite=...) as tmp:``; on any exception the
+   temporary file is removed and an existing file is left as it was.
+4. Put ``provenance(parameters)`` in the file (JSON: a ``"provenance"`` object; netCDF / VTK:
+   global attributes / field data), with ``parameters`` holding every setting of the run
+   (:func:`fem_racket.cli.common.run_parameters` gives the parsed options, run file applied).
 """
 
 from __future__ import annotations
@@ -51,9 +65,14 @@ def check_output_path(path: str | os.PathLike, *, overwrite: bool = False) -> Pa
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise InputError(f"output folder = '{folder}' cannot be created: {exc.strerror}") from None
+        raise InputError(
+            f"output folder = '{folder}' cannot be created ({exc.strerror}): "
+            "must be a folder you can write to"
+        ) from None
     if not os.access(folder, os.W_OK | os.X_OK):
-        raise InputError(f"output folder = '{folder}' is not writable")
+        raise InputError(
+            f"output folder = '{folder}' is not writable: must be a folder you can write to"
+        )
     return path
 
 

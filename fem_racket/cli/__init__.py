@@ -13,17 +13,18 @@ from collections.abc import Sequence
 
 from .. import __version__
 from ..validation import InputError
-from . import modes, refine, reproduce, simulate, sweep, vtk
+from . import config, modes, refine, reproduce, simulate, sweep, vtk
+from .common import OneLineErrorParser, apply_config
 
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, sweep, vtk, refine, reproduce)
+COMMANDS = (simulate, modes, sweep, vtk, refine, reproduce, config)
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The top-level parser with every sub-command registered."""
-    parser = argparse.ArgumentParser(
+    parser = OneLineErrorParser(
         prog="fem-racket",
         description="Finite-element simulation of a tennis ball striking a racket frame "
         "(Kawazoe & Kanda 1997).",
@@ -47,6 +48,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         level=logging.INFO if args.verbose else logging.WARNING, format="%(message)s"
     )
     try:
+        args = apply_config(parser, argv, args)
         return int(args.func(args))
     except InputError as exc:
         print(f"fem-racket {args.command}: error: {exc}", file=sys.stderr)

@@ -1,4 +1,17 @@
-"""Options shared by the commands that run an impact, and their translation to library calls."""
+"""Options shared by the commands that run an impact, and their translation to library calls.
+
+Conventions every command follows (so a new command plugs in with a few lines):
+
+- ``add_config_option(p)`` gives it ``--config run.toml`` (a TOML run file, see
+  :mod:`fem_racket.config`); :func:`apply_config`, called once by ``cli.main``, fills the options
+  the command line did not give from the file. Precedence: command line > the command's own
+  table (``[sweep]``, ``[vtk]`` ...) > the core tables (``[frame]``, ``[impact]`` ...) > built-in
+  defaults. The command's table takes its long options as keys (``--ei1-values`` ->
+  ``ei1_values``), checked and converted as on the command line.
+- ``add_output_options(p, default)`` gives it ``--out PATH`` and ``--overwrite``; write through
+  :func:`fem_racket.outputs.atomic_output` (check the path with ``check_output_path`` *before* the
+  work) and put :func:`run_parameters` into the file's :func:`fem_racket.outputs.provenance`.
+"""
 
 from __future__ import annotations
 
@@ -6,6 +19,7 @@ import argparse
 import json
 import math
 import sys
+from pathlib import Path
 from typing import Any
 
 from ..impact import BASES
@@ -15,15 +29,23 @@ from ..model import DEFAULT_MODES, FrameModel
 from ..params import Frame, standard_frame
 from ..system import SEPARATION_EVENTS
 from ..validation import InputError
+from .runfile import add_config_option, apply_config
 
 __all__ = [
+    "OneLineErrorParser",
+    "add_config_option",
     "add_frame_options",
     "add_impact_options",
     "add_mesh_option",
+    "add_output_options",
+    "apply_config",
     "build_model",
     "frame_from_args",
     "impact_kwargs",
     "print_json",
+    "run_parameters",
+    "write_json",
+    "write_text",
 ]
 
 #: Frame options that a mesh file replaces (giving one with --mesh is an error).
@@ -80,13 +102,18 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
 
 
 def frame_from_args(args: argparse.Namespace) -> Frame | FrameMesh:
-    """The mesh read from --mesh, or the paper's stepped frame with --ei1/--ei2.
+    """The frame the options describe.
 
+    A mesh file (``--mesh`` or a run file's ``frame.mesh``) wins over segments (a run file's
+    ``[[frame.segments]]``), which win over the paper's stepped frame with --ei1/--ei2.
     --mesh together with an explicit --ei1, --ei2 or --elements is an error: the file fixes the
     cells and their EI and rhoA.
     """
     path = getattr(args, "mesh", None)
     if path is None:
+        segments = getattr(args, "segments", None)
+        if segments:
+            return Frame(tuple(segments))
         return standard_frame(args.ei1, args.ei2)
     clash = sorted(set(getattr(args, "explicit_options", ())) & set(MESH_EXCLUSIVE))
     if clash:
@@ -159,6 +186,20 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         metavar="N",
         help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES})",
     )
+    s.add_argument(
+        "--t-max",
+        type=float,
+        default=None,
+        metavar="S",
+        help="give up if the ball has not separated by then [s] (default 20 x the eq 11 "
+        "contact time)",
+    )
+    s.add_argument(
+        "--rtol", type=float, default=1e-10, help="relative tolerance of cvode/bdf (default 1e-10)"
+    )
+    s.add_argument(
+        "--atol", type=float, default=1e-12, help="absolute tolerance of cvode/bdf (default 1e-12)"
+    )
 
 
 def build_model(args: argparse.Namespace) -> FrameModel:
@@ -178,6 +219,9 @@ def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
         "separation": args.separation,
         "basis": args.basis,
         "modes": args.modes,
+        "t_max": args.t_max,
+        "rtol": args.rtol,
+        "atol": args.atol,
     }
 
 
@@ -195,3 +239,62 @@ def print_json(data: Any) -> None:
 
     json.dump(clean(data), sys.stdout, indent=2)
     sys.stdout.write("\n")
+
+
+class OneLineErrorParser(argparse.ArgumentParser):
+    """An argparse parser whose usage errors are one line (no usage dump), exit code 2."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        """Print ``prog: error: message`` and exit 2."""
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+# -- outputs ---------------------------------------------------------------------------------------
+def add_output_options(parser: argparse.ArgumentParser, default: str | None = None) -> None:
+    """``--out PATH`` (``default``: None means the command writes no file unless asked) and
+    ``--overwrite``. Relative paths are relative to the working directory."""
+    g = parser.add_argument_group("output")
+    where = f"default {default}" if default else "default: print only"
+    g.add_argument("--out", default=default, metavar="PATH", help=f"output file ({where})")
+    g.add_argument("--overwrite", action="store_true", help="replace the output file if it exists")
+
+
+def run_parameters(args: argparse.Namespace) -> dict[str, Any]:
+    """The parsed options as a JSON-ready dict for :func:`fem_racket.outputs.provenance`."""
+
+    def plain(v: Any) -> Any:
+        if v is None or isinstance(v, (bool, int, float, str)):
+            return v
+        if isinstance(v, Path):
+            return str(v)
+        if isinstance(v, (list, tuple)):
+            return [plain(x) for x in v]
+        if hasattr(v, "__dataclass_fields__"):
+            return {k: plain(getattr(v, k)) for k in v.__dataclass_fields__}
+        return repr(v)
+
+    return {k: plain(v) for k, v in sorted(vars(args).items()) if k != "func" and not callable(v)}
+
+
+def write_text(path: str | Path, text: str, *, overwrite: bool = False) -> Path:
+    """Write ``text`` to ``path`` atomically (refusing an existing file unless ``overwrite``)."""
+    from ..outputs import atomic_output
+
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        tmp.write_text(text, encoding="utf-8")
+    return Path(path)
+
+
+def write_json(path: str | Path, data: Any, *, overwrite: bool = False) -> Path:
+    """Write ``data`` as JSON to ``path`` atomically (NaN and inf become null)."""
+    return write_text(path, json.dumps(_clean(data), indent=2) + "\n", overwrite=overwrite)
+
+
+def _clean(v: Any) -> Any:
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    if isinstance(v, dict):
+        return {k: _clean(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_clean(x) for x in v]
+    return v

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from ..modal import mode_nodes
-from .common import add_frame_options, build_model, print_json
+from .common import add_config_option, add_frame_options, build_model, print_json
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -20,6 +20,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="number of flexible modes to report (default 4)",
     )
     p.add_argument("--json", action="store_true", help="print a JSON object")
+    add_config_option(p)
     p.set_defaults(func=run)
 
 

@@ -1,11 +1,25 @@
-"""``fem-racket simulate``: one impact; prints COR, contact time, rebound speed, peak force."""
+"""``fem-racket simulate``: one impact; prints COR, contact time, rebound speed, peak force.
+
+``--out result.json`` also writes the summary, the time histories and the provenance (package
+version, every parameter, solver and tolerances, date) to a JSON file.
+"""
 
 from __future__ import annotations
 
 import argparse
 
 from ..impact import simulate
-from .common import add_impact_options, build_model, impact_kwargs, print_json
+from ..outputs import check_output_path, provenance
+from .common import (
+    add_config_option,
+    add_impact_options,
+    add_output_options,
+    build_model,
+    impact_kwargs,
+    print_json,
+    run_parameters,
+    write_json,
+)
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -13,13 +27,27 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("simulate", help="simulate one ball impact on the racket")
     add_impact_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON object")
+    add_output_options(p)
+    add_config_option(p)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    """Simulate and print the result."""
+    """Simulate and print the result (and write it with ``--out``)."""
+    if args.out:
+        check_output_path(args.out, overwrite=args.overwrite)
     result = simulate(build_model(args), **impact_kwargs(args))
     summary = result.summary()
+    if args.out:
+        history = {
+            "time [s]": result.t.tolist(),
+            "ball displacement [m]": result.ball_displacement.tolist(),
+            "ball velocity [m/s]": result.ball_velocity.tolist(),
+            "impact point displacement [m]": result.impact_point_displacement.tolist(),
+            "contact force [N]": result.force.tolist(),
+        }
+        data = {"provenance": provenance(run_parameters(args)), "summary": summary}
+        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
     if args.json:
         print_json(summary)
         return 0
@@ -36,4 +64,6 @@ def run(args: argparse.Namespace) -> int:
     ]
     for name, value, unit in rows:
         print(f"{name:<28} {value:>14} {unit}")
+    if args.out:
+        print(f"{'written':<28} {args.out}")
     return 0

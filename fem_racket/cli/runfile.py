@@ -1,0 +1,164 @@
+"""Run files on the command line: ``--config run.toml`` for any command.
+
+A command adopts run files with one call in its ``register``: ``add_config_option(p)`` (re-exported
+by :mod:`fem_racket.cli.common`). ``cli.main`` calls :func:`apply_config` once after parsing; it
+fills every option the command line did not give from the file. Precedence: command line > the
+command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
+:data:`fem_racket.config.COMMAND_TABLES`) > the core tables (``[frame]``, ``[impact]`` ...) >
+built-in defaults. The command's table takes its long options as keys (``--ei1-values`` ->
+``ei1_values``), converted and checked as on the command line; options the core tables own
+(``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key.
+"""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+import sys
+from collections.abc import Sequence
+from typing import Any
+
+from ..config import COMMAND_TABLES, CORE_DESTS, CORE_KEYS, RunConfig, load_config
+from ..validation import InputError
+
+__all__ = ["add_config_option", "apply_config", "config_values", "file_options"]
+
+#: Options that never come from a run file.
+_NOT_FROM_FILE = frozenset({"help", "config", "version"})
+#: Options only the core tables set; a command's table may still set its own out/overwrite.
+_CORE_ONLY = CORE_DESTS - {"out", "overwrite"}
+
+
+def add_config_option(parser: argparse.ArgumentParser) -> None:
+    """Give a command ``--config run.toml``; :func:`apply_config` does the rest."""
+    parser.add_argument(
+        "--config",
+        metavar="TOML",
+        default=None,
+        help="run file (see `fem-racket config --example`); command-line options override it",
+    )
+
+
+def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.ArgumentParser:
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            return action.choices[command]
+    raise LookupError(command)  # pragma: no cover - build_parser always adds sub-commands
+
+
+def file_options(sub: argparse.ArgumentParser) -> dict[str, argparse.Action]:
+    """A command's options that its run-file table may set: dest -> action."""
+    return {
+        a.dest: a
+        for a in sub._actions
+        if a.option_strings
+        and a.dest not in _NOT_FROM_FILE
+        and a.dest not in _CORE_ONLY
+        and a.default is not argparse.SUPPRESS
+    }
+
+
+class _Given(argparse.Namespace):
+    """A namespace that claims to hold every option, so argparse fills in no defaults."""
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return _Given
+
+
+def _explicit(sub: argparse.ArgumentParser, argv: Sequence[str], command: str) -> set[str]:
+    """The dests the command line sets explicitly (parsed again with no defaults)."""
+    rest = list(argv)[list(argv).index(command) + 1 :]
+    ns, _ = sub.parse_known_args(rest, namespace=_Given())
+    return set(vars(ns))
+
+
+def _coerce(action: argparse.Action, value: Any, where: str) -> Any:
+    """A run-file value for ``action``, checked as the command line would check it."""
+    opt = action.option_strings[-1]
+    if action.nargs == 0:  # flags: store_true / store_false / store_const
+        if not isinstance(value, bool):
+            raise InputError(f"{where} = {value!r} is not allowed: must be true or false ({opt})")
+        if isinstance(action.const, bool):
+            return action.const if value else not action.const
+        return action.const if value else action.default
+    many = action.nargs in ("+", "*") or isinstance(action.nargs, int)
+    if many:
+        if not isinstance(value, list):
+            raise InputError(f"{where} = {value!r} is not allowed: must be an array ({opt})")
+        return [_coerce_one(action, v, where) for v in value]
+    return _coerce_one(action, value, where)
+
+
+def _coerce_one(action: argparse.Action, value: Any, where: str) -> Any:
+    opt = action.option_strings[-1]
+    if isinstance(value, (dict, list)) or isinstance(value, bool):
+        raise InputError(f"{where} = {value!r} is not allowed: must be a value like {opt} takes")
+    convert = action.type or str
+    try:
+        if convert is int and isinstance(value, float):
+            raise ValueError("must be an integer")
+        out = convert(value if isinstance(value, str) or convert in (int, float) else str(value))
+    except (TypeError, ValueError, argparse.ArgumentTypeError) as exc:
+        raise InputError(f"{where} = {value!r} is not allowed: {exc} ({opt})") from None
+    if action.choices is not None and out not in action.choices:
+        options = ", ".join(map(str, action.choices))
+        raise InputError(f"{where} = {value!r} is not allowed: must be one of {options}")
+    return out
+
+
+def config_values(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, Any]:
+    """dest -> value from the run file for one command: core tables, then the command's table."""
+    values = dict(cfg.defaults())
+    table = COMMAND_TABLES.get(command, command)
+    options = file_options(sub)
+    for key, value in cfg.table(table).items():
+        where = f"{table}.{key}"
+        dest = key.replace("-", "_")
+        if dest in _CORE_ONLY:
+            core = [
+                f"{t}.{k}" for t, ks in CORE_KEYS.items() for k, v in ks.items() if v.dest == dest
+            ]
+            raise InputError(f"{where} is not allowed here: set {' or '.join(core)} instead")
+        if dest not in options:
+            near = difflib.get_close_matches(dest, list(options), n=1, cutoff=0.6)
+            hint = f"did you mean '{near[0]}'?" if near else ""
+            allowed = ", ".join(sorted(options)) or "(none)"
+            raise InputError(
+                f"{where} is not a known key: {hint} allowed: {allowed}".replace(":  ", ": ")
+            )
+        values[dest] = _coerce(options[dest], value, where)
+    return values
+
+
+def apply_config(
+    parser: argparse.ArgumentParser, argv: Sequence[str] | None, args: argparse.Namespace
+) -> argparse.Namespace:
+    """Fill the options ``argv`` did not give from ``--config`` (no-op without it).
+
+    Called once by :func:`fem_racket.cli.main` after parsing.
+    """
+    path = getattr(args, "config", None)
+    if not path:
+        return args
+    argv = sys.argv[1:] if argv is None else list(argv)
+    sub = _subparser(parser, args.command)
+    cfg = load_config(path)
+    try:
+        values = config_values(sub, args.command, cfg)
+    except InputError as exc:
+        raise InputError(f"{path}: {exc}") from None
+    given = _explicit(sub, argv, args.command)
+    frame_file = {"segments", "mesh"} & set(values)
+    clash = {"ei1", "ei2"} & given
+    if frame_file and clash and "mesh" not in given:
+        opts = ", ".join(f"--{d}" for d in sorted(clash))
+        key = "frame." + next(iter(sorted(frame_file)))
+        raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
+    if "mesh" in given:
+        values.pop("segments", None)
+    for dest, value in values.items():
+        if dest not in given:
+            setattr(args, dest, value)
+    return args

@@ -1,0 +1,30 @@
+"""The README's console examples print what the commands print."""
+
+import re
+from pathlib import Path
+
+import pytest
+
+from fem_racket.cli import main
+
+README = Path(__file__).resolve().parent.parent / "README.md"
+
+
+def _examples() -> list[tuple[str, list[str]]]:
+    """(command line, printed lines) of README console blocks that show one whole output."""
+    out = []
+    for block in re.findall(r"```console\n(.*?)```", README.read_text(), flags=re.S):
+        lines = block.splitlines()
+        if sum(ln.startswith("$ ") for ln in lines) == 1 and "..." not in block:
+            out.append((lines[0][2:], lines[1:]))
+    return out
+
+
+@pytest.mark.parametrize(("command", "printed"), _examples(), ids=lambda v: str(v)[:40])
+def test_readme_example_output(capsys, command, printed):
+    argv = command.split()
+    assert argv[0] == "fem-racket"
+    code = main(argv[1:])
+    out, err = capsys.readouterr()
+    assert [ln.rstrip() for ln in (out + err).splitlines()] == [ln.rstrip() for ln in printed]
+    assert code == (2 if "error:" in err else 0)
