@@ -52,14 +52,6 @@ __all__ = [
 MESH_EXCLUSIVE = ("ei1", "ei2", "elements")
 
 
-class _Explicit(argparse._StoreAction):
-    """Store the value and remember that the option was given on the command line."""
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        super().__call__(parser, namespace, values, option_string)
-        namespace.explicit_options = {*getattr(namespace, "explicit_options", ()), self.dest}
-
-
 def add_mesh_option(group: argparse._ArgumentGroup) -> None:
     """--mesh FILE: a 1-D line mesh with cell data EI [N m^2] and rhoA [kg/m]."""
     group.add_argument(
@@ -79,7 +71,6 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=146.0,
         metavar="N_M2",
-        action=_Explicit,
         help="grip-side bending rigidity EI1 [N m^2] (default 146, the paper's)",
     )
     g.add_argument(
@@ -87,7 +78,6 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=None,
         metavar="N_M2",
-        action=_Explicit,
         help="top-side bending rigidity EI2 [N m^2] (default 0.88 * EI1)",
     )
     g.add_argument(
@@ -95,7 +85,6 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         type=int,
         default=20,
         metavar="N",
-        action=_Explicit,
         help="number of beam elements (default 20, as in the paper)",
     )
     add_mesh_option(g)

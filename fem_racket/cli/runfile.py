@@ -135,21 +135,23 @@ def config_values(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) ->
 def apply_config(
     parser: argparse.ArgumentParser, argv: Sequence[str] | None, args: argparse.Namespace
 ) -> argparse.Namespace:
-    """Fill the options ``argv`` did not give from ``--config`` (no-op without it).
+    """Record the options ``argv`` gives explicitly (``args.explicit_options``) and fill the
+    others from ``--config`` when one is given.
 
     Called once by :func:`fem_racket.cli.main` after parsing.
     """
+    argv = sys.argv[1:] if argv is None else list(argv)
+    sub = _subparser(parser, args.command)
+    given = _explicit(sub, argv, args.command)
+    args.explicit_options = given
     path = getattr(args, "config", None)
     if not path:
         return args
-    argv = sys.argv[1:] if argv is None else list(argv)
-    sub = _subparser(parser, args.command)
     cfg = load_config(path)
     try:
         values = config_values(sub, args.command, cfg)
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
-    given = _explicit(sub, argv, args.command)
     frame_file = {"segments", "mesh"} & set(values)
     clash = {"ei1", "ei2"} & given
     if frame_file and clash and "mesh" not in given:
