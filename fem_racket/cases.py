@@ -8,7 +8,7 @@ system is linear, so at fixed K_CB the COR and t_c do not depend on the speed an
 scales with it: cases differing only in speed share one solve, and every case is solved at
 V_B0 = 1 m/s, which makes results independent of the order in which cases are run.
 
-Exact solver: :func:`fem_racket.integrators.exact_outcome` (scalars only). BDF solvers:
+Exact solver: :func:`fem_racket.closed_form.exact_outcome` (scalars only). BDF solvers:
 :func:`fem_racket.simulate` with 1 us output steps, the peak force being the largest over them.
 """
 
@@ -20,9 +20,9 @@ from typing import Any
 
 import numpy as np
 
+from .closed_form import exact_outcome
 from .grid import REFERENCE_EI1, SweepSpec
 from .impact import simulate
-from .integrators import NoSeparationError, exact_outcome
 from .model import FrameModel
 from .params import (
     PAPER_CLAMPED_COR,
@@ -31,7 +31,7 @@ from .params import (
     standard_frame,
     zeta_from_cor,
 )
-from .system import modal_system
+from .system import NoSeparationError, modal_system
 
 __all__ = ["VARIABLES", "clear_caches", "run_chunk"]
 

@@ -23,11 +23,45 @@ from functools import cached_property
 import numpy as np
 import scipy.sparse as sp
 
-from .validation import check_choice
+from .validation import InputError, check_choice
 
-__all__ = ["SEPARATION_EVENTS", "CoupledSystem", "Trajectory", "modal_system", "physical_system"]
+__all__ = [
+    "SEPARATION_EVENTS",
+    "CoupledSystem",
+    "NoSeparationError",
+    "Trajectory",
+    "modal_system",
+    "no_separation",
+    "output_times",
+    "physical_system",
+]
 
 SEPARATION_EVENTS = ("displacement", "force")
+
+
+class NoSeparationError(InputError):
+    """The ball did not leave the strings within the time limit."""
+
+
+def no_separation(t_max: float) -> NoSeparationError:
+    """The error raised when the ball has not separated by ``t_max`` [s]."""
+    return NoSeparationError(
+        f"t_max = {t_max:g} s is not enough: the ball did not separate within it; "
+        "raise t_max (it must exceed the contact time)"
+    )
+
+
+def output_times(step: float | None, t_end: float) -> np.ndarray:
+    """Uniform times 0, step, 2 step, ... below ``t_end``, then ``t_end`` itself [s].
+
+    With ``step`` None only the two end points are returned.
+    """
+    if step is None:
+        return np.array([0.0, t_end])
+    t = np.arange(0.0, t_end, step)
+    if t_end - t[-1] < 1e-9 * step:
+        t = t[:-1]
+    return np.append(t, t_end)
 
 
 @dataclass(frozen=True, eq=False)
