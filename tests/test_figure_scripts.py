@@ -62,3 +62,13 @@ def test_figure_script_refuses_to_overwrite(tmp_path, capsys):
     assert len(err.splitlines()) == 1 and "already exists" in err and "--overwrite" in err
     assert {p: p.stat().st_mtime_ns for p in first} == before
     assert main(["--out", str(tmp_path), "--overwrite"]) == first
+
+
+def test_every_script_is_run_by_a_test():
+    # DESIGN.md section 6: every script in scripts/ is run by the tests. Figure scripts run
+    # above (by glob); every other script must be named by some test module.
+    tests = "\n".join(p.read_text() for p in Path(__file__).parent.glob("test_*.py"))
+    others = [p.stem for p in SCRIPTS.glob("*.py") if not p.stem.startswith("fig")]
+    assert others, "no non-figure scripts found"
+    missing = [s for s in others if not re.search(rf"\b{s}\b", tests)]
+    assert not missing, f"scripts not run by any test: {missing}"
