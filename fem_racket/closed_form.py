@@ -246,7 +246,7 @@ def solve_exact(
     tc = _separation_time(cf, separation, system.contact_time_estimate(), t_max)
     t = output_times(output_step, tc)
     x, v = cf.states(t)
-    return Trajectory(t, x, v)
+    return Trajectory(t, x, v, _peak_force(cf, tc)[0])
 
 
 @dataclass(frozen=True)

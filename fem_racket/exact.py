@@ -38,7 +38,7 @@ from scipy.optimize import brentq
 
 from .mesh import FrameMesh, frame_from_mesh
 from .params import Frame, Segment
-from .validation import InputError
+from .validation import InputError, check_integer
 
 __all__ = ["free_free_determinant", "free_free_frequencies", "uniform_roots"]
 
@@ -151,8 +151,7 @@ def free_free_frequencies(
     if isinstance(frame, FrameMesh):
         frame = frame_from_mesh(frame)
     segs = _check_segments(frame.segments if isinstance(frame, Frame) else frame)
-    if isinstance(n_modes, bool) or not isinstance(n_modes, (int, np.integer)) or n_modes < 1:
-        raise InputError(f"modes = {n_modes!r} is not allowed: must be an integer >= 1")
+    check_integer("modes", n_modes)
     k = _phase_per_sqrt_omega(segs)
 
     def det(q: float) -> float:  # q = sqrt(omega)

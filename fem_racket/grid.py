@@ -24,7 +24,7 @@ from .mesh import FrameMesh
 from .model import DEFAULT_MODES
 from .params import DEFAULT_BALL_MASS, Frame
 from .system import SEPARATION_EVENTS
-from .validation import InputError, check_choice, check_positive, check_range
+from .validation import InputError, check_choice, check_integer, check_positive, check_range
 
 __all__ = ["PARAMETERS", "Parameter", "SweepSpec", "as_values", "parse_values"]
 
@@ -205,9 +205,8 @@ class SweepSpec:
             raise InputError(
                 f"basis = {spec.basis!r} is not allowed with solver 'exact': must be 'modal'"
             )
-        m = spec.modes
-        if m is not None and (isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 1):
-            raise InputError(f"modes = {m!r} is not allowed: must be an integer >= 1")
+        if spec.modes is not None:
+            check_integer("modes", spec.modes)
         check_positive("rtol", spec.rtol)
         check_positive("atol", spec.atol)
         return spec

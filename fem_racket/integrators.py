@@ -41,10 +41,13 @@ def _bdf_setup(
 
 
 def _trajectory(system: CoupledSystem, t: np.ndarray, y: np.ndarray, keep_all: bool) -> Trajectory:
+    """Split the states into coordinates and rates; the peak force over every computed time
+    (the output grid, or t_est / 200 steps when only the ends are kept)."""
     n = system.size
+    peak = float(np.max(y @ system.event_vector("force")))
     if not keep_all:
         t, y = t[[0, -1]], y[[0, -1]]
-    return Trajectory(np.asarray(t), y[:, :n].copy(), y[:, n:].copy())
+    return Trajectory(np.asarray(t), y[:, :n].copy(), y[:, n:].copy(), peak)
 
 
 def solve_cvode(

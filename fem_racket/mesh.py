@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from .params import Frame
-from .validation import InputError
+from .validation import InputError, check_integer
 
 __all__ = [
     "FrameMesh",
@@ -97,14 +97,7 @@ class FrameMesh:
 
 
 def _check_elements(frame: Frame, elements: int) -> None:
-    n_seg = len(frame.segments)
-    if isinstance(elements, bool) or not isinstance(elements, (int, np.integer)):
-        raise InputError(f"elements = {elements!r} is not allowed: must be an integer >= {n_seg}")
-    if elements < n_seg:
-        raise InputError(
-            f"elements = {elements} is not allowed: must be an integer >= {n_seg} "
-            "(one per frame segment)"
-        )
+    check_integer("elements", elements, minimum=len(frame.segments))
 
 
 def _mesh_segments(frame: Frame, elements: int, spacing) -> FrameMesh:

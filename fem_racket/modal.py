@@ -20,7 +20,7 @@ import scipy.sparse.linalg as spla
 from scipy.optimize import brentq
 
 from .forms import FrameFE
-from .validation import InputError
+from .validation import check_integer
 
 __all__ = ["FreeModes", "MassProperties", "free_modes", "mass_properties", "mode_nodes"]
 
@@ -134,9 +134,7 @@ def free_modes(fe: FrameFE, n_modes: int | None = None) -> FreeModes:
     n_flex = fe.ndof - 2
     if n_modes is None:
         n_modes = n_flex
-    if isinstance(n_modes, bool) or not isinstance(n_modes, (int, np.integer)) or n_modes < 1:
-        raise InputError(f"modes = {n_modes!r} is not allowed: must be an integer >= 1")
-    n_modes = min(int(n_modes), n_flex)
+    n_modes = min(check_integer("modes", n_modes), n_flex)
     props = mass_properties(fe)
     t = fe.rigid_motion(1.0, 0.0) / np.sqrt(props.mass)
     r = fe.rigid_motion(0.0, 1.0, about=props.cg) / np.sqrt(props.inertia)

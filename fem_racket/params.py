@@ -11,7 +11,8 @@ The compound ball/string system (Kawazoe & Kanda 1997, section 2.1) is a linear 
 ``K_CB`` depends on impact speed. The paper states three points (section 2.1.1): 2.74e4 N/m at
 20 m/s, 5.0e4 N/m at 30 m/s and 8.33e4 N/m at 40 m/s. Between them we interpolate linearly in
 log K - log V (a piecewise power law through all three points); outside 20-40 m/s the power law
-of the nearest end segment is extended.
+of the nearest end segment is extended, within 1-100 m/s only (the paper's law excludes "the
+extremely low impact speed range"; give K_CB explicitly outside it).
 """
 
 from __future__ import annotations
@@ -26,7 +27,9 @@ from .validation import InputError, check_positive, check_range
 __all__ = [
     "DEFAULT_BALL_MASS",
     "PAPER_CLAMPED_COR",
+    "PAPER_EI1",
     "PAPER_KCB_POINTS",
+    "RIGID_EI1",
     "Ball",
     "Frame",
     "Impact",
@@ -47,6 +50,12 @@ PAPER_CLAMPED_COR = 0.83
 PAPER_KCB_POINTS = ((20.0, 2.74e4), (30.0, 5.0e4), (40.0, 8.33e4))
 #: EI2 / EI1 of the paper's stepped beam (section 2.2).
 EI_RATIO = 0.88
+#: EI1 of the paper's standard racket [N m^2] (section 2.2).
+PAPER_EI1 = 146.0
+#: EI1 of the paper's "rigid" racket [N m^2] (section 3.1).
+RIGID_EI1 = 9999.0
+#: Impact speeds [m/s] over which :func:`kcb_from_speed` extrapolates the paper's K_CB law.
+KCB_SPEED_RANGE = (1.0, 100.0)
 
 
 @dataclass(frozen=True)
@@ -113,7 +122,7 @@ class Frame:
         )
 
 
-def standard_frame(ei1: float = 146.0, ei2: float | None = None) -> Frame:
+def standard_frame(ei1: float = PAPER_EI1, ei2: float | None = None) -> Frame:
     """The paper's stepped beam (section 2.2): L = 680 mm, step at 204 mm from the grip.
 
     Parameters
@@ -135,7 +144,7 @@ def standard_frame(ei1: float = 146.0, ei2: float | None = None) -> Frame:
 
 def rigid_frame() -> Frame:
     """The paper's 'rigid' frame: EI1 = 9999 N m^2, EI2 = 0.88 EI1, same masses."""
-    return standard_frame(9999.0)
+    return standard_frame(RIGID_EI1)
 
 
 @dataclass(frozen=True)
@@ -171,12 +180,21 @@ def cor_from_zeta(zeta: float) -> float:
 
 
 def kcb_from_speed(speed: float) -> float:
-    """K_CB [N/m] at impact speed ``speed`` [m/s] by piecewise log-log interpolation.
+    """K_CB at an impact speed, by piecewise log-log interpolation of the paper's three points.
 
-    Passes through the paper's 2.74e4 (20 m/s), 5.0e4 (30 m/s) and 8.33e4 N/m (40 m/s); below
-    20 or above 40 m/s the power law of the end segment is extended.
+    Parameters
+    ----------
+    speed : float
+        Impact speed [m/s], within :data:`KCB_SPEED_RANGE` (1-100 m/s).
+
+    Returns
+    -------
+    float
+        K_CB [N/m]: 2.74e4 at 20 m/s, 5.0e4 at 30 m/s, 8.33e4 at 40 m/s (section 2.1.1); below 20
+        or above 40 m/s the power law of the end segment is extended.
     """
-    v = check_positive("speed", speed, "m/s")
+    low, high = KCB_SPEED_RANGE
+    v = check_range("speed", speed, low, high, unit="m/s")
     logv = np.log([p[0] for p in PAPER_KCB_POINTS])
     logk = np.log([p[1] for p in PAPER_KCB_POINTS])
     x = math.log(v)
@@ -208,11 +226,28 @@ class LinearContact:
 
     @classmethod
     def for_speed(
-        cls, speed: float, *, zeta: float | None = None, clamped_cor: float = PAPER_CLAMPED_COR
+        cls,
+        speed: float,
+        *,
+        kcb: float | None = None,
+        zeta: float | None = None,
+        clamped_cor: float = PAPER_CLAMPED_COR,
     ) -> LinearContact:
-        """K_CB from the impact speed (:func:`kcb_from_speed`); zeta given or from a clamped COR."""
+        """The ball/string law of an impact at ``speed`` [m/s].
+
+        Parameters
+        ----------
+        speed : float
+            Impact speed [m/s]; sets K_CB through :func:`kcb_from_speed` unless ``kcb`` is given.
+        kcb : float, optional
+            K_CB [N/m], overriding the speed law.
+        zeta : float, optional
+            Damping ratio; from ``clamped_cor`` (eqs 1-4) when None.
+        clamped_cor : float
+            Clamped-frame coefficient of restitution (0.83 in the paper).
+        """
         z = zeta_from_cor(clamped_cor) if zeta is None else zeta
-        return cls(kcb_from_speed(speed), z)
+        return cls(kcb_from_speed(speed) if kcb is None else kcb, z)
 
     def damping(self, ball_mass: float) -> float:
         """C_CB = 2 zeta sqrt(m_B K_CB) [N s/m]."""

@@ -31,7 +31,7 @@ from .mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
 from .modal import FreeModes, free_modes
 from .model import DEFAULT_MODES, FrameModel
 from .params import Frame, standard_frame
-from .validation import InputError, check_choice, check_range
+from .validation import InputError, check_choice, check_integer, check_range
 
 __all__ = [
     "DEFAULT_ELEMENTS",
@@ -230,8 +230,7 @@ def refinement_study(
     """
     check_choice("family", family, FAMILIES)
     counts = _check_elements(elements)
-    if isinstance(n_modes, bool) or not isinstance(n_modes, (int, np.integer)) or n_modes < 1:
-        raise InputError(f"modes = {n_modes!r} is not allowed: must be an integer >= 1")
+    check_integer("modes", n_modes)
     pos = np.array([check_range("position", p, 0.0, 1.0, unit="x/L") for p in positions])
     if pos.size == 0:
         raise InputError("positions = [] is not allowed: give at least one impact point")

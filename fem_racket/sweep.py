@@ -34,7 +34,7 @@ from .params import (
     Frame,
     zeta_from_cor,
 )
-from .validation import InputError, check_choice
+from .validation import check_choice, check_integer
 
 __all__ = ["VARIABLES", "sweep"]
 
@@ -194,10 +194,8 @@ def sweep(
     if backend is not None:
         check_choice("backend", backend, BACKENDS)
     for name, value in (("workers", workers), ("chunk_size", chunk_size)):
-        if value is not None and (
-            isinstance(value, bool) or not isinstance(value, int) or value < 1
-        ):
-            raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= 1")
+        if value is not None:
+            check_integer(name, value)
     n_vars = len(VARIABLES)
     values = np.full((spec.size, n_vars), np.nan)
     done = np.zeros(spec.size, dtype=bool)

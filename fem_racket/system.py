@@ -155,11 +155,15 @@ class Trajectory:
         Output times [s]; the last is the separation time.
     x, v : ndarray, shape (nt, n)
         Coordinates and their rates.
+    peak_force : float
+        Largest contact force during contact [N], found by the integrator on its own dense
+        solution (not only at the output times).
     """
 
     t: np.ndarray
     x: np.ndarray
     v: np.ndarray
+    peak_force: float
 
     @property
     def contact_time(self) -> float:

@@ -10,7 +10,14 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 
-__all__ = ["InputError", "check_choice", "check_finite", "check_positive", "check_range"]
+__all__ = [
+    "InputError",
+    "check_choice",
+    "check_finite",
+    "check_integer",
+    "check_positive",
+    "check_range",
+]
 
 
 class InputError(ValueError):
@@ -72,3 +79,12 @@ def check_choice(name: str, value: object, choices: Iterable[str]) -> str:
     if value not in options:
         raise InputError(f"{name} = {value!r} is not allowed: must be one of {', '.join(options)}")
     return str(value)
+
+
+def check_integer(name: str, value: object, minimum: int = 1) -> int:
+    """Return ``value`` as an int, or raise unless it is an integer >= ``minimum``."""
+    import numbers
+
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
+        raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= {minimum}")
+    return int(value)

@@ -68,7 +68,9 @@ def test_results_consistent(standard_model):
     assert abs(r.deflection[0]) < 1e-14
     assert abs(r.deflection[-1]) < 1e-12
     assert np.all(r.deflection[1:-1] > 0.0)
-    assert r.peak_force == pytest.approx(np.max(r.force))
+    # The peak is maximised on the closed form: at least the sampled maximum, and above it by
+    # the sampling error of 1e-5 s steps (measured 5.8e-5 relative, from the FE modes' ripple).
+    assert np.max(r.force) <= r.peak_force <= np.max(r.force) * (1 + 2e-4)
     assert 3e-3 < r.contact_time < 6e-3  # section 1: "contact time is 6 - 3 ms"
     assert r.t.size == r.frame_displacement.shape[0] == r.ball_velocity.size
     assert r.frame_displacement.shape[1] == standard_model.fe.ndof
@@ -133,3 +135,18 @@ def test_bad_input(kwargs, name):
 def test_no_separation_is_reported(standard_model, solver):
     with pytest.raises(NoSeparationError, match="t_max"):
         simulate(standard_model, solver=solver, t_max=1e-3)
+
+
+def test_peak_force_does_not_depend_on_output_times(standard_model):
+    # The integrators find the peak on their dense solution, not on the output times.
+    ref = simulate(standard_model, position=0.6)
+    assert simulate(standard_model, position=0.6, output_step=None).peak_force == ref.peak_force
+    bdf = simulate(standard_model, position=0.6, solver="cvode", output_step=None)
+    # CVODE samples t_est / 200 steps (~2e-5 s): sampling error ~(omega dt)^2 / 8 ~ 3e-5.
+    assert bdf.peak_force == pytest.approx(ref.peak_force, rel=2e-4)
+
+
+def test_energies_need_histories(standard_model):
+    r = simulate(standard_model, output_step=None)
+    with pytest.raises(InputError, match="energies need time histories"):
+        r.energies()
