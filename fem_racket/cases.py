@@ -21,15 +21,13 @@ from typing import Any
 import numpy as np
 
 from .closed_form import exact_outcome
-from .grid import REFERENCE_EI1, SweepSpec
+from .grid import SweepSpec
 from .impact import simulate
 from .model import FrameModel
 from .params import (
-    PAPER_CLAMPED_COR,
+    PAPER_EI1,
     LinearContact,
-    kcb_from_speed,
     standard_frame,
-    zeta_from_cor,
 )
 from .system import NoSeparationError, modal_system
 
@@ -73,13 +71,13 @@ def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) 
     if spec.frame is None and spec.ei2 is not None:  # EI2 fixed: not a scaling of EI1
         base_key, factor = (spec.frame_key, elements, ei1, spec.ei2), ei_factor
     elif spec.frame is None:
-        base_key, factor = (spec.frame_key, elements), ei_factor * ei1 / REFERENCE_EI1
+        base_key, factor = (spec.frame_key, elements), ei_factor * ei1 / PAPER_EI1
     else:
         base_key, factor = (spec.frame_key, elements), ei_factor
     base = _BASE.get(base_key)
     if base is None:
         if spec.frame is None:
-            frame = standard_frame(REFERENCE_EI1 if spec.ei2 is None else ei1, spec.ei2)
+            frame = standard_frame(PAPER_EI1 if spec.ei2 is None else ei1, spec.ei2)
         else:
             frame = spec.frame
         base = _BASE[base_key] = FrameModel.build(frame, elements)
@@ -104,8 +102,8 @@ def _point_vector(key: tuple, model: FrameModel, position: float) -> np.ndarray:
 def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     """The result values (in :data:`VARIABLES` order) of one case."""
     speed, mass = p["speed"], p["ball_mass"]
-    kcb = kcb_from_speed(speed) if p["kcb"] is None else p["kcb"]
-    zeta = zeta_from_cor(PAPER_CLAMPED_COR) if p["zeta"] is None else p["zeta"]
+    law = LinearContact.for_speed(speed, kcb=p["kcb"], zeta=p["zeta"])
+    kcb, zeta = law.stiffness, law.zeta
     key, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
     if spec.solver != "exact":
         r = simulate(
@@ -129,7 +127,7 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     if unit is None:
         fm = model.modes(spec.modes)
         g = _point_vector(key, model, p["position"])
-        ccb = LinearContact(kcb, zeta).damping(mass)
+        ccb = law.damping(mass)
         system = modal_system(fm.all_omega, fm.all_shapes, g, mass, kcb, ccb, 1.0)
         o = exact_outcome(system, separation=spec.separation)
         unit = _remember(_UNIT, ukey, (-o.rebound_velocity, o.contact_time, o.peak_force), 65536)

@@ -35,7 +35,7 @@ from typing import Any
 from .config_example import example_config
 from .impact import BASES
 from .integrators import SOLVERS
-from .params import Segment, zeta_from_cor
+from .params import PAPER_EI1, RIGID_EI1, Segment, zeta_from_cor
 from .system import SEPARATION_EVENTS
 from .validation import InputError, check_choice, check_positive, check_range
 
@@ -61,7 +61,7 @@ COMMAND_TABLES = {
 }
 
 #: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).
-PRESETS = {"standard": 146.0, "rigid": 9999.0}
+PRESETS = {"standard": PAPER_EI1, "rigid": RIGID_EI1}
 
 
 # -- value checks: (dotted name, raw TOML value) -> clean value --------------------------------

@@ -34,8 +34,7 @@ import numpy as np
 import scipy.linalg as sla
 
 from .model import DEFAULT_MODES, FrameModel
-from .params import Ball, Impact, kcb_from_speed
-from .validation import check_positive
+from .params import Ball, Impact, LinearContact
 
 __all__ = ["CoupledModes", "coupled_modes"]
 
@@ -161,7 +160,7 @@ def coupled_modes(
     """
     impact = Impact(position, speed)
     m_b = Ball().mass if ball_mass is None else Ball(ball_mass).mass
-    k_cb = kcb_from_speed(impact.speed) if kcb is None else check_positive("kcb", kcb, "N/m")
+    k_cb = LinearContact.for_speed(impact.speed, kcb=kcb).stiffness
     fm = model.modes(modes)
     phi, om = fm.all_shapes, fm.all_omega
     a = phi.T @ model.fe.point_vector(position * model.mesh.length)

@@ -22,14 +22,13 @@ import numpy as np
 from .integrators import SOLVERS
 from .mesh import FrameMesh
 from .model import DEFAULT_MODES
-from .params import DEFAULT_BALL_MASS, Frame
+from .params import DEFAULT_BALL_MASS, PAPER_EI1, Frame
 from .system import SEPARATION_EVENTS
 from .validation import InputError, check_choice, check_integer, check_positive, check_range
 
 __all__ = ["PARAMETERS", "Parameter", "SweepSpec", "as_values", "parse_values"]
 
 #: Reference grip-side rigidity of the standard racket [N m^2]; ei1 sweeps scale its modes.
-REFERENCE_EI1 = 146.0
 
 
 @dataclass(frozen=True)
@@ -181,7 +180,7 @@ class SweepSpec:
         ei2 = None if ei2 is None else check_positive("ei2", ei2, "N m^2")
         _frame_description(frame)
         if frame is None:
-            values["ei1"] = REFERENCE_EI1 if values["ei1"] is None else values["ei1"]
+            values["ei1"] = PAPER_EI1 if values["ei1"] is None else values["ei1"]
         else:
             if values["ei1"] is not None or ei2 is not None:
                 raise InputError(

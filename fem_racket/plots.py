@@ -12,6 +12,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .params import DEFAULT_BALL_MASS, PAPER_EI1
+
 if TYPE_CHECKING:
     from .figures.base import FigureData
 
@@ -94,7 +96,7 @@ def ball_string(data: FigureData, path: str | os.PathLike) -> None:
     ax[2].legend(fontsize=8)
     for a in ax:
         a.grid(alpha=0.3)
-    fig.suptitle(data.title + " (m_B = 0.057 kg)")
+    fig.suptitle(data.title + f" (m_B = {DEFAULT_BALL_MASS} kg)")
     _save(fig, path)
 
 
@@ -358,7 +360,7 @@ def cor_rigidity(data: FigureData, path: str | os.PathLike) -> None:
                 sat = data.values.get(f"ei_sat_{tag}", np.nan)
                 if np.isfinite(sat):
                     a.plot(sat, np.interp(sat, ei, cor), f"C{i}o", mfc="none" if z == 0.0 else None)
-        a.axvline(146.0, color="0.5", ls=":", lw=1)
+        a.axvline(PAPER_EI1, color="0.5", ls=":", lw=1)
         a.set(
             xscale="log",
             xlabel="EI1 [N m²] (dotted: standard 146; o: saturation)",

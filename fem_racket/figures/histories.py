@@ -18,13 +18,11 @@ import numpy as np
 
 from ..impact import ImpactResult, simulate
 from ..model import FrameModel
-from ..params import standard_frame
+from ..params import PAPER_EI1, RIGID_EI1, standard_frame
 from .base import FigureData, FigureSpec
 
-__all__ = ["FIG_05", "FIG_06", "FIG_07", "RIGID_EI1", "STANDARD_EI1", "impact_behaviour"]
+__all__ = ["FIG_05", "FIG_06", "FIG_07", "impact_behaviour"]
 
-STANDARD_EI1 = 146.0
-RIGID_EI1 = 9999.0
 #: Fractions of the contact time at which deformed shapes are drawn.
 INSTANTS = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)
 
@@ -55,16 +53,16 @@ def impact_behaviour(position: float, quick: bool = False) -> FigureData:
     """Histories and deformed shapes of the standard and rigid frames struck at ``position``."""
     fig = {0.60: 5, 0.75: 6, 0.90: 7}.get(round(position, 2), 0)
     step = 5e-5 if quick else 1e-5
-    base = FrameModel.build(standard_frame(STANDARD_EI1), 20)
+    base = FrameModel.build(standard_frame(PAPER_EI1), 20)
     base.modes()  # computed once, reused by the scaled model
-    models = {STANDARD_EI1: base, RIGID_EI1: base.scaled(RIGID_EI1 / STANDARD_EI1)}
+    models = {PAPER_EI1: base, RIGID_EI1: base.scaled(RIGID_EI1 / PAPER_EI1)}
     L = base.mesh.length
     x = np.linspace(0.0, L, 35 if quick else 69)
     results = {
         ei: simulate(m, position=position, speed=20.0, output_step=step) for ei, m in models.items()
     }
     tc = min(r.contact_time for r in results.values())
-    idx = sorted({int(np.argmin(np.abs(results[STANDARD_EI1].t[:-1] - f * tc))) for f in INSTANTS})
+    idx = sorted({int(np.argmin(np.abs(results[PAPER_EI1].t[:-1] - f * tc))) for f in INSTANTS})
     hist: dict[str, list] = {}
     shapes: dict[str, list] = {}
     inst: dict[str, list] = {}
@@ -104,10 +102,10 @@ def impact_behaviour(position: float, quick: bool = False) -> FigureData:
                 "impact point displacement [m]": r.impact_point_displacement[i],
             }.items():
                 inst.setdefault(k, []).append(v)
-        tag = "standard" if ei == STANDARD_EI1 else "rigid"
+        tag = "standard" if ei == PAPER_EI1 else "rigid"
         values.update({f"{tag}_{k}": v for k, v in _summary(models[ei], r, x).items()})
-    t_idx = results[STANDARD_EI1].t[idx]
-    diff = fields[STANDARD_EI1] - fields[RIGID_EI1]
+    t_idx = results[PAPER_EI1].t[idx]
+    diff = fields[PAPER_EI1] - fields[RIGID_EI1]
     difference = {
         "time [s]": np.repeat(t_idx, x.size),
         "x [m]": np.tile(x, t_idx.size),

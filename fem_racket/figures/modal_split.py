@@ -17,7 +17,7 @@ from ..coupled import CoupledModes, coupled_modes
 from ..impact import simulate
 from ..modal import mode_nodes
 from ..model import FrameModel
-from ..params import Ball, kcb_from_speed, standard_frame
+from ..params import PAPER_EI1, RIGID_EI1, Ball, kcb_from_speed, standard_frame
 from ..rigid import rigid_impact
 from .base import FigureData, FigureSpec
 
@@ -35,17 +35,13 @@ def _cases() -> tuple[FrameModel, dict[float, CoupledModes]]:
     return model, {p: coupled_modes(model, p, speed=SPEED) for p in (0.60, node, 0.769)}
 
 
-def _label(p: float) -> str:
-    return f"{p:.4f}"
-
-
 def modal_terms(quick: bool = False) -> FigureData:
     """The terms of eq 13 against time at 0.60 L and at the mode-1 node (Fig 11)."""
     model, cases = _cases()
     cols: dict[str, list] = {}
     values: dict[str, float] = {}
     props = model.props
-    rigid = model.scaled(9999.0 / 146.0)
+    rigid = model.scaled(RIGID_EI1 / PAPER_EI1)
     for p, cm in list(cases.items())[:2]:
         r = simulate(model, position=p, speed=SPEED, zeta=0.0, output_step=5e-5 if quick else 1e-5)
         terms = cm.terms(r.t)

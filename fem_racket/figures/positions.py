@@ -15,14 +15,13 @@ import numpy as np
 from ..impact import simulate
 from ..modal import mode_nodes
 from ..model import FrameModel
-from ..params import Ball, kcb_from_speed, standard_frame
+from ..params import PAPER_EI1, RIGID_EI1, Ball, kcb_from_speed, standard_frame
 from ..rigid import rigid_impact
 from .base import FigureData, FigureSpec
 
 __all__ = ["FIG_08", "FIG_09", "contact_time_position", "cor_position", "position_sweep"]
 
 SPEED = 20.0
-RIGID_EI1 = 9999.0
 
 
 @lru_cache(maxsize=2)
@@ -30,7 +29,7 @@ def position_sweep(quick: bool = False) -> tuple[dict[str, np.ndarray], dict[str
     """COR and contact time against position for every case; and the frame's reference points."""
     base = FrameModel.build(standard_frame(), 20)
     base.modes()  # computed once, reused by the scaled model
-    rigid = base.scaled(RIGID_EI1 / 146.0)
+    rigid = base.scaled(RIGID_EI1 / PAPER_EI1)
     x = np.linspace(0.55, 0.95, 9 if quick else 41)
     out: dict[str, np.ndarray] = {"position [x/L]": x}
     cases = {

@@ -17,14 +17,20 @@ import numpy as np
 
 from ..impact import simulate
 from ..model import FrameModel
-from ..params import kcb_from_speed, standard_frame, zeta_from_cor
+from ..params import (
+    PAPER_CLAMPED_COR,
+    PAPER_EI1,
+    RIGID_EI1,
+    kcb_from_speed,
+    standard_frame,
+    zeta_from_cor,
+)
 from .base import FigureData, FigureSpec
 
 __all__ = ["FIG_13", "SATURATION_FRACTION", "cor_rigidity", "saturation_ei"]
 
 SPEEDS = (20.0, 30.0, 40.0)
 POSITIONS = (0.60, 0.75, 0.90)
-RIGID_EI1 = 9999.0
 #: Share of the rigid frame's COR that counts as saturated.
 SATURATION_FRACTION = 0.95
 
@@ -45,11 +51,11 @@ def saturation_ei(
 
 def cor_rigidity(quick: bool = False) -> FigureData:
     """COR against EI1 at three speeds, three positions, with and without damping."""
-    base = FrameModel.build(standard_frame(146.0), 20)
+    base = FrameModel.build(standard_frame(PAPER_EI1), 20)
     base.modes()  # computed once, reused by every scaled model
     ei = np.geomspace(50.0, 3000.0, 8 if quick else 40)
-    models = [base.scaled(e / 146.0) for e in ei]
-    rigid = base.scaled(RIGID_EI1 / 146.0)
+    models = [base.scaled(e / PAPER_EI1) for e in ei]
+    rigid = base.scaled(RIGID_EI1 / PAPER_EI1)
     cols: dict[str, list] = {}
     values: dict[str, float] = {"ei_points": float(ei.size)}
     for zeta, ztag in ((None, "damped"), (0.0, "undamped")):
@@ -65,7 +71,9 @@ def cor_rigidity(quick: bool = False) -> FigureData:
                 )
                 c_rig = simulate(rigid, position=p, speed=v, zeta=zeta, output_step=None).cor
                 for k, val in {
-                    "zeta [-]": np.full(ei.size, zeta_from_cor(0.83) if zeta is None else zeta),
+                    "zeta [-]": np.full(
+                        ei.size, zeta_from_cor(PAPER_CLAMPED_COR) if zeta is None else zeta
+                    ),
                     "position [x/L]": np.full(ei.size, p),
                     "speed [m/s]": np.full(ei.size, v),
                     "EI1 [N m^2]": ei,
