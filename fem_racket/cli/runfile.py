@@ -15,7 +15,7 @@ from __future__ import annotations
 import argparse
 import difflib
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 from ..config import COMMAND_TABLES, CORE_DESTS, CORE_KEYS, RunConfig, load_config
@@ -29,14 +29,39 @@ _NOT_FROM_FILE = frozenset({"help", "config", "version"})
 _CORE_ONLY = CORE_DESTS - {"out", "overwrite"}
 
 
-def add_config_option(parser: argparse.ArgumentParser) -> None:
-    """Give a command ``--config run.toml``; :func:`apply_config` does the rest."""
+def add_config_option(
+    parser: argparse.ArgumentParser,
+    *,
+    own: Iterable[str] = (),
+    private: Iterable[str] = (),
+    convert: Mapping[str, Callable[[str, Any], Any]] | None = None,
+) -> None:
+    """Give a command ``--config run.toml``; :func:`apply_config` does the rest.
+
+    Parameters
+    ----------
+    own : iterable of str
+        Options (argparse dests) a core table also sets that the command's own table may set
+        too, in the command's form (``sweep``: ``speed = [20, 30, 40]`` besides
+        ``impact.speed_m_s``). The core value still applies when the command's table is silent.
+    private : iterable of str
+        Options only the command's table sets: the core tables' value is not used by this
+        command (``refine``'s ``elements`` is a list of counts, not ``frame.elements``; the
+        ``out`` of a command writing a folder or another kind of file is not ``output.out``).
+    convert : mapping, optional
+        dest -> ``f(dotted_key, value)`` checking and converting a table value instead of the
+        option's own conversion (e.g. arrays for sweep grids); raise :class:`InputError`.
+    """
     parser.add_argument(
         "--config",
         metavar="TOML",
         default=None,
         help="run file (see `fem-racket config --example`); command-line options override it",
     )
+    private = frozenset(private)
+    parser.config_own = frozenset(own) | private  # type: ignore[attr-defined]
+    parser.config_private = private  # type: ignore[attr-defined]
+    parser.config_convert = dict(convert or {})  # type: ignore[attr-defined]
 
 
 def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.ArgumentParser:
@@ -48,14 +73,25 @@ def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.Argume
 
 def file_options(sub: argparse.ArgumentParser) -> dict[str, argparse.Action]:
     """A command's options that its run-file table may set: dest -> action."""
+    own = getattr(sub, "config_own", frozenset())
     return {
         a.dest: a
         for a in sub._actions
         if a.option_strings
         and a.dest not in _NOT_FROM_FILE
-        and a.dest not in _CORE_ONLY
+        and (a.dest not in _CORE_ONLY or a.dest in own)
         and a.default is not argparse.SUPPRESS
     }
+
+
+def _core_values(sub: argparse.ArgumentParser, cfg: RunConfig) -> dict[str, Any]:
+    """dest -> value of the core tables that this command uses: only its own options (a frame
+    file also where it has --mesh), less its private ones."""
+    dests = {a.dest for a in sub._actions}
+    if "mesh" in dests:
+        dests.add("segments")
+    dests -= getattr(sub, "config_private", frozenset())
+    return {k: v for k, v in cfg.defaults().items() if k in dests}
 
 
 class _Given(argparse.Namespace):
@@ -110,13 +146,14 @@ def _coerce_one(action: argparse.Action, value: Any, where: str) -> Any:
 
 def config_values(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, Any]:
     """dest -> value from the run file for one command: core tables, then the command's table."""
-    values = dict(cfg.defaults())
+    values = _core_values(sub, cfg)
     table = COMMAND_TABLES.get(command, command)
     options = file_options(sub)
+    convert = getattr(sub, "config_convert", {})
     for key, value in cfg.table(table).items():
         where = f"{table}.{key}"
         dest = key.replace("-", "_")
-        if dest in _CORE_ONLY:
+        if dest in _CORE_ONLY and dest not in options:
             core = [
                 f"{t}.{k}" for t, ks in CORE_KEYS.items() for k, v in ks.items() if v.dest == dest
             ]
@@ -128,7 +165,10 @@ def config_values(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) ->
             raise InputError(
                 f"{where} is not a known key: {hint} allowed: {allowed}".replace(":  ", ": ")
             )
-        values[dest] = _coerce(options[dest], value, where)
+        if dest in convert:
+            values[dest] = convert[dest](where, value)
+        else:
+            values[dest] = _coerce(options[dest], value, where)
     return values
 
 
