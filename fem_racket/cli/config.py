@@ -98,9 +98,13 @@ def run(args: argparse.Namespace) -> int:
         return 0
     text = example_config() + command_tables()
     if args.out:
-        from .common import write_text
+        import json
 
-        write_text(args.out, text, overwrite=args.overwrite)
+        from ..outputs import provenance
+        from .common import run_parameters, write_text
+
+        meta = json.dumps(provenance(run_parameters(args)), sort_keys=True)
+        write_text(args.out, f"{text}\n# provenance: {meta}\n", overwrite=args.overwrite)
         print(f"written {args.out}")
         return 0
     print(text, end="")
