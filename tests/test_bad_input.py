@@ -266,6 +266,11 @@ OUTPUT_CASES = [
         ("output = 'old.json' already exists", "--overwrite"),
         {"old.json": "{}"},
     ),
+    Case(
+        "out-folder-not-made-when-the-run-fails",  # the check passes, the impact fails later
+        sim("--out", "new/deeper/r.json", "--t-max", "1e-4"),
+        ("t_max = 0.0001 s", "raise t_max"),
+    ),
     Case("out-is-a-folder", sim("--out", ".", "--overwrite"), ("output = '.'", "must be a file")),
     Case(
         "config-example-out-exists",

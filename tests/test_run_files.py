@@ -4,6 +4,7 @@ write records the run (provenance). simulate and modes: tests/test_config.py."""
 
 import json
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -169,3 +170,24 @@ def test_example_runs_as_is_with_every_command(capsys, cwd):
     assert {"output/sweep.nc", "output/impact_vtk/impact.pvd", "output/impact.gif"} <= names
     assert {"output/refine.csv", "output/refine.csv.json", "output/refine.png"} <= names
     assert np.all([not n.startswith("output/.") for n in names])  # no temporary file left
+
+
+def test_mesh_on_the_command_line_replaces_the_files_frame(capsys, cwd):
+    import xarray as xr
+
+    from fem_racket.cli import main as cli_main
+
+    mesh = Path(__file__).resolve().parent.parent / "meshes" / "tapered_racket.vtu"
+    # The example sets preset, ei1_n_m2 and elements = 20: --mesh replaces all three.
+    (cwd / "run.toml").write_text(run(capsys, "config", "--example"))
+    cfg = ("--config", "run.toml", "--mesh", mesh)
+    run(capsys, "sweep", *cfg, "--serial", "--quiet", "--position", "0.6,0.8", "--out", "m.nc")
+    sim = json.loads(run(capsys, "simulate", *cfg, "--position", "0.8", "--json"))
+    plain = json.loads(run(capsys, "simulate", "--mesh", mesh, "--position", "0.8", "--json"))
+    assert sim == plain and sim["elements"] != 20
+    with xr.open_dataset("m.nc") as ds:  # fast path vs simulate: 1e-9 (tests/test_sweep.py)
+        assert float(ds.cor.sel(position=0.8)) == pytest.approx(sim["cor"], abs=1e-9)
+    # A mesh in the file with an explicit --ei1 is refused (the mesh gives EI).
+    (cwd / "mesh.toml").write_text(f"[frame]\nmesh = '{mesh}'\n")
+    assert cli_main(["sweep", "--config", "mesh.toml", "--ei1", "100"]) == 2
+    assert "--ei1 cannot be combined with frame.mesh" in capsys.readouterr().err

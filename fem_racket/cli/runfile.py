@@ -84,14 +84,24 @@ def file_options(sub: argparse.ArgumentParser) -> dict[str, argparse.Action]:
     }
 
 
-def _core_values(sub: argparse.ArgumentParser, cfg: RunConfig) -> dict[str, Any]:
+def _core_values(
+    sub: argparse.ArgumentParser, cfg: RunConfig, given: Iterable[str] = ()
+) -> dict[str, Any]:
     """dest -> value of the core tables that this command uses: only its own options (a frame
-    file also where it has --mesh), less its private ones."""
+    file also where it has --mesh), less its private ones. A mesh file ``given`` on the command
+    line replaces the file's frame (preset, EI1, EI2, segments), and with a mesh file from
+    either ``frame.elements`` does not apply: the mesh fixes the cells."""
     dests = {a.dest for a in sub._actions}
     if "mesh" in dests:
         dests.add("segments")
     dests -= getattr(sub, "config_private", frozenset())
-    return {k: v for k, v in cfg.defaults().items() if k in dests}
+    values = {k: v for k, v in cfg.defaults().items() if k in dests}
+    if "mesh" in set(given):
+        for dest in ("ei1", "ei2", "segments"):
+            values.pop(dest, None)
+    if "mesh" in values or "mesh" in set(given):
+        values.pop("elements", None)
+    return values
 
 
 class _Given(argparse.Namespace):
@@ -144,9 +154,12 @@ def _coerce_one(action: argparse.Action, value: Any, where: str) -> Any:
     return out
 
 
-def config_values(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, Any]:
-    """dest -> value from the run file for one command: core tables, then the command's table."""
-    values = _core_values(sub, cfg)
+def config_values(
+    sub: argparse.ArgumentParser, command: str, cfg: RunConfig, given: Iterable[str] = ()
+) -> dict[str, Any]:
+    """dest -> value from the run file for one command: core tables, then the command's table
+    (``given``: the options the command line sets)."""
+    values = _core_values(sub, cfg, given)
     table = COMMAND_TABLES.get(command, command)
     options = file_options(sub)
     convert = getattr(sub, "config_convert", {})
@@ -189,7 +202,7 @@ def apply_config(
         return args
     cfg = load_config(path)
     try:
-        values = config_values(sub, args.command, cfg)
+        values = config_values(sub, args.command, cfg, given)
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
     frame_file = {"segments", "mesh"} & set(values)
@@ -198,8 +211,6 @@ def apply_config(
         opts = ", ".join(f"--{d}" for d in sorted(clash))
         key = "frame." + next(iter(sorted(frame_file)))
         raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
-    if "mesh" in given:
-        values.pop("segments", None)
     for dest, value in values.items():
         if dest not in given:
             setattr(args, dest, value)
