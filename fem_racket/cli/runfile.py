@@ -7,7 +7,10 @@ command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
 :data:`fem_racket.config.COMMAND_TABLES`) > the core tables (``[frame]``, ``[impact]`` ...) >
 built-in defaults. The command's table takes its long options as keys (``--ei1-values`` ->
 ``ei1_values``), converted and checked as on the command line; options the core tables own
-(``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key.
+(``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key, unless
+the command declares them its ``own`` (sweep's grids) or ``private`` (refine's list of element
+counts; the ``out`` of commands writing another kind of file than simulate's JSON), see
+:func:`add_config_option`. A command takes from the core tables only what it has options for.
 """
 
 from __future__ import annotations

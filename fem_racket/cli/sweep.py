@@ -121,6 +121,9 @@ def run(args: argparse.Namespace) -> int:
     from ..executors import check_scheduler
     from .common import frame_from_args
 
+    given = getattr(args, "explicit_options", set())
+    if given & {"workers", "scheduler"} and "serial" not in given:
+        args.serial = False  # the command line's choice wins over a run file's serial = true
     backend = "serial" if args.serial else ("dask" if args.scheduler else "processes")
     if args.scheduler is not None:
         check_scheduler(args.scheduler)  # before the checkpoint folder is made
