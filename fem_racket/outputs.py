@@ -11,13 +11,16 @@ The conventions, the same for every command (README, "Outputs, --overwrite and p
    Commands take ``--out PATH`` and ``--overwrite``
    (:func:`fem_racket.cli.common.add_output_options`).
 2. Check the path with :func:`check_output_path` *before* the work, so a long run does not fail
-   at the end: an existing file is refused unless ``overwrite``; the folder is created, and one
-   that cannot be created or written is an :class:`~fem_racket.validation.InputError`.
+   at the end: an existing file is refused unless ``overwrite``; a folder that cannot be created
+   or written is an :class:`~fem_racket.validation.InputError`. Nothing is created by the check:
+   the folder is made when the file is written, so a failed run leaves no empty folder.
 3. Write inside ``with atomic_output(path, overwrite=...) as tmp:``; on any exception the
    temporary file is removed and an existing file is left as it was.
-4. Put ``provenance(parameters)`` in the file (JSON: a ``"provenance"`` object; netCDF / VTK:
-   global attributes / field data), with ``parameters`` holding every setting of the run
-   (:func:`fem_racket.cli.common.run_parameters` gives the parsed options, run file applied).
+4. Put ``provenance(parameters)`` in the file, with ``parameters`` holding every setting of the
+   run (:func:`fem_racket.cli.common.run_parameters` gives the parsed options, run file
+   applied): JSON a ``"provenance"`` object; netCDF global attributes; PNG text chunks
+   (:func:`add_png_provenance`); a folder (VTK series) a ``provenance.json`` in it; formats that
+   cannot hold it (CSV, GIF, MP4) a sidecar ``<file>.json`` (:func:`write_sidecar`).
 """
 
 from __future__ import annotations
