@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .outputs import atomic_output, check_output_path, provenance
+from .outputs import atomic_output, check_output_path, provenance, sidecar_path
 from .validation import InputError, check_positive
 from .vtk import ImpactSeries, field_name, impact_series
 
@@ -217,7 +217,7 @@ def render_animation(
     if fps > 100:
         raise InputError(f"fps = {fps!r} frames/s is not allowed: must be in (0, 100]")
     size = check_size(size)
-    sidecar = path.with_name(path.name + ".json")
+    sidecar = sidecar_path(path)
     check_output_path(path, overwrite=overwrite)
     check_output_path(sidecar, overwrite=overwrite)
     series = impact_series(result, subdivide=subdivide, frames=frames, scale=scale)

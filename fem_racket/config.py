@@ -180,7 +180,7 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         "t_max_s": Key(_positive("s"), "t_max", "give up if no separation by then"),
     },
     "output": {
-        "out": Key(_string, "out", "output file of the command"),
+        "out": Key(_string, "out", "simulate's output file (other commands: their own table)"),
         "overwrite": Key(_boolean, "overwrite", "replace an existing output file"),
     },
 }

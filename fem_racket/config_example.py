@@ -58,7 +58,8 @@ atol = 1e-12                 # absolute tolerance of cvode/bdf
 #                            # (default 20 x the eq 11 contact time)
 
 [output]
-# out = "output/impact.json" # the command's output file (simulate: JSON with provenance)
+# out = "output/impact.json" # simulate's JSON output with provenance (the other commands
+#                            # take `out` from their own table below: a different kind of file)
 overwrite = false            # replace an existing output file
 """
 

@@ -8,6 +8,8 @@ a user's line mesh with :func:`read_mesh` (any file meshio reads, with cell data
 
 from __future__ import annotations
 
+import contextlib
+import io
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -253,11 +255,17 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
     where = f"mesh = '{path}'"
     if not path.is_file():
         raise InputError(f"{where} is not allowed: no such file")
+    chatter = io.StringIO()  # meshio prints its reasons (stdout) and errors (stderr)
     try:
-        m = meshio.read(path)
+        with contextlib.redirect_stdout(chatter), contextlib.redirect_stderr(chatter):
+            m = meshio.read(path)
     except (Exception, SystemExit) as exc:  # meshio raises many types, even SystemExit
-        msg = " ".join(str(exc).split()) or type(exc).__name__
-        raise InputError(f"{where} could not be read: {msg}") from None
+        said = " ".join(chatter.getvalue().split()).removeprefix("Error: ")
+        msg = " ".join(str(exc).split()) if not isinstance(exc, SystemExit) else ""
+        msg = "; ".join(t for t in (said, msg) if t) or type(exc).__name__
+        raise InputError(
+            f"{where} could not be read ({msg}): must be a line mesh in a format meshio reads"
+        ) from None
     lines = [(i, b) for i, b in enumerate(m.cells) if b.type == "line"]
     if not lines:
         types = ", ".join(sorted({b.type for b in m.cells})) or "none"

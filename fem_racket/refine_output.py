@@ -1,7 +1,9 @@
 """Reports of a mesh-refinement study: screen table, CSV and a log-log convergence plot.
 
 Every writer takes the output path (written atomically, never silently replaced unless
-``overwrite``); only the CLI and scripts default to ``output/``.
+``overwrite``); only the CLI and scripts default to ``output/``. Provenance
+(:func:`fem_racket.outputs.provenance`: version, date, the study's settings and ``parameters``)
+goes into the PNG's text chunks and, for the CSV, into the sidecar ``<file>.csv.json``.
 """
 
 from __future__ import annotations
@@ -10,13 +12,36 @@ import csv
 import os
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
-from .outputs import atomic_output
+from .outputs import add_png_provenance, atomic_output, provenance, sidecar_path, write_sidecar
 from .refine import RefinementStudy
 
-__all__ = ["format_study", "plot_studies", "write_csv"]
+__all__ = ["csv_files", "format_study", "plot_studies", "study_provenance", "write_csv"]
+
+
+def csv_files(path: str | os.PathLike) -> list[Path]:
+    """The files :func:`write_csv` writes: the CSV and its provenance sidecar."""
+    return [Path(path), sidecar_path(path)]
+
+
+def study_provenance(
+    studies: Mapping[str, RefinementStudy], parameters: Mapping[str, Any] | None = None
+) -> dict[str, Any]:
+    """Provenance of a study's outputs: its settings plus ``parameters`` (e.g. the options)."""
+    first = next(iter(studies.values()))
+    settings = {
+        "families": list(studies),
+        "elements": sorted({int(n) for s in studies.values() for n in s.elements}),
+        "positions_x_over_l": first.positions.tolist(),
+        "speed_m_s": first.speed,
+        "frequencies_compared": int(first.exact_frequencies_hz.size),
+        "exact_frequencies_hz": first.exact_frequencies_hz.tolist(),
+        "impact_solver": "exact (modal basis)",
+    }
+    return provenance({**settings, **(parameters or {})})
 
 
 def format_study(study: RefinementStudy) -> str:
@@ -61,9 +86,15 @@ def _num(v: float, fmt: str) -> str:
 
 
 def write_csv(
-    studies: Mapping[str, RefinementStudy], path: str | os.PathLike, *, overwrite: bool = False
+    studies: Mapping[str, RefinementStudy],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
 ) -> Path:
-    """One row per family and mesh: frequencies, errors, orders, COR and t_c per impact point."""
+    """One row per family and mesh: frequencies, errors, orders, COR and t_c per impact point.
+
+    The provenance (with ``parameters``) goes to ``<path>.json`` beside it."""
     rows = []
     for family, s in studies.items():
         m = s.exact_frequencies_hz.size
@@ -88,13 +119,20 @@ def write_csv(
             w.writeheader()
             for r in rows:
                 w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in r.items()})
+    write_sidecar(path, study_provenance(studies, parameters), overwrite=overwrite)
     return Path(path)
 
 
 def plot_studies(
-    studies: Mapping[str, RefinementStudy], path: str | os.PathLike, *, overwrite: bool = False
+    studies: Mapping[str, RefinementStudy],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
 ) -> Path:
-    """Log-log plot: frequency errors and COR changes against the number of elements."""
+    """Log-log plot: frequency errors and COR changes against the number of elements.
+
+    The PNG carries the provenance (with ``parameters``) in its text chunks."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -148,6 +186,7 @@ def plot_studies(
     ax2.grid(True, which="both", alpha=0.3)
     ax2.legend(fontsize=7, ncol=2)
     with atomic_output(path, overwrite=overwrite) as tmp:
-        fig.savefig(tmp, dpi=120)
+        fig.savefig(tmp, dpi=120, format="png")
+        add_png_provenance(tmp, study_provenance(studies, parameters))
     plt.close(fig)
     return Path(path)

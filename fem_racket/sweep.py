@@ -14,6 +14,7 @@ scheduler. With an output file the sweep is resumable (:mod:`fem_racket.checkpoi
 
 from __future__ import annotations
 
+import json
 import logging
 import math
 import os
@@ -24,7 +25,7 @@ import numpy as np
 
 from .cases import VARIABLES, run_chunk
 from .checkpoint import Checkpoint
-from .executors import BACKENDS, run_chunks
+from .executors import BACKENDS, check_scheduler, run_chunks
 from .grid import PARAMETERS, SweepSpec, chunks
 from .mesh import FrameMesh
 from .model import DEFAULT_MODES
@@ -131,6 +132,7 @@ def sweep(
     scheduler: str | None = None,
     chunk_size: int | None = None,
     progress: bool | None = None,
+    parameters: dict[str, Any] | None = None,
 ) -> Any:
     """Simulate every combination of the given parameter values.
 
@@ -166,6 +168,8 @@ def sweep(
         Cases per task (and per checkpoint file).
     progress : bool, optional
         Progress bar with rate and ETA on stderr; None: only when stderr is a terminal.
+    parameters : dict, optional
+        Extra provenance (e.g. the command's options): the attribute ``run_parameters`` (JSON).
 
     Returns
     -------
@@ -196,6 +200,8 @@ def sweep(
     for name, value in (("workers", workers), ("chunk_size", chunk_size)):
         if value is not None:
             check_integer(name, value)
+    if scheduler is not None:
+        check_scheduler(scheduler)  # before any checkpoint folder is made
     n_vars = len(VARIABLES)
     values = np.full((spec.size, n_vars), np.nan)
     done = np.zeros(spec.size, dtype=bool)
@@ -240,6 +246,8 @@ def sweep(
     ds = _dataset(spec, values)
     failed = int(np.count_nonzero(np.isnan(values[:, 0])))
     ds.attrs["failed_cases"] = failed
+    if parameters:
+        ds.attrs["run_parameters"] = json.dumps(parameters, sort_keys=True, default=str)
     if failed:
         log.warning("%d of %d cases failed: NaN in the dataset", failed, spec.size)
     if output is not None:

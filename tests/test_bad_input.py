@@ -1,11 +1,13 @@
-"""A catalogue of bad inputs through the CLI, in-process.
+"""A catalogue of bad inputs through the CLI, in-process, for every command.
 
 Every case must give: exit code 2, exactly one line on stderr that names the parameter and says
-what is allowed, no traceback, and no file left behind (each ``simulate`` case also asks for
-``--out result.json``, so a case that wrongly ran to the end, or failed half-way through writing,
-would leave a file).
+what is allowed, no traceback, and no file or folder left behind or changed (each ``simulate``
+case also asks for ``--out result.json``; the other commands write to their default ``output/``
+under the test's working folder; so a case that wrongly ran to the end, or failed half-way
+through writing, would leave a file).
 
-Extend the lists below; bad mesh files have their own list, ``BAD_MESHES`` (issue 5).
+Extend the lists below; bad mesh files have their own list, ``BAD_MESHES``, each run through a
+run file's ``frame.mesh`` and through ``--mesh`` of every command that takes one.
 """
 
 from __future__ import annotations
@@ -31,6 +33,30 @@ class Case:
 
 def sim(*argv: str) -> list[str]:
     return ["simulate", *argv]
+
+
+def sweep(*argv: str) -> list[str]:
+    return ["sweep", "--serial", "--quiet", *argv]
+
+
+def refine(*argv: str) -> list[str]:
+    # Small enough that a case wrongly running to the end costs little (and leaves files).
+    return ["refine", "--elements", "5", "10", "--family", "uniform", "--positions", "0.75", *argv]
+
+
+def vtk(*argv: str) -> list[str]:
+    return ["export-vtk", "--frames", "3", *argv]
+
+
+def anim(*argv: str) -> list[str]:
+    return ["animate", "--frames", "3", "--size", "160x160", *argv]
+
+
+def repro(*argv: str) -> list[str]:
+    return ["reproduce", "--quick", *argv]
+
+
+A_FILE = {"afile": "not a folder"}  # a regular file where an output folder should go
 
 
 def toml(text: str, *argv: str, command: str = "simulate") -> tuple[list[str], dict[str, str]]:
@@ -86,6 +112,147 @@ CLI_CASES = [
     Case("config-needs-a-mode", ["config"], ("--example", "--check", "required")),
 ]
 
+SWEEP_CASES = [
+    Case("sweep-grid-two-parts", sweep("--speed", "1:2"), ("speed = '1:2'", "start:stop:num")),
+    Case("sweep-grid-letters", sweep("--speed", "a,b"), ("speed = 'a,b'", "a comma list")),
+    Case(
+        "sweep-grid-num-zero",
+        sweep("--position", "0.5:0.9:0"),
+        ("position = '0.5:0.9:0'", "num must be an integer >= 1"),
+    ),
+    Case(
+        "sweep-grid-unknown-spacing",
+        sweep("--ei1", "50:3000:60:lin"),
+        ("ei1 = '50:3000:60:lin'", "start:stop:num[:log]"),
+    ),
+    Case("sweep-grid-log-negative", sweep("--ei1=-5:100:3:log"), ("ei1", "start, stop > 0")),
+    Case("sweep-ei1-negative-in-list", sweep("--ei1=-5,100"), ("ei1 = -5", "> 0")),
+    Case("sweep-position-off-frame", sweep("--position", "0.5,1.5"), ("position = 1.5", "[0, 1]")),
+    Case("sweep-speed-nan", sweep("--speed", "nan"), ("speed = nan", "finite")),
+    Case("sweep-repeated-values", sweep("--speed", "20,20"), ("speed = [20.0, 20.0]", "distinct")),
+    Case("sweep-zeta-one", sweep("--zeta", "0.5,1"), ("zeta = 1", "[0, 1)")),
+    Case("sweep-elements-fraction", sweep("--elements", "10.5"), ("elements = 10.5", "integer")),
+    Case(
+        "sweep-scheduler-form",
+        ["sweep", "--quiet", "--scheduler", "localhost:8786"],
+        ("scheduler = 'localhost:8786'", "tcp://HOST:PORT"),
+    ),
+    Case("sweep-workers-zero", ["sweep", "--quiet", "--workers", "0"], ("workers = 0", ">= 1")),
+    Case("sweep-modes-zero", sweep("--modes", "0"), ("modes = 0", ">= 1")),
+    Case(
+        "sweep-out-exists",
+        sweep("--out", "old.nc"),
+        ("output = 'old.nc' already exists", "--overwrite"),
+        {"old.nc": "mine"},
+    ),
+    Case(
+        "sweep-out-unwritable",
+        sweep("--out", "afile/s.nc"),
+        ("output folder = 'afile'", "must be a folder you can write to"),
+        A_FILE,
+    ),
+    Case(
+        "sweep-ei1-with-run-file-segments",
+        ["sweep", "--serial", "--ei1", "100", "--config", "run.toml"],
+        ("--ei1 cannot be combined with frame.segments",),
+        {"run.toml": "[frame]\nsegments = [{length_m=0.7, ei_n_m2=150, rhoa_kg_m=0.5}]\n"},
+    ),
+]
+
+VTK_CASES = [
+    Case("vtk-unknown-field", vtk("--field", "stress"), ("field = 'stress'", "must be one of")),
+    Case("vtk-negative-scale", vtk("--scale", "-1"), ("scale = -1", "> 0")),
+    Case("vtk-frames-one", vtk("--frames", "1"), ("frames = 1", ">= 2")),
+    Case("vtk-subdivide-zero", vtk("--subdivide", "0"), ("subdivide = 0", ">= 1")),
+    Case("vtk-output-step-zero", vtk("--output-step", "0"), ("output_step = 0", "> 0")),
+    Case("vtk-speed-zero", vtk("--speed", "0"), ("speed = 0", "> 0")),
+    Case(
+        "vtk-out-unwritable",
+        vtk("--out", "afile/vtk"),
+        ("output folder = ", "afile", "must be a folder you can write to"),
+        A_FILE,
+    ),
+    Case(
+        "vtk-out-is-a-file", vtk("--out", "afile"), ("output = 'afile' is a file", "folder"), A_FILE
+    ),
+    Case(
+        "vtk-out-exists",
+        vtk("--out", "old"),
+        ("output = 'old' already exists", "--overwrite"),
+        {"old/provenance.json": "{}"},
+    ),
+    Case(
+        "vtk-overwrite-foreign-folder",
+        vtk("--out", "mine", "--overwrite"),
+        ("output = 'mine'", "without 'provenance.json'", "refusing"),
+        {"mine/notes.txt": "precious"},
+    ),
+    Case("anim-unknown-field", anim("--field", "heat"), ("field = 'heat'", "must be one of")),
+    Case("anim-negative-scale", anim("--scale", "-10"), ("scale = -10", "> 0")),
+    Case("anim-frames-one", anim("--frames", "1"), ("frames = 1", ">= 2")),
+    Case("anim-bad-suffix", anim("--out", "a.avi"), ("output = 'a.avi'", ".gif or .mp4")),
+    Case("anim-fps-zero", anim("--fps", "0"), ("fps = 0", "(0, 100]")),
+    Case("anim-fps-nan", anim("--fps", "nan"), ("fps = nan", "(0, 100]")),
+    Case("anim-size-not-16", anim("--size", "170x160"), ("size = (170, 160)", "multiple of 16")),
+    Case("anim-size-form", anim("--size", "big"), ("--size", "WIDTHxHEIGHT")),
+    Case(
+        "anim-out-unwritable",
+        anim("--out", "afile/a.gif"),
+        ("output folder = 'afile'", "must be a folder you can write to"),
+        A_FILE,
+    ),
+    Case(
+        "anim-sidecar-exists",
+        anim("--out", "a.gif"),
+        ("output = 'a.gif.json' already exists", "--overwrite"),
+        {"a.gif.json": "{}"},
+    ),
+]
+
+REFINE_CASES = [
+    Case("refine-elements-zero", refine("--elements", "5", "0"), ("elements = [5, 0]", ">= 1")),
+    Case("refine-elements-fraction", refine("--elements", "5", "2.5"), ("--elements", "int")),
+    Case("refine-position-off-frame", refine("--positions", "0.5", "1.2"), ("position = 1.2",)),
+    Case("refine-position-negative", refine("--positions", "-0.1"), ("position = -0.1", "[0, 1]")),
+    Case("refine-count-zero", refine("--count", "0"), ("count = 0", ">= 1")),
+    Case("refine-grading-below-one", refine("--grading", "0.5"), ("grading = 0.5", ">= 1")),
+    Case("refine-speed-negative", refine("--speed", "-20"), ("speed = -20", "> 0")),
+    Case("refine-ei1-nan", refine("--ei1", "nan"), ("ei1 = nan", "finite")),
+    Case(
+        "refine-csv-exists",
+        refine("--csv", "r.csv"),
+        ("output = 'r.csv' already exists", "--overwrite"),
+        {"r.csv": "mine"},
+    ),
+    Case(
+        "refine-plot-unwritable",
+        refine("--plot", "afile/r.png"),
+        ("output folder = 'afile'", "must be a folder you can write to"),
+        A_FILE,
+    ),
+]
+
+REPRODUCE_CASES = [
+    Case(
+        "reproduce-out-unwritable",
+        repro("--out", "afile/paper"),
+        ("output folder = 'afile/paper'", "must be a folder you can write to"),
+        A_FILE,
+    ),
+    Case(
+        "reproduce-report-unwritable",
+        repro("--report", "afile/R.md"),
+        ("output folder = 'afile'", "must be a folder you can write to"),
+        A_FILE,
+    ),
+    Case(
+        "reproduce-report-exists",
+        repro(),
+        ("output = 'REPRODUCTION.md' already exists", "--overwrite"),
+        {"REPRODUCTION.md": "mine"},
+    ),
+]
+
 OUTPUT_CASES = [
     Case(
         "out-under-a-regular-file",
@@ -98,6 +265,11 @@ OUTPUT_CASES = [
         sim("--out", "old.json"),
         ("output = 'old.json' already exists", "--overwrite"),
         {"old.json": "{}"},
+    ),
+    Case(
+        "out-folder-not-made-when-the-run-fails",  # the check passes, the impact fails later
+        sim("--out", "new/deeper/r.json", "--t-max", "1e-4"),
+        ("t_max = 0.0001 s", "raise t_max"),
     ),
     Case("out-is-a-folder", sim("--out", ".", "--overwrite"), ("output = '.'", "must be a file")),
     Case(
@@ -247,6 +419,61 @@ TOML_CASES = [
         toml("[frame]\nmesh = 'meshes/none.vtu'\n"),
         ("frame.mesh = 'meshes/none.vtu'", "no such file", "relative to the run file"),
     ),
+    T(
+        "toml-sweep-grid",
+        toml("[sweep]\nspeed = '1:2'\n", command="sweep"),
+        ("sweep.speed = '1:2'", "start:stop:num"),
+    ),
+    T(
+        "toml-sweep-grid-array",
+        toml("[sweep]\nposition = [0.5, 1.5]\n", command="sweep"),
+        ("sweep.position = 1.5", "[0, 1]"),
+    ),
+    T(
+        "toml-sweep-grid-table",
+        toml("[sweep]\nspeed = {min = 20}\n", command="sweep"),
+        ("sweep.speed = {'min': 20}", "an array of numbers"),
+    ),
+    T(
+        "toml-sweep-unknown-key",
+        toml("[sweep]\nspeeds = [20, 30]\n", command="sweep"),
+        ("sweep.speeds is not a known key", "did you mean 'speed'"),
+    ),
+    T(
+        "toml-sweep-core-key",
+        toml("[sweep]\nsolver = 'cvode'\n", command="sweep"),
+        ("sweep.solver", "set solver.name instead"),
+    ),
+    T(
+        "toml-vtk-frames-one",
+        toml("[vtk]\nframes = 1\n", command="export-vtk"),
+        ("frames = 1", ">= 2"),
+    ),
+    T(
+        "toml-animate-bad-suffix",
+        toml("[animate]\nout = 'a.avi'\n", command="animate"),
+        ("output = 'a.avi'", ".gif or .mp4"),
+    ),
+    T(
+        "toml-animate-size-array",
+        toml("[animate]\nsize = [960, 400]\n", command="animate"),
+        ("animate.size = [960, 400]", "--size"),
+    ),
+    T(
+        "toml-refine-elements-zero",
+        toml("[refine]\nelements = [5, 0]\n", command="refine"),
+        ("elements = [5, 0]", ">= 1"),
+    ),
+    T(
+        "toml-refine-elements-not-array",
+        toml("[refine]\nelements = 20\n", command="refine"),
+        ("refine.elements = 20", "must be an array"),
+    ),
+    T(
+        "toml-reproduce-quick-not-bool",
+        toml("[reproduce]\nquick = 'yes'\n", command="reproduce"),
+        ("reproduce.quick = 'yes'", "true or false"),
+    ),
     Case(
         "toml-check-bad-file",
         ["config", "--check", "run.toml"],
@@ -256,39 +483,78 @@ TOML_CASES = [
 ]
 
 
-# -- bad mesh files (issue 5 extends this list) ------------------------------------------------
-def _write_line_mesh(path: Path, x: np.ndarray, cells: np.ndarray, **cell_data: list) -> None:
+# -- bad mesh files ------------------------------------------------------------------------------
+def _write_line_mesh(path: Path, x: list, cells: list, EI=None, rhoA=None) -> None:
+    """A line mesh along x; EI / rhoA per cell (146 N m^2, 0.5 kg/m when None; "-" leaves the
+    cell data out)."""
     import meshio
 
-    pts = np.zeros((x.size, 3))
+    pts = np.zeros((len(x), 3))
     pts[:, 0] = x
-    meshio.write(path, meshio.Mesh(pts, [("line", cells)], cell_data=cell_data))
+    n = len(cells)
+    data = {}
+    for name, values, default in (("EI", EI, 146.0), ("rhoA", rhoA, 0.5)):
+        if values != "-":
+            data[name] = [np.full(n, default) if values is None else np.asarray(values, float)]
+    meshio.write(path, meshio.Mesh(pts, [("line", np.array(cells))], cell_data=data))
 
 
-def _mesh_without_rhoa(path: Path) -> None:
-    _write_line_mesh(path, np.linspace(0, 0.68, 5), np.c_[0:4, 1:5], EI=[np.full(4, 146.0)])
+def _mesh(*args, **kw):
+    return lambda path: _write_line_mesh(path, *args, **kw)
 
 
-def _mesh_with_gap(path: Path) -> None:
-    x = np.array([0.0, 0.3, 0.35, 0.68])
-    ei, ra = [np.full(2, 146.0)], [np.full(2, 0.5)]
-    _write_line_mesh(path, x, np.array([[0, 1], [2, 3]]), EI=ei, rhoA=ra)
+def _garbage(path: Path) -> None:
+    path.write_bytes(b"not a mesh at all\x00\x01")
 
 
 #: (id, function writing the bad mesh to the path it is given, words the error must contain).
-#: Each is read through a run file's ``frame.mesh``; issue 5 adds gaps, overlaps, unsorted nodes,
-#: zero-length cells ... here (and may run them through ``--mesh`` too).
+#: "Unsorted nodes" is a chain of cells whose nodes go back along x: the cells overlap. (Nodes
+#: merely numbered out of order, or cells listed in any order, are a valid mesh: read_mesh sorts
+#: them; tests/test_mesh_io.py checks that.)
 BAD_MESHES = [
-    ("mesh-missing-rhoA", _mesh_without_rhoa, ("mesh = ", "'rhoA' is missing")),
-    ("mesh-gap", _mesh_with_gap, ("mesh = ", "gap between x = 0.3 m and x = 0.35 m")),
+    ("mesh-gap", _mesh([0, 0.3, 0.35, 0.68], [[0, 1], [2, 3]]), ("gap between x = 0.3 m",)),
+    ("mesh-overlap", _mesh([0, 0.4, 0.3, 0.68], [[0, 1], [2, 3]]), ("overlap between x = 0.4",)),
+    (
+        "mesh-unsorted-nodes",
+        _mesh([0, 0.5, 0.3, 0.68], [[0, 1], [1, 2], [2, 3]]),
+        ("overlap", "cells must join end to end"),
+    ),
+    (
+        "mesh-zero-length-cell",
+        _mesh([0, 0.3, 0.3, 0.68], [[0, 1], [1, 2], [2, 3]]),
+        ("zero-length cell at x = 0.3 m",),
+    ),
+    ("mesh-missing-EI", _mesh([0, 0.68], [[0, 1]], EI="-"), ("'EI' is missing", "need EI")),
+    ("mesh-missing-rhoA", _mesh([0, 0.68], [[0, 1]], rhoA="-"), ("'rhoA' is missing",)),
+    (
+        "mesh-rhoA-zero",
+        _mesh([0, 0.3, 0.68], [[0, 1], [1, 2]], rhoA=[0.7, 0.0]),
+        ("rhoA = 0.0 kg/m in cell 1", "> 0"),
+    ),
+    (
+        "mesh-EI-negative",
+        _mesh([0, 0.3, 0.68], [[0, 1], [1, 2]], EI=[-146, 128]),
+        ("EI = -146.0 N m^2 in cell 0", "> 0"),
+    ),
+    ("mesh-EI-nan", _mesh([0, 0.68], [[0, 1]], EI=[np.nan]), ("EI = nan", "finite")),
+    ("mesh-unreadable", _garbage, ("could not be read",)),
 ]
 
+#: How a bad mesh reaches each command: a run file, or --mesh.
+MESH_ENTRIES = {
+    "run-file": ["simulate", "--config", "run.toml"],
+    "simulate": ["simulate", "--mesh", "bad.vtu"],
+    "modes": ["modes", "--mesh", "bad.vtu"],
+    "sweep": sweep("--mesh", "bad.vtu"),
+    "refine": refine("--mesh", "bad.vtu"),
+    "export-vtk": vtk("--mesh", "bad.vtu"),
+    "animate": anim("--mesh", "bad.vtu"),
+}
 
-def _mesh_case(mesh_id: str, names: tuple[str, ...]) -> Case:
-    return T(mesh_id, toml("[frame]\nmesh = 'bad.vtu'\n"), names)
 
-
-ALL_CASES = CLI_CASES + OUTPUT_CASES + TOML_CASES
+ALL_CASES = (
+    CLI_CASES + SWEEP_CASES + VTK_CASES + REFINE_CASES + REPRODUCE_CASES + OUTPUT_CASES + TOML_CASES
+)
 MESH_CASES = {c[0]: c[1] for c in BAD_MESHES}
 
 
@@ -297,8 +563,21 @@ def test_catalogue_size():
     assert len({c.id for c in ALL_CASES} | set(MESH_CASES)) == len(ALL_CASES) + len(BAD_MESHES)
 
 
+def test_catalogue_covers_every_command():
+    from fem_racket.cli import COMMANDS, build_parser
+
+    parser = build_parser()
+    subs = next(a for a in parser._actions if hasattr(a, "choices") and a.choices)
+    commands = set(subs.choices)
+    assert len(commands) >= len(COMMANDS)
+    assert commands <= {c.argv[0] for c in ALL_CASES}
+    with_mesh = {n for n, p in subs.choices.items() if any(a.dest == "mesh" for a in p._actions)}
+    assert with_mesh <= {argv[0] for argv in MESH_ENTRIES.values()}
+
+
 def _check_one_error(capsys, tmp_path, case: Case) -> None:
     for name, text in case.files.items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
         (tmp_path / name).write_text(text)
     before = {p: p.stat().st_mtime_ns for p in tmp_path.rglob("*")}
     argv = list(case.argv)
@@ -323,10 +602,13 @@ def test_bad_input_gives_one_line_exit_2_and_no_file(capsys, tmp_path, monkeypat
     _check_one_error(capsys, tmp_path, case)
 
 
+@pytest.mark.parametrize("entry", list(MESH_ENTRIES))
 @pytest.mark.parametrize(("mesh_id", "write", "names"), BAD_MESHES, ids=list(MESH_CASES))
 def test_bad_mesh_gives_one_line_exit_2_and_no_file(
-    capsys, tmp_path, monkeypatch, mesh_id, write, names
+    capsys, tmp_path, monkeypatch, mesh_id, write, names, entry
 ):
     monkeypatch.chdir(tmp_path)
     write(tmp_path / "bad.vtu")
-    _check_one_error(capsys, tmp_path, _mesh_case(mesh_id, names))
+    files = {"run.toml": "[frame]\nmesh = 'bad.vtu'\n"} if entry == "run-file" else {}
+    case = Case(mesh_id, MESH_ENTRIES[entry], ("mesh = 'bad.vtu'", *names), files)
+    _check_one_error(capsys, tmp_path, case)

@@ -154,6 +154,8 @@ def test_config_example_out_and_check(capsys, tmp_path):
     path = tmp_path / "run.toml"
     assert run(capsys, "config", "--example", "--out", path)[0] == 0
     assert path.read_text() == example_config() + path.read_text()[len(example_config()) :]
+    last = path.read_text().splitlines()[-1]  # the written file records its provenance
+    assert last.startswith("# provenance: ") and json.loads(last[14:])["version"]
     assert run(capsys, "config", "--example", "--out", path)[0] == 2
     code, out, _ = run(capsys, "config", "--check", path)
     assert code == 0 and out.startswith(f"{path}: ok") and "speed = 20.0" in out

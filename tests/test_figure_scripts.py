@@ -2,6 +2,7 @@
 
 import csv
 import importlib.util
+import json
 import re
 from pathlib import Path
 
@@ -36,6 +37,12 @@ def test_figure_script_writes_data_and_png(path, tmp_path, capsys):
         assert p.stat().st_size > 0
         if p.suffix == ".png":
             assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+            from PIL import Image
+
+            with Image.open(p) as im:  # provenance in the PNG's text chunks
+                im.load()
+                meta = json.loads(im.text["provenance"])
+            assert meta["parameters"] == {"figure": p.stem, "quick": True} and meta["version"]
         else:
             with open(p, newline="") as fh:
                 rows = list(csv.reader(fh))

@@ -41,6 +41,27 @@ def test_reproduce_writes_every_figure_values_and_report(quick_run, capsys):
     assert report.is_file()
 
 
+def test_every_output_carries_the_provenance(quick_run):
+    # values.json holds it for the folder (and so for its CSVs); each PNG in its text chunks;
+    # the report in a closing HTML comment.
+    from PIL import Image
+
+    _, out, report = quick_run
+    meta = json.loads((out / "values.json").read_text())["provenance"]
+    params = meta["parameters"]
+    assert meta["version"] and meta["created_utc"] and params["quick"] is True
+    assert params["out"] == str(out) and params["report"] == str(report)
+    assert params["solver"].startswith("exact") and params["separation"] == "displacement"
+    for spec in FIGURES.values():
+        with Image.open(out / f"{spec.name}.png") as im:
+            im.load()
+            assert json.loads(im.text["provenance"]) == meta, spec.name
+    last = report.read_text().rstrip().splitlines()[-1]
+    prefix = "<!-- provenance: "
+    assert last.startswith(prefix) and last.endswith(" -->")
+    assert json.loads(last[len(prefix) : -len(" -->")]) == meta
+
+
 def test_report_embeds_every_figure_by_a_relative_link(quick_run):
     _, out, report = quick_run
     text = report.read_text()

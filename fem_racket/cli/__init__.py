@@ -1,13 +1,17 @@
 """Command-line interface ``fem-racket``: thin wrappers that parse, call the library, print.
 
 Each sub-command lives in its own module exposing ``register(subparsers)``; the parser sets
-``args.func(args) -> int``. Bad input prints one line to stderr and exits with code 2.
+``args.func(args) -> int``. Bad input prints one line to stderr and exits with code 2. When the
+reader of the output goes away (``fem-racket modes | head -1``) the command stops quietly with
+exit code 141 (128 + SIGPIPE, what a Unix tool killed by SIGPIPE returns), files it wrote
+already being complete.
 """
 
 from __future__ import annotations
 
 import argparse
 import logging
+import os
 import sys
 from collections.abc import Sequence
 
@@ -37,8 +41,26 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: Exit code when stdout's reader has gone (128 + SIGPIPE, as the shell reports a killed tool).
+EXIT_BROKEN_PIPE = 141
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the CLI; returns the exit code (0 ok, 2 bad input)."""
+    """Run the CLI; returns the exit code (0 ok, 2 bad input, 141 output pipe closed)."""
+    try:
+        code = _run(argv)
+        sys.stdout.flush()  # a closed pipe shows here, not at interpreter exit
+        return code
+    except BrokenPipeError:
+        try:  # later writes (the interpreter's final flush) go nowhere
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+        except (OSError, ValueError):  # stdout without a file descriptor (e.g. captured)
+            pass
+        return EXIT_BROKEN_PIPE
+
+
+def _run(argv: Sequence[str] | None) -> int:
     parser = build_parser()
     try:
         args = parser.parse_args(argv)

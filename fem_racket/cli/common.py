@@ -90,13 +90,16 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
     add_mesh_option(g)
 
 
-def frame_from_args(args: argparse.Namespace) -> Frame | FrameMesh:
+def frame_from_args(
+    args: argparse.Namespace, exclusive: tuple[str, ...] = MESH_EXCLUSIVE
+) -> Frame | FrameMesh:
     """The frame the options describe.
 
     A mesh file (``--mesh`` or a run file's ``frame.mesh``) wins over segments (a run file's
     ``[[frame.segments]]``), which win over the paper's stepped frame with --ei1/--ei2.
     --mesh together with an explicit --ei1, --ei2 or --elements is an error: the file fixes the
-    cells and their EI and rhoA.
+    cells and their EI and rhoA. ``exclusive`` names the options a mesh file replaces (refine's
+    --elements is a list of counts to refine the file's profile with, so not one of them there).
     """
     path = getattr(args, "mesh", None)
     if path is None:
@@ -104,7 +107,7 @@ def frame_from_args(args: argparse.Namespace) -> Frame | FrameMesh:
         if segments:
             return Frame(tuple(segments))
         return standard_frame(args.ei1, args.ei2)
-    clash = sorted(set(getattr(args, "explicit_options", ())) & set(MESH_EXCLUSIVE))
+    clash = sorted(set(getattr(args, "explicit_options", ())) & set(exclusive))
     if clash:
         raise InputError(
             f"--{clash[0]} is not allowed with --mesh: the mesh file gives the cells and their "
@@ -258,6 +261,8 @@ def run_parameters(args: argparse.Namespace) -> dict[str, Any]:
             return str(v)
         if isinstance(v, (list, tuple)):
             return [plain(x) for x in v]
+        if isinstance(v, (set, frozenset)):
+            return sorted(plain(x) for x in v)
         if hasattr(v, "__dataclass_fields__"):
             return {k: plain(getattr(v, k)) for k in v.__dataclass_fields__}
         return repr(v)

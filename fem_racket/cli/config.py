@@ -8,6 +8,7 @@ checks every table and prints the settings each command would take from it.
 from __future__ import annotations
 
 import argparse
+from pathlib import PurePath
 from typing import Any
 
 from ..config import COMMAND_TABLES, example_config, load_config, toml_value
@@ -40,6 +41,8 @@ def _commands() -> dict[str, argparse.ArgumentParser]:
 def _placeholder(action: argparse.Action) -> str:
     if action.default is None or action.default == argparse.SUPPRESS:
         return f"<{action.metavar or action.dest.upper()}>"
+    if isinstance(action.default, PurePath):
+        return toml_value(str(action.default))
     return toml_value(action.default)
 
 
@@ -83,6 +86,8 @@ def _check(path: str) -> str:
 def _show(value: Any) -> str:
     if isinstance(value, tuple) and value and hasattr(value[0], "EI"):
         return f"{len(value)} segments"
+    if isinstance(value, PurePath):
+        value = str(value)
     return toml_value(value)
 
 
@@ -93,9 +98,13 @@ def run(args: argparse.Namespace) -> int:
         return 0
     text = example_config() + command_tables()
     if args.out:
-        from .common import write_text
+        import json
 
-        write_text(args.out, text, overwrite=args.overwrite)
+        from ..outputs import provenance
+        from .common import run_parameters, write_text
+
+        meta = json.dumps(provenance(run_parameters(args)), sort_keys=True)
+        write_text(args.out, f"{text}\n# provenance: {meta}\n", overwrite=args.overwrite)
         print(f"written {args.out}")
         return 0
     print(text, end="")

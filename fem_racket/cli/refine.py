@@ -6,10 +6,10 @@ import argparse
 from pathlib import Path
 
 from ..model import DEFAULT_MODES
-from ..params import standard_frame
 from ..refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
 from ..system import SEPARATION_EVENTS
-from .common import add_mesh_option, print_json
+from ..validation import InputError
+from .common import add_config_option, add_mesh_option, frame_from_args, print_json, run_parameters
 
 FAMILY_CHOICES = (*FAMILIES, "both")
 
@@ -85,20 +85,24 @@ def register(sub: argparse._SubParsersAction) -> None:
     o.add_argument("--no-files", action="store_true", help="write neither the CSV nor the plot")
     o.add_argument("--overwrite", action="store_true", help="replace existing output files")
     o.add_argument("--json", action="store_true", help="print a JSON object")
+    add_config_option(p, private=("elements",))
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the study, print the table (or JSON), write the CSV and the plot."""
-    from ..mesh import read_mesh
     from ..outputs import check_output_path
     from ..refine import refinement_study
-    from ..refine_output import format_study, plot_studies, write_csv
+    from ..refine_output import csv_files, format_study, plot_studies, write_csv
 
-    frame = read_mesh(args.mesh) if args.mesh else standard_frame(args.ei1, args.ei2)
+    if args.count < 1:
+        raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
+    if not args.grading >= 1.0 or args.grading == float("inf"):  # also NaN
+        raise InputError(f"grading = {args.grading!r} is not allowed: must be a finite number >= 1")
+    frame = frame_from_args(args, exclusive=("ei1", "ei2"))
     outputs = [] if args.no_files else [Path(args.csv), Path(args.plot)]
-    for path in outputs:  # fail before the work, not after it
-        check_output_path(path, overwrite=args.overwrite)
+    for path in [*csv_files(args.csv), Path(args.plot)] if outputs else []:
+        check_output_path(path, overwrite=args.overwrite)  # fail before the work, not after it
     families = FAMILIES if args.family == "both" else (args.family,)
     impact = {
         "ball_mass": args.ball_mass,
@@ -122,8 +126,9 @@ def run(args: argparse.Namespace) -> int:
         for fam in families
     }
     if outputs:
-        write_csv(studies, outputs[0], overwrite=args.overwrite)
-        plot_studies(studies, outputs[1], overwrite=args.overwrite)
+        params = run_parameters(args)
+        write_csv(studies, outputs[0], overwrite=args.overwrite, parameters=params)
+        plot_studies(studies, outputs[1], overwrite=args.overwrite, parameters=params)
     first, *rest = studies.values()
     if args.json:
         data = first.to_dict()

@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 import time
 
+from .common import add_config_option, run_parameters
+
 DEFAULT_OUT = "output/paper"
 DEFAULT_REPORT = "REPRODUCTION.md"
 
@@ -31,6 +33,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument("--quick", action="store_true", help="coarse grids (seconds; for tests)")
     p.add_argument("--overwrite", action="store_true", help="replace existing output files")
+    # The paper's parameters are fixed: only [reproduce] (and output.overwrite) apply.
+    add_config_option(p, private=("out",))
     p.set_defaults(func=run)
 
 
@@ -39,7 +43,13 @@ def run(args: argparse.Namespace) -> int:
     from ..reproduce import reproduce
 
     t0 = time.perf_counter()
-    result = reproduce(args.out, args.report, quick=args.quick, overwrite=args.overwrite)
+    result = reproduce(
+        args.out,
+        args.report,
+        quick=args.quick,
+        overwrite=args.overwrite,
+        parameters=run_parameters(args),
+    )
     total = time.perf_counter() - t0
     print(f"{'figure':<10} {'time [s]':>9}  files")
     for key, sec in result.seconds.items():

@@ -7,7 +7,10 @@ command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
 :data:`fem_racket.config.COMMAND_TABLES`) > the core tables (``[frame]``, ``[impact]`` ...) >
 built-in defaults. The command's table takes its long options as keys (``--ei1-values`` ->
 ``ei1_values``), converted and checked as on the command line; options the core tables own
-(``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key.
+(``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key, unless
+the command declares them its ``own`` (sweep's grids) or ``private`` (refine's list of element
+counts; the ``out`` of commands writing another kind of file than simulate's JSON), see
+:func:`add_config_option`. A command takes from the core tables only what it has options for.
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ from __future__ import annotations
 import argparse
 import difflib
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 from ..config import COMMAND_TABLES, CORE_DESTS, CORE_KEYS, RunConfig, load_config
@@ -29,14 +32,39 @@ _NOT_FROM_FILE = frozenset({"help", "config", "version"})
 _CORE_ONLY = CORE_DESTS - {"out", "overwrite"}
 
 
-def add_config_option(parser: argparse.ArgumentParser) -> None:
-    """Give a command ``--config run.toml``; :func:`apply_config` does the rest."""
+def add_config_option(
+    parser: argparse.ArgumentParser,
+    *,
+    own: Iterable[str] = (),
+    private: Iterable[str] = (),
+    convert: Mapping[str, Callable[[str, Any], Any]] | None = None,
+) -> None:
+    """Give a command ``--config run.toml``; :func:`apply_config` does the rest.
+
+    Parameters
+    ----------
+    own : iterable of str
+        Options (argparse dests) a core table also sets that the command's own table may set
+        too, in the command's form (``sweep``: ``speed = [20, 30, 40]`` besides
+        ``impact.speed_m_s``). The core value still applies when the command's table is silent.
+    private : iterable of str
+        Options only the command's table sets: the core tables' value is not used by this
+        command (``refine``'s ``elements`` is a list of counts, not ``frame.elements``; the
+        ``out`` of a command writing a folder or another kind of file is not ``output.out``).
+    convert : mapping, optional
+        dest -> ``f(dotted_key, value)`` checking and converting a table value instead of the
+        option's own conversion (e.g. arrays for sweep grids); raise :class:`InputError`.
+    """
     parser.add_argument(
         "--config",
         metavar="TOML",
         default=None,
         help="run file (see `fem-racket config --example`); command-line options override it",
     )
+    private = frozenset(private)
+    parser.config_own = frozenset(own) | private  # type: ignore[attr-defined]
+    parser.config_private = private  # type: ignore[attr-defined]
+    parser.config_convert = dict(convert or {})  # type: ignore[attr-defined]
 
 
 def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.ArgumentParser:
@@ -48,14 +76,35 @@ def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.Argume
 
 def file_options(sub: argparse.ArgumentParser) -> dict[str, argparse.Action]:
     """A command's options that its run-file table may set: dest -> action."""
+    own = getattr(sub, "config_own", frozenset())
     return {
         a.dest: a
         for a in sub._actions
         if a.option_strings
         and a.dest not in _NOT_FROM_FILE
-        and a.dest not in _CORE_ONLY
+        and (a.dest not in _CORE_ONLY or a.dest in own)
         and a.default is not argparse.SUPPRESS
     }
+
+
+def _core_values(
+    sub: argparse.ArgumentParser, cfg: RunConfig, given: Iterable[str] = ()
+) -> dict[str, Any]:
+    """dest -> value of the core tables that this command uses: only its own options (a frame
+    file also where it has --mesh), less its private ones. A mesh file ``given`` on the command
+    line replaces the file's frame (preset, EI1, EI2, segments), and with a mesh file from
+    either ``frame.elements`` does not apply: the mesh fixes the cells."""
+    dests = {a.dest for a in sub._actions}
+    if "mesh" in dests:
+        dests.add("segments")
+    dests -= getattr(sub, "config_private", frozenset())
+    values = {k: v for k, v in cfg.defaults().items() if k in dests}
+    if "mesh" in set(given):
+        for dest in ("ei1", "ei2", "segments"):
+            values.pop(dest, None)
+    if "mesh" in values or "mesh" in set(given):
+        values.pop("elements", None)
+    return values
 
 
 class _Given(argparse.Namespace):
@@ -108,15 +157,19 @@ def _coerce_one(action: argparse.Action, value: Any, where: str) -> Any:
     return out
 
 
-def config_values(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, Any]:
-    """dest -> value from the run file for one command: core tables, then the command's table."""
-    values = dict(cfg.defaults())
+def config_values(
+    sub: argparse.ArgumentParser, command: str, cfg: RunConfig, given: Iterable[str] = ()
+) -> dict[str, Any]:
+    """dest -> value from the run file for one command: core tables, then the command's table
+    (``given``: the options the command line sets)."""
+    values = _core_values(sub, cfg, given)
     table = COMMAND_TABLES.get(command, command)
     options = file_options(sub)
+    convert = getattr(sub, "config_convert", {})
     for key, value in cfg.table(table).items():
         where = f"{table}.{key}"
         dest = key.replace("-", "_")
-        if dest in _CORE_ONLY:
+        if dest in _CORE_ONLY and dest not in options:
             core = [
                 f"{t}.{k}" for t, ks in CORE_KEYS.items() for k, v in ks.items() if v.dest == dest
             ]
@@ -128,7 +181,10 @@ def config_values(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) ->
             raise InputError(
                 f"{where} is not a known key: {hint} allowed: {allowed}".replace(":  ", ": ")
             )
-        values[dest] = _coerce(options[dest], value, where)
+        if dest in convert:
+            values[dest] = convert[dest](where, value)
+        else:
+            values[dest] = _coerce(options[dest], value, where)
     return values
 
 
@@ -149,7 +205,7 @@ def apply_config(
         return args
     cfg = load_config(path)
     try:
-        values = config_values(sub, args.command, cfg)
+        values = config_values(sub, args.command, cfg, given)
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
     frame_file = {"segments", "mesh"} & set(values)
@@ -158,8 +214,6 @@ def apply_config(
         opts = ", ".join(f"--{d}" for d in sorted(clash))
         key = "frame." + next(iter(sorted(frame_file)))
         raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
-    if "mesh" in given:
-        values.pop("segments", None)
     for dest, value in values.items():
         if dest not in given:
             setattr(args, dest, value)

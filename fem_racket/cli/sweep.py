@@ -8,14 +8,16 @@ from __future__ import annotations
 import argparse
 import time
 from pathlib import Path
+from typing import Any
 
-from ..grid import PARAMETERS
+from ..grid import PARAMETERS, as_values
 from ..impact import BASES
 from ..integrators import SOLVERS
 from ..model import DEFAULT_MODES
 from ..sweep import sweep
 from ..system import SEPARATION_EVENTS
-from .common import print_json
+from ..validation import InputError
+from .common import add_config_option, add_mesh_option, print_json, run_parameters
 
 #: Where the result goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
@@ -30,6 +32,23 @@ _HELP = {
     "kcb": "ball/string stiffness K_CB [N/m] (default: from the speed)",
     "elements": "number of beam elements (default 20)",
 }
+
+
+def _grid_value(where: str, value: Any) -> Any:
+    """A run file's sweep value: a number, an array of numbers or a string as on the command
+    line (``"50:3000:60:log"``); checked here so ``config --check`` reports it."""
+    name = where.rpartition(".")[2]
+    if isinstance(value, bool) or not isinstance(value, (int, float, str, list)):
+        raise InputError(
+            f"{where} = {value!r} is not allowed: must be a number, an array of numbers or a "
+            "string like '0.55:0.95:9'"
+        )
+    try:
+        as_values(name, value)
+    except InputError as exc:
+        text = str(exc)
+        raise InputError(where + text[len(name) :] if text.startswith(name) else text) from None
+    return value
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -48,6 +67,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     g.add_argument(
         "--ei2", type=float, metavar="N_M2", help="fixed top-side EI2 [N m^2] (default 0.88 EI1)"
     )
+    add_mesh_option(g)
     s = p.add_argument_group("solver")
     s.add_argument("--solver", default="exact", choices=sorted(SOLVERS), help="(default exact)")
     s.add_argument(
@@ -58,6 +78,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     s.add_argument("--basis", default="modal", choices=BASES, help="for the BDF solvers")
     s.add_argument("--modes", type=int, default=DEFAULT_MODES, metavar="N", help="flexible modes")
+    s.add_argument("--rtol", type=float, default=1e-10, help="relative tolerance of cvode/bdf")
+    s.add_argument("--atol", type=float, default=1e-12, help="absolute tolerance of cvode/bdf")
     r = p.add_argument_group("execution and output")
     r.add_argument(
         "--out",
@@ -85,21 +107,40 @@ def register(sub: argparse._SubParsersAction) -> None:
     r.add_argument("--chunk-size", type=int, metavar="N", help="impacts per task and checkpoint")
     r.add_argument("--quiet", action="store_true", help="no progress bar")
     r.add_argument("--json", action="store_true", help="print a JSON summary")
+    add_config_option(
+        p,
+        own=PARAMETERS,
+        private=("out",),
+        convert={name: _grid_value for name in PARAMETERS},
+    )
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the sweep, write the file and print a summary."""
+    from ..executors import check_scheduler
+    from .common import frame_from_args
+
+    given = getattr(args, "explicit_options", set())
+    if given & {"workers", "scheduler"} and "serial" not in given:
+        args.serial = False  # the command line's choice wins over a run file's serial = true
     backend = "serial" if args.serial else ("dask" if args.scheduler else "processes")
+    if args.scheduler is not None:
+        check_scheduler(args.scheduler)  # before the checkpoint folder is made
     values = {name: getattr(args, name) for name in PARAMETERS}
+    custom = args.mesh is not None or getattr(args, "segments", None)
+    frame = frame_from_args(args, exclusive=("ei1", "ei2")) if custom else None
     start = time.perf_counter()
     ds = sweep(
+        frame,
         **values,
         ei2=args.ei2,
         solver=args.solver,
         separation=args.separation,
         basis=args.basis,
         modes=args.modes,
+        rtol=args.rtol,
+        atol=args.atol,
         output=args.out,
         overwrite=args.overwrite,
         restart=args.restart,
@@ -108,6 +149,7 @@ def run(args: argparse.Namespace) -> int:
         scheduler=args.scheduler,
         chunk_size=args.chunk_size,
         progress=False if args.quiet else None,
+        parameters=run_parameters(args),
     )
     wall = time.perf_counter() - start
     n = int(ds.cor.size)

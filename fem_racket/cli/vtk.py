@@ -7,7 +7,13 @@ from pathlib import Path
 
 from ..impact import simulate
 from ..validation import InputError
-from .common import add_impact_options, build_model, impact_kwargs
+from .common import (
+    add_config_option,
+    add_impact_options,
+    build_model,
+    impact_kwargs,
+    run_parameters,
+)
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -76,6 +82,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="output folder (default output/impact_vtk); open DIR/impact.pvd in ParaView",
     )
     _add_common(p, scale=1.0, frames=None)
+    add_config_option(p, private=("out",))  # a folder, not output.out
     p.set_defaults(func=run_export)
 
     a = sub.add_parser("animate", help="render the impact offscreen as a GIF or MP4")
@@ -93,10 +100,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     a.add_argument(
         "--size",
         type=_size,
-        default=(960, 400),
+        default="960x400",
         metavar="WxH",
         help="image size in pixels, multiples of 16 (default 960x400)",
     )
+    add_config_option(a, private=("out",))  # a .gif or .mp4, not output.out
     a.set_defaults(func=run_animate)
 
 
@@ -122,8 +130,20 @@ def _check_early(args: argparse.Namespace) -> None:
         raise InputError(f"subdivide = {args.subdivide} is not allowed: must be an integer >= 1")
     if args.command == "export-vtk":
         check_output_folder(args.out, overwrite=args.overwrite, marker=PROVENANCE_NAME)
-    elif args.out.suffix.lower() in (".gif", ".mp4"):
-        check_output_path(args.out, overwrite=args.overwrite)
+        return
+    from ..animate import ANIMATION_SUFFIXES, check_size
+    from ..outputs import sidecar_path
+
+    if args.out.suffix.lower() not in ANIMATION_SUFFIXES:
+        raise InputError(
+            f"output = '{args.out}' is not allowed: must end in {' or '.join(ANIMATION_SUFFIXES)}"
+        )
+    if not 0 < args.fps <= 100:  # also catches NaN
+        raise InputError(f"fps = {args.fps!r} frames/s is not allowed: must be in (0, 100]")
+    check_size(args.size)
+    path = args.out.with_suffix(args.out.suffix.lower())
+    for p in (path, sidecar_path(path)):
+        check_output_path(p, overwrite=args.overwrite)
 
 
 def run_export(args: argparse.Namespace) -> int:
@@ -140,6 +160,7 @@ def run_export(args: argparse.Namespace) -> int:
         scale=args.scale,
         field=args.field,
         overwrite=args.overwrite,
+        parameters=run_parameters(args),
     )
     print(pvd)
     return 0
@@ -161,6 +182,7 @@ def run_animate(args: argparse.Namespace) -> int:
         subdivide=args.subdivide,
         size=args.size,
         overwrite=args.overwrite,
+        parameters=run_parameters(args),
     )
     print(path)
     return 0

@@ -67,5 +67,8 @@ def make_figure(
     spec = FIGURES[check_choice("figure", key, FIGURES)]
     for p in expected_files(spec, out_dir):
         check_output_path(p, overwrite=overwrite)
+    from ..outputs import provenance
+
     data = spec.compute(quick)
-    return data, write_figure(spec, data, out_dir, overwrite=overwrite)
+    meta = provenance({"figure": spec.name, "quick": quick})
+    return data, write_figure(spec, data, out_dir, overwrite=overwrite, meta=meta)

@@ -13,10 +13,11 @@ import os
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
-from ..outputs import atomic_output, check_output_path
+from ..outputs import add_png_provenance, atomic_output, check_output_path, provenance
 
 __all__ = ["FigureData", "FigureSpec", "expected_files", "write_csv", "write_figure"]
 
@@ -86,9 +87,17 @@ def _fmt(v: object) -> str:
 
 
 def write_figure(
-    spec: FigureSpec, data: FigureData, out_dir: str | os.PathLike, *, overwrite: bool = False
+    spec: FigureSpec,
+    data: FigureData,
+    out_dir: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    meta: Mapping[str, Any] | None = None,
 ) -> list[Path]:
-    """Write the tables and the PNG of ``data`` into ``out_dir``; returns the paths written."""
+    """Write the tables and the PNG of ``data`` into ``out_dir``; returns the paths written.
+
+    The PNG carries the provenance ``meta`` (:func:`fem_racket.outputs.provenance`; by default
+    one naming the figure) in its text chunks."""
     from .. import plots
 
     paths = expected_files(spec, out_dir)
@@ -98,5 +107,6 @@ def write_figure(
         write_csv(path, data.tables[table], overwrite=overwrite)
     with atomic_output(paths[-1], overwrite=overwrite) as tmp:
         getattr(plots, spec.plot)(data, tmp)
+        add_png_provenance(tmp, meta or provenance({"figure": spec.name}))
     log.info("wrote %s", ", ".join(p.name for p in paths))
     return paths
