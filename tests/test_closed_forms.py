@@ -28,25 +28,26 @@ def test_clamped_closed_form_gives_paper_cor():
 @pytest.mark.parametrize("speed", [20.0, 40.0])
 def test_heavy_stiff_frame_behaves_as_clamped(speed):
     # A frame 1e7 times heavier and stiffer than the standard one is clamped for the ball:
-    # corrections are of order m_B / m_R ~ 2e-8, so eqs 1-2 must hold to 1e-6.
+    # corrections are of order m_B / m_R ~ 2e-8 (measured: COR 6.7e-8, t_c 1.4e-8 relative).
     heavy = Frame((Segment(0.204, 146e7, 0.696e7), Segment(0.476, 128.48e7, 0.458e7)))
     r = simulate(heavy, position=0.75, speed=speed)
     c = clamped_impact(M_B, kcb_from_speed(speed), zeta_from_cor(0.83), speed)
-    assert r.cor == pytest.approx(0.83, abs=1e-6)
-    assert r.contact_time == pytest.approx(c.contact_time, rel=1e-6)
+    assert r.cor == pytest.approx(0.83, abs=3e-7)
+    assert r.contact_time == pytest.approx(c.contact_time, rel=1e-7)
 
 
 @pytest.mark.parametrize("position", [0.55, 0.6, 0.75, 0.9, 0.95])
 def test_very_rigid_frame_matches_eqs_11_12(standard_model, position):
     # Eqs 11-12 (rigid frame, zeta = 0). EI x 1e6 puts mode 1 at ~1.2e5 Hz, so the elastic
-    # correction is ~(f_ball / f_1)^2 ~ 1e-6; we allow 2e-5.
+    # correction of t_c is ~(f_ball / f_1)^2 ~ 1e-6 (measured <= 2e-7); the COR's is far
+    # smaller (measured <= 5e-11).
     stiff = standard_model.scaled(1e6)
     props = stiff.props
     r = simulate(stiff, position=position, speed=20.0, zeta=0.0)
     x = position * props.length
     rf = rigid_impact(M_B, props.mass, props.inertia, x - props.cg, kcb_from_speed(20.0), 20.0)
-    assert r.cor == pytest.approx(rf.cor, abs=2e-5)
-    assert r.contact_time == pytest.approx(rf.contact_time, rel=2e-5)
+    assert r.cor == pytest.approx(rf.cor, abs=1e-9)
+    assert r.contact_time == pytest.approx(rf.contact_time, rel=1e-6)
 
 
 def test_rigid_closed_form_components_sum():
@@ -70,4 +71,4 @@ def test_no_damping_saturated_cor_is_speed_independent():
     # since eq 12 holds no K_CB.
     model = FrameModel.build(None, 20).scaled(1e5)
     cors = [simulate(model, speed=v, zeta=0.0, output_step=None).cor for v in (20, 30, 40)]
-    assert np.ptp(cors) < 1e-4
+    assert np.ptp(cors) < 1e-9  # measured 2.5e-11

@@ -16,22 +16,24 @@ from fem_racket.mesh import insert_nodes
 
 @pytest.mark.parametrize("position", [0.6, 0.769, 0.9])
 def test_integrators_agree(standard_model, position):
-    # Issue 2: every integrator agrees with every other to 1e-6 in COR.
+    # Issue 2: every integrator agrees with every other to 1e-6 in COR; measured <= 7e-13 with
+    # the BDF tolerances rtol 1e-10, atol 1e-12, so we hold them to 1e-9.
     ref = simulate(standard_model, position=position, solver="exact")
     for solver, basis in (("cvode", "modal"), ("bdf", "modal"), ("cvode", "physical")):
         r = simulate(standard_model, position=position, solver=solver, basis=basis)
-        assert r.cor == pytest.approx(ref.cor, abs=1e-6), (solver, basis)
-        assert r.contact_time == pytest.approx(ref.contact_time, rel=1e-6), (solver, basis)
+        assert r.cor == pytest.approx(ref.cor, abs=1e-9), (solver, basis)
+        assert r.contact_time == pytest.approx(ref.contact_time, rel=1e-9), (solver, basis)
         np.testing.assert_allclose(r.t[:-1], ref.t[:-1], rtol=1e-12)
         np.testing.assert_allclose(r.ball_displacement, ref.ball_displacement, atol=1e-8)
 
 
 def test_force_criterion_gives_slightly_higher_cor(standard_model):
-    # DESIGN.md section 1: ending at F = 0 gives ~1 % higher COR than ending at delta = 0.
+    # DESIGN.md section 1: ending at F = 0 gives ~1 % higher COR than ending at delta = 0
+    # (measured 1.52 % on the standard racket at 0.75 L, 20 m/s).
     d = simulate(standard_model, separation="displacement")
     f = simulate(standard_model, separation="force")
     assert f.contact_time < d.contact_time
-    assert 0.0 < f.cor - d.cor < 0.03 * d.cor
+    assert 0.01 * d.cor < f.cor - d.cor < 0.02 * d.cor
     assert abs(f.force[-1]) < 1e-6 * f.peak_force
     c = simulate(standard_model, separation="force", solver="cvode")
     assert c.cor == pytest.approx(f.cor, abs=1e-6)
@@ -90,11 +92,12 @@ def test_impact_between_nodes_is_exact():
 
 
 def test_modal_truncation_converges(standard_model):
-    # DESIGN.md section 7: ~5e-6 with 20 modes; the default keeps all 40 at 20 elements.
+    # DESIGN.md section 7: ~5e-6 with 20 modes (measured 3.0e-6 here); the default keeps all
+    # 40 at 20 elements.
     full = simulate(standard_model, position=0.6, modes=None)
     r20 = simulate(standard_model, position=0.6, modes=20)
     r5 = simulate(standard_model, position=0.6, modes=5)
-    assert abs(r20.cor - full.cor) < 2e-5
+    assert abs(r20.cor - full.cor) < 1e-5
     assert abs(r20.cor - full.cor) < abs(r5.cor - full.cor)
 
 
