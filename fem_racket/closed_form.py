@@ -23,7 +23,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .system import (
     SEPARATION_EVENTS,
@@ -206,6 +205,8 @@ def _separation_time(
 ) -> float:
     """First time the event function falls through 0 [s]: a sign change on a grid of 513
     points per 2 t_est window, refined by Brent's method on the closed form."""
+    from scipy.optimize import brentq
+
     w = cf.weights(separation)
     g = cf.event(separation)
     t_max = 20.0 * t_est if t_max is None else t_max
@@ -278,6 +279,8 @@ def _peak_force(cf: _ModalClosedForm, tc: float) -> tuple[float, float]:
     (steps of t_c / 65536, finer than the ripple of the highest FE modes), then dF/dt = 0 by
     Brent's method between the neighbours of that one.
     """
+    from scipy.optimize import brentq
+
     grid, F = cf.on_grid(cf.fvec, 0.0, tc, 257)
     i = int(np.argmax(F))
     grid, F = cf.on_grid(cf.fvec, grid[max(i - 2, 0)], grid[min(i + 2, grid.size - 1)], 257)

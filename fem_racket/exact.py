@@ -34,7 +34,6 @@ from collections.abc import Sequence
 from itertools import combinations
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .mesh import FrameMesh, frame_from_mesh
 from .params import Frame, Segment
@@ -148,6 +147,8 @@ def free_free_frequencies(
     ndarray, shape (n_modes,)
         Ascending frequencies [Hz], accurate to a few units of round-off.
     """
+    from scipy.optimize import brentq
+
     if isinstance(frame, FrameMesh):
         frame = frame_from_mesh(frame)
     segs = _check_segments(frame.segments if isinstance(frame, Frame) else frame)

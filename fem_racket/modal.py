@@ -17,7 +17,6 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
-from scipy.optimize import brentq
 
 from .forms import FrameFE
 from .validation import check_integer
@@ -165,6 +164,8 @@ def mode_nodes(fe: FrameFE, shape: np.ndarray, samples_per_cell: int = 16) -> np
     Sign changes are found on a grid of ``samples_per_cell`` points per cell and refined with
     Brent's method on the exact Hermite interpolant.
     """
+    from scipy.optimize import brentq
+
     p = fe.mesh.points
     s = np.linspace(0.0, 1.0, samples_per_cell + 1)[:-1]
     x = np.concatenate([(p[:-1, None] + np.diff(p)[:, None] * s).ravel(), p[-1:]])
