@@ -52,6 +52,8 @@ FAMILIES = ("uniform", "graded")
 DEFAULT_GRADING = 4.0
 #: Convergence order of cubic Hermite beam elements (frequencies, and COR through them).
 THEORETICAL_ORDER = 4.0
+#: Observed orders within which a Richardson extrapolation of order 4 is trusted.
+ASYMPTOTIC_ORDERS = (3.0, 5.0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -110,11 +112,19 @@ class RefinementStudy:
         return out
 
     def richardson(self, values: np.ndarray) -> np.ndarray:
-        """Richardson estimate from the two finest meshes with order 4, per impact point."""
-        if values.shape[0] < 2:
+        """Richardson estimate with order 4 from the two finest meshes, per impact point.
+
+        NaN where the observed order of ``values`` on the three finest meshes is not within
+        :data:`ASYMPTOTIC_ORDERS` (3-5): there the values are not in the asymptotic range (or
+        are at the truncation floor) and an order-4 extrapolation would mislead.
+        """
+        if values.shape[0] < 3:
             return np.full(values.shape[1:], np.nan)
         r = self.elements[-1] / self.elements[-2]
-        return values[-1] + (values[-1] - values[-2]) / (r**THEORETICAL_ORDER - 1.0)
+        estimate = values[-1] + (values[-1] - values[-2]) / (r**THEORETICAL_ORDER - 1.0)
+        p = self.observed_order_of(values)
+        low, high = ASYMPTOTIC_ORDERS
+        return np.where((p >= low) & (p <= high), estimate, np.nan)
 
     def observed_order_of(self, values: np.ndarray) -> np.ndarray:
         """Order of convergence of ``values`` from the three finest meshes, per impact point."""
