@@ -346,7 +346,7 @@ def write_mesh(
     mesh: FrameMesh,
     path: str | os.PathLike,
     *,
-    overwrite: bool = True,
+    overwrite: bool = False,
     binary: bool = True,
 ) -> Path:
     """Write ``mesh`` with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] in any meshio format.
@@ -360,7 +360,7 @@ def write_mesh(
     mesh : FrameMesh
     path : path-like
     overwrite : bool
-        Replace an existing file (default True); False raises :class:`InputError` instead.
+        Replace an existing file; by default an existing file raises :class:`InputError`.
     binary : bool
         For .vtu / .vtk: base64/binary data (exact round trip, the default) or ASCII text (easy
         to read and diff, 12 significant digits). .xdmf is written with its data inline (XML).

@@ -79,7 +79,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{'ok' if ok else 'DIFFERS'}  {path}")
             status |= not ok
         else:
-            write_mesh(mesh, path)
+            write_mesh(mesh, path, overwrite=True)  # regenerating is this script's job
             print(f"wrote {path}")
     return int(status)
 

@@ -53,9 +53,9 @@ def test_round_trip(tmp_path, suffix):
 def test_write_refuses_existing_file_when_asked(tmp_path):
     mesh = frame_mesh(standard_frame(), 4)
     path = write_mesh(mesh, tmp_path / "a.vtu")
-    write_mesh(mesh, path)  # default: replace
+    write_mesh(mesh, path, overwrite=True)
     with pytest.raises(InputError, match="already exists"):
-        write_mesh(mesh, path, overwrite=False)
+        write_mesh(mesh, path)  # the default refuses to replace a file
     with pytest.raises(InputError, match="cannot be written"):
         write_mesh(mesh, tmp_path / "a.unknownformat")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.vtu"]  # no temporary left
