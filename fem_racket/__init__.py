@@ -30,7 +30,7 @@ from .params import (
     zeta_from_cor,
 )
 from .refine import RefinementStudy, refinement_study
-from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact
+from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact, rigid_impact_at
 from .sweep import sweep
 from .validation import InputError
 from .vtk import ImpactSeries, impact_series, write_vtk_series
@@ -84,6 +84,7 @@ __all__ = [
     "render_animation",
     "rigid_frame",
     "rigid_impact",
+    "rigid_impact_at",
     "simulate",
     "standard_frame",
     "sweep",

@@ -25,10 +25,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
+from .params import DEFAULT_BALL_MASS, kcb_from_speed
 from .validation import check_finite, check_positive, check_range
 
-__all__ = ["ClampedImpact", "RigidImpact", "clamped_impact", "rigid_impact"]
+if TYPE_CHECKING:
+    from .modal import MassProperties
+
+__all__ = ["ClampedImpact", "RigidImpact", "clamped_impact", "rigid_impact", "rigid_impact_at"]
 
 
 @dataclass(frozen=True)
@@ -150,3 +155,32 @@ def rigid_impact(
     vi = v0 * mr / meff
     vb = vt + vr - vi
     return RigidImpact(alpha, omega, vt, vr, vi, math.pi / omega, vb, -vb / v0)
+
+
+def rigid_impact_at(
+    props: MassProperties,
+    position: float,
+    speed: float,
+    *,
+    ball_mass: float = DEFAULT_BALL_MASS,
+    kcb: float | None = None,
+) -> RigidImpact:
+    """Eqs 5-12 for a frame of given mass properties struck at ``position``.
+
+    Parameters
+    ----------
+    props : MassProperties
+        Mass, centre of gravity and inertia of the frame (``FrameModel.props``).
+    position : float
+        Impact point x/L from the grip end.
+    speed : float
+        V_B0 [m/s].
+    ball_mass : float
+        m_B [kg].
+    kcb : float, optional
+        K_CB [N/m]; from the speed (:func:`fem_racket.params.kcb_from_speed`) when None.
+    """
+    pos = check_range("position", position, 0.0, 1.0, unit="x/L")
+    k = kcb_from_speed(speed) if kcb is None else kcb
+    d = pos * props.length - props.cg
+    return rigid_impact(ball_mass, props.mass, props.inertia, d, k, speed)

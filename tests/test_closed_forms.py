@@ -10,6 +10,7 @@ from fem_racket import (
     clamped_impact,
     kcb_from_speed,
     rigid_impact,
+    rigid_impact_at,
     simulate,
     zeta_from_cor,
 )
@@ -44,8 +45,7 @@ def test_very_rigid_frame_matches_eqs_11_12(standard_model, position):
     stiff = standard_model.scaled(1e6)
     props = stiff.props
     r = simulate(stiff, position=position, speed=20.0, zeta=0.0)
-    x = position * props.length
-    rf = rigid_impact(M_B, props.mass, props.inertia, x - props.cg, kcb_from_speed(20.0), 20.0)
+    rf = rigid_impact_at(props, position, 20.0)
     assert r.cor == pytest.approx(rf.cor, abs=1e-9)
     assert r.contact_time == pytest.approx(rf.contact_time, rel=1e-6)
 
@@ -60,8 +60,7 @@ def test_rigid_closed_form_components_sum():
 def test_elastic_never_beats_rigid_eq16(standard_model, position):
     # Eq 16: with zeta = 0 the elastic frame's rebound cannot exceed the rigid frame's.
     props = standard_model.props
-    x = position * props.length
-    rf = rigid_impact(M_B, props.mass, props.inertia, x - props.cg, kcb_from_speed(20.0), 20.0)
+    rf = rigid_impact_at(props, position, 20.0)
     r = simulate(standard_model, position=position, speed=20.0, zeta=0.0, output_step=None)
     assert r.cor <= rf.cor + 1e-12
 

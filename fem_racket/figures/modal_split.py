@@ -17,8 +17,8 @@ from ..coupled import CoupledModes, coupled_modes
 from ..impact import simulate
 from ..modal import mode_nodes
 from ..model import FrameModel
-from ..params import PAPER_EI1, RIGID_EI1, Ball, kcb_from_speed, standard_frame
-from ..rigid import rigid_impact
+from ..params import PAPER_EI1, RIGID_EI1, standard_frame
+from ..rigid import rigid_impact_at
 from .base import FigureData, FigureSpec
 
 __all__ = ["FIG_11", "FIG_12", "modal_terms", "system_modes"]
@@ -60,14 +60,7 @@ def modal_terms(quick: bool = False) -> FigureData:
             cols.setdefault(k, []).append(v)
     for p, cm in cases.items():
         tag = {0.60: "060"}.get(p, "0769" if p == 0.769 else "node")
-        closed = rigid_impact(
-            Ball().mass,
-            props.mass,
-            props.inertia,
-            p * props.length - props.cg,
-            kcb_from_speed(SPEED),
-            SPEED,
-        )
+        closed = rigid_impact_at(props, p, SPEED)
         vj = cm.velocity_terms
         values.update(
             {

@@ -15,8 +15,8 @@ import numpy as np
 from ..impact import simulate
 from ..modal import mode_nodes
 from ..model import FrameModel
-from ..params import PAPER_EI1, RIGID_EI1, Ball, kcb_from_speed, standard_frame
-from ..rigid import rigid_impact
+from ..params import PAPER_EI1, RIGID_EI1, standard_frame
+from ..rigid import rigid_impact_at
 from .base import FigureData, FigureSpec
 
 __all__ = ["FIG_08", "FIG_09", "contact_time_position", "cor_position", "position_sweep"]
@@ -47,17 +47,7 @@ def position_sweep(quick: bool = False) -> tuple[dict[str, np.ndarray], dict[str
         out[f"COR {name} [-]"] = np.array([r.cor for r in rs])
         out[f"contact time {name} [s]"] = np.array([r.contact_time for r in rs])
     props = base.props
-    closed = [
-        rigid_impact(
-            Ball().mass,
-            props.mass,
-            props.inertia,
-            p * props.length - props.cg,
-            kcb_from_speed(SPEED),
-            SPEED,
-        )
-        for p in x
-    ]
+    closed = [rigid_impact_at(props, p, SPEED) for p in x]
     out["COR eq 12 rigid undamped [-]"] = np.array([c.cor for c in closed])
     out["contact time eq 11 rigid undamped [s]"] = np.array([c.contact_time for c in closed])
     xw = np.linspace(0.30, 0.95, 27 if quick else 66)
