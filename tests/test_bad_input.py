@@ -106,6 +106,8 @@ CLI_CASES = [
         sim("--t-max", "1e-4", "--solver", "cvode"),
         ("t_max = 0.0001 s", "raise t_max"),
     ),
+    Case("output-step-zero", sim("--output-step", "0"), ("output_step = 0.0 s", "> 0")),
+    Case("output-step-nan", sim("--output-step", "nan"), ("output_step = nan", "finite")),
     Case("modes-count-zero", ["modes", "--count", "0"], ("count = 0", ">= 1")),
     Case("modes-ei1-nan", ["modes", "--ei1", "nan"], ("ei1 = nan", "finite")),
     Case("unknown-command", ["nonsense"], ("COMMAND", "choose from")),
@@ -212,6 +214,17 @@ VTK_CASES = [
 REFINE_CASES = [
     Case("refine-elements-zero", refine("--elements", "5", "0"), ("elements = [5, 0]", ">= 1")),
     Case("refine-elements-fraction", refine("--elements", "5", "2.5"), ("--elements", "int")),
+    Case(
+        "refine-elements-comma-fraction",
+        refine("--elements", "5,2.5"),
+        ("--elements", "'5,2.5'", "integer", "spaces or commas"),
+    ),
+    Case("refine-elements-empty-item", refine("--elements", "5,,10"), ("--elements", "'5,,10'")),
+    Case(
+        "refine-positions-comma-off-frame",
+        refine("--position", "0.5,1.2"),
+        ("position = 1.2", "[0, 1]"),
+    ),
     Case("refine-position-off-frame", refine("--positions", "0.5", "1.2"), ("position = 1.2",)),
     Case("refine-position-negative", refine("--positions", "-0.1"), ("position = -0.1", "[0, 1]")),
     Case("refine-count-zero", refine("--count", "0"), ("count = 0", ">= 1")),
@@ -272,6 +285,13 @@ OUTPUT_CASES = [
         ("t_max = 0.0001 s", "raise t_max"),
     ),
     Case("out-is-a-folder", sim("--out", ".", "--overwrite"), ("output = '.'", "must be a file")),
+    Case("out-bad-suffix", sim("--out", "r.txt"), ("output = 'r.txt'", ".json or .csv")),
+    Case(
+        "out-csv-sidecar-exists",
+        sim("--out", "r.csv"),
+        ("output = 'r.csv.json' already exists", "--overwrite"),
+        {"r.csv.json": "{}"},
+    ),
     Case(
         "config-example-out-exists",
         ["config", "--example", "--out", "run.toml"],

@@ -8,7 +8,7 @@ Conventions every command follows (so a new command plugs in with a few lines):
   table (``[sweep]``, ``[vtk]`` ...) > the core tables (``[frame]``, ``[impact]`` ...) > built-in
   defaults. The command's table takes its long options as keys (``--ei1-values`` ->
   ``ei1_values``), checked and converted as on the command line.
-- ``add_output_options(p, default)`` gives it ``--out PATH`` and ``--overwrite``; write through
+- ``add_output_options(p, default)`` gives it ``--out FILE`` and ``--overwrite``; write through
   :func:`fem_racket.outputs.atomic_output` (check the path with ``check_output_path`` *before* the
   work) and put :func:`run_parameters` into the file's :func:`fem_racket.outputs.provenance`.
 """
@@ -29,7 +29,9 @@ from ..model import DEFAULT_MODES, FrameModel
 from ..params import Frame, standard_frame
 from ..system import SEPARATION_EVENTS
 from ..validation import InputError
+from .lists import number_list
 from .runfile import add_config_option, apply_config
+from .text import note, note_modes, significant
 
 __all__ = [
     "OneLineErrorParser",
@@ -38,12 +40,18 @@ __all__ = [
     "add_impact_options",
     "add_mesh_option",
     "add_output_options",
+    "add_output_step_option",
     "apply_config",
     "build_model",
+    "check_output_step",
     "frame_from_args",
     "impact_kwargs",
+    "note",
+    "note_modes",
+    "number_list",
     "print_json",
     "run_parameters",
+    "significant",
     "write_json",
     "write_text",
 ]
@@ -52,14 +60,17 @@ __all__ = [
 MESH_EXCLUSIVE = ("ei1", "ei2", "elements")
 
 
-def add_mesh_option(group: argparse._ArgumentGroup) -> None:
-    """--mesh FILE: a 1-D line mesh with cell data EI [N m^2] and rhoA [kg/m]."""
+def add_mesh_option(
+    group: argparse._ArgumentGroup, replaces: str = "replaces --ei1, --ei2 and --elements"
+) -> None:
+    """--mesh FILE: a 1-D line mesh with cell data EI [N m^2] and rhoA [kg/m]; ``replaces``
+    says which of the command's options the file takes the place of."""
     group.add_argument(
         "--mesh",
         default=None,
         metavar="FILE",
         help="frame from a mesh file meshio reads (.vtu, ...; line cells along x with cell "
-        "data EI [N m^2] and rhoA [kg/m]); replaces --ei1, --ei2 and --elements",
+        f"data EI [N m^2] and rhoA [kg/m]); {replaces} (default: the paper's stepped frame)",
     )
 
 
@@ -152,11 +163,15 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         "--zeta",
         type=float,
         default=None,
-        help="ball/string damping ratio, 0..1 (default 0.0592, clamped COR 0.83)",
+        metavar="ZETA",
+        help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
     )
     s = parser.add_argument_group("solver")
     s.add_argument(
-        "--solver", default="exact", choices=sorted(SOLVERS), help="integrator (default exact)"
+        "--solver",
+        default="exact",
+        choices=sorted(SOLVERS),
+        help="integrator: exact (closed-form modal solution), cvode or bdf (default exact)",
     )
     s.add_argument(
         "--separation",
@@ -169,14 +184,15 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         "--basis",
         default="modal",
         choices=BASES,
-        help="frame coordinates for the BDF solvers (default modal)",
+        help="frame coordinates for the BDF solvers; exact needs modal (default modal)",
     )
     s.add_argument(
         "--modes",
         type=int,
         default=DEFAULT_MODES,
         metavar="N",
-        help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES})",
+        help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES}; "
+        "a mesh of n elements has 2n, all kept when fewer)",
     )
     s.add_argument(
         "--t-max",
@@ -187,11 +203,41 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         "contact time)",
     )
     s.add_argument(
-        "--rtol", type=float, default=1e-10, help="relative tolerance of cvode/bdf (default 1e-10)"
+        "--rtol",
+        type=float,
+        default=1e-10,
+        help="relative tolerance of cvode/bdf [-] (default 1e-10)",
     )
     s.add_argument(
-        "--atol", type=float, default=1e-12, help="absolute tolerance of cvode/bdf (default 1e-12)"
+        "--atol",
+        type=float,
+        default=1e-12,
+        help="absolute tolerance of cvode/bdf, in the state's units (default 1e-12)",
     )
+
+
+#: Default spacing of the output times of an impact's histories [s].
+DEFAULT_OUTPUT_STEP = 1e-5
+
+
+def add_output_step_option(group: argparse._ArgumentGroup) -> None:
+    """--output-step S: spacing of the simulation's output times [s] (simulate, export-vtk,
+    animate); check it with :func:`check_output_step`."""
+    group.add_argument(
+        "--output-step",
+        type=float,
+        default=DEFAULT_OUTPUT_STEP,
+        metavar="S",
+        help="spacing of the simulation's output times [s], > 0 (default 1e-5); the end of "
+        "contact is always the last output time",
+    )
+
+
+def check_output_step(value: float) -> float:
+    """``value`` if it is a finite number > 0, else :class:`InputError`."""
+    if not 0 < value < math.inf:  # also catches NaN
+        raise InputError(f"output_step = {value!r} s is not allowed: must be a finite number > 0")
+    return value
 
 
 def build_model(args: argparse.Namespace) -> FrameModel:
@@ -242,13 +288,17 @@ class OneLineErrorParser(argparse.ArgumentParser):
 
 
 # -- outputs ---------------------------------------------------------------------------------------
-def add_output_options(parser: argparse.ArgumentParser, default: str | None = None) -> None:
-    """``--out PATH`` (``default``: None means the command writes no file unless asked) and
-    ``--overwrite``. Relative paths are relative to the working directory."""
+def add_output_options(
+    parser: argparse.ArgumentParser, default: str | None = None, what: str = "output file"
+) -> argparse._ArgumentGroup:
+    """``--out FILE`` (``default``: None means the command writes no file unless asked) and
+    ``--overwrite``; ``what`` starts the help text and must say it is a file. Relative paths are
+    relative to the working directory. Returns the group (for more output options)."""
     g = parser.add_argument_group("output")
-    where = f"default {default}" if default else "default: print only"
-    g.add_argument("--out", default=default, metavar="PATH", help=f"output file ({where})")
+    where = f"default {default}" if default else "default: none, print only"
+    g.add_argument("--out", default=default, metavar="FILE", help=f"{what} ({where})")
     g.add_argument("--overwrite", action="store_true", help="replace the output file if it exists")
+    return g
 
 
 def run_parameters(args: argparse.Namespace) -> dict[str, Any]:

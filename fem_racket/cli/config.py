@@ -22,8 +22,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("config", help="print an example run file (TOML) or check one")
     what = p.add_mutually_exclusive_group(required=True)
     what.add_argument("--example", action="store_true", help="print an annotated example")
-    what.add_argument("--check", metavar="TOML", help="check a run file and print its settings")
-    add_output_options(p)
+    what.add_argument(
+        "--check", metavar="TOML", help="check a run file and print its settings (no default)"
+    )
+    add_output_options(p, what="output file for the --example run file, TOML")
     p.set_defaults(func=run)
 
 

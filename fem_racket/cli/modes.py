@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from ..modal import mode_nodes
-from .common import add_config_option, add_frame_options, build_model, print_json
+from .common import add_config_option, add_frame_options, build_model, note, print_json
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -17,7 +17,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=int,
         default=4,
         metavar="N",
-        help="number of flexible modes to report (default 4)",
+        help="number of flexible modes to report (default 4; a mesh of n elements has 2n)",
     )
     p.add_argument("--json", action="store_true", help="print a JSON object")
     add_config_option(p)
@@ -32,6 +32,13 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
     model = build_model(args)
     fm = model.modes(args.count)
+    if fm.omega.size < args.count:
+        n, shown = model.mesh.n_elements, fm.omega.size
+        note(
+            args,
+            f"count = {args.count}: the {n}-element mesh has {shown} flexible modes; "
+            f"showing {shown}",
+        )
     props = fm.props
     nodes = [mode_nodes(model.fe, fm.shapes[:, k]).tolist() for k in range(fm.omega.size)]
     data = {

@@ -6,10 +6,18 @@ import argparse
 from pathlib import Path
 
 from ..model import DEFAULT_MODES
+from ..params import DEFAULT_BALL_MASS
 from ..refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
 from ..system import SEPARATION_EVENTS
 from ..validation import InputError
-from .common import add_config_option, add_mesh_option, frame_from_args, print_json, run_parameters
+from .common import (
+    add_config_option,
+    add_mesh_option,
+    frame_from_args,
+    number_list,
+    print_json,
+    run_parameters,
+)
 
 FAMILY_CHOICES = (*FAMILIES, "both")
 
@@ -21,47 +29,102 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="mesh-refinement study: frequencies vs the exact beam, COR and contact time",
     )
     g = p.add_argument_group("frame")
-    g.add_argument("--ei1", type=float, default=146.0, metavar="N_M2", help="EI1 [N m^2]")
-    g.add_argument("--ei2", type=float, default=None, metavar="N_M2", help="EI2 [N m^2]")
-    add_mesh_option(g)
+    g.add_argument(
+        "--ei1",
+        type=float,
+        default=146.0,
+        metavar="N_M2",
+        help="grip-side bending rigidity EI1 [N m^2] (default 146, the paper's)",
+    )
+    g.add_argument(
+        "--ei2",
+        type=float,
+        default=None,
+        metavar="N_M2",
+        help="top-side bending rigidity EI2 [N m^2] (default 0.88 * EI1)",
+    )
+    add_mesh_option(
+        g,
+        replaces="replaces --ei1 and --ei2; its piecewise-uniform EI and rhoA profile is "
+        "re-meshed with each of --elements",
+    )
     r = p.add_argument_group("refinement")
     r.add_argument(
         "--elements",
-        type=int,
-        nargs="+",
+        **number_list(int),
         default=list(DEFAULT_ELEMENTS),
         metavar="N",
-        help="element counts (default " + " ".join(map(str, DEFAULT_ELEMENTS)) + ")",
+        help="element counts of the meshes compared, space- or comma-separated (default "
+        + ",".join(map(str, DEFAULT_ELEMENTS))
+        + ")",
     )
     r.add_argument(
         "--family",
         default="both",
         choices=FAMILY_CHOICES,
-        help="uniform cells per segment, cells graded towards steps and ends, or both (default)",
+        help="uniform cells per segment, cells graded towards steps and ends, or both "
+        "(default both)",
     )
     r.add_argument(
         "--grading",
         type=float,
         default=DEFAULT_GRADING,
-        help=f"largest / smallest cell of a graded segment (default {DEFAULT_GRADING:g})",
+        help=f"largest / smallest cell of a graded segment [-], >= 1 (default {DEFAULT_GRADING:g})",
     )
     r.add_argument(
-        "--count", type=int, default=4, metavar="N", help="flexible frequencies (default 4)"
+        "--count",
+        type=int,
+        default=4,
+        metavar="N",
+        help="flexible frequencies compared (default 4)",
     )
     i = p.add_argument_group("impact")
     i.add_argument(
         "--positions",
-        type=float,
-        nargs="+",
+        "--position",
+        dest="positions",
+        **number_list(float),
         default=list(DEFAULT_POSITIONS),
         metavar="X_OVER_L",
-        help="impact points x/L (default " + " ".join(map(str, DEFAULT_POSITIONS)) + ")",
+        help="impact points x/L from the grip end, space- or comma-separated (default "
+        + ",".join(map(str, DEFAULT_POSITIONS))
+        + ")",
     )
-    i.add_argument("--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s]")
-    i.add_argument("--ball-mass", type=float, default=None, metavar="KG", help="m_B [kg]")
-    i.add_argument("--kcb", type=float, default=None, metavar="N_M", help="K_CB [N/m]")
-    i.add_argument("--zeta", type=float, default=None, help="ball/string damping ratio")
-    i.add_argument("--separation", default="displacement", choices=SEPARATION_EVENTS)
+    i.add_argument(
+        "--speed",
+        type=float,
+        default=20.0,
+        metavar="M_S",
+        help="incident ball speed V_B0 [m/s] (default 20)",
+    )
+    i.add_argument(
+        "--ball-mass",
+        type=float,
+        default=None,
+        metavar="KG",
+        help=f"ball mass m_B [kg] (default {DEFAULT_BALL_MASS}; not stated in the paper)",
+    )
+    i.add_argument(
+        "--kcb",
+        type=float,
+        default=None,
+        metavar="N_M",
+        help="ball/string stiffness K_CB [N/m] (default: from the speed)",
+    )
+    i.add_argument(
+        "--zeta",
+        type=float,
+        default=None,
+        metavar="ZETA",
+        help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
+    )
+    i.add_argument(
+        "--separation",
+        default="displacement",
+        choices=SEPARATION_EVENTS,
+        help="end of contact: spring deflection or force back to zero "
+        "(default displacement, the paper's)",
+    )
     i.add_argument(
         "--impact-modes",
         type=int,
@@ -74,13 +137,16 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     o = p.add_argument_group("output")
     o.add_argument(
-        "--csv", default="output/refine.csv", metavar="FILE", help="CSV table (default %(default)s)"
+        "--csv",
+        default="output/refine.csv",
+        metavar="FILE",
+        help="output file: CSV table, provenance in FILE.json beside it (default %(default)s)",
     )
     o.add_argument(
         "--plot",
         default="output/refine.png",
         metavar="FILE",
-        help="log-log convergence plot (default %(default)s)",
+        help="output file: log-log convergence plot, PNG (default %(default)s)",
     )
     o.add_argument("--no-files", action="store_true", help="write neither the CSV nor the plot")
     o.add_argument("--overwrite", action="store_true", help="replace existing output files")

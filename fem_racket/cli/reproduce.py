@@ -23,16 +23,18 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--out",
         default=DEFAULT_OUT,
         metavar="DIR",
-        help=f"folder for figures and data (default {DEFAULT_OUT}/)",
+        help=f"output folder for figures and data (default {DEFAULT_OUT}/)",
     )
     p.add_argument(
         "--report",
         default=DEFAULT_REPORT,
         metavar="FILE",
-        help=f"Markdown report to write (default {DEFAULT_REPORT} in the current folder)",
+        help=f"output file: the Markdown report (default {DEFAULT_REPORT} in the current folder)",
     )
     p.add_argument("--quick", action="store_true", help="coarse grids (seconds; for tests)")
-    p.add_argument("--overwrite", action="store_true", help="replace existing output files")
+    p.add_argument(
+        "--overwrite", action="store_true", help="replace existing output files and folder"
+    )
     # The paper's parameters are fixed: only [reproduce] (and output.overwrite) apply.
     add_config_option(p, private=("out",))
     p.set_defaults(func=run)

@@ -59,7 +59,8 @@ def add_config_option(
         "--config",
         metavar="TOML",
         default=None,
-        help="run file (see `fem-racket config --example`); command-line options override it",
+        help="run file (see `fem-racket config --example`); command-line options override it "
+        "(default: none)",
     )
     private = frozenset(private)
     parser.config_own = frozenset(own) | private  # type: ignore[attr-defined]
@@ -136,7 +137,9 @@ def _coerce(action: argparse.Action, value: Any, where: str) -> Any:
     if many:
         if not isinstance(value, list):
             raise InputError(f"{where} = {value!r} is not allowed: must be an array ({opt})")
-        return [_coerce_one(action, v, where) for v in value]
+        items = [_coerce_one(action, v, where) for v in value]
+        # A list option whose type takes comma lists ("5,10") gives a list per item: flatten.
+        return [x for v in items for x in (v if isinstance(v, list) else [v])]
     return _coerce_one(action, value, where)
 
 

@@ -10,14 +10,18 @@ import time
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ..grid import PARAMETERS, as_values
 from ..impact import BASES
 from ..integrators import SOLVERS
+from ..mesh import FrameMesh, frame_mesh
 from ..model import DEFAULT_MODES
+from ..params import Frame, standard_frame
 from ..sweep import sweep
 from ..system import SEPARATION_EVENTS
 from ..validation import InputError
-from .common import add_config_option, add_mesh_option, print_json, run_parameters
+from .common import add_config_option, add_mesh_option, note, print_json, run_parameters
 
 #: Where the result goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
@@ -26,9 +30,9 @@ _HELP = {
     "position": "impact point x/L from the grip end (default 0.75)",
     "speed": "incident ball speed [m/s] (default 20)",
     "ei1": "grip-side EI1 [N m^2], EI2 = 0.88 EI1 unless --ei2 (default 146)",
-    "ei_factor": "factor on every segment's EI (default 1)",
+    "ei_factor": "factor on every segment's EI [-] (default 1)",
     "ball_mass": "ball mass [kg] (default 0.057)",
-    "zeta": "ball/string damping ratio (default 0.0592: clamped COR 0.83)",
+    "zeta": "ball/string damping ratio [-], 0..1 (default 0.0592: clamped COR 0.83)",
     "kcb": "ball/string stiffness K_CB [N/m] (default: from the speed)",
     "elements": "number of beam elements (default 20)",
 }
@@ -65,28 +69,59 @@ def register(sub: argparse._SubParsersAction) -> None:
     for name, text in _HELP.items():
         g.add_argument("--" + name.replace("_", "-"), dest=name, metavar="VALUES", help=text)
     g.add_argument(
-        "--ei2", type=float, metavar="N_M2", help="fixed top-side EI2 [N m^2] (default 0.88 EI1)"
+        "--ei2",
+        type=float,
+        metavar="N_M2",
+        help="fixed top-side EI2 [N m^2] (default 0.88 EI1)",
     )
-    add_mesh_option(g)
+    add_mesh_option(g, replaces="replaces --ei1, --ei2 and --elements; scale it with --ei-factor")
     s = p.add_argument_group("solver")
-    s.add_argument("--solver", default="exact", choices=sorted(SOLVERS), help="(default exact)")
+    s.add_argument(
+        "--solver",
+        default="exact",
+        choices=sorted(SOLVERS),
+        help="integrator: exact (closed-form modal solution), cvode or bdf (default exact)",
+    )
     s.add_argument(
         "--separation",
         default="displacement",
         choices=SEPARATION_EVENTS,
-        help="end of contact (default displacement, the paper's)",
+        help="end of contact: spring deflection or force back to zero "
+        "(default displacement, the paper's)",
     )
-    s.add_argument("--basis", default="modal", choices=BASES, help="for the BDF solvers")
-    s.add_argument("--modes", type=int, default=DEFAULT_MODES, metavar="N", help="flexible modes")
-    s.add_argument("--rtol", type=float, default=1e-10, help="relative tolerance of cvode/bdf")
-    s.add_argument("--atol", type=float, default=1e-12, help="absolute tolerance of cvode/bdf")
+    s.add_argument(
+        "--basis",
+        default="modal",
+        choices=BASES,
+        help="frame coordinates for the BDF solvers; exact needs modal (default modal)",
+    )
+    s.add_argument(
+        "--modes",
+        type=int,
+        default=DEFAULT_MODES,
+        metavar="N",
+        help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES}; "
+        "a mesh of n elements has 2n, all kept when fewer)",
+    )
+    s.add_argument(
+        "--rtol",
+        type=float,
+        default=1e-10,
+        help="relative tolerance of cvode/bdf [-] (default 1e-10)",
+    )
+    s.add_argument(
+        "--atol",
+        type=float,
+        default=1e-12,
+        help="absolute tolerance of cvode/bdf, in the state's units (default 1e-12)",
+    )
     r = p.add_argument_group("execution and output")
     r.add_argument(
         "--out",
         type=Path,
         default=DEFAULT_OUTPUT,
-        metavar="PATH",
-        help=f"netCDF result file (default {DEFAULT_OUTPUT})",
+        metavar="FILE",
+        help=f"output file: the netCDF result (default {DEFAULT_OUTPUT})",
     )
     r.add_argument("--overwrite", action="store_true", help="replace an existing result file")
     r.add_argument(
@@ -95,16 +130,25 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="discard the checkpoint of an interrupted run instead of resuming it",
     )
     where = r.add_mutually_exclusive_group()
-    where.add_argument("--serial", action="store_true", help="run in this process only")
+    where.add_argument(
+        "--serial", action="store_true", help="run in this process only (default: a process pool)"
+    )
     where.add_argument(
         "--workers", type=int, metavar="N", help="local worker processes (default: all cores)"
     )
     where.add_argument(
         "--scheduler",
         metavar="tcp://HOST:PORT",
-        help="run on a Dask distributed scheduler (workers need fem_racket installed)",
+        help="run on a Dask distributed scheduler (workers need fem_racket installed) "
+        "(default: none, local processes)",
     )
-    r.add_argument("--chunk-size", type=int, metavar="N", help="impacts per task and checkpoint")
+    r.add_argument(
+        "--chunk-size",
+        type=int,
+        metavar="N",
+        help="impacts per task and checkpoint file (default: about a quarter of each worker's "
+        "share, at most 128 for exact and 4 for cvode/bdf)",
+    )
     r.add_argument("--quiet", action="store_true", help="no progress bar")
     r.add_argument("--json", action="store_true", help="print a JSON summary")
     add_config_option(
@@ -114,6 +158,25 @@ def register(sub: argparse._SubParsersAction) -> None:
         convert={name: _grid_value for name in PARAMETERS},
     )
     p.set_defaults(func=run)
+
+
+def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> None:
+    """Say so when a chosen --modes exceeds the flexible modes of the coarsest mesh swept."""
+    chosen = "modes" in getattr(args, "explicit_options", ()) or args.modes != DEFAULT_MODES
+    if args.basis != "modal" or not chosen:
+        return
+    if isinstance(frame, FrameMesh):
+        cells = frame.n_elements
+    else:
+        counts = as_values("elements", args.elements)
+        coarsest = 20 if counts is None else int(np.min(counts))
+        cells = frame_mesh(frame or standard_frame(), coarsest).n_elements
+    if args.modes > 2 * cells:  # 2 DOFs per node, less the 2 rigid-body modes
+        note(
+            args,
+            f"modes = {args.modes}: the {cells}-element mesh has {2 * cells} flexible modes; "
+            f"using all {2 * cells}",
+        )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -152,6 +215,7 @@ def run(args: argparse.Namespace) -> int:
         parameters=run_parameters(args),
     )
     wall = time.perf_counter() - start
+    _note_modes(args, frame)
     n = int(ds.cor.size)
     summary = {
         "output": str(args.out),

@@ -10,8 +10,11 @@ from ..validation import InputError
 from .common import (
     add_config_option,
     add_impact_options,
+    add_output_step_option,
     build_model,
+    check_output_step,
     impact_kwargs,
+    note_modes,
     run_parameters,
 )
 
@@ -45,18 +48,12 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
         + ("every output time" if frames is None else str(frames))
         + ")",
     )
-    g.add_argument(
-        "--output-step",
-        type=float,
-        default=1e-5,
-        metavar="S",
-        help="spacing of the simulation's output times [s] (default 1e-5)",
-    )
+    add_output_step_option(g)
     g.add_argument(
         "--scale",
         type=float,
         default=scale,
-        help=f"deflection exaggeration of the geometry, > 0 (default {scale:g})",
+        help=f"deflection exaggeration of the geometry [-], > 0 (default {scale:g})",
     )
     g.add_argument(
         "--field",
@@ -65,7 +62,9 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
         help="frame colouring: deflection, slope, velocity, curvature or moment "
         "(default deflection)",
     )
-    p.add_argument("--overwrite", action="store_true", help="replace an existing output")
+    p.add_argument(
+        "--overwrite", action="store_true", help="replace an existing output file or folder"
+    )
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -95,7 +94,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     _add_common(a, scale=10.0, frames=100)
     a.add_argument(
-        "--fps", type=float, default=25.0, help="frames per second, (0, 100] (default 25)"
+        "--fps", type=float, default=25.0, help="frames per second [1/s], (0, 100] (default 25)"
     )
     a.add_argument(
         "--size",
@@ -109,11 +108,11 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _simulate(args: argparse.Namespace):
-    if not args.output_step > 0:  # also catches NaN
-        raise InputError(
-            f"output_step = {args.output_step!r} s is not allowed: must be a finite number > 0"
-        )
-    return simulate(build_model(args), output_step=args.output_step, **impact_kwargs(args))
+    check_output_step(args.output_step)
+    model = build_model(args)
+    result = simulate(model, output_step=args.output_step, **impact_kwargs(args))
+    note_modes(args, model)
+    return result
 
 
 def _check_early(args: argparse.Namespace) -> None:
