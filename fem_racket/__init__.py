@@ -14,7 +14,8 @@ from .forms import FrameFE, assemble
 from .hermite import assemble_closed_form
 from .impact import ImpactResult, simulate
 from .integrators import SOLVERS, NoSeparationError
-from .mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh, read_mesh, write_mesh
+from .mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
+from .mesh_io import read_mesh, write_mesh
 from .modal import FreeModes, MassProperties, free_modes, mass_properties, mode_nodes
 from .model import FrameModel
 from .params import (

@@ -278,7 +278,7 @@ class RunConfig:
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None
         (the standard racket with ``ei1_n_m2``/``ei2_n_m2``/preset applied)."""
-        from .mesh import read_mesh
+        from .mesh_io import read_mesh
         from .params import Frame, standard_frame
 
         d = self.defaults()

@@ -4,6 +4,7 @@ import json
 
 import pytest
 
+from fem_racket import simulate
 from fem_racket.cli import main
 
 
@@ -30,7 +31,10 @@ def test_simulate_json_contract(capsys):
         assert key in data
     assert data["solver"] == "exact"
     assert data["elements"] == 20
-    assert 0.3 < data["cor"] < 0.5
+    ref = simulate(position=0.75, speed=20.0)  # the library call the command wraps
+    assert data["cor"] == ref.cor
+    assert data["contact_time_s"] == ref.contact_time
+    assert data["peak_force_n"] == ref.peak_force
     assert data["rebound_speed_m_s"] == pytest.approx(data["cor"] * 20.0)
 
 

@@ -24,7 +24,8 @@ from typing import Any
 
 from ..impact import BASES
 from ..integrators import SOLVERS
-from ..mesh import FrameMesh, read_mesh
+from ..mesh import FrameMesh
+from ..mesh_io import read_mesh
 from ..model import DEFAULT_MODES, FrameModel
 from ..params import Frame, standard_frame
 from ..system import SEPARATION_EVENTS
