@@ -27,7 +27,7 @@ from ..integrators import SOLVERS
 from ..mesh import FrameMesh
 from ..mesh_io import read_mesh
 from ..model import DEFAULT_MODES, FrameModel
-from ..params import Frame, standard_frame
+from ..params import PAPER_EI1, Frame, standard_frame
 from ..system import SEPARATION_EVENTS
 from ..validation import InputError
 from .lists import number_list
@@ -37,10 +37,12 @@ from .text import note, note_modes, significant
 __all__ = [
     "OneLineErrorParser",
     "add_config_option",
+    "add_ei_options",
     "add_frame_options",
     "add_impact_options",
     "add_mesh_option",
     "add_output_options",
+    "add_solver_options",
     "add_output_step_option",
     "apply_config",
     "build_model",
@@ -75,23 +77,28 @@ def add_mesh_option(
     )
 
 
-def add_frame_options(parser: argparse.ArgumentParser) -> None:
-    """Frame options: --ei1, --ei2, --elements, --mesh."""
-    g = parser.add_argument_group("frame")
-    g.add_argument(
+def add_ei_options(group: argparse._ArgumentGroup) -> None:
+    """--ei1 and --ei2 of the paper's stepped frame (EI2 = 0.88 EI1 unless given)."""
+    group.add_argument(
         "--ei1",
         type=float,
-        default=146.0,
+        default=PAPER_EI1,
         metavar="N_M2",
-        help="grip-side bending rigidity EI1 [N m^2] (default 146, the paper's)",
+        help=f"grip-side bending rigidity EI1 [N m^2] (default {PAPER_EI1:g}, the paper's)",
     )
-    g.add_argument(
+    group.add_argument(
         "--ei2",
         type=float,
         default=None,
         metavar="N_M2",
         help="top-side bending rigidity EI2 [N m^2] (default 0.88 * EI1)",
     )
+
+
+def add_frame_options(parser: argparse.ArgumentParser) -> None:
+    """Frame options: --ei1, --ei2, --elements, --mesh."""
+    g = parser.add_argument_group("frame")
+    add_ei_options(g)
     g.add_argument(
         "--elements",
         type=int,
@@ -167,6 +174,11 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         metavar="ZETA",
         help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
     )
+    add_solver_options(parser)
+
+
+def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -> None:
+    """--solver, --separation, --basis, --modes, --rtol, --atol and (optionally) --t-max."""
     s = parser.add_argument_group("solver")
     s.add_argument(
         "--solver",
@@ -195,14 +207,15 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES}; "
         "a mesh of n elements has 2n, all kept when fewer)",
     )
-    s.add_argument(
-        "--t-max",
-        type=float,
-        default=None,
-        metavar="S",
-        help="give up if the ball has not separated by then [s] (default 20 x the eq 11 "
-        "contact time)",
-    )
+    if t_max:
+        s.add_argument(
+            "--t-max",
+            type=float,
+            default=None,
+            metavar="S",
+            help="give up if the ball has not separated by then [s] (default 20 x the eq 11 "
+            "contact time)",
+        )
     s.add_argument(
         "--rtol",
         type=float,

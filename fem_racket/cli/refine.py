@@ -12,6 +12,7 @@ from ..system import SEPARATION_EVENTS
 from ..validation import InputError
 from .common import (
     add_config_option,
+    add_ei_options,
     add_mesh_option,
     frame_from_args,
     number_list,
@@ -29,20 +30,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="mesh-refinement study: frequencies vs the exact beam, COR and contact time",
     )
     g = p.add_argument_group("frame")
-    g.add_argument(
-        "--ei1",
-        type=float,
-        default=146.0,
-        metavar="N_M2",
-        help="grip-side bending rigidity EI1 [N m^2] (default 146, the paper's)",
-    )
-    g.add_argument(
-        "--ei2",
-        type=float,
-        default=None,
-        metavar="N_M2",
-        help="top-side bending rigidity EI2 [N m^2] (default 0.88 * EI1)",
-    )
+    add_ei_options(g)
     add_mesh_option(
         g,
         replaces="replaces --ei1 and --ei2; its piecewise-uniform EI and rhoA profile is "

@@ -13,15 +13,19 @@ from typing import Any
 import numpy as np
 
 from ..grid import PARAMETERS, as_values
-from ..impact import BASES
-from ..integrators import SOLVERS
 from ..mesh import FrameMesh, frame_mesh
 from ..model import DEFAULT_MODES
 from ..params import Frame, standard_frame
 from ..sweep import sweep
-from ..system import SEPARATION_EVENTS
 from ..validation import InputError
-from .common import add_config_option, add_mesh_option, note, print_json, run_parameters
+from .common import (
+    add_config_option,
+    add_mesh_option,
+    add_solver_options,
+    note,
+    print_json,
+    run_parameters,
+)
 
 #: Where the result goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
@@ -75,46 +79,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="fixed top-side EI2 [N m^2] (default 0.88 EI1)",
     )
     add_mesh_option(g, replaces="replaces --ei1, --ei2 and --elements; scale it with --ei-factor")
-    s = p.add_argument_group("solver")
-    s.add_argument(
-        "--solver",
-        default="exact",
-        choices=sorted(SOLVERS),
-        help="integrator: exact (closed-form modal solution), cvode or bdf (default exact)",
-    )
-    s.add_argument(
-        "--separation",
-        default="displacement",
-        choices=SEPARATION_EVENTS,
-        help="end of contact: spring deflection or force back to zero "
-        "(default displacement, the paper's)",
-    )
-    s.add_argument(
-        "--basis",
-        default="modal",
-        choices=BASES,
-        help="frame coordinates for the BDF solvers; exact needs modal (default modal)",
-    )
-    s.add_argument(
-        "--modes",
-        type=int,
-        default=DEFAULT_MODES,
-        metavar="N",
-        help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES}; "
-        "a mesh of n elements has 2n, all kept when fewer)",
-    )
-    s.add_argument(
-        "--rtol",
-        type=float,
-        default=1e-10,
-        help="relative tolerance of cvode/bdf [-] (default 1e-10)",
-    )
-    s.add_argument(
-        "--atol",
-        type=float,
-        default=1e-12,
-        help="absolute tolerance of cvode/bdf, in the state's units (default 1e-12)",
-    )
+    add_solver_options(p, t_max=False)
     r = p.add_argument_group("execution and output")
     r.add_argument(
         "--out",
