@@ -4,42 +4,46 @@ Reproduces and extends Kawazoe & Kanda (1997), "Analysis of impact phenomena in 
 ball-racket system", JSME Int. J. C 40(1).
 """
 
-from importlib.metadata import PackageNotFoundError, version
-
-from .animate import render_animation
-from .config import RunConfig, example_config, load_config, parse_config
-from .coupled import CoupledModes, coupled_modes
-from .exact import free_free_frequencies
-from .forms import FrameFE, assemble
-from .hermite import assemble_closed_form
-from .impact import ImpactResult, simulate
-from .integrators import SOLVERS, NoSeparationError
-from .mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
-from .mesh_io import read_mesh, write_mesh
-from .modal import FreeModes, MassProperties, free_modes, mass_properties, mode_nodes
-from .model import FrameModel
-from .params import (
+from fem_racket.contact.linear import (
     Ball,
-    Frame,
-    Impact,
     LinearContact,
-    Segment,
     cor_from_zeta,
     kcb_from_speed,
-    rigid_frame,
-    standard_frame,
     zeta_from_cor,
 )
-from .refine import RefinementStudy, refinement_study
-from .rigid import ClampedImpact, RigidImpact, clamped_impact, rigid_impact, rigid_impact_at
-from .sweep import sweep
-from .validation import InputError
-from .vtk import ImpactSeries, impact_series, write_vtk_series
-
-try:
-    __version__ = version("fem_racket")
-except PackageNotFoundError:  # running from a source tree without installation
-    __version__ = "0.0.0"
+from fem_racket.frame.continuous import free_free_frequencies
+from fem_racket.frame.forms import FrameFE, assemble
+from fem_racket.frame.hermite import assemble_closed_form
+from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
+from fem_racket.frame.modal import (
+    FreeModes,
+    MassProperties,
+    free_modes,
+    mass_properties,
+    mode_nodes,
+)
+from fem_racket.frame.model import FrameModel
+from fem_racket.frame.segments import Frame, Segment, rigid_frame, standard_frame
+from fem_racket.impact.coupled import CoupledModes, coupled_modes
+from fem_racket.impact.integrators import SOLVERS, NoSeparationError
+from fem_racket.impact.rigid import (
+    ClampedImpact,
+    RigidImpact,
+    clamped_impact,
+    rigid_impact,
+    rigid_impact_at,
+)
+from fem_racket.impact.setup import Impact
+from fem_racket.impact.simulate import ImpactResult, simulate
+from fem_racket.io.animate import render_animation
+from fem_racket.io.config import RunConfig, example_config, load_config, parse_config
+from fem_racket.io.mesh_files import read_mesh, write_mesh
+from fem_racket.io.vtk import write_vtk_series
+from fem_racket.io.vtk_series import ImpactSeries, impact_series
+from fem_racket.studies.refine import RefinementStudy, refinement_study
+from fem_racket.studies.sweep import sweep
+from fem_racket.validation import InputError
+from fem_racket.version import __version__
 
 __all__ = [
     "SOLVERS",

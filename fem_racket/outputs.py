@@ -35,7 +35,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from .validation import InputError
+from fem_racket.validation import InputError
 
 __all__ = [
     "add_png_provenance",
@@ -167,7 +167,7 @@ def atomic_folder(
 
 def provenance(parameters: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """Metadata for an output file: package version, UTC date, platform and ``parameters``."""
-    from . import __version__
+    from fem_racket.version import __version__
 
     out: dict[str, Any] = {
         "software": "fem_racket",

@@ -35,7 +35,7 @@ QUICK = {
 
 
 def _cases(grid: dict) -> list[tuple[float, ...]]:
-    from fem_racket.grid import parse_values
+    from fem_racket.studies.grid import parse_values
 
     p, v, e = (np.atleast_1d(parse_values(k, grid[k])) for k in ("position", "speed", "ei1"))
     return [(a, b, c) for a in p for b in v for c in e]
@@ -69,7 +69,7 @@ def reused_loop(cases: list, solver: str) -> float:
 
 def sweep_time(grid: dict, solver: str, backend: str) -> float:
     """Wall time [s] of fem_racket.sweep over ``grid``, nothing cached beforehand."""
-    from fem_racket.cases import clear_caches
+    from fem_racket.studies.cases import clear_caches
 
     clear_caches()
     t0 = time.perf_counter()

@@ -18,8 +18,8 @@ import time
 from pathlib import Path
 
 from fem_racket import FrameModel, frame_mesh, simulate, standard_frame
-from fem_racket.refine import DEFAULT_ELEMENTS, FAMILIES, refinement_study
-from fem_racket.refine_output import format_study, plot_studies, write_csv
+from fem_racket.io.refine_files import format_study, plot_studies, write_csv
+from fem_racket.studies.refine import DEFAULT_ELEMENTS, FAMILIES, refinement_study
 
 QUICK_ELEMENTS = (5, 10, 20)
 TIMING_ELEMENTS = (20, 80, 320, 1280)

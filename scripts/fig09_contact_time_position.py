@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from fem_racket.figures.script import figure_main
+from fem_racket.paper.figures.script import figure_main
 
 
 def main(argv: Sequence[str] | None = None) -> list[Path]:

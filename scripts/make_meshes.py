@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from fem_racket import FrameMesh, frame_mesh, read_mesh, standard_frame, write_mesh
-from fem_racket.params import Frame, Segment
+from fem_racket.frame.segments import Frame, Segment
 
 MESH_DIR = Path(__file__).resolve().parent.parent / "meshes"
 

@@ -15,10 +15,10 @@ import os
 import sys
 from collections.abc import Sequence
 
-from .. import __version__
-from ..validation import InputError
-from . import config, modes, refine, reproduce, simulate, sweep, vtk
-from .common import OneLineErrorParser, apply_config
+from fem_racket.cli import config, modes, refine, reproduce, simulate, sweep, vtk
+from fem_racket.cli.common import OneLineErrorParser, apply_config
+from fem_racket.validation import InputError
+from fem_racket.version import __version__
 
 __all__ = ["main"]
 

@@ -3,7 +3,7 @@
 Conventions every command follows (so a new command plugs in with a few lines):
 
 - ``add_config_option(p)`` gives it ``--config run.toml`` (a TOML run file, see
-  :mod:`fem_racket.config`); :func:`apply_config`, called once by ``cli.main``, fills the options
+  :mod:`fem_racket.io.config`); :func:`apply_config`, called once by ``cli.main``, fills the options
   the command line did not give from the file. Precedence: command line > the command's own
   table (``[sweep]``, ``[vtk]`` ...) > the core tables (``[frame]``, ``[impact]`` ...) > built-in
   defaults. The command's table takes its long options as keys (``--ei1-values`` ->
@@ -16,23 +16,27 @@ Conventions every command follows (so a new command plugs in with a few lines):
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import sys
-from pathlib import Path
 from typing import Any
 
-from ..impact import BASES
-from ..integrators import SOLVERS
-from ..mesh import FrameMesh
-from ..mesh_io import read_mesh
-from ..model import DEFAULT_MODES, FrameModel
-from ..params import PAPER_EI1, Frame, standard_frame
-from ..system import SEPARATION_EVENTS
-from ..validation import InputError
-from .lists import number_list
-from .runfile import add_config_option, apply_config
-from .text import note, note_modes, significant
+from fem_racket.cli.lists import number_list
+from fem_racket.cli.output import (
+    add_output_options,
+    print_json,
+    run_parameters,
+    write_json,
+    write_text,
+)
+from fem_racket.cli.runfile import add_config_option, apply_config
+from fem_racket.cli.text import note, note_modes, significant
+from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
+from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.simulate import BASES
+from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.io.mesh_files import read_mesh
+from fem_racket.validation import InputError
 
 __all__ = [
     "OneLineErrorParser",
@@ -277,82 +281,9 @@ def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     }
 
 
-def print_json(data: Any) -> None:
-    """Print ``data`` as JSON (NaN and inf become null)."""
-
-    def clean(v: Any) -> Any:
-        if isinstance(v, float) and not math.isfinite(v):
-            return None
-        if isinstance(v, dict):
-            return {k: clean(x) for k, x in v.items()}
-        if isinstance(v, (list, tuple)):
-            return [clean(x) for x in v]
-        return v
-
-    json.dump(clean(data), sys.stdout, indent=2)
-    sys.stdout.write("\n")
-
-
 class OneLineErrorParser(argparse.ArgumentParser):
     """An argparse parser whose usage errors are one line (no usage dump), exit code 2."""
 
     def error(self, message: str) -> None:  # type: ignore[override]
         """Print ``prog: error: message`` and exit 2."""
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
-
-
-# -- outputs ---------------------------------------------------------------------------------------
-def add_output_options(
-    parser: argparse.ArgumentParser, default: str | None = None, what: str = "output file"
-) -> argparse._ArgumentGroup:
-    """``--out FILE`` (``default``: None means the command writes no file unless asked) and
-    ``--overwrite``; ``what`` starts the help text and must say it is a file. Relative paths are
-    relative to the working directory. Returns the group (for more output options)."""
-    g = parser.add_argument_group("output")
-    where = f"default {default}" if default else "default: none, print only"
-    g.add_argument("--out", default=default, metavar="FILE", help=f"{what} ({where})")
-    g.add_argument("--overwrite", action="store_true", help="replace the output file if it exists")
-    return g
-
-
-def run_parameters(args: argparse.Namespace) -> dict[str, Any]:
-    """The parsed options as a JSON-ready dict for :func:`fem_racket.outputs.provenance`."""
-
-    def plain(v: Any) -> Any:
-        if v is None or isinstance(v, (bool, int, float, str)):
-            return v
-        if isinstance(v, Path):
-            return str(v)
-        if isinstance(v, (list, tuple)):
-            return [plain(x) for x in v]
-        if isinstance(v, (set, frozenset)):
-            return sorted(plain(x) for x in v)
-        if hasattr(v, "__dataclass_fields__"):
-            return {k: plain(getattr(v, k)) for k in v.__dataclass_fields__}
-        return repr(v)
-
-    return {k: plain(v) for k, v in sorted(vars(args).items()) if k != "func" and not callable(v)}
-
-
-def write_text(path: str | Path, text: str, *, overwrite: bool = False) -> Path:
-    """Write ``text`` to ``path`` atomically (refusing an existing file unless ``overwrite``)."""
-    from ..outputs import atomic_output
-
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        tmp.write_text(text, encoding="utf-8")
-    return Path(path)
-
-
-def write_json(path: str | Path, data: Any, *, overwrite: bool = False) -> Path:
-    """Write ``data`` as JSON to ``path`` atomically (NaN and inf become null)."""
-    return write_text(path, json.dumps(_clean(data), indent=2) + "\n", overwrite=overwrite)
-
-
-def _clean(v: Any) -> Any:
-    if isinstance(v, float) and not math.isfinite(v):
-        return None
-    if isinstance(v, dict):
-        return {k: _clean(x) for k, x in v.items()}
-    if isinstance(v, (list, tuple)):
-        return [_clean(x) for x in v]
-    return v

@@ -11,10 +11,11 @@ import argparse
 from pathlib import PurePath
 from typing import Any
 
-from ..config import COMMAND_TABLES, example_config, load_config, toml_value
-from ..validation import InputError
-from .common import add_output_options
-from .runfile import config_values, file_options
+from fem_racket.cli.common import add_output_options
+from fem_racket.cli.runfile import config_values, file_options
+from fem_racket.io.config import example_config, load_config, toml_value
+from fem_racket.io.config_keys import COMMAND_TABLES
+from fem_racket.validation import InputError
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -31,7 +32,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def _commands() -> dict[str, argparse.ArgumentParser]:
     """Sub-commands that take ``--config``: name -> parser."""
-    from . import build_parser
+    from fem_racket.cli import build_parser
 
     parser = build_parser()
     subs = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
@@ -102,8 +103,8 @@ def run(args: argparse.Namespace) -> int:
     if args.out:
         import json
 
-        from ..outputs import provenance
-        from .common import run_parameters, write_text
+        from fem_racket.cli.common import run_parameters, write_text
+        from fem_racket.outputs import provenance
 
         meta = json.dumps(provenance(run_parameters(args)), sort_keys=True)
         write_text(args.out, f"{text}\n# provenance: {meta}\n", overwrite=args.overwrite)

@@ -4,8 +4,14 @@ from __future__ import annotations
 
 import argparse
 
-from ..modal import mode_nodes
-from .common import add_config_option, add_frame_options, build_model, note, print_json
+from fem_racket.cli.common import (
+    add_config_option,
+    add_frame_options,
+    build_model,
+    note,
+    print_json,
+)
+from fem_racket.frame.modal import mode_nodes
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -26,7 +32,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the modal analysis."""
-    from ..validation import InputError
+    from fem_racket.validation import InputError
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")

@@ -5,12 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from ..model import DEFAULT_MODES
-from ..params import DEFAULT_BALL_MASS
-from ..refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
-from ..system import SEPARATION_EVENTS
-from ..validation import InputError
-from .common import (
+from fem_racket.cli.common import (
     add_config_option,
     add_ei_options,
     add_mesh_option,
@@ -19,6 +14,11 @@ from .common import (
     print_json,
     run_parameters,
 )
+from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
+from fem_racket.validation import InputError
 
 FAMILY_CHOICES = (*FAMILIES, "both")
 
@@ -145,9 +145,9 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study, print the table (or JSON), write the CSV and the plot."""
-    from ..outputs import check_output_path
-    from ..refine import refinement_study
-    from ..refine_output import csv_files, format_study, plot_studies, write_csv
+    from fem_racket.io.refine_files import csv_files, format_study, plot_studies, write_csv
+    from fem_racket.outputs import check_output_path
+    from fem_racket.studies.refine import refinement_study
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")

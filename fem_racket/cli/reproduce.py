@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import time
 
-from .common import add_config_option, run_parameters
+from fem_racket.cli.common import add_config_option, run_parameters
 
 DEFAULT_OUT = "output/paper"
 DEFAULT_REPORT = "REPRODUCTION.md"
@@ -42,7 +42,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the reproduction and print one line per figure and the verdict counts."""
-    from ..reproduce import reproduce
+    from fem_racket.paper.reproduce import reproduce
 
     t0 = time.perf_counter()
     result = reproduce(

@@ -21,8 +21,9 @@ import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
-from ..config import COMMAND_TABLES, CORE_DESTS, CORE_KEYS, RunConfig, load_config
-from ..validation import InputError
+from fem_racket.io.config import RunConfig, load_config
+from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
+from fem_racket.validation import InputError
 
 __all__ = ["add_config_option", "apply_config", "config_values", "file_options"]
 

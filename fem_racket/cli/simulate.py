@@ -14,10 +14,7 @@ import csv
 from pathlib import Path
 from typing import Any
 
-from ..impact import simulate
-from ..outputs import atomic_output, check_output_path, provenance, sidecar_path, write_sidecar
-from ..validation import InputError
-from .common import (
+from fem_racket.cli.common import (
     add_config_option,
     add_impact_options,
     add_output_options,
@@ -31,6 +28,15 @@ from .common import (
     significant,
     write_json,
 )
+from fem_racket.impact.simulate import simulate
+from fem_racket.outputs import (
+    atomic_output,
+    check_output_path,
+    provenance,
+    sidecar_path,
+    write_sidecar,
+)
+from fem_racket.validation import InputError
 
 #: Suffixes --out takes (case-insensitive) and what each writes.
 OUT_SUFFIXES = (".json", ".csv")

@@ -12,13 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from ..grid import PARAMETERS, as_values
-from ..mesh import FrameMesh, frame_mesh
-from ..model import DEFAULT_MODES
-from ..params import Frame, standard_frame
-from ..sweep import sweep
-from ..validation import InputError
-from .common import (
+from fem_racket.cli.common import (
     add_config_option,
     add_mesh_option,
     add_solver_options,
@@ -26,6 +20,12 @@ from .common import (
     print_json,
     run_parameters,
 )
+from fem_racket.frame.mesh import FrameMesh, frame_mesh
+from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.frame.segments import Frame, standard_frame
+from fem_racket.studies.grid import PARAMETERS, as_values
+from fem_racket.studies.sweep import sweep
+from fem_racket.validation import InputError
 
 #: Where the result goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
@@ -146,8 +146,8 @@ def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> No
 
 def run(args: argparse.Namespace) -> int:
     """Run the sweep, write the file and print a summary."""
-    from ..executors import check_scheduler
-    from .common import frame_from_args
+    from fem_racket.cli.common import frame_from_args
+    from fem_racket.studies.executors import check_scheduler
 
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:

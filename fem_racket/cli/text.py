@@ -10,7 +10,7 @@ import argparse
 import math
 import sys
 
-from ..model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 
 __all__ = ["note", "note_modes", "significant"]
 

@@ -5,9 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from ..impact import simulate
-from ..validation import InputError
-from .common import (
+from fem_racket.cli.common import (
     add_config_option,
     add_impact_options,
     add_output_step_option,
@@ -17,6 +15,8 @@ from .common import (
     note_modes,
     run_parameters,
 )
+from fem_racket.impact.simulate import simulate
+from fem_racket.validation import InputError
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -117,9 +117,10 @@ def _simulate(args: argparse.Namespace):
 
 def _check_early(args: argparse.Namespace) -> None:
     """Reject bad drawing options before the simulation runs."""
-    from ..outputs import check_output_folder, check_output_path
-    from ..validation import check_positive
-    from ..vtk import PROVENANCE_NAME, field_name
+    from fem_racket.io.vtk import PROVENANCE_NAME
+    from fem_racket.io.vtk_series import field_name
+    from fem_racket.outputs import check_output_folder, check_output_path
+    from fem_racket.validation import check_positive
 
     field_name(args.field)
     check_positive("scale", args.scale)
@@ -130,8 +131,8 @@ def _check_early(args: argparse.Namespace) -> None:
     if args.command == "export-vtk":
         check_output_folder(args.out, overwrite=args.overwrite, marker=PROVENANCE_NAME)
         return
-    from ..animate import ANIMATION_SUFFIXES, check_size
-    from ..outputs import sidecar_path
+    from fem_racket.io.animate import ANIMATION_SUFFIXES, check_size
+    from fem_racket.outputs import sidecar_path
 
     if args.out.suffix.lower() not in ANIMATION_SUFFIXES:
         raise InputError(
@@ -147,7 +148,7 @@ def _check_early(args: argparse.Namespace) -> None:
 
 def run_export(args: argparse.Namespace) -> int:
     """Simulate and write the VTK time series."""
-    from ..vtk import write_vtk_series
+    from fem_racket.io.vtk import write_vtk_series
 
     _check_early(args)
     result = _simulate(args)
@@ -167,7 +168,7 @@ def run_export(args: argparse.Namespace) -> int:
 
 def run_animate(args: argparse.Namespace) -> int:
     """Simulate and render the animation."""
-    from ..animate import render_animation
+    from fem_racket.io.animate import render_animation
 
     _check_early(args)
     result = _simulate(args)

@@ -1,0 +1,86 @@
+"""What the commands print and write: JSON on stdout, ``--out``/``--overwrite``, the run's
+parameters for provenance, atomic text and JSON files.
+
+NaN and infinities, which JSON cannot hold, become ``null`` everywhere (:func:`json_ready`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+__all__ = [
+    "add_output_options",
+    "json_ready",
+    "print_json",
+    "run_parameters",
+    "write_json",
+    "write_text",
+]
+
+
+def json_ready(v: Any) -> Any:
+    """``v`` with every non-finite float (at any depth of dicts, lists, tuples) replaced by None."""
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    if isinstance(v, dict):
+        return {k: json_ready(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [json_ready(x) for x in v]
+    return v
+
+
+def print_json(data: Any) -> None:
+    """Print ``data`` as JSON (NaN and inf become null)."""
+    json.dump(json_ready(data), sys.stdout, indent=2)
+    sys.stdout.write("\n")
+
+
+def add_output_options(
+    parser: argparse.ArgumentParser, default: str | None = None, what: str = "output file"
+) -> argparse._ArgumentGroup:
+    """``--out FILE`` (``default``: None means the command writes no file unless asked) and
+    ``--overwrite``; ``what`` starts the help text and must say it is a file. Relative paths are
+    relative to the working directory. Returns the group (for more output options)."""
+    g = parser.add_argument_group("output")
+    where = f"default {default}" if default else "default: none, print only"
+    g.add_argument("--out", default=default, metavar="FILE", help=f"{what} ({where})")
+    g.add_argument("--overwrite", action="store_true", help="replace the output file if it exists")
+    return g
+
+
+def run_parameters(args: argparse.Namespace) -> dict[str, Any]:
+    """The parsed options as a JSON-ready dict for :func:`fem_racket.outputs.provenance`."""
+
+    def plain(v: Any) -> Any:
+        if v is None or isinstance(v, (bool, int, float, str)):
+            return v
+        if isinstance(v, Path):
+            return str(v)
+        if isinstance(v, (list, tuple)):
+            return [plain(x) for x in v]
+        if isinstance(v, (set, frozenset)):
+            return sorted(plain(x) for x in v)
+        if hasattr(v, "__dataclass_fields__"):
+            return {k: plain(getattr(v, k)) for k in v.__dataclass_fields__}
+        return repr(v)
+
+    return {k: plain(v) for k, v in sorted(vars(args).items()) if k != "func" and not callable(v)}
+
+
+def write_text(path: str | Path, text: str, *, overwrite: bool = False) -> Path:
+    """Write ``text`` to ``path`` atomically (refusing an existing file unless ``overwrite``)."""
+    from fem_racket.outputs import atomic_output
+
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        tmp.write_text(text, encoding="utf-8")
+    return Path(path)
+
+
+def write_json(path: str | Path, data: Any, *, overwrite: bool = False) -> Path:
+    """Write ``data`` as JSON to ``path`` atomically (NaN and inf become null)."""
+    return write_text(path, json.dumps(json_ready(data), indent=2) + "\n", overwrite=overwrite)

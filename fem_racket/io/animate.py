@@ -1,0 +1,245 @@
+"""Offscreen GIF / MP4 animation of an impact, rendered with pyvista (no display needed).
+
+Side view of the racket (x along the frame to the right, deflection z upwards), the frame drawn
+as a thick line coloured by one of :data:`~fem_racket.vtk.FRAME_FIELDS` on its true values, the
+undeformed frame as a thin grey reference line, on a dark background, and the ball as a sphere (see
+:func:`~fem_racket.vtk.impact_series` for how it is placed when the deflection is exaggerated).
+Each image carries the time in ms, the exaggeration factor, the contact force and the impact
+settings. The camera is fixed over the whole animation and frames the motion of every step.
+
+Rendering uses VTK's EGL window when ``VTK_DEFAULT_OPENGL_WINDOW`` is not set (offscreen, no X
+server; Mesa's software EGL is enough). GIFs are written by imageio (Pillow), MP4 (H.264) by
+imageio-ffmpeg, both through pyvista's ``open_gif`` / ``open_movie``.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from fem_racket.io.vtk_series import ImpactSeries, field_name, impact_series
+from fem_racket.outputs import atomic_output, check_output_path, provenance, sidecar_path
+from fem_racket.validation import InputError, check_positive
+
+if TYPE_CHECKING:
+    from fem_racket.impact.simulate import ImpactResult
+
+__all__ = ["ANIMATION_SUFFIXES", "render_animation"]
+
+log = logging.getLogger(__name__)
+
+ANIMATION_SUFFIXES = (".gif", ".mp4")
+
+#: Tennis-ball "optic yellow"; a dark background so that coolwarm's light-grey zero stays visible.
+BALL_COLOUR = "#cfdc2a"
+BACKGROUND = "#333333"
+TEXT_COLOUR = "#f0f0f0"
+REFERENCE_COLOUR = "#8a8a8a"
+
+
+def check_size(size: tuple[int, int]) -> tuple[int, int]:
+    """Validate an image size (width, height) [px]: multiples of 16 (H.264 macro-blocks)."""
+    try:
+        w, h = (int(v) for v in size)
+    except (TypeError, ValueError):
+        w = h = -1
+    if not all(160 <= v <= 3840 and v % 16 == 0 for v in (w, h)):
+        raise InputError(
+            f"size = {size!r} is not allowed: must be WIDTH x HEIGHT in pixels, "
+            "each a multiple of 16 in [160, 3840]"
+        )
+    return w, h
+
+
+def _use_egl() -> None:
+    # DESIGN.md section 7: EGL renders offscreen without an X server and avoids the X warning.
+    os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+
+
+def _camera(pl: Any, series: ImpactSeries, size: tuple[int, int]) -> None:
+    """Fixed side view framing every step (parallel projection, x right, z up)."""
+    length = float(series.x[-1])
+    zf = series.scale * series.point_fields["deflection [m]"]
+    r = series.ball_radius
+    z_lo = min(float(zf.min()), float(series.ball_z.min()) - r)
+    z_hi = max(float(zf.max()), float(series.ball_z.max()) + r)
+    centre = np.array([0.5 * length, 0.0, 0.5 * (z_lo + z_hi)])
+    aspect = size[0] / size[1]
+    # parallel_scale is half the view height [m]; 40 % margin for the texts and colour bar.
+    half = 1.4 * max(0.5 * (z_hi - z_lo), 0.5 * length / (0.8 * aspect))
+    centre[0] += 0.12 * half * aspect  # room for the colour bar on the right
+    pl.camera.SetParallelProjection(True)
+    pl.camera.focal_point = tuple(centre)
+    pl.camera.position = tuple(centre - np.array([0.0, 10.0 * length, 0.0]))
+    pl.camera.up = (0.0, 0.0, 1.0)
+    pl.camera.parallel_scale = half
+    pl.camera.clipping_range = (1.0 * length, 20.0 * length)
+
+
+def _render(
+    series: ImpactSeries,
+    path: Path,
+    *,
+    field: str,
+    fps: float,
+    size: tuple[int, int],
+    caption: str,
+) -> None:
+    _use_egl()
+    import pyvista as pv
+
+    cell = field in series.cell_fields
+    values = (series.cell_fields if cell else series.point_fields)[field]
+    vmax = float(np.abs(values).max()) or 1.0
+    length = float(series.x[-1])
+
+    pl = pv.Plotter(off_screen=True, window_size=list(size))
+    try:
+        pl.set_background(BACKGROUND)
+        pl.add_mesh(
+            pv.Line((0.0, 0.0, 0.0), (length, 0.0, 0.0)), color=REFERENCE_COLOUR, line_width=2
+        )
+        frame = series.frame_grid(0)
+        pl.add_mesh(
+            frame,
+            scalars=field,
+            preference="cell" if cell else "point",
+            cmap="coolwarm",
+            clim=(-vmax, vmax),
+            line_width=9,
+            render_lines_as_tubes=True,
+            scalar_bar_args={
+                "title": field,
+                "color": TEXT_COLOUR,
+                "fmt": "%.3g",
+                "n_labels": 5,
+                "vertical": True,
+                "position_x": 0.86,
+                "position_y": 0.16,
+                "width": 0.05,
+                "height": 0.66,
+                "title_font_size": 14,
+                "label_font_size": 12,
+            },
+        )
+        ball = series.ball_grid(0)
+        ball_points0 = np.array(ball.points)
+        pl.add_mesh(ball, color=BALL_COLOUR, smooth_shading=True, specular=0.3, scalars=None)
+        pl.add_point_labels(
+            np.array([[0.0, 0.0, 0.0], [length, 0.0, 0.0]]),
+            ["grip end", "tip"],
+            font_size=14,
+            text_color=TEXT_COLOUR,
+            shape=None,
+            show_points=False,
+            always_visible=True,
+        )
+        pl.add_text(
+            f"deflection \u00d7 {series.scale:g}", position="upper_right", font_size=12,
+            color=TEXT_COLOUR,
+        )  # fmt: skip
+        _camera(pl, series, size)
+        if path.suffix == ".gif":
+            pl.open_gif(str(path), fps=fps)
+        else:
+            pl.open_movie(str(path), framerate=fps, quality=7)
+        force = series.ball_fields["contact force [N]"]
+        time_text = pl.add_text("", position="upper_left", font_size=14, color=TEXT_COLOUR)
+        caption_text = pl.add_text("", position="lower_left", font_size=10, color=TEXT_COLOUR)
+        for i in range(series.n_steps):
+            frame.points = series.frame_points(i)
+            target = frame.cell_data if cell else frame.point_data
+            target[field] = values[i]
+            ball.points = ball_points0 + (0.0, 0.0, series.ball_z[i] - series.ball_z[0])
+            time_text.set_text("upper_left", f"t = {series.t[i] * 1e3:5.3f} ms")
+            caption_text.set_text("lower_left", f"{caption}\ncontact force {force[i]:5.0f} N")
+            pl.write_frame()
+    finally:
+        pl.close()
+
+
+def render_animation(
+    result: ImpactResult,
+    path: str | os.PathLike,
+    *,
+    field: str = "deflection [m]",
+    frames: int = 100,
+    fps: float = 25.0,
+    scale: float = 10.0,
+    subdivide: int = 8,
+    size: tuple[int, int] = (960, 400),
+    overwrite: bool = False,
+    parameters: dict[str, Any] | None = None,
+) -> Path:
+    """Render an impact as a GIF or MP4 offscreen; return the path written.
+
+    A sidecar ``<path>.json`` holds the provenance (software, version, date, the impact's
+    settings and results, the animation's settings and its times [s]). Both files are written
+    atomically; existing ones are replaced only with ``overwrite``.
+
+    Parameters
+    ----------
+    result : ImpactResult
+        A simulation with histories.
+    path : path
+        Output file, ``.gif`` or ``.mp4``.
+    field : str
+        Frame colouring: a :data:`~fem_racket.vtk.FRAME_FIELDS` name or its short alias
+        (``deflection``, ``slope``, ``velocity``, ``curvature``, ``moment``).
+    frames : int
+        Images, evenly spread over the output times, first and last included (>= 2).
+    fps : float
+        Playback rate [frames/s] (> 0, at most 100: GIF delays are whole 10 ms).
+    scale : float
+        Deflection exaggeration (> 0), written on every image.
+    subdivide : int
+        Straight segments per finite element.
+    size : (int, int)
+        Image width and height [px], multiples of 16.
+    overwrite : bool
+        Replace existing files.
+    parameters : dict, optional
+        Extra provenance entries.
+    """
+    path = Path(path)
+    if path.suffix.lower() not in ANIMATION_SUFFIXES:
+        raise InputError(
+            f"output = '{path}' is not allowed: must end in {' or '.join(ANIMATION_SUFFIXES)}"
+        )
+    path = path.with_suffix(path.suffix.lower())
+    field = field_name(field)
+    fps = check_positive("fps", fps, "frames/s")
+    if fps > 100:
+        raise InputError(f"fps = {fps!r} frames/s is not allowed: must be in (0, 100]")
+    size = check_size(size)
+    sidecar = sidecar_path(path)
+    check_output_path(path, overwrite=overwrite)
+    check_output_path(sidecar, overwrite=overwrite)
+    series = impact_series(result, subdivide=subdivide, frames=frames, scale=scale)
+    caption = (
+        f"ball {result.impact.speed:g} m/s at x/L = {result.impact.position:.3f}, "
+        f"COR {result.cor:.3f}, contact {result.contact_time * 1e3:.2f} ms"
+    )
+    settings = {
+        "field": field,
+        "frames": series.n_steps,
+        "fps": fps,
+        "deflection_scale": series.scale,
+        "subdivide": subdivide,
+        "size_px": list(size),
+        "time_s": series.t.tolist(),
+    }
+    meta = provenance({**result.summary(), **settings, **(parameters or {})})
+    with (
+        atomic_output(path, overwrite=overwrite) as tmp,
+        atomic_output(sidecar, overwrite=overwrite) as tmp_json,
+    ):
+        _render(series, tmp, field=field, fps=fps, size=size, caption=caption)
+        tmp_json.write_text(json.dumps(meta, indent=2) + "\n")
+    log.info("wrote %d frames to %s", series.n_steps, path)
+    return path

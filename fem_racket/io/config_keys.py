@@ -1,0 +1,184 @@
+"""The keys of a run file's core tables: their units, checks and the CLI options they set.
+
+Each check takes the dotted key and the raw TOML value and returns the clean value or raises a
+one-line :class:`~fem_racket.validation.InputError` naming the key (see :mod:`.config`).
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
+from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.simulate import BASES
+from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.validation import InputError, check_choice, check_positive, check_range
+
+__all__ = ["COMMAND_TABLES", "CORE_DESTS", "CORE_KEYS", "PRESETS", "Key", "reject_unknown"]
+
+
+#: Sub-command -> the table of the run file holding its own options. A command missing here
+#: reads the table named after it.
+COMMAND_TABLES = {
+    "simulate": "simulate",
+    "modes": "modes",
+    "sweep": "sweep",
+    "refine": "refine",
+    "export-vtk": "vtk",
+    "animate": "animate",
+    "reproduce": "reproduce",
+}
+
+#: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).
+PRESETS = {"standard": PAPER_EI1, "rigid": RIGID_EI1}
+
+
+# -- value checks: (dotted name, raw TOML value) -> clean value --------------------------------
+def _number(unit: str, check: Callable[..., float]) -> Callable[[str, Any], float]:
+    def conv(name: str, value: Any) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise InputError(f"{name} = {value!r} is not allowed: must be a number [{unit}]")
+        return float(check(name, value, unit))
+
+    return conv
+
+
+def _positive(unit: str = "") -> Callable[[str, Any], float]:
+    return _number(unit, check_positive)
+
+
+def _interval(low: float, high: float, **kw: bool) -> Callable[[str, Any], float]:
+    def check(name: str, value: float, unit: str) -> float:
+        return check_range(name, value, low, high, unit=unit, **kw)
+
+    return _number("", check)
+
+
+def _integer(low: int) -> Callable[[str, Any], int]:
+    def conv(name: str, value: Any) -> int:
+        if isinstance(value, bool) or not isinstance(value, int) or value < low:
+            raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= {low}")
+        return value
+
+    return conv
+
+
+def _choice(options: tuple[str, ...]) -> Callable[[str, Any], str]:
+    def conv(name: str, value: Any) -> str:
+        return check_choice(name, value, options)
+
+    return conv
+
+
+def _string(name: str, value: Any) -> str:
+    if not isinstance(value, str) or not value.strip():
+        raise InputError(f"{name} = {value!r} is not allowed: must be a non-empty path string")
+    return value
+
+
+def _boolean(name: str, value: Any) -> bool:
+    if not isinstance(value, bool):
+        raise InputError(f"{name} = {value!r} is not allowed: must be true or false")
+    return value
+
+
+_SEGMENT_KEYS = {"length_m": "m", "ei_n_m2": "N m^2", "rhoa_kg_m": "kg/m"}
+
+
+def _segments(name: str, value: Any) -> tuple[Segment, ...]:
+    if not isinstance(value, list) or not value:
+        raise InputError(
+            f"{name} is not allowed: must be a non-empty array of tables "
+            "with length_m, ei_n_m2 and rhoa_kg_m"
+        )
+    out = []
+    for i, item in enumerate(value):
+        where = f"{name}[{i}]"
+        if not isinstance(item, dict):
+            raise InputError(
+                f"{where} = {item!r} is not allowed: must be a table "
+                "with length_m, ei_n_m2 and rhoa_kg_m"
+            )
+        reject_unknown(item, _SEGMENT_KEYS, where)
+        missing = [k for k in _SEGMENT_KEYS if k not in item]
+        if missing:
+            raise InputError(f"{where} is missing {', '.join(missing)} (each segment needs all 3)")
+        vals = [_positive(u)(f"{where}.{k}", item[k]) for k, u in _SEGMENT_KEYS.items()]
+        out.append(Segment(*vals))
+    return tuple(out)
+
+
+@dataclass(frozen=True)
+class Key:
+    """One key of a core table: how to check it and which CLI option (argparse dest) it sets."""
+
+    check: Callable[[str, Any], Any]
+    dest: str | None
+    help: str
+
+
+#: The core tables: table -> key -> :class:`Key`.
+CORE_KEYS: dict[str, dict[str, Key]] = {
+    "frame": {
+        "preset": Key(_choice(tuple(PRESETS)), "ei1", "standard (EI1 146 N m^2) or rigid (9999)"),
+        "ei1_n_m2": Key(_positive("N m^2"), "ei1", "grip-side bending rigidity EI1"),
+        "ei2_n_m2": Key(_positive("N m^2"), "ei2", "top-side bending rigidity EI2"),
+        "segments": Key(_segments, "segments", "uniform segments from the grip end"),
+        "mesh": Key(_string, "mesh", "mesh file with cell data EI and rhoA"),
+        "elements": Key(_integer(1), "elements", "number of beam elements"),
+    },
+    "ball": {"mass_kg": Key(_positive("kg"), "ball_mass", "ball mass m_B")},
+    "contact": {
+        "kcb_n_m": Key(_positive("N/m"), "kcb", "ball/string stiffness K_CB"),
+        "zeta": Key(_interval(0.0, 1.0, include_high=False), "zeta", "damping ratio"),
+        "clamped_cor": Key(
+            _interval(0.0, 1.0, include_low=False), "zeta", "clamped-frame COR fixing zeta"
+        ),
+    },
+    "impact": {
+        "position_x_over_l": Key(_interval(0.0, 1.0), "position", "impact point x/L"),
+        "speed_m_s": Key(_positive("m/s"), "speed", "incident ball speed V_B0"),
+    },
+    "solver": {
+        "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),
+        "separation": Key(_choice(SEPARATION_EVENTS), "separation", "end of contact"),
+        "basis": Key(_choice(BASES), "basis", "frame coordinates for the BDF solvers"),
+        "modes": Key(_integer(1), "modes", "flexible modes kept"),
+        "rtol": Key(_positive(), "rtol", "relative tolerance of the BDF solvers"),
+        "atol": Key(_positive(), "atol", "absolute tolerance of the BDF solvers"),
+        "t_max_s": Key(_positive("s"), "t_max", "give up if no separation by then"),
+    },
+    "output": {
+        "out": Key(_string, "out", "simulate's output file (other commands: their own table)"),
+        "overwrite": Key(_boolean, "overwrite", "replace an existing output file"),
+    },
+}
+
+#: The argparse dests the core tables own; a command table may not set them.
+CORE_DESTS = frozenset(k.dest for t in CORE_KEYS.values() for k in t.values() if k.dest)
+
+
+def _all_keys() -> list[str]:
+    return [f"{t}.{k}" for t, keys in CORE_KEYS.items() for k in keys]
+
+
+def reject_unknown(
+    table: Mapping[str, Any], allowed: Mapping[str, Any] | list[str], where: str
+) -> None:
+    """Raise for the first key of ``table`` not in ``allowed``, with a "did you mean"."""
+    for key in table:
+        if key in allowed:
+            continue
+        here = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
+        if here:
+            hint = f"did you mean '{here[0]}'?"
+        else:
+            other = difflib.get_close_matches(key, _all_keys(), n=1, cutoff=0.6)
+            other += [d for d in _all_keys() if d.endswith(f".{key}")]
+            hint = f"did you mean '{other[-1]}'?" if other else ""
+            hint = f"{hint} allowed: {', '.join(allowed) or '(none)'}".strip()
+        prefix = f"{where}." if where else ""
+        raise InputError(f"{prefix}{key} is not a known key: {hint}")

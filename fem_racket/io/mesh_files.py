@@ -1,0 +1,182 @@
+"""Mesh files: read and write a frame's 1-D line mesh through meshio.
+
+A mesh file holds 2-node ``line`` cells along x with cell data ``EI`` [N m^2] and ``rhoA``
+[kg/m]; any format meshio reads works (``meshes/`` uses .vtu: one self-contained file that
+ParaView opens). :func:`read_mesh` validates what it reads and names what is wrong and where.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+from pathlib import Path
+
+import numpy as np
+
+from fem_racket.frame.mesh import FrameMesh
+from fem_racket.validation import InputError
+
+__all__ = ["read_mesh", "write_mesh"]
+
+
+#: Relative tolerance (of the mesh length) within which cell ends must meet.
+JOIN_TOL = 1e-9
+
+
+def read_mesh(path: str | os.PathLike) -> FrameMesh:
+    """Read a 1-D line mesh with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] through meshio.
+
+    Any format meshio reads (.vtu, .vtk, .xdmf, .msh, ...). The cells must be 2-node ``line``
+    cells along x (y and z constant); they may come in any order and are sorted by position, but
+    must join end to end (within ``JOIN_TOL`` of the length) without gaps, overlaps or zero-length
+    cells. Coordinates are shifted so the grip end is at x = 0. Other cell types (e.g. vertices)
+    are ignored.
+
+    Raises
+    ------
+    InputError
+        One line naming the file and what is wrong, and where.
+    """
+    import meshio
+
+    path = Path(path)
+    where = f"mesh = '{path}'"
+    if not path.is_file():
+        raise InputError(f"{where} is not allowed: no such file")
+    chatter = io.StringIO()  # meshio prints its reasons (stdout) and errors (stderr)
+    try:
+        with contextlib.redirect_stdout(chatter), contextlib.redirect_stderr(chatter):
+            m = meshio.read(path)
+    except (Exception, SystemExit) as exc:  # meshio raises many types, even SystemExit
+        said = " ".join(chatter.getvalue().split()).removeprefix("Error: ")
+        msg = " ".join(str(exc).split()) if not isinstance(exc, SystemExit) else ""
+        msg = "; ".join(t for t in (said, msg) if t) or type(exc).__name__
+        raise InputError(
+            f"{where} could not be read ({msg}): must be a line mesh in a format meshio reads"
+        ) from None
+    lines = [(i, b) for i, b in enumerate(m.cells) if b.type == "line"]
+    if not lines:
+        types = ", ".join(sorted({b.type for b in m.cells})) or "none"
+        raise InputError(
+            f"{where} is not allowed: it has no 'line' cells (cell types: {types}); "
+            "need 2-node line cells along x"
+        )
+    pts = np.asarray(m.points, dtype=float)
+    if pts.ndim != 2 or pts.shape[0] < 2 or not np.all(np.isfinite(pts)):
+        raise InputError(f"{where} is not allowed: point coordinates must be finite numbers")
+    conn, data = [], {"EI": [], "rhoA": []}
+    for name, store in data.items():
+        if name not in m.cell_data:
+            have = ", ".join(sorted(m.cell_data)) or "none"
+            raise InputError(
+                f"{where} is not allowed: cell data '{name}' is missing (have: {have}); "
+                "need EI [N m^2] and rhoA [kg/m] on every cell"
+            )
+        for i, block in lines:
+            values = np.asarray(m.cell_data[name][i])
+            if values.ndim > 1 and values.size != len(block.data):
+                raise InputError(
+                    f"{where} is not allowed: cell data '{name}' has shape {values.shape}; "
+                    "need one number per cell"
+                )
+            try:
+                store.append(values.astype(float).ravel())
+            except (TypeError, ValueError):
+                raise InputError(
+                    f"{where} is not allowed: cell data '{name}' is not numeric"
+                ) from None
+    for _, block in lines:
+        conn.append(np.asarray(block.data))
+    conn = np.concatenate(conn)
+    ei, ra = np.concatenate(data["EI"]), np.concatenate(data["rhoA"])
+    if conn.min() < 0 or conn.max() >= len(pts):
+        raise InputError(f"{where} is not allowed: a line cell refers to a point that is not there")
+    span = np.ptp(pts[:, 0])
+    if pts.shape[1] > 1 and np.any(np.ptp(pts[:, 1:], axis=0) > JOIN_TOL * max(span, 1e-300)):
+        raise InputError(
+            f"{where} is not allowed: points are not on one line along x (y or z varies); "
+            "the frame axis must be x"
+        )
+    x = pts[:, 0]
+    xa, xb = x[conn[:, 0]], x[conn[:, 1]]
+    left, right = np.minimum(xa, xb), np.maximum(xa, xb)
+    order = np.argsort(left, kind="stable")
+    left, right, ei, ra = left[order], right[order], ei[order], ra[order]
+    length = right.max() - left.min()
+    if length <= 0.0:
+        raise InputError(f"{where} is not allowed: the mesh has zero length")
+    tol = JOIN_TOL * length
+    short = right - left <= tol
+    if np.any(short):
+        i = int(np.argmax(short))
+        raise InputError(
+            f"{where} is not allowed: zero-length cell at x = {left[i]:g} m "
+            f"(cell {int(order[i])} of the file)"
+        )
+    gap = left[1:] - right[:-1]
+    bad = np.abs(gap) > tol
+    if np.any(bad):
+        i = int(np.argmax(bad))
+        kind = "gap" if gap[i] > 0 else "overlap"
+        raise InputError(
+            f"{where} is not allowed: {kind} between x = {right[i]:g} m and "
+            f"x = {left[i + 1]:g} m (cells {int(order[i])} and {int(order[i + 1])} of the file); "
+            "cells must join end to end"
+        )
+    points = np.concatenate([left, right[-1:]]) - left[0]
+    try:
+        return FrameMesh(points, ei, ra)
+    except InputError as exc:
+        raise InputError(f"{where}: {exc}") from None
+
+
+def write_mesh(
+    mesh: FrameMesh,
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    binary: bool = True,
+) -> Path:
+    """Write ``mesh`` with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] in any meshio format.
+
+    The format follows the suffix (.vtu recommended: one self-contained file that ParaView
+    opens). The file is written under a temporary name in the same folder and renamed into place
+    (:func:`fem_racket.outputs.atomic_output`).
+
+    Parameters
+    ----------
+    mesh : FrameMesh
+    path : path-like
+    overwrite : bool
+        Replace an existing file; by default an existing file raises :class:`InputError`.
+    binary : bool
+        For .vtu / .vtk: base64/binary data (exact round trip, the default) or ASCII text (easy
+        to read and diff, 12 significant digits). .xdmf is written with its data inline (XML).
+    """
+    import meshio
+
+    from fem_racket.outputs import atomic_output
+
+    path = Path(path)
+    pts = np.zeros((mesh.points.size, 3))
+    pts[:, 0] = mesh.points
+    cells = np.column_stack([np.arange(mesh.n_elements), np.arange(1, mesh.n_elements + 1)])
+    out = meshio.Mesh(
+        pts, [("line", cells)], cell_data={"EI": [mesh.EI.copy()], "rhoA": [mesh.rhoA.copy()]}
+    )
+    suffix = path.suffix.lower()
+    kwargs: dict = {}
+    if suffix in (".vtu", ".vtk"):
+        kwargs["binary"] = binary
+    elif suffix == ".xdmf":
+        kwargs["data_format"] = "XML"  # no .h5 beside it (meshio would put it in the cwd)
+    elif suffix == ".msh":
+        kwargs["file_format"] = "gmsh"  # meshio would otherwise pick ANSYS for .msh
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        try:
+            meshio.write(tmp, out, **kwargs)
+        except Exception as exc:  # unknown suffix, unsupported cell data, ...
+            msg = " ".join(str(exc).split()) or type(exc).__name__
+            raise InputError(f"mesh output = '{path}' cannot be written: {msg}") from None
+    return path

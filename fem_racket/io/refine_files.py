@@ -1,0 +1,198 @@
+"""Reports of a mesh-refinement study: screen table, CSV and a log-log convergence plot.
+
+Every writer takes the output path (written atomically, never silently replaced unless
+``overwrite``); only the CLI and scripts default to ``output/``. Provenance
+(:func:`fem_racket.outputs.provenance`: version, date, the study's settings and ``parameters``)
+goes into the PNG's text chunks and, for the CSV, into the sidecar ``<file>.csv.json``.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from fem_racket.outputs import (
+    add_png_provenance,
+    atomic_output,
+    provenance,
+    sidecar_path,
+    write_sidecar,
+)
+from fem_racket.studies.refine import RefinementStudy
+
+__all__ = ["csv_files", "format_study", "plot_studies", "study_provenance", "write_csv"]
+
+
+def csv_files(path: str | os.PathLike) -> list[Path]:
+    """The files :func:`write_csv` writes: the CSV and its provenance sidecar."""
+    return [Path(path), sidecar_path(path)]
+
+
+def study_provenance(
+    studies: Mapping[str, RefinementStudy], parameters: Mapping[str, Any] | None = None
+) -> dict[str, Any]:
+    """Provenance of a study's outputs: its settings plus ``parameters`` (e.g. the options)."""
+    first = next(iter(studies.values()))
+    settings = {
+        "families": list(studies),
+        "elements": sorted({int(n) for s in studies.values() for n in s.elements}),
+        "positions_x_over_l": first.positions.tolist(),
+        "speed_m_s": first.speed,
+        "frequencies_compared": int(first.exact_frequencies_hz.size),
+        "exact_frequencies_hz": first.exact_frequencies_hz.tolist(),
+        "impact_solver": "exact (modal basis)",
+    }
+    return provenance({**settings, **(parameters or {})})
+
+
+def format_study(study: RefinementStudy) -> str:
+    """A fixed-width table of one family: errors, orders, COR and contact time, timings."""
+    m = study.exact_frequencies_hz.size
+    err, orders = study.relative_error, study.observed_order_pairs
+    lines = [
+        f"{study.family} meshes: exact frequencies [Hz] "
+        + ", ".join(f"{f:.6f}" for f in study.exact_frequencies_hz)
+    ]
+    head = f"{'cells':>6}" + "".join(f" {'err f' + str(k + 1):>10} {'p':>5}" for k in range(m))
+    head += f" {'build [s]':>9} {'impact [ms]':>11}"
+    lines.append(head)
+    for i, n in enumerate(study.elements):
+        row = f"{n:>6}"
+        for k in range(m):
+            p = orders[i - 1, k] if i else np.nan
+            row += f" {err[i, k]:>10.3e} {_num(p, '5.2f')}"
+        row += f" {study.build_time_s[i]:>9.3f} {study.impact_time_s[i] * 1e3:>11.2f}"
+        lines.append(row)
+    lines.append(
+        f"{'cells':>6} {'x/L':>6} {'COR':>12} {'|dCOR|':>9} {'t_c [ms]':>10} {'|dt_c| [s]':>10}"
+    )
+    dc, dt = study.change(study.cor), study.change(study.contact_time_s)
+    for j, x in enumerate(study.positions):
+        for i, n in enumerate(study.elements):
+            lines.append(
+                f"{n:>6} {x:>6.3f} {study.cor[i, j]:>12.9f} {_num(dc[i, j], '9.2e')} "
+                f"{study.contact_time_s[i, j] * 1e3:>10.6f} {_num(dt[i, j], '10.2e')}"
+            )
+        lines.append(
+            f"{'Richardson':>13} {study.richardson(study.cor)[j]:>12.9f} {'':>9} "
+            f"{study.richardson(study.contact_time_s)[j] * 1e3:>10.6f}   "
+            f"(observed COR order {_num(study.observed_order_of(study.cor)[j], '.2f').strip()})"
+        )
+    return "\n".join(lines)
+
+
+def _num(v: float, fmt: str) -> str:
+    width = int(fmt.split(".")[0] or 0)
+    return f"{'-':>{width}}" if not np.isfinite(v) else format(v, fmt)
+
+
+def write_csv(
+    studies: Mapping[str, RefinementStudy],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
+) -> Path:
+    """One row per family and mesh: frequencies, errors, orders, COR and t_c per impact point.
+
+    The provenance (with ``parameters``) goes to ``<path>.json`` beside it."""
+    rows = []
+    for family, s in studies.items():
+        m = s.exact_frequencies_hz.size
+        orders = np.vstack([np.full((1, m), np.nan), s.observed_order_pairs])
+        for i, n in enumerate(s.elements):
+            row = {"family": family, "elements": int(n)}
+            for k in range(m):
+                row[f"f{k + 1}_hz"] = s.frequencies_hz[i, k]
+                row[f"f{k + 1}_exact_hz"] = s.exact_frequencies_hz[k]
+                row[f"f{k + 1}_relative_error"] = s.relative_error[i, k]
+                row[f"f{k + 1}_observed_order"] = orders[i, k]
+            for j, x in enumerate(s.positions):
+                row[f"cor_at_{x:g}L"] = s.cor[i, j]
+                row[f"contact_time_s_at_{x:g}L"] = s.contact_time_s[i, j]
+            row["build_time_s"] = s.build_time_s[i]
+            row["impact_time_s"] = s.impact_time_s[i]
+            rows.append(row)
+    fields = list(dict.fromkeys(k for r in rows for k in r))
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        with open(tmp, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields)
+            w.writeheader()
+            for r in rows:
+                w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in r.items()})
+    write_sidecar(path, study_provenance(studies, parameters), overwrite=overwrite)
+    return Path(path)
+
+
+def plot_studies(
+    studies: Mapping[str, RefinementStudy],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
+) -> Path:
+    """Log-log plot: frequency errors and COR changes against the number of elements.
+
+    The PNG carries the provenance (with ``parameters``) in its text chunks."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    styles = {"uniform": "-", "graded": "--"}
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5), constrained_layout=True)
+    for family, s in studies.items():
+        ls = styles.get(family, ":")
+        for k in range(s.exact_frequencies_hz.size):
+            ax1.loglog(
+                s.elements,
+                np.abs(s.relative_error[:, k]),
+                ls,
+                marker="o",
+                ms=4,
+                color=f"C{k}",
+                label=f"mode {k + 1}, {family}",
+            )
+        dc = s.change(s.cor)
+        for j, x in enumerate(s.positions):
+            ax2.loglog(
+                s.elements[1:],
+                dc[1:, j],
+                ls,
+                marker="s",
+                ms=4,
+                color=f"C{j}",
+                label=f"{x:g} L, {family}",
+            )
+    first = next(iter(studies.values()))
+    n = first.elements.astype(float)
+    ax1.loglog(
+        n,
+        np.abs(first.solver_frequencies_hz[:, 0] / first.exact_frequencies_hz[0] - 1.0),
+        ":",
+        color="0.5",
+        marker=".",
+        label=f"mode 1, {first.family}, eigensolver eigenvalue",
+    )
+    ref = 0.2 * np.abs(first.relative_error[-1, 0]) * (n / n[-1]) ** -4
+    ax1.loglog(n, ref, "k-", lw=0.8, label="slope -4")
+    ax1.set_xlabel("elements")
+    ax1.set_ylabel("relative frequency error |f_FE / f_exact - 1|")
+    ax1.set_title("Frequencies against the exact stepped beam")
+    ax1.grid(True, which="both", alpha=0.3)
+    ax1.legend(fontsize=7, ncol=2, loc="upper right")
+    ax2.set_xlabel("elements")
+    ax2.set_ylabel("|COR(N) - COR(previous N)|")
+    ax2.set_title(f"COR change under refinement ({first.speed:g} m/s)")
+    ax2.grid(True, which="both", alpha=0.3)
+    ax2.legend(fontsize=7, ncol=2)
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        fig.savefig(tmp, dpi=120, format="png")
+        add_png_provenance(tmp, study_provenance(studies, parameters))
+    plt.close(fig)
+    return Path(path)

@@ -1,0 +1,156 @@
+"""Figs 8-9 of Kawazoe & Kanda (1997): COR and contact time against impact position, 20 m/s.
+
+One sweep over 0.55-0.95 L feeds both figures: the standard (EI1 = 146 N m^2) and rigid
+(EI1 = 9999 N m^2) frames, with the ball/string damping (zeta = 0.0592) and without (zeta = 0),
+the rigid-frame closed forms (eq 12 for the COR and eq 11 for the contact time, both without
+damping), and the standard frame reduced to its rigid modes plus flexible mode 1 (conclusion 1).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from fem_racket.frame.modal import mode_nodes
+from fem_racket.frame.model import FrameModel
+from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
+from fem_racket.impact.rigid import rigid_impact_at
+from fem_racket.impact.simulate import simulate
+from fem_racket.paper.figures.data import FigureData, FigureSpec
+
+__all__ = ["FIG_08", "FIG_09", "contact_time_position", "cor_position", "position_sweep"]
+
+SPEED = 20.0
+
+
+@lru_cache(maxsize=2)
+def position_sweep(quick: bool = False) -> tuple[dict[str, np.ndarray], dict[str, float]]:
+    """COR and contact time against position for every case; and the frame's reference points."""
+    base = FrameModel.build(standard_frame(), 20)
+    base.modes()  # computed once, reused by the scaled model
+    rigid = base.scaled(RIGID_EI1 / PAPER_EI1)
+    x = np.linspace(0.55, 0.95, 9 if quick else 41)
+    out: dict[str, np.ndarray] = {"position [x/L]": x}
+    cases = {
+        "standard": (base, None, None),
+        "rigid": (rigid, None, None),
+        "standard undamped": (base, 0.0, None),
+        "rigid undamped": (rigid, 0.0, None),
+        "standard rigid modes + mode 1": (base, None, 1),
+    }
+    for name, (model, zeta, modes) in cases.items():
+        kw = {"zeta": zeta, "output_step": None}
+        if modes is not None:
+            kw["modes"] = modes
+        rs = [simulate(model, position=p, speed=SPEED, **kw) for p in x]
+        out[f"COR {name} [-]"] = np.array([r.cor for r in rs])
+        out[f"contact time {name} [s]"] = np.array([r.contact_time for r in rs])
+    props = base.props
+    closed = [rigid_impact_at(props, p, SPEED) for p in x]
+    out["COR eq 12 rigid undamped [-]"] = np.array([c.cor for c in closed])
+    out["contact time eq 11 rigid undamped [s]"] = np.array([c.contact_time for c in closed])
+    xw = np.linspace(0.30, 0.95, 27 if quick else 66)
+    cor_wide = [simulate(rigid, position=p, speed=SPEED, output_step=None).cor for p in xw]
+    refs = {
+        "node_x_over_l": float(mode_nodes(base.fe, base.modes(1).shapes[:, 0])[-1]),
+        "cg_x_over_l": props.cg_over_length,
+        "rigid_cor_argmax_x_over_l": float(xw[int(np.argmax(cor_wide))]),
+        "wide_step_x_over_l": float(xw[1] - xw[0]),
+        "step_x_over_l": float(x[1] - x[0]),
+    }
+    return out, refs
+
+
+def cor_position(quick: bool = False) -> FigureData:
+    """COR against impact position (Fig 8)."""
+    data, refs = position_sweep(quick)
+    x = data["position [x/L]"]
+    cols = {k: v for k, v in data.items() if not k.startswith("contact time")}
+    std, rig = data["COR standard [-]"], data["COR rigid [-]"]
+    loss = rig - std
+    loss0 = data["COR rigid undamped [-]"] - data["COR standard undamped [-]"]
+    fit = np.polyfit(x, rig, 1)
+    values = dict(refs)
+    values.update(
+        {
+            "rigid_cor_max": float(rig.max()),
+            "rigid_cor_min": float(rig.min()),
+            "rigid_decreasing": float(np.all(np.diff(rig) < 0.0)),
+            "rigid_linear_slope_per_l": float(fit[0]),
+            "rigid_linear_max_residual": float(np.max(np.abs(rig - np.polyval(fit, x)))),
+            "standard_cor_max": float(std.max()),
+            "standard_cor_min": float(std.min()),
+            "standard_cor_argmax_x_over_l": float(x[np.argmax(std)]),
+            "vibration_loss_argmin_x_over_l": float(x[np.argmin(loss)]),
+            "vibration_loss_min": float(loss.min()),
+            "vibration_loss_max": float(loss.max()),
+            "vibration_loss_undamped_argmin_x_over_l": float(x[np.argmin(loss0)]),
+            "eq16_max_excess": float(
+                np.max(data["COR standard undamped [-]"] - data["COR eq 12 rigid undamped [-]"])
+            ),
+            "eq12_vs_rigid_fe_max_diff": float(
+                np.max(
+                    np.abs(data["COR eq 12 rigid undamped [-]"] - data["COR rigid undamped [-]"])
+                )
+            ),
+            "mode1_only_max_cor_diff": float(
+                np.max(np.abs(data["COR standard rigid modes + mode 1 [-]"] - std))
+            ),
+        }
+    )
+    return FigureData(
+        "fig08_cor_position",
+        "Fig. 8: coefficient of restitution against impact position, 20 m/s",
+        {"cor": cols},
+        values,
+    )
+
+
+def contact_time_position(quick: bool = False) -> FigureData:
+    """Contact time against impact position (Fig 9)."""
+    data, refs = position_sweep(quick)
+    cols = {"position [x/L]": data["position [x/L]"]}
+    cols.update({k: v for k, v in data.items() if k.startswith("contact time")})
+    fe = {k: v for k, v in cols.items() if k.startswith("contact time") and "eq 11" not in k}
+    std, rig = cols["contact time standard [s]"], cols["contact time rigid [s]"]
+    eq11 = cols["contact time eq 11 rigid undamped [s]"]
+    allfe = np.array(list(fe.values()))
+    values = dict(refs)
+    values.update(
+        {
+            "tc_min_s": float(allfe.min()),
+            "tc_max_s": float(allfe.max()),
+            "tc_standard_min_s": float(std.min()),
+            "tc_standard_max_s": float(std.max()),
+            "tc_rigid_decreasing": float(
+                np.all(np.diff(rig) < 0.0)
+                and np.all(np.diff(cols["contact time rigid undamped [s]"]) < 0.0)
+            ),
+            "tc_max_rel_rise": float(
+                max(np.max(np.maximum.accumulate(v[::-1])[::-1] / v - 1.0) for v in fe.values())
+            ),
+            "tc_end_below_start": float(all(v[-1] < v[0] for v in fe.values())),
+            "tc_rigidity_max_rel_diff": float(np.max(np.abs(std / rig - 1.0))),
+            "tc_damping_max_rel_diff": float(
+                np.max(np.abs(std / cols["contact time standard undamped [s]"] - 1.0))
+            ),
+            "tc_fe_vs_eq11_max_rel_diff": float(np.max(np.abs(allfe / eq11 - 1.0))),
+            "tc_rigid_undamped_vs_eq11_max_rel_diff": float(
+                np.max(np.abs(cols["contact time rigid undamped [s]"] / eq11 - 1.0))
+            ),
+            "tc_standard_position_spread": float(std.max() / std.min() - 1.0),
+        }
+    )
+    return FigureData(
+        "fig09_contact_time_position",
+        "Fig. 9: contact time against impact position, 20 m/s",
+        {"contact_time": cols},
+        values,
+    )
+
+
+FIG_08 = FigureSpec("fig08_cor_position", ("cor",), cor_position, "cor_position")
+FIG_09 = FigureSpec(
+    "fig09_contact_time_position", ("contact_time",), contact_time_position, "contact_time_position"
+)

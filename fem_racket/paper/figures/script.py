@@ -1,0 +1,38 @@
+"""The shared ``main`` of the figure scripts in ``scripts/``: parse, compute one figure, write."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from fem_racket.validation import InputError
+
+__all__ = ["figure_main"]
+
+
+def figure_main(
+    key: str, description: str, argv: Sequence[str] | None, default_out: str
+) -> list[Path]:
+    """Run figure ``key`` with options ``--out DIR --quick --overwrite``; return the files.
+
+    Bad input prints one line on stderr and exits with code 2.
+    """
+    from fem_racket.paper.figures import make_figure
+
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument(
+        "--out", default=default_out, metavar="DIR", help=f"output folder (default {default_out}/)"
+    )
+    ap.add_argument("--quick", action="store_true", help="coarse grids (for tests)")
+    ap.add_argument("--overwrite", action="store_true", help="replace existing files")
+    args = ap.parse_args(argv)
+    try:
+        _, paths = make_figure(key, args.out, quick=args.quick, overwrite=args.overwrite)
+    except InputError as exc:
+        print(f"{Path(sys.argv[0]).name}: error: {exc}", file=sys.stderr)
+        raise SystemExit(2) from None
+    for p in paths:
+        print(p)
+    return paths

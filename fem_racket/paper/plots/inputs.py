@@ -1,0 +1,91 @@
+"""Plots of the inputs of the analysis: the ball/string law (Figs 2-3) and the frame's modes (Fig
+4)."""
+
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.paper.plots.common import pyplot, save_figure
+
+if TYPE_CHECKING:
+    from fem_racket.paper.figures.data import FigureData
+
+__all__ = ["ball_string", "frame_modes"]
+
+
+def ball_string(data: FigureData, path: str | os.PathLike) -> None:
+    """Figs 2-3 inputs: K_CB and C_CB, clamped COR and contact times against speed."""
+    plt = pyplot()
+    c, pts = data.tables["curve"], data.tables["paper_points"]
+    v = c["speed [m/s]"]
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6), layout="constrained")
+    ax[0].plot(v, c["K_CB [N/m]"] / 1e4, "C0-", label="interpolation (piecewise power law)")
+    ax[0].plot(pts["speed [m/s]"], pts["K_CB [N/m]"] / 1e4, "ko", label="paper, section 2.1.1")
+    ax[0].set(
+        xlabel="impact speed V_B0 [m/s]",
+        ylabel="K_CB [10⁴ N/m]",
+        title="(a) ball/string stiffness (Fig. 2)",
+    )
+    tw = ax[0].twinx()
+    tw.plot(v, c["C_CB [N s/m]"], "C1--", label="C_CB (right axis)")
+    tw.set_ylabel("C_CB [N s/m]", color="C1")
+    h1, l1 = ax[0].get_legend_handles_labels()
+    h2, l2 = tw.get_legend_handles_labels()
+    ax[0].legend(h1 + h2, l1 + l2, loc="upper left", fontsize=8)
+    ax[1].plot(v, c["clamped COR [-]"], "C0-", label=f"eq 2, ζ = {data.values['zeta']:.4f}")
+    ax[1].axhline(0.83, color="k", ls=":", label="paper: 0.83 (eq 4)")
+    ax[1].set(
+        xlabel="impact speed V_B0 [m/s]",
+        ylabel="COR, clamped frame [-]",
+        ylim=(0, 1),
+        title="(b) clamped-frame COR (Fig. 3)",
+    )
+    ax[1].legend(fontsize=8)
+    ax[2].plot(v, c["clamped contact time [s]"] * 1e3, "k-", label="clamped frame, eq 1")
+    for i, k in enumerate(k for k in c if k.startswith("free frame")):
+        pos = k.split(" at ")[1].split(" [")[0]
+        ax[2].plot(v, c[k] * 1e3, f"C{i}--", label=f"free standard frame, {pos}")
+    ax[2].set(
+        xlabel="impact speed V_B0 [m/s]", ylabel="contact time [ms]", title="(c) contact time"
+    )
+    ax[2].legend(fontsize=8)
+    for a in ax:
+        a.grid(alpha=0.3)
+    fig.suptitle(data.title + f" (m_B = {DEFAULT_BALL_MASS} kg)")
+    save_figure(fig, path)
+
+
+def frame_modes(data: FigureData, path: str | os.PathLike) -> None:
+    """Fig 4: modes 1-3 with their nodes."""
+    plt = pyplot()
+    s, n = data.tables["shapes"], data.tables["nodes"]
+    fig, ax = plt.subplots(3, 1, figsize=(8, 7.5), sharex=True, layout="constrained")
+    for k in range(3):
+        a = ax[k]
+        a.plot(s["x/L [-]"], s[f"mode {k + 1} deflection [-]"], "C0-")
+        a.axhline(0.0, color="k", lw=0.6)
+        sel = n["mode [-]"] == k + 1
+        xs = n["node x/L [-]"][sel]
+        a.plot(xs, np.zeros_like(xs), "rv", ms=8, label="nodes")
+        for xn in xs:
+            a.annotate(
+                f"{xn:.3f} L",
+                (xn, 0.0),
+                xytext=(0, 10),
+                textcoords="offset points",
+                ha="center",
+                fontsize=8,
+                color="r",
+            )
+        a.axvline(0.3, color="0.6", ls="--", lw=0.8)
+        f = n["frequency [Hz]"][sel][0]
+        a.set(ylabel="deflection [-]", ylim=(-1.25, 1.35), title=f"mode {k + 1}: {f:.1f} Hz")
+        a.legend(loc="lower left", fontsize=8)
+        a.grid(alpha=0.3)
+    ax[-1].set_xlabel("position from the grip end x/L [-] (step at 0.3 L, dashed)")
+    fig.suptitle(data.title)
+    save_figure(fig, path)

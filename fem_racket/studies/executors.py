@@ -1,0 +1,183 @@
+"""Where sweep chunks run: in this process, a local process pool, or a Dask cluster.
+
+Every backend calls the same picklable function ``work(chunk, **kwargs) -> ndarray`` on
+chunks of case indices and hands each finished chunk to ``done(chunk, values)`` in the calling
+process (which checkpoints it) as soon as it arrives, in completion order.
+
+- ``serial``: a plain loop.
+- ``processes``: :class:`concurrent.futures.ProcessPoolExecutor` on ``workers`` processes
+  (all cores by default), started with ``forkserver`` where available (``fork`` is unsafe in a
+  threaded parent), with the package preloaded.
+- ``dask``: ``distributed.Client(scheduler)`` - the very code path used on a cluster; each
+  worker needs fem_racket installed.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import re
+import sys
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import numpy as np
+
+from fem_racket.validation import InputError, check_choice
+
+__all__ = ["BACKENDS", "check_scheduler", "run_chunks"]
+
+log = logging.getLogger(__name__)
+
+BACKENDS = ("serial", "processes", "dask")
+
+Work = Callable[..., np.ndarray]
+Done = Callable[[np.ndarray, np.ndarray], None]
+
+_ADDRESS = re.compile(r"^(tcp|tls|ucx|ws|wss)://[^\s/:]+:\d{1,5}$")
+
+
+def check_scheduler(address: str) -> str:
+    """Validate a Dask scheduler address ``PROTOCOL://HOST:PORT``."""
+    if not isinstance(address, str) or not _ADDRESS.match(address):
+        raise InputError(f"scheduler = {address!r} is not allowed: must look like tcp://HOST:PORT")
+    return address
+
+
+def _progress(total: int, enabled: bool | None, initial: int) -> Any:
+    from tqdm import tqdm
+
+    class Bar(tqdm):
+        monitor_interval = 0  # no monitor thread: the process pool may fork
+
+    if enabled is None:
+        enabled = sys.stderr.isatty()
+    return Bar(
+        total=total,
+        initial=initial,
+        unit="impact",
+        disable=not enabled,
+        dynamic_ncols=True,
+        smoothing=0.1,
+        file=sys.stderr,
+    )
+
+
+def _serial(work: Work, chunks: Sequence[np.ndarray], kwargs: dict, done: Done, bar: Any) -> None:
+    for chunk in chunks:
+        done(chunk, work(chunk, **kwargs))
+        bar.update(len(chunk))
+
+
+def _pool_context() -> Any:
+    """``fork`` when this process has no other thread (fast: no re-import, works from stdin and
+    notebooks), else ``forkserver`` with the package preloaded (forking a threaded process is
+    unsafe), else ``spawn``."""
+    import multiprocessing as mp
+    import threading
+
+    methods = mp.get_all_start_methods()
+    if "fork" in methods and threading.active_count() == 1:
+        return mp.get_context("fork")
+    if "forkserver" in methods:
+        ctx = mp.get_context("forkserver")
+        ctx.set_forkserver_preload(["fem_racket.cases"])
+        return ctx
+    return mp.get_context("spawn")
+
+
+def _processes(
+    work: Work,
+    chunks: Sequence[np.ndarray],
+    kwargs: dict,
+    done: Done,
+    bar: Any,
+    workers: int,
+) -> None:
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+
+    with ProcessPoolExecutor(max_workers=workers, mp_context=_pool_context()) as pool:
+        pending = {pool.submit(work, c, **kwargs): c for c in chunks}
+        try:
+            while pending:
+                finished, _ = wait(pending, return_when=FIRST_COMPLETED)
+                for fut in finished:
+                    chunk = pending.pop(fut)
+                    done(chunk, fut.result())
+                    bar.update(len(chunk))
+        except BaseException:
+            for fut in pending:
+                fut.cancel()
+            raise
+
+
+def _dask(
+    work: Work,
+    chunks: Sequence[np.ndarray],
+    kwargs: dict,
+    done: Done,
+    bar: Any,
+    scheduler: str,
+) -> None:
+    from distributed import Client, as_completed
+
+    try:
+        client = Client(scheduler, timeout="10s", set_as_default=False)
+    except OSError as exc:
+        raise InputError(f"scheduler = {scheduler!r} is not reachable: {exc}") from None
+    try:
+        log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
+        futures = client.map(work, list(chunks), pure=False, **kwargs)
+        index = {f.key: c for f, c in zip(futures, chunks, strict=True)}
+        for fut in as_completed(futures, loop=client.loop):
+            chunk = index[fut.key]
+            done(chunk, fut.result())
+            bar.update(len(chunk))
+            fut.release()
+    finally:
+        client.close()
+
+
+def run_chunks(
+    work: Work,
+    chunks: Sequence[np.ndarray],
+    done: Done,
+    *,
+    kwargs: dict | None = None,
+    backend: str = "processes",
+    workers: int | None = None,
+    scheduler: str | None = None,
+    progress: bool | None = None,
+    total: int | None = None,
+    initial: int = 0,
+) -> None:
+    """Run ``work(chunk, **kwargs)`` on every chunk and pass each result to ``done``.
+
+    Parameters
+    ----------
+    backend : {"serial", "processes", "dask"}
+    workers : int, optional
+        Processes of the local pool (all cores when None).
+    scheduler : str, optional
+        Dask scheduler address (required by the ``dask`` backend).
+    progress : bool, optional
+        Show a progress bar (rate, ETA) on stderr; None: only when stderr is a terminal.
+    total, initial : int
+        Cases in the whole sweep and already finished (for the bar).
+    """
+    check_choice("backend", backend, BACKENDS)
+    kwargs = kwargs or {}
+    todo = sum(len(c) for c in chunks)
+    total = todo + initial if total is None else total
+    with _progress(total, progress, initial) as bar:
+        if backend == "serial" or (backend == "processes" and len(chunks) <= 1):
+            _serial(work, chunks, kwargs, done, bar)
+        elif backend == "processes":
+            n = (os.cpu_count() or 1) if workers is None else workers
+            _processes(work, chunks, kwargs, done, bar, max(1, min(n, len(chunks))))
+        else:
+            if scheduler is None:
+                raise InputError(
+                    "scheduler = None is not allowed with backend 'dask': give tcp://HOST:PORT"
+                )
+            _dask(work, chunks, kwargs, done, bar, check_scheduler(scheduler))

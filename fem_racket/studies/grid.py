@@ -1,0 +1,292 @@
+"""Sweep grids: parameter values from text or Python, and the full sweep specification.
+
+A sweepable parameter takes one value (held fixed) or several (a dimension of the sweep).
+On the command line the values are a number, a comma list (``20,30,40``) or
+``start:stop:num`` with an optional ``:log`` (``50:3000:60:log``: 60 values evenly spaced in
+log between 50 and 3000, both ends included). The dimensions are named after the options and
+ordered as in :data:`PARAMETERS`; the flat case index runs over them in C order (last fastest).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.frame.segments import PAPER_EI1, Frame
+from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_integer,
+    check_positive,
+    check_range,
+)
+
+__all__ = ["PARAMETERS", "Parameter", "SweepSpec", "as_values", "parse_values"]
+
+#: Reference grip-side rigidity of the standard racket [N m^2]; ei1 sweeps scale its modes.
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A sweepable parameter: unit, description and attribute name (with its unit)."""
+
+    unit: str
+    description: str
+    attribute: str
+
+
+#: Sweepable parameters in dimension order.
+PARAMETERS: dict[str, Parameter] = {
+    "position": Parameter("x/L", "impact point from the grip end", "position_x_over_l"),
+    "speed": Parameter("m/s", "incident ball speed", "speed_m_s"),
+    "ei1": Parameter("N m^2", "grip-side bending rigidity EI1 (EI2 = 0.88 EI1)", "ei1_n_m2"),
+    "ei_factor": Parameter("1", "factor on every segment's EI", "ei_factor"),
+    "ball_mass": Parameter("kg", "ball mass m_B", "ball_mass_kg"),
+    "zeta": Parameter("1", "ball/string damping ratio", "zeta"),
+    "kcb": Parameter("N/m", "ball/string stiffness K_CB", "kcb_n_m"),
+    "elements": Parameter("1", "number of beam elements", "elements"),
+}
+
+
+def _check_value(name: str, value: object) -> float | int:
+    unit = PARAMETERS[name].unit
+    if name == "position":
+        return check_range(name, value, 0.0, 1.0, unit=unit)
+    if name == "zeta":
+        return check_range(name, value, 0.0, 1.0, include_high=False)
+    if name == "elements":
+        if isinstance(value, bool) or not float(check_positive(name, value)).is_integer():
+            raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= 1")
+        return int(float(value))  # type: ignore[arg-type]
+    return check_positive(name, value, "" if unit == "1" else unit)
+
+
+def parse_values(name: str, text: str) -> float | np.ndarray:
+    """Values of parameter ``name`` from ``text``: one number (fixed), a comma list, or
+    ``start:stop:num[:log]`` (a swept dimension).
+
+    Raises :class:`InputError` with a one-line message on malformed text or bad values.
+    """
+    text = str(text).strip()
+    form = "a number, a comma list or start:stop:num[:log]"
+    if ":" in text:
+        parts = [p.strip() for p in text.split(":")]
+        log = parts[-1].lower() == "log"
+        if log:
+            parts = parts[:-1]
+        if len(parts) != 3:
+            raise InputError(f"{name} = {text!r} is not allowed: must be {form}")
+        try:
+            start, stop, num = float(parts[0]), float(parts[1]), float(parts[2])
+        except ValueError:
+            raise InputError(f"{name} = {text!r} is not allowed: must be {form}") from None
+        if not (num.is_integer() and num >= 1):
+            raise InputError(f"{name} = {text!r} is not allowed: num must be an integer >= 1")
+        if not (math.isfinite(start) and math.isfinite(stop)):
+            raise InputError(f"{name} = {text!r} is not allowed: start and stop must be finite")
+        if log and (start <= 0.0 or stop <= 0.0):
+            raise InputError(f"{name} = {text!r} is not allowed: log spacing needs start, stop > 0")
+        values = (np.geomspace if log else np.linspace)(start, stop, int(num))
+        if log:  # geomspace ends are exact in recent numpy; make sure
+            values[0], values[-1] = start, stop
+        return as_values(name, values)
+    try:
+        numbers = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise InputError(f"{name} = {text!r} is not allowed: must be {form}") from None
+    if len(numbers) == 1:
+        return as_values(name, numbers[0])
+    return as_values(name, numbers)
+
+
+def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
+    """Normalise a Python value of parameter ``name``: None (default), a number (fixed), a
+    string (see :func:`parse_values`) or a sequence (swept; a 1-D array of distinct values)."""
+    if name not in PARAMETERS:
+        raise InputError(
+            f"parameter = {name!r} is not allowed: must be one of {', '.join(PARAMETERS)}"
+        )
+    if value is None:
+        return None
+    if isinstance(value, str):
+        return parse_values(name, value)
+    if np.ndim(value) == 0:
+        return _check_value(name, value)
+    if np.ndim(value) != 1 or len(value) == 0:
+        raise InputError(f"{name} = {value!r} is not allowed: must be a number or a 1-D list")
+    checked = [_check_value(name, v) for v in value]
+    arr = np.array(checked, dtype=np.int64 if name == "elements" else float)
+    if np.unique(arr).size != arr.size:
+        raise InputError(f"{name} = {arr.tolist()} is not allowed: values must be distinct")
+    return arr
+
+
+def _frame_description(frame: Frame | FrameMesh | None) -> dict[str, Any]:
+    if frame is None:
+        return {"frame": "standard stepped beam (Kawazoe & Kanda 1997)"}
+    if isinstance(frame, Frame):
+        segs = [[s.length, s.EI, s.rhoA] for s in frame.segments]
+        return {"frame": "segments [length m, EI N m^2, rhoA kg/m]: " + json.dumps(segs)}
+    if isinstance(frame, FrameMesh):
+        h = hashlib.sha256()
+        for arr in (frame.points, frame.EI, frame.rhoA):
+            h.update(np.ascontiguousarray(arr, dtype=float).tobytes())
+        return {"frame": f"mesh of {frame.n_elements} elements, sha256 {h.hexdigest()[:16]}"}
+    raise InputError(f"frame = {frame!r} is not allowed: must be a Frame, a FrameMesh or None")
+
+
+@dataclass(frozen=True, eq=False)
+class SweepSpec:
+    """Everything that determines a sweep's results.
+
+    Attributes
+    ----------
+    values : dict
+        Parameter name -> fixed value (number, or None for the default law) or a 1-D array.
+    frame : Frame, FrameMesh or None
+        The racket (the standard one when None, whose EI1 is ``ei1``).
+    ei2 : float or None
+        Fixed top-side rigidity of the standard frame [N m^2] (0.88 EI1 when None).
+    solver, separation, basis, modes, rtol, atol
+        As for :func:`fem_racket.simulate`.
+    """
+
+    values: dict[str, Any]
+    frame: Frame | FrameMesh | None = None
+    ei2: float | None = None
+    solver: str = "exact"
+    separation: str = "displacement"
+    basis: str = "modal"
+    modes: int | None = DEFAULT_MODES
+    rtol: float = 1e-10
+    atol: float = 1e-12
+
+    @classmethod
+    def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
+        """Validated spec from user values (numbers, strings, sequences); see
+        :func:`fem_racket.sweep` for the keywords."""
+        raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
+        values = {name: as_values(name, value) for name, value in raw.items()}
+        defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
+        defaults["ball_mass"] = DEFAULT_BALL_MASS
+        for name, default in defaults.items():
+            values[name] = default if values[name] is None else values[name]
+        ei2 = kwargs.pop("ei2", None)
+        ei2 = None if ei2 is None else check_positive("ei2", ei2, "N m^2")
+        _frame_description(frame)
+        if frame is None:
+            values["ei1"] = PAPER_EI1 if values["ei1"] is None else values["ei1"]
+        else:
+            if values["ei1"] is not None or ei2 is not None:
+                raise InputError(
+                    "ei1 and ei2 are not allowed with a custom frame: use ei_factor to scale its EI"
+                )
+            if isinstance(frame, FrameMesh):
+                given = raw["elements"]
+                if given is not None and (
+                    np.ndim(values["elements"]) == 1 or values["elements"] != frame.n_elements
+                ):
+                    raise InputError(
+                        f"elements = {given!r} is not allowed with a mesh: it has "
+                        f"{frame.n_elements} elements"
+                    )
+                values["elements"] = frame.n_elements
+        spec = cls(values=values, frame=frame, ei2=ei2, **kwargs)
+        check_choice("solver", spec.solver, SOLVERS)
+        check_choice("separation", spec.separation, SEPARATION_EVENTS)
+        check_choice("basis", spec.basis, ("modal", "physical"))
+        if spec.solver == "exact" and spec.basis != "modal":
+            raise InputError(
+                f"basis = {spec.basis!r} is not allowed with solver 'exact': must be 'modal'"
+            )
+        if spec.modes is not None:
+            check_integer("modes", spec.modes)
+        check_positive("rtol", spec.rtol)
+        check_positive("atol", spec.atol)
+        return spec
+
+    # -- the grid ----------------------------------------------------------------------------
+    @cached_property
+    def axes(self) -> dict[str, np.ndarray]:
+        """Swept parameters -> their values, in dimension order."""
+        return {k: v for k, v in self.values.items() if np.ndim(v) == 1}
+
+    @property
+    def fixed(self) -> dict[str, Any]:
+        """Parameters held fixed -> value (None: the default law)."""
+        return {k: v for k, v in self.values.items() if np.ndim(v) == 0}
+
+    @property
+    def dims(self) -> tuple[str, ...]:
+        """Dimension names."""
+        return tuple(self.axes)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """Grid shape."""
+        return tuple(v.size for v in self.axes.values())
+
+    @property
+    def size(self) -> int:
+        """Number of impacts."""
+        return int(np.prod(self.shape, dtype=np.int64))
+
+    def case(self, index: int) -> dict[str, Any]:
+        """All parameter values of case ``index`` (flat, C order)."""
+        out = dict(self.values)
+        if self.axes:
+            for (name, vals), i in zip(
+                self.axes.items(), np.unravel_index(index, self.shape), strict=True
+            ):
+                out[name] = vals[i].item()
+        return out
+
+    # -- identity --------------------------------------------------------------------------
+    def describe(self) -> dict[str, Any]:
+        """JSON-ready description of everything that determines the results."""
+        from fem_racket.version import __version__
+
+        def plain(v: Any) -> Any:
+            return v.tolist() if isinstance(v, np.ndarray) else v
+
+        return {
+            "values": {k: plain(v) for k, v in self.values.items()},
+            "ei2": self.ei2,
+            "frame": self.frame_key,
+            "solver": self.solver,
+            "separation": self.separation,
+            "basis": self.basis,
+            "modes": self.modes,
+            "rtol": self.rtol,
+            "atol": self.atol,
+            "version": __version__,
+        }
+
+    @cached_property
+    def frame_key(self) -> str:
+        """Short description identifying the frame (cache key of its assembly)."""
+        return _frame_description(self.frame)["frame"]
+
+    @cached_property
+    def digest(self) -> str:
+        """SHA-256 of :meth:`describe` (hex): the key of the sweep's checkpoint."""
+        text = json.dumps(self.describe(), sort_keys=True, allow_nan=False)
+        return hashlib.sha256(text.encode()).hexdigest()
+
+
+def chunks(indices: Sequence[int] | np.ndarray, size: int) -> list[np.ndarray]:
+    """Split ``indices`` into consecutive pieces of at most ``size``."""
+    arr = np.asarray(indices, dtype=np.int64)
+    return [arr[i : i + size] for i in range(0, arr.size, size)]

@@ -1,0 +1,117 @@
+"""The layering: data flows one way, frame/contact -> impact -> studies -> io -> paper -> cli.
+
+Reads the imports of every module with :mod:`ast` (module level, inside functions and under
+``TYPE_CHECKING`` alike) and fails on an import from a higher layer into a lower one, on an import
+between the two lowest folders (frame and contact are independent), and on any import cycle
+between modules.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+PACKAGE = Path(__file__).resolve().parents[1] / "fem_racket"
+
+#: Rank of each top-level part of the package: a module may import only parts of lower or equal
+#: rank (equal: its own folder), never one of higher rank. The base modules are importable by all.
+LAYERS = {
+    "validation": 0,
+    "outputs": 0,
+    "version": 0,
+    "frame": 1,
+    "contact": 1,
+    "impact": 2,
+    "studies": 3,
+    "io": 4,
+    "paper": 5,
+    "cli": 6,
+    "__init__": 7,
+    "__main__": 8,
+}
+
+
+def module_name(path: Path) -> str:
+    parts = list(path.relative_to(PACKAGE.parent).with_suffix("").parts)
+    if parts[-1] == "__init__":
+        parts = parts[:-1]
+    return ".".join(parts)
+
+
+def part(module: str) -> str:
+    """The layer a module belongs to: its top-level folder or base module."""
+    pieces = module.split(".")
+    return pieces[1] if len(pieces) > 1 else "__init__"
+
+
+def imports(path: Path) -> set[str]:
+    """Every fem_racket module named by an import in ``path`` (absolute, as the house writes)."""
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom):
+            assert node.level == 0, f"{path}: relative import; the house uses absolute imports"
+            if node.module and node.module.split(".")[0] == "fem_racket":
+                found.add(node.module)
+                # "from fem_racket.paper import plots" imports the submodule fem_racket.paper.plots
+                found.update(f"{node.module}.{a.name}" for a in node.names)
+        elif isinstance(node, ast.Import):
+            found.update(a.name for a in node.names if a.name.split(".")[0] == "fem_racket")
+    return found
+
+
+MODULES = {module_name(p): p for p in sorted(PACKAGE.rglob("*.py"))}
+GRAPH = {name: imports(path) for name, path in MODULES.items()}
+
+
+def test_every_part_has_a_layer():
+    assert {part(m) for m in MODULES} <= set(LAYERS)
+    assert all(t in MODULES or t.rsplit(".", 1)[0] in MODULES for m in GRAPH for t in GRAPH[m])
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_no_upward_import(module):
+    here = part(module)
+    for target in GRAPH[module]:
+        there = part(target)
+        assert LAYERS[there] <= LAYERS[here], f"{module} imports {target} from a higher layer"
+        if LAYERS[here] == LAYERS[there] == 1:
+            assert there == here, f"{module} imports {target}: frame and contact are independent"
+
+
+def test_no_import_cycle():
+    # Resolve "from fem_racket.x import y" to the module fem_racket.x (or fem_racket.x.y when y
+    # is a submodule); a package's __init__ counts as the package module.
+    def edges(module: str) -> set[str]:
+        return {t for t in GRAPH[module] if t in MODULES and t != module}
+
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(m: str) -> None:
+        state[m] = 1
+        stack.append(m)
+        for t in edges(m):
+            if t.startswith(m + "."):
+                continue  # a package importing its own submodules (its public names)
+            if state.get(t) == 1:
+                cycle = stack[stack.index(t) :] + [t]
+                pytest.fail("import cycle: " + " -> ".join(cycle))
+            if t not in state:
+                visit(t)
+        stack.pop()
+        state[m] = 2
+
+    for m in sorted(MODULES):
+        if m not in state:
+            visit(m)
+
+
+def test_the_layering_test_sees_an_upward_import(tmp_path):
+    # The checker itself: a frame module importing from impact is found.
+    bad = tmp_path / "bad.py"
+    bad.write_text("from fem_racket.impact.simulate import simulate\n")
+    found = imports(bad)
+    assert "fem_racket.impact.simulate" in found
+    assert all(LAYERS[part(t)] > LAYERS[part("fem_racket.frame.mesh")] for t in found)
