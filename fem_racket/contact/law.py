@@ -11,10 +11,12 @@ state ``z`` (a deflection [m]). Two kinds of state exist:
   :mod:`fem_racket.contact.hysteretic`).
 
 The integrators need the partial derivatives (``partials``, ``rate_partials``) for their Newton
-iterations and Jacobians, and the law's own end condition: either the deflection falling through
+iterations and Jacobians, and the law's own end condition: the deflection falling through
 ``end_deflection(z)`` (0 for elastic laws, the unloading branch's zero-force deflection for a
-hysteretic one) or the force falling through 0. Every law works elementwise on numpy arrays, so
-many cases (with per-case parameters) advance together.
+hysteretic one), the force falling through 0, or the ODE state falling through 0 (a string bed
+back in its plane: the force's zero where the force itself may touch zero tangentially).
+Every law works elementwise on numpy arrays, so many cases (with per-case parameters) advance
+together.
 """
 
 from __future__ import annotations
@@ -26,8 +28,9 @@ import numpy as np
 
 __all__ = ["ENDS", "ContactLaw", "power_contact_time"]
 
-#: End conditions a law may name: its deflection or its force falling through the end value.
-ENDS = ("displacement", "force")
+#: End conditions a law may name: its deflection, its force or its ODE state falling through
+#: the end value.
+ENDS = ("displacement", "force", "state")
 
 
 class ContactLaw:

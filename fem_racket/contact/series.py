@@ -10,7 +10,8 @@ massless, so its deflection x is an internal state of the law (delta = ball comp
     F = s(x) = K_b (delta - x) + C_b (delta' - x')
     x' = delta' - (s(x) - K_b (delta - x)) / C_b
 
-The contact ends when the force falls back through zero (the string bed returns to its plane).
+The contact ends when the string bed returns to its plane (x falls through 0, where the force
+does too; with a soft linear term the force touches zero almost tangentially, x does not).
 Typical values (assumptions, to be calibrated): string-bed stiffness k_s ~ 2-4e4 N/m for a
 tensioned bed (Cross 2000; Brody, Cross & Lindsey 2002, ch. 8); ball stiffness K_b ~ 1e5 N/m at
 impact deflections and C_b set by the ball's own restitution (~0.75 on a rigid surface).
@@ -48,7 +49,7 @@ class SeriesBallString(ContactLaw):
 
     name: ClassVar[str] = "series"
     state: ClassVar[str | None] = "ode"
-    end: ClassVar[str] = "force"
+    end: ClassVar[str] = "state"
     ball_stiffness: Any
     ball_damping: Any
     string_stiffness: Any
@@ -88,9 +89,20 @@ class SeriesBallString(ContactLaw):
         return float(x + load / self.ball_stiffness)
 
     def contact_time_estimate(self, mass: Any, speed: Any) -> Any:
-        """pi sqrt(m (1/K_b + 1/k_s)) [s], the linear series springs (an upper bound)."""
-        flex = 1.0 / self.ball_stiffness + 1.0 / self.string_stiffness
-        return math.pi * np.sqrt(np.asarray(mass) * flex) + 0.0 * np.asarray(speed)
+        """pi sqrt(m / k_sec) [s], k_sec the secant stiffness F/delta at the static deflection
+        storing the impact energy m v^2 / 2 (k_s x^2/2 + k_3 x^4/4 + s(x)^2 / (2 K_b))."""
+        energy = 0.5 * np.asarray(mass) * np.asarray(speed) ** 2
+        low = np.zeros_like(energy)
+        high = np.sqrt(2.0 * energy / self.string_stiffness) + 0.0 * low
+        for _ in range(60):  # bisection: the stored energy rises with x
+            x = 0.5 * (low + high)
+            s = self.string_force(x)
+            stored = 0.5 * self.string_stiffness * x**2 + 0.25 * self.string_cubic * x**4
+            stored = stored + s**2 / (2.0 * self.ball_stiffness)
+            low, high = np.where(stored < energy, x, low), np.where(stored < energy, high, x)
+        s = self.string_force(high)
+        k_sec = s / (high + s / self.ball_stiffness)
+        return math.pi * np.sqrt(np.asarray(mass) / k_sec)
 
     def parameters(self) -> dict[str, Any]:
         return {

@@ -413,9 +413,10 @@ def _integrate(
             g = law.rate(d, v, zm)
         F[:, m], D[:, m], V[:, m], Z[:, m], z = Fm, d, v, zm, zm
         open_ = last < 0
-        if end_kind == "force":
-            ended = open_ & (F[:, m - 1] > 0) & (Fm <= 0)
-            s = F[:, m - 1] / np.where(ended, F[:, m - 1] - Fm, 1.0)
+        if end_kind in ("force", "state"):
+            e0, e1 = (F[:, m - 1], Fm) if end_kind == "force" else (Z[:, m - 1], zm)
+            ended = open_ & (e0 > 0) & (e1 <= 0)
+            s = e0 / np.where(ended, e0 - e1, 1.0)
         else:
             end = law.end_deflection(zm)
             ended = open_ & (D[:, m - 1] - end > 0) & (d - end <= 0)

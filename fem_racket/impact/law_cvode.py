@@ -137,6 +137,8 @@ def solve_law_cvode(
         d, v, z = parts(y)
         if law.end == "force":
             ev[0] = law.force(d, v, z)
+        elif law.end == "state":
+            ev[0] = z
         else:
             ev[0] = d - float(law.end_deflection(z)) if not loading[0] else d
         # re-loading needs delta to climb back past the turning point (by a round-off margin)
