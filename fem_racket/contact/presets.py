@@ -28,9 +28,9 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.validation import InputError, check_choice, check_finite
 
-__all__ = ["FAMILY_PARAMETERS", "LAW_NAMES", "PRESETS", "get_law"]
+__all__ = ["FAMILY_PARAMETERS", "FILE_KEYS", "LAW_NAMES", "PRESETS", "get_law", "law_parameters"]
 
-#: family -> {parameter name: (unit, default)}; names as on the command line and in run files.
+#: family -> {parameter (command-line dest): (unit, default)}.
 FAMILY_PARAMETERS: dict[str, dict[str, tuple[str, float]]] = {
     "hunt-crossley": {
         "hc_stiffness": ("N/m^n", 2.978e24),
@@ -48,6 +48,21 @@ FAMILY_PARAMETERS: dict[str, dict[str, tuple[str, float]]] = {
         "string_stiffness": ("N/m", 1559.0),
         "string_cubic": ("N/m^3", 8.317e8),
     },
+}
+
+#: Parameter -> its key in a run file's [contact] table and in JSON outputs (units in the key,
+#: as :meth:`ContactLaw.describe` writes them).
+FILE_KEYS = {
+    "hc_stiffness": "hc_stiffness_n_m_n",
+    "hc_exponent": "hc_exponent",
+    "hc_alpha": "hc_alpha_s_m",
+    "k1": "k1_n_m_n",
+    "k2": "k2_n_m_n",
+    "hyst_exponent": "hyst_exponent",
+    "ball_stiffness": "ball_stiffness_n_m",
+    "ball_damping": "ball_damping_n_s_m",
+    "string_stiffness": "string_stiffness_n_m",
+    "string_cubic": "string_cubic_n_m3",
 }
 
 _BUILD = {
@@ -93,3 +108,9 @@ def get_law(name: str, **params: Any) -> ContactLaw | None:
         k: check_finite(k, given.get(k, default), unit) for k, (unit, default) in spec.items()
     }
     return _BUILD[name](values)
+
+
+def law_parameters(values: dict[str, Any]) -> dict[str, Any]:
+    """The family parameters found in ``values`` (e.g. parsed options), None where not given."""
+    names = {k for spec in FAMILY_PARAMETERS.values() for k in spec}
+    return {k: values.get(k) for k in sorted(names)}

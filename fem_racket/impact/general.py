@@ -50,7 +50,10 @@ DEFAULT_STEPS = 100
 DEFAULT_BETA = 50.0
 #: First integration span as a multiple of the estimated contact time (doubled while some case
 #: has not separated, up to t_max).
-SPAN = 2.0
+SPAN = 3.0
+#: Cases whose estimated contact times differ by more than this factor run in separate groups
+#: (each with its own step), so a batch never takes the shortest case's step for all.
+GROUP_RATIO = 1.3
 #: Default t_max as a multiple of the estimated contact time.
 LIMIT = 16.0
 _NEWTON_ITER = 40
@@ -102,8 +105,8 @@ class GeneralOutcome:
         int F dt over the contact [N s].
     peak_force : ndarray
         Largest contact force [N].
-    step : float
-        Time step h [s].
+    step : ndarray
+        Time step h of each case [s] (cases with similar contact times share one).
     force, deflection, rate, state : ndarray, shape (C, N)
         F [N], delta [m], delta' [m/s] and the law's state [m] at t = m h (valid up to each
         case's separation step ``last``).
@@ -119,7 +122,7 @@ class GeneralOutcome:
     ball_velocity: np.ndarray
     impulse: np.ndarray
     peak_force: np.ndarray
-    step: float
+    step: np.ndarray
     force: np.ndarray
     deflection: np.ndarray
     rate: np.ndarray
@@ -270,7 +273,7 @@ def _solve_step(
         # damped update: never let a step more than double the force scale (cubic laws overshoot)
         dF = np.clip(dF, -2.0 * (np.abs(F) + scale), 2.0 * (np.abs(F) + scale))
         F = F + dF
-        if np.all(np.abs(dF) <= 1e-13 * scale):
+        if np.all(np.abs(dF) <= 1e-12 * (np.abs(F) + scale)):
             break
     else:
         raise RuntimeError("contact-law Newton iteration did not converge")
@@ -332,7 +335,26 @@ def solve_general(
     check_integer("steps", steps, 10)
     ncase = rec.a.shape[0]
     speed = np.broadcast_to(np.asarray(speed, dtype=float), (ncase,)).copy()
-    t_est = float(np.min(law.contact_time_estimate(1.0 / rec.compliance, np.abs(speed))))
+    t_case = np.broadcast_to(
+        law.contact_time_estimate(1.0 / rec.compliance, np.abs(speed)), (ncase,)
+    )
+    groups = _groups(t_case)
+    if len(groups) > 1:
+        parts = [
+            solve_general(
+                _subset(law, idx, ncase),
+                _subset(rec, idx, ncase),
+                speed[idx],
+                frame_velocity=None if frame_velocity is None else frame_velocity[idx],
+                steps=steps,
+                beta=beta,
+                extrapolate=extrapolate,
+                t_max=t_max,
+            )
+            for idx in groups
+        ]
+        return _merge(parts, groups, ncase)
+    t_est = float(np.min(t_case))
     t_max = LIMIT * t_est if t_max is None else check_positive("t_max", t_max, "s")
     keep = np.ones(rec.omega.size, bool)
     if beta is not None:
@@ -366,6 +388,50 @@ def solve_general(
         peak_force=rich("peak_force"),
         coarse=coarse,
     )
+
+
+def _groups(t_case: np.ndarray) -> list[np.ndarray]:
+    """Case indices grouped by estimated contact time (within :data:`GROUP_RATIO`)."""
+    order = np.argsort(t_case, kind="stable")
+    groups, start = [], 0
+    for k in range(1, order.size + 1):
+        if k == order.size or t_case[order[k]] > GROUP_RATIO * t_case[order[start]]:
+            groups.append(np.sort(order[start:k]))
+            start = k
+    return groups
+
+
+def _subset(obj: Any, idx: np.ndarray, ncase: int) -> Any:
+    """A law or receptance with its per-case array fields cut to the cases ``idx``."""
+    from dataclasses import fields
+
+    cut = {}
+    for f in fields(obj):
+        value = getattr(obj, f.name)
+        if np.ndim(value) > 0 and np.shape(value)[0] == ncase and f.name != "omega":
+            cut[f.name] = np.asarray(value)[idx]
+    return replace(obj, **cut)
+
+
+def _merge(parts: list[GeneralOutcome], groups: list[np.ndarray], ncase: int) -> GeneralOutcome:
+    """One outcome from the groups' (histories padded with NaN to the longest)."""
+    width = max(p.force.shape[1] for p in parts)
+    out: dict[str, Any] = {}
+    for name in ("contact_time", "ball_velocity", "impulse", "peak_force", "step", "fraction"):
+        arr = np.empty(ncase)
+        for p, idx in zip(parts, groups, strict=True):
+            arr[idx] = getattr(p, name)
+        out[name] = arr
+    last = np.empty(ncase, dtype=int)
+    for p, idx in zip(parts, groups, strict=True):
+        last[idx] = p.last
+    for name in ("force", "deflection", "rate", "state"):
+        arr = np.full((ncase, width), np.nan)
+        for p, idx in zip(parts, groups, strict=True):
+            h = getattr(p, name)
+            arr[idx, : h.shape[1]] = h
+        out[name] = arr
+    return GeneralOutcome(last=last, **out)
 
 
 def _integrate(
@@ -439,7 +505,7 @@ def _integrate(
         ball_velocity=speed - impulse / rec.ball_mass,
         impulse=impulse,
         peak_force=peak,
-        step=h,
+        step=np.full(ncase, h),
         force=F[:, : last.max() + 1],
         deflection=D[:, : last.max() + 1],
         rate=V[:, : last.max() + 1],

@@ -138,7 +138,7 @@ def law_histories(
     ``omega`` and ``a``: every frame coordinate (rigid ones as 0) and its shape at the impact
     point; the force is the integrator's piecewise-linear one, ending at the separation value.
     """
-    h = out.step
+    h = float(out.step[0])
     last, frac = int(out.last[0]), float(out.fraction[0])
     F = out.force[0, : last + 1].copy()
     F[last] = F[last - 1] + frac * (F[last] - F[last - 1])
@@ -275,10 +275,10 @@ def solve_law_impact(
         # the end state extrapolated like the scalars (each run conserves momentum, so does this)
         tcc = np.array([float(out.coarse.contact_time[0])])
         xc, vc = law_histories(out.coarse, fm.all_omega, a, ball_mass, speed, fv, tcc)
-        tcf = np.array([float((out.last[0] - 1 + out.fraction[0]) * out.step)])
+        tcf = np.array([float((out.last[0] - 1 + out.fraction[0]) * out.step[0])])
         xf, vf = law_histories(out, fm.all_omega, a, ball_mass, speed, fv, tcf)
         x[-1], v[-1] = (4.0 * xf[0] - xc[0]) / 3.0, (4.0 * vf[0] - vc[0]) / 3.0
-    grid = np.arange(out.state.shape[1]) * out.step
+    grid = np.arange(out.state.shape[1]) * out.step[0]
     z = np.interp(t, grid, out.state[0])
     if law.state == "memory":
         z = np.maximum(z, np.maximum.accumulate(x[:, 0] - x[:, 1:] @ a))

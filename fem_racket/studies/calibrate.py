@@ -42,7 +42,9 @@ __all__ = [
     "Family",
     "Target",
     "calibrate",
+    "clamped_histories",
     "clamped_impacts",
+    "run_file_table",
 ]
 
 log = logging.getLogger(__name__)
@@ -238,3 +240,27 @@ def calibrate(
     fit = least_squares(residuals, x0, bounds=bounds, diff_step=1e-4, max_nfev=200)
     law = fam.build(np.exp(fit.x))
     return Calibration(family, target_set, law, targets, _model_values(law, targets, ball_mass))
+
+
+def clamped_histories(
+    law: ContactLaw, speeds: Any, ball_mass: float = 0.057
+) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """(time [s], deflection [m], force [N]) of a ball on a rigid support at each speed."""
+    v = np.atleast_1d(np.asarray(speeds, dtype=float))
+    rec = Receptance(
+        np.zeros(0), np.zeros((v.size, 0)), np.zeros((v.size, 2)), np.full(v.size, ball_mass)
+    )
+    out = solve_general(law, rec, v, beta=None, extrapolate=False)
+    rows = []
+    for i in range(v.size):
+        n = int(out.last[i]) + 1
+        rows.append((np.arange(n) * out.step[i], out.deflection[i, :n], out.force[i, :n]))
+    return rows
+
+
+def run_file_table(law: ContactLaw) -> str:
+    """The law as a run file's ``[contact]`` table (keys as in JSON outputs, units in them)."""
+    lines = ["[contact]"]
+    for key, value in law.describe().items():
+        lines.append(f"{key} = {value!r}" if key != "law" else f'law = "{value}"')
+    return "\n".join(lines) + "\n"
