@@ -47,10 +47,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         "ball on a rigid surface (ITF rules) (default kawazoe-1997)",
     )
     p.add_argument(
-        "--ball-mass", type=float, default=0.057, metavar="KG", help="ball mass [kg] (0.057)"
+        "--ball-mass",
+        type=float,
+        default=0.057,
+        metavar="KG",
+        help="ball mass [kg] (default 0.057)",
     )
     p.add_argument("--json", action="store_true", help="print a JSON object")
-    add_output_options(p, what="output folder for the .toml, .json and .png files")
+    add_output_options(p, what="output folder (writes FAMILY-TARGETS .toml, .json and .png)")
     p.set_defaults(func=run)
 
 

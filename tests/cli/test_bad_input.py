@@ -572,8 +572,26 @@ MESH_ENTRIES = {
 }
 
 
+LAW_CASES = [
+    Case("law-unknown", sim("--law", "rubber"), ("--law", "invalid choice")),
+    Case("law-option-of-other-family", sim("--law", "series", "--k1", "3"), ("k1", "series")),
+    Case("law-preset-with-option", sim("--law", "itf-ball", "--hc-alpha", "0.1"), ("preset",)),
+    Case("law-negative-stiffness", sim("--law", "hysteretic", "--k1", "-1"), ("k1 = -1", "> 0")),
+    Case("law-bdf", sim("--law", "hysteretic", "--solver", "bdf"), ("solver = 'bdf'", "general")),
+    Case("calibrate-family", ["calibrate", "--family", "rubber"], ("--family", "invalid choice")),
+    Case("calibrate-mass", ["calibrate", "--ball-mass", "0"], ("ball_mass = 0", "> 0")),
+    Case("calibrate-out-file", ["calibrate", "--out", "afile"], ("afile",), A_FILE),
+]
+
 ALL_CASES = (
-    CLI_CASES + SWEEP_CASES + VTK_CASES + REFINE_CASES + REPRODUCE_CASES + OUTPUT_CASES + TOML_CASES
+    CLI_CASES
+    + SWEEP_CASES
+    + VTK_CASES
+    + REFINE_CASES
+    + REPRODUCE_CASES
+    + OUTPUT_CASES
+    + TOML_CASES
+    + LAW_CASES
 )
 MESH_CASES = {c[0]: c[1] for c in BAD_MESHES}
 
