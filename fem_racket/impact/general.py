@@ -256,25 +256,28 @@ def _solve_step(
         v = B - kv0 * F
         if memory:
             z = np.maximum(z_prev, _turn_max(start[0], start[1], d, v, h))
-        fd, fv, fz = law.partials(d, v, z)
         r1 = F - law.force(d, v, z)
-        j11 = 1.0 + fd * kd0 + fv * kv0
+        tol = 1e-12 * (np.abs(F) + scale)
         if ode:
-            gd, gv, gz = law.rate_partials(d, v, z)
             r2 = z - z_prev - 0.5 * h * (g_prev + law.rate(d, v, z))
+            if np.all(np.abs(r1) <= tol) and np.all(np.abs(r2) <= 1e-12 * (np.abs(z) + 1e-9)):
+                break
+            fd, fv, fz = law.partials(d, v, z)
+            gd, gv, gz = law.rate_partials(d, v, z)
+            j11 = 1.0 + fd * kd0 + fv * kv0
             j21 = 0.5 * h * (gd * kd0 + gv * kv0)
             j22 = 1.0 - 0.5 * h * gz
             det = j11 * j22 + fz * j21
             dF = -(r1 * j22 + fz * r2) / det
-            dz = -(j11 * r2 - j21 * r1) / det
-            z = z + dz
+            z = z - (j11 * r2 - j21 * r1) / det
         else:
-            dF = -r1 / j11
-        # damped update: never let a step more than double the force scale (cubic laws overshoot)
-        dF = np.clip(dF, -2.0 * (np.abs(F) + scale), 2.0 * (np.abs(F) + scale))
-        F = F + dF
-        if np.all(np.abs(dF) <= 1e-12 * (np.abs(F) + scale)):
-            break
+            if np.all(np.abs(r1) <= tol):
+                break
+            fd, fv, _ = law.partials(d, v, z)
+            dF = -r1 / (1.0 + fd * kd0 + fv * kv0)
+        # damped update: a step at most doubles the force scale (hardening laws overshoot)
+        cap = 2.0 * (np.abs(F) + scale)
+        F = F + np.maximum(np.minimum(dF, cap), -cap)
     else:
         raise RuntimeError("contact-law Newton iteration did not converge")
     return F, z
@@ -486,7 +489,11 @@ def _integrate(
         else:
             end = law.end_deflection(zm)
             ended = open_ & (D[:, m - 1] - end > 0) & (d - end <= 0)
-            s = _hermite_root(D[:, m - 1], V[:, m - 1], d, v, end, h) if ended.any() else frac
+            s = frac.copy()
+            if ended.any():
+                k = np.flatnonzero(ended)
+                end_k = np.broadcast_to(end, d.shape)[k]
+                s[k] = _hermite_root(D[k, m - 1], V[k, m - 1], d[k], v[k], end_k, h)
         last = np.where(ended, m, last)
         frac = np.where(ended, s, frac)
         if np.all(last >= 0):
