@@ -9,12 +9,8 @@ contact is a Volterra integral of F (free-free modal superposition)::
 (a_j: mass-normalised mode shapes at the impact point; delta_free: the ball's and the frame's
 motion without contact, e.g. a swinging racket). With F piecewise linear on a uniform grid of step
 h (first-order hold) every mode's response is exact, and the kernel weights of a unit hat function
-at lag l >= 1 are closed forms (no round-off-prone differences)::
-
-    displacement  4 a^2 sin(omega l h) sin^2(omega h / 2) / (omega^3 h)      (rigid: l h^2)
-    velocity      4 a^2 cos(omega l h) sin^2(omega h / 2) / (omega^2 h)      (rigid: h)
-
-so each step solves only the scalar contact equation ``F_m = law(delta_m(F_m), delta'_m(F_m), z)``
+are closed forms (:mod:`fem_racket.impact.receptance`), so each step solves only the scalar
+contact equation ``F_m = law(delta_m(F_m), delta'_m(F_m), z)``
 (delta_m affine in F_m; Newton on one unknown, or two with an ODE state advanced by the
 trapezoidal rule). Flexible modes above ``beta`` times the contact frequency pi / t_c are replaced
 by one residual pseudo-mode per case with their static flexibility sum a^2/omega^2 and their
@@ -25,7 +21,7 @@ interpolant of delta, which keeps the error expansion smooth). Errors are measur
 CVODE (:mod:`fem_racket.impact.law_cvode`) by ``scripts/bench_laws.py`` and the tests. Many
 cases (positions, speeds, law parameters) advance together as arrays; separation is found per
 case on the law's own end condition (deflection falling through its end value: cubic Hermite
-root in the last step; or force through zero).
+root in the last step; or the force or the law state through zero).
 """
 
 from __future__ import annotations
@@ -37,9 +33,10 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
+from fem_racket.impact.receptance import Receptance, free_motion, kernels
 from fem_racket.validation import check_integer, check_positive
 
-__all__ = ["DEFAULT_BETA", "DEFAULT_STEPS", "GeneralOutcome", "Receptance", "solve_general"]
+__all__ = ["DEFAULT_BETA", "DEFAULT_STEPS", "GeneralOutcome", "solve_general"]
 
 log = logging.getLogger(__name__)
 
@@ -57,38 +54,6 @@ GROUP_RATIO = 1.3
 #: Default t_max as a multiple of the estimated contact time.
 LIMIT = 16.0
 _NEWTON_ITER = 40
-
-
-@dataclass(frozen=True, eq=False)
-class Receptance:
-    """The frame at the impact points of a batch of cases, in free-free modal terms.
-
-    Attributes
-    ----------
-    omega : ndarray, shape (n,)
-        Flexible angular frequencies [rad/s], shared by the batch.
-    a : ndarray, shape (C, n)
-        Mass-normalised flexible mode shapes at each case's impact point [1/sqrt(kg)].
-    rigid : ndarray, shape (C, 2)
-        Rigid-mode shapes (translation, rotation about the CG) at the impact point [1/sqrt(kg)].
-    ball_mass : ndarray, shape (C,)
-        m_B [kg].
-    """
-
-    omega: np.ndarray
-    a: np.ndarray
-    rigid: np.ndarray
-    ball_mass: np.ndarray
-
-    @property
-    def compliance(self) -> np.ndarray:
-        """1/m_B + sum a_r^2 [1/kg]: the ball's and the rigid frame's acceleration per newton."""
-        return 1.0 / self.ball_mass + np.sum(self.rigid**2, axis=1)
-
-    @property
-    def clamped(self) -> bool:
-        """True when there is no frame (a ball on a rigid support)."""
-        return self.a.shape[1] == 0 and not np.any(self.rigid)
 
 
 @dataclass(frozen=True, eq=False)
@@ -130,84 +95,6 @@ class GeneralOutcome:
     last: np.ndarray
     fraction: np.ndarray
     coarse: GeneralOutcome | None = None
-
-
-def _pseudo_mode(rec: Receptance, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per-case frequency [rad/s] and weight a^2 of the pseudo-mode standing for dropped modes.
-
-    Weight sum a^2 (the dropped modes' high-frequency mobility) and static flexibility
-    sum a^2 / omega^2, i.e. omega_r^2 = sum a^2 / sum (a^2 / omega^2) (DESIGN section 9).
-    """
-    dropped = rec.a[:, ~keep] ** 2
-    mob = dropped.sum(axis=1)
-    flex = np.sum(dropped / rec.omega[~keep] ** 2, axis=1)
-    wr = np.sqrt(mob / np.where(flex > 0, flex, 1.0))
-    return np.where(flex > 0, wr, rec.omega[~keep][0]), mob
-
-
-def _hat_tables(w: np.ndarray, h: float, nsteps: int) -> tuple[np.ndarray, ...]:
-    """Per unit a^2, the kernels of modes ``w`` [rad/s], shape w.shape + (N,): Kd, Kv, Hd, Hv."""
-    lag = np.arange(nsteps) * h
-    wh = w[..., None] * h
-    half = 0.5 * wh
-    phase = w[..., None] * lag
-    sw, cw = np.sin(phase), np.cos(phase)
-    s2 = np.sin(half) ** 2
-    Kd = 4.0 * s2 / (wh * w[..., None] ** 2) * sw
-    Kv = 4.0 * s2 / (wh * w[..., None]) * cw
-    # lag 0: only the rising half of the hat has acted
-    small = wh[..., 0] < 1e-2
-    x = wh[..., 0]
-    x_minus_sin = np.where(small, x**3 / 6 - x**5 / 120 + x**7 / 5040, x - np.sin(x))
-    Kd[..., 0] = x_minus_sin / (x * w**2)
-    Kv[..., 0] = 2.0 * s2[..., 0] / (x * w)
-    # the first sample's half hat (1 - t/h on [0, h]): sin(w t - w h/2) by angle addition
-    ch, sh, sinc = np.cos(half), np.sin(half), np.sin(half) / half
-    Hd = (-cw + (cw * ch + sw * sh) * sinc) / w[..., None] ** 2
-    Hv = (sw - (sw * ch - cw * sh) * sinc) / w[..., None]
-    return Kd, Kv, Hd, Hv
-
-
-def _kernels(
-    rec: Receptance, keep: np.ndarray, h: float, nsteps: int
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Hat-function kernels Kd, Kv (lag l) and half-hat (the t = 0 sample) Hd, Hv, shape (C, N)."""
-    cr = rec.compliance[:, None]
-    lag = np.arange(nsteps) * h
-    Kd = cr * lag * h
-    Kd[:, 0] = cr[:, 0] * h * h / 6.0
-    Kv = cr * h + 0.0 * lag
-    Kv[:, 0] = cr[:, 0] * h / 2.0
-    Hd = cr * (lag * h / 2.0 - h * h / 6.0)
-    Hv = cr * h / 2.0 + 0.0 * lag
-    out = [Kd, Kv, Hd, Hv]
-    if keep.any():
-        a2 = rec.a[:, keep] ** 2
-        for k, table in enumerate(_hat_tables(rec.omega[keep], h, nsteps)):
-            out[k] = out[k] + a2 @ table
-    if not keep.all():
-        wr, mob = _pseudo_mode(rec, keep)
-        for k, table in enumerate(_hat_tables(wr, h, nsteps)):
-            out[k] = out[k] + mob[:, None] * table
-    return out[0], out[1], out[2], out[3]
-
-
-def _free_motion(
-    rec: Receptance, speed: np.ndarray, frame_velocity: np.ndarray | None, t: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """delta and delta' without contact: ball at ``speed``, frame with initial modal velocities."""
-    d = speed[:, None] * t[None, :]
-    v = np.broadcast_to(speed[:, None], d.shape).copy()
-    if frame_velocity is not None:
-        rig, flex = frame_velocity[:, :2], frame_velocity[:, 2:]
-        wr = np.sum(rec.rigid * rig, axis=1)
-        d -= wr[:, None] * t
-        v -= wr[:, None]
-        w = rec.omega
-        amp = rec.a * flex
-        d -= (amp / w) @ np.sin(np.outer(w, t))
-        v -= amp @ np.cos(np.outer(w, t))
-    return d, v
 
 
 def _turn_max(d0, v0, d1, v1, h) -> np.ndarray:
@@ -451,9 +338,9 @@ def _integrate(
     ncase = rec.a.shape[0]
     meff = 1.0 / rec.compliance
     nsteps = int(np.ceil(span / h)) + 1
-    Kd, Kv, Hd, Hv = _kernels(rec, keep, h, nsteps)
+    Kd, Kv, Hd, Hv = kernels(rec, keep, h, nsteps)
     t = np.arange(nsteps) * h
-    dfree, vfree = _free_motion(rec, speed, frame_velocity, t)
+    dfree, vfree = free_motion(rec, speed, frame_velocity, t)
 
     F = np.zeros((ncase, nsteps))
     D = np.zeros((ncase, nsteps))

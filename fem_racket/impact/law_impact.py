@@ -28,10 +28,10 @@ from fem_racket.impact.general import (
     DEFAULT_BETA,
     DEFAULT_STEPS,
     GeneralOutcome,
-    Receptance,
     solve_general,
 )
 from fem_racket.impact.law_cvode import solve_law_cvode
+from fem_racket.impact.receptance import Receptance
 from fem_racket.impact.system import output_times
 from fem_racket.validation import InputError, check_choice, check_finite
 

@@ -11,8 +11,9 @@ from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.presets import PRESETS
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.contact.spring_dashpot import SpringDashpot
-from fem_racket.impact.general import Receptance, solve_general
+from fem_racket.impact.general import solve_general
 from fem_racket.impact.law_impact import receptance, solve_law_impact
+from fem_racket.impact.receptance import Receptance
 
 LAWS = {
     "hunt-crossley": HuntCrossley.from_cor(8e16, 9.0, 0.83, 30.0),
