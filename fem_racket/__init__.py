@@ -4,6 +4,9 @@ Reproduces and extends Kawazoe & Kanda (1997), "Analysis of impact phenomena in 
 ball-racket system", JSME Int. J. C 40(1).
 """
 
+from fem_racket.contact.hunt_crossley import HuntCrossley
+from fem_racket.contact.hysteretic import Hysteretic
+from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import (
     Ball,
     LinearContact,
@@ -11,9 +14,6 @@ from fem_racket.contact.linear import (
     kcb_from_speed,
     zeta_from_cor,
 )
-from fem_racket.contact.hunt_crossley import HuntCrossley
-from fem_racket.contact.hysteretic import Hysteretic
-from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.presets import get_law
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.contact.spring_dashpot import SpringDashpot
