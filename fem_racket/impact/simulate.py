@@ -350,7 +350,11 @@ def simulate(
     law : ContactLaw or str, optional
         The ball/string law: a :class:`~fem_racket.contact.law.ContactLaw` or the name of one
         with its default or preset parameters (:data:`fem_racket.contact.presets.LAW_NAMES`);
-        None or ``"linear"``: the paper's spring-dashpot from ``kcb`` and ``zeta``.
+        None or ``"linear"``: the paper's spring-dashpot from ``kcb`` and ``zeta``. Under any
+        other law (or ``solver="general"``, or a moving racket) every frame mode is available:
+        ``"general"`` keeps those below 50 x the contact frequency plus a residual pseudo-mode,
+        ``"cvode"`` all of them, so ``basis`` and ``modes`` do not apply; the law's own end
+        condition replaces ``separation`` (which still applies to the linear law).
     frame_velocity : (v, omega) or array, optional
         Initial racket motion: its centre of gravity moving at v [m/s] along the ball's travel
         and turning at omega [rad/s] about it (positive turns the tip along the ball's travel),
