@@ -102,6 +102,19 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     law = LinearContact.for_speed(speed, kcb=p["kcb"], zeta=p["zeta"])
     kcb, zeta = law.stiffness, law.zeta
     key, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
+    if spec.law is not None:  # any contact law: one impact by the general integrator (or CVODE)
+        r = simulate(
+            model,
+            position=p["position"],
+            speed=speed,
+            ball_mass=mass,
+            law=spec.law,
+            solver=spec.solver,
+            output_step=None,
+            rtol=spec.rtol,
+            atol=spec.atol,
+        )
+        return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, np.nan
     if spec.solver != "exact":
         r = simulate(
             model,

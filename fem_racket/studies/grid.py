@@ -161,6 +161,9 @@ class SweepSpec:
         Fixed top-side rigidity of the standard frame [N m^2] (0.88 EI1 when None).
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
+    law : ContactLaw or None
+        A contact law other than the paper's (every case then runs the general integrator, or
+        CVODE); None: the paper's linear law from ``kcb`` and ``zeta``.
     """
 
     values: dict[str, Any]
@@ -172,6 +175,7 @@ class SweepSpec:
     modes: int | None = DEFAULT_MODES
     rtol: float = 1e-10
     atol: float = 1e-12
+    law: Any = None
 
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
@@ -203,8 +207,13 @@ class SweepSpec:
                         f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
+        if kwargs.get("law") is not None and kwargs.get("solver", "exact") == "exact":
+            kwargs["solver"] = "general"  # the exact path is the linear law's only
         spec = cls(values=values, frame=frame, ei2=ei2, **kwargs)
-        check_choice("solver", spec.solver, SOLVERS)
+        if spec.law is not None:
+            check_choice("solver", spec.solver, ("exact", "general", "cvode"))
+        else:
+            check_choice("solver", spec.solver, SOLVERS)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)
         check_choice("basis", spec.basis, ("modal", "physical"))
         if spec.solver == "exact" and spec.basis != "modal":
@@ -272,6 +281,7 @@ class SweepSpec:
             "rtol": self.rtol,
             "atol": self.atol,
             "version": __version__,
+            **({} if self.law is None else {"law": self.law.describe()}),
         }
 
     @cached_property

@@ -83,3 +83,28 @@ def test_calibrate_writes_table_run_file_and_plot(capsys, tmp_path):
     assert (tmp_path / "hysteretic-kawazoe-1997.png").read_bytes()[:4] == b"\x89PNG"
     fit = json.loads((tmp_path / "hysteretic-kawazoe-1997.json").read_text())
     assert fit["meets_targets"] and fit["provenance"]["parameters"]["family"] == "hysteretic"
+
+
+def test_sweep_with_a_law_records_it(capsys, tmp_path):
+    import xarray as xr
+
+    out = tmp_path / "s.nc"
+    code, _, err = run(
+        capsys,
+        "sweep",
+        "--law",
+        "kawazoe-1997-nonlinear",
+        "--position",
+        "0.6,0.8",
+        "--speed",
+        "30",
+        "--serial",
+        "--quiet",
+        "--out",
+        out,
+    )
+    assert code == 0, err
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["contact_law"] == "hysteretic" and ds.attrs["solver"] == "general"
+        ref = simulate(position=0.8, speed=30.0, law="kawazoe-1997-nonlinear", output_step=None)
+        assert float(ds.cor.sel(position=0.8)) == pytest.approx(ref.cor, rel=1e-12)
