@@ -8,7 +8,8 @@ system is linear, so at fixed K_CB the COR and t_c do not depend on the speed an
 scales with it: cases differing only in speed share one solve, and every case is solved at
 V_B0 = 1 m/s, which makes results independent of the order in which cases are run.
 
-Exact solver: :func:`fem_racket.impact.closed_form.exact_outcome` (scalars only). BDF solvers:
+Exact solver: :func:`fem_racket.impact.closed_form.exact_outcome` (scalars only). Another
+contact law: the chunk's cases batched per frame (:mod:`fem_racket.studies.law_cases`). BDF solvers:
 :func:`fem_racket.simulate` with 1 us output steps, the peak force being the largest over them.
 """
 
@@ -27,6 +28,7 @@ from fem_racket.impact.closed_form import exact_outcome
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.system import NoSeparationError, modal_system
 from fem_racket.studies.grid import SweepSpec
+from fem_racket.studies.law_cases import law_chunk
 
 __all__ = ["VARIABLES", "clear_caches", "run_chunk"]
 
@@ -151,6 +153,8 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     A case whose ball does not separate within the time limit, or whose solver fails, gets NaN
     (the sweep reports how many); any other error stops the sweep.
     """
+    if spec.law is not None and spec.solver == "general":
+        return law_chunk(spec, chunk, _model)
     out = np.empty((len(chunk), len(VARIABLES)))
     for row, index in enumerate(chunk):
         try:

@@ -107,4 +107,5 @@ def test_sweep_with_a_law_records_it(capsys, tmp_path):
     with xr.open_dataset(out) as ds:
         assert ds.attrs["contact_law"] == "hysteretic" and ds.attrs["solver"] == "general"
         ref = simulate(position=0.8, speed=30.0, law="kawazoe-1997-nonlinear", output_step=None)
-        assert float(ds.cor.sel(position=0.8)) == pytest.approx(ref.cor, rel=1e-12)
+        # a batch shares the step of its shortest contact: both within the 1e-5 target
+        assert float(ds.cor.sel(position=0.8)) == pytest.approx(ref.cor, abs=1e-5)
