@@ -360,7 +360,8 @@ def simulate(
         and turning at omega [rad/s] about it (positive turns the tip along the ball's travel),
         or initial velocities of the free-free modes [sqrt(kg) m/s], 2 rigid (translation,
         rotation about the CG) then every flexible mode of the model. A moving racket is
-        integrated by the general integrator (or CVODE); ``speed`` stays the ball's speed.
+        integrated by the general integrator (or CVODE); ``speed`` stays the ball's speed (and
+        sets the paper's K_CB unless ``kcb`` is given: pass the K_CB of the relative speed).
 
     Returns
     -------
