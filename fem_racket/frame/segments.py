@@ -7,18 +7,21 @@ a step at 204 mm: EI1 = 146 N m^2, EI2 = 0.88 EI1, rhoA1 = 0.696 kg/m, rhoA2 = 0
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
 
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, check_range
 
 __all__ = [
+    "EI_RANGE",
     "EI_RATIO",
     "PAPER_EI1",
     "RIGID_EI1",
     "Frame",
     "Segment",
+    "check_ei_factor",
     "rigid_frame",
     "standard_frame",
 ]
@@ -29,6 +32,11 @@ EI_RATIO = 0.88
 PAPER_EI1 = 146.0
 #: EI1 of the paper's "rigid" racket [N m^2] (section 3.1).
 RIGID_EI1 = 9999.0
+#: Bending rigidities [N m^2] the tool accepts. Above 1e9 (7e6 x the paper's racket) the frame is
+#: rigid to 1e-10 in COR while the exact path's sum rules lose accuracy (sweep and simulate differ
+#: by 2e-9 at 1e12 and 4e-8 at 1e14, and at 1e20 the closed form is ill-conditioned); 1e-6 is
+#: a frame limp as a string (COR -0.778, equal in every path).
+EI_RANGE = (1e-6, 1e9)
 
 
 @dataclass(frozen=True)
@@ -51,7 +59,7 @@ class Segment:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "length", check_positive("segment length", self.length, "m"))
-        object.__setattr__(self, "EI", check_positive("EI", self.EI, "N m^2"))
+        object.__setattr__(self, "EI", check_range("EI", self.EI, *EI_RANGE, unit="N m^2"))
         object.__setattr__(self, "rhoA", check_positive("rhoA", self.rhoA, "kg/m"))
 
 
@@ -90,9 +98,22 @@ class Frame:
         """Return a frame with every segment's EI and rhoA multiplied by the given factors."""
         check_positive("ei_factor", ei_factor)
         check_positive("rhoa_factor", rhoa_factor)
+        check_ei_factor(ei_factor, [s.EI for s in self.segments])
         return Frame(
             tuple(replace(s, EI=s.EI * ei_factor, rhoA=s.rhoA * rhoa_factor) for s in self.segments)
         )
+
+
+def check_ei_factor(ei_factor: float, ei: Sequence[float] | np.ndarray) -> float:
+    """Return ``ei_factor`` if every rigidity in ``ei`` [N m^2] times it stays in EI_RANGE."""
+    f = check_positive("ei_factor", ei_factor)
+    low, high = float(np.min(ei)) * f, float(np.max(ei)) * f
+    if not (EI_RANGE[0] <= low and high <= EI_RANGE[1]):
+        raise InputError(
+            f"ei_factor = {ei_factor!r} is not allowed: the scaled EI "
+            f"({low:.3g} to {high:.3g} N m^2) must lie in [{EI_RANGE[0]:g}, {EI_RANGE[1]:g}] N m^2"
+        )
+    return f
 
 
 def standard_frame(ei1: float = PAPER_EI1, ei2: float | None = None) -> Frame:
@@ -110,8 +131,8 @@ def standard_frame(ei1: float = PAPER_EI1, ei2: float | None = None) -> Frame:
     Frame
         Grip side 0.204 m with rhoA1 = 0.696 kg/m, top side 0.476 m with rhoA2 = 0.458 kg/m.
     """
-    ei1 = check_positive("ei1", ei1, "N m^2")
-    ei2 = EI_RATIO * ei1 if ei2 is None else check_positive("ei2", ei2, "N m^2")
+    ei1 = check_range("ei1", ei1, *EI_RANGE, unit="N m^2")
+    ei2 = EI_RATIO * ei1 if ei2 is None else check_range("ei2", ei2, *EI_RANGE, unit="N m^2")
     return Frame((Segment(0.204, ei1, 0.696), Segment(0.476, ei2, 0.458)))
 
 
