@@ -78,16 +78,21 @@ class FrameMesh:
                     "need one per cell"
                 )
             bad = ~np.isfinite(arr) | (arr <= 0.0)
-            allowed = "a finite number > 0"
-            if name == "EI":
-                bad |= (arr < EI_RANGE[0]) | (arr > EI_RANGE[1])
-                allowed = f"in [{EI_RANGE[0]:g}, {EI_RANGE[1]:g}] N m^2"
             if np.any(bad):
                 i = int(np.argmax(bad))
                 raise InputError(
                     f"mesh cell data {name} = {float(arr[i])!r} {unit} in cell {i} "
-                    f"(x = {p[i]:g}..{p[i + 1]:g} m) is not allowed: must be {allowed}"
+                    f"(x = {p[i]:g}..{p[i + 1]:g} m) is not allowed: must be a finite number > 0"
                 )
+        ratio = ei / ra
+        bad = (ratio < EI_RANGE[0]) | (ratio > EI_RANGE[1])
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            raise InputError(
+                f"mesh cell data EI / rhoA = {float(ratio[i]):.3g} m^4/s^2 in cell {i} "
+                f"(x = {p[i]:g}..{p[i + 1]:g} m) is not allowed: must lie in "
+                f"[{EI_RANGE[0]:g}, {EI_RANGE[1]:g}] m^4/s^2"
+            )
         p = p - p[0]
         for name, arr in (("points", p), ("EI", ei), ("rhoA", ra)):
             arr.setflags(write=False)
@@ -105,7 +110,7 @@ class FrameMesh:
 
     def scaled(self, ei_factor: float = 1.0) -> FrameMesh:
         """The same mesh with every cell's EI multiplied by ``ei_factor``."""
-        check_ei_factor(ei_factor, self.EI)
+        check_ei_factor(ei_factor, self.EI / self.rhoA)
         return FrameMesh(self.points, self.EI * ei_factor, self.rhoA)
 
 

@@ -22,7 +22,16 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.frame.segments import EI_RANGE, EI_RATIO, PAPER_EI1, Frame, check_ei_factor
+from fem_racket.frame.segments import (
+    EI_RATIO,
+    PAPER_EI1,
+    RHOA1,
+    RHOA2,
+    Frame,
+    check_ei_factor,
+    check_stiffness,
+    standard_ei1_range,
+)
 from fem_racket.impact.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.limits import MAX_CASES, check_grid_size
@@ -74,8 +83,6 @@ def _check_value(name: str, value: object) -> float | int:
                 f"{name} = {value!r} is not allowed: must be an integer from 1 to {MAX_ELEMENTS}"
             )
         return int(number)
-    if name == "ei1":
-        return check_range(name, value, *EI_RANGE, unit=unit)
     return check_positive(name, value, "" if unit == "1" else unit)
 
 
@@ -229,19 +236,26 @@ class SweepSpec:
         return spec
 
     def _check_rigidity(self) -> None:
-        """Every frame of the grid (EI1, EI2 or the custom frame's EI, times ei_factor) within
-        EI_RANGE, so that no case fails on it mid-sweep."""
+        """Every frame of the grid (EI1, EI2 or the custom frame's EI, times ei_factor) with
+        EI / rhoA within EI_RANGE, so that no case fails on it mid-sweep."""
         if isinstance(self.frame, FrameMesh):
-            ei = self.frame.EI
+            ratio = self.frame.EI / self.frame.rhoA
         elif isinstance(self.frame, Frame):
-            ei = [s.EI for s in self.frame.segments]
+            ratio = [s.EI / s.rhoA for s in self.frame.segments]
         else:
             ei1 = np.atleast_1d(self.values["ei1"])
-            ei2 = ei1 * EI_RATIO if self.ei2 is None else [self.ei2]
-            ei = np.concatenate([ei1, np.atleast_1d(ei2)])
+            if self.ei2 is None:
+                for v in (ei1.min(), ei1.max()):
+                    check_range("ei1", float(v), *standard_ei1_range(), unit="N m^2")
+                ei2 = ei1 * EI_RATIO
+            else:
+                for v in (ei1.min(), ei1.max()):
+                    check_stiffness("ei1", float(v), RHOA1)
+                ei2 = np.atleast_1d(check_stiffness("ei2", self.ei2, RHOA2))
+            ratio = np.concatenate([ei1 / RHOA1, ei2 / RHOA2])
         factors = np.atleast_1d(self.values["ei_factor"])
         for f in (float(np.min(factors)), float(np.max(factors))):
-            check_ei_factor(f, ei)
+            check_ei_factor(f, ratio)
 
     # -- the grid ----------------------------------------------------------------------------
     @cached_property
