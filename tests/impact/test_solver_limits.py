@@ -41,3 +41,18 @@ def test_output_count_refusal_names_the_parameter_given():
     with pytest.raises(InputError, match=r"^kcb = 1e-06 N/m is not allowed"):
         simulate(kcb=1e-6)
     assert simulate(kcb=1e-6, output_step=None).contact_time > 100.0
+
+
+def test_ill_conditioned_exact_path_is_a_one_line_refusal(standard_model):
+    # Modes scaled 1e16 (EI / rhoA ~ 2e18, far beyond EI_RANGE, reachable only by scaling the
+    # modes directly): the closed form's self-check fails. It was a RuntimeError traceback.
+    from fem_racket.impact.closed_form import solve_exact
+    from fem_racket.impact.system import modal_system
+    from fem_racket.validation import AccuracyError
+
+    fm = standard_model.modes().scaled(1e16)
+    g = standard_model.fe.point_vector(0.75 * standard_model.mesh.length)
+    system = modal_system(fm.all_omega, fm.all_shapes, g, 0.057, 2.74e4, 4.68, 20.0)
+    with pytest.raises(AccuracyError, match="^solver = 'exact' cannot solve this case") as err:
+        solve_exact(system)
+    assert "\n" not in str(err.value)
