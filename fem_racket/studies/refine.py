@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.frame.continuous import free_free_frequencies
-from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
+from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.impact.simulate import simulate
@@ -161,19 +161,18 @@ def _orders(elements: np.ndarray, errors: np.ndarray) -> np.ndarray:
 
 
 def _check_elements(elements: Sequence[int]) -> np.ndarray:
+    allowed = f"must be a list of integers from 1 to {MAX_ELEMENTS}"
     try:
         counts = [int(n) for n in elements]
     except (TypeError, ValueError):
-        raise InputError(
-            f"elements = {elements!r} is not allowed: must be a list of integers >= 1"
-        ) from None
+        raise InputError(f"elements = {elements!r} is not allowed: {allowed}") from None
     bad = [
-        n for n, e in zip(counts, elements, strict=True) if n < 1 or isinstance(e, bool) or n != e
+        n
+        for n, e in zip(counts, elements, strict=True)
+        if not 1 <= n <= MAX_ELEMENTS or isinstance(e, bool) or n != e
     ]
     if not counts or bad:
-        raise InputError(
-            f"elements = {list(elements)!r} is not allowed: must be a list of integers >= 1"
-        )
+        raise InputError(f"elements = {list(elements)!r} is not allowed: {allowed}")
     return np.unique(counts)
 
 

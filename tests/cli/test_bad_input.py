@@ -212,7 +212,16 @@ VTK_CASES = [
 ]
 
 REFINE_CASES = [
-    Case("refine-elements-zero", refine("--elements", "5", "0"), ("elements = [5, 0]", ">= 1")),
+    Case(
+        "refine-elements-zero",
+        refine("--elements", "5", "0"),
+        ("elements = [5, 0]", "from 1 to 50000"),
+    ),
+    Case(
+        "refine-elements-over-limit",
+        refine("--elements", "5", "60000"),
+        ("elements = [5, 60000]", "from 1 to 50000"),
+    ),
     Case("refine-elements-fraction", refine("--elements", "5", "2.5"), ("--elements", "int")),
     Case(
         "refine-elements-comma-fraction",
@@ -482,7 +491,7 @@ TOML_CASES = [
     T(
         "toml-refine-elements-zero",
         toml("[refine]\nelements = [5, 0]\n", command="refine"),
-        ("elements = [5, 0]", ">= 1"),
+        ("elements = [5, 0]", "from 1 to 50000"),
     ),
     T(
         "toml-refine-elements-not-array",
