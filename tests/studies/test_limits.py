@@ -81,3 +81,21 @@ def test_pool_workers_run_blas_on_one_thread():
             progress=False,
         )
     assert np.all(np.concatenate(got) == 1)
+
+
+def test_failed_case_is_nan_in_every_variable(monkeypatch, caplog):
+    # Issue 12: a failed case kept its contact time and peak force. A case refused by the
+    # modes' residual check (made impossible here) is NaN in every variable and counted.
+    from fem_racket.frame import curvature
+    from fem_racket.studies.cases import clear_caches
+
+    clear_caches()
+    monkeypatch.setattr(curvature, "RESIDUAL_TOL", 0.0)
+    try:
+        ds = sweep(position=[0.6, 0.9], elements=300, backend="serial", progress=False)
+    finally:
+        clear_caches()
+    for name in ds.data_vars:
+        assert np.all(np.isnan(ds[name].values)), name
+    assert ds.attrs["failed_cases"] == 2
+    assert "failed its accuracy check" in caplog.text
