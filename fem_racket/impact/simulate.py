@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import Ball, LinearContact
+from fem_racket.frame.hermite import strain_energy
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
@@ -149,7 +150,9 @@ class ImpactResult:
         out = {
             "ball_kinetic": 0.5 * self.ball.mass * self.ball_velocity**2,
             "frame_kinetic": 0.5 * np.einsum("ij,ij->i", qd, (fe.M @ qd.T).T),
-            "frame_strain": 0.5 * np.einsum("ij,ij->i", q, (fe.K @ q.T).T),
+            # Cell curvatures, not q^T K q: K q cancels ~(h beta)^-4 of its digits on fine meshes
+            # (3e-3 of the strain energy at 5000 elements).
+            "frame_strain": 0.5 * strain_energy(fe, q.T),
             "spring": 0.5 * self.contact.stiffness * self.deflection**2,
             "dissipated": cumulative_simpson(self.damping * rate**2, x=self.t, initial=0.0),
         }
