@@ -57,6 +57,8 @@ class ImpactResult:
     peak_force : float
         Largest contact force during contact [N], from the integrator's dense solution (the
         closed form is maximised exactly), whatever the output times.
+    rtol, atol : float or None
+        Tolerances of the BDF integrator that ran (None for the exact solver, which has none).
     """
 
     model: FrameModel
@@ -73,6 +75,8 @@ class ImpactResult:
     frame_displacement: np.ndarray
     frame_velocity: np.ndarray
     peak_force: float
+    rtol: float | None = None
+    atol: float | None = None
 
     # -- scalar outcomes -------------------------------------------------------------------
     @property
@@ -165,12 +169,20 @@ class ImpactResult:
         return mv + self.frame_velocity @ one, self.x_impact * mv + self.frame_velocity @ lever
 
     def summary(self) -> dict[str, Any]:
-        """Scalar results and settings, JSON-ready, units in the keys."""
+        """Scalar results and :meth:`settings`, JSON-ready, units in the keys."""
         return {
             "cor": self.cor,
             "contact_time_s": self.contact_time,
             "rebound_speed_m_s": -self.rebound_velocity,
             "peak_force_n": self.peak_force,
+            **self.settings(),
+        }
+
+    def settings(self) -> dict[str, Any]:
+        """What the run used, not what was asked: the solver that ran and its tolerances, the
+        flexible modes kept, K_CB and zeta (derived from the speed unless given), C_CB.
+        JSON-ready, units in the keys; every provenance records it under ``"used"``."""
+        return {
             "solver": self.solver,
             "separation": self.separation,
             "basis": self.basis,
@@ -182,6 +194,8 @@ class ImpactResult:
             "kcb_n_m": self.contact.stiffness,
             "zeta": self.contact.zeta,
             "ccb_n_s_m": self.damping,
+            "rtol": self.rtol,
+            "atol": self.atol,
         }
 
 
@@ -315,4 +329,6 @@ def simulate(
         frame_displacement=q,
         frame_velocity=qd,
         peak_force=traj.peak_force,
+        rtol=None if solver == "exact" else rtol,
+        atol=None if solver == "exact" else atol,
     )

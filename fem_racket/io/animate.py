@@ -22,8 +22,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import ImpactSeries, field_name, impact_series
-from fem_racket.outputs import atomic_output, check_output_path, provenance, sidecar_path
+from fem_racket.outputs import atomic_output, check_output_path, sidecar_path
 from fem_racket.validation import InputError, check_positive
 
 if TYPE_CHECKING:
@@ -234,7 +235,7 @@ def render_animation(
         "size_px": list(size),
         "time_s": series.t.tolist(),
     }
-    meta = provenance({**result.summary(), **settings, **(parameters or {})})
+    meta = impact_provenance(result, {**settings, **(parameters or {})})
     with (
         atomic_output(path, overwrite=overwrite) as tmp,
         atomic_output(sidecar, overwrite=overwrite) as tmp_json,

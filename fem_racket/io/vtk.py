@@ -14,8 +14,9 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import BALL_FIELDS, FRAME_FIELDS, field_name, impact_series
-from fem_racket.outputs import atomic_folder, provenance
+from fem_racket.outputs import atomic_folder
 
 if TYPE_CHECKING:
     from fem_racket.impact.simulate import ImpactResult
@@ -86,7 +87,7 @@ def write_vtk_series(
         "ball_fields": list(BALL_FIELDS),
         "time_s": series.t.tolist(),
     }
-    meta = provenance({**result.summary(), **settings, **(parameters or {})})
+    meta = impact_provenance(result, {**settings, **(parameters or {})})
     with atomic_folder(folder, overwrite=overwrite, marker=PROVENANCE_NAME) as tmp:
         entries = []
         for i in range(series.n_steps):

@@ -42,7 +42,13 @@ def test_figure_script_writes_data_and_png(path, tmp_path, capsys):
             with Image.open(p) as im:  # provenance in the PNG's text chunks
                 im.load()
                 meta = json.loads(im.text["provenance"])
-            assert meta["parameters"] == {"figure": p.stem, "quick": True} and meta["version"]
+            assert meta["parameters"] == {
+                "figure": p.stem,
+                "quick": True,
+                "format": "png",
+                "dpi": 150.0,
+            }
+            assert meta["version"] and meta["used"]["modes"] == 40
         else:
             with open(p, newline="") as fh:
                 rows = list(csv.reader(fh))
