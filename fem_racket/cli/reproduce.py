@@ -38,8 +38,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--overwrite",
         action="store_true",
-        help="also replace existing files this command did not write (its own are replaced "
-        "anyway)",
+        help="also replace existing files this command did not write (its own are replaced anyway)",
     )
     add_figure_options(p)
     add_quiet_option(p)

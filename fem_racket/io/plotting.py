@@ -158,7 +158,7 @@ def plot_refinement(
             if quantity == "cor"
             else "|t_c(N) - t_c(previous N)| [s]"
         )
-    _element_ticks(ax, n)
+    element_ticks(ax, n)
     ax.set_xlabel("elements")
     ax.set_title(f"{study.family} meshes", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
@@ -166,7 +166,7 @@ def plot_refinement(
     return ax
 
 
-def _element_ticks(ax: Axes, n: np.ndarray) -> None:
+def element_ticks(ax: Axes, n: np.ndarray) -> None:
     """Label the log x axis with the element counts themselves (5, 10, 20 ...)."""
     from matplotlib.ticker import FixedLocator, NullLocator, ScalarFormatter
 
