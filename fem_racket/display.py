@@ -12,7 +12,7 @@ import html
 import math
 from collections.abc import Iterable, Sequence
 
-__all__ = ["html_table", "number", "short_repr"]
+__all__ = ["html_table", "number", "short_repr", "span"]
 
 
 def number(value: float, digits: int = 5) -> str:
@@ -23,6 +23,13 @@ def number(value: float, digits: int = 5) -> str:
     if not math.isfinite(value):
         return str(value)
     return f"{value:.{digits}g}"
+
+
+def span(values: Iterable[float], unit: str, digits: int = 5) -> str:
+    """``"146 N m^2"`` for equal values, ``"128.48-146 N m^2"`` for a range."""
+    vals = [float(v) for v in values]
+    low, high = number(min(vals), digits), number(max(vals), digits)
+    return f"{low} {unit}" if low == high else f"{low}-{high} {unit}"
 
 
 def short_repr(name: str, fields: Iterable[tuple[str, str]]) -> str:

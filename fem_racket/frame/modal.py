@@ -18,6 +18,7 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
+from fem_racket.display import number, short_repr
 from fem_racket.frame.forms import FrameFE
 from fem_racket.validation import check_integer
 
@@ -49,6 +50,17 @@ class MassProperties:
     cg: float
     inertia: float
     length: float
+
+    def __repr__(self) -> str:
+        return short_repr(
+            "MassProperties",
+            [
+                ("mass", f"{number(self.mass)} kg"),
+                ("cg", f"{number(self.cg)} m ({number(self.cg_over_length, 4)} L)"),
+                ("inertia", f"{number(self.inertia)} kg m^2"),
+                ("length", f"{number(self.length)} m"),
+            ],
+        )
 
     @property
     def cg_over_length(self) -> float:
@@ -86,6 +98,20 @@ class FreeModes:
     shapes: np.ndarray
     omega: np.ndarray
     props: MassProperties
+
+    def __repr__(self) -> str:
+        f = self.frequencies
+        shown = ", ".join(number(v) for v in f[:4]) + (
+            f", ..., {number(f[-1])}" if f.size > 4 else ""
+        )
+        return short_repr(
+            "FreeModes",
+            [
+                ("flexible", str(f.size)),
+                ("frequencies", f"[{shown}] Hz"),
+                ("mass", f"{number(self.props.mass)} kg"),
+            ],
+        )
 
     @property
     def frequencies(self) -> np.ndarray:

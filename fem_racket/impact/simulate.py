@@ -78,6 +78,24 @@ class ImpactResult:
     rtol: float | None = None
     atol: float | None = None
 
+    # -- notebook forms (fem_racket.impact.result_views) ------------------------------------
+    def __repr__(self) -> str:
+        from fem_racket.impact.result_views import impact_repr
+
+        return impact_repr(self)
+
+    def _repr_html_(self) -> str:
+        from fem_racket.impact.result_views import impact_html
+
+        return impact_html(self)
+
+    def to_xarray(self, x: np.ndarray | None = None) -> Any:
+        """Time histories as an ``xarray.Dataset`` over ``time`` [s], with the frame's
+        deflection over ``x`` [m] (the mesh nodes by default) and the summary in ``attrs``."""
+        from fem_racket.impact.result_views import impact_dataset
+
+        return impact_dataset(self, x)
+
     # -- scalar outcomes -------------------------------------------------------------------
     @property
     def contact_time(self) -> float:

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from fem_racket.display import number, short_repr
 from fem_racket.io.figure_files import DEFAULT_DPI, check_dpi, check_figure_format
 from fem_racket.outputs import atomic_output, check_output_path, provenance
 from fem_racket.paper.claims import AGREES, DIFFERS, NOT_CHECKABLE, Claim, build_claims
@@ -81,6 +82,19 @@ class Reproduction:
     claims: list[Claim]
     files: list[Path]
     seconds: dict[str, float]
+
+    def __repr__(self) -> str:
+        c = self.counts()
+        return short_repr(
+            "Reproduction",
+            [
+                ("figures", str(len(self.figures))),
+                ("claims", f"{len(self.claims)} ({c[AGREES]} agree, {c[DIFFERS]} differ, "
+                 f"{c[NOT_CHECKABLE]} not checkable)"),
+                ("files", str(len(self.files))),
+                ("seconds", number(sum(self.seconds.values()), 3)),
+            ],
+        )  # fmt: skip
 
     def counts(self) -> dict[str, int]:
         """Number of claims per verdict."""
