@@ -20,7 +20,13 @@ from fem_racket.paper.figures.script import figure_main
 
 def main(argv: Sequence[str] | None = None) -> list[Path]:
     """Compute and write the figure; returns the files written."""
-    return figure_main("fig02_03", __doc__.splitlines()[0], argv, default_out="output/figures")
+    return figure_main(
+        "fig02_03",
+        __doc__.splitlines()[0],
+        argv,
+        default_out="output/figures",
+        runtime="~2-4 s here, mostly start-up; --quick (coarse grids, for tests) about the same",
+    )
 
 
 if __name__ == "__main__":

@@ -18,7 +18,13 @@ from fem_racket.paper.figures.script import figure_main
 
 def main(argv: Sequence[str] | None = None) -> list[Path]:
     """Compute and write the figure; returns the files written."""
-    return figure_main("fig13", __doc__.splitlines()[0], argv, default_out="output/figures")
+    return figure_main(
+        "fig13",
+        __doc__.splitlines()[0],
+        argv,
+        default_out="output/figures",
+        runtime="~5 s here (up to ~15 s on a busy machine); --quick (coarse grid, for tests) ~3 s",
+    )
 
 
 if __name__ == "__main__":

@@ -236,6 +236,13 @@ def plot_sweep(
     if fixed:
         ax.set_title(", ".join(fixed), fontsize=10)
     if hue is not None:
-        ax.legend(title=_name(da[hue]), fontsize=8, title_fontsize=8, loc="best")
+        # Beside the axes, so that it never covers a line.
+        ax.legend(
+            title=_name(da[hue]),
+            fontsize=8,
+            title_fontsize=8,
+            loc="center left",
+            bbox_to_anchor=(1.01, 0.5),
+        )
     ax.grid(alpha=0.3, which="both")
     return ax

@@ -85,3 +85,18 @@ def test_every_script_is_run_by_a_test():
     assert others, "no non-figure scripts found"
     missing = [s for s in others if not re.search(rf"\b{s}\b", tests)]
     assert not missing, f"scripts not run by any test: {missing}"
+
+
+def test_tour_runs_as_a_script(tmp_path, capsys, monkeypatch):
+    """scripts/tour.py (jupytext percent cells) runs top to bottom as a plain script."""
+    import runpy
+
+    path = SCRIPTS / "tour.py"
+    assert path.read_text().count("# %%") >= 10  # cells a notebook opens
+    monkeypatch.setattr("sys.argv", [str(path), "--quick", "--out", str(tmp_path)])
+    runpy.run_path(str(path), run_name="__main__")
+    out = capsys.readouterr().out
+    assert out.startswith("ImpactResult(cor=0.37657") and "RefinementStudy(" in out
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"force.png", "sweep.png", "refine.png", "impact_vtk"} <= names
+    assert (tmp_path / "impact_vtk" / "impact.pvd").is_file()
