@@ -182,6 +182,8 @@ class RefinementStudy:
             "cor_richardson": self.richardson(self.cor).tolist(),
             "contact_time_richardson_s": self.richardson(self.contact_time_s).tolist(),
             "cor_observed_order": self.observed_order_of(self.cor).tolist(),
+            "contact_time_observed_order": self.observed_order_of(self.contact_time_s).tolist(),
+            "impact_modes_used": self.impact_modes_used.tolist(),
             "build_time_s": self.build_time_s.tolist(),
             "impact_time_s": self.impact_time_s.tolist(),
             "skipped_elements": list(self.skipped),
