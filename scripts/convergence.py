@@ -8,7 +8,7 @@ Richardson estimate. Prints the tables and (re)writes convergence.csv and conver
 default :func:`fem_racket.simulate` path (80 modes) on large meshes, to show it does not grow
 with the mesh.
 
-Run time here: ~3 s (--timing ~15 s); --quick (5-20 elements, for tests) ~2 s.
+Run time here: ~4 s (--timing ~6 s); --quick (5-20 elements, for tests) ~3 s.
 
 Usage: python scripts/convergence.py [--quick] [--timing] [--out DIR] [--format png|svg|pdf]
        [--dpi N]
@@ -59,7 +59,7 @@ def main(argv: list[str] | None = None) -> dict:
     """Run the study; returns the studies by family (and the timing rows with --timing)."""
     ap = argparse.ArgumentParser(
         description=__doc__.splitlines()[0],
-        epilog="Run time here: ~3 s (--timing ~15 s); --quick ~2 s.",
+        epilog="Run time here: ~4 s (--timing ~6 s); --quick ~3 s.",
     )
     ap.add_argument("--quick", action="store_true", help="5-20 elements only (for tests)")
     ap.add_argument("--timing", action="store_true", help="per-impact time on 20-1280 elements")

@@ -13,7 +13,7 @@
 #
 # One impact, a sweep, a refinement study, a VTK export for ParaView and (when this version
 # has `fem-racket map`) a power map. Run it as a script,
-# `python scripts/tour.py [--quick] [--out DIR]` (about 10 s here, 4 s with `--quick`; it
+# `python scripts/tour.py [--quick] [--out DIR]` (about 10 s here, 5 s with `--quick`; it
 # rewrites its own folder, `output/tour/` by default), or open it as a notebook:
 # `jupytext --to notebook scripts/tour.py` (each `# %%` is a cell).
 
@@ -27,8 +27,10 @@ import fem_racket as fr
 from fem_racket.cli import main as cli
 from fem_racket.outputs import provenance
 
-ap = argparse.ArgumentParser(description="A tour of fem_racket (~10 s; --quick ~4 s).")
-ap.add_argument("--quick", action="store_true", help="smaller sweep and refinement (~4 s)")
+ap = argparse.ArgumentParser(
+    description="A tour of fem_racket.", epilog="Run time here: ~10 s; --quick ~5 s."
+)
+ap.add_argument("--quick", action="store_true", help="smaller sweep and refinement (~5 s)")
 ap.add_argument("--out", default="output/tour", metavar="DIR", help="output folder")
 args, _ = ap.parse_known_args()  # a notebook kernel passes its own arguments
 OUT = Path(args.out)
