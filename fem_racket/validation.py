@@ -11,6 +11,7 @@ import math
 from collections.abc import Iterable
 
 __all__ = [
+    "AccuracyError",
     "InputError",
     "check_choice",
     "check_finite",
@@ -22,6 +23,14 @@ __all__ = [
 
 class InputError(ValueError):
     """A user-supplied value is outside its allowed range or form."""
+
+
+class AccuracyError(InputError):
+    """A case the tool cannot compute to its stated accuracy (an a-posteriori check failed).
+
+    Raised instead of returning a number that may be wrong; like :class:`InputError` it carries
+    a one-line message naming what was asked and why it is refused.
+    """
 
 
 def _fmt(name: str, value: object, unit: str) -> str:
@@ -81,10 +90,21 @@ def check_choice(name: str, value: object, choices: Iterable[str]) -> str:
     return str(value)
 
 
-def check_integer(name: str, value: object, minimum: int = 1) -> int:
-    """Return ``value`` as an int, or raise unless it is an integer >= ``minimum``."""
+def check_integer(name: str, value: object, minimum: int = 1, maximum: int | None = None) -> int:
+    """Return ``value`` as an int, or raise unless it is an integer >= ``minimum`` (and
+    <= ``maximum`` when given)."""
     import numbers
 
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
-        raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= {minimum}")
+    allowed = (
+        f"an integer >= {minimum}"
+        if maximum is None
+        else (f"an integer from {minimum} to {maximum}")
+    )
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, numbers.Integral)
+        or value < minimum
+        or (maximum is not None and value > maximum)
+    ):
+        raise InputError(f"{name} = {value!r} is not allowed: must be {allowed}")
     return int(value)

@@ -17,6 +17,7 @@ from collections.abc import Sequence
 
 from fem_racket.cli import config, modes, refine, reproduce, simulate, sweep, vtk
 from fem_racket.cli.common import OneLineErrorParser, apply_config
+from fem_racket.studies.executors import pin_blas_threads
 from fem_racket.validation import InputError
 from fem_racket.version import __version__
 
@@ -55,6 +56,7 @@ EXIT_BROKEN_PIPE = 141
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit code (0 ok, 2 bad input, 141 output pipe closed)."""
+    pin_blas_threads()
     try:
         code = _run(argv)
         sys.stdout.flush()  # a closed pipe shows here, not at interpreter exit

@@ -27,6 +27,7 @@ from fem_racket.impact.closed_form import exact_outcome
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.system import NoSeparationError, modal_system
 from fem_racket.studies.grid import SweepSpec
+from fem_racket.validation import AccuracyError
 
 __all__ = ["VARIABLES", "clear_caches", "run_chunk"]
 
@@ -135,14 +136,19 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     """Results of the cases ``chunk`` (flat indices), shape (len(chunk), len(VARIABLES)).
 
-    A case whose ball does not separate within the time limit, or whose solver fails, gets NaN
-    (the sweep reports how many); any other error stops the sweep.
+    A case whose ball does not separate within the time limit, whose solver fails or refuses
+    it (:class:`~fem_racket.validation.AccuracyError`), or any of whose values is not finite,
+    gets NaN in every variable (the sweep reports how many); any other error stops the sweep.
     """
     out = np.empty((len(chunk), len(VARIABLES)))
     for row, index in enumerate(chunk):
         try:
             out[row] = _case(spec, spec.case(int(index)))
-        except (NoSeparationError, RuntimeError, np.linalg.LinAlgError) as exc:
+        except (NoSeparationError, AccuracyError, RuntimeError, np.linalg.LinAlgError) as exc:
             log.warning("case %d failed (NaN in the results): %s", index, exc)
+            out[row] = np.nan
+            continue
+        if not np.all(np.isfinite(out[row])):
+            log.warning("case %d failed (NaN in the results): a result is not finite", index)
             out[row] = np.nan
     return out

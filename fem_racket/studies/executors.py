@@ -10,6 +10,11 @@ process (which checkpoints it) as soon as it arrives, in completion order.
   threaded parent), with the package preloaded.
 - ``dask``: ``distributed.Client(scheduler)`` - the very code path used on a cluster; each
   worker needs fem_racket installed.
+
+Every process that computes (the CLI, each pool worker, each Dask task) runs BLAS on one thread
+(:func:`pin_blas_threads`): the work is many small dense products, which multithreaded OpenBLAS
+makes 2-4x slower on an idle 2-core machine and 10-60x slower on a loaded one, and a fixed thread
+count also keeps results bit-identical from run to run.
 """
 
 from __future__ import annotations
@@ -19,13 +24,14 @@ import os
 import re
 import sys
 from collections.abc import Callable, Sequence
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from fem_racket.validation import InputError, check_choice
 
-__all__ = ["BACKENDS", "check_scheduler", "run_chunks"]
+__all__ = ["BACKENDS", "check_scheduler", "pin_blas_threads", "run_chunks"]
 
 log = logging.getLogger(__name__)
 
@@ -35,6 +41,20 @@ Work = Callable[..., np.ndarray]
 Done = Callable[[np.ndarray, np.ndarray], None]
 
 _ADDRESS = re.compile(r"^(tcp|tls|ucx|ws|wss)://[^\s/:]+:\d{1,5}$")
+
+
+def pin_blas_threads() -> None:
+    """Limit every BLAS library loaded in this process to one thread (threadpoolctl; persists
+    for the life of the process)."""
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(limits=1, user_api="blas")
+
+
+def _pinned(work: Work, chunk: np.ndarray, **kwargs: Any) -> np.ndarray:
+    """``work(chunk, **kwargs)`` on one BLAS thread (the first call in a worker pins it)."""
+    pin_blas_threads()
+    return work(chunk, **kwargs)
 
 
 def check_scheduler(address: str) -> str:
@@ -96,7 +116,9 @@ def _processes(
 ) -> None:
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    with ProcessPoolExecutor(max_workers=workers, mp_context=_pool_context()) as pool:
+    with ProcessPoolExecutor(
+        max_workers=workers, mp_context=_pool_context(), initializer=pin_blas_threads
+    ) as pool:
         pending = {pool.submit(work, c, **kwargs): c for c in chunks}
         try:
             while pending:
@@ -127,7 +149,7 @@ def _dask(
         raise InputError(f"scheduler = {scheduler!r} is not reachable: {exc}") from None
     try:
         log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
-        futures = client.map(work, list(chunks), pure=False, **kwargs)
+        futures = client.map(partial(_pinned, work), list(chunks), pure=False, **kwargs)
         index = {f.key: c for f, c in zip(futures, chunks, strict=True)}
         for fut in as_completed(futures, loop=client.loop):
             chunk = index[fut.key]

@@ -20,11 +20,21 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.frame.segments import PAPER_EI1, Frame
-from fem_racket.impact.integrators import SOLVERS
+from fem_racket.frame.segments import (
+    EI_RATIO,
+    PAPER_EI1,
+    RHOA1,
+    RHOA2,
+    Frame,
+    check_ei_factor,
+    check_stiffness,
+    standard_ei1_range,
+)
+from fem_racket.impact.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.studies.limits import MAX_CASES, check_grid_size
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -67,9 +77,12 @@ def _check_value(name: str, value: object) -> float | int:
     if name == "zeta":
         return check_range(name, value, 0.0, 1.0, include_high=False)
     if name == "elements":
-        if isinstance(value, bool) or not float(check_positive(name, value)).is_integer():
-            raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= 1")
-        return int(float(value))  # type: ignore[arg-type]
+        number = check_positive(name, value)
+        if isinstance(value, bool) or not number.is_integer() or number > MAX_ELEMENTS:
+            raise InputError(
+                f"{name} = {value!r} is not allowed: must be an integer from 1 to {MAX_ELEMENTS}"
+            )
+        return int(number)
     return check_positive(name, value, "" if unit == "1" else unit)
 
 
@@ -92,8 +105,10 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
             start, stop, num = float(parts[0]), float(parts[1]), float(parts[2])
         except ValueError:
             raise InputError(f"{name} = {text!r} is not allowed: must be {form}") from None
-        if not (num.is_integer() and num >= 1):
-            raise InputError(f"{name} = {text!r} is not allowed: num must be an integer >= 1")
+        if not (num.is_integer() and 1 <= num <= MAX_CASES):
+            raise InputError(
+                f"{name} = {text!r} is not allowed: num must be an integer from 1 to {MAX_CASES}"
+            )
         if not (math.isfinite(start) and math.isfinite(stop)):
             raise InputError(f"{name} = {text!r} is not allowed: start and stop must be finite")
         if log and (start <= 0.0 or stop <= 0.0):
@@ -213,9 +228,34 @@ class SweepSpec:
             )
         if spec.modes is not None:
             check_integer("modes", spec.modes)
-        check_positive("rtol", spec.rtol)
-        check_positive("atol", spec.atol)
+        check_solver_settings(
+            spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
+        )
+        spec._check_rigidity()
+        check_grid_size(spec.shape, spec.dims)
         return spec
+
+    def _check_rigidity(self) -> None:
+        """Every frame of the grid (EI1, EI2 or the custom frame's EI, times ei_factor) with
+        EI / rhoA within EI_RANGE, so that no case fails on it mid-sweep."""
+        if isinstance(self.frame, FrameMesh):
+            ratio = self.frame.EI / self.frame.rhoA
+        elif isinstance(self.frame, Frame):
+            ratio = [s.EI / s.rhoA for s in self.frame.segments]
+        else:
+            ei1 = np.atleast_1d(self.values["ei1"])
+            if self.ei2 is None:
+                for v in (ei1.min(), ei1.max()):
+                    check_range("ei1", float(v), *standard_ei1_range(), unit="N m^2")
+                ei2 = ei1 * EI_RATIO
+            else:
+                for v in (ei1.min(), ei1.max()):
+                    check_stiffness("ei1", float(v), RHOA1)
+                ei2 = np.atleast_1d(check_stiffness("ei2", self.ei2, RHOA2))
+            ratio = np.concatenate([ei1 / RHOA1, ei2 / RHOA2])
+        factors = np.atleast_1d(self.values["ei_factor"])
+        for f in (float(np.min(factors)), float(np.max(factors))):
+            check_ei_factor(f, ratio)
 
     # -- the grid ----------------------------------------------------------------------------
     @cached_property
