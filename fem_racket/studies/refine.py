@@ -302,8 +302,8 @@ def refinement_study(
         build_time_s=np.array([r[3] for r in rows]),
         impact_time_s=np.array([r[4] for r in rows]),
         skipped=skipped,
-        impact_settings=_common_settings(rows[0][3][0]),
-        impact_modes_used=np.array([r[3][0].n_modes for r in rows]),
+        impact_settings=_common_settings(rows[0][2][0]),
+        impact_modes_used=np.array([r[2][0].n_modes for r in rows]),
     )
 
 
