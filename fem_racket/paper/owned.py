@@ -19,9 +19,13 @@ import html
 import json
 import os
 import re
+from collections.abc import Iterable
 from pathlib import Path
 
-__all__ = ["written_by_fem_racket"]
+from fem_racket.outputs import check_output_path
+from fem_racket.validation import InputError
+
+__all__ = ["check_replaceable", "written_by_fem_racket"]
 
 SOFTWARE = "fem_racket"
 _REPORT_TAIL = re.compile(r"<!-- provenance: (\{.*\}) -->\s*\Z", re.S)
@@ -120,3 +124,17 @@ def written_by_fem_racket(path: str | os.PathLike) -> bool:
     if suffix == ".csv":
         return _listed(path)
     return False
+
+
+def check_replaceable(targets: Iterable[str | os.PathLike], *, overwrite: bool = False) -> None:
+    """Before any work: each existing target must be one of our own outputs, unless
+    ``overwrite``; an InputError names the first that is not (and any unwritable place)."""
+    for target in targets:
+        p = Path(target)
+        if overwrite or not p.exists() or p.is_dir() or written_by_fem_racket(p):
+            check_output_path(p, overwrite=True)  # a folder, an unwritable place
+            continue
+        raise InputError(
+            f"output = '{p}' already exists and is not a file fem-racket reproduce wrote "
+            "(no fem_racket provenance in it): pass --overwrite to replace it"
+        )

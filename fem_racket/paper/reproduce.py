@@ -25,7 +25,7 @@ from typing import Any
 
 from fem_racket.display import number, short_repr
 from fem_racket.io.figure_files import DEFAULT_DPI, check_dpi, check_figure_format
-from fem_racket.outputs import atomic_output, check_output_path, provenance
+from fem_racket.outputs import atomic_output, provenance
 from fem_racket.paper.claims import AGREES, DIFFERS, NOT_CHECKABLE, Claim, build_claims
 from fem_racket.paper.figures import (
     FIGURES,
@@ -34,7 +34,7 @@ from fem_racket.paper.figures import (
     used_settings,
     write_figure,
 )
-from fem_racket.paper.owned import written_by_fem_racket
+from fem_racket.paper.owned import check_replaceable
 from fem_racket.progress import progress_bar
 from fem_racket.validation import InputError
 
@@ -119,18 +119,6 @@ def _figure_link(title: str, path: str) -> str:
     if path.endswith(".pdf"):
         return f"[{title} (PDF)]({path})"
     return f"![{title}]({path})"
-
-
-def _check_targets(targets: list[Path], overwrite: bool) -> None:
-    """Before any work: every existing target must be one of our own outputs, or ``overwrite``."""
-    for p in targets:
-        if overwrite or not p.exists() or p.is_dir() or written_by_fem_racket(p):
-            check_output_path(p, overwrite=True)  # a folder, an unwritable place
-            continue
-        raise InputError(
-            f"output = '{p}' already exists and is not a file fem-racket reproduce wrote "
-            "(no fem_racket provenance in it): pass --overwrite to replace it"
-        )
 
 
 def render_report(
@@ -281,7 +269,7 @@ def reproduce(
     targets = [*written, out / "values.json"]
     if report is not None:
         targets.append(Path(report))
-    _check_targets(targets, overwrite)
+    check_replaceable(targets, overwrite=overwrite)
     meta = provenance(
         {"quick": quick, "figures": keys, "format": fmt, "dpi": dpi, **(parameters or {})}
     )
