@@ -92,6 +92,6 @@ def impact_behaviour(data: FigureData) -> Figure:
         f"up to the shorter contact ({times[-1] * 1e3:.2f} ms)",
     )
     a.grid(alpha=0.3)
-    a.legend(fontsize=8, ncol=6, loc="lower center")
+    a.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.0, 0.5))  # off the curves
     fig.suptitle(data.title + " (displacements positive in the ball's incoming direction)")
     return fig
