@@ -12,7 +12,10 @@ scripts) is saved by :func:`save_figure`:
 - an SVG carries it in its metadata (``<dc:description>``, the JSON, and ``<dc:creator>``), a PDF
   in its document information (``/Subject``, the JSON, and ``/Creator``).
 
-The file is written atomically (:func:`fem_racket.outputs.atomic_output`).
+The file is written atomically (:func:`fem_racket.outputs.atomic_output`). With
+``keep_unchanged`` a PNG whose image (every chunk but the text ones) equals the existing file's
+is left as it is, provenance included, so regenerating committed figures that did not change
+leaves no difference for version control.
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ from __future__ import annotations
 import io
 import json
 import os
+import struct
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -92,6 +96,25 @@ def _png(fig: Any, dpi: float) -> bytes:
     return out.getvalue()
 
 
+def _image_chunks(data: bytes) -> list[bytes]:
+    """The chunks of a PNG file except its text and time chunks (what the image is)."""
+    chunks, i = [], 8
+    while i + 8 <= len(data):
+        (size,) = struct.unpack(">I", data[i : i + 4])
+        kind = data[i + 4 : i + 8]
+        if kind not in (b"tEXt", b"zTXt", b"iTXt", b"tIME"):
+            chunks.append(data[i : i + 12 + size])
+        i += 12 + size
+    return chunks
+
+
+def _same_image(path: Path, data: bytes) -> bool:
+    try:
+        return _image_chunks(path.read_bytes()) == _image_chunks(data)
+    except OSError:
+        return False
+
+
 def save_figure(
     fig: Any,
     path: str | os.PathLike,
@@ -99,6 +122,7 @@ def save_figure(
     *,
     dpi: float = DEFAULT_DPI,
     overwrite: bool = False,
+    keep_unchanged: bool = False,
 ) -> Path:
     """Save the matplotlib figure ``fig`` to ``path`` (PNG, SVG or PDF by suffix) with ``meta``.
 
@@ -113,14 +137,19 @@ def save_figure(
         Resolution [dots per inch], in :data:`DPI_RANGE`.
     overwrite : bool
         Replace an existing file.
+    keep_unchanged : bool
+        Leave an existing PNG (with ``overwrite``) whose image would not change.
     """
     fmt = figure_format(path)
     dpi = check_dpi(dpi)
     text = json.dumps(dict(meta), sort_keys=True, default=str)
     creator = f"{meta.get('software', 'fem_racket')} {meta.get('version', '')}".strip()
+    png = _png(fig, dpi) if fmt == "png" else b""
+    if png and keep_unchanged and overwrite and _same_image(Path(path), png):
+        return Path(path)
     with atomic_output(path, overwrite=overwrite) as tmp:
         if fmt == "png":
-            tmp.write_bytes(_png(fig, dpi))
+            tmp.write_bytes(png)
             add_png_provenance(tmp, meta)
         elif fmt == "svg":
             fig.savefig(

@@ -114,6 +114,15 @@ def _cell(text: str) -> str:
     return text.replace("|", "\\|").replace("\n", " ")
 
 
+def _same_report(path: Path, text: str) -> bool:
+    """True if the report at ``path`` says ``text`` (its closing provenance comment aside)."""
+    try:
+        old = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return False
+    return old[: old.rfind("\n<!-- provenance: ")] == text
+
+
 def _figure_link(title: str, path: str) -> str:
     """Markdown that shows a PNG or SVG, and links a PDF (which a Markdown viewer cannot show)."""
     if path.endswith(".pdf"):
@@ -154,7 +163,8 @@ def render_report(
         f"`values.json` into `{img}/`, and rewrites this file. The PNGs are committed (so this "
         f"page shows them right after `git clone`), the CSVs and `values.json` are not. It "
         f"replaces the files it wrote before (recognised by their provenance), never another "
-        f"file (`--overwrite` forces that). `--out DIR` picks another folder (the image links "
+        f"file (`--overwrite` forces that), and leaves a figure or this report as it is when "
+        f"only its provenance would change. `--out DIR` picks another folder (the image links "
         f"follow it), `--format svg|pdf` and `--dpi N` the figures' format and resolution, "
         f"`--quick` a coarse grid for tests.",
         "",
@@ -280,7 +290,16 @@ def reproduce(
     for key in progress_bar(keys, desc="reproduce", unit="figure", enabled=progress):
         t0 = time.perf_counter()
         data = FIGURES[key].compute(quick)
-        files += write_figure(FIGURES[key], data, out, overwrite=True, meta=meta, fmt=fmt, dpi=dpi)
+        files += write_figure(
+            FIGURES[key],
+            data,
+            out,
+            overwrite=True,
+            meta=meta,
+            fmt=fmt,
+            dpi=dpi,
+            keep_unchanged=True,
+        )
         done[key] = data
         seconds[key] = time.perf_counter() - t0
         log.info("%s: %.2f s", key, seconds[key])
@@ -295,8 +314,9 @@ def reproduce(
     if report is not None:
         rel = os.path.relpath(out.resolve(), Path(report).resolve().parent).replace(os.sep, "/")
         text = render_report(done, claims, rel, quick=quick, fmt=fmt)
-        text += f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
-        with atomic_output(report, overwrite=True) as tmp:
-            tmp.write_text(text)
+        if not _same_report(Path(report), text):
+            stamp = f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
+            with atomic_output(report, overwrite=True) as tmp:
+                tmp.write_text(text + stamp)
         files.append(Path(report))
     return Reproduction(done, claims, files, seconds)

@@ -113,9 +113,12 @@ def test_reproduce_replaces_its_own_files_but_never_a_users(tmp_path):
 
     out = tmp_path / "figs"
     first = reproduce(out, quick=True, figures=["fig04"])
+    png = out / "fig04_frame_modes.png"
+    committed = png.read_bytes()
     again = reproduce(out, quick=True, figures=["fig04"])
     assert [p.name for p in again.files] == [p.name for p in first.files]
-    png = out / "fig04_frame_modes.png"
+    # An unchanged image is left as it is (no difference for version control).
+    assert png.read_bytes() == committed
     Image.new("RGB", (8, 8)).save(png)  # a user's image, without our provenance
     before = png.read_bytes()
     with pytest.raises(InputError, match="not a file fem-racket reproduce wrote"):
@@ -142,3 +145,11 @@ def test_full_reproduction_matches_the_committed_verdicts(tmp_path):
     report = tmp_path / "REPRODUCTION.md"
     assert main(["reproduce", "--out", str(tmp_path / "paper"), "--report", str(report)]) == 0
     assert verdicts(report.read_text()) == verdicts((ROOT / "REPRODUCTION.md").read_text())
+
+
+def test_rerun_leaves_an_unchanged_report_as_it_is(quick_run):
+    """The committed report is not rewritten when only its provenance would change."""
+    _, out, report = quick_run
+    before = report.read_text()
+    assert main(["reproduce", "--out", str(out), "--report", str(report), "--quick"]) == 0
+    assert report.read_text() == before

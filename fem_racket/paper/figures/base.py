@@ -88,11 +88,13 @@ def write_figure(
     meta: Mapping[str, Any] | None = None,
     fmt: str = "png",
     dpi: float = DEFAULT_DPI,
+    keep_unchanged: bool = False,
 ) -> list[Path]:
     """Write the tables and the figure of ``data`` into ``out_dir``; returns the paths written.
 
     The figure (``fmt``: png, svg or pdf; ``dpi`` [dots per inch]) carries the provenance
-    ``meta`` (:func:`fem_racket.outputs.provenance`; by default one naming the figure)."""
+    ``meta`` (:func:`fem_racket.outputs.provenance`; by default one naming the figure). With
+    ``keep_unchanged`` an existing PNG whose image would not change is left as it is."""
     from fem_racket.paper import plots
     from fem_racket.paper.plots.common import pyplot
 
@@ -104,7 +106,12 @@ def write_figure(
     fig = getattr(plots, spec.plot)(data)
     try:
         save_figure(
-            fig, paths[-1], meta or provenance({"figure": spec.name}), dpi=dpi, overwrite=overwrite
+            fig,
+            paths[-1],
+            meta or provenance({"figure": spec.name}),
+            dpi=dpi,
+            overwrite=overwrite,
+            keep_unchanged=keep_unchanged,
         )
     finally:
         pyplot().close(fig)
