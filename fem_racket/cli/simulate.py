@@ -30,10 +30,10 @@ from fem_racket.cli.common import (
 )
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.impact.simulate import simulate
+from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
     atomic_output,
     check_output_path,
-    provenance,
     sidecar_path,
     write_sidecar,
 )
@@ -87,7 +87,7 @@ def _histories(result) -> dict[str, Any]:
 
 def _write(args: argparse.Namespace, result, summary: dict[str, Any]) -> None:
     history = _histories(result)
-    meta = provenance(run_parameters(args))
+    meta = impact_provenance(result, run_parameters(args))
     if Path(args.out).suffix.lower() == ".json":
         data = {"provenance": meta, "summary": summary}
         history = {k: v.tolist() for k, v in history.items()}

@@ -2,8 +2,15 @@
 
 Every writer takes the output path (written atomically, never silently replaced unless
 ``overwrite``); only the CLI and scripts default to ``output/``. Provenance
-(:func:`fem_racket.outputs.provenance`: version, date, the study's settings and ``parameters``)
-goes into the PNG's text chunks and, for the CSV, into the sidecar ``<file>.csv.json``.
+(:func:`fem_racket.outputs.provenance`: version, date, the study's settings and ``parameters``,
+and under ``"used"`` what the impacts used: modes kept per mesh, K_CB, zeta, ...) goes into the
+figure (PNG, SVG or PDF: :func:`fem_racket.io.figure_files.save_figure`) and, for the CSV, into
+the sidecar ``<file>.csv.json``.
+
+The table gives each quantity in one unit (t_c and its change in ms). The Richardson estimate
+(order 4) is printed only where the three finest meshes show that order (3-5); elsewhere the
+line says why it is left out: the changes are at the floor set by the modal truncation and
+round-off (~1e-8), or not yet in the asymptotic range.
 """
 
 from __future__ import annotations
@@ -16,14 +23,9 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.outputs import (
-    add_png_provenance,
-    atomic_output,
-    provenance,
-    sidecar_path,
-    write_sidecar,
-)
-from fem_racket.studies.refine import RefinementStudy
+from fem_racket.io.figure_files import DEFAULT_DPI, save_figure
+from fem_racket.outputs import atomic_output, provenance, sidecar_path, write_sidecar
+from fem_racket.studies.refine import ASYMPTOTIC_ORDERS, RefinementStudy
 
 __all__ = ["csv_files", "format_study", "plot_studies", "study_provenance", "write_csv"]
 
@@ -45,9 +47,13 @@ def study_provenance(
         "speed_m_s": first.speed,
         "frequencies_compared": int(first.exact_frequencies_hz.size),
         "exact_frequencies_hz": first.exact_frequencies_hz.tolist(),
-        "impact_solver": "exact (modal basis)",
     }
-    return provenance({**settings, **(parameters or {})})
+    meta = provenance({**settings, **(parameters or {})})
+    meta["used"] = {
+        family: {**s.impact_settings, "modes_per_mesh": s.impact_modes_used.tolist()}
+        for family, s in studies.items()
+    }
+    return meta
 
 
 def format_study(study: RefinementStudy) -> str:
@@ -69,21 +75,30 @@ def format_study(study: RefinementStudy) -> str:
         row += f" {study.build_time_s[i]:>9.3f} {study.impact_time_s[i] * 1e3:>11.2f}"
         lines.append(row)
     lines.append(
-        f"{'cells':>6} {'x/L':>6} {'COR':>12} {'|dCOR|':>9} {'t_c [ms]':>10} {'|dt_c| [s]':>10}"
+        f"{'cells':>6} {'x/L':>6} {'COR':>12} {'|dCOR|':>9} {'t_c [ms]':>10} {'|dt_c| [ms]':>11}"
     )
     dc, dt = study.change(study.cor), study.change(study.contact_time_s)
     for j, x in enumerate(study.positions):
         for i, n in enumerate(study.elements):
             lines.append(
                 f"{n:>6} {x:>6.3f} {study.cor[i, j]:>12.9f} {_num(dc[i, j], '9.2e')} "
-                f"{study.contact_time_s[i, j] * 1e3:>10.6f} {_num(dt[i, j], '10.2e')}"
+                f"{study.contact_time_s[i, j] * 1e3:>10.6f} {_num(dt[i, j] * 1e3, '11.2e')}"
             )
-        lines.append(
-            f"{'Richardson':>13} {study.richardson(study.cor)[j]:>12.9f} {'':>9} "
-            f"{study.richardson(study.contact_time_s)[j] * 1e3:>10.6f}   "
-            f"(observed COR order {_num(study.observed_order_of(study.cor)[j], '.2f').strip()})"
-        )
+        lines.append(_richardson_line(study, j))
     return "\n".join(lines)
+
+
+def _richardson_line(study: RefinementStudy, j: int) -> str:
+    """The Richardson row of impact point ``j``, or why it is left out."""
+    cor, tc = study.richardson(study.cor)[j], study.richardson(study.contact_time_s)[j]
+    p_cor = _num(study.observed_order_of(study.cor)[j], ".2f").strip()
+    p_tc = _num(study.observed_order_of(study.contact_time_s)[j], ".2f").strip()
+    line = f"{'Richardson':>13} {_num(cor, '12.9f')} {'':>9} {_num(tc * 1e3, '10.6f')}"
+    line += f"   (observed order: COR {p_cor}, t_c {p_tc}"
+    if np.isfinite(cor) and np.isfinite(tc):
+        return line + ")"
+    low, high = ASYMPTOTIC_ORDERS
+    return line + f": '-' where outside {low:g}-{high:g}, not extrapolated)"
 
 
 def _num(v: float, fmt: str) -> str:
@@ -135,17 +150,21 @@ def plot_studies(
     *,
     overwrite: bool = False,
     parameters: Mapping[str, Any] | None = None,
+    dpi: float = DEFAULT_DPI,
 ) -> Path:
     """Log-log plot: frequency errors and COR changes against the number of elements.
 
-    The PNG carries the provenance (with ``parameters``) in its text chunks."""
+    ``path`` ends in .png, .svg or .pdf (``dpi``: resolution [dots per inch]); the figure
+    carries the provenance (with ``parameters``). The legends sit below the axes, off the data."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from fem_racket.io.plotting import element_ticks
+
     styles = {"uniform": "-", "graded": "--"}
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5), constrained_layout=True)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.5), layout="constrained")
     for family, s in studies.items():
         ls = styles.get(family, ":")
         for k in range(s.exact_frequencies_hz.size):
@@ -173,18 +192,18 @@ def plot_studies(
     n = first.elements.astype(float)
     ref = 0.2 * np.abs(first.relative_error[-1, 0]) * (n / n[-1]) ** -4
     ax1.loglog(n, ref, "k-", lw=0.8, label="slope -4")
-    ax1.set_xlabel("elements")
-    ax1.set_ylabel("relative frequency error |f_FE / f_exact - 1|")
+    ax1.set_ylabel("relative frequency error |f_FE / f_exact - 1| [-]")
     ax1.set_title("Frequencies against the exact stepped beam")
-    ax1.grid(True, which="both", alpha=0.3)
-    ax1.legend(fontsize=7, ncol=2, loc="upper right")
-    ax2.set_xlabel("elements")
-    ax2.set_ylabel("|COR(N) - COR(previous N)|")
+    ax2.set_ylabel("|COR(N) - COR(previous N)| [-]")
     ax2.set_title(f"COR change under refinement ({first.speed:g} m/s)")
-    ax2.grid(True, which="both", alpha=0.3)
-    ax2.legend(fontsize=7, ncol=2)
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        fig.savefig(tmp, dpi=120, format="png")
-        add_png_provenance(tmp, study_provenance(studies, parameters))
-    plt.close(fig)
+    every = np.unique(np.concatenate([s.elements for s in studies.values()]))
+    for ax in (ax1, ax2):
+        element_ticks(ax, every)
+        ax.set_xlabel("elements")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.14))
+    try:
+        save_figure(fig, path, study_provenance(studies, parameters), dpi=dpi, overwrite=overwrite)
+    finally:
+        plt.close(fig)
     return Path(path)

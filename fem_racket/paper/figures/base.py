@@ -1,8 +1,9 @@
-"""What every paper figure produces: named tables (columns with units), scalar values, a PNG.
+"""What every paper figure produces: named tables (columns with units), scalar values, a figure.
 
 A figure is a :class:`FigureSpec`: a ``compute(quick)`` function returning :class:`FigureData`
 and the name of its plotting function in :mod:`fem_racket.paper.plots`. :func:`write_figure` writes
-``<name>_<table>.csv`` for each table and ``<name>.png`` into an output folder, atomically.
+``<name>_<table>.csv`` for each table and ``<name>.png`` (or ``.svg``, ``.pdf``) into an output
+folder, atomically, the figure with its provenance (:mod:`fem_racket.io.figure_files`).
 """
 
 from __future__ import annotations
@@ -16,18 +17,43 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.outputs import add_png_provenance, atomic_output, check_output_path, provenance
+from fem_racket.io.figure_files import DEFAULT_DPI, check_figure_format, save_figure
+from fem_racket.outputs import atomic_output, check_output_path, provenance
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 
-__all__ = ["FigureData", "FigureSpec", "expected_files", "write_csv", "write_figure"]
+__all__ = [
+    "FigureData",
+    "FigureSpec",
+    "expected_files",
+    "used_settings",
+    "write_csv",
+    "write_figure",
+]
 
 log = logging.getLogger(__name__)
 
 
-def expected_files(spec: FigureSpec, out_dir: str | os.PathLike) -> list[Path]:
-    """The files :func:`write_figure` will write for ``spec`` (CSV tables, then the PNG)."""
+def used_settings() -> dict[str, Any]:
+    """What the paper's figures use, unless their tables say otherwise (the zeta = 0 curves, the
+    rigid frame's EI1): the settings of the standard impact as run (solver, modes kept, m_B,
+    zeta, ...; :meth:`fem_racket.ImpactResult.settings`) and K_CB at the paper's three speeds.
+    Every figure's provenance records it under ``"used"``."""
+    from fem_racket.contact.linear import kcb_from_speed
+    from fem_racket.impact.simulate import simulate
+
+    used = simulate(position=0.75, speed=20.0, output_step=None).settings()
+    for key in ("position_x_over_l", "speed_m_s", "kcb_n_m", "ccb_n_s_m"):
+        del used[key]
+    used["kcb_n_m_at_20_30_40_m_s"] = [kcb_from_speed(v) for v in (20.0, 30.0, 40.0)]
+    return used
+
+
+def expected_files(spec: FigureSpec, out_dir: str | os.PathLike, fmt: str = "png") -> list[Path]:
+    """The files :func:`write_figure` will write for ``spec`` (CSV tables, then the figure in
+    format ``fmt``: png, svg or pdf)."""
     out = Path(out_dir)
-    return [out / f"{spec.name}_{t}.csv" for t in spec.tables] + [out / f"{spec.name}.png"]
+    figure = out / f"{spec.name}.{check_figure_format(fmt)}"
+    return [out / f"{spec.name}_{t}.csv" for t in spec.tables] + [figure]
 
 
 def write_csv(
@@ -60,20 +86,34 @@ def write_figure(
     *,
     overwrite: bool = False,
     meta: Mapping[str, Any] | None = None,
+    fmt: str = "png",
+    dpi: float = DEFAULT_DPI,
+    keep_unchanged: bool = False,
 ) -> list[Path]:
-    """Write the tables and the PNG of ``data`` into ``out_dir``; returns the paths written.
+    """Write the tables and the figure of ``data`` into ``out_dir``; returns the paths written.
 
-    The PNG carries the provenance ``meta`` (:func:`fem_racket.outputs.provenance`; by default
-    one naming the figure) in its text chunks."""
+    The figure (``fmt``: png, svg or pdf; ``dpi`` [dots per inch]) carries the provenance
+    ``meta`` (:func:`fem_racket.outputs.provenance`; by default one naming the figure). With
+    ``keep_unchanged`` an existing PNG whose image would not change is left as it is."""
     from fem_racket.paper import plots
+    from fem_racket.paper.plots.common import pyplot
 
-    paths = expected_files(spec, out_dir)
+    paths = expected_files(spec, out_dir, fmt)
     for p in paths:
         check_output_path(p, overwrite=overwrite)
     for table, path in zip(spec.tables, paths, strict=False):
         write_csv(path, data.tables[table], overwrite=overwrite)
-    with atomic_output(paths[-1], overwrite=overwrite) as tmp:
-        getattr(plots, spec.plot)(data, tmp)
-        add_png_provenance(tmp, meta or provenance({"figure": spec.name}))
+    fig = getattr(plots, spec.plot)(data)
+    try:
+        save_figure(
+            fig,
+            paths[-1],
+            meta or provenance({"figure": spec.name}),
+            dpi=dpi,
+            overwrite=overwrite,
+            keep_unchanged=keep_unchanged,
+        )
+    finally:
+        pyplot().close(fig)
     log.info("wrote %s", ", ".join(p.name for p in paths))
     return paths
