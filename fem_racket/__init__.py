@@ -25,6 +25,7 @@ from fem_racket.frame.modal import (
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, Segment, rigid_frame, standard_frame
 from fem_racket.impact.coupled import CoupledModes, coupled_modes
+from fem_racket.impact.engine import ImpactBatch, impacts, modal_impacts
 from fem_racket.impact.integrators import SOLVERS, NoSeparationError
 from fem_racket.impact.rigid import (
     ClampedImpact,
@@ -56,6 +57,7 @@ __all__ = [
     "FrameModel",
     "FreeModes",
     "Impact",
+    "ImpactBatch",
     "ImpactResult",
     "ImpactSeries",
     "InputError",
@@ -78,10 +80,12 @@ __all__ = [
     "free_free_frequencies",
     "free_modes",
     "impact_series",
+    "impacts",
     "kcb_from_speed",
     "graded_mesh",
     "load_config",
     "mass_properties",
+    "modal_impacts",
     "mode_nodes",
     "parse_config",
     "read_mesh",

@@ -18,7 +18,10 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.integrators import SOLVERS, get_solver
+from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.setup import Impact
+from fem_racket.impact.single import engine_impact
 from fem_racket.impact.system import SEPARATION_EVENTS, CoupledSystem, modal_system, physical_system
 from fem_racket.validation import InputError, check_choice, check_integer, check_positive
 
@@ -227,14 +230,16 @@ def simulate(
     t_max: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
+    tolerance: float | None = DEFAULT_TOLERANCE,
 ) -> ImpactResult:
     """Simulate a ball striking the stationary free frame.
 
     Parameters
     ----------
     frame : Frame, FrameMesh or FrameModel, optional
-        The racket; the paper's standard racket (EI1 = 146 N m^2) when None. Pass a
-        :class:`FrameModel` to reuse assembly and modes across many impacts.
+        The racket; the paper's standard racket (EI1 = 146 N m^2) when None. A Frame or
+        FrameMesh is assembled once per process (:mod:`.model_cache`) and its modes reused by
+        the next calls; a :class:`FrameModel` keeps its own.
     position : float
         Impact point x/L from the grip end, in [0, 1].
     speed : float
@@ -256,11 +261,17 @@ def simulate(
     modes : int or None
         Flexible modes kept in the modal basis; None keeps all.
     output_step : float or None
-        Spacing of the output times [s]; None keeps only t = 0 and t = t_c.
+        Spacing of the output times [s]; None keeps only t = 0 and t = t_c, and the exact
+        solver then runs the batched engine (:mod:`.engine`) on the ``modes`` modes, dropping
+        those ``tolerance`` does not need.
     t_max : float, optional
         Give up if the ball has not separated by then [s]; 20 x the eq 11 estimate by default.
     rtol, atol : float
         Tolerances of the BDF integrators.
+    tolerance : float or None
+        COR tolerance of the engine (output_step None, solver "exact"; default 1e-6): the
+        modes far above the contact frequency are replaced by one residual pseudo-mode, and the
+        frame state at t_c treats them quasi-statically. None or 0: every mode of ``modes``.
 
     Returns
     -------
@@ -282,8 +293,22 @@ def simulate(
         check_integer("modes", modes)
     if solver == "exact" and basis != "modal":
         raise InputError(f"basis = {basis!r} is not allowed with solver 'exact': must be 'modal'")
-    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
-
+    check_tolerance(tolerance)
+    model = frame_model(frame, elements)
+    if solver == "exact" and output_step is None:
+        traj, frame_map, kept = engine_impact(
+            model,
+            impact,
+            ball,
+            contact,
+            separation=separation,
+            modes=modes,
+            tolerance=tolerance,
+            t_max=t_max,
+        )
+        return _result(
+            model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map
+        )
     system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
     if output_step is not None:
         span = 2.0 * system.contact_time_estimate() if t_max is None else t_max
@@ -296,10 +321,17 @@ def simulate(
     traj = get_solver(solver)(
         system, separation=separation, output_step=output_step, t_max=t_max, rtol=rtol, atol=atol
     )
-    if system.frame_map is None:
+    n_modes = (system.size - 1 - RIGID_MODES) if basis == "modal" else None
+    return _result(
+        model, impact, ball, contact, solver, separation, basis, n_modes, traj, system.frame_map
+    )
+
+
+def _result(model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map):
+    if frame_map is None:
         q, qd = traj.x[:, 1:], traj.v[:, 1:]
     else:
-        q, qd = traj.x[:, 1:] @ system.frame_map.T, traj.v[:, 1:] @ system.frame_map.T
+        q, qd = traj.x[:, 1:] @ frame_map.T, traj.v[:, 1:] @ frame_map.T
     return ImpactResult(
         model=model,
         impact=impact,
@@ -308,7 +340,7 @@ def simulate(
         solver=solver,
         separation=separation,
         basis=basis,
-        n_modes=(system.size - 1 - RIGID_MODES) if basis == "modal" else None,
+        n_modes=n_modes,
         t=traj.t,
         ball_displacement=traj.x[:, 0],
         ball_velocity=traj.v[:, 0],
