@@ -31,6 +31,8 @@ PER_PERIOD = 8.0
 #: Scan window [eq-11 contact times] and smallest grid.
 WINDOW = 2.0
 MIN_GRID = 32
+#: Smallest grid of the peak-force search, and of its zoom on the largest value.
+PEAK_GRID = 257
 #: Newton/bisection iterations on the separation time, and its relative tolerance.
 MAX_NEWTON = 60
 TIME_TOL = 1e-14
@@ -166,13 +168,16 @@ def impulse(roots: RootSet, fw: np.ndarray, t: np.ndarray) -> np.ndarray:
 def peak_force(roots: RootSet, fw: np.ndarray, tc: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Largest contact force on [0, t_c] per unit impact speed [N per m/s] and its time [s].
 
-    Every term on a grid over [0, t_c] resolving all terms of weight >= :data:`SIGNIFICANT`,
-    then 65 points over the four steps around the largest value, then Newton on dF/dt = 0
-    within the neighbours of the best of those (kept only if it improves on it).
+    Every term on a grid over [0, t_c] of at least 257 points resolving all terms of weight
+    >= :data:`SIGNIFICANT`, then 257 points over the four steps around the largest value (as
+    :func:`fem_racket.impact.closed_form.exact_outcome`: steps finer than the high modes'
+    ripple), then Newton on dF/dt = 0 within the neighbours of the best of those (kept only if
+    it improves on it).
     """
     lam = roots.lam
     n = lam.shape[0]
     _, G = _grid_size(lam, fw, tc, SIGNIFICANT)
+    G = np.maximum(G + 1, PEAK_GRID)
     best = np.empty(n)
     t_best = np.empty(n)
     zero = np.zeros(n)
@@ -183,8 +188,8 @@ def peak_force(roots: RootSet, fw: np.ndarray, tc: np.ndarray) -> tuple[np.ndarr
         dt = tc[rows] / (g - 1)
         i = np.argmax(_on_grid(L, W, zero[rows], dt, g), axis=1)
         t0 = np.maximum(i - 2, 0) * dt
-        dt = (np.minimum(i + 2, g - 1) * dt - t0) / 64
-        vals = _on_grid(L, W, t0, dt, 65)
+        dt = (np.minimum(i + 2, g - 1) * dt - t0) / (PEAK_GRID - 1)
+        vals = _on_grid(L, W, t0, dt, PEAK_GRID)
         i = np.argmax(vals, axis=1)
         t = t0 + i * dt
         best[rows], t_best[rows] = roots.mult * vals[r, i], t
