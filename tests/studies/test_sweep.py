@@ -24,11 +24,11 @@ from fem_racket import (
 )
 from fem_racket.cli import main
 from fem_racket.studies.cases import VARIABLES, clear_caches
+from fem_racket.studies.checkpoint import Checkpoint, checkpoint_path
+from fem_racket.studies.grid import parse_values
 
 #: The variables of a sweep without the peak force (asked only with peak_force=True).
 RESULTS = [v for v in VARIABLES if v != "peak_force_n"]
-from fem_racket.studies.checkpoint import Checkpoint, checkpoint_path
-from fem_racket.studies.grid import parse_values
 
 ROOT = Path(__file__).resolve().parents[2]
 SMALL = {"position": [0.6, 0.769, 0.9], "speed": [20.0, 40.0], "ei1": [60.0, 146.0, 2000.0]}
