@@ -107,7 +107,11 @@ def test_cor_depends_on_speed_only_through_kcb():
     # The system is linear: at fixed K_CB the COR and t_c do not depend on the speed and the
     # force scales with it. Checked against simulate() at the swept speed.
     ds = sweep(
-        speed=[10.0, 25.0, 47.0], kcb=4e4, position=0.7, peak_force=True, backend="serial",
+        speed=[10.0, 25.0, 47.0],
+        kcb=4e4,
+        position=0.7,
+        peak_force=True,
+        backend="serial",
         progress=False,
     )
     assert np.ptp(ds.cor.values) == 0.0 and np.ptp(ds.contact_time_s.values) == 0.0
