@@ -2,10 +2,14 @@
 
 Cases are grouped by the size of their reduced problem (:func:`.reduction.pole_blocks`) and
 solved :data:`BLOCK` at a time: roots and residues (:mod:`.roots`), separation time, impulse
-and peak force (:mod:`.separation`), all per unit impact speed.
+and peak force (:mod:`.separation`), all per unit impact speed. A case whose event function
+nearly touches zero before it separates (an ill-conditioned criterion: the reduced model may
+cross there or not, the COR jumping with it) is solved again with every mode given.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -46,6 +50,7 @@ def solve_cases(omega, values, rigid, flex, mass, k, c, mb, beta, separation, wa
     cor, tc = np.full(n, np.nan), np.full(n, np.nan)
     peak = np.full(n, np.nan)
     kept = np.zeros(n, dtype=int)
+    touch = np.zeros(n, dtype=bool)
     for rows, d, v in pole_blocks(omega, values, mu0, omega_c, beta, flex, mass):
         kept[rows] = np.sum(omega[rows] < beta * omega_c[rows, None], axis=1)
         for start in range(0, rows.size, BLOCK):
@@ -53,9 +58,27 @@ def solve_cases(omega, values, rigid, flex, mass, k, c, mb, beta, separation, wa
             for part, roots in coupled_roots(d[sl], v[sl], k[sub], c[sub]):
                 if part.size:
                     idx = sub[part]
-                    cor[idx], tc[idx], peak[idx] = _outcome(
+                    cor[idx], tc[idx], peak[idx], touch[idx] = _outcome(
                         roots, k[idx], c[idx], mb[idx], omega_c[idx], separation, want_peak
                     )
+    # Near-touch before separation: whether the event crosses zero there may depend on the
+    # modes dropped, so such a case is solved again with every mode given.
+    again = np.flatnonzero(touch) if math.isfinite(beta) else np.empty(0, dtype=int)
+    if again.size:
+        sub = solve_cases(
+            omega[again],
+            values[again],
+            rigid[again],
+            flex[again],
+            mass[again],
+            k[again],
+            c[again],
+            mb[again],
+            math.inf,
+            separation,
+            want_peak,
+        )
+        cor[again], tc[again], peak[again], kept[again] = sub
     return cor, tc, peak, kept
 
 
@@ -63,7 +86,7 @@ def _outcome(roots: RootSet, k, c, mb, omega_c, separation, want_peak):
     fw = (k[:, None] + c[:, None] * roots.lam) * roots.res
     w = roots.res if separation == "displacement" else fw
     t_est = np.pi / omega_c
-    t = separation_time(roots, w, t_est, T_MAX_FACTOR * t_est)
+    t, touch = separation_time(roots, w, t_est, T_MAX_FACTOR * t_est)
     ok = np.isfinite(t)
     cor, peak = np.full(t.size, np.nan), np.full(t.size, np.nan)
     if ok.any():
@@ -71,4 +94,4 @@ def _outcome(roots: RootSet, k, c, mb, omega_c, separation, want_peak):
         cor[ok] = impulse(sub, fw[ok], t[ok]) / mb[ok] - 1.0
         if want_peak:
             peak[ok] = peak_force(sub, fw[ok], t[ok])[0]
-    return cor, t, peak
+    return cor, t, peak, touch
