@@ -31,6 +31,7 @@ from fem_racket.frame.modal import (
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, Segment, rigid_frame, standard_frame
 from fem_racket.impact.coupled import CoupledModes, coupled_modes
+from fem_racket.impact.engine import ImpactBatch, impacts, modal_impacts
 from fem_racket.impact.integrators import SOLVERS, NoSeparationError
 from fem_racket.impact.rigid import (
     ClampedImpact,
@@ -67,6 +68,7 @@ __all__ = [
     "HuntCrossley",
     "Hysteretic",
     "Impact",
+    "ImpactBatch",
     "ImpactResult",
     "ImpactSeries",
     "InputError",
@@ -92,10 +94,12 @@ __all__ = [
     "free_modes",
     "get_law",
     "impact_series",
+    "impacts",
     "kcb_from_speed",
     "graded_mesh",
     "load_config",
     "mass_properties",
+    "modal_impacts",
     "mode_nodes",
     "parse_config",
     "plot_impact",

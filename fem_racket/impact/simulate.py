@@ -23,7 +23,10 @@ from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.integrators import SOLVERS, check_solver_settings, get_solver
 from fem_racket.impact.law_impact import LAW_SOLVERS, solve_law_impact
+from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.setup import Impact
+from fem_racket.impact.single import engine_impact
 from fem_racket.impact.system import SEPARATION_EVENTS, CoupledSystem, modal_system, physical_system
 from fem_racket.validation import InputError, check_choice, check_integer, check_positive
 
@@ -68,6 +71,9 @@ class ImpactResult:
         The law's internal state [m] at the output times.
     rtol, atol : float or None
         Tolerances of the BDF integrator that ran (None for the exact solver, which has none).
+    tolerance : float or None
+        COR tolerance of the batched engine when it ran (exact solver, no histories); None
+        otherwise.
     """
 
     model: FrameModel
@@ -88,6 +94,7 @@ class ImpactResult:
     law_state: np.ndarray | None = None
     rtol: float | None = None
     atol: float | None = None
+    tolerance: float | None = None
 
     # -- notebook forms (fem_racket.impact.result_views) ------------------------------------
     def __repr__(self) -> str:
@@ -236,6 +243,7 @@ class ImpactResult:
             "ball_mass_kg": self.ball.mass,
             "rtol": self.rtol,
             "atol": self.atol,
+            "tolerance": self.tolerance,
             **self.law_summary(),
         }
 
@@ -366,14 +374,16 @@ def simulate(
     atol: float = 1e-12,
     law: ContactLaw | str | None = None,
     frame_velocity: Any = None,
+    tolerance: float | None = DEFAULT_TOLERANCE,
 ) -> ImpactResult:
     """Simulate a ball striking the free frame (at rest, or moving with ``frame_velocity``).
 
     Parameters
     ----------
     frame : Frame, FrameMesh or FrameModel, optional
-        The racket; the paper's standard racket (EI1 = 146 N m^2) when None. Pass a
-        :class:`FrameModel` to reuse assembly and modes across many impacts.
+        The racket; the paper's standard racket (EI1 = 146 N m^2) when None. A Frame or
+        FrameMesh is assembled once per process (:mod:`.model_cache`) and its modes reused by
+        the next calls; a :class:`FrameModel` keeps its own.
     position : float
         Impact point x/L from the grip end, in [0, 1].
     speed : float
@@ -398,7 +408,9 @@ def simulate(
     modes : int or None
         Flexible modes kept in the modal basis; None keeps all.
     output_step : float or None
-        Spacing of the output times [s]; None keeps only t = 0 and t = t_c.
+        Spacing of the output times [s]; None keeps only t = 0 and t = t_c, and the exact
+        solver then runs the batched engine (:mod:`fem_racket.impact.engine`) on the ``modes``
+        modes, dropping those ``tolerance`` does not need.
     t_max : float, optional
         Give up if the ball has not separated by then [s]; 20 x the eq 11 estimate by default.
     rtol, atol : float
@@ -418,6 +430,10 @@ def simulate(
         rotation about the CG) then every flexible mode of the model. A moving racket is
         integrated by the general integrator (or CVODE); ``speed`` stays the ball's speed (and
         sets the paper's K_CB unless ``kcb`` is given: pass the K_CB of the relative speed).
+    tolerance : float or None
+        COR tolerance of the engine (output_step None, solver "exact"; default 1e-6): the
+        modes far above the contact frequency are replaced by one residual pseudo-mode, and the
+        frame state at t_c treats them quasi-statically. None or 0: every mode of ``modes``.
 
     Returns
     -------
@@ -443,7 +459,7 @@ def simulate(
             )
         if t_max is not None:
             check_positive("t_max", t_max, "s")
-        model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
+        model = frame_model(frame, elements)
         if solver == "cvode":  # the general integrator has no tolerances
             check_solver_settings(solver, "modal", model.mesh.n_elements, rtol, atol)
         return _simulate_law(
@@ -471,19 +487,47 @@ def simulate(
         check_integer("modes", modes)
     if solver == "exact" and basis != "modal":
         raise InputError(f"basis = {basis!r} is not allowed with solver 'exact': must be 'modal'")
-    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
+    tolerance = check_tolerance(tolerance)
+    model = frame_model(frame, elements)
     check_solver_settings(solver, basis, model.mesh.n_elements, rtol, atol)
-
+    if solver == "exact" and output_step is None:
+        traj, frame_map, kept = engine_impact(
+            model,
+            impact,
+            ball,
+            contact,
+            separation=separation,
+            modes=modes,
+            tolerance=tolerance,
+            t_max=t_max,
+        )
+        return _result(
+            model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map,
+            tolerance=tolerance,
+        )  # fmt: skip
     system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
     if output_step is not None:
         _check_output_count(output_step, t_max, system.contact_time_estimate(), kcb, ball.mass)
     traj = get_solver(solver)(
         system, separation=separation, output_step=output_step, t_max=t_max, rtol=rtol, atol=atol
     )
-    if system.frame_map is None:
+    n_modes = (system.size - 1 - RIGID_MODES) if basis == "modal" else None
+    return _result(
+        model, impact, ball, contact, solver, separation, basis, n_modes, traj, system.frame_map,
+        rtol=rtol, atol=atol,
+    )  # fmt: skip
+
+
+def _result(
+    model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map,
+    *, rtol=None, atol=None, tolerance=None,
+):  # fmt: skip
+    """The :class:`ImpactResult` of a linear-law run from its trajectory in the solver's
+    coordinates (``frame_map`` takes them to the frame's Hermite DOFs, None: they are those)."""
+    if frame_map is None:
         q, qd = traj.x[:, 1:], traj.v[:, 1:]
     else:
-        q, qd = traj.x[:, 1:] @ system.frame_map.T, traj.v[:, 1:] @ system.frame_map.T
+        q, qd = traj.x[:, 1:] @ frame_map.T, traj.v[:, 1:] @ frame_map.T
     return ImpactResult(
         model=model,
         impact=impact,
@@ -492,7 +536,7 @@ def simulate(
         solver=solver,
         separation=separation,
         basis=basis,
-        n_modes=(system.size - 1 - RIGID_MODES) if basis == "modal" else None,
+        n_modes=n_modes,
         t=traj.t,
         ball_displacement=traj.x[:, 0],
         ball_velocity=traj.v[:, 0],
@@ -501,4 +545,5 @@ def simulate(
         peak_force=traj.peak_force,
         rtol=None if solver == "exact" else rtol,
         atol=None if solver == "exact" else atol,
+        tolerance=tolerance,
     )

@@ -33,6 +33,7 @@ from fem_racket.frame.segments import (
     standard_ei1_range,
 )
 from fem_racket.impact.integrators import SOLVERS, check_solver_settings
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.limits import MAX_CASES, check_grid_size
 from fem_racket.validation import (
@@ -179,6 +180,10 @@ class SweepSpec:
     law : ContactLaw or None
         A contact law other than the paper's (every case then runs the general integrator, or
         CVODE); None: the paper's linear law from ``kcb`` and ``zeta``.
+    tolerance : float or None
+        COR tolerance of the batched engine (exact solver); None: every mode.
+    peak_force : bool
+        Whether the peak force is computed (a result variable).
     """
 
     values: dict[str, Any]
@@ -191,6 +196,8 @@ class SweepSpec:
     rtol: float = 1e-10
     atol: float = 1e-12
     law: Any = None
+    tolerance: float | None = DEFAULT_TOLERANCE
+    peak_force: bool = False
 
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
@@ -242,6 +249,9 @@ class SweepSpec:
         )
         spec._check_rigidity()
         check_grid_size(spec.shape, spec.dims)
+        object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
+        if not isinstance(spec.peak_force, bool):
+            raise InputError(f"peak_force = {spec.peak_force!r} is not allowed: must be a bool")
         return spec
 
     def _check_rigidity(self) -> None:
@@ -302,6 +312,16 @@ class SweepSpec:
                 out[name] = vals[i].item()
         return out
 
+    def case_arrays(self, indices: np.ndarray) -> dict[str, Any]:
+        """Parameter values of many cases: swept ones as arrays (one entry per index), fixed
+        ones as they are (a number, or None for the default law)."""
+        out = dict(self.values)
+        if self.axes:
+            where = np.unravel_index(np.asarray(indices, dtype=np.int64), self.shape)
+            for (name, vals), i in zip(self.axes.items(), where, strict=True):
+                out[name] = vals[i]
+        return out
+
     # -- identity --------------------------------------------------------------------------
     def describe(self) -> dict[str, Any]:
         """JSON-ready description of everything that determines the results."""
@@ -320,6 +340,8 @@ class SweepSpec:
             "modes": self.modes,
             "rtol": self.rtol,
             "atol": self.atol,
+            "tolerance": self.tolerance,
+            "peak_force": self.peak_force,
             "version": __version__,
             **({} if self.law is None else {"law": self.law.describe()}),
         }

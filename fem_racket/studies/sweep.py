@@ -28,8 +28,9 @@ from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.outputs import atomic_output, check_output_path, provenance
-from fem_racket.studies.cases import VARIABLES, run_chunk
+from fem_racket.studies.cases import VARIABLES, result_variables, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
 from fem_racket.studies.grid import PARAMETERS, SweepSpec, chunks
@@ -44,8 +45,11 @@ KCB_LAW = (
     "from the speed: piecewise power law through the paper's 2.74e4, 5.0e4, 8.33e4 N/m "
     "at 20, 30, 40 m/s"
 )
-#: Below this many exact impacts the default backend is serial (a pool takes ~0.5 s to start).
-SERIAL_BELOW = 200
+#: Below this many exact impacts the default backend is serial (a pool takes ~0.5 s to start;
+#: the engine solves ~1e4 impacts in that time).
+SERIAL_BELOW = 20000
+#: Largest chunk of exact impacts (one engine call per frame; also one checkpoint file).
+EXACT_CHUNK = 32768
 
 
 def _attributes(spec: SweepSpec) -> dict[str, Any]:
@@ -76,7 +80,12 @@ def _attributes(spec: SweepSpec) -> dict[str, Any]:
     if spec.law is not None:
         params.update({f"contact_{k}": v for k, v in spec.law.describe().items()})
     elif spec.solver == "exact":
-        params["tolerances"] = "exact: closed form, separation time to 1e-15 s; rtol, atol unused"
+        params["tolerance"] = "all modes" if spec.tolerance is None else spec.tolerance
+        params["tolerances"] = (
+            "exact: closed form (batched engine), COR within 'tolerance' of every mode, "
+            "separation time to 1e-14 relative; rtol, atol unused"
+        )
+    params["peak_force"] = "computed" if spec.peak_force else "not asked"
     prov = provenance(params)
     attrs = {k: v for k, v in prov.items() if k != "parameters"}
     attrs.update(prov["parameters"])
@@ -94,16 +103,19 @@ def _dataset(spec: SweepSpec, values: np.ndarray) -> Any:
         )
         for name, vals in spec.axes.items()
     }
+    keep = result_variables(spec)
     data = {
         name: (spec.dims, values[:, k].reshape(spec.shape), {"units": unit, "long_name": text})
         for k, (name, (unit, text)) in enumerate(VARIABLES.items())
+        if name in keep
     }
     return xr.Dataset(data, coords=coords, attrs=_attributes(spec))
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
-    # the exact path and the general integrator's batches (contact laws) take big chunks
-    cap = 128 if spec.solver in ("exact", "general") else 4
+    # the engine (exact solver) and the general integrator's batches (contact laws) take big
+    # chunks
+    cap = EXACT_CHUNK if spec.solver == "exact" else 128 if spec.solver == "general" else 4
     return max(1, min(cap, math.ceil(todo / (4 * workers))))
 
 
@@ -126,6 +138,8 @@ def sweep(
     rtol: float = 1e-10,
     atol: float = 1e-12,
     law: Any = None,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    peak_force: bool = False,
     output: str | os.PathLike | None = None,
     overwrite: bool = False,
     restart: bool = False,
@@ -156,6 +170,11 @@ def sweep(
         A contact law other than the paper's, fixed for the sweep (a law or a name of
         :data:`fem_racket.contact.presets.LAW_NAMES`); its name and parameters become attributes
         and the ``kcb`` variable is NaN.
+    tolerance : float or None
+        COR tolerance of the exact solver's batched engine (default 1e-6; None or 0: every mode
+        of ``modes``); recorded in the dataset's attributes.
+    peak_force : bool
+        Also compute the largest contact force (variable ``peak_force_n``; costs more).
     output : path, optional
         netCDF file to write (atomically). With it the sweep is resumable: finished cases are
         kept in ``<output>.checkpoint/`` and a rerun with the same arguments continues.
@@ -180,7 +199,8 @@ def sweep(
     Returns
     -------
     xarray.Dataset
-        Dimensions: the swept parameters; variables :data:`VARIABLES`; attributes: every fixed
+        Dimensions: the swept parameters; variables :data:`VARIABLES` (``peak_force_n`` only
+        when asked); attributes: every fixed
         parameter, the solver and its tolerances, the package version (provenance).
     """
     spec = SweepSpec.build(
@@ -201,6 +221,8 @@ def sweep(
         rtol=rtol,
         atol=atol,
         law=get_law(law) if isinstance(law, str) else law,
+        tolerance=tolerance,
+        peak_force=peak_force,
     )
     if backend is not None:
         check_choice("backend", backend, BACKENDS)
@@ -251,6 +273,7 @@ def sweep(
         initial=spec.size - todo.size,
     )
     ds = _dataset(spec, values)
+    ds.attrs["backend"] = backend
     failed = int(np.count_nonzero(np.isnan(values[:, 0])))
     ds.attrs["failed_cases"] = failed
     if parameters:

@@ -20,13 +20,16 @@ from fem_racket.frame.mesh import MAX_ELEMENTS
         (["simulate", "--ei1", "1e300"], "ei1 = 1e+300 N m^2 is not allowed"),
         (["sweep", "--ei1", "1e-6,1e300"], "ei1 = 1e+300 N m^2 is not allowed"),
         (["sweep", "--position", "0:1:10000", "--speed", "10:40:10000"], "100000000 cases"),
-        (["simulate", "--t-max", "11"], "t_max = 11.0 s is not allowed"),
-        (["simulate", "--kcb", "1e-6"], "kcb = 1e-06 N/m is not allowed"),
+        # histories (--out) at 1e-5 s steps: at most 1e6 of them
+        (["simulate", "--t-max", "11", "--out", "h.json"], "t_max = 11.0 s is not allowed"),
+        (["simulate", "--kcb", "1e-6", "--out", "h.json"], "kcb = 1e-06 N/m is not allowed"),
     ],
 )
-def test_limits_refused_at_once(capsys, argv, message):
+def test_limits_refused_at_once(capsys, tmp_path, monkeypatch, argv, message):
+    monkeypatch.chdir(tmp_path)
     t0 = time.perf_counter()
     assert main(argv) == 2
+    assert not list(tmp_path.iterdir())  # refused before anything is written
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1 and "Traceback" not in err
     assert time.perf_counter() - t0 < 2.0

@@ -11,7 +11,9 @@ import pytest
 
 from fem_racket.cli import main
 
-OPTIONS = ["--speed", "30", "--position", "0.7", "--modes", "80"]
+# --tolerance 0: every mode, so that the printed run (the batched engine, no histories) and the
+# runs that write histories (the closed-form path) use the same modes and agree to round-off.
+OPTIONS = ["--speed", "30", "--position", "0.7", "--modes", "80", "--tolerance", "0"]
 
 
 def run_json(capsys, *argv):
@@ -48,7 +50,8 @@ def test_simulate_out_provenance_matches(printed, capsys, tmp_path):
     assert main(["simulate", "--out", str(out), *OPTIONS]) == 0
     meta = json.loads(out.read_text())["provenance"]
     assert meta["used"] == used_keys(printed)
-    assert meta["results"]["cor"] == printed["cor"]
+    # engine and closed form, every mode: the same eigen-solution by two paths (1e-9, issue 13)
+    assert meta["results"]["cor"] == pytest.approx(printed["cor"], abs=1e-9)
     assert meta["parameters"]["modes"] == 80  # the request is kept beside what was used
 
 
@@ -60,7 +63,8 @@ def test_export_vtk_and_animate_provenance_match(printed, capsys, tmp_path):
     argv = ["animate", "--out", str(gif), "--frames", "2", "--size", "160x160", *OPTIONS]
     assert main(argv) == 0
     meta = json.loads((tmp_path / "a.gif.json").read_text())
-    assert meta["used"] == used_keys(printed) and meta["results"]["cor"] == printed["cor"]
+    assert meta["used"] == used_keys(printed)
+    assert meta["results"]["cor"] == pytest.approx(printed["cor"], abs=1e-9)
 
 
 def test_cvode_run_records_its_tolerances(capsys, tmp_path):
