@@ -1,170 +1,427 @@
-"""Safe output files: atomic writes, no silent overwrite, provenance.
+"""Safe output files: checked before the work, written all-or-nothing, with provenance.
 
-Every file the library or CLI writes goes through :func:`atomic_output`: the content is written
-to a temporary name in the destination folder and renamed into place only when complete, so an
-interrupted run never leaves a half-written file. :func:`provenance` is the metadata every output
-carries (package version, date, parameters, solver and tolerances).
+Every file or folder the library or CLI writes goes through :func:`atomic_outputs` (or its
+one-target forms :func:`atomic_output` and :func:`atomic_folder`): each output of a command -
+main file, sidecars, reports, plots - is written to a temporary name beside its target, and all
+of them are moved into place only when every one is complete. On any failure (an exception in the
+block, a full disk, an interruption) the temporaries are removed, folders the write created are
+removed again and every old output is left as it was. :func:`provenance` is the metadata every
+output carries (package version, date, parameters, solver and tolerances).
 
 The conventions, the same for every command (README, "Outputs, --overwrite and provenance"):
 
 1. Library functions take the output path; only the CLI and scripts default to ``output/``.
-   Commands take ``--out PATH`` and ``--overwrite``
-   (:func:`fem_racket.cli.common.add_output_options`).
-2. Check the path with :func:`check_output_path` *before* the work, so a long run does not fail
-   at the end: an existing file is refused unless ``overwrite``; a folder that cannot be created
-   or written is an :class:`~fem_racket.validation.InputError`. Nothing is created by the check:
-   the folder is made when the file is written, so a failed run leaves no empty folder.
-3. Write inside ``with atomic_output(path, overwrite=...) as tmp:``; on any exception the
-   temporary file is removed and an existing file is left as it was.
-4. Put ``provenance(parameters)`` in the file, with ``parameters`` holding every setting of the
-   run (:func:`fem_racket.cli.common.run_parameters` gives the parsed options, run file
-   applied): JSON a ``"provenance"`` object; netCDF global attributes; PNG text chunks
-   (:func:`add_png_provenance`); a folder (VTK series) a ``provenance.json`` in it; formats that
-   cannot hold it (CSV, GIF, MP4) a sidecar ``<file>.json`` (:func:`write_sidecar`).
+2. Check every destination with :func:`check_output_path` (or :func:`check_targets`) *before*
+   the work: an existing file is refused unless ``overwrite``; a name longer than the file
+   system allows, a folder that cannot be created and a folder that does not take a new file
+   (tested by creating and deleting one: the permission bits alone do not tell, e.g. as root or
+   under ``/proc``) are an :class:`~fem_racket.validation.InputError` naming the option, the path
+   and the reason. Nothing is left by the check.
+3. Write inside ``with atomic_outputs([...], overwrite=...) as temporaries:``. An ``OSError``
+   while writing becomes an :class:`OutputError` naming the target (not the temporary) and the
+   reason.
+4. Temporary names are ``.<name>.<pid>-<random>.part<suffix>``, never longer than the target's
+   folder allows (a long name is cut and completed by a hash). Temporaries left by a run that
+   was killed (its process is gone) are removed by the next run writing the same target.
+5. Put ``provenance(parameters)`` in the output: JSON a ``"provenance"`` object; netCDF global
+   attributes; PNG text chunks (:func:`add_png_provenance`); a folder a ``provenance.json`` in
+   it; formats that cannot hold it (CSV, GIF, MP4) a sidecar ``<file>.json``
+   (:func:`sidecar_path`), written in the same set as the file.
 """
 
 from __future__ import annotations
 
 import datetime as _dt
+import hashlib
+import logging
 import os
 import platform
+import re
+import secrets
 import shutil
 import tempfile
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show, show_path
 
 __all__ = [
+    "OutputError",
+    "Target",
     "add_png_provenance",
     "atomic_folder",
     "atomic_output",
+    "atomic_outputs",
     "check_output_folder",
     "check_output_path",
+    "check_targets",
     "provenance",
     "sidecar_path",
     "write_sidecar",
 ]
 
+log = logging.getLogger(__name__)
 
+
+class OutputError(OSError):
+    """Writing an output failed during the run (no space left, I/O error, ...).
+
+    The message names the output path the user gave and the reason; the command-line interface
+    reports it in one line with exit code 1 (a bad destination found before the work is an
+    :class:`~fem_racket.validation.InputError`, exit code 2).
+    """
+
+
+@dataclass(frozen=True)
+class Target:
+    """One output of a command.
+
+    Attributes
+    ----------
+    path : Path
+        The file or folder to write.
+    folder : bool
+        True for a folder written as a whole (a VTK series).
+    marker : str, optional
+        For a folder: an existing one is replaced only if it holds this file (so
+        ``overwrite`` never deletes a folder this program did not write).
+    name : str
+        The option that named the path (``out``, ``csv``, ``report``), for messages.
+    """
+
+    path: Path
+    folder: bool = False
+    marker: str | None = None
+    name: str = "out"
+
+
+def _reason(exc: OSError) -> str:
+    return exc.strerror or str(exc) or type(exc).__name__
+
+
+def _name_max(folder: Path) -> int:
+    try:
+        return int(os.pathconf(folder, "PC_NAME_MAX"))
+    except (OSError, ValueError, AttributeError):
+        return 255
+
+
+def _existing_ancestor(folder: Path) -> Path:
+    probe = folder.absolute()
+    while not probe.exists() and probe != probe.parent:
+        probe = probe.parent
+    return probe
+
+
+def _quoted(path: Path) -> str:
+    return show_path(path)
+
+
+def _refuse(t: Target, why: str) -> InputError:
+    return InputError(f"{t.name} = {_quoted(t.path)} is not allowed: {why}")
+
+
+def _check_writable(t: Target) -> None:
+    """Raise unless every missing folder of ``t.path`` can be created and the folder takes a new
+    file of that name; creates and deletes a probe file in the nearest existing folder."""
+    folder = t.path.absolute().parent
+    base = _existing_ancestor(folder)
+    if not base.is_dir():
+        raise _refuse(t, f"its folder cannot be created: {_quoted(base)} is a file")
+    limit = _name_max(base)
+    missing = folder.relative_to(base).parts + (t.path.name,)
+    for part in missing:
+        size = len(os.fsencode(part))
+        if size > limit:
+            raise _refuse(t, f"the name {show(part)} is {size} bytes long: at most {limit} here")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".fem_racket-probe-", dir=base)
+    except OSError as exc:
+        raise _refuse(t, f"cannot create a file in {_quoted(base)} ({_reason(exc)})") from None
+    os.close(fd)
+    os.unlink(probe)
+
+
+def check_output_path(
+    path: str | os.PathLike, *, overwrite: bool = False, name: str = "out"
+) -> Path:
+    """Validate an output file path before any work is done; return it as a Path.
+
+    Raises :class:`InputError` (naming the option ``name``) if the path is a folder, if the file
+    exists and ``overwrite`` is False, if a name is longer than the file system allows, or if the
+    folder cannot be created or does not take a new file. Creates nothing.
+    """
+    t = Target(Path(path), name=name)
+    if t.path.is_dir():
+        raise _refuse(t, "it is a folder: must be a file path")
+    if t.path.exists() and not overwrite:
+        raise _refuse(t, "it already exists: pass --overwrite to replace it")
+    _check_writable(t)
+    return t.path
+
+
+def check_output_folder(
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    marker: str | None = None,
+    name: str = "out",
+) -> Path:
+    """Validate an output folder path before any work is done; return it as a Path.
+
+    Raises :class:`InputError` if ``path`` is a file, if it exists and ``overwrite`` is False, if
+    it exists, is not empty and lacks the file ``marker`` (so ``--overwrite`` never deletes a
+    folder this program did not write), or as :func:`check_output_path` for its parent.
+    """
+    t = Target(Path(path), folder=True, marker=marker, name=name)
+    if t.path.exists() and not t.path.is_dir():
+        raise _refuse(t, "it is a file: must be a folder path")
+    if t.path.is_dir():
+        if not overwrite:
+            raise _refuse(t, "it already exists: pass --overwrite to replace it")
+        if marker is not None and any(t.path.iterdir()) and not (t.path / marker).is_file():
+            raise _refuse(
+                t, f"it is a folder without '{marker}', so not one this program wrote: "
+                "refusing to replace it",
+            )  # fmt: skip
+    _check_writable(t)
+    return t.path
+
+
+def check_targets(targets: Sequence[Target], *, overwrite: bool = False) -> list[Target]:
+    """Check every target (:func:`check_output_path` or :func:`check_output_folder`)."""
+    seen: set[Path] = set()
+    for t in targets:
+        key = t.path.absolute()
+        if key in seen:
+            raise _refuse(t, "the same path is given for two outputs of this command")
+        seen.add(key)
+        if t.folder:
+            check_output_folder(t.path, overwrite=overwrite, marker=t.marker, name=t.name)
+        else:
+            check_output_path(t.path, overwrite=overwrite, name=t.name)
+    return list(targets)
+
+
+# -- temporary names ------------------------------------------------------------------------
+_TAIL_ROOM = len(".4294967295-00000000.part")  # pid (at most 10 digits), token, kind
+
+
+def _suffix(path: Path) -> str:
+    # Writers choose the format by suffix (xarray, matplotlib, Pillow): keep a short one.
+    return path.suffix if len(os.fsencode(path.suffix)) <= 16 else ""
+
+
+def _key(path: Path, limit: int) -> str:
+    """The target's name, cut (and completed by a hash) to leave room for the temporary tail."""
+    room = limit - 1 - _TAIL_ROOM - len(os.fsencode(_suffix(path)))
+    raw = os.fsencode(path.name)
+    if len(raw) <= room:
+        return path.name
+    digest = hashlib.sha256(raw).hexdigest()[:12]
+    cut = raw[: room - 13].decode("utf-8", "ignore")  # never half a character
+    return f"{cut}~{digest}"
+
+
+def _temp_path(path: Path, kind: str) -> Path:
+    folder = path.absolute().parent
+    key = _key(path, _name_max(folder))
+    return folder / f".{key}.{os.getpid()}-{secrets.token_hex(4)}.{kind}{_suffix(path)}"
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError):
+        return True
+    return True
+
+
+def _remove(path: Path) -> None:
+    try:
+        if path.is_dir() and not path.is_symlink():
+            shutil.rmtree(path)
+        else:
+            path.unlink()
+    except FileNotFoundError:
+        pass
+
+
+def _remove_stale(path: Path) -> None:
+    """Remove temporaries of ``path`` left by runs whose process is gone."""
+    folder = path.absolute().parent
+    if not folder.is_dir():
+        return
+    key = _key(path, _name_max(folder))
+    pattern = re.compile(
+        re.escape(f".{key}.") + r"(\d+)-[0-9a-f]{8}\.(?:part|old)" + re.escape(_suffix(path)) + "$"
+    )
+    for entry in folder.iterdir():
+        m = pattern.match(entry.name)
+        if m and not _alive(int(m.group(1))):
+            log.info("removing %s, left by an interrupted run", entry)
+            try:
+                _remove(entry)
+            except OSError:  # not ours to fix here; the new run does not need it gone
+                pass
+
+
+# -- writing a set of outputs -----------------------------------------------------------------
 def _umask_mode(mode: int) -> int:
-    """``mode`` less the process umask (tempfile creates 0600 files and 0700 folders)."""
+    """``mode`` less the process umask."""
     mask = os.umask(0)
     os.umask(mask)
     return mode & ~mask
 
 
-def _writable_folder(folder: Path, what: str = "output folder") -> None:
-    """Raise unless ``folder`` exists and is writable, or could be created: its nearest
-    existing ancestor is a writable folder. Creates nothing (a bad run leaves no folder)."""
-    probe = folder
-    while not probe.exists() and probe != probe.parent:
+def _make_folders(folder: Path, made: list[Path]) -> None:
+    missing = []
+    probe = folder.absolute()
+    while not probe.exists():
+        missing.append(probe)
         probe = probe.parent
-    if not probe.is_dir():
-        raise InputError(
-            f"{what} = '{folder}' cannot be created ('{probe}' is not a folder): "
-            "must be a folder you can write to"
-        )
-    if not os.access(probe, os.W_OK | os.X_OK):
-        raise InputError(f"{what} = '{folder}' is not writable: must be a folder you can write to")
+    for f in reversed(missing):
+        f.mkdir()
+        made.append(f)
 
 
-def check_output_path(path: str | os.PathLike, *, overwrite: bool = False) -> Path:
-    """Validate an output file path before any work is done.
+def _new_temp(t: Target) -> Path:
+    tmp = _temp_path(t.path, "part")
+    if t.folder:
+        tmp.mkdir(mode=0o777)
+    else:
+        os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
+    return tmp
 
-    Raises :class:`InputError` if the file exists and ``overwrite`` is False, or if its folder
-    cannot be created or written. Creates nothing: :func:`atomic_output` makes the folder when it
-    writes, so a run that fails before that leaves no empty folder behind.
-    """
-    path = Path(path)
-    if path.is_dir():
-        raise InputError(f"output = '{path}' is a folder: must be a file path")
-    if path.exists() and not overwrite:
-        raise InputError(f"output = '{path}' already exists: pass --overwrite to replace it")
-    _writable_folder(path.parent if str(path.parent) else Path("."))
-    return path
+
+def _as_output_error(exc: OSError, targets: Sequence[Target], temps: Sequence[Path]) -> OSError:
+    """``exc`` as an :class:`OutputError` naming the target it concerns; an OSError about a
+    file that is none of the outputs is returned unchanged."""
+    if isinstance(exc, OutputError):
+        return exc
+    target = targets[0].path
+    name = os.fsdecode(exc.filename) if isinstance(exc.filename, (str, bytes)) else None
+    if name is not None:
+        hit = [
+            t.path
+            for t, tmp in zip(targets, temps, strict=False)
+            if Path(name).absolute() in (tmp, t.path.absolute())
+            or Path(name).absolute().is_relative_to(tmp)
+        ]
+        if not hit:
+            return exc
+        target = hit[0]
+    err = OutputError(exc.errno, f"cannot write {_quoted(target)}: {_reason(exc)}")
+    err.filename = str(target)
+    return err
+
+
+def _commit(targets: Sequence[Target], temps: Sequence[Path], overwrite: bool) -> None:
+    """Move every temporary into place; on a failure put every old output back."""
+    moved: list[tuple[Target, Path | None]] = []
+    try:
+        for t, tmp in zip(targets, temps, strict=True):
+            if not t.folder:
+                os.chmod(tmp, _umask_mode(0o666))
+            old = None
+            if t.path.exists() or t.path.is_symlink():
+                if not overwrite:
+                    raise _refuse(
+                        t, "it was created during the run: pass --overwrite to replace it"
+                    )
+                old = _temp_path(t.path, "old")
+                os.replace(t.path, old)
+            moved.append((t, old))
+            os.replace(tmp, t.path)
+    except BaseException:
+        for t, old in reversed(moved):
+            if old is None:
+                if t.path.exists():
+                    _remove(t.path)
+            elif old.exists():
+                if t.path.exists():
+                    _remove(t.path)
+                os.replace(old, t.path)
+        raise
+    for _, old in moved:
+        if old is not None:
+            _remove(old)
 
 
 @contextmanager
-def atomic_output(path: str | os.PathLike, *, overwrite: bool = False) -> Iterator[Path]:
-    """Yield a temporary path beside ``path``; rename it to ``path`` when the block succeeds.
+def atomic_outputs(
+    targets: Sequence[Target | str | os.PathLike], *, overwrite: bool = False
+) -> Iterator[list[Path]]:
+    """Yield one temporary path per target; move them all into place when the block succeeds.
 
-    The temporary file keeps the suffix of ``path`` so writers that pick a format by suffix
-    (meshio, xarray, matplotlib) work unchanged. On any exception it is removed.
+    Files keep the suffix of their target so writers that pick a format by suffix work
+    unchanged; folder targets get an empty temporary folder. Every target is checked first
+    (:func:`check_targets`). On any exception - or a failure while moving - the temporaries and
+    the folders created for them are removed and every existing output is kept; an ``OSError``
+    comes out as :class:`OutputError` naming the target.
     """
-    path = check_output_path(path, overwrite=overwrite)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp_name = tempfile.mkstemp(
-        prefix=f".{path.stem}.", suffix=f".part{path.suffix}", dir=path.parent
-    )
-    os.close(fd)
-    tmp = Path(tmp_name)
+    items = [t if isinstance(t, Target) else Target(Path(t)) for t in targets]
+    check_targets(items, overwrite=overwrite)
+    made: list[Path] = []
+    temps: list[Path] = []
+    ok = False
     try:
-        yield tmp
-        os.chmod(tmp, _umask_mode(0o666))
-        os.replace(tmp, path)
+        for t in items:
+            _make_folders(t.path.parent, made)
+            _remove_stale(t.path)
+            temps.append(_new_temp(t))
+        yield list(temps)
+        _commit(items, temps, overwrite)
+        ok = True
+    except OSError as exc:
+        raise _as_output_error(exc, items, temps) from None
     finally:
-        if tmp.exists():
-            tmp.unlink()
+        for tmp in temps:
+            if tmp.exists() or tmp.is_symlink():
+                try:
+                    _remove(tmp)
+                except OSError:
+                    log.warning("could not remove the temporary %s", tmp)
+        if not ok:
+            for f in reversed(made):
+                try:
+                    f.rmdir()
+                except OSError:
+                    break
 
 
-def check_output_folder(
-    path: str | os.PathLike, *, overwrite: bool = False, marker: str | None = None
-) -> Path:
-    """Validate an output folder path before any work is done.
-
-    Raises :class:`InputError` if ``path`` is a file, if it exists and ``overwrite`` is False, if
-    it exists, is not empty and lacks the file ``marker`` (so ``--overwrite`` never deletes a
-    folder this program did not write), or if its parent cannot be created or written. Creates
-    nothing (:func:`atomic_folder` makes the parent when it writes).
-    """
-    path = Path(path)
-    if path.exists() and not path.is_dir():
-        raise InputError(f"output = '{path}' is a file: must be a folder path")
-    if path.is_dir():
-        if not overwrite:
-            raise InputError(f"output = '{path}' already exists: pass --overwrite to replace it")
-        if marker is not None and any(path.iterdir()) and not (path / marker).is_file():
-            raise InputError(
-                f"output = '{path}' is a folder without '{marker}', so not one this program "
-                "wrote: refusing to replace it"
-            )
-    _writable_folder(path.absolute().parent)
-    return path
+@contextmanager
+def atomic_output(
+    path: str | os.PathLike, *, overwrite: bool = False, name: str = "out"
+) -> Iterator[Path]:
+    """One file written all-or-nothing: see :func:`atomic_outputs`."""
+    with atomic_outputs([Target(Path(path), name=name)], overwrite=overwrite) as (tmp,):
+        yield tmp
 
 
 @contextmanager
 def atomic_folder(
-    path: str | os.PathLike, *, overwrite: bool = False, marker: str | None = None
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    marker: str | None = None,
+    name: str = "out",
 ) -> Iterator[Path]:
-    """Yield a temporary folder beside ``path``; rename it to ``path`` when the block succeeds.
-
-    For outputs made of many files (a VTK time series): readers never see a half-written
-    folder, and on any exception the temporary folder is removed and an existing ``path`` is left
-    as it was. An existing ``path`` is replaced only with ``overwrite`` (see
-    :func:`check_output_folder` for ``marker``).
-    """
-    path = check_output_folder(path, overwrite=overwrite, marker=marker)
-    parent = path.resolve().parent
-    parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", suffix=".part", dir=parent))
-    try:
+    """One folder (e.g. a VTK series) written all-or-nothing: see :func:`atomic_outputs` and,
+    for ``marker``, :func:`check_output_folder`."""
+    target = Target(Path(path), folder=True, marker=marker, name=name)
+    with atomic_outputs([target], overwrite=overwrite) as (tmp,):
         yield tmp
-        os.chmod(tmp, _umask_mode(0o777))
-        if path.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{path.name}.", suffix=".old", dir=parent))
-            os.replace(path, old / path.name)
-            os.replace(tmp, path)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            os.replace(tmp, path)
-    finally:
-        if tmp.exists():
-            shutil.rmtree(tmp, ignore_errors=True)
 
 
+# -- provenance -------------------------------------------------------------------------------
 def provenance(parameters: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """Metadata for an output file: package version, UTC date, platform and ``parameters``."""
     from fem_racket.version import __version__
@@ -190,7 +447,9 @@ def sidecar_path(path: str | os.PathLike) -> Path:
 def write_sidecar(
     path: str | os.PathLike, meta: Mapping[str, Any], *, overwrite: bool = False
 ) -> Path:
-    """Write the provenance ``meta`` to :func:`sidecar_path` of ``path`` (atomically)."""
+    """Write the provenance ``meta`` to :func:`sidecar_path` of ``path`` (atomically).
+
+    For a sidecar written with its file, use one :func:`atomic_outputs` for both instead."""
     import json
 
     side = sidecar_path(path)

@@ -2,7 +2,9 @@
 
 Each check raises :class:`InputError` with a one-line message that names the parameter, the value
 it was given and the allowed range or form, e.g.
-``speed = -3.0 m/s is not allowed: must be a finite number > 0``.
+``speed = -3.0 m/s is not allowed: must be a finite number > 0``. Values are shown by
+:func:`show`: as a user would type them (no numpy reprs such as ``np.float64(26.5)``), long ones
+shortened, so every message stays one readable line.
 """
 
 from __future__ import annotations
@@ -17,16 +19,62 @@ __all__ = [
     "check_integer",
     "check_positive",
     "check_range",
+    "show",
+    "show_path",
 ]
+
+#: Longest value shown in a message [characters]; longer ones are shortened with "...".
+SHOW_LIMIT = 60
+#: The same for file and folder paths, which are read whole more often.
+PATH_LIMIT = 160
 
 
 class InputError(ValueError):
     """A user-supplied value is outside its allowed range or form."""
 
 
+def _plain(value: object) -> object:
+    """A numpy scalar or 0-d array as the Python number it holds; anything else unchanged."""
+    if getattr(value, "ndim", None) == 0 and hasattr(value, "item"):
+        return value.item()  # type: ignore[union-attr]
+    return value
+
+
+def show(value: object, limit: int = SHOW_LIMIT) -> str:
+    """``value`` as it appears in a message: numbers and strings as Python writes them
+    (``26.5``, ``'a.gif'``), numpy scalars and arrays as plain numbers and lists, and anything
+    longer than ``limit`` characters shortened (``[0.5, 0.5, ... (80 values)]``,
+    ``'aaaa...aaaa.json'``)."""
+    value = _plain(value)
+    if hasattr(value, "tolist") and getattr(value, "ndim", 0) >= 1:
+        value = value.tolist()  # type: ignore[union-attr]
+    if isinstance(value, (list, tuple)):
+        items = [show(v, limit) for v in value]
+        text = "[" + ", ".join(items) + "]"
+        if len(text) <= limit:
+            return text
+        kept: list[str] = []
+        for item in items:
+            if len(", ".join([*kept, item])) > limit - 20:
+                break
+            kept.append(item)
+        return "[" + ", ".join([*kept, f"... ({len(items)} values)"]) + "]"
+    text = repr(value)
+    if len(text) <= limit:
+        return text
+    head = (limit - 3) * 2 // 3
+    return text[:head] + "..." + text[head + 3 - limit :]
+
+
+def show_path(path: object) -> str:
+    """A file or folder path as it appears in a message: quoted, shortened beyond
+    :data:`PATH_LIMIT` characters."""
+    return show(str(path), PATH_LIMIT)
+
+
 def _fmt(name: str, value: object, unit: str) -> str:
     unit_txt = f" {unit}" if unit else ""
-    return f"{name} = {value!r}{unit_txt}"
+    return f"{name} = {show(value)}{unit_txt}"
 
 
 def check_finite(name: str, value: object, unit: str = "") -> float:
@@ -77,7 +125,9 @@ def check_choice(name: str, value: object, choices: Iterable[str]) -> str:
     """Return ``value`` if it is one of ``choices``, or raise listing them."""
     options = tuple(choices)
     if value not in options:
-        raise InputError(f"{name} = {value!r} is not allowed: must be one of {', '.join(options)}")
+        raise InputError(
+            f"{name} = {show(value)} is not allowed: must be one of {', '.join(options)}"
+        )
     return str(value)
 
 
@@ -86,5 +136,5 @@ def check_integer(name: str, value: object, minimum: int = 1) -> int:
     import numbers
 
     if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
-        raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= {minimum}")
+        raise InputError(f"{name} = {show(value)} is not allowed: must be an integer >= {minimum}")
     return int(value)

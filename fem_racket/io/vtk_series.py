@@ -24,9 +24,9 @@ nor pyvista reads it as a time series (pyvista's HDF reader has no time support)
 ``.vtu`` files read back exactly with meshio and pyvista (``PVDReader.time_values``) and the
 ``.pvd`` opens in ParaView. meshio, pyvista and VTK have no ``.pvd`` writer (pyvista only reads
 it), so that small XML collection is written here with ``xml.etree``; the ``.vtu`` files are
-written by pyvista, because meshio's VTU writer drops field data (the ``TimeValue`` that ParaView
-reads from a single file). meshio cannot read VTK string arrays, hence the provenance is a sidecar
-JSON, ``provenance.json``.
+made by VTK's XML writer (as pyvista's ``save`` does), because meshio's VTU writer drops field
+data (the ``TimeValue`` that ParaView reads from a single file). meshio cannot read VTK string
+arrays, hence the provenance is a sidecar JSON, ``provenance.json``.
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, check_range
 
 if TYPE_CHECKING:
     import pyvista as pv
@@ -49,11 +49,17 @@ __all__ = [
     "BALL_FIELDS",
     "BALL_RADIUS",
     "FRAME_FIELDS",
+    "MAX_SCALE",
     "ImpactSeries",
+    "check_scale",
     "field_name",
     "impact_series",
     "sample_steps",
 ]
+
+#: Largest deflection exaggeration [-]: millimetres drawn as kilometres; far beyond any use, and
+#: far below where the drawn coordinates would overflow to infinity.
+MAX_SCALE = 1e6
 
 log = logging.getLogger(__name__)
 
@@ -199,6 +205,11 @@ def _sphere(resolution: int) -> pv.UnstructuredGrid:
     return grid
 
 
+def check_scale(scale: object) -> float:
+    """``scale`` as a float if it is a deflection exaggeration in (0, :data:`MAX_SCALE`]."""
+    return check_range("scale", scale, 0.0, MAX_SCALE, include_low=False)
+
+
 def impact_series(
     result: ImpactResult,
     *,
@@ -227,7 +238,7 @@ def impact_series(
         R_B [m].
     """
     subdivide = _check_int("subdivide", subdivide, 1, 1000)
-    scale = check_positive("scale", scale)
+    scale = check_scale(scale)
     ball_radius = check_positive("ball_radius", ball_radius, "m")
     if result.t.size < 2:
         raise InputError("result has no time histories: simulate with output_step set (not None)")

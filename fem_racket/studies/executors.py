@@ -10,6 +10,13 @@ process (which checkpoints it) as soon as it arrives, in completion order.
   threaded parent), with the package preloaded.
 - ``dask``: ``distributed.Client(scheduler)`` - the very code path used on a cluster; each
   worker needs fem_racket installed.
+
+Workers end with the command. When the caller stops for any reason (an error, Ctrl-C's
+KeyboardInterrupt, SIGTERM turned into one by the CLI) the pool's processes are terminated and
+the Dask futures cancelled before the exception goes on. Pool workers ignore SIGINT (the
+terminal sends Ctrl-C to the whole process group; the parent decides) and, on Linux, ask the
+kernel to kill them when their parent dies (``PR_SET_PDEATHSIG``), so not even SIGKILL of the
+command leaves them behind.
 """
 
 from __future__ import annotations
@@ -17,6 +24,7 @@ from __future__ import annotations
 import logging
 import os
 import re
+import signal
 import sys
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -69,6 +77,50 @@ def _serial(work: Work, chunks: Sequence[np.ndarray], kwargs: dict, done: Done, 
         bar.update(len(chunk))
 
 
+#: ``prctl`` option asking for a signal when the parent process dies (linux/prctl.h).
+_PR_SET_PDEATHSIG = 1
+
+
+def _worker_init(parent: int) -> None:
+    """Start of every pool worker: leave SIGINT to the parent, die with the parent."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        import ctypes
+
+        try:
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        except (OSError, AttributeError):  # no prctl: the parent's cleanup still applies
+            pass
+    if os.getppid() != parent and not _alive(parent):  # the parent died before prctl
+        os._exit(1)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _terminate(pool: Any) -> None:
+    """Stop a ProcessPoolExecutor now: cancel the chunks not started, kill the workers."""
+    procs = list((getattr(pool, "_processes", None) or {}).values())  # shutdown forgets them
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in procs:
+        if proc.is_alive():
+            proc.terminate()
+    for proc in procs:
+        proc.join(timeout=5)
+        if proc.is_alive():
+            proc.kill()
+            proc.join(timeout=5)
+
+
 def _pool_context() -> Any:
     """``fork`` when this process has no other thread (fast: no re-import, works from stdin and
     notebooks), else ``forkserver`` with the package preloaded (forking a threaded process is
@@ -96,19 +148,24 @@ def _processes(
 ) -> None:
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    with ProcessPoolExecutor(max_workers=workers, mp_context=_pool_context()) as pool:
+    pool = ProcessPoolExecutor(
+        max_workers=workers,
+        mp_context=_pool_context(),
+        initializer=_worker_init,
+        initargs=(os.getpid(),),
+    )
+    try:
         pending = {pool.submit(work, c, **kwargs): c for c in chunks}
-        try:
-            while pending:
-                finished, _ = wait(pending, return_when=FIRST_COMPLETED)
-                for fut in finished:
-                    chunk = pending.pop(fut)
-                    done(chunk, fut.result())
-                    bar.update(len(chunk))
-        except BaseException:
-            for fut in pending:
-                fut.cancel()
-            raise
+        while pending:
+            finished, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for fut in finished:
+                chunk = pending.pop(fut)
+                done(chunk, fut.result())
+                bar.update(len(chunk))
+    except BaseException:
+        _terminate(pool)
+        raise
+    pool.shutdown(wait=True)
 
 
 def _dask(
@@ -129,11 +186,15 @@ def _dask(
         log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
         futures = client.map(work, list(chunks), pure=False, **kwargs)
         index = {f.key: c for f, c in zip(futures, chunks, strict=True)}
-        for fut in as_completed(futures, loop=client.loop):
-            chunk = index[fut.key]
-            done(chunk, fut.result())
-            bar.update(len(chunk))
-            fut.release()
+        try:
+            for fut in as_completed(futures, loop=client.loop):
+                chunk = index[fut.key]
+                done(chunk, fut.result())
+                bar.update(len(chunk))
+                fut.release()
+        except BaseException:
+            client.cancel(futures)  # the scheduler drops them: the workers stop with us
+            raise
     finally:
         client.close()
 
