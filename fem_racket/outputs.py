@@ -26,7 +26,7 @@ The conventions, the same for every command (README, "Outputs, --overwrite and p
 5. Put ``provenance(parameters)`` in the output: JSON a ``"provenance"`` object; netCDF global
    attributes; PNG text chunks (:func:`add_png_provenance`); a folder a ``provenance.json`` in
    it; formats that cannot hold it (CSV, GIF, MP4) a sidecar ``<file>.json``
-   (:func:`sidecar_path`), written in the same set as the file.
+   (:func:`sidecar_path`), written in the same :func:`atomic_outputs` set as the file.
 """
 
 from __future__ import annotations
@@ -60,7 +60,6 @@ __all__ = [
     "check_targets",
     "provenance",
     "sidecar_path",
-    "write_sidecar",
 ]
 
 log = logging.getLogger(__name__)
@@ -442,20 +441,6 @@ def sidecar_path(path: str | os.PathLike) -> Path:
     """The provenance file beside an output that cannot hold it (CSV, GIF, MP4): ``<path>.json``."""
     path = Path(path)
     return path.with_name(path.name + ".json")
-
-
-def write_sidecar(
-    path: str | os.PathLike, meta: Mapping[str, Any], *, overwrite: bool = False
-) -> Path:
-    """Write the provenance ``meta`` to :func:`sidecar_path` of ``path`` (atomically).
-
-    For a sidecar written with its file, use one :func:`atomic_outputs` for both instead."""
-    import json
-
-    side = sidecar_path(path)
-    with atomic_output(side, overwrite=overwrite) as tmp:
-        tmp.write_text(json.dumps(dict(meta), indent=2, default=str) + "\n", encoding="utf-8")
-    return side
 
 
 def add_png_provenance(path: str | os.PathLike, meta: Mapping[str, Any]) -> None:

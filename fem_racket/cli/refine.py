@@ -145,8 +145,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study, print the table (or JSON), write the CSV and the plot."""
-    from fem_racket.io.refine_files import csv_files, format_study, plot_studies, write_csv
-    from fem_racket.outputs import check_output_path
+    from fem_racket.io.refine_files import format_study, refine_targets, write_outputs
+    from fem_racket.outputs import check_targets
     from fem_racket.studies.refine import refinement_study
 
     if args.count < 1:
@@ -155,8 +155,8 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"grading = {args.grading!r} is not allowed: must be a finite number >= 1")
     frame = frame_from_args(args, exclusive=("ei1", "ei2"))
     outputs = [] if args.no_files else [Path(args.csv), Path(args.plot)]
-    for path in [*csv_files(args.csv), Path(args.plot)] if outputs else []:
-        check_output_path(path, overwrite=args.overwrite)  # fail before the work, not after it
+    if outputs:  # fail before the work, not after it
+        check_targets(refine_targets(args.csv, args.plot), overwrite=args.overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
     impact = {
         "ball_mass": args.ball_mass,
@@ -180,9 +180,7 @@ def run(args: argparse.Namespace) -> int:
         for fam in families
     }
     if outputs:
-        params = run_parameters(args)
-        write_csv(studies, outputs[0], overwrite=args.overwrite, parameters=params)
-        plot_studies(studies, outputs[1], overwrite=args.overwrite, parameters=params)
+        write_outputs(studies, *outputs, overwrite=args.overwrite, parameters=run_parameters(args))
     first, *rest = studies.values()
     if args.json:
         data = first.to_dict()

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import json
 from pathlib import Path
 from typing import Any
 
@@ -30,13 +31,14 @@ from fem_racket.cli.common import (
 )
 from fem_racket.impact.simulate import simulate
 from fem_racket.outputs import (
-    atomic_output,
+    Target,
+    atomic_outputs,
     check_output_path,
+    check_targets,
     provenance,
     sidecar_path,
-    write_sidecar,
 )
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show_path
 
 #: Suffixes --out takes (case-insensitive) and what each writes.
 OUT_SUFFIXES = (".json", ".csv")
@@ -58,18 +60,16 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _check_out(args: argparse.Namespace) -> list[Path]:
-    """The files --out will write, checked before the run."""
+    """The files --out will write (a CSV's sidecar too), checked before the run."""
     path = Path(args.out)
-    suffix = path.suffix.lower()
     if path.is_dir():
         check_output_path(path)  # says it is a folder, not a file
-    if suffix not in OUT_SUFFIXES:
+    if path.suffix.lower() not in OUT_SUFFIXES:
         raise InputError(
-            f"output = '{path}' is not allowed: must end in {' or '.join(OUT_SUFFIXES)}"
+            f"out = {show_path(path)} is not allowed: must end in {' or '.join(OUT_SUFFIXES)}"
         )
-    files = [path, sidecar_path(path)] if suffix == ".csv" else [path]
-    for f in files:
-        check_output_path(f, overwrite=args.overwrite)
+    files = [path, sidecar_path(path)] if path.suffix.lower() == ".csv" else [path]
+    check_targets([Target(f) for f in files], overwrite=args.overwrite)
     return files
 
 
@@ -84,21 +84,23 @@ def _histories(result) -> dict[str, Any]:
     }
 
 
-def _write(args: argparse.Namespace, result, summary: dict[str, Any]) -> None:
+def _write(args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path]) -> None:
+    """Write --out: JSON, or CSV and its sidecar as one set (both or neither)."""
     history = _histories(result)
     meta = provenance(run_parameters(args))
-    if Path(args.out).suffix.lower() == ".json":
+    if len(files) == 1:
         data = {"provenance": meta, "summary": summary}
         history = {k: v.tolist() for k, v in history.items()}
         write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
         return
-    with atomic_output(args.out, overwrite=args.overwrite) as tmp:
+    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
         with open(tmp, "w", newline="", encoding="utf-8") as f:
             w = csv.writer(f)
             w.writerow(history)
             for row in zip(*history.values(), strict=True):
                 w.writerow([repr(float(v)) for v in row])
-    write_sidecar(args.out, {**meta, "summary": summary}, overwrite=args.overwrite)
+        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
+        side.write_text(text + "\n", encoding="utf-8")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -110,7 +112,7 @@ def run(args: argparse.Namespace) -> int:
     note_modes(args, model)
     summary = result.summary()
     if args.out:
-        _write(args, result, summary)
+        _write(args, result, summary, files)
     if args.json:
         print_json(summary)
         return 0

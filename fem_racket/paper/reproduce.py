@@ -17,9 +17,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from fem_racket.outputs import atomic_output, check_output_path, provenance
+from fem_racket.outputs import Target, atomic_outputs, check_targets, provenance
 from fem_racket.paper.claims import AGREES, DIFFERS, NOT_CHECKABLE, Claim, build_claims
-from fem_racket.paper.figures import FIGURES, FigureData, expected_files, write_figure
+from fem_racket.paper.figures import FIGURES, FigureData, expected_files, write_figure_into
 
 __all__ = ["Reproduction", "render_report", "reproduce"]
 
@@ -190,7 +190,9 @@ def reproduce(
         Coarse grids (for tests); the report says so.
     overwrite : bool
         Replace existing files. Otherwise any existing output is an error, raised before any
-        computation.
+        computation (as is any destination that cannot be written). Every file - figures,
+        ``values.json``, the report - is written after all figures are computed, as one set:
+        all of them or, on any failure or interruption, none (old files kept).
     figures : list of str, optional
         Subset of :data:`fem_racket.figures.FIGURES` keys; all by default (a report needs all).
     parameters : dict, optional
@@ -205,11 +207,13 @@ def reproduce(
     if report is not None and set(keys) != set(FIGURES):
         raise InputError("figures is not allowed with a report: the report needs every figure")
     out = Path(out_dir)
-    targets = [p for k in keys for p in expected_files(FIGURES[k], out)] + [out / "values.json"]
+    groups = {k: expected_files(FIGURES[k], out) for k in keys}
+    files = [p for paths in groups.values() for p in paths] + [out / "values.json"]
+    targets = [Target(p, name="out") for p in files]
     if report is not None:
-        targets.append(Path(report))
-    for p in targets:
-        check_output_path(p, overwrite=overwrite)
+        targets.append(Target(Path(report), name="report"))
+        files.append(Path(report))
+    check_targets(targets, overwrite=overwrite)  # every destination, before the work
     meta = provenance(
         {
             "quick": quick,
@@ -222,25 +226,24 @@ def reproduce(
         }
     )
     done: dict[str, FigureData] = {}
-    files: list[Path] = []
     seconds: dict[str, float] = {}
     for key in keys:
         t0 = time.perf_counter()
-        data = FIGURES[key].compute(quick)
-        files += write_figure(FIGURES[key], data, out, overwrite=overwrite, meta=meta)
-        done[key] = data
+        done[key] = FIGURES[key].compute(quick)
         seconds[key] = time.perf_counter() - t0
         log.info("%s: %.2f s", key, seconds[key])
     values = {k: d.values for k, d in done.items()}
-    with atomic_output(out / "values.json", overwrite=overwrite) as tmp:
-        tmp.write_text(json.dumps({"provenance": meta, "values": values}, indent=1))
-    files.append(out / "values.json")
     claims = build_claims(values) if report is not None else []
-    if report is not None:
-        rel = os.path.relpath(out.resolve(), Path(report).resolve().parent).replace(os.sep, "/")
-        text = render_report(done, claims, rel, quick=quick)
-        text += f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
-        with atomic_output(report, overwrite=overwrite) as tmp:
-            tmp.write_text(text)
-        files.append(Path(report))
+    with atomic_outputs(targets, overwrite=overwrite) as temps:  # all files or none
+        pending = iter(temps)
+        for key, paths in groups.items():
+            t0 = time.perf_counter()
+            write_figure_into(FIGURES[key], done[key], [next(pending) for _ in paths], meta)
+            seconds[key] += time.perf_counter() - t0
+        next(pending).write_text(json.dumps({"provenance": meta, "values": values}, indent=1))
+        if report is not None:
+            rel = os.path.relpath(out.resolve(), Path(report).resolve().parent)
+            text = render_report(done, claims, rel.replace(os.sep, "/"), quick=quick)
+            text += f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
+            next(pending).write_text(text)
     return Reproduction(done, claims, files, seconds)

@@ -16,10 +16,17 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.outputs import add_png_provenance, atomic_output, check_output_path, provenance
+from fem_racket.outputs import add_png_provenance, atomic_output, atomic_outputs, provenance
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 
-__all__ = ["FigureData", "FigureSpec", "expected_files", "write_csv", "write_figure"]
+__all__ = [
+    "FigureData",
+    "FigureSpec",
+    "expected_files",
+    "write_csv",
+    "write_figure",
+    "write_figure_into",
+]
 
 log = logging.getLogger(__name__)
 
@@ -34,17 +41,22 @@ def write_csv(
     path: str | os.PathLike, columns: Mapping[str, np.ndarray], *, overwrite: bool = False
 ) -> Path:
     """Write equal-length ``columns`` (name with unit -> values) as CSV with a header row."""
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        _write_table(tmp, columns, Path(path).name)
+    return Path(path)
+
+
+def _write_table(path: Path, columns: Mapping[str, np.ndarray], label: str) -> None:
     names = list(columns)
     arrays = [np.asarray(columns[n]) for n in names]
     lengths = {a.shape for a in arrays}
     if len(lengths) != 1 or len(next(iter(lengths))) != 1:
-        raise ValueError(f"columns of {path} must be 1-D arrays of one length, got {lengths}")
-    with atomic_output(path, overwrite=overwrite) as tmp, open(tmp, "w", newline="") as fh:
+        raise ValueError(f"columns of {label} must be 1-D arrays of one length, got {lengths}")
+    with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(names)
         for row in zip(*arrays, strict=True):
             w.writerow([_fmt(v) for v in row])
-    return Path(path)
 
 
 def _fmt(v: object) -> str:
@@ -61,19 +73,30 @@ def write_figure(
     overwrite: bool = False,
     meta: Mapping[str, Any] | None = None,
 ) -> list[Path]:
-    """Write the tables and the PNG of ``data`` into ``out_dir``; returns the paths written.
+    """Write the tables and the PNG of ``data`` into ``out_dir`` (all or none); returns the
+    paths written.
 
     The PNG carries the provenance ``meta`` (:func:`fem_racket.outputs.provenance`; by default
     one naming the figure) in its text chunks."""
-    from fem_racket.paper import plots
-
     paths = expected_files(spec, out_dir)
-    for p in paths:
-        check_output_path(p, overwrite=overwrite)
-    for table, path in zip(spec.tables, paths, strict=False):
-        write_csv(path, data.tables[table], overwrite=overwrite)
-    with atomic_output(paths[-1], overwrite=overwrite) as tmp:
-        getattr(plots, spec.plot)(data, tmp)
-        add_png_provenance(tmp, meta or provenance({"figure": spec.name}))
+    with atomic_outputs(paths, overwrite=overwrite) as temps:
+        write_figure_into(spec, data, temps, meta)
     log.info("wrote %s", ", ".join(p.name for p in paths))
     return paths
+
+
+def write_figure_into(
+    spec: FigureSpec,
+    data: FigureData,
+    paths: list[Path],
+    meta: Mapping[str, Any] | None = None,
+) -> None:
+    """Write the tables and the PNG of ``data`` to ``paths``, in the order of
+    :func:`expected_files` (temporaries of a caller's :func:`fem_racket.outputs.atomic_outputs`:
+    no checks here)."""
+    from fem_racket.paper import plots
+
+    for table, path in zip(spec.tables, paths[:-1], strict=True):
+        _write_table(path, data.tables[table], f"{spec.name}_{table}.csv")
+    getattr(plots, spec.plot)(data, paths[-1])
+    add_png_provenance(paths[-1], meta or provenance({"figure": spec.name}))
