@@ -108,11 +108,19 @@ def _name_max(folder: Path) -> int:
         return 255
 
 
-def _existing_ancestor(folder: Path) -> Path:
-    probe = folder.absolute()
-    while not probe.exists() and probe != probe.parent:
-        probe = probe.parent
-    return probe
+def _exists(path: Path) -> bool:
+    try:
+        return path.exists()
+    except OSError:  # a name too long for the file system: certainly not there
+        return False
+
+
+def _existing_ancestor(path: Path) -> Path:
+    """The nearest existing one of ``path`` and its parents, in the form the user gave."""
+    for probe in (path, *path.parents):
+        if _exists(probe):
+            return probe
+    return Path(path.anchor or ".")
 
 
 def _quoted(path: Path) -> str:
@@ -123,19 +131,24 @@ def _refuse(t: Target, why: str) -> InputError:
     return InputError(f"{t.name} = {_quoted(t.path)} is not allowed: {why}")
 
 
-def _check_writable(t: Target) -> None:
-    """Raise unless every missing folder of ``t.path`` can be created and the folder takes a new
-    file of that name; creates and deletes a probe file in the nearest existing folder."""
-    folder = t.path.absolute().parent
-    base = _existing_ancestor(folder)
-    if not base.is_dir():
-        raise _refuse(t, f"its folder cannot be created: {_quoted(base)} is a file")
-    limit = _name_max(base)
-    missing = folder.relative_to(base).parts + (t.path.name,)
-    for part in missing:
+def _check_names(t: Target) -> Path:
+    """Raise unless every missing part of ``t.path`` fits the file system's name length;
+    return the nearest existing folder."""
+    base = _existing_ancestor(t.path)
+    limit = _name_max(base if base.is_dir() else base.parent)
+    for part in t.path.relative_to(base).parts:
         size = len(os.fsencode(part))
         if size > limit:
             raise _refuse(t, f"the name {show(part)} is {size} bytes long: at most {limit} here")
+    return base
+
+
+def _check_writable(t: Target) -> None:
+    """Raise unless every missing folder of ``t.path`` can be created and the folder takes a new
+    file; creates and deletes a probe file in the nearest existing folder."""
+    base = _existing_ancestor(t.path.parent)
+    if not base.is_dir():
+        raise _refuse(t, f"its folder cannot be created: {_quoted(base)} is a file")
     try:
         fd, probe = tempfile.mkstemp(prefix=".fem_racket-probe-", dir=base)
     except OSError as exc:
@@ -154,6 +167,7 @@ def check_output_path(
     folder cannot be created or does not take a new file. Creates nothing.
     """
     t = Target(Path(path), name=name)
+    _check_names(t)
     if t.path.is_dir():
         raise _refuse(t, "it is a folder: must be a file path")
     if t.path.exists() and not overwrite:
@@ -176,6 +190,7 @@ def check_output_folder(
     folder this program did not write), or as :func:`check_output_path` for its parent.
     """
     t = Target(Path(path), folder=True, marker=marker, name=name)
+    _check_names(t)
     if t.path.exists() and not t.path.is_dir():
         raise _refuse(t, "it is a file: must be a folder path")
     if t.path.is_dir():

@@ -15,6 +15,7 @@ from collections.abc import Iterable
 __all__ = [
     "InputError",
     "check_choice",
+    "check_elements",
     "check_finite",
     "check_integer",
     "check_positive",
@@ -26,7 +27,7 @@ __all__ = [
 #: Longest value shown in a message [characters]; longer ones are shortened with "...".
 SHOW_LIMIT = 60
 #: The same for file and folder paths, which are read whole more often.
-PATH_LIMIT = 160
+PATH_LIMIT = 120
 
 
 class InputError(ValueError):
@@ -49,8 +50,9 @@ def show(value: object, limit: int = SHOW_LIMIT) -> str:
     if hasattr(value, "tolist") and getattr(value, "ndim", 0) >= 1:
         value = value.tolist()  # type: ignore[union-attr]
     if isinstance(value, (list, tuple)):
+        left, right = "()" if isinstance(value, tuple) else "[]"
         items = [show(v, limit) for v in value]
-        text = "[" + ", ".join(items) + "]"
+        text = left + ", ".join(items) + right
         if len(text) <= limit:
             return text
         kept: list[str] = []
@@ -58,7 +60,7 @@ def show(value: object, limit: int = SHOW_LIMIT) -> str:
             if len(", ".join([*kept, item])) > limit - 20:
                 break
             kept.append(item)
-        return "[" + ", ".join([*kept, f"... ({len(items)} values)"]) + "]"
+        return left + ", ".join([*kept, f"... ({len(items)} values)"]) + right
     text = repr(value)
     if len(text) <= limit:
         return text
@@ -138,3 +140,20 @@ def check_integer(name: str, value: object, minimum: int = 1) -> int:
     if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
         raise InputError(f"{name} = {show(value)} is not allowed: must be an integer >= {minimum}")
     return int(value)
+
+
+def check_elements(value: object, minimum: int = 2, name: str = "elements") -> int:
+    """Return a number of beam elements as an int, or raise unless it is an integer (a whole
+    float such as 20.0 counts) >= ``minimum``: the words of every command's ``--elements``
+    (the standard frame's two segments need at least 2)."""
+    number = _plain(value)
+    whole = (
+        isinstance(number, (int, float))
+        and not isinstance(number, bool)
+        and math.isfinite(number)
+        and float(number).is_integer()
+    )
+    if not whole or number < minimum:
+        shown = int(number) if whole else value  # "0", not "0.0", for a count read as a float
+        raise InputError(f"{name} = {show(shown)} is not allowed: must be an integer >= {minimum}")
+    return int(number)

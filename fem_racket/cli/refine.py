@@ -18,7 +18,7 @@ from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 FAMILY_CHOICES = (*FAMILIES, "both")
 
@@ -152,7 +152,9 @@ def run(args: argparse.Namespace) -> int:
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
     if not args.grading >= 1.0 or args.grading == float("inf"):  # also NaN
-        raise InputError(f"grading = {args.grading!r} is not allowed: must be a finite number >= 1")
+        raise InputError(
+            f"grading = {show(args.grading)} is not allowed: must be a finite number >= 1"
+        )
     frame = frame_from_args(args, exclusive=("ei1", "ei2"))
     outputs = [] if args.no_files else [Path(args.csv), Path(args.plot)]
     if outputs:  # fail before the work, not after it

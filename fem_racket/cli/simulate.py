@@ -62,9 +62,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 def _check_out(args: argparse.Namespace) -> list[Path]:
     """The files --out will write (a CSV's sidecar too), checked before the run."""
     path = Path(args.out)
-    if path.is_dir():
-        check_output_path(path)  # says it is a folder, not a file
     if path.suffix.lower() not in OUT_SUFFIXES:
+        check_output_path(path, overwrite=True)  # a folder or a bad path says so first
         raise InputError(
             f"out = {show_path(path)} is not allowed: must end in {' or '.join(OUT_SUFFIXES)}"
         )
@@ -108,7 +107,8 @@ def run(args: argparse.Namespace) -> int:
     check_output_step(args.output_step)
     files = _check_out(args) if args.out else []
     model = build_model(args)
-    result = simulate(model, output_step=args.output_step, **impact_kwargs(args))
+    step = args.output_step if args.out else None  # histories only for --out
+    result = simulate(model, output_step=step, **impact_kwargs(args))
     note_modes(args, model)
     summary = result.summary()
     if args.out:

@@ -20,7 +20,7 @@ from fem_racket.frame.segments import Frame
 from fem_racket.impact.integrators import SOLVERS, get_solver
 from fem_racket.impact.setup import Impact
 from fem_racket.impact.system import SEPARATION_EVENTS, CoupledSystem, modal_system, physical_system
-from fem_racket.validation import InputError, check_choice, check_integer, check_positive
+from fem_racket.validation import InputError, check_choice, check_integer, check_positive, show
 
 __all__ = ["BASES", "ImpactResult", "build_system", "simulate"]
 
@@ -281,17 +281,23 @@ def simulate(
     if modes is not None:
         check_integer("modes", modes)
     if solver == "exact" and basis != "modal":
-        raise InputError(f"basis = {basis!r} is not allowed with solver 'exact': must be 'modal'")
+        raise InputError(
+            f"basis = {show(basis)} is not allowed with solver 'exact': must be 'modal'"
+        )
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
 
     system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
     if output_step is not None:
         span = 2.0 * system.contact_time_estimate() if t_max is None else t_max
         if span / output_step > MAX_OUTPUT_TIMES:
+            over = (
+                f"t_max = {show(t_max)} s" if t_max is not None
+                else f"the contact, about {span:.3g} s long (twice eq 11's estimate)"
+            )  # fmt: skip
             raise InputError(
-                f"output_step = {output_step!r} s is not allowed: must be >= "
-                f"{span / MAX_OUTPUT_TIMES:.3g} s (at most {MAX_OUTPUT_TIMES:.0e} output times "
-                f"over {span:.3g} s of contact)"
+                f"output_step = {show(output_step)} s is not allowed: {over} would need more "
+                f"than {MAX_OUTPUT_TIMES:.0e} output times; output_step must be >= "
+                f"{span / MAX_OUTPUT_TIMES:.3g} s"
             )
     traj = get_solver(solver)(
         system, separation=separation, output_step=output_step, t_max=t_max, rtol=rtol, atol=atol

@@ -76,7 +76,7 @@ def check_size(size: tuple[int, int]) -> tuple[int, int]:
         w = h = -1
     if not all(160 <= v <= 3840 and v % 16 == 0 for v in (w, h)):
         raise InputError(
-            f"size = {size!r} is not allowed: must be WIDTH x HEIGHT in pixels, "
+            f"size = {show(size)} is not allowed: must be WIDTH x HEIGHT in pixels, "
             "each a multiple of 16 in [160, 3840]"
         )
     return w, h

@@ -38,7 +38,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from fem_racket.validation import InputError, check_positive, check_range
+from fem_racket.validation import InputError, check_positive, check_range, show
 
 if TYPE_CHECKING:
     import pyvista as pv
@@ -90,14 +90,14 @@ def field_name(field: str) -> str:
     if field in FIELD_ALIASES:
         return FIELD_ALIASES[field]
     allowed = ", ".join([*FIELD_ALIASES, *(repr(f) for f in FRAME_FIELDS)])
-    raise InputError(f"field = {field!r} is not allowed: must be one of {allowed}")
+    raise InputError(f"field = {show(field)} is not allowed: must be one of {allowed}")
 
 
 def _check_int(name: str, value: object, low: int, high: int | None = None, why: str = "") -> int:
     ok = isinstance(value, (int, np.integer)) and not isinstance(value, bool)
     if not ok or value < low or (high is not None and value > high):
         rng = f">= {low}" if high is None else f"in [{low}, {high}]"
-        raise InputError(f"{name} = {value!r} is not allowed: must be an integer {rng}{why}")
+        raise InputError(f"{name} = {show(value)} is not allowed: must be an integer {rng}{why}")
     return int(value)
 
 

@@ -31,7 +31,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BACKENDS", "check_scheduler", "run_chunks"]
 
@@ -48,7 +48,9 @@ _ADDRESS = re.compile(r"^(tcp|tls|ucx|ws|wss)://[^\s/:]+:\d{1,5}$")
 def check_scheduler(address: str) -> str:
     """Validate a Dask scheduler address ``PROTOCOL://HOST:PORT``."""
     if not isinstance(address, str) or not _ADDRESS.match(address):
-        raise InputError(f"scheduler = {address!r} is not allowed: must look like tcp://HOST:PORT")
+        raise InputError(
+            f"scheduler = {show(address)} is not allowed: must look like tcp://HOST:PORT"
+        )
     return address
 
 
@@ -181,7 +183,7 @@ def _dask(
     try:
         client = Client(scheduler, timeout="10s", set_as_default=False)
     except OSError as exc:
-        raise InputError(f"scheduler = {scheduler!r} is not reachable: {exc}") from None
+        raise InputError(f"scheduler = {show(scheduler)} is not reachable: {exc}") from None
     try:
         log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
         futures = client.map(work, list(chunks), pure=False, **kwargs)
