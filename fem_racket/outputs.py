@@ -332,9 +332,7 @@ def _as_output_error(exc: OSError, targets: Sequence[Target], temps: Sequence[Pa
         if not hit:
             return exc
         target = hit[0]
-    err = OutputError(exc.errno, f"cannot write {_quoted(target)}: {_reason(exc)}")
-    err.filename = str(target)
-    return err
+    return OutputError(exc.errno, f"cannot write {_quoted(target)}: {_reason(exc)}")
 
 
 def _commit(targets: Sequence[Target], temps: Sequence[Path], overwrite: bool) -> None:
