@@ -59,10 +59,17 @@ __all__ = [
     "check_output_path",
     "check_targets",
     "provenance",
+    "record_interrupt",
     "sidecar_path",
 ]
 
 log = logging.getLogger(__name__)
+
+#: An interruption already raised (by a signal handler) that may have been swallowed: raised in a
+#: ``__del__`` or a weakref callback, Python prints and drops it. No set of outputs is moved into
+#: place once one is recorded (:func:`record_interrupt`), so "interrupted" always means "nothing
+#: written", however the interruption was delivered.
+_interrupted: type[BaseException] | None = None
 
 
 class OutputError(OSError):
@@ -335,8 +342,17 @@ def _as_output_error(exc: OSError, targets: Sequence[Target], temps: Sequence[Pa
     return OutputError(exc.errno, f"cannot write {_quoted(target)}: {_reason(exc)}")
 
 
+def record_interrupt(kind: type[BaseException] | None) -> None:
+    """Record an interruption raised by a signal handler (None clears it): every later
+    :func:`atomic_outputs` raises ``kind`` instead of moving its outputs into place."""
+    global _interrupted
+    _interrupted = kind
+
+
 def _commit(targets: Sequence[Target], temps: Sequence[Path], overwrite: bool) -> None:
     """Move every temporary into place; on a failure put every old output back."""
+    if _interrupted is not None:
+        raise _interrupted()
     moved: list[tuple[Target, Path | None]] = []
     try:
         for t, tmp in zip(targets, temps, strict=True):

@@ -11,7 +11,8 @@ exit    when
         standard output failed (``> /dev/full``); no partial output is left
 2       bad input: a value, a run file, a mesh file or a destination (checked before any work)
 130     interrupted by SIGINT (Ctrl-C); 143 by SIGTERM: the same cleanup (temporaries removed,
-        worker processes ended, a sweep's checkpoint kept: the line says how many cases it holds)
+        worker processes ended, a sweep's checkpoint kept: the line says how many cases it holds);
+        no output is moved into place after the signal
 141     the reader of standard output went away before everything was written
         (``fem-racket modes | head -1``); files already written are complete
 ======  ==========================================================================================
@@ -32,7 +33,7 @@ from typing import Any
 
 from fem_racket.cli import config, modes, refine, reproduce, simulate, sweep, vtk
 from fem_racket.cli.common import OneLineErrorParser, apply_config
-from fem_racket.outputs import OutputError
+from fem_racket.outputs import OutputError, record_interrupt
 from fem_racket.validation import InputError, show
 from fem_racket.version import __version__
 
@@ -94,15 +95,22 @@ class _Stdout:
         return getattr(self._stream, name)
 
 
+#: Interruptions received during the current command (a swallowed one included).
+_received: list[type[BaseException]] = []
+
+
 @contextmanager
 def _signal_handlers() -> Iterator[None]:
-    """SIGINT raises KeyboardInterrupt and SIGTERM :class:`Terminated`; after the first, both
-    are ignored so that the cleanup runs undisturbed. The old handlers are restored after."""
+    """SIGINT raises KeyboardInterrupt and SIGTERM :class:`Terminated`, and records it (see
+    :func:`fem_racket.outputs.record_interrupt`: an interruption that Python swallowed, raised
+    inside a ``__del__`` or a weakref callback, still stops any output from being moved into
+    place). The old handlers are restored after."""
 
     def handler(signum: int, frame: Any) -> None:
-        for s in (signal.SIGINT, signal.SIGTERM):
-            signal.signal(s, signal.SIG_IGN)
-        raise Terminated() if signum == signal.SIGTERM else KeyboardInterrupt()
+        kind = Terminated if signum == signal.SIGTERM else KeyboardInterrupt
+        record_interrupt(kind)
+        _received.append(kind)
+        raise kind()
 
     old = {}
     try:
@@ -110,11 +118,14 @@ def _signal_handlers() -> Iterator[None]:
             old[s] = signal.signal(s, handler)
     except ValueError:  # not the main thread: leave the handlers alone
         pass
+    _received.clear()
     try:
         yield
     finally:
         for s, h in old.items():
             signal.signal(s, h)
+        record_interrupt(None)
+        _received.clear()
 
 
 def _silence_stdout() -> None:
@@ -141,6 +152,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         with _signal_handlers():
             code = _run(argv)
             sys.stdout.flush()  # a closed pipe or a full device shows here, not at exit
+            if _received and code not in (EXIT_SIGINT, EXIT_SIGTERM):  # Python dropped it
+                return _interrupted(_received[0](), "fem-racket")
             return code
     except _StdoutFault as fault:
         sys.stdout = stream
@@ -182,9 +195,14 @@ def _run(argv: Sequence[str] | None) -> int:
         _say(exc, f"{prog}: error: {_describe(exc)}")
         return EXIT_FAULT
     except KeyboardInterrupt as exc:
-        name = "SIGTERM" if isinstance(exc, Terminated) else "SIGINT"
-        _say(exc, f"{prog}: interrupted by {name}; no partial output is left")
-        return EXIT_SIGTERM if isinstance(exc, Terminated) else EXIT_SIGINT
+        return _interrupted(exc, prog)
+
+
+def _interrupted(exc: KeyboardInterrupt, prog: str) -> int:
+    """Say so in one line; the exit code of the signal."""
+    name = "SIGTERM" if isinstance(exc, Terminated) else "SIGINT"
+    _say(exc, f"{prog}: interrupted by {name}; no partial output is left")
+    return EXIT_SIGTERM if isinstance(exc, Terminated) else EXIT_SIGINT
 
 
 class _NoteFormatter(logging.Formatter):
