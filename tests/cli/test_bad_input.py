@@ -56,6 +56,7 @@ def repro(*argv: str) -> list[str]:
     return ["reproduce", "--quick", *argv]
 
 
+ELEMENTS_ZERO = "elements = 0 is not allowed: must be an integer >= 2"
 A_FILE = {"afile": "not a folder"}  # a regular file where an output folder should go
 
 
@@ -134,6 +135,20 @@ SWEEP_CASES = [
     Case("sweep-repeated-values", sweep("--speed", "20,20"), ("speed = [20.0, 20.0]", "distinct")),
     Case("sweep-zeta-one", sweep("--zeta", "0.5,1"), ("zeta = 1", "[0, 1)")),
     Case("sweep-elements-fraction", sweep("--elements", "10.5"), ("elements = 10.5", "integer")),
+    # The same words as simulate's --elements (before: "finite number > 0", "np.float64(0.0)").
+    Case("sweep-elements-zero", sweep("--elements", "0"), (ELEMENTS_ZERO,)),
+    Case("sweep-elements-range-from-zero", sweep("--elements", "0:10:3"), (ELEMENTS_ZERO,)),
+    Case("simulate-elements-zero", sim("--elements", "0"), (ELEMENTS_ZERO,)),
+    Case(
+        "sweep-range-underflows-to-zero",
+        sweep("--speed", "1e-400:3:2"),
+        ("speed = 0.0 m/s is not allowed",),
+    ),
+    Case(
+        "sweep-long-list-shortened",
+        sweep("--position", ",".join(["0.5"] * 80)),
+        ("position = [0.5, 0.5,", "... (80 values)] is not allowed", "distinct"),
+    ),
     Case(
         "sweep-scheduler-form",
         ["sweep", "--quiet", "--scheduler", "localhost:8786"],
@@ -436,6 +451,11 @@ TOML_CASES = [
         toml("[frame]\nsegments = [{length_m=0.7, ei_n_m2=150, rhoa_kg_m=0.5}]\n", "--ei1", "9"),
         ("--ei1 cannot be combined with frame.segments",),
     ),
+    T(  # before: elements silently ignored (the command line refuses --mesh with --elements)
+        "toml-mesh-with-elements",
+        toml("[frame]\nmesh = 'racket.vtu'\nelements = 40\n"),
+        ("frame.elements = 40 is not allowed with frame.mesh", "remove one of them"),
+    ),
     T(
         "toml-missing-mesh",
         toml("[frame]\nmesh = 'meshes/none.vtu'\n"),
@@ -560,6 +580,11 @@ BAD_MESHES = [
     ),
     ("mesh-EI-nan", _mesh([0, 0.68], [[0, 1]], EI=[np.nan]), ("EI = nan", "finite")),
     ("mesh-unreadable", _garbage, ("could not be read",)),
+    (  # before: silently mirrored (the grip taken at the smallest x, the tip's end)
+        "mesh-negative-x",
+        _mesh([-0.68, -0.3, 0], [[0, 1], [1, 2]]),
+        ("x runs from -0.68 to 0 m", "must be >= 0", "mirror the file"),
+    ),
 ]
 
 #: How a bad mesh reaches each command: a run file, or --mesh.
