@@ -212,8 +212,16 @@ def check_output_folder(
     return t.path
 
 
-def check_targets(targets: Sequence[Target], *, overwrite: bool = False) -> list[Target]:
-    """Check every target (:func:`check_output_path` or :func:`check_output_folder`)."""
+def _as_target(t: Target | str | os.PathLike) -> Target:
+    return t if isinstance(t, Target) else Target(Path(t))
+
+
+def check_targets(
+    targets: Sequence[Target | str | os.PathLike], *, overwrite: bool = False
+) -> list[Target]:
+    """Check every target (:func:`check_output_path` or :func:`check_output_folder`); plain
+    paths are files named by ``--out``."""
+    targets = [_as_target(t) for t in targets]
     seen: set[Path] = set()
     for t in targets:
         key = t.path.absolute()
@@ -395,8 +403,7 @@ def atomic_outputs(
     the folders created for them are removed and every existing output is kept; an ``OSError``
     comes out as :class:`OutputError` naming the target.
     """
-    items = [t if isinstance(t, Target) else Target(Path(t)) for t in targets]
-    check_targets(items, overwrite=overwrite)
+    items = check_targets(targets, overwrite=overwrite)
     made: list[Path] = []
     temps: list[Path] = []
     ok = False

@@ -7,6 +7,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from fem_racket.outputs import OutputError
 from fem_racket.validation import InputError
 
 __all__ = ["figure_main"]
@@ -17,7 +18,9 @@ def figure_main(
 ) -> list[Path]:
     """Run figure ``key`` with options ``--out DIR --quick --overwrite``; return the files.
 
-    Bad input prints one line on stderr and exits with code 2.
+    Bad input (a destination that cannot be written included) prints one line on stderr and
+    exits with code 2; an output that cannot be written during the run (a full disk) one line
+    and code 1, nothing left behind.
     """
     from fem_racket.paper.figures import make_figure
 
@@ -33,6 +36,9 @@ def figure_main(
     except InputError as exc:
         print(f"{Path(sys.argv[0]).name}: error: {exc}", file=sys.stderr)
         raise SystemExit(2) from None
+    except OutputError as exc:
+        print(f"{Path(sys.argv[0]).name}: error: {exc.strerror}", file=sys.stderr)
+        raise SystemExit(1) from None
     for p in paths:
         print(p)
     return paths
