@@ -12,8 +12,9 @@ process (which checkpoints it) as soon as it arrives, in completion order.
   worker needs fem_racket installed.
 
 Workers end with the command. When the caller stops for any reason (an error, Ctrl-C's
-KeyboardInterrupt, SIGTERM turned into one by the CLI) the pool's processes are terminated and
-the Dask futures cancelled before the exception goes on. Pool workers ignore SIGINT (the
+KeyboardInterrupt, SIGTERM turned into one by the CLI) the pool's processes are terminated
+before the exception goes on, and the Dask client is closed, so that the scheduler drops the
+tasks not yet run. Pool workers ignore SIGINT (the
 terminal sends Ctrl-C to the whole process group; the parent decides) and, on Linux, ask the
 kernel to kill them when their parent dies (``PR_SET_PDEATHSIG``), so not even SIGKILL of the
 command leaves them behind.
@@ -188,17 +189,13 @@ def _dask(
         log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
         futures = client.map(work, list(chunks), pure=False, **kwargs)
         index = {f.key: c for f, c in zip(futures, chunks, strict=True)}
-        try:
-            for fut in as_completed(futures, loop=client.loop):
-                chunk = index[fut.key]
-                done(chunk, fut.result())
-                bar.update(len(chunk))
-                fut.release()
-        except BaseException:
-            client.cancel(futures)  # the scheduler drops them: the workers stop with us
-            raise
+        for fut in as_completed(futures, loop=client.loop):
+            chunk = index[fut.key]
+            done(chunk, fut.result())
+            bar.update(len(chunk))
+            fut.release()
     finally:
-        client.close()
+        client.close()  # the scheduler then drops every task of this sweep not yet run
 
 
 def run_chunks(
