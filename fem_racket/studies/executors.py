@@ -15,9 +15,10 @@ Workers end with the command. When the caller stops for any reason (an error, Ct
 KeyboardInterrupt, SIGTERM turned into one by the CLI) the pool's processes are terminated
 before the exception goes on, and the Dask client is closed, so that the scheduler drops the
 tasks not yet run. Pool workers ignore SIGINT (the
-terminal sends Ctrl-C to the whole process group; the parent decides) and, on Linux, ask the
-kernel to kill them when their parent dies (``PR_SET_PDEATHSIG``), so not even SIGKILL of the
-command leaves them behind.
+terminal sends Ctrl-C to the whole process group; the parent decides) and end when the command's
+process is gone - on Linux the kernel kills a forked worker with its parent
+(``PR_SET_PDEATHSIG``); a worker started by the forkserver polls the parent instead - so not even
+SIGKILL of the command leaves them behind.
 """
 
 from __future__ import annotations
@@ -27,6 +28,8 @@ import os
 import re
 import signal
 import sys
+import threading
+import time
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -85,19 +88,29 @@ _PR_SET_PDEATHSIG = 1
 
 
 def _worker_init(parent: int) -> None:
-    """Start of every pool worker: leave SIGINT to the parent, die with the parent."""
+    """Start of every pool worker: leave SIGINT to the parent, die with the parent ``parent``
+    (the kernel's parent-death signal when it forked us; else, under forkserver or spawn, a
+    watch thread polling it once a second)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    if sys.platform.startswith("linux"):
+    if os.getppid() != parent:
+        threading.Thread(target=_watch, args=(parent,), daemon=True).start()
+    elif sys.platform.startswith("linux"):
         import ctypes
 
         try:
             libc = ctypes.CDLL(None, use_errno=True)
             libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-        except (OSError, AttributeError):  # no prctl: the parent's cleanup still applies
-            pass
-    if os.getppid() != parent and not _alive(parent):  # the parent died before prctl
-        os._exit(1)
+        except (OSError, AttributeError):  # no prctl: the watch thread instead
+            threading.Thread(target=_watch, args=(parent,), daemon=True).start()
+        if os.getppid() != parent:  # the parent died before prctl
+            os._exit(1)
+
+
+def _watch(parent: int) -> None:
+    while _alive(parent):
+        time.sleep(1.0)
+    os._exit(1)
 
 
 def _alive(pid: int) -> bool:
@@ -136,7 +149,7 @@ def _pool_context() -> Any:
         return mp.get_context("fork")
     if "forkserver" in methods:
         ctx = mp.get_context("forkserver")
-        ctx.set_forkserver_preload(["fem_racket.cases"])
+        ctx.set_forkserver_preload(["fem_racket.studies.cases"])
         return ctx
     return mp.get_context("spawn")
 

@@ -126,6 +126,38 @@ def test_sigkill_of_a_pool_sweep_leaves_no_worker(tmp_path):
     _wait_for(lambda: not any(_alive(p) for p in workers), "the workers to end", 10)
 
 
+def _descendants(pid: int) -> set[int]:
+    found, todo = set(), [pid]
+    while todo:
+        kids = _children(todo.pop())
+        found |= kids
+        todo += kids
+    return found
+
+
+THREADED_SWEEP = """
+import threading, time
+import fem_racket as fr
+if __name__ == "__main__":
+    threading.Thread(target=time.sleep, args=(600,), daemon=True).start()  # forkserver, not fork
+    fr.sweep(position="0.55:0.95:20", ei1="50:3000:40:log", backend="processes", workers=2,
+             chunk_size=10, progress=False)
+"""
+
+
+def test_sigkill_of_a_threaded_caller_leaves_no_forkserver_worker(tmp_path):
+    # A threaded parent gets forkserver workers, whose parent is the forkserver: they watch the
+    # caller themselves.
+    (tmp_path / "run.py").write_text(THREADED_SWEEP)
+    proc = subprocess.Popen([sys.executable, "run.py"], cwd=tmp_path, env=_env(),
+                            stderr=subprocess.DEVNULL)  # fmt: skip
+    _wait_for(lambda: len(_descendants(proc.pid)) >= 4, "forkserver, tracker and 2 workers")
+    spawned = _descendants(proc.pid)
+    proc.kill()
+    proc.wait(timeout=30)
+    _wait_for(lambda: not any(_alive(p) for p in spawned), "every helper process to end", 15)
+
+
 def test_a_second_sweep_on_the_same_output_is_refused_while_one_runs(tmp_path):
     first = _start([*SWEEP, "--serial", "--chunk-size", "20", "--out", "s.nc"], tmp_path)
     _wait_for(lambda: len(_chunks(tmp_path / "s.nc.checkpoint")) >= 1, "a checkpoint")
