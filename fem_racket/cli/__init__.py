@@ -25,15 +25,20 @@ from __future__ import annotations
 import argparse
 import logging
 import os
-import signal
 import sys
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
-from typing import Any
+from collections.abc import Sequence
 
 from fem_racket.cli import config, modes, refine, reproduce, simulate, sweep, vtk
 from fem_racket.cli.common import OneLineErrorParser, apply_config
-from fem_racket.outputs import OutputError, record_interrupt
+from fem_racket.cli.signals import (
+    GuardedStdout,
+    StdoutFault,
+    Terminated,
+    received,
+    signal_handlers,
+    silence_stdout,
+)
+from fem_racket.outputs import OutputError
 from fem_racket.validation import InputError, show
 from fem_racket.version import __version__
 
@@ -62,81 +67,6 @@ def build_parser() -> argparse.ArgumentParser:
 EXIT_FAULT, EXIT_INPUT, EXIT_SIGINT, EXIT_BROKEN_PIPE, EXIT_SIGTERM = 1, 2, 130, 141, 143
 
 
-class Terminated(KeyboardInterrupt):
-    """SIGTERM, raised like Ctrl-C's KeyboardInterrupt so that it gets the same cleanup."""
-
-
-class _StdoutFault(Exception):
-    """Writing to standard output failed (the ``OSError`` is its ``__cause__``)."""
-
-
-class _Stdout:
-    """``sys.stdout`` whose write errors are :class:`_StdoutFault`, told apart from the errors
-    of the files a command writes."""
-
-    def __init__(self, stream: Any) -> None:
-        self._stream = stream
-
-    def write(self, text: str) -> int:
-        """Write to the wrapped stream."""
-        try:
-            return self._stream.write(text)
-        except OSError as exc:
-            raise _StdoutFault() from exc
-
-    def flush(self) -> None:
-        """Flush the wrapped stream."""
-        try:
-            self._stream.flush()
-        except OSError as exc:
-            raise _StdoutFault() from exc
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._stream, name)
-
-
-#: Interruptions received during the current command (a swallowed one included).
-_received: list[type[BaseException]] = []
-
-
-@contextmanager
-def _signal_handlers() -> Iterator[None]:
-    """SIGINT raises KeyboardInterrupt and SIGTERM :class:`Terminated`, and records it (see
-    :func:`fem_racket.outputs.record_interrupt`: an interruption that Python swallowed, raised
-    inside a ``__del__`` or a weakref callback, still stops any output from being moved into
-    place). The old handlers are restored after."""
-
-    def handler(signum: int, frame: Any) -> None:
-        kind = Terminated if signum == signal.SIGTERM else KeyboardInterrupt
-        record_interrupt(kind)
-        _received.append(kind)
-        raise kind()
-
-    old = {}
-    try:
-        for s in (signal.SIGINT, signal.SIGTERM):
-            old[s] = signal.signal(s, handler)
-    except ValueError:  # not the main thread: leave the handlers alone
-        pass
-    _received.clear()
-    try:
-        yield
-    finally:
-        for s, h in old.items():
-            signal.signal(s, h)
-        record_interrupt(None)
-        _received.clear()
-
-
-def _silence_stdout() -> None:
-    """Send later writes (the interpreter's final flush) to /dev/null."""
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, ValueError, AttributeError):  # no file descriptor (e.g. captured)
-        pass
-
-
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit code (see the module docstring)."""
     if sys.stdout is None:  # started with stdout closed: Python has no stream for it
@@ -147,17 +77,17 @@ def main(argv: Sequence[str] | None = None) -> int:
         )
         return EXIT_INPUT
     stream = sys.stdout
-    sys.stdout = _Stdout(stream)
+    sys.stdout = GuardedStdout(stream)
     try:
-        with _signal_handlers():
+        with signal_handlers():
             code = _run(argv)
             sys.stdout.flush()  # a closed pipe or a full device shows here, not at exit
-            if _received and code not in (EXIT_SIGINT, EXIT_SIGTERM):  # Python dropped it
-                return _interrupted(_received[0](), "fem-racket")
+            if received and code not in (EXIT_SIGINT, EXIT_SIGTERM):  # Python dropped it
+                return _interrupted(received[0](), "fem-racket")
             return code
-    except _StdoutFault as fault:
+    except StdoutFault as fault:
         sys.stdout = stream
-        _silence_stdout()
+        silence_stdout()
         if isinstance(fault.__cause__, BrokenPipeError):
             return EXIT_BROKEN_PIPE
         why = getattr(fault.__cause__, "strerror", None) or str(fault.__cause__)
