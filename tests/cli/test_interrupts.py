@@ -170,10 +170,12 @@ def test_a_second_sweep_on_the_same_output_is_refused_while_one_runs(tmp_path):
     assert f"(process {first.pid})" in err and err.count("\n") == 1
 
 
-@pytest.mark.parametrize("command", ["export-vtk", "animate", "reproduce"])
+@pytest.mark.parametrize(
+    "command", ["export-vtk", "animate", pytest.param("reproduce", marks=pytest.mark.slow)]
+)
 def test_sigterm_and_sigint_leave_no_temporary(tmp_path, command):
     argv = {
-        "export-vtk": ["export-vtk", "--out", "vtk", "--output-step", "2e-7"],
+        "export-vtk": ["export-vtk", "--out", "vtk", "--output-step", "5e-7"],
         "animate": ["animate", "--out", "a.gif", "--frames", "400", "--size", "320x160"],
         "reproduce": ["reproduce", "--out", "paper", "--report", "R.md"],
     }[command]

@@ -130,7 +130,7 @@ def test_export_killed_by_sigkill_leaves_a_part_folder_the_next_run_removes(tmp_
         "--out",
         "vtk",
         "--output-step",
-        "1e-7",
+        "5e-7",
     ]
     proc = subprocess.Popen(argv, cwd=tmp_path, env=env, stderr=subprocess.DEVNULL)
     try:
