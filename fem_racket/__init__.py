@@ -4,6 +4,9 @@ Reproduces and extends Kawazoe & Kanda (1997), "Analysis of impact phenomena in 
 ball-racket system", JSME Int. J. C 40(1).
 """
 
+from fem_racket.contact.hunt_crossley import HuntCrossley
+from fem_racket.contact.hysteretic import Hysteretic
+from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import (
     Ball,
     LinearContact,
@@ -11,6 +14,9 @@ from fem_racket.contact.linear import (
     kcb_from_speed,
     zeta_from_cor,
 )
+from fem_racket.contact.presets import get_law
+from fem_racket.contact.series import SeriesBallString
+from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.continuous import free_free_frequencies
 from fem_racket.frame.forms import FrameFE, assemble
 from fem_racket.frame.hermite import assemble_closed_form
@@ -49,12 +55,15 @@ __all__ = [
     "SOLVERS",
     "Ball",
     "ClampedImpact",
+    "ContactLaw",
     "CoupledModes",
     "Frame",
     "FrameFE",
     "FrameMesh",
     "FrameModel",
     "FreeModes",
+    "HuntCrossley",
+    "Hysteretic",
     "Impact",
     "ImpactResult",
     "ImpactSeries",
@@ -66,6 +75,8 @@ __all__ = [
     "RigidImpact",
     "RunConfig",
     "Segment",
+    "SeriesBallString",
+    "SpringDashpot",
     "__version__",
     "assemble",
     "assemble_closed_form",
@@ -77,6 +88,7 @@ __all__ = [
     "frame_mesh",
     "free_free_frequencies",
     "free_modes",
+    "get_law",
     "impact_series",
     "kcb_from_speed",
     "graded_mesh",

@@ -13,6 +13,7 @@ import math
 from collections.abc import Iterable
 
 __all__ = [
+    "AccuracyError",
     "InputError",
     "check_choice",
     "check_elements",
@@ -74,6 +75,14 @@ def show_path(path: object) -> str:
     return show(str(path), PATH_LIMIT)
 
 
+class AccuracyError(InputError):
+    """A case the tool cannot compute to its stated accuracy (an a-posteriori check failed).
+
+    Raised instead of returning a number that may be wrong; like :class:`InputError` it carries
+    a one-line message naming what was asked and why it is refused.
+    """
+
+
 def _fmt(name: str, value: object, unit: str) -> str:
     unit_txt = f" {unit}" if unit else ""
     return f"{name} = {show(value)}{unit_txt}"
@@ -133,19 +142,33 @@ def check_choice(name: str, value: object, choices: Iterable[str]) -> str:
     return str(value)
 
 
-def check_integer(name: str, value: object, minimum: int = 1) -> int:
-    """Return ``value`` as an int, or raise unless it is an integer >= ``minimum``."""
+def check_integer(name: str, value: object, minimum: int = 1, maximum: int | None = None) -> int:
+    """Return ``value`` as an int, or raise unless it is an integer >= ``minimum`` (and
+    <= ``maximum`` when given)."""
     import numbers
 
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
-        raise InputError(f"{name} = {show(value)} is not allowed: must be an integer >= {minimum}")
+    allowed = (
+        f"an integer >= {minimum}"
+        if maximum is None
+        else (f"an integer from {minimum} to {maximum}")
+    )
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, numbers.Integral)
+        or value < minimum
+        or (maximum is not None and value > maximum)
+    ):
+        raise InputError(f"{name} = {show(value)} is not allowed: must be {allowed}")
     return int(value)
 
 
-def check_elements(value: object, minimum: int = 2, name: str = "elements") -> int:
+def check_elements(
+    value: object, minimum: int = 2, maximum: int | None = None, name: str = "elements"
+) -> int:
     """Return a number of beam elements as an int, or raise unless it is an integer (a whole
-    float such as 20.0 counts) >= ``minimum``: the words of every command's ``--elements``
-    (the standard frame's two segments need at least 2)."""
+    float such as 20.0 counts) from ``minimum`` to ``maximum``, in the words of
+    :func:`check_integer` (every command's ``--elements``; the standard frame's two segments
+    need at least 2)."""
     number = _plain(value)
     whole = (
         isinstance(number, (int, float))
@@ -153,7 +176,7 @@ def check_elements(value: object, minimum: int = 2, name: str = "elements") -> i
         and math.isfinite(number)
         and float(number).is_integer()
     )
-    if not whole or number < minimum:
+    if not whole or number < minimum or (maximum is not None and number > maximum):
         shown = int(number) if whole else value  # "0", not "0.0", for a count read as a float
-        raise InputError(f"{name} = {show(shown)} is not allowed: must be an integer >= {minimum}")
+        return check_integer(name, shown, minimum, maximum)  # raises, in its words
     return int(number)

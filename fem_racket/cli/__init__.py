@@ -28,7 +28,7 @@ import os
 import sys
 from collections.abc import Sequence
 
-from fem_racket.cli import config, modes, refine, reproduce, simulate, sweep, vtk
+from fem_racket.cli import calibrate, config, modes, refine, reproduce, simulate, sweep, vtk
 from fem_racket.cli.common import OneLineErrorParser, apply_config
 from fem_racket.cli.signals import (
     GuardedStdout,
@@ -39,13 +39,14 @@ from fem_racket.cli.signals import (
     silence_stdout,
 )
 from fem_racket.outputs import OutputError
+from fem_racket.studies.executors import pin_blas_threads
 from fem_racket.validation import InputError, show
 from fem_racket.version import __version__
 
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, sweep, vtk, refine, reproduce, config)
+COMMANDS = (simulate, modes, sweep, vtk, refine, reproduce, calibrate, config)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -69,6 +70,7 @@ EXIT_FAULT, EXIT_INPUT, EXIT_SIGINT, EXIT_BROKEN_PIPE, EXIT_SIGTERM = 1, 2, 130,
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit code (see the module docstring)."""
+    pin_blas_threads()
     if sys.stdout is None:  # started with stdout closed: Python has no stream for it
         print(
             "fem-racket: error: standard output is closed: give it a file, a pipe or /dev/null "

@@ -19,6 +19,7 @@ import argparse
 import math
 from typing import Any
 
+from fem_racket.cli.laws import add_law_options, law_from_args
 from fem_racket.cli.lists import number_list
 from fem_racket.cli.output import (
     add_output_options,
@@ -33,6 +34,7 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
 from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.law_impact import LAW_SOLVERS
 from fem_racket.impact.simulate import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.mesh_files import read_mesh
@@ -178,6 +180,7 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         metavar="ZETA",
         help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
     )
+    add_law_options(parser)
     add_solver_options(parser)
 
 
@@ -187,8 +190,9 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
     s.add_argument(
         "--solver",
         default="exact",
-        choices=sorted(SOLVERS),
-        help="integrator: exact (closed-form modal solution), cvode or bdf (default exact)",
+        choices=sorted((*SOLVERS, *LAW_SOLVERS)),
+        help="integrator: exact (closed-form modal solution), cvode, bdf or general (any "
+        "contact law; used for a nonlinear --law when exact is asked) (default exact)",
     )
     s.add_argument(
         "--separation",
@@ -280,6 +284,7 @@ def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
         "t_max": args.t_max,
         "rtol": args.rtol,
         "atol": args.atol,
+        "law": law_from_args(args),
     }
 
 

@@ -29,6 +29,7 @@ from fem_racket.cli.common import (
     significant,
     write_json,
 )
+from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.impact.simulate import simulate
 from fem_racket.outputs import (
     Target,
@@ -102,6 +103,19 @@ def _write(args: argparse.Namespace, result, summary: dict[str, Any], files: lis
         side.write_text(text + "\n", encoding="utf-8")
 
 
+def _law_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """K_CB and zeta for the paper's law; else the law's name and parameters."""
+    if summary["law"] == "linear":
+        return [
+            ("K_CB", significant(summary["kcb_n_m"], 4), "N/m"),
+            ("zeta", significant(summary["zeta"], 3), "-"),
+        ]
+    params = {k: v for k, v in summary.items() if k in FILE_KEYS.values()}
+    return [("contact law", summary["law"], "")] + [
+        (k, significant(v, 4), "") for k, v in params.items()
+    ]
+
+
 def run(args: argparse.Namespace) -> int:
     """Simulate and print the result (and write it with ``--out``)."""
     check_output_step(args.output_step)
@@ -126,8 +140,7 @@ def run(args: argparse.Namespace) -> int:
         ("peak force", significant(summary["peak_force_n"], 4), "N"),
         ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
         ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),
-        ("K_CB", significant(summary["kcb_n_m"], 4), "N/m"),
-        ("zeta", significant(summary["zeta"], 3), "-"),
+        *_law_rows(summary),
         ("solver", f"{summary['solver']} ({summary['basis']}, {summary['elements']} elements)", ""),
     ]
     for name, value, unit in rows:

@@ -20,6 +20,7 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
 )
+from fem_racket.cli.laws import add_law_options, law_from_args
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame, standard_frame
@@ -79,6 +80,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="fixed top-side EI2 [N m^2] (default 0.88 EI1)",
     )
     add_mesh_option(g, replaces="replaces --ei1, --ei2 and --elements; scale it with --ei-factor")
+    add_law_options(p)
     add_solver_options(p, t_max=False)
     r = p.add_argument_group("execution and output")
     r.add_argument(
@@ -169,6 +171,7 @@ def run(args: argparse.Namespace) -> int:
         modes=args.modes,
         rtol=args.rtol,
         atol=args.atol,
+        law=law_from_args(args),
         output=args.out,
         overwrite=args.overwrite,
         restart=args.restart,

@@ -20,7 +20,7 @@ from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP0, MeshLi
 from skfem.helpers import dd, ddot
 
 from fem_racket.frame.mesh import FrameMesh
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["FrameFE", "assemble", "bending", "mass"]
 
@@ -75,7 +75,7 @@ class FrameFE:
         order 0 gives deflection [m], 1 slope [rad], 2 curvature [1/m].
         """
         if order not in (0, 1, 2):
-            raise InputError(f"order = {order!r} is not allowed: must be 0, 1 or 2")
+            raise InputError(f"order = {show(order)} is not allowed: must be 0, 1 or 2")
         x = np.atleast_1d(np.asarray(x, dtype=float))
         p = self.mesh.points
         tol = 1e-12 * p[-1]

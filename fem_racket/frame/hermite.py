@@ -11,15 +11,13 @@ These are the same integrals as :func:`fem_racket.frame.forms.assemble` (``int E
 ``int rhoA w v``), but scikit-fem's ``ElementLineHermite`` is an ``ElementGlobal``: it builds its
 shape functions per cell from monomials in global x, which loses precision as (x / h)^3 grows. The
 assembled matrices then differ from the exact ones by ~4e-12 (relative, largest entry) at 20
-elements, ~1e-9 at 80 and ~5e-7 at 640 elements of the standard racket, which would hide the
-h^4 convergence of the frequencies beyond ~100 elements. :func:`assemble_closed_form` returns the
-same :class:`~fem_racket.forms.FrameFE` (scikit-fem basis, same DOF numbering) with exact
-matrices, for convergence studies and fine meshes.
+elements, ~1e-9 at 80, ~5e-7 at 640 and ~1e-2 at 20 000 elements of the standard racket.
+:func:`assemble_closed_form` returns the same :class:`~fem_racket.forms.FrameFE` (scikit-fem
+basis, same DOF numbering) with exact matrices; :meth:`FrameModel.build` uses it on every mesh.
 
 :func:`strain_energy` evaluates q^T K q as a sum of squares of element curvatures (2-point Gauss,
-exact for the linear curvature of a cubic), which avoids the cancellation of q^T (K q): the
-Rayleigh quotient built on it keeps the low frequencies accurate to ~1e-12 where an eigen-solver's
-own eigenvalue of the assembled K, M carries ~eps * omega_max^2 / omega^2 round-off.
+exact for the linear curvature of a cubic), which avoids the cancellation of q^T (K q) (K q of a
+smooth field loses ~(h beta)^-4 of its digits; see :mod:`fem_racket.frame.curvature`).
 """
 
 from __future__ import annotations

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from fem_racket.frame.forms import FrameFE, assemble
+from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.modal import FreeModes, MassProperties, free_modes, mass_properties
 from fem_racket.frame.segments import Frame, standard_frame
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, show
 
 __all__ = ["DEFAULT_MODES", "FrameModel"]
 
@@ -36,7 +37,8 @@ class FrameModel:
 
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, elements: int = 20) -> FrameModel:
-        """Mesh (if given a :class:`Frame`) and assemble.
+        """Mesh (if given a :class:`Frame`) and assemble (closed-form element matrices, exact
+        to round-off on any mesh: :mod:`fem_racket.frame.hermite`).
 
         Parameters
         ----------
@@ -52,8 +54,10 @@ class FrameModel:
         elif isinstance(frame, FrameMesh):
             mesh = frame
         else:
-            raise InputError(f"frame = {frame!r} is not allowed: must be a Frame or a FrameMesh")
-        return cls(assemble(mesh))
+            raise InputError(
+                f"frame = {show(frame)} is not allowed: must be a Frame or a FrameMesh"
+            )
+        return cls(assemble_closed_form(mesh))
 
     @property
     def mesh(self) -> FrameMesh:

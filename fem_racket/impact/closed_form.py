@@ -31,7 +31,7 @@ from fem_racket.impact.system import (
     no_separation,
     output_times,
 )
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import AccuracyError, InputError, check_choice, show
 
 __all__ = ["ImpactOutcome", "exact_outcome", "solve_exact"]
 
@@ -98,7 +98,7 @@ class _ModalClosedForm:
     def __init__(self, system: CoupledSystem, histories: bool = True) -> None:
         if system.basis != "modal":
             raise InputError(
-                f"basis = {system.basis!r} is not allowed with solver 'exact': must be 'modal'"
+                f"basis = {show(system.basis)} is not allowed with solver 'exact': must be 'modal'"
             )
         om = system.omega
         self.mb = system.ball_mass
@@ -194,8 +194,9 @@ class _ModalClosedForm:
         delta = x[:, 0] - x[:, 1:] @ self.a
         scale = max(float(np.max(np.abs(x[:, 0]))), 1e-300)
         if np.max(np.abs(delta - z[:, 0])) > 1e-7 * scale:
-            raise RuntimeError(
-                "the exact solution is ill-conditioned for this case; use solver 'cvode'"
+            raise AccuracyError(
+                "solver = 'exact' cannot solve this case to the stated accuracy: its "
+                "eigen-solution is ill-conditioned (self-check failed); use solver 'cvode'"
             )
         return x, v
 

@@ -5,6 +5,7 @@ A run file has fixed *core* tables, each key with its unit in its name::
     [frame]    preset | ei1_n_m2, ei2_n_m2 | [[frame.segments]] | mesh ; elements
     [ball]     mass_kg
     [contact]  kcb_n_m, zeta | clamped_cor      (the compound ball/string law, eqs 1-4)
+               law, and that law's parameters (hc_alpha_s_m, k1_n_m_n, ... as in JSON outputs)
     [impact]   position_x_over_l, speed_m_s
     [solver]   name, separation, basis, modes, rtol, atol, t_max_s
     [output]   out, overwrite
@@ -104,7 +105,12 @@ class RunConfig:
         d = self.defaults()
         names = ("position", "speed", "ball_mass", "kcb", "zeta", "elements", "solver")
         names += ("separation", "basis", "modes", "rtol", "atol", "t_max")
-        return {n: d[n] for n in names if n in d}
+        out = {n: d[n] for n in names if n in d}
+        if "law" in d:
+            from fem_racket.contact.presets import get_law, law_parameters
+
+            out["law"] = get_law(d["law"], **law_parameters(d))
+        return out
 
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None

@@ -7,10 +7,12 @@ one-line :class:`~fem_racket.validation.InputError` naming the key (see :mod:`.c
 from __future__ import annotations
 
 import difflib
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS, LAW_NAMES
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.simulate import BASES
@@ -137,6 +139,18 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         "clamped_cor": Key(
             _interval(0.0, 1.0, include_low=False), "zeta", "clamped-frame COR fixing zeta"
         ),
+        "law": Key(_choice(LAW_NAMES), "law", "ball/string law: linear, a family or a preset"),
+        **{
+            FILE_KEYS[name]: Key(
+                _interval(0.0, math.inf)
+                if name in ("hc_alpha", "string_cubic")
+                else _positive(unit),
+                name,
+                f"{family} law: {name} [{unit}]",
+            )
+            for family, spec in FAMILY_PARAMETERS.items()
+            for name, (unit, _default) in spec.items()
+        },
     },
     "impact": {
         "position_x_over_l": Key(_interval(0.0, 1.0), "position", "impact point x/L"),

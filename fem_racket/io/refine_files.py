@@ -225,14 +225,6 @@ def _save_plot(
             )
     first = next(iter(studies.values()))
     n = first.elements.astype(float)
-    ax1.loglog(
-        n,
-        np.abs(first.solver_frequencies_hz[:, 0] / first.exact_frequencies_hz[0] - 1.0),
-        ":",
-        color="0.5",
-        marker=".",
-        label=f"mode 1, {first.family}, eigensolver eigenvalue",
-    )
     ref = 0.2 * np.abs(first.relative_error[-1, 0]) * (n / n[-1]) ** -4
     ax1.loglog(n, ref, "k-", lw=0.8, label="slope -4")
     ax1.set_xlabel("elements")

@@ -8,7 +8,8 @@ system is linear, so at fixed K_CB the COR and t_c do not depend on the speed an
 scales with it: cases differing only in speed share one solve, and every case is solved at
 V_B0 = 1 m/s, which makes results independent of the order in which cases are run.
 
-Exact solver: :func:`fem_racket.impact.closed_form.exact_outcome` (scalars only). BDF solvers:
+Exact solver: :func:`fem_racket.impact.closed_form.exact_outcome` (scalars only). Another
+contact law: the chunk's cases batched per frame (:mod:`fem_racket.studies.law_cases`). BDF solvers:
 :func:`fem_racket.simulate` with 1 us output steps, the peak force being the largest over them.
 """
 
@@ -27,6 +28,8 @@ from fem_racket.impact.closed_form import exact_outcome
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.system import NoSeparationError, modal_system
 from fem_racket.studies.grid import SweepSpec
+from fem_racket.studies.law_cases import law_chunk
+from fem_racket.validation import AccuracyError
 
 __all__ = ["VARIABLES", "clear_caches", "run_chunk"]
 
@@ -102,6 +105,19 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     law = LinearContact.for_speed(speed, kcb=p["kcb"], zeta=p["zeta"])
     kcb, zeta = law.stiffness, law.zeta
     key, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
+    if spec.law is not None:  # any contact law: one impact by the general integrator (or CVODE)
+        r = simulate(
+            model,
+            position=p["position"],
+            speed=speed,
+            ball_mass=mass,
+            law=spec.law,
+            solver=spec.solver,
+            output_step=None,
+            rtol=spec.rtol,
+            atol=spec.atol,
+        )
+        return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, np.nan
     if spec.solver != "exact":
         r = simulate(
             model,
@@ -135,14 +151,21 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     """Results of the cases ``chunk`` (flat indices), shape (len(chunk), len(VARIABLES)).
 
-    A case whose ball does not separate within the time limit, or whose solver fails, gets NaN
-    (the sweep reports how many); any other error stops the sweep.
+    A case whose ball does not separate within the time limit, whose solver fails or refuses
+    it (:class:`~fem_racket.validation.AccuracyError`), or any of whose values is not finite,
+    gets NaN in every variable (the sweep reports how many); any other error stops the sweep.
     """
+    if spec.law is not None and spec.solver == "general":
+        return law_chunk(spec, chunk, _model)
     out = np.empty((len(chunk), len(VARIABLES)))
     for row, index in enumerate(chunk):
         try:
             out[row] = _case(spec, spec.case(int(index)))
-        except (NoSeparationError, RuntimeError, np.linalg.LinAlgError) as exc:
+        except (NoSeparationError, AccuracyError, RuntimeError, np.linalg.LinAlgError) as exc:
             log.warning("case %d failed (NaN in the results): %s", index, exc)
+            out[row] = np.nan
+            continue
+        if not np.all(np.isfinite(out[row])):
+            log.warning("case %d failed (NaN in the results): a result is not finite", index)
             out[row] = np.nan
     return out

@@ -14,11 +14,15 @@ process (which checkpoints it) as soon as it arrives, in completion order.
 Workers end with the command. When the caller stops for any reason (an error, Ctrl-C's
 KeyboardInterrupt, SIGTERM turned into one by the CLI) the pool's processes are terminated
 before the exception goes on, and the Dask client is closed, so that the scheduler drops the
-tasks not yet run. Pool workers ignore SIGINT (the
-terminal sends Ctrl-C to the whole process group; the parent decides) and end when the command's
-process is gone - on Linux the kernel kills a forked worker with its parent
-(``PR_SET_PDEATHSIG``); a worker started by the forkserver polls the parent instead - so not even
-SIGKILL of the command leaves them behind.
+tasks not yet run. Pool workers ignore SIGINT (the terminal sends Ctrl-C to the whole process
+group; the parent decides) and end when the command's process is gone - on Linux the kernel
+kills a forked worker with its parent (``PR_SET_PDEATHSIG``); a worker started by the forkserver
+polls the parent instead - so not even SIGKILL of the command leaves them behind.
+
+Every process that computes (the CLI, each pool worker, each Dask task) runs BLAS on one thread
+(:func:`pin_blas_threads`): the work is many small dense products, which multithreaded OpenBLAS
+makes 2-4x slower on an idle 2-core machine and 10-60x slower on a loaded one, and a fixed thread
+count also keeps results bit-identical from run to run.
 """
 
 from __future__ import annotations
@@ -31,13 +35,14 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Sequence
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from fem_racket.validation import InputError, check_choice, show
 
-__all__ = ["BACKENDS", "check_scheduler", "run_chunks"]
+__all__ = ["BACKENDS", "check_scheduler", "pin_blas_threads", "run_chunks"]
 
 log = logging.getLogger(__name__)
 
@@ -47,6 +52,20 @@ Work = Callable[..., np.ndarray]
 Done = Callable[[np.ndarray, np.ndarray], None]
 
 _ADDRESS = re.compile(r"^(tcp|tls|ucx|ws|wss)://[^\s/:]+:\d{1,5}$")
+
+
+def pin_blas_threads() -> None:
+    """Limit every BLAS library loaded in this process to one thread (threadpoolctl; persists
+    for the life of the process)."""
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(limits=1, user_api="blas")
+
+
+def _pinned(work: Work, chunk: np.ndarray, **kwargs: Any) -> np.ndarray:
+    """``work(chunk, **kwargs)`` on one BLAS thread (the first call in a worker pins it)."""
+    pin_blas_threads()
+    return work(chunk, **kwargs)
 
 
 def check_scheduler(address: str) -> str:
@@ -88,9 +107,10 @@ _PR_SET_PDEATHSIG = 1
 
 
 def _worker_init(parent: int) -> None:
-    """Start of every pool worker: leave SIGINT to the parent, die with the parent ``parent``
-    (the kernel's parent-death signal when it forked us; else, under forkserver or spawn, a
-    watch thread polling it once a second)."""
+    """Start of every pool worker: one BLAS thread (:func:`pin_blas_threads`), SIGINT left to
+    the parent, and death with the parent ``parent`` (the kernel's parent-death signal when it
+    forked us; else, under forkserver or spawn, a watch thread polling it once a second)."""
+    pin_blas_threads()
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     if os.getppid() != parent:
@@ -200,7 +220,7 @@ def _dask(
         raise InputError(f"scheduler = {show(scheduler)} is not reachable: {exc}") from None
     try:
         log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
-        futures = client.map(work, list(chunks), pure=False, **kwargs)
+        futures = client.map(partial(_pinned, work), list(chunks), pure=False, **kwargs)
         index = {f.key: c for f, c in zip(futures, chunks, strict=True)}
         for fut in as_completed(futures, loop=client.loop):
             chunk = index[fut.key]

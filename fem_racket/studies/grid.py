@@ -20,11 +20,21 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.frame.segments import PAPER_EI1, Frame
-from fem_racket.impact.integrators import SOLVERS
+from fem_racket.frame.segments import (
+    EI_RATIO,
+    PAPER_EI1,
+    RHOA1,
+    RHOA2,
+    Frame,
+    check_ei_factor,
+    check_stiffness,
+    standard_ei1_range,
+)
+from fem_racket.impact.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.studies.limits import MAX_CASES, check_grid_size
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -69,7 +79,7 @@ def _check_value(name: str, value: object) -> float | int:
     if name == "zeta":
         return check_range(name, value, 0.0, 1.0, include_high=False)
     if name == "elements":
-        return check_elements(value)  # the words of simulate's --elements
+        return check_elements(value, 2, MAX_ELEMENTS)  # the words of simulate's --elements
     return check_positive(name, value, "" if unit == "1" else unit)
 
 
@@ -92,8 +102,11 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
             start, stop, num = float(parts[0]), float(parts[1]), float(parts[2])
         except ValueError:
             raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
-        if not (num.is_integer() and num >= 1):
-            raise InputError(f"{name} = {show(text)} is not allowed: num must be an integer >= 1")
+        if not (num.is_integer() and 1 <= num <= MAX_CASES):
+            raise InputError(
+                f"{name} = {show(text)} is not allowed: num must be an integer from 1 to "
+                f"{MAX_CASES}"
+            )
         if not (math.isfinite(start) and math.isfinite(stop)):
             raise InputError(f"{name} = {show(text)} is not allowed: start and stop must be finite")
         if log and (start <= 0.0 or stop <= 0.0):
@@ -163,6 +176,9 @@ class SweepSpec:
         Fixed top-side rigidity of the standard frame [N m^2] (0.88 EI1 when None).
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
+    law : ContactLaw or None
+        A contact law other than the paper's (every case then runs the general integrator, or
+        CVODE); None: the paper's linear law from ``kcb`` and ``zeta``.
     """
 
     values: dict[str, Any]
@@ -174,6 +190,7 @@ class SweepSpec:
     modes: int | None = DEFAULT_MODES
     rtol: float = 1e-10
     atol: float = 1e-12
+    law: Any = None
 
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
@@ -205,8 +222,13 @@ class SweepSpec:
                         f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
+        if kwargs.get("law") is not None and kwargs.get("solver", "exact") == "exact":
+            kwargs["solver"] = "general"  # the exact path is the linear law's only
         spec = cls(values=values, frame=frame, ei2=ei2, **kwargs)
-        check_choice("solver", spec.solver, SOLVERS)
+        if spec.law is not None:
+            check_choice("solver", spec.solver, ("exact", "general", "cvode"))
+        else:
+            check_choice("solver", spec.solver, SOLVERS)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)
         check_choice("basis", spec.basis, ("modal", "physical"))
         if spec.solver == "exact" and spec.basis != "modal":
@@ -215,9 +237,34 @@ class SweepSpec:
             )
         if spec.modes is not None:
             check_integer("modes", spec.modes)
-        check_positive("rtol", spec.rtol)
-        check_positive("atol", spec.atol)
+        check_solver_settings(
+            spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
+        )
+        spec._check_rigidity()
+        check_grid_size(spec.shape, spec.dims)
         return spec
+
+    def _check_rigidity(self) -> None:
+        """Every frame of the grid (EI1, EI2 or the custom frame's EI, times ei_factor) with
+        EI / rhoA within EI_RANGE, so that no case fails on it mid-sweep."""
+        if isinstance(self.frame, FrameMesh):
+            ratio = self.frame.EI / self.frame.rhoA
+        elif isinstance(self.frame, Frame):
+            ratio = [s.EI / s.rhoA for s in self.frame.segments]
+        else:
+            ei1 = np.atleast_1d(self.values["ei1"])
+            if self.ei2 is None:
+                for v in (ei1.min(), ei1.max()):
+                    check_range("ei1", float(v), *standard_ei1_range(), unit="N m^2")
+                ei2 = ei1 * EI_RATIO
+            else:
+                for v in (ei1.min(), ei1.max()):
+                    check_stiffness("ei1", float(v), RHOA1)
+                ei2 = np.atleast_1d(check_stiffness("ei2", self.ei2, RHOA2))
+            ratio = np.concatenate([ei1 / RHOA1, ei2 / RHOA2])
+        factors = np.atleast_1d(self.values["ei_factor"])
+        for f in (float(np.min(factors)), float(np.max(factors))):
+            check_ei_factor(f, ratio)
 
     # -- the grid ----------------------------------------------------------------------------
     @cached_property
@@ -274,6 +321,7 @@ class SweepSpec:
             "rtol": self.rtol,
             "atol": self.atol,
             "version": __version__,
+            **({} if self.law is None else {"law": self.law.describe()}),
         }
 
     @cached_property

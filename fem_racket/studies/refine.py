@@ -1,9 +1,9 @@
 """Mesh-refinement study: FE frequencies against the exact beam, COR and contact time.
 
 For each element count the frame is meshed (uniform or graded cells, every section step a node) and
-assembled with exact element matrices (:func:`~fem_racket.frame.hermite.assemble_closed_form`). The
-first flexible frequencies are the Rayleigh quotients of the eigen-solver's mode shapes with a
-cancellation-free strain energy; their relative errors against the exact piecewise-uniform beam
+built as :class:`~fem_racket.frame.model.FrameModel` (exact element matrices, free-free modes in
+curvature coordinates: round-off ~1e-14 on any accepted mesh, :mod:`fem_racket.frame.curvature`).
+The relative errors of the first flexible frequencies against the exact piecewise-uniform beam
 (:func:`fem_racket.frame.continuous.free_free_frequencies`) give the observed order of convergence
 
     p = log(e_i / e_(i+1)) / log(N_(i+1) / N_i)
@@ -25,9 +25,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.frame.continuous import free_free_frequencies
-from fem_racket.frame.hermite import assemble_closed_form, rayleigh_frequencies
-from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
-from fem_racket.frame.modal import FreeModes, free_modes
+from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.impact.simulate import simulate
@@ -38,7 +36,6 @@ __all__ = [
     "DEFAULT_POSITIONS",
     "FAMILIES",
     "RefinementStudy",
-    "accurate_model",
     "refinement_study",
 ]
 
@@ -65,9 +62,8 @@ class RefinementStudy:
     family : {"uniform", "graded"}
     elements : ndarray, shape (n,)
         Cells of each mesh (requested count, plus one per impact node inserted).
-    frequencies_hz, solver_frequencies_hz : ndarray, shape (n, m)
-        Rayleigh-quotient frequencies [Hz], and the eigen-solver's own eigenvalues (round-off of
-        order eps * omega_max^2 / omega^2, shown for comparison).
+    frequencies_hz : ndarray, shape (n, m)
+        Free-free frequencies [Hz] of each mesh.
     exact_frequencies_hz : ndarray, shape (m,)
     positions : ndarray, shape (k,)
         Impact points x/L.
@@ -79,7 +75,6 @@ class RefinementStudy:
     family: str
     elements: np.ndarray
     frequencies_hz: np.ndarray
-    solver_frequencies_hz: np.ndarray
     exact_frequencies_hz: np.ndarray
     positions: np.ndarray
     speed: float
@@ -144,7 +139,6 @@ class RefinementStudy:
             "relative_error": self.relative_error.tolist(),
             "observed_order": self.observed_order.tolist(),
             "observed_order_pairs": self.observed_order_pairs.tolist(),
-            "solver_frequencies_hz": self.solver_frequencies_hz.tolist(),
             "positions_x_over_l": self.positions.tolist(),
             "speed_m_s": self.speed,
             "cor": self.cor.tolist(),
@@ -166,36 +160,19 @@ def _orders(elements: np.ndarray, errors: np.ndarray) -> np.ndarray:
         return np.log(errors[:-1] / errors[1:]) / ratio
 
 
-def accurate_model(mesh: FrameMesh, n_modes: int | None = DEFAULT_MODES) -> FrameModel:
-    """A :class:`FrameModel` with exact element matrices and Rayleigh-quotient frequencies.
-
-    The mode shapes come from :func:`~.frame.modal.free_modes`; their frequencies are replaced
-    by Rayleigh quotients with the cancellation-free strain energy, so the low modes are accurate
-    to ~1e-12 on fine meshes (the eigen-solver's eigenvalues carry ~1e-7 round-off at 320 cells).
-    """
-    fe = assemble_closed_form(mesh)
-    n = fe.ndof - 2 if n_modes is None else min(int(n_modes), fe.ndof - 2)
-    fm = free_modes(fe, n)
-    omega = 2.0 * np.pi * rayleigh_frequencies(fe, fm.shapes)
-    order = np.argsort(omega, kind="stable")
-    fixed = FreeModes(fm.rigid, fm.shapes[:, order], omega[order], fm.props)
-    return FrameModel(fe, {n: fixed})
-
-
 def _check_elements(elements: Sequence[int]) -> np.ndarray:
+    allowed = f"must be a list of integers from 1 to {MAX_ELEMENTS}"
     try:
         counts = [int(n) for n in elements]
     except (TypeError, ValueError):
-        raise InputError(
-            f"elements = {show(elements)} is not allowed: must be a list of integers >= 1"
-        ) from None
+        raise InputError(f"elements = {show(elements)} is not allowed: {allowed}") from None
     bad = [
-        n for n, e in zip(counts, elements, strict=True) if n < 1 or isinstance(e, bool) or n != e
+        n
+        for n, e in zip(counts, elements, strict=True)
+        if not 1 <= n <= MAX_ELEMENTS or isinstance(e, bool) or n != e
     ]
     if not counts or bad:
-        raise InputError(
-            f"elements = {show(list(elements))} is not allowed: must be a list of integers >= 1"
-        )
+        raise InputError(f"elements = {show(list(elements))} is not allowed: {allowed}")
     return np.unique(counts)
 
 
@@ -269,32 +246,27 @@ def refinement_study(
         else:
             mesh = graded_mesh(frame, int(n), grading, extra)
         t0 = time.perf_counter()
-        fe = assemble_closed_form(mesh)
-        few = free_modes(fe, min(n_modes, fe.ndof - 2))
+        model = FrameModel.build(mesh)
+        modes = model.modes(max(impact_modes, n_modes))
         freq = np.full(n_modes, np.nan)
-        solver = np.full(n_modes, np.nan)
-        k = few.omega.size
-        freq[:k] = np.sort(rayleigh_frequencies(fe, few.shapes))
-        solver[:k] = few.frequencies
-        model = accurate_model(mesh, impact_modes)
-        model.modes(impact_modes)
+        k = min(n_modes, modes.omega.size)
+        freq[:k] = modes.frequencies[:k]
         build = time.perf_counter() - t0
         t0 = time.perf_counter()
         res = [simulate(model, position=p, speed=speed, output_step=None, **impact) for p in pos]
         per_impact = (time.perf_counter() - t0) / pos.size
-        rows.append((mesh.n_elements, freq, solver, res, build, per_impact))
+        rows.append((mesh.n_elements, freq, res, build, per_impact))
         log.info("%s %d cells: %.3f s build, %.2f ms/impact", family, n, build, per_impact * 1e3)
     return RefinementStudy(
         family=family,
         elements=np.array([r[0] for r in rows]),
         frequencies_hz=np.array([r[1] for r in rows]),
-        solver_frequencies_hz=np.array([r[2] for r in rows]),
         exact_frequencies_hz=exact,
         positions=pos,
         speed=float(speed),
-        cor=np.array([[x.cor for x in r[3]] for r in rows]),
-        contact_time_s=np.array([[x.contact_time for x in r[3]] for r in rows]),
-        build_time_s=np.array([r[4] for r in rows]),
-        impact_time_s=np.array([r[5] for r in rows]),
+        cor=np.array([[x.cor for x in r[2]] for r in rows]),
+        contact_time_s=np.array([[x.contact_time for x in r[2]] for r in rows]),
+        build_time_s=np.array([r[3] for r in rows]),
+        impact_time_s=np.array([r[4] for r in rows]),
         skipped=skipped,
     )

@@ -24,6 +24,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
+from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame
@@ -72,7 +73,9 @@ def _attributes(spec: SweepSpec) -> dict[str, Any]:
         swept=" ".join(spec.dims),
         spec_sha256=spec.digest,
     )
-    if spec.solver == "exact":
+    if spec.law is not None:
+        params.update({f"contact_{k}": v for k, v in spec.law.describe().items()})
+    elif spec.solver == "exact":
         params["tolerances"] = "exact: closed form, separation time to 1e-15 s; rtol, atol unused"
     prov = provenance(params)
     attrs = {k: v for k, v in prov.items() if k != "parameters"}
@@ -99,7 +102,8 @@ def _dataset(spec: SweepSpec, values: np.ndarray) -> Any:
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
-    cap = 128 if spec.solver == "exact" else 4
+    # the exact path and the general integrator's batches (contact laws) take big chunks
+    cap = 128 if spec.solver in ("exact", "general") else 4
     return max(1, min(cap, math.ceil(todo / (4 * workers))))
 
 
@@ -121,6 +125,7 @@ def sweep(
     modes: int | None = DEFAULT_MODES,
     rtol: float = 1e-10,
     atol: float = 1e-12,
+    law: Any = None,
     output: str | os.PathLike | None = None,
     overwrite: bool = False,
     restart: bool = False,
@@ -147,6 +152,10 @@ def sweep(
         Fixed top-side EI2 of the standard frame [N m^2]; 0.88 EI1 when None.
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
+    law : ContactLaw or str, optional
+        A contact law other than the paper's, fixed for the sweep (a law or a name of
+        :data:`fem_racket.contact.presets.LAW_NAMES`); its name and parameters become attributes
+        and the ``kcb`` variable is NaN.
     output : path, optional
         netCDF file to write (atomically). With it the sweep is resumable: finished cases are
         kept in ``<output>.checkpoint/`` and a rerun with the same arguments continues.
@@ -191,6 +200,7 @@ def sweep(
         modes=modes,
         rtol=rtol,
         atol=atol,
+        law=get_law(law) if isinstance(law, str) else law,
     )
     if backend is not None:
         check_choice("backend", backend, BACKENDS)

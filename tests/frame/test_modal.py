@@ -2,8 +2,10 @@
 
 import numpy as np
 import pytest
+import scipy.linalg as sla
 
 from fem_racket import Frame, FrameModel, Segment, free_modes, mode_nodes
+from fem_racket.frame import curvature
 
 
 def test_mass_and_centre_of_gravity(standard_model):
@@ -42,20 +44,25 @@ def test_modes_are_mass_orthonormal(standard_model):
     )
 
 
-def test_sparse_and_dense_eigen_paths_agree():
-    # 160 elements (322 DOFs) goes through shift-invert eigsh; compare with dense eigh, whose
-    # round-off at this size is ~1e-7 relative in omega^2 (see fem_racket.modal).
-    model = FrameModel.build(None, 160)
-    sparse = free_modes(model.fe, 6)
-    import fem_racket.frame.modal as modal
+def test_lanczos_and_dense_paths_agree(monkeypatch):
+    # 250 elements: 500 curvature DOFs, above DENSE_LIMIT, so Lanczos on the curvature operator;
+    # the dense solve of the same operator agrees to its round-off, ~eps (omega_k / omega_1)^2.
+    model = FrameModel.build(None, 250)
+    lanczos = free_modes(model.fe, 6)
+    monkeypatch.setattr(curvature, "DENSE_LIMIT", 10**6)
+    dense = free_modes(model.fe, 6)
+    np.testing.assert_allclose(lanczos.omega, dense.omega, rtol=1e-12)
+    np.testing.assert_allclose(
+        np.abs(lanczos.shapes.T @ (model.fe.M @ dense.shapes)), np.eye(6), atol=1e-10
+    )
 
-    old = modal.DENSE_LIMIT
-    modal.DENSE_LIMIT = 10**6
-    try:
-        dense = free_modes(model.fe, 6)
-    finally:
-        modal.DENSE_LIMIT = old
-    np.testing.assert_allclose(sparse.omega, dense.omega, rtol=1e-6)
+
+def test_curvature_path_solves_the_assembled_eigenproblem(standard_model):
+    # The same eigenproblem as K phi = omega^2 M phi on the assembled matrices; dense eigh of
+    # those at 20 elements carries ~eps omega_max^2 / omega^2 < 1e-10 relative round-off.
+    fe = standard_model.fe
+    lam = sla.eigh(fe.K.toarray(), fe.M.toarray(), eigvals_only=True)[2:]
+    np.testing.assert_allclose(free_modes(fe).omega ** 2, lam, rtol=1e-9)
 
 
 def test_uniform_beam_textbook_frequency():

@@ -79,3 +79,12 @@ def test_every_script_is_run_by_a_test():
     assert others, "no non-figure scripts found"
     missing = [s for s in others if not re.search(rf"\b{s}\b", tests)]
     assert not missing, f"scripts not run by any test: {missing}"
+
+
+def test_bench_laws_script_runs(capsys):
+    # the general integrator's benchmark (issue 15) in its quick variant: every law within the
+    # 1e-5 COR target against CVODE (DESIGN section 9)
+    rows = load(SCRIPTS / "bench_laws.py").main(["--quick"])
+    assert {r["law"] for r in rows} >= {"kawazoe-1997-nonlinear", "series"}
+    assert all(r["dcor"] <= 1e-5 for r in rows)
+    assert "CVODE" in capsys.readouterr().out

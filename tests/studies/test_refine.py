@@ -12,7 +12,7 @@ from fem_racket import FrameModel, frame_mesh, simulate, standard_frame
 from fem_racket.cli import main
 from fem_racket.frame.continuous import free_free_frequencies
 from fem_racket.frame.hermite import assemble_closed_form, strain_energy
-from fem_racket.studies.refine import accurate_model, refinement_study
+from fem_racket.studies.refine import refinement_study
 from fem_racket.validation import InputError
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -50,10 +50,10 @@ def test_closed_form_matrices_match_scikit_fem():
     assert strain_energy(fe, q) == pytest.approx(q @ (fe.K @ q), rel=1e-10)
 
 
-def test_accurate_model_low_modes_at_320_elements():
-    # FE error of mode 1 at 320 cells is 3.3e-11 (h^4 from 5.2e-10 at 160); the eigen-solver's
-    # own eigenvalue is off by ~1e-7 there. The Rayleigh quotient must land within 1e-11.
-    model = accurate_model(frame_mesh(standard_frame(), 320), 6)
+def test_low_modes_at_320_elements():
+    # FE error of mode 1 at 320 cells is 3.3e-11 (h^4 from 5.2e-10 at 160); an eigen-solver on
+    # the assembled K, M is off by ~1e-8 there, the curvature-coordinate path by ~1e-14.
+    model = FrameModel.build(frame_mesh(standard_frame(), 320))
     exact = free_free_frequencies(standard_frame(), 4)
     err = model.modes(6).frequencies[:4] / exact - 1
     assert np.all(err > 0)

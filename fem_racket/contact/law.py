@@ -1,0 +1,111 @@
+"""The contact-law interface: force from deflection, its rate and an optional internal state.
+
+A law gives the compound ball/string force ``F(delta, delta', z)`` [N] from the spring deflection
+``delta = u_B - w(x_i)`` [m] (positive: compressed), its rate [m/s] and at most one internal
+state ``z`` (a deflection [m]). Two kinds of state exist:
+
+- an *ODE state*, ``z' = g(delta, delta', z)`` (the string-bed deflection of a ball in series with
+  a string bed, :mod:`fem_racket.contact.series`);
+- a *memory state*, the largest deflection reached so far, updated after each accepted step as
+  ``z <- max(z, delta)`` (the turning point of a hysteresis loop,
+  :mod:`fem_racket.contact.hysteretic`).
+
+The integrators need the partial derivatives (``partials``, ``rate_partials``) for their Newton
+iterations and Jacobians, and the law's own end condition: the deflection falling through
+``end_deflection(z)`` (0 for elastic laws, the unloading branch's zero-force deflection for a
+hysteretic one), the force falling through 0, or the ODE state falling through 0 (a string bed
+back in its plane: the force's zero where the force itself may touch zero tangentially).
+Every law works elementwise on numpy arrays, so many cases (with per-case parameters) advance
+together.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, ClassVar
+
+import numpy as np
+
+__all__ = ["ENDS", "ContactLaw", "power_contact_time"]
+
+#: End conditions a law may name: its deflection, its force or its ODE state falling through
+#: the end value.
+ENDS = ("displacement", "force", "state")
+
+
+class ContactLaw:
+    """Base class of the ball/string contact laws (see the module docstring).
+
+    Subclasses are frozen dataclasses holding SI parameters (floats, or arrays for batches) and
+    define :meth:`force`, :meth:`partials`, :meth:`contact_time_estimate` and, with a state,
+    :meth:`rate` and :meth:`rate_partials`.
+    """
+
+    #: Name used on the command line and in run files.
+    name: ClassVar[str] = ""
+    #: "ode", "memory" or None.
+    state: ClassVar[str | None] = None
+    #: Default end condition, one of :data:`ENDS`.
+    end: ClassVar[str] = "displacement"
+
+    def force(self, d: Any, v: Any, z: Any) -> Any:
+        """Contact force [N] at deflection ``d`` [m], rate ``v`` [m/s] and state ``z`` [m]."""
+        raise NotImplementedError
+
+    def partials(self, d: Any, v: Any, z: Any) -> tuple[Any, Any, Any]:
+        """(dF/d delta [N/m], dF/d delta' [N s/m], dF/dz [N/m])."""
+        raise NotImplementedError
+
+    def rate(self, d: Any, v: Any, z: Any) -> Any:
+        """State rate z' [m/s] (ODE state only)."""
+        raise NotImplementedError
+
+    def rate_partials(self, d: Any, v: Any, z: Any) -> tuple[Any, Any, Any]:
+        """(dz'/d delta [1/s], dz'/d delta' [-], dz'/dz [1/s]) (ODE state only)."""
+        raise NotImplementedError
+
+    def end_deflection(self, z: Any) -> Any:
+        """Deflection [m] whose downward crossing ends a ``"displacement"`` contact."""
+        return 0.0 * np.asarray(z)
+
+    def contact_time_estimate(self, mass: Any, speed: Any) -> Any:
+        """Contact time [s] of a mass [kg] striking a rigid support at ``speed`` [m/s]."""
+        raise NotImplementedError
+
+    def static_deflection(self, load: float) -> float:
+        """Deflection [m] under a static ``load`` [N] on the loading branch (Brent's method)."""
+        from scipy.optimize import brentq
+
+        def excess(d: float) -> float:
+            return float(self.force(d, 0.0, d)) - load
+
+        high = 1e-3
+        while excess(high) < 0.0 and high < 10.0:
+            high *= 2.0
+        return float(brentq(excess, 0.0, high, xtol=1e-15))
+
+    def parameters(self) -> dict[str, Any]:
+        """Parameters, JSON-ready, with units in the keys."""
+        raise NotImplementedError
+
+    def describe(self) -> dict[str, Any]:
+        """``{"law": name, **parameters}`` for JSON and VTK outputs."""
+        out: dict[str, Any] = {"law": self.name}
+        for key, value in self.parameters().items():
+            arr = np.asarray(value)
+            out[key] = float(arr) if arr.ndim == 0 else arr.tolist()
+        return out
+
+
+def power_contact_time(k: Any, n: Any, mass: Any, speed: Any) -> Any:
+    """Contact time [s] of an elastic power law F = k delta^n against a rigid support.
+
+    With peak deflection ``delta_m = ((n + 1) m v0^2 / (2 k))^(1/(n+1))`` energy conservation
+    gives ``t_c = 2 (delta_m / v0) sqrt(pi) Gamma(1 + 1/(n+1)) / Gamma(1/2 + 1/(n+1))``
+    (the Hertz time for n = 3/2, pi sqrt(m/k) for n = 1).
+    """
+    k, n, m, v = (np.asarray(x, dtype=float) for x in (k, n, mass, speed))
+    p = 1.0 / (n + 1.0)
+    dm = ((n + 1.0) * m * v**2 / (2.0 * k)) ** p
+    gam = np.vectorize(lambda q: math.gamma(1.0 + q) / math.gamma(0.5 + q))(p)
+    return 2.0 * dm / v * math.sqrt(math.pi) * gam

@@ -1,0 +1,65 @@
+"""Limits through the CLI and run files (issue 12): refused at once in one line, exit 2; the
+CLI runs BLAS on one thread."""
+
+import time
+
+import pytest
+
+from fem_racket.cli import main
+from fem_racket.frame.mesh import MAX_ELEMENTS
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (
+            ["modes", "--elements", "9223372036854775807"],
+            f"must be an integer from 2 to {MAX_ELEMENTS}",
+        ),
+        (["simulate", "--solver", "cvode", "--rtol", "1"], "rtol = 1.0 is not allowed"),
+        (["simulate", "--ei1", "1e300"], "ei1 = 1e+300 N m^2 is not allowed"),
+        (["sweep", "--ei1", "1e-6,1e300"], "ei1 = 1e+300 N m^2 is not allowed"),
+        (["sweep", "--position", "0:1:10000", "--speed", "10:40:10000"], "100000000 cases"),
+    ],
+)
+def test_limits_refused_at_once(capsys, argv, message):
+    t0 = time.perf_counter()
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1 and "Traceback" not in err
+    assert time.perf_counter() - t0 < 2.0
+
+
+@pytest.mark.parametrize(
+    ("option", "message"),
+    [
+        (["--t-max", "11"], "t_max = 11.0 s is not allowed"),
+        (["--kcb", "1e-6"], "kcb = 1e-06 N/m is not allowed"),
+    ],
+)
+def test_output_times_limit_names_the_option_given(tmp_path, monkeypatch, capsys, option, message):
+    # Issue 12: refused with an error about output_step, which the user never gave. With --out
+    # (histories written) the limit names what makes the output times so many; without it no
+    # history is kept, so nothing limits the run.
+    monkeypatch.chdir(tmp_path)
+    assert main(["simulate", *option, "--out", "r.json"]) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1 and list(tmp_path.iterdir()) == []
+    assert main(["simulate", *option]) == 0
+
+
+def test_run_file_elements_limit(tmp_path, capsys):
+    # Issue 12: elements = 100000000 in a run file grew to 24 GB and was killed.
+    run = tmp_path / "run.toml"
+    run.write_text("[frame]\nelements = 100000000\n")
+    assert main(["simulate", "--config", str(run)]) == 2
+    assert "elements = 100000000 is not allowed" in capsys.readouterr().err
+
+
+def test_cli_pins_blas_to_one_thread(capsys):
+    from threadpoolctl import threadpool_info, threadpool_limits
+
+    with threadpool_limits(limits=2, user_api="blas"):
+        assert main(["modes", "--json"]) == 0
+        blas = [lib["num_threads"] for lib in threadpool_info() if lib["user_api"] == "blas"]
+    assert blas and all(n == 1 for n in blas)

@@ -1,0 +1,68 @@
+"""Calibration of the contact-law families to the paper's and the ITF targets (issue 15)."""
+
+import numpy as np
+import pytest
+
+from fem_racket.contact.presets import PRESETS
+from fem_racket.studies.calibrate import (
+    ITF_SPEED,
+    TARGET_SETS,
+    calibrate,
+    clamped_impacts,
+    run_file_table,
+)
+
+
+def test_preset_meets_the_papers_targets():
+    # Kawazoe & Kanda 1997 sec. 2.1.1, eq 4: clamped t_c = pi sqrt(m_B/K_CB) within 5 % at
+    # 20, 30, 40 m/s and e = 0.83 +- 0.01 at 20-40 m/s, one parameter set (the shipped preset)
+    law = PRESETS["kawazoe-1997-nonlinear"]
+    for t in TARGET_SETS["kawazoe-1997"]:
+        cor, tc = clamped_impacts(law, [t.condition])
+        model = cor[0] if t.quantity == "cor" else tc[0]
+        assert abs(t.scaled_error(model)) <= 1.0, (t, model)
+
+
+def test_linear_law_cannot_meet_the_contact_times():
+    # one K_CB gives one contact time pi sqrt(m_B/K_CB) at every speed: 4.53 and 2.60 ms
+    # cannot both be within 5 % (the paper's reason for K_CB(V))
+    fit = calibrate("linear")
+    assert not fit.meets_targets
+    times = [r["model"] for r in fit.table() if r["quantity"] == "contact_time"]
+    assert np.ptp(times) == pytest.approx(0.0, abs=1e-9)
+
+
+@pytest.mark.slow
+def test_hunt_crossley_cannot_hold_the_cor():
+    # with one alpha the COR falls with speed (1 - e ~ 2 alpha v0 / 3, Hunt & Crossley 1975), so
+    # the contact times and e = 0.83 +- 0.01 over 20-40 m/s cannot be met together
+    fit = calibrate("hunt-crossley")
+    assert not fit.meets_targets
+    cors = [r["model"] for r in fit.table() if r["quantity"] == "cor"]
+    assert cors[0] > cors[-1]
+
+
+def test_itf_hunt_crossley_fit_and_cor_falling_with_speed():
+    # ITF rules: e = 0.745 +- 0.015 at 7.06 m/s, 0.65 +- 0.09 cm under 80.1 N; the COR then falls
+    # with speed (Haake, Carre & Goodwill 2003): the shipped preset
+    law = PRESETS["itf-ball"]
+    for t in TARGET_SETS["itf"]:
+        model = (
+            law.static_deflection(t.condition)
+            if t.quantity == "static_deflection"
+            else clamped_impacts(law, [ITF_SPEED])[0][0]
+        )
+        assert abs(t.scaled_error(model)) <= 1.0, (t, model)
+    cor, _ = clamped_impacts(law, [7.06, 15.0, 30.0])
+    assert cor[0] > cor[1] > cor[2]
+
+
+def test_run_file_table_round_trips(tmp_path):
+    import tomllib
+
+    from fem_racket.contact.presets import FILE_KEYS
+
+    text = run_file_table(PRESETS["kawazoe-1997-nonlinear"])
+    table = tomllib.loads(text)["contact"]
+    assert table["law"] == "hysteretic"
+    assert set(table) - {"law"} <= set(FILE_KEYS.values())
