@@ -43,7 +43,9 @@ from fem_racket.impact.setup import Impact
 from fem_racket.impact.simulate import ImpactResult, simulate
 from fem_racket.io.animate import render_animation
 from fem_racket.io.config import RunConfig, example_config, load_config, parse_config
+from fem_racket.io.figure_files import save_figure
 from fem_racket.io.mesh_files import read_mesh, write_mesh
+from fem_racket.io.plotting import plot_impact, plot_refinement, plot_sweep
 from fem_racket.io.vtk import write_vtk_series
 from fem_racket.io.vtk_series import ImpactSeries, impact_series
 from fem_racket.studies.refine import RefinementStudy, refinement_study
@@ -96,12 +98,16 @@ __all__ = [
     "mass_properties",
     "mode_nodes",
     "parse_config",
+    "plot_impact",
+    "plot_refinement",
+    "plot_sweep",
     "read_mesh",
     "refinement_study",
     "render_animation",
     "rigid_frame",
     "rigid_impact",
     "rigid_impact_at",
+    "save_figure",
     "simulate",
     "standard_frame",
     "sweep",

@@ -21,6 +21,8 @@ LAYERS = {
     "validation": 0,
     "outputs": 0,
     "version": 0,
+    "progress": 0,
+    "display": 0,
     "frame": 1,
     "contact": 1,
     "impact": 2,

@@ -30,3 +30,18 @@ def test_readme_example_output(capsys, monkeypatch, tmp_path, command, printed):
     out, err = capsys.readouterr()
     assert [ln.rstrip() for ln in (out + err).splitlines()] == [ln.rstrip() for ln in printed]
     assert code == (2 if "error:" in err else 0)
+
+
+def test_readme_library_section_shows_the_tours_first_cells_and_their_output(capsys):
+    """The README's tour excerpt is the code of scripts/tour.py's first impact cells, and the
+    text block after it is what that code prints."""
+    text = README.read_text()
+    marker = text.index("<!-- tour:")
+    code, printed = re.findall(r"```(?:python|text)\n(.*?)```", text[marker:], flags=re.S)[:2]
+    tour = (README.parent / "scripts" / "tour.py").read_text()
+    parts = re.split(r"^# %%(.*)$", tour, flags=re.M)
+    cells = [body.strip() for head, body in zip(parts[1::2], parts[2::2], strict=True)]
+    code_cells = [c for c, head in zip(cells, parts[1::2], strict=True) if not head.strip()]
+    assert code == "import fem_racket as fr\n\n" + "\n\n".join(code_cells[1:3]) + "\n"
+    exec(compile(code, "README.md", "exec"), {})
+    assert capsys.readouterr().out == printed

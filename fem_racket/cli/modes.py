@@ -11,7 +11,9 @@ from fem_racket.cli.common import (
     note,
     print_json,
 )
+from fem_racket.cli.drawing import add_quiet_option, progress_of
 from fem_racket.frame.modal import mode_nodes
+from fem_racket.progress import progress_bar
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -26,6 +28,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="number of flexible modes to report (default 4; a mesh of n elements has 2n)",
     )
     p.add_argument("--json", action="store_true", help="print a JSON object")
+    add_quiet_option(p)
     add_config_option(p)
     p.set_defaults(func=run)
 
@@ -46,7 +49,8 @@ def run(args: argparse.Namespace) -> int:
             f"showing {shown}",
         )
     props = fm.props
-    nodes = [mode_nodes(model.fe, fm.shapes[:, k]).tolist() for k in range(fm.omega.size)]
+    modes = progress_bar(range(fm.omega.size), desc="nodes", unit="mode", enabled=progress_of(args))
+    nodes = [mode_nodes(model.fe, fm.shapes[:, k]).tolist() for k in modes]
     data = {
         "mass_kg": props.mass,
         "cg_x_over_l": props.cg_over_length,

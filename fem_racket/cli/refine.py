@@ -14,9 +14,11 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
 )
+from fem_racket.cli.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.io.figure_files import check_dpi, figure_format
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
 from fem_racket.validation import InputError, show
 
@@ -132,15 +134,33 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     o.add_argument(
         "--plot",
-        default="output/refine.png",
+        default=None,
         metavar="FILE",
-        help="output file: log-log convergence plot, PNG (default %(default)s)",
+        help="output file: log-log convergence plot, .png, .svg or .pdf (default "
+        "output/refine.png, or the --format suffix)",
     )
+    add_figure_options(o, "plot")
+    add_quiet_option(o)
     o.add_argument("--no-files", action="store_true", help="write neither the CSV nor the plot")
     o.add_argument("--overwrite", action="store_true", help="replace existing output files")
     o.add_argument("--json", action="store_true", help="print a JSON object")
     add_config_option(p, private=("elements",))
     p.set_defaults(func=run)
+
+
+def _plot_path(args: argparse.Namespace) -> Path:
+    """--plot, or output/refine.<--format>; a --plot whose suffix contradicts --format is an
+    error."""
+    if args.plot is None:
+        return Path(f"output/refine.{args.format or 'png'}")
+    path = Path(args.plot)
+    fmt = figure_format(path)
+    if args.format is not None and fmt != args.format:
+        raise InputError(
+            f"format = {args.format!r} is not allowed with --plot '{path}': give one of them, "
+            "or a --plot ending in ." + args.format
+        )
+    return path
 
 
 def run(args: argparse.Namespace) -> int:
@@ -156,9 +176,11 @@ def run(args: argparse.Namespace) -> int:
             f"grading = {show(args.grading)} is not allowed: must be a finite number >= 1"
         )
     frame = frame_from_args(args, exclusive=("ei1", "ei2"))
-    outputs = [] if args.no_files else [Path(args.csv), Path(args.plot)]
+    plot = _plot_path(args)
+    check_dpi(args.dpi)
+    outputs = [] if args.no_files else [Path(args.csv), plot]
     if outputs:  # fail before the work, not after it
-        check_targets(refine_targets(args.csv, args.plot), overwrite=args.overwrite)
+        check_targets(refine_targets(args.csv, plot), overwrite=args.overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
     impact = {
         "ball_mass": args.ball_mass,
@@ -177,12 +199,19 @@ def run(args: argparse.Namespace) -> int:
             grading=args.grading,
             impact_nodes=args.impact_nodes,
             impact_modes=args.impact_modes,
+            progress=progress_of(args),
             **impact,
         )
         for fam in families
     }
     if outputs:
-        write_outputs(studies, *outputs, overwrite=args.overwrite, parameters=run_parameters(args))
+        write_outputs(
+            studies,
+            *outputs,
+            overwrite=args.overwrite,
+            parameters=run_parameters(args),
+            dpi=args.dpi,
+        )
     first, *rest = studies.values()
     if args.json:
         data = first.to_dict()

@@ -31,12 +31,12 @@ from fem_racket.cli.common import (
 )
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.impact.simulate import simulate
+from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
     Target,
     atomic_outputs,
     check_output_path,
     check_targets,
-    provenance,
     sidecar_path,
 )
 from fem_racket.validation import InputError, show_path
@@ -87,7 +87,7 @@ def _histories(result) -> dict[str, Any]:
 def _write(args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path]) -> None:
     """Write --out: JSON, or CSV and its sidecar as one set (both or neither)."""
     history = _histories(result)
-    meta = provenance(run_parameters(args))
+    meta = impact_provenance(result, run_parameters(args))
     if len(files) == 1:
         data = {"provenance": meta, "summary": summary}
         history = {k: v.tolist() for k, v in history.items()}

@@ -15,6 +15,7 @@ from fem_racket.cli.common import (
     note_modes,
     run_parameters,
 )
+from fem_racket.cli.drawing import add_quiet_option, progress_of
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import InputError
 
@@ -65,6 +66,7 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
     p.add_argument(
         "--overwrite", action="store_true", help="replace an existing output file or folder"
     )
+    add_quiet_option(p)
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -156,6 +158,7 @@ def run_export(args: argparse.Namespace) -> int:
         field=args.field,
         overwrite=args.overwrite,
         parameters=run_parameters(args),
+        progress=progress_of(args),
     )
     print(pvd)
     return 0
@@ -178,6 +181,7 @@ def run_animate(args: argparse.Namespace) -> int:
         size=args.size,
         overwrite=args.overwrite,
         parameters=run_parameters(args),
+        progress=progress_of(args),
     )
     print(path)
     return 0

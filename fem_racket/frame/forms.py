@@ -19,6 +19,7 @@ import scipy.sparse as sp
 from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP0, MeshLine, asm
 from skfem.helpers import dd, ddot
 
+from fem_racket.display import short_repr
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.validation import InputError, show
 
@@ -45,6 +46,9 @@ class FrameFE:
     basis: Basis
     K: sp.csr_matrix
     M: sp.csr_matrix
+
+    def __repr__(self) -> str:
+        return short_repr("FrameFE", [("mesh", repr(self.mesh)), ("dofs", str(self.ndof))])
 
     @property
     def ndof(self) -> int:

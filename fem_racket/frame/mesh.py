@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fem_racket.display import number, short_repr, span
 from fem_racket.frame.segments import EI_RANGE, Frame, check_ei_factor
 from fem_racket.validation import InputError, check_integer, show
 
@@ -107,6 +108,17 @@ class FrameMesh:
     def n_elements(self) -> int:
         """Number of cells."""
         return int(self.points.size - 1)
+
+    def __repr__(self) -> str:
+        return short_repr(
+            "FrameMesh",
+            [
+                ("cells", str(self.n_elements)),
+                ("length", f"{number(self.length)} m"),
+                ("EI", span(self.EI, "N m^2")),
+                ("rhoA", span(self.rhoA, "kg/m")),
+            ],
+        )
 
     def scaled(self, ei_factor: float = 1.0) -> FrameMesh:
         """The same mesh with every cell's EI multiplied by ``ei_factor``."""

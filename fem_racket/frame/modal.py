@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fem_racket.display import number, short_repr
 from fem_racket.frame.curvature import flexible_modes
 from fem_racket.frame.forms import FrameFE
 from fem_racket.validation import check_integer
@@ -42,6 +43,17 @@ class MassProperties:
     cg: float
     inertia: float
     length: float
+
+    def __repr__(self) -> str:
+        return short_repr(
+            "MassProperties",
+            [
+                ("mass", f"{number(self.mass)} kg"),
+                ("cg", f"{number(self.cg)} m ({number(self.cg_over_length, 4)} L)"),
+                ("inertia", f"{number(self.inertia)} kg m^2"),
+                ("length", f"{number(self.length)} m"),
+            ],
+        )
 
     @property
     def cg_over_length(self) -> float:
@@ -79,6 +91,20 @@ class FreeModes:
     shapes: np.ndarray
     omega: np.ndarray
     props: MassProperties
+
+    def __repr__(self) -> str:
+        f = self.frequencies
+        shown = ", ".join(number(v) for v in f[:4]) + (
+            f", ..., {number(f[-1])}" if f.size > 4 else ""
+        )
+        return short_repr(
+            "FreeModes",
+            [
+                ("flexible", str(f.size)),
+                ("frequencies", f"[{shown}] Hz"),
+                ("mass", f"{number(self.props.mass)} kg"),
+            ],
+        )
 
     @property
     def frequencies(self) -> np.ndarray:
@@ -141,21 +167,30 @@ def free_modes(fe: FrameFE, n_modes: int | None = None) -> FreeModes:
 def mode_nodes(fe: FrameFE, shape: np.ndarray, samples_per_cell: int = 16) -> np.ndarray:
     """Positions x/L where the deflection of ``shape`` is zero (its vibration nodes).
 
-    Sign changes are found on a grid of ``samples_per_cell`` points per cell and refined with
-    Brent's method on the exact Hermite interpolant.
+    In a cell of length h the deflection is the cubic Hermite interpolant
+    w(s) = u1 N1(s) + h u1' N2(s) + u2 N3(s) + h u2' N4(s), s in [0, 1]. Its sign changes are found
+    on ``samples_per_cell`` intervals per cell and each is refined by bisection on the exact
+    cubic to machine precision, for every cell at once.
     """
-    from scipy.optimize import brentq
-
     p = fe.mesh.points
-    s = np.linspace(0.0, 1.0, samples_per_cell + 1)[:-1]
-    x = np.concatenate([(p[:-1, None] + np.diff(p)[:, None] * s).ravel(), p[-1:]])
-    w = fe.field_matrix(x, 0) @ shape
+    h = np.diff(p)
+    u, du = shape[fe.deflection_dofs], shape[fe.slope_dofs]
+    u1, u2, t1, t2 = u[:-1], u[1:], h * du[:-1], h * du[1:]
+    # Power-basis coefficients of w(s) per cell, constant term first.
+    coef = np.stack([u1, t1, -3 * u1 - 2 * t1 + 3 * u2 - t2, 2 * u1 + t1 - 2 * u2 + t2])
 
-    def deflection(xx: float) -> float:
-        return float((fe.field_matrix(np.array([xx]), 0) @ shape)[0])
+    def w(c: np.ndarray, s: np.ndarray) -> np.ndarray:
+        return c[0] + s * (c[1] + s * (c[2] + s * c[3]))
 
-    roots = [
-        brentq(deflection, x[i], x[i + 1], xtol=1e-14)
-        for i in np.flatnonzero(np.sign(w[:-1]) * np.sign(w[1:]) < 0)
-    ]
-    return np.array(roots) / fe.mesh.length
+    s = np.linspace(0.0, 1.0, samples_per_cell + 1)
+    ws = w(coef[:, :, None], s)
+    cell, k = np.nonzero(np.sign(ws[:, :-1]) * np.sign(ws[:, 1:]) < 0)
+    c = coef[:, cell]
+    lo, hi = s[k], s[k + 1]
+    w_lo = w(c, lo)
+    for _ in range(60):  # the bracket halves each time: 1/16 * 2^-60 of a cell
+        mid = 0.5 * (lo + hi)
+        w_mid = w(c, mid)
+        left = np.sign(w_mid) == np.sign(w_lo)
+        lo, w_lo, hi = np.where(left, mid, lo), np.where(left, w_mid, w_lo), np.where(left, hi, mid)
+    return np.sort(p[cell] + h[cell] * 0.5 * (lo + hi)) / fe.mesh.length

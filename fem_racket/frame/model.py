@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from fem_racket.display import number, short_repr, span
 from fem_racket.frame.forms import FrameFE
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
@@ -58,6 +59,21 @@ class FrameModel:
                 f"frame = {show(frame)} is not allowed: must be a Frame or a FrameMesh"
             )
         return cls(assemble_closed_form(mesh))
+
+    def __repr__(self) -> str:
+        props = self.props
+        cached = sorted(m.omega.size for m in self._modes.values())
+        return short_repr(
+            "FrameModel",
+            [
+                ("cells", str(self.mesh.n_elements)),
+                ("length", f"{number(self.mesh.length)} m"),
+                ("mass", f"{number(props.mass)} kg"),
+                ("cg", f"{number(props.cg_over_length, 4)} L"),
+                ("EI", span(self.mesh.EI, "N m^2")),
+                ("modes_computed", str(cached)),
+            ],
+        )
 
     @property
     def mesh(self) -> FrameMesh:

@@ -34,6 +34,7 @@ import numpy as np
 import scipy.linalg as sla
 
 from fem_racket.contact.linear import Ball, LinearContact
+from fem_racket.display import number, short_repr
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.setup import Impact
 
@@ -86,6 +87,21 @@ class CoupledModes:
     def frequencies(self) -> np.ndarray:
         """System natural frequencies [Hz] (rigid modes excluded)."""
         return self.omega / (2.0 * np.pi)
+
+    def __repr__(self) -> str:
+        f = self.frequencies
+        return short_repr(
+            "CoupledModes",
+            [
+                ("position", f"{self.impact.position:g} L"),
+                ("speed", f"{self.impact.speed:g} m/s"),
+                ("modes", str(f.size)),
+                ("f1", f"{number(f[0])} Hz" if f.size else "-"),
+                ("V_T", f"{number(self.v_translation)} m/s"),
+                ("V_R", f"{number(self.v_rotation)} m/s"),
+                ("V_I", f"{number(self.v_vibration)} m/s"),
+            ],
+        )
 
     @property
     def frame_frequencies(self) -> np.ndarray:

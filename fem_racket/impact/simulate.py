@@ -66,6 +66,8 @@ class ImpactResult:
         The contact law when it is not the paper's linear one on its exact path.
     law_state : ndarray or None, shape (nt,)
         The law's internal state [m] at the output times.
+    rtol, atol : float or None
+        Tolerances of the BDF integrator that ran (None for the exact solver, which has none).
     """
 
     model: FrameModel
@@ -84,6 +86,26 @@ class ImpactResult:
     peak_force: float
     law: ContactLaw | None = None
     law_state: np.ndarray | None = None
+    rtol: float | None = None
+    atol: float | None = None
+
+    # -- notebook forms (fem_racket.impact.result_views) ------------------------------------
+    def __repr__(self) -> str:
+        from fem_racket.impact.result_views import impact_repr
+
+        return impact_repr(self)
+
+    def _repr_html_(self) -> str:
+        from fem_racket.impact.result_views import impact_html
+
+        return impact_html(self)
+
+    def to_xarray(self, x: np.ndarray | None = None) -> Any:
+        """Time histories as an ``xarray.Dataset`` over ``time`` [s], with the frame's
+        deflection over ``x`` [m] (the mesh nodes by default) and the summary in ``attrs``."""
+        from fem_racket.impact.result_views import impact_dataset
+
+        return impact_dataset(self, x)
 
     # -- scalar outcomes -------------------------------------------------------------------
     @property
@@ -190,12 +212,20 @@ class ImpactResult:
         return mv + self.frame_velocity @ one, self.x_impact * mv + self.frame_velocity @ lever
 
     def summary(self) -> dict[str, Any]:
-        """Scalar results and settings, JSON-ready, units in the keys."""
+        """Scalar results and :meth:`settings`, JSON-ready, units in the keys."""
         return {
             "cor": self.cor,
             "contact_time_s": self.contact_time,
             "rebound_speed_m_s": -self.rebound_velocity,
             "peak_force_n": self.peak_force,
+            **self.settings(),
+        }
+
+    def settings(self) -> dict[str, Any]:
+        """What the run used, not what was asked: the solver that ran and its tolerances, the
+        flexible modes kept, K_CB and zeta (derived from the speed unless given), C_CB.
+        JSON-ready, units in the keys; every provenance records it under ``"used"``."""
+        return {
             "solver": self.solver,
             "separation": self.separation,
             "basis": self.basis,
@@ -204,6 +234,8 @@ class ImpactResult:
             "position_x_over_l": self.impact.position,
             "speed_m_s": self.impact.speed,
             "ball_mass_kg": self.ball.mass,
+            "rtol": self.rtol,
+            "atol": self.atol,
             **self.law_summary(),
         }
 
@@ -469,4 +501,6 @@ def simulate(
         frame_displacement=q,
         frame_velocity=qd,
         peak_force=traj.peak_force,
+        rtol=None if solver == "exact" else rtol,
+        atol=None if solver == "exact" else atol,
     )

@@ -26,8 +26,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import ImpactSeries, field_name, impact_series
-from fem_racket.outputs import Target, atomic_outputs, check_targets, provenance, sidecar_path
+from fem_racket.outputs import Target, atomic_outputs, check_targets, sidecar_path
+from fem_racket.progress import progress_bar
 from fem_racket.validation import InputError, check_range, show
 
 if TYPE_CHECKING:
@@ -107,6 +109,22 @@ def _camera(pl: Any, series: ImpactSeries, size: tuple[int, int]) -> None:
     pl.camera.clipping_range = (1.0 * length, 20.0 * length)
 
 
+def _why(i: int, force: np.ndarray) -> str:
+    """Why the contact force is not zero at t = 0 and negative at the end (README, model)."""
+    if i == 0 and force[0] > 0:
+        return " (the dashpot, C_CB V_B0, acts at once)"
+    if force[i] < 0:
+        return " (the dashpot pulls while the spring relaxes)"
+    return ""
+
+
+def _text(pl: Any, text: str, font_size: int, x: int, y: int) -> Any:
+    """A 2-D text actor at pixel (x, y) (its top-left corner unless re-justified)."""
+    actor = pl.add_text(text, position=(x, y), font_size=font_size, color=TEXT_COLOUR)
+    actor.GetTextProperty().SetVerticalJustificationToTop()
+    return actor
+
+
 def _render(
     series: ImpactSeries,
     path: Path,
@@ -115,6 +133,7 @@ def _render(
     fps: float,
     size: tuple[int, int],
     caption: str,
+    progress: bool | None = None,
 ) -> None:
     _use_egl()
     import imageio
@@ -148,13 +167,15 @@ def _render(
                 "n_labels": 5,
                 "vertical": True,
                 "position_x": 0.86,
-                "position_y": 0.16,
+                "position_y": 0.14,
                 "width": 0.05,
-                "height": 0.66,
+                "height": 0.62,
                 "title_font_size": 14,
                 "label_font_size": 12,
             },
         )
+        # The title sits above the bar; keep it clear of the top tick label.
+        pl.scalar_bars[field].SetVerticalTitleSeparation(int(0.04 * size[1]))
         ball = series.ball_grid(0)
         ball_points0 = np.array(ball.points)
         pl.add_mesh(ball, color=BALL_COLOUR, smooth_shading=True, specular=0.3, scalars=None)
@@ -167,10 +188,11 @@ def _render(
             show_points=False,
             always_visible=True,
         )
-        pl.add_text(
-            f"deflection \u00d7 {series.scale:g}", position="upper_right", font_size=12,
-            color=TEXT_COLOUR,
-        )  # fmt: skip
+        width, height = size
+        margin = max(8, int(0.015 * width))  # texts stand off the image's edges
+        scale_text = _text(pl, f"deflection \u00d7 {series.scale:g}", 12, margin, height)
+        scale_text.SetPosition(width - margin, height - margin)
+        scale_text.GetTextProperty().SetJustificationToRight()
         _camera(pl, series, size)
         if gif is not None:  # pyvista's open_gif settings, into memory (see the docstring)
             pl.mwriter = imageio.get_writer(
@@ -180,15 +202,17 @@ def _render(
         else:
             pl.open_movie(str(path), framerate=fps, quality=7, ffmpeg_log_level="quiet")
         force = series.ball_fields["contact force [N]"]
-        time_text = pl.add_text("", position="upper_left", font_size=14, color=TEXT_COLOUR)
-        caption_text = pl.add_text("", position="lower_left", font_size=10, color=TEXT_COLOUR)
-        for i in range(series.n_steps):
+        time_text = _text(pl, "", 14, margin, height - margin)
+        caption_text = _text(pl, "", 10, margin, margin)
+        caption_text.GetTextProperty().SetVerticalJustificationToBottom()
+        steps = progress_bar(range(series.n_steps), desc="animate", unit="frame", enabled=progress)
+        for i in steps:
             frame.points = series.frame_points(i)
             target = frame.cell_data if cell else frame.point_data
             target[field] = values[i]
             ball.points = ball_points0 + (0.0, 0.0, series.ball_z[i] - series.ball_z[0])
-            time_text.set_text("upper_left", f"t = {series.t[i] * 1e3:5.3f} ms")
-            caption_text.set_text("lower_left", f"{caption}\ncontact force {force[i]:5.0f} N")
+            time_text.SetInput(f"t = {series.t[i] * 1e3:5.3f} ms")
+            caption_text.SetInput(f"{caption}\ncontact force {force[i]:5.0f} N{_why(i, force)}")
             pl.write_frame()
     finally:
         pl.close()
@@ -208,6 +232,7 @@ def render_animation(
     size: tuple[int, int] = (960, 400),
     overwrite: bool = False,
     parameters: dict[str, Any] | None = None,
+    progress: bool | None = None,
 ) -> Path:
     """Render an impact as a GIF or MP4 offscreen; return the path written.
 
@@ -239,6 +264,8 @@ def render_animation(
         Replace existing files.
     parameters : dict, optional
         Extra provenance entries.
+    progress : bool or None
+        A progress bar over the frames on stderr (None: when stderr is a terminal).
     """
     targets = check_targets(animation_targets(path), overwrite=overwrite)
     path = targets[0].path
@@ -259,9 +286,9 @@ def render_animation(
         "size_px": list(size),
         "time_s": series.t.tolist(),
     }
-    meta = provenance({**result.summary(), **settings, **(parameters or {})})
+    meta = impact_provenance(result, {**settings, **(parameters or {})})
     with atomic_outputs(targets, overwrite=overwrite) as (tmp, tmp_json):
-        _render(series, tmp, field=field, fps=fps, size=size, caption=caption)
+        _render(series, tmp, field=field, fps=fps, size=size, caption=caption, progress=progress)
         tmp_json.write_text(json.dumps(meta, indent=2) + "\n")
     log.info("wrote %d frames to %s", series.n_steps, path)
     return path

@@ -2,10 +2,17 @@
 
 Every writer takes the output path (written atomically, never silently replaced unless
 ``overwrite``); only the CLI and scripts default to ``output/``. Provenance
-(:func:`fem_racket.outputs.provenance`: version, date, the study's settings and ``parameters``)
-goes into the PNG's text chunks and, for the CSV, into the sidecar ``<file>.csv.json``.
-:func:`write_outputs` writes the CSV, its sidecar and the plot as one set: all three or none
-(:func:`refine_targets` lists them, to check before the study runs).
+(:func:`fem_racket.outputs.provenance`: version, date, the study's settings and ``parameters``,
+and under ``"used"`` what the impacts used: modes kept per mesh, K_CB, zeta, ...) goes into the
+figure (PNG, SVG or PDF: :func:`fem_racket.io.figure_files.save_figure`) and, for the CSV, into
+the sidecar ``<file>.csv.json``. :func:`write_outputs` writes the CSV, its sidecar and the
+figure as one set: all three or none (:func:`refine_targets` lists them, to check before the
+study runs).
+
+The table gives each quantity in one unit (t_c and its change in ms). The Richardson estimate
+(order 4) is printed only where the three finest meshes show that order (3-5); elsewhere the
+line says why it is left out: the changes are at the floor set by the modal truncation and
+round-off (~1e-8), or not yet in the asymptotic range.
 """
 
 from __future__ import annotations
@@ -19,15 +26,9 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.outputs import (
-    Target,
-    add_png_provenance,
-    atomic_output,
-    atomic_outputs,
-    provenance,
-    sidecar_path,
-)
-from fem_racket.studies.refine import RefinementStudy
+from fem_racket.io.figure_files import DEFAULT_DPI, save_figure
+from fem_racket.outputs import Target, atomic_outputs, provenance, sidecar_path
+from fem_racket.studies.refine import ASYMPTOTIC_ORDERS, RefinementStudy
 
 __all__ = [
     "format_study",
@@ -40,7 +41,7 @@ __all__ = [
 
 
 def refine_targets(csv_path: str | os.PathLike, plot_path: str | os.PathLike) -> list[Target]:
-    """The files :func:`write_outputs` writes: the CSV, its sidecar and the plot."""
+    """The files :func:`write_outputs` writes: the CSV, its sidecar and the figure."""
     csv_path = Path(csv_path)
     return [
         Target(csv_path, name="csv"),
@@ -56,13 +57,14 @@ def write_outputs(
     *,
     overwrite: bool = False,
     parameters: Mapping[str, Any] | None = None,
+    dpi: float = DEFAULT_DPI,
 ) -> list[Path]:
     """:func:`write_csv` and :func:`plot_studies` as one set: all their files or none."""
     targets = refine_targets(csv_path, plot_path)
     with atomic_outputs(targets, overwrite=overwrite) as (tmp_csv, tmp_side, tmp_plot):
         _write_table(studies, tmp_csv)
         _write_meta(studies, tmp_side, parameters)
-        _save_plot(studies, tmp_plot, parameters)
+        plot_studies(studies, tmp_plot, overwrite=True, parameters=parameters, dpi=dpi)
     return [Path(csv_path), Path(plot_path)]
 
 
@@ -78,9 +80,13 @@ def study_provenance(
         "speed_m_s": first.speed,
         "frequencies_compared": int(first.exact_frequencies_hz.size),
         "exact_frequencies_hz": first.exact_frequencies_hz.tolist(),
-        "impact_solver": "exact (modal basis)",
     }
-    return provenance({**settings, **(parameters or {})})
+    meta = provenance({**settings, **(parameters or {})})
+    meta["used"] = {
+        family: {**s.impact_settings, "modes_per_mesh": s.impact_modes_used.tolist()}
+        for family, s in studies.items()
+    }
+    return meta
 
 
 def format_study(study: RefinementStudy) -> str:
@@ -102,21 +108,30 @@ def format_study(study: RefinementStudy) -> str:
         row += f" {study.build_time_s[i]:>9.3f} {study.impact_time_s[i] * 1e3:>11.2f}"
         lines.append(row)
     lines.append(
-        f"{'cells':>6} {'x/L':>6} {'COR':>12} {'|dCOR|':>9} {'t_c [ms]':>10} {'|dt_c| [s]':>10}"
+        f"{'cells':>6} {'x/L':>6} {'COR':>12} {'|dCOR|':>9} {'t_c [ms]':>10} {'|dt_c| [ms]':>11}"
     )
     dc, dt = study.change(study.cor), study.change(study.contact_time_s)
     for j, x in enumerate(study.positions):
         for i, n in enumerate(study.elements):
             lines.append(
                 f"{n:>6} {x:>6.3f} {study.cor[i, j]:>12.9f} {_num(dc[i, j], '9.2e')} "
-                f"{study.contact_time_s[i, j] * 1e3:>10.6f} {_num(dt[i, j], '10.2e')}"
+                f"{study.contact_time_s[i, j] * 1e3:>10.6f} {_num(dt[i, j] * 1e3, '11.2e')}"
             )
-        lines.append(
-            f"{'Richardson':>13} {study.richardson(study.cor)[j]:>12.9f} {'':>9} "
-            f"{study.richardson(study.contact_time_s)[j] * 1e3:>10.6f}   "
-            f"(observed COR order {_num(study.observed_order_of(study.cor)[j], '.2f').strip()})"
-        )
+        lines.append(_richardson_line(study, j))
     return "\n".join(lines)
+
+
+def _richardson_line(study: RefinementStudy, j: int) -> str:
+    """The Richardson row of impact point ``j``, or why it is left out."""
+    cor, tc = study.richardson(study.cor)[j], study.richardson(study.contact_time_s)[j]
+    p_cor = _num(study.observed_order_of(study.cor)[j], ".2f").strip()
+    p_tc = _num(study.observed_order_of(study.contact_time_s)[j], ".2f").strip()
+    line = f"{'Richardson':>13} {_num(cor, '12.9f')} {'':>9} {_num(tc * 1e3, '10.6f')}"
+    line += f"   (observed order: COR {p_cor}, t_c {p_tc}"
+    if np.isfinite(cor) and np.isfinite(tc):
+        return line + ")"
+    low, high = ASYMPTOTIC_ORDERS
+    return line + f": '-' where outside {low:g}-{high:g}, not extrapolated)"
 
 
 def _num(v: float, fmt: str) -> str:
@@ -181,25 +196,21 @@ def plot_studies(
     *,
     overwrite: bool = False,
     parameters: Mapping[str, Any] | None = None,
+    dpi: float = DEFAULT_DPI,
 ) -> Path:
     """Log-log plot: frequency errors and COR changes against the number of elements.
 
-    The PNG carries the provenance (with ``parameters``) in its text chunks."""
-    with atomic_output(path, overwrite=overwrite, name="plot") as tmp:
-        _save_plot(studies, tmp, parameters)
-    return Path(path)
-
-
-def _save_plot(
-    studies: Mapping[str, RefinementStudy], path: Path, parameters: Mapping[str, Any] | None
-) -> None:
+    ``path`` ends in .png, .svg or .pdf (``dpi``: resolution [dots per inch]); the figure
+    carries the provenance (with ``parameters``). The legends sit below the axes, off the data."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from fem_racket.io.plotting import element_ticks
+
     styles = {"uniform": "-", "graded": "--"}
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5), constrained_layout=True)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.5), layout="constrained")
     for family, s in studies.items():
         ls = styles.get(family, ":")
         for k in range(s.exact_frequencies_hz.size):
@@ -227,18 +238,18 @@ def _save_plot(
     n = first.elements.astype(float)
     ref = 0.2 * np.abs(first.relative_error[-1, 0]) * (n / n[-1]) ** -4
     ax1.loglog(n, ref, "k-", lw=0.8, label="slope -4")
-    ax1.set_xlabel("elements")
-    ax1.set_ylabel("relative frequency error |f_FE / f_exact - 1|")
+    ax1.set_ylabel("relative frequency error |f_FE / f_exact - 1| [-]")
     ax1.set_title("Frequencies against the exact stepped beam")
-    ax1.grid(True, which="both", alpha=0.3)
-    ax1.legend(fontsize=7, ncol=2, loc="upper right")
-    ax2.set_xlabel("elements")
-    ax2.set_ylabel("|COR(N) - COR(previous N)|")
+    ax2.set_ylabel("|COR(N) - COR(previous N)| [-]")
     ax2.set_title(f"COR change under refinement ({first.speed:g} m/s)")
-    ax2.grid(True, which="both", alpha=0.3)
-    ax2.legend(fontsize=7, ncol=2)
+    every = np.unique(np.concatenate([s.elements for s in studies.values()]))
+    for ax in (ax1, ax2):
+        element_ticks(ax, every)
+        ax.set_xlabel("elements")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.14))
     try:
-        fig.savefig(path, dpi=120, format="png")
-        add_png_provenance(path, study_provenance(studies, parameters))
+        save_figure(fig, path, study_provenance(studies, parameters), dpi=dpi, overwrite=overwrite)
     finally:
         plt.close(fig)
+    return Path(path)

@@ -21,8 +21,10 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import BALL_FIELDS, FRAME_FIELDS, field_name, impact_series
-from fem_racket.outputs import atomic_folder, provenance
+from fem_racket.outputs import atomic_folder
+from fem_racket.progress import progress_bar
 
 if TYPE_CHECKING:
     from fem_racket.impact.simulate import ImpactResult
@@ -73,6 +75,7 @@ def write_vtk_series(
     field: str = "deflection [m]",
     overwrite: bool = False,
     parameters: dict[str, Any] | None = None,
+    progress: bool | None = None,
 ) -> Path:
     """Write an impact as a VTK time series into ``folder``; return the ``.pvd`` path.
 
@@ -95,6 +98,8 @@ def write_vtk_series(
         Replace an existing export.
     parameters : dict, optional
         Extra entries for the provenance (e.g. the command line).
+    progress : bool or None
+        A progress bar over the steps on stderr (None: when stderr is a terminal).
     """
     field = field_name(field)
     series = impact_series(result, subdivide=subdivide, frames=frames, scale=scale)
@@ -107,10 +112,13 @@ def write_vtk_series(
         "ball_fields": list(BALL_FIELDS),
         "time_s": series.t.tolist(),
     }
-    meta = provenance({**result.summary(), **settings, **(parameters or {})})
+    meta = impact_provenance(result, {**settings, **(parameters or {})})
     with atomic_folder(folder, overwrite=overwrite, marker=PROVENANCE_NAME) as tmp:
         entries = []
-        for i in range(series.n_steps):
+        steps = progress_bar(
+            range(series.n_steps), desc="export-vtk", unit="step", enabled=progress
+        )
+        for i in steps:
             frame = series.frame_grid(i)
             if field in series.cell_fields:  # readers colour by the active point scalars first
                 frame.point_data.active_scalars_name = None

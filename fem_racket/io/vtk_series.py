@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from fem_racket.display import number, short_repr
 from fem_racket.validation import InputError, check_positive, check_range, show
 
 if TYPE_CHECKING:
@@ -148,6 +149,18 @@ class ImpactSeries:
     x_impact: float
     scale: float
     ball_radius: float = BALL_RADIUS
+
+    def __repr__(self) -> str:
+        return short_repr(
+            "ImpactSeries",
+            [
+                ("steps", str(self.n_steps)),
+                ("time", f"{number(self.t[0] * 1e3)}-{number(self.t[-1] * 1e3)} ms"),
+                ("points", str(self.x.size)),
+                ("scale", number(self.scale)),
+                ("fields", str([*self.point_fields, *self.cell_fields])),
+            ],
+        )
 
     @property
     def n_steps(self) -> int:

@@ -169,6 +169,8 @@ def _commit(targets: Sequence[Target], temps: Sequence[Path], overwrite: bool) -
     moved: list[tuple[Target, Path | None]] = []
     try:
         for t, tmp in zip(targets, temps, strict=True):
+            if not (tmp.exists() or tmp.is_symlink()):  # removed by the block: left as it is
+                continue
             if not t.folder:
                 os.chmod(tmp, _umask_mode(0o666))
             old = None
@@ -202,7 +204,8 @@ def atomic_outputs(
     """Yield one temporary path per target; move them all into place when the block succeeds.
 
     Files keep the suffix of their target so writers that pick a format by suffix work
-    unchanged; folder targets get an empty temporary folder. Every target is checked first
+    unchanged; folder targets get an empty temporary folder; a temporary the block removes
+    leaves its target as it is (an output that would not change). Every target is checked first
     (:func:`check_targets`). On any exception - or a failure while moving - the temporaries and
     the folders created for them are removed and every existing output is kept; an ``OSError``
     comes out as :class:`OutputError` naming the target.

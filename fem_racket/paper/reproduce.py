@@ -1,10 +1,16 @@
 """Reproduce every analysis of Kawazoe & Kanda (1997): all figures, their data and a report.
 
 :func:`reproduce` computes each figure of :data:`fem_racket.figures.FIGURES`, writes its CSV
-tables and PNG into an output folder, writes ``values.json`` (every scalar, with provenance) there,
-and writes a Markdown report (``REPRODUCTION.md``) setting each statement of the paper beside our
-value and a verdict (:mod:`fem_racket.paper.claims`). The report links the PNGs by paths relative to
-its own folder, so a report at the repository root shows the figures of ``output/paper/``.
+tables and figure (PNG by default, or SVG, PDF) into an output folder, writes ``values.json``
+(every scalar and the list of files, with provenance) there, and writes a Markdown report
+(``REPRODUCTION.md``) setting each statement of the paper beside our value and a verdict
+(:mod:`fem_racket.paper.claims`). The report links the figures by paths relative to its own
+folder, so a report at the repository root shows the figures of ``output/paper/`` (committed, so
+that it reads well right after ``git clone``).
+
+Its own earlier outputs are replaced without ``overwrite`` (recognised by their provenance,
+:func:`fem_racket.paper.owned.written_by_fem_racket`); any other existing file is refused before
+any work unless ``overwrite``.
 """
 
 from __future__ import annotations
@@ -17,9 +23,20 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from fem_racket.outputs import Target, atomic_outputs, check_targets, provenance
+from fem_racket.display import number, short_repr
+from fem_racket.io.figure_files import DEFAULT_DPI, check_dpi, check_figure_format
+from fem_racket.outputs import Target, atomic_outputs, provenance
 from fem_racket.paper.claims import AGREES, DIFFERS, NOT_CHECKABLE, Claim, build_claims
-from fem_racket.paper.figures import FIGURES, FigureData, expected_files, write_figure_into
+from fem_racket.paper.figures import (
+    FIGURES,
+    FigureData,
+    expected_files,
+    used_settings,
+    write_figure_into,
+)
+from fem_racket.paper.owned import check_replaceable
+from fem_racket.progress import progress_bar
+from fem_racket.validation import InputError
 
 __all__ = ["Reproduction", "render_report", "reproduce"]
 
@@ -66,6 +83,19 @@ class Reproduction:
     files: list[Path]
     seconds: dict[str, float]
 
+    def __repr__(self) -> str:
+        c = self.counts()
+        return short_repr(
+            "Reproduction",
+            [
+                ("figures", str(len(self.figures))),
+                ("claims", f"{len(self.claims)} ({c[AGREES]} agree, {c[DIFFERS]} differ, "
+                 f"{c[NOT_CHECKABLE]} not checkable)"),
+                ("files", str(len(self.files))),
+                ("seconds", number(sum(self.seconds.values()), 3)),
+            ],
+        )  # fmt: skip
+
     def counts(self) -> dict[str, int]:
         """Number of claims per verdict."""
         return {
@@ -84,10 +114,32 @@ def _cell(text: str) -> str:
     return text.replace("|", "\\|").replace("\n", " ")
 
 
+def _same_report(path: Path, text: str) -> bool:
+    """True if the report at ``path`` says ``text`` (its closing provenance comment aside)."""
+    try:
+        old = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return False
+    return old[: old.rfind("\n<!-- provenance: ")] == text
+
+
+def _figure_link(title: str, path: str) -> str:
+    """Markdown that shows a PNG or SVG, and links a PDF (which a Markdown viewer cannot show)."""
+    if path.endswith(".pdf"):
+        return f"[{title} (PDF)]({path})"
+    return f"![{title}]({path})"
+
+
 def render_report(
-    figures: dict[str, FigureData], claims: list[Claim], image_dir: str, *, quick: bool = False
+    figures: dict[str, FigureData],
+    claims: list[Claim],
+    image_dir: str,
+    *,
+    quick: bool = False,
+    fmt: str = "png",
 ) -> str:
-    """The Markdown report; ``image_dir`` is the figures' folder relative to the report."""
+    """The Markdown report; ``image_dir`` is the figures' folder relative to the report, ``fmt``
+    their format (a PDF is linked, PNG and SVG are shown)."""
     counts = {k: sum(c.verdict == k for c in claims) for k in (AGREES, DIFFERS, NOT_CHECKABLE)}
     img = image_dir.rstrip("/") or "."
     lines = [
@@ -101,16 +153,20 @@ def render_report(
         f"**{len(claims)} statements: {counts[AGREES]} agree, {counts[DIFFERS]} differ, "
         f"{counts[NOT_CHECKABLE]} cannot be checked.**",
         "",
-        "**Regenerate** (figures and data are not committed; the images below appear once this "
-        "has run): from the repository root,",
+        "**Regenerate**: from the repository root (about 15 s here),",
         "",
         "```bash",
-        "python -m fem_racket reproduce --overwrite        # or: fem-racket reproduce --overwrite",
+        "fem-racket reproduce          # or: python -m fem_racket reproduce",
         "```",
         "",
-        f"This writes the PNGs, one CSV per table (units in the column names) and `values.json` "
-        f"into `{img}/`, and rewrites this file. `--out DIR` picks another folder (the image links "
-        f"follow it), `--quick` a coarse grid for tests.",
+        f"This writes the figures, one CSV per table (units in the column names) and "
+        f"`values.json` into `{img}/`, and rewrites this file. The PNGs are committed (so this "
+        f"page shows them right after `git clone`), the CSVs and `values.json` are not. It "
+        f"replaces the files it wrote before (recognised by their provenance), never another "
+        f"file (`--overwrite` forces that), and leaves a figure or this report as it is when "
+        f"only its provenance would change. `--out DIR` picks another folder (the image links "
+        f"follow it), `--format svg|pdf` and `--dpi N` the figures' format and resolution, "
+        f"`--quick` a coarse grid for tests.",
         "",
         "**Model and assumptions.** Stepped free-free beam, 20 cubic Hermite elements (as the "
         "paper); ball mass m_B = 0.057 kg, **not stated in the paper** (the rules allow "
@@ -147,7 +203,7 @@ def render_report(
                 f'<a id="{key}"></a>',
                 f"### {data.title}",
                 "",
-                f"![{data.title}]({img}/{spec.name}.png)",
+                _figure_link(data.title, f"{img}/{spec.name}.{fmt}"),
                 "",
                 f"Data: {files}.",
             ]
@@ -177,8 +233,11 @@ def reproduce(
     overwrite: bool = False,
     figures: list[str] | None = None,
     parameters: dict[str, Any] | None = None,
+    fmt: str = "png",
+    dpi: float = DEFAULT_DPI,
+    progress: bool | None = None,
 ) -> Reproduction:
-    """Compute every figure, write data + PNGs + ``values.json`` to ``out_dir``, and the report.
+    """Compute every figure, write data + figures + ``values.json`` to ``out_dir``, and the report.
 
     Parameters
     ----------
@@ -189,61 +248,77 @@ def reproduce(
     quick : bool
         Coarse grids (for tests); the report says so.
     overwrite : bool
-        Replace existing files. Otherwise any existing output is an error, raised before any
-        computation (as is any destination that cannot be written). Every file - figures,
-        ``values.json``, the report - is written after all figures are computed, as one set:
-        all of them or, on any failure or interruption, none (old files kept).
+        Replace any existing file. Otherwise only the files an earlier reproduction wrote (its
+        figures, CSVs listed in its ``values.json``, ``values.json``, the report: recognised by
+        their provenance) are replaced, and any other existing output is an error, raised
+        before any computation.
+        Every file - figures, CSVs, ``values.json``, the report - is written after all figures
+        are computed, as one set: all of them or, on any failure or interruption, none (old
+        files kept); every destination is checked before the work.
     figures : list of str, optional
         Subset of :data:`fem_racket.figures.FIGURES` keys; all by default (a report needs all).
     parameters : dict, optional
-        Extra provenance (e.g. the command's options), in ``values.json``, every PNG's text
-        chunks and a comment at the end of the report.
+        Extra provenance (e.g. the command's options), in ``values.json``, every figure's
+        metadata and a comment at the end of the report. Every provenance also records what
+        the figures used (``"used"``: :func:`fem_racket.paper.figures.used_settings`).
+    fmt : {"png", "svg", "pdf"}
+        Format of the figures (the report shows PNG and SVG, and links PDF).
+    dpi : float
+        Resolution of the figures [dots per inch].
+    progress : bool or None
+        A progress bar over the figures on stderr (None: when stderr is a terminal).
     """
-    from fem_racket.validation import InputError, check_choice
+    from fem_racket.validation import check_choice
 
     keys = (
         list(FIGURES) if figures is None else [check_choice("figure", k, FIGURES) for k in figures]
     )
     if report is not None and set(keys) != set(FIGURES):
         raise InputError("figures is not allowed with a report: the report needs every figure")
+    fmt = check_figure_format(fmt)
+    dpi = check_dpi(dpi)
     out = Path(out_dir)
-    groups = {k: expected_files(FIGURES[k], out) for k in keys}
-    files = [p for paths in groups.values() for p in paths] + [out / "values.json"]
-    targets = [Target(p, name="out") for p in files]
+    groups = {k: expected_files(FIGURES[k], out, fmt) for k in keys}
+    written = [p for paths in groups.values() for p in paths]
+    targets = [Target(p, name="out") for p in [*written, out / "values.json"]]
     if report is not None:
         targets.append(Target(Path(report), name="report"))
-        files.append(Path(report))
-    check_targets(targets, overwrite=overwrite)  # every destination, before the work
+    check_replaceable(targets, overwrite=overwrite)
     meta = provenance(
-        {
-            "quick": quick,
-            "figures": keys,
-            "ball_mass_kg": 0.057,
-            "elements": 20,
-            "solver": "exact (closed form, modal basis, 80 flexible modes; simulate defaults)",
-            "separation": "displacement",
-            **(parameters or {}),
-        }
+        {"quick": quick, "figures": keys, "format": fmt, "dpi": dpi, **(parameters or {})}
     )
+    meta["used"] = used_settings()
     done: dict[str, FigureData] = {}
     seconds: dict[str, float] = {}
-    for key in keys:
+    for key in progress_bar(keys, desc="reproduce", unit="figure", enabled=progress):
         t0 = time.perf_counter()
         done[key] = FIGURES[key].compute(quick)
         seconds[key] = time.perf_counter() - t0
         log.info("%s: %.2f s", key, seconds[key])
     values = {k: d.values for k, d in done.items()}
+    listing = [p.name for p in written]
     claims = build_claims(values) if report is not None else []
-    with atomic_outputs(targets, overwrite=overwrite) as temps:  # all files or none
+    # Every file of the reproduction moved into place together (check_replaceable above did the
+    # --overwrite check: what remains is ours to replace); unchanged ones are left as they are.
+    with atomic_outputs(targets, overwrite=True) as temps:
         pending = iter(temps)
         for key, paths in groups.items():
             t0 = time.perf_counter()
-            write_figure_into(FIGURES[key], done[key], [next(pending) for _ in paths], meta)
+            mine = [next(pending) for _ in paths]
+            write_figure_into(
+                FIGURES[key], done[key], mine, paths, meta, dpi=dpi, keep_unchanged=True
+            )
             seconds[key] += time.perf_counter() - t0
-        next(pending).write_text(json.dumps({"provenance": meta, "values": values}, indent=1))
+        listed = {"provenance": meta, "files": listing, "values": values}
+        next(pending).write_text(json.dumps(listed, indent=1))
         if report is not None:
-            rel = os.path.relpath(out.resolve(), Path(report).resolve().parent)
-            text = render_report(done, claims, rel.replace(os.sep, "/"), quick=quick)
-            text += f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
-            next(pending).write_text(text)
+            rel = os.path.relpath(out.resolve(), Path(report).resolve().parent).replace(os.sep, "/")
+            text = render_report(done, claims, rel, quick=quick, fmt=fmt)
+            tmp = next(pending)
+            if _same_report(Path(report), text):
+                tmp.unlink()  # left as it is
+            else:
+                stamp = f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
+                tmp.write_text(text + stamp)
+    files = [*written, out / "values.json"] + ([Path(report)] if report is not None else [])
     return Reproduction(done, claims, files, seconds)

@@ -29,6 +29,7 @@ from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh, frame_from_mesh, fram
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.impact.simulate import simulate
+from fem_racket.progress import progress_bar
 from fem_racket.validation import InputError, check_choice, check_integer, check_range, show
 
 __all__ = [
@@ -70,6 +71,14 @@ class RefinementStudy:
     cor, contact_time_s : ndarray, shape (n, k)
     build_time_s : ndarray, shape (n,)
         Assembly plus modes [s] per mesh; impact_time_s: mean wall time per impact [s].
+    impact_settings : dict
+        What the impacts used, the same on every mesh (solver, separation, m_B, K_CB, zeta,
+        C_CB: :meth:`fem_racket.ImpactResult.settings` less the per-mesh entries).
+    impact_modes_used : ndarray of int, shape (n,)
+        Flexible modes the impacts kept on each mesh (at most 2 per element).
+
+    In a notebook it shows a one-line summary (``repr``) or a table per mesh
+    (``_repr_html_``); :meth:`to_xarray` gives every result as a labelled dataset.
     """
 
     family: str
@@ -83,6 +92,25 @@ class RefinementStudy:
     build_time_s: np.ndarray
     impact_time_s: np.ndarray
     skipped: tuple[int, ...] = field(default=())
+    impact_settings: dict[str, Any] = field(default_factory=dict)
+    impact_modes_used: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+
+    def __repr__(self) -> str:
+        from fem_racket.studies.refine_views import study_repr
+
+        return study_repr(self)
+
+    def _repr_html_(self) -> str:
+        from fem_racket.studies.refine_views import study_html
+
+        return study_html(self)
+
+    def to_xarray(self) -> Any:
+        """Every result as an ``xarray.Dataset`` over ``elements`` (and ``mode``,
+        ``position``), units in each variable's ``units``."""
+        from fem_racket.studies.refine_views import study_dataset
+
+        return study_dataset(self)
 
     @property
     def relative_error(self) -> np.ndarray:
@@ -148,6 +176,8 @@ class RefinementStudy:
             "cor_richardson": self.richardson(self.cor).tolist(),
             "contact_time_richardson_s": self.richardson(self.contact_time_s).tolist(),
             "cor_observed_order": self.observed_order_of(self.cor).tolist(),
+            "contact_time_observed_order": self.observed_order_of(self.contact_time_s).tolist(),
+            "impact_modes_used": self.impact_modes_used.tolist(),
             "build_time_s": self.build_time_s.tolist(),
             "impact_time_s": self.impact_time_s.tolist(),
             "skipped_elements": list(self.skipped),
@@ -187,6 +217,7 @@ def refinement_study(
     grading: float = DEFAULT_GRADING,
     impact_nodes: bool = False,
     impact_modes: int = DEFAULT_MODES,
+    progress: bool | None = None,
     **impact: Any,
 ) -> RefinementStudy:
     """Refine the frame over ``elements`` and compare with the exact solution.
@@ -211,6 +242,8 @@ def refinement_study(
         Put a node at every impact point (otherwise they may fall inside cells).
     impact_modes : int
         Flexible modes in the impact's modal basis (80 by default, as :func:`simulate`).
+    progress : bool or None
+        A progress bar over the meshes on stderr (None: when stderr is a terminal).
     **impact
         Further keyword arguments of :func:`fem_racket.simulate` (ball_mass, kcb, zeta,
         separation).
@@ -240,7 +273,7 @@ def refinement_study(
     exact = free_free_frequencies(frame, n_modes)
     extra = tuple(pos) if impact_nodes else ()
     rows = []
-    for n in counts:
+    for n in progress_bar(counts, desc=f"refine ({family})", unit="mesh", enabled=progress):
         if family == "uniform":
             mesh = frame_mesh(frame, int(n), extra)
         else:
@@ -269,4 +302,14 @@ def refinement_study(
         build_time_s=np.array([r[3] for r in rows]),
         impact_time_s=np.array([r[4] for r in rows]),
         skipped=skipped,
+        impact_settings=_common_settings(rows[0][2][0]),
+        impact_modes_used=np.array([r[2][0].n_modes for r in rows]),
     )
+
+
+def _common_settings(result: Any) -> dict[str, Any]:
+    """What every impact of the study used, whatever the mesh and the impact point."""
+    used = result.settings()
+    for key in ("modes", "elements", "position_x_over_l"):
+        del used[key]
+    return used

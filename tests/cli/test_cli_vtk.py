@@ -35,8 +35,8 @@ def test_export_vtk_writes_the_simulated_impact(capsys, tmp_path, standard_model
     w = expected.impact_point_displacement[-1]
     assert frame.point_data["deflection [m]"][j] == pytest.approx(w, rel=1e-12)
     assert frame.points[j, 2] == pytest.approx(3 * w, rel=1e-12)
-    meta = json.loads((out / "provenance.json").read_text())["parameters"]
-    assert meta["speed_m_s"] == 30.0 and meta["subdivide"] == 4
+    meta = json.loads((out / "provenance.json").read_text())
+    assert meta["used"]["speed_m_s"] == 30.0 and meta["parameters"]["subdivide"] == 4
 
 
 def test_animate_gif(capsys, tmp_path):

@@ -85,3 +85,28 @@ def test_scaled_modes_equal_reassembled(standard_model):
     fast = standard_model.scaled(s).modes(None)
     slow = FrameModel.build(standard_model.mesh.scaled(s)).modes(None)
     np.testing.assert_allclose(fast.omega, slow.omega, rtol=1e-8)
+
+
+def test_mode_nodes_match_brent_on_the_hermite_interpolant():
+    # Independent path: scipy's brentq on field_matrix (the exact Hermite interpolant) between
+    # sign changes of a fine sampling; the vectorised bisection must find the same zeros.
+    from scipy.optimize import brentq
+
+    model = FrameModel.build(elements=20)
+    fm = model.modes(12)
+    fe, L = model.fe, model.mesh.length
+    x = np.linspace(0.0, L, 20 * 64 + 1)
+    for k in range(fm.omega.size):
+        shape = fm.shapes[:, k]
+        w = fe.field_matrix(x, 0) @ shape
+
+        def deflection(xx, shape=shape):
+            return float((fe.field_matrix(np.array([xx]), 0) @ shape)[0])
+
+        brent = [
+            brentq(deflection, x[i], x[i + 1], xtol=1e-15)
+            for i in np.flatnonzero(np.sign(w[:-1]) * np.sign(w[1:]) < 0)
+        ]
+        nodes = mode_nodes(fe, shape)
+        assert nodes.size == k + 2  # mode k + 1 of a free-free beam has k + 2 nodes
+        np.testing.assert_allclose(nodes, np.array(brent) / L, rtol=0, atol=1e-13)

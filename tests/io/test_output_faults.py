@@ -190,7 +190,7 @@ def _full_disk_cases(folder: Path) -> list[list[str]]:
         ["animate", "--frames", "20", "--size", "320x160", "--out", f"{folder}/a.gif"],
         ["sweep", "--serial", "--quiet", "--position", "0.5:0.9:1500", "--out", f"{folder}/s.nc"],
         ["refine", "--family", "uniform", "--elements", "5", "10", "--csv", f"{folder}/r2.csv",
-         "--plot", f"{folder}/r2.png"],
+         "--plot", f"{folder}/r2.png", "--dpi", "600"],
     ]  # fmt: skip
 
 

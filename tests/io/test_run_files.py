@@ -84,7 +84,7 @@ def test_vtk_and_animate_tables(capsys, cwd):
     assert len(list((cwd / "series").glob("frame_*.vtu"))) == 3
     prov = json.loads((cwd / "series" / "provenance.json").read_text())
     params = prov["parameters"]
-    assert params["position_x_over_l"] == 0.6 and params["steps"] == 3
+    assert prov["used"]["position_x_over_l"] == 0.6 and params["steps"] == 3
     assert params["config"] == "run.toml" and params["rtol"] == 1e-10 and prov["version"]
     # The command line wins over [animate].
     assert run(capsys, "animate", "--config", "run.toml", "--frames", "2").strip() == "a.gif"

@@ -123,8 +123,9 @@ def test_provenance_sidecar(result, export):
     meta = json.loads((folder / "provenance.json").read_text())
     assert meta["software"] == "fem_racket"
     params = meta["parameters"]
-    assert params["cor"] == result.cor
-    assert params["position_x_over_l"] == POSITION
+    assert meta["results"]["cor"] == result.cor
+    assert meta["used"] == result.settings()
+    assert meta["used"]["position_x_over_l"] == POSITION
     assert params["steps"] == result.t.size
     assert params["time_s"] == result.t.tolist()
     assert set(FRAME_FIELDS) <= set(params["frame_fields"])

@@ -42,7 +42,13 @@ def test_figure_script_writes_data_and_png(path, tmp_path, capsys):
             with Image.open(p) as im:  # provenance in the PNG's text chunks
                 im.load()
                 meta = json.loads(im.text["provenance"])
-            assert meta["parameters"] == {"figure": p.stem, "quick": True} and meta["version"]
+            assert meta["parameters"] == {
+                "figure": p.stem,
+                "quick": True,
+                "format": "png",
+                "dpi": 150.0,
+            }
+            assert meta["version"] and meta["used"]["modes"] == 40
         else:
             with open(p, newline="") as fh:
                 rows = list(csv.reader(fh))
@@ -88,3 +94,18 @@ def test_bench_laws_script_runs(capsys):
     assert {r["law"] for r in rows} >= {"kawazoe-1997-nonlinear", "series"}
     assert all(r["dcor"] <= 1e-5 for r in rows)
     assert "CVODE" in capsys.readouterr().out
+
+
+def test_tour_runs_as_a_script(tmp_path, capsys, monkeypatch):
+    """scripts/tour.py (jupytext percent cells) runs top to bottom as a plain script."""
+    import runpy
+
+    path = SCRIPTS / "tour.py"
+    assert path.read_text().count("# %%") >= 10  # cells a notebook opens
+    monkeypatch.setattr("sys.argv", [str(path), "--quick", "--out", str(tmp_path)])
+    runpy.run_path(str(path), run_name="__main__")
+    out = capsys.readouterr().out
+    assert out.startswith("ImpactResult(cor=0.37657") and "RefinementStudy(" in out
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"force.png", "sweep.png", "refine.png", "impact_vtk"} <= names
+    assert (tmp_path / "impact_vtk" / "impact.pvd").is_file()

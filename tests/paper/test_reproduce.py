@@ -51,7 +51,12 @@ def test_every_output_carries_the_provenance(quick_run):
     params = meta["parameters"]
     assert meta["version"] and meta["created_utc"] and params["quick"] is True
     assert params["out"] == str(out) and params["report"] == str(report)
-    assert params["solver"].startswith("exact") and params["separation"] == "displacement"
+    # What the figures used, not what was asked (80 modes asked, a 20-element mesh has 40).
+    used = meta["used"]
+    assert used["solver"] == "exact" and used["separation"] == "displacement"
+    assert used["modes"] == 40 and used["elements"] == 20 and used["rtol"] is None
+    assert used["zeta"] == pytest.approx(0.0592, abs=5e-5)  # clamped COR 0.83, eq 4
+    assert used["kcb_n_m_at_20_30_40_m_s"] == pytest.approx([2.74e4, 5.0e4, 8.33e4])  # §2.1.1
     for spec in FIGURES.values():
         with Image.open(out / f"{spec.name}.png") as im:
             im.load()
@@ -83,14 +88,44 @@ def test_report_has_a_verdict_row_per_claim(quick_run):
         assert any(r.startswith(f"| {section}") for r in claims), section
 
 
-def test_reproduce_refuses_existing_outputs_before_computing(quick_run, capsys):
+def test_reproduce_refuses_a_file_it_did_not_write_before_computing(quick_run, capsys):
     _, out, report = quick_run
+    text = report.read_text()
+    user = report.with_name("USER.md")
+    user.write_text("# my notes\n")
     t0 = time.perf_counter()
-    code = main(["reproduce", "--out", str(out), "--report", str(report), "--quick"])
+    code = main(["reproduce", "--out", str(out), "--report", str(user), "--quick"])
     assert code == 2
     assert time.perf_counter() - t0 < 2.0  # refused up front, not after the work
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "already exists" in err and "--overwrite" in err
+    assert len(err.splitlines()) == 1 and "not a file fem-racket reproduce wrote" in err
+    assert "--overwrite" in err and user.read_text() == "# my notes\n"
+    assert report.read_text() == text
+
+
+def test_reproduce_replaces_its_own_files_but_never_a_users(tmp_path):
+    # A fresh clone holds the committed figures: a rerun replaces them without --overwrite
+    # (recognised by their provenance), but a file it did not write needs --overwrite.
+    from PIL import Image
+
+    from fem_racket.paper.reproduce import reproduce
+    from fem_racket.validation import InputError
+
+    out = tmp_path / "figs"
+    first = reproduce(out, quick=True, figures=["fig04"])
+    png = out / "fig04_frame_modes.png"
+    committed = png.read_bytes()
+    again = reproduce(out, quick=True, figures=["fig04"])
+    assert [p.name for p in again.files] == [p.name for p in first.files]
+    # An unchanged image is left as it is (no difference for version control).
+    assert png.read_bytes() == committed
+    Image.new("RGB", (8, 8)).save(png)  # a user's image, without our provenance
+    before = png.read_bytes()
+    with pytest.raises(InputError, match="not a file fem-racket reproduce wrote"):
+        reproduce(out, quick=True, figures=["fig04"])
+    assert png.read_bytes() == before
+    reproduce(out, quick=True, figures=["fig04"], overwrite=True)
+    assert png.read_bytes() != before
 
 
 def test_committed_report_covers_every_figure():
@@ -99,6 +134,8 @@ def test_committed_report_covers_every_figure():
     assert "fem-racket reproduce" in text
     for spec in FIGURES.values():
         assert f"output/paper/{spec.name}.png" in text
+        # committed beside it, so the report shows its figures right after git clone
+        assert (ROOT / "output" / "paper" / f"{spec.name}.png").is_file()
     assert "Quick run" not in text
 
 
@@ -108,3 +145,11 @@ def test_full_reproduction_matches_the_committed_verdicts(tmp_path):
     report = tmp_path / "REPRODUCTION.md"
     assert main(["reproduce", "--out", str(tmp_path / "paper"), "--report", str(report)]) == 0
     assert verdicts(report.read_text()) == verdicts((ROOT / "REPRODUCTION.md").read_text())
+
+
+def test_rerun_leaves_an_unchanged_report_as_it_is(quick_run):
+    """The committed report is not rewritten when only its provenance would change."""
+    _, out, report = quick_run
+    before = report.read_text()
+    assert main(["reproduce", "--out", str(out), "--report", str(report), "--quick"]) == 0
+    assert report.read_text() == before

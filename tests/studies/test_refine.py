@@ -137,7 +137,7 @@ def test_convergence_script_quick(tmp_path):
     spec = importlib.util.spec_from_file_location("convergence", ROOT / "scripts/convergence.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
-    out = mod.main(["--quick", "--out-dir", str(tmp_path)])
+    out = mod.main(["--quick", "--out", str(tmp_path)])
     assert (tmp_path / "convergence.csv").is_file() and (tmp_path / "convergence.png").is_file()
     # 10 -> 20 elements is nearly asymptotic: orders 3.8-4.0 (measured on both families).
     assert out["studies"]["uniform"].observed_order == pytest.approx([4.0] * 4, abs=0.3)
@@ -150,7 +150,7 @@ def test_default_study_and_large_mesh_timing(tmp_path):
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     t0 = time.perf_counter()
-    out = mod.main(["--timing", "--out-dir", str(tmp_path)])
+    out = mod.main(["--timing", "--out", str(tmp_path)])
     assert time.perf_counter() - t0 < 60.0
     for s in out["studies"].values():
         assert s.observed_order == pytest.approx([4.0] * 4, abs=0.01)

@@ -1,7 +1,7 @@
-"""The figures of Kawazoe & Kanda (1997), each as data (tables with units, scalar values) + a PNG.
+"""The figures of Kawazoe & Kanda (1997), each as data (tables with units, scalars) + a figure.
 
 ``FIGURES`` maps a short key (``"fig08"``) to its :class:`FigureSpec`; :func:`make_figure`
-computes one and writes its CSV tables and PNG into an output folder.
+computes one and writes its CSV tables and its PNG (or SVG, PDF) into an output folder.
 """
 
 from __future__ import annotations
@@ -9,10 +9,12 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from fem_racket.io.figure_files import DEFAULT_DPI, check_dpi
 from fem_racket.paper.figures.base import (
     FigureData,
     FigureSpec,
     expected_files,
+    used_settings,
     write_csv,
     write_figure,
     write_figure_into,
@@ -29,6 +31,7 @@ __all__ = [
     "FigureSpec",
     "expected_files",
     "make_figure",
+    "used_settings",
     "write_csv",
     "write_figure",
     "write_figure_into",
@@ -50,9 +53,15 @@ FIGURES: dict[str, FigureSpec] = {
 
 
 def make_figure(
-    key: str, out_dir: str | os.PathLike, *, quick: bool = False, overwrite: bool = False
+    key: str,
+    out_dir: str | os.PathLike,
+    *,
+    quick: bool = False,
+    overwrite: bool = False,
+    fmt: str = "png",
+    dpi: float = DEFAULT_DPI,
 ) -> tuple[FigureData, list[Path]]:
-    """Compute figure ``key`` (a key of :data:`FIGURES`) and write its data and PNG.
+    """Compute figure ``key`` (a key of :data:`FIGURES`) and write its data and figure.
 
     Parameters
     ----------
@@ -64,6 +73,10 @@ def make_figure(
         Reduced resolution (coarser grids), for tests.
     overwrite : bool
         Replace existing files; otherwise an existing file is an error, raised before computing.
+    fmt : {"png", "svg", "pdf"}
+        Format of the figure.
+    dpi : float
+        Resolution [dots per inch] of a PNG (and of raster parts of an SVG or PDF).
 
     Returns
     -------
@@ -73,9 +86,12 @@ def make_figure(
     from fem_racket.validation import check_choice
 
     spec = FIGURES[check_choice("figure", key, FIGURES)]
-    check_targets(expected_files(spec, out_dir), overwrite=overwrite)
+    check_dpi(dpi)
+    check_targets(expected_files(spec, out_dir, fmt), overwrite=overwrite)
     from fem_racket.outputs import provenance
 
     data = spec.compute(quick)
-    meta = provenance({"figure": spec.name, "quick": quick})
-    return data, write_figure(spec, data, out_dir, overwrite=overwrite, meta=meta)
+    meta = provenance({"figure": spec.name, "quick": quick, "format": fmt, "dpi": dpi})
+    meta["used"] = used_settings()
+    files = write_figure(spec, data, out_dir, overwrite=overwrite, meta=meta, fmt=fmt, dpi=dpi)
+    return data, files

@@ -1,8 +1,9 @@
-"""What every paper figure produces: named tables (columns with units), scalar values, a PNG.
+"""What every paper figure produces: named tables (columns with units), scalar values, a figure.
 
 A figure is a :class:`FigureSpec`: a ``compute(quick)`` function returning :class:`FigureData`
 and the name of its plotting function in :mod:`fem_racket.paper.plots`. :func:`write_figure` writes
-``<name>_<table>.csv`` for each table and ``<name>.png`` into an output folder, atomically.
+``<name>_<table>.csv`` for each table and ``<name>.png`` (or ``.svg``, ``.pdf``) into an output
+folder, atomically, the figure with its provenance (:mod:`fem_racket.io.figure_files`).
 """
 
 from __future__ import annotations
@@ -16,13 +17,15 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.outputs import add_png_provenance, atomic_output, atomic_outputs, provenance
+from fem_racket.io.figure_files import DEFAULT_DPI, check_figure_format, same_image, save_figure
+from fem_racket.outputs import atomic_output, atomic_outputs, provenance
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 
 __all__ = [
     "FigureData",
     "FigureSpec",
     "expected_files",
+    "used_settings",
     "write_csv",
     "write_figure",
     "write_figure_into",
@@ -31,10 +34,27 @@ __all__ = [
 log = logging.getLogger(__name__)
 
 
-def expected_files(spec: FigureSpec, out_dir: str | os.PathLike) -> list[Path]:
-    """The files :func:`write_figure` will write for ``spec`` (CSV tables, then the PNG)."""
+def used_settings() -> dict[str, Any]:
+    """What the paper's figures use, unless their tables say otherwise (the zeta = 0 curves, the
+    rigid frame's EI1): the settings of the standard impact as run (solver, modes kept, m_B,
+    zeta, ...; :meth:`fem_racket.ImpactResult.settings`) and K_CB at the paper's three speeds.
+    Every figure's provenance records it under ``"used"``."""
+    from fem_racket.contact.linear import kcb_from_speed
+    from fem_racket.impact.simulate import simulate
+
+    used = simulate(position=0.75, speed=20.0, output_step=None).settings()
+    for key in ("position_x_over_l", "speed_m_s", "kcb_n_m", "ccb_n_s_m"):
+        del used[key]
+    used["kcb_n_m_at_20_30_40_m_s"] = [kcb_from_speed(v) for v in (20.0, 30.0, 40.0)]
+    return used
+
+
+def expected_files(spec: FigureSpec, out_dir: str | os.PathLike, fmt: str = "png") -> list[Path]:
+    """The files :func:`write_figure` will write for ``spec`` (CSV tables, then the figure in
+    format ``fmt``: png, svg or pdf)."""
     out = Path(out_dir)
-    return [out / f"{spec.name}_{t}.csv" for t in spec.tables] + [out / f"{spec.name}.png"]
+    figure = out / f"{spec.name}.{check_figure_format(fmt)}"
+    return [out / f"{spec.name}_{t}.csv" for t in spec.tables] + [figure]
 
 
 def write_csv(
@@ -72,15 +92,19 @@ def write_figure(
     *,
     overwrite: bool = False,
     meta: Mapping[str, Any] | None = None,
+    fmt: str = "png",
+    dpi: float = DEFAULT_DPI,
+    keep_unchanged: bool = False,
 ) -> list[Path]:
-    """Write the tables and the PNG of ``data`` into ``out_dir`` (all or none); returns the
-    paths written.
+    """Write the tables and the figure of ``data`` into ``out_dir``, all or none; returns the
+    paths.
 
-    The PNG carries the provenance ``meta`` (:func:`fem_racket.outputs.provenance`; by default
-    one naming the figure) in its text chunks."""
-    paths = expected_files(spec, out_dir)
+    The figure (``fmt``: png, svg or pdf; ``dpi`` [dots per inch]) carries the provenance
+    ``meta`` (:func:`fem_racket.outputs.provenance`; by default one naming the figure). With
+    ``keep_unchanged`` an existing PNG whose image would not change is left as it is."""
+    paths = expected_files(spec, out_dir, fmt)
     with atomic_outputs(paths, overwrite=overwrite) as temps:
-        write_figure_into(spec, data, temps, meta)
+        write_figure_into(spec, data, temps, paths, meta, dpi=dpi, keep_unchanged=keep_unchanged)
     log.info("wrote %s", ", ".join(p.name for p in paths))
     return paths
 
@@ -88,15 +112,32 @@ def write_figure(
 def write_figure_into(
     spec: FigureSpec,
     data: FigureData,
-    paths: list[Path],
+    temps: list[Path],
+    targets: list[Path],
     meta: Mapping[str, Any] | None = None,
+    *,
+    dpi: float = DEFAULT_DPI,
+    keep_unchanged: bool = False,
 ) -> None:
-    """Write the tables and the PNG of ``data`` to ``paths``, in the order of
-    :func:`expected_files` (temporaries of a caller's :func:`fem_racket.outputs.atomic_outputs`:
-    no checks here)."""
+    """Write the tables and the figure of ``data`` to ``temps``, the temporaries of a caller's
+    :func:`fem_racket.outputs.atomic_outputs` for ``targets`` (in the order of
+    :func:`expected_files`; no checks here). With ``keep_unchanged`` the figure's temporary is
+    removed when the existing target PNG holds the same image, so that it is left as it is."""
     from fem_racket.paper import plots
+    from fem_racket.paper.plots.common import pyplot
 
-    for table, path in zip(spec.tables, paths[:-1], strict=True):
+    for table, path in zip(spec.tables, temps[:-1], strict=True):
         _write_table(path, data.tables[table], f"{spec.name}_{table}.csv")
-    getattr(plots, spec.plot)(data, paths[-1])
-    add_png_provenance(paths[-1], meta or provenance({"figure": spec.name}))
+    fig = getattr(plots, spec.plot)(data)
+    try:
+        save_figure(
+            fig, temps[-1], meta or provenance({"figure": spec.name}), dpi=dpi, overwrite=True
+        )
+    finally:
+        pyplot().close(fig)
+    if (
+        keep_unchanged
+        and temps[-1].suffix == ".png"
+        and same_image(targets[-1], temps[-1].read_bytes())
+    ):
+        temps[-1].unlink()

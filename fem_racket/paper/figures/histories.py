@@ -2,7 +2,9 @@
 
 For the standard (EI1 = 146 N m^2) and the 'rigid' (EI1 = 9999 N m^2) frames: displacement and
 velocity of the ball, the impact point and both frame ends against time; the deformed frame at
-six instants of the contact; and panel (c), standard minus rigid deformation at the same instants.
+six instants of its own contact (0, 20, ..., 100 % of its contact time, the last its end of
+contact); and panel (c), standard minus rigid deformation at common times (0, 20, ..., 100 % of
+the shorter of the two contact times), where both frames are still in contact.
 
 The scalar values quantify the paper's remarks of section 3.1: the elastic part of the
 deformation (the deflection minus its rigid-body part, removed by M-orthogonal projection), the
@@ -25,6 +27,13 @@ __all__ = ["FIG_05", "FIG_06", "FIG_07", "impact_behaviour"]
 
 #: Fractions of the contact time at which deformed shapes are drawn.
 INSTANTS = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)
+
+
+def _instants(t: np.ndarray, tc: float, last: int) -> list[int]:
+    """Indices of the output times ``t`` nearest to the :data:`INSTANTS` fractions of ``tc``,
+    the fraction 1 at index ``last``."""
+    idx = [int(np.argmin(np.abs(t[:last] - f * tc))) for f in INSTANTS[:-1]]
+    return sorted({*idx, last})
 
 
 def _elastic(model: FrameModel, q: np.ndarray) -> np.ndarray:
@@ -61,8 +70,11 @@ def impact_behaviour(position: float, quick: bool = False) -> FigureData:
     results = {
         ei: simulate(m, position=position, speed=20.0, output_step=step) for ei, m in models.items()
     }
+    # Each frame at its own instants (the last its own end of contact); the difference (c) at
+    # common times within the shorter contact (both runs share the output grid k * step).
     tc = min(r.contact_time for r in results.values())
-    idx = sorted({int(np.argmin(np.abs(results[PAPER_EI1].t[:-1] - f * tc))) for f in INSTANTS})
+    shorter = min(results.values(), key=lambda r: r.contact_time)
+    common = _instants(shorter.t, tc, shorter.t.size - 2)
     hist: dict[str, list] = {}
     shapes: dict[str, list] = {}
     inst: dict[str, list] = {}
@@ -85,8 +97,10 @@ def impact_behaviour(position: float, quick: bool = False) -> FigureData:
         }
         for k, v in cols.items():
             hist.setdefault(k, []).append(v)
-        w = r.frame_field(x)[idx]
-        fields[ei] = w
+        deflection = r.frame_field(x)
+        idx = _instants(r.t, r.contact_time, r.t.size - 1)
+        w = deflection[idx]
+        fields[ei] = deflection[common]
         for j, i in enumerate(idx):
             for k, v in {
                 "EI1 [N m^2]": np.full(x.size, ei),
@@ -104,7 +118,7 @@ def impact_behaviour(position: float, quick: bool = False) -> FigureData:
                 inst.setdefault(k, []).append(v)
         tag = "standard" if ei == PAPER_EI1 else "rigid"
         values.update({f"{tag}_{k}": v for k, v in _summary(models[ei], r, x).items()})
-    t_idx = results[PAPER_EI1].t[idx]
+    t_idx = shorter.t[common]
     diff = fields[PAPER_EI1] - fields[RIGID_EI1]
     difference = {
         "time [s]": np.repeat(t_idx, x.size),

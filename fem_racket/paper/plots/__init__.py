@@ -1,10 +1,12 @@
 """Matplotlib figures of the paper's analyses, drawn from
 :class:`~fem_racket.paper.figures.data.FigureData`.
 
-Each function takes the figure's data and an output path (PNG) and only draws: the numbers come
-from :mod:`fem_racket.paper.figures`. matplotlib is imported inside the functions (Agg backend), so
-``import fem_racket`` stays light. Axes carry units; titles carry the paper's figure number. One
-module per group of figures, named as in :mod:`fem_racket.paper.figures`.
+Each function takes the figure's data, only draws (the numbers come from
+:mod:`fem_racket.paper.figures`) and returns the matplotlib figure, which
+:func:`fem_racket.paper.figures.base.write_figure` saves as PNG, SVG or PDF. matplotlib is
+imported inside the functions (Agg backend), so ``import fem_racket`` stays light. Axes carry
+units; titles carry the paper's figure number. One module per group of figures, named as in
+:mod:`fem_racket.paper.figures`.
 """
 
 from fem_racket.paper.plots.histories import impact_behaviour

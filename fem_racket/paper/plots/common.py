@@ -1,16 +1,14 @@
-"""Shared plotting helpers: matplotlib on the Agg backend, saving, position markers.
+"""Shared plotting helpers: matplotlib on the Agg backend, position markers.
 
-matplotlib is imported inside :func:`pyplot`, so ``import fem_racket`` stays light.
+matplotlib is imported inside :func:`pyplot`, so ``import fem_racket`` stays light. The plot
+functions return their figure; :func:`fem_racket.paper.figures.base.write_figure` saves it
+(PNG, SVG or PDF at any resolution, with the provenance:
+:func:`fem_racket.io.figure_files.save_figure`).
 """
 
 from __future__ import annotations
 
-import os
-
-__all__ = ["DPI", "mark_position", "pyplot", "save_figure"]
-
-#: Resolution of the saved PNGs [dots per inch].
-DPI = 110
+__all__ = ["mark_position", "pyplot"]
 
 
 def pyplot():
@@ -21,12 +19,6 @@ def pyplot():
     import matplotlib.pyplot as plt
 
     return plt
-
-
-def save_figure(fig, path: str | os.PathLike) -> None:
-    """Save ``fig`` as a PNG at ``path`` and close it."""
-    fig.savefig(path, dpi=DPI, format="png")
-    pyplot().close(fig)
 
 
 def mark_position(ax, x: float, label: str, color: str) -> None:

@@ -3,21 +3,22 @@
 
 from __future__ import annotations
 
-import os
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.paper.plots.common import pyplot, save_figure
+from fem_racket.paper.plots.common import pyplot
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from fem_racket.paper.figures.data import FigureData
 
 __all__ = ["ball_string", "frame_modes"]
 
 
-def ball_string(data: FigureData, path: str | os.PathLike) -> None:
+def ball_string(data: FigureData) -> Figure:
     """Figs 2-3 inputs: K_CB and C_CB, clamped COR and contact times against speed."""
     plt = pyplot()
     c, pts = data.tables["curve"], data.tables["paper_points"]
@@ -56,30 +57,34 @@ def ball_string(data: FigureData, path: str | os.PathLike) -> None:
     for a in ax:
         a.grid(alpha=0.3)
     fig.suptitle(data.title + f" (m_B = {DEFAULT_BALL_MASS} kg)")
-    save_figure(fig, path)
+    return fig
 
 
-def frame_modes(data: FigureData, path: str | os.PathLike) -> None:
+def frame_modes(data: FigureData) -> Figure:
     """Fig 4: modes 1-3 with their nodes."""
     plt = pyplot()
     s, n = data.tables["shapes"], data.tables["nodes"]
     fig, ax = plt.subplots(3, 1, figsize=(8, 7.5), sharex=True, layout="constrained")
     for k in range(3):
         a = ax[k]
-        a.plot(s["x/L [-]"], s[f"mode {k + 1} deflection [-]"], "C0-")
+        xc, yc = s["x/L [-]"], s[f"mode {k + 1} deflection [-]"]
+        a.plot(xc, yc, "C0-")
         a.axhline(0.0, color="k", lw=0.6)
         sel = n["mode [-]"] == k + 1
         xs = n["node x/L [-]"][sel]
         a.plot(xs, np.zeros_like(xs), "rv", ms=8, label="nodes")
-        for xn in xs:
+        slope = np.interp(xs, xc, np.gradient(yc, xc))
+        for xn, sl in zip(xs, slope, strict=True):
+            # The curve crosses zero rising (or falling): its upper-left (upper-right) is free.
             a.annotate(
                 f"{xn:.3f} L",
                 (xn, 0.0),
-                xytext=(0, 10),
+                xytext=(-5, 7) if sl > 0 else (5, 7),
                 textcoords="offset points",
-                ha="center",
+                ha="right" if sl > 0 else "left",
                 fontsize=8,
                 color="r",
+                bbox={"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
             )
         a.axvline(0.3, color="0.6", ls="--", lw=0.8)
         f = n["frequency [Hz]"][sel][0]
@@ -88,4 +93,4 @@ def frame_modes(data: FigureData, path: str | os.PathLike) -> None:
         a.grid(alpha=0.3)
     ax[-1].set_xlabel("position from the grip end x/L [-] (step at 0.3 L, dashed)")
     fig.suptitle(data.title)
-    save_figure(fig, path)
+    return fig

@@ -2,20 +2,21 @@
 
 from __future__ import annotations
 
-import os
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from fem_racket.paper.plots.common import pyplot, save_figure
+from fem_racket.paper.plots.common import pyplot
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from fem_racket.paper.figures.data import FigureData
 
 __all__ = ["modal_terms", "system_modes"]
 
 
-def modal_terms(data: FigureData, path: str | os.PathLike) -> None:
+def modal_terms(data: FigureData) -> Figure:
     """Fig 11: the terms of eq 13 against time."""
     plt = pyplot()
     c = data.tables["terms"]
@@ -40,10 +41,10 @@ def modal_terms(data: FigureData, path: str | os.PathLike) -> None:
         a.grid(alpha=0.3)
         a.legend(fontsize=8, ncol=2)
     fig.suptitle(data.title)
-    save_figure(fig, path)
+    return fig
 
 
-def system_modes(data: FigureData, path: str | os.PathLike) -> None:
+def system_modes(data: FigureData) -> Figure:
     """Fig 12: first system modes (frame deflection and ball) at two impact points."""
     plt = pyplot()
     md, sh = data.tables["modes"], data.tables["shapes"]
@@ -72,4 +73,4 @@ def system_modes(data: FigureData, path: str | os.PathLike) -> None:
                 a.legend(fontsize=8, loc="lower left")
         ax[-1, col].set_xlabel("x from the grip end [mm] (dotted: impact point)")
     fig.suptitle(data.title + f" (frame alone: {data.values['frame_f1_hz']:.1f} Hz)")
-    save_figure(fig, path)
+    return fig

@@ -2,18 +2,19 @@
 
 from __future__ import annotations
 
-import os
 from typing import TYPE_CHECKING
 
-from fem_racket.paper.plots.common import mark_position, pyplot, save_figure
+from fem_racket.paper.plots.common import mark_position, pyplot
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from fem_racket.paper.figures.data import FigureData
 
 __all__ = ["contact_time_position", "cor_position"]
 
 
-def cor_position(data: FigureData, path: str | os.PathLike) -> None:
+def cor_position(data: FigureData) -> Figure:
     """Fig 8: COR against impact position."""
     plt = pyplot()
     c, v = data.tables["cor"], data.values
@@ -46,10 +47,10 @@ def cor_position(data: FigureData, path: str | os.PathLike) -> None:
     )
     ax.grid(alpha=0.3)
     ax.legend(fontsize=9, loc="lower left")
-    save_figure(fig, path)
+    return fig
 
 
-def contact_time_position(data: FigureData, path: str | os.PathLike) -> None:
+def contact_time_position(data: FigureData) -> Figure:
     """Fig 9: contact time against impact position."""
     plt = pyplot()
     c, v = data.tables["contact_time"], data.values
@@ -84,4 +85,4 @@ def contact_time_position(data: FigureData, path: str | os.PathLike) -> None:
     )
     ax.grid(alpha=0.3)
     ax.legend(fontsize=9)
-    save_figure(fig, path)
+    return fig

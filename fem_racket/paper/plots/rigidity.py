@@ -2,21 +2,22 @@
 
 from __future__ import annotations
 
-import os
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from fem_racket.frame.segments import PAPER_EI1
-from fem_racket.paper.plots.common import pyplot, save_figure
+from fem_racket.paper.plots.common import pyplot
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from fem_racket.paper.figures.data import FigureData
 
 __all__ = ["cor_rigidity"]
 
 
-def cor_rigidity(data: FigureData, path: str | os.PathLike) -> None:
+def cor_rigidity(data: FigureData) -> Figure:
     """Fig 13: COR against EI1, a panel per impact point."""
     plt = pyplot()
     c = data.tables["cor"]
@@ -45,4 +46,4 @@ def cor_rigidity(data: FigureData, path: str | os.PathLike) -> None:
         a.grid(alpha=0.3, which="both")
         a.legend(fontsize=8)
     fig.suptitle(data.title)
-    save_figure(fig, path)
+    return fig

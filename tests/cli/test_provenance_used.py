@@ -1,0 +1,73 @@
+"""Every provenance records what the run used, as ``simulate --json`` prints it for that run.
+
+The options may ask for more than is used (``--modes 80`` on a 20-element mesh keeps its 40
+flexible modes) or leave values to be derived (zeta from the clamped COR 0.83, K_CB from the
+speed): the provenance's ``"used"`` must hold the values the run actually took.
+"""
+
+import json
+
+import pytest
+
+from fem_racket.cli import main
+
+OPTIONS = ["--speed", "30", "--position", "0.7", "--modes", "80"]
+
+
+def run_json(capsys, *argv):
+    assert main([str(a) for a in argv]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+@pytest.fixture(scope="module")
+def printed():
+    """``simulate --json`` for OPTIONS (a module fixture cannot use capsys: parse here)."""
+    import contextlib
+    import io
+
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        assert main(["simulate", "--json", *OPTIONS]) == 0
+    return json.loads(buf.getvalue())
+
+
+def used_keys(printed):
+    return {k: v for k, v in printed.items() if k not in ("cor", "contact_time_s",
+            "rebound_speed_m_s", "peak_force_n")}  # fmt: skip
+
+
+def test_simulate_json_prints_what_was_used(printed):
+    assert printed["modes"] == 40  # 80 asked, a 20-element mesh has 40 flexible modes
+    assert printed["zeta"] == pytest.approx(0.0592, abs=5e-5)  # clamped COR 0.83 (eqs 1-4)
+    assert printed["kcb_n_m"] == pytest.approx(5.0e4)  # the paper's K_CB at 30 m/s (§2.1.1)
+    assert printed["solver"] == "exact" and printed["rtol"] is None  # no tolerance in use
+
+
+def test_simulate_out_provenance_matches(printed, capsys, tmp_path):
+    out = tmp_path / "impact.json"
+    assert main(["simulate", "--out", str(out), *OPTIONS]) == 0
+    meta = json.loads(out.read_text())["provenance"]
+    assert meta["used"] == used_keys(printed)
+    assert meta["results"]["cor"] == printed["cor"]
+    assert meta["parameters"]["modes"] == 80  # the request is kept beside what was used
+
+
+def test_export_vtk_and_animate_provenance_match(printed, capsys, tmp_path):
+    assert main(["export-vtk", "--out", str(tmp_path / "vtk"), "--frames", "3", *OPTIONS]) == 0
+    meta = json.loads((tmp_path / "vtk" / "provenance.json").read_text())
+    assert meta["used"] == used_keys(printed)
+    gif = tmp_path / "a.gif"
+    argv = ["animate", "--out", str(gif), "--frames", "2", "--size", "160x160", *OPTIONS]
+    assert main(argv) == 0
+    meta = json.loads((tmp_path / "a.gif.json").read_text())
+    assert meta["used"] == used_keys(printed) and meta["results"]["cor"] == printed["cor"]
+
+
+def test_cvode_run_records_its_tolerances(capsys, tmp_path):
+    argv = ["--solver", "cvode", "--rtol", "1e-8", "--atol", "1e-10", *OPTIONS]
+    printed = run_json(capsys, "simulate", "--json", *argv)
+    assert printed["solver"] == "cvode" and printed["rtol"] == 1e-8 and printed["atol"] == 1e-10
+    out = tmp_path / "impact.csv"
+    assert main(["simulate", "--out", str(out), *argv]) == 0
+    meta = json.loads((tmp_path / "impact.csv.json").read_text())
+    assert meta["used"] == used_keys(printed)
