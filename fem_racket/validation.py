@@ -2,7 +2,9 @@
 
 Each check raises :class:`InputError` with a one-line message that names the parameter, the value
 it was given and the allowed range or form, e.g.
-``speed = -3.0 m/s is not allowed: must be a finite number > 0``.
+``speed = -3.0 m/s is not allowed: must be a finite number > 0``. Values are shown by
+:func:`show`: as a user would type them (no numpy reprs such as ``np.float64(26.5)``), long ones
+shortened, so every message stays one readable line.
 """
 
 from __future__ import annotations
@@ -14,15 +16,63 @@ __all__ = [
     "AccuracyError",
     "InputError",
     "check_choice",
+    "check_elements",
     "check_finite",
     "check_integer",
     "check_positive",
     "check_range",
+    "show",
+    "show_path",
 ]
+
+#: Longest value shown in a message [characters]; longer ones are shortened with "...".
+SHOW_LIMIT = 60
+#: The same for file and folder paths, which are read whole more often.
+PATH_LIMIT = 120
 
 
 class InputError(ValueError):
     """A user-supplied value is outside its allowed range or form."""
+
+
+def _plain(value: object) -> object:
+    """A numpy scalar or 0-d array as the Python number it holds; anything else unchanged."""
+    if getattr(value, "ndim", None) == 0 and hasattr(value, "item"):
+        return value.item()  # type: ignore[union-attr]
+    return value
+
+
+def show(value: object, limit: int = SHOW_LIMIT) -> str:
+    """``value`` as it appears in a message: numbers and strings as Python writes them
+    (``26.5``, ``'a.gif'``), numpy scalars and arrays as plain numbers and lists, and anything
+    longer than ``limit`` characters shortened (``[0.5, 0.5, ... (80 values)]``,
+    ``'aaaa...aaaa.json'``)."""
+    value = _plain(value)
+    if hasattr(value, "tolist") and getattr(value, "ndim", 0) >= 1:
+        value = value.tolist()  # type: ignore[union-attr]
+    if isinstance(value, (list, tuple)):
+        left, right = "()" if isinstance(value, tuple) else "[]"
+        items = [show(v, limit) for v in value]
+        text = left + ", ".join(items) + right
+        if len(text) <= limit:
+            return text
+        kept: list[str] = []
+        for item in items:
+            if len(", ".join([*kept, item])) > limit - 20:
+                break
+            kept.append(item)
+        return left + ", ".join([*kept, f"... ({len(items)} values)"]) + right
+    text = repr(value)
+    if len(text) <= limit:
+        return text
+    head = (limit - 3) * 2 // 3
+    return text[:head] + "..." + text[head + 3 - limit :]
+
+
+def show_path(path: object) -> str:
+    """A file or folder path as it appears in a message: quoted, shortened beyond
+    :data:`PATH_LIMIT` characters."""
+    return show(str(path), PATH_LIMIT)
 
 
 class AccuracyError(InputError):
@@ -35,7 +85,7 @@ class AccuracyError(InputError):
 
 def _fmt(name: str, value: object, unit: str) -> str:
     unit_txt = f" {unit}" if unit else ""
-    return f"{name} = {value!r}{unit_txt}"
+    return f"{name} = {show(value)}{unit_txt}"
 
 
 def check_finite(name: str, value: object, unit: str = "") -> float:
@@ -86,7 +136,9 @@ def check_choice(name: str, value: object, choices: Iterable[str]) -> str:
     """Return ``value`` if it is one of ``choices``, or raise listing them."""
     options = tuple(choices)
     if value not in options:
-        raise InputError(f"{name} = {value!r} is not allowed: must be one of {', '.join(options)}")
+        raise InputError(
+            f"{name} = {show(value)} is not allowed: must be one of {', '.join(options)}"
+        )
     return str(value)
 
 
@@ -106,5 +158,25 @@ def check_integer(name: str, value: object, minimum: int = 1, maximum: int | Non
         or value < minimum
         or (maximum is not None and value > maximum)
     ):
-        raise InputError(f"{name} = {value!r} is not allowed: must be {allowed}")
+        raise InputError(f"{name} = {show(value)} is not allowed: must be {allowed}")
     return int(value)
+
+
+def check_elements(
+    value: object, minimum: int = 2, maximum: int | None = None, name: str = "elements"
+) -> int:
+    """Return a number of beam elements as an int, or raise unless it is an integer (a whole
+    float such as 20.0 counts) from ``minimum`` to ``maximum``, in the words of
+    :func:`check_integer` (every command's ``--elements``; the standard frame's two segments
+    need at least 2)."""
+    number = _plain(value)
+    whole = (
+        isinstance(number, (int, float))
+        and not isinstance(number, bool)
+        and math.isfinite(number)
+        and float(number).is_integer()
+    )
+    if not whole or number < minimum or (maximum is not None and number > maximum):
+        shown = int(number) if whole else value  # "0", not "0.0", for a count read as a float
+        return check_integer(name, shown, minimum, maximum)  # raises, in its words
+    return int(number)

@@ -1,10 +1,23 @@
 """Command-line interface ``fem-racket``: thin wrappers that parse, call the library, print.
 
 Each sub-command lives in its own module exposing ``register(subparsers)``; the parser sets
-``args.func(args) -> int``. Bad input prints one line to stderr and exits with code 2. When the
-reader of the output goes away (``fem-racket modes | head -1``) the command stops quietly with
-exit code 141 (128 + SIGPIPE, what a Unix tool killed by SIGPIPE returns), files it wrote
-already being complete.
+``args.func(args) -> int``. Whatever goes wrong ends in one line on stderr, never a traceback:
+
+======  ==========================================================================================
+exit    when
+======  ==========================================================================================
+0       done
+1       a fault during the run: an output could not be written (no space left, I/O error), or
+        standard output failed (``> /dev/full``); no partial output is left
+2       bad input: a value, a run file, a mesh file or a destination (checked before any work)
+130     interrupted by SIGINT (Ctrl-C); 143 by SIGTERM: the same cleanup (temporaries removed,
+        worker processes ended, a sweep's checkpoint kept: the line says how many cases it holds);
+        no output is moved into place after the signal
+141     the reader of standard output went away before everything was written
+        (``fem-racket modes | head -1``); files already written are complete
+======  ==========================================================================================
+
+Standard output closed (``fem-racket modes >&-``) is refused before any work (exit 2).
 """
 
 from __future__ import annotations
@@ -17,8 +30,17 @@ from collections.abc import Sequence
 
 from fem_racket.cli import calibrate, config, modes, refine, reproduce, simulate, sweep, vtk
 from fem_racket.cli.common import OneLineErrorParser, apply_config
+from fem_racket.cli.signals import (
+    GuardedStdout,
+    StdoutFault,
+    Terminated,
+    received,
+    signal_handlers,
+    silence_stdout,
+)
+from fem_racket.outputs import OutputError
 from fem_racket.studies.executors import pin_blas_threads
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 from fem_racket.version import __version__
 
 __all__ = ["main"]
@@ -50,24 +72,47 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-#: Exit code when stdout's reader has gone (128 + SIGPIPE, as the shell reports a killed tool).
-EXIT_BROKEN_PIPE = 141
+#: Exit codes besides 0 (see the module docstring).
+EXIT_FAULT, EXIT_INPUT, EXIT_SIGINT, EXIT_BROKEN_PIPE, EXIT_SIGTERM = 1, 2, 130, 141, 143
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the CLI; returns the exit code (0 ok, 2 bad input, 141 output pipe closed)."""
+    """Run the CLI; returns the exit code (see the module docstring)."""
     pin_blas_threads()
+    if sys.stdout is None:  # started with stdout closed: Python has no stream for it
+        print(
+            "fem-racket: error: standard output is closed: give it a file, a pipe or /dev/null "
+            "(> /dev/null)",
+            file=sys.stderr,
+        )
+        return EXIT_INPUT
+    stream = sys.stdout
+    sys.stdout = GuardedStdout(stream)
     try:
-        code = _run(argv)
-        sys.stdout.flush()  # a closed pipe shows here, not at interpreter exit
-        return code
-    except BrokenPipeError:
-        try:  # later writes (the interpreter's final flush) go nowhere
-            devnull = os.open(os.devnull, os.O_WRONLY)
-            os.dup2(devnull, sys.stdout.fileno())
-        except (OSError, ValueError):  # stdout without a file descriptor (e.g. captured)
-            pass
-        return EXIT_BROKEN_PIPE
+        with signal_handlers():
+            code = _run(argv)
+            sys.stdout.flush()  # a closed pipe or a full device shows here, not at exit
+            if received and code not in (EXIT_SIGINT, EXIT_SIGTERM):  # Python dropped it
+                return _interrupted(received[0](), "fem-racket")
+            return code
+    except StdoutFault as fault:
+        sys.stdout = stream
+        silence_stdout()
+        if isinstance(fault.__cause__, BrokenPipeError):
+            return EXIT_BROKEN_PIPE
+        why = getattr(fault.__cause__, "strerror", None) or str(fault.__cause__)
+        print(f"fem-racket: error: cannot write to standard output: {why}", file=sys.stderr)
+        return EXIT_FAULT
+    finally:
+        sys.stdout = stream
+
+
+def _describe(exc: OSError) -> str:
+    """One line for an ``OSError``: the path it concerns and the reason."""
+    why = exc.strerror or str(exc) or type(exc).__name__
+    if exc.filename is not None and not isinstance(exc, OutputError):
+        return f"{show(os.fsdecode(exc.filename))}: {why}"
+    return why
 
 
 def _run(argv: Sequence[str] | None) -> int:
@@ -76,12 +121,44 @@ def _run(argv: Sequence[str] | None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help
         return int(exc.code or 0)
-    logging.basicConfig(
-        level=logging.INFO if args.verbose else logging.WARNING, format="%(message)s"
-    )
+    handler = logging.StreamHandler()
+    handler.setFormatter(_NoteFormatter(f"fem-racket {args.command}"))
+    logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING, handlers=[handler])
+    prog = f"fem-racket {args.command}"
     try:
         args = apply_config(parser, argv, args)
         return int(args.func(args))
     except InputError as exc:
-        print(f"fem-racket {args.command}: error: {exc}", file=sys.stderr)
-        return 2
+        _say(exc, f"{prog}: error: {exc}")
+        return EXIT_INPUT
+    except OSError as exc:
+        _say(exc, f"{prog}: error: {_describe(exc)}")
+        return EXIT_FAULT
+    except KeyboardInterrupt as exc:
+        return _interrupted(exc, prog)
+
+
+def _interrupted(exc: KeyboardInterrupt, prog: str) -> int:
+    """Say so in one line; the exit code of the signal."""
+    name = "SIGTERM" if isinstance(exc, Terminated) else "SIGINT"
+    _say(exc, f"{prog}: interrupted by {name}; no partial output is left")
+    return EXIT_SIGTERM if isinstance(exc, Terminated) else EXIT_SIGINT
+
+
+class _NoteFormatter(logging.Formatter):
+    """Log records as the commands' notes: ``fem-racket CMD: note: ...`` for warnings."""
+
+    def __init__(self, prog: str) -> None:
+        super().__init__()
+        self.prog = prog
+
+    def format(self, record: logging.LogRecord) -> str:
+        """One line: the command, ``note:`` for a warning, the message."""
+        kind = "note: " if record.levelno >= logging.WARNING else ""
+        return f"{self.prog}: {kind}{record.getMessage()}"
+
+
+def _say(exc: BaseException, line: str) -> None:
+    """Print ``line`` and the exception's notes (e.g. a sweep's checkpoint) as one line."""
+    notes = [" ".join(n.split()) for n in getattr(exc, "__notes__", ())]
+    print("; ".join([line, *notes]), file=sys.stderr)

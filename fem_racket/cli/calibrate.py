@@ -17,10 +17,9 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
     significant,
-    write_json,
-    write_text,
 )
-from fem_racket.outputs import check_output_path, provenance
+from fem_racket.cli.output import json_ready
+from fem_racket.outputs import Target, atomic_outputs, check_targets, provenance
 from fem_racket.studies.calibrate import (
     FAMILIES,
     TARGET_SETS,
@@ -62,10 +61,9 @@ def run(args: argparse.Namespace) -> int:
     """Fit, print the table, write the files."""
     stem = f"{args.family}-{args.targets}"
     files = []
-    if args.out:
+    if args.out:  # the three files are checked now and written as one set
         files = [Path(args.out) / f"{stem}{s}" for s in (".toml", ".json", ".png")]
-        for f in files:
-            check_output_path(f, overwrite=args.overwrite)
+        check_targets([Target(f) for f in files], overwrite=args.overwrite)
     cal = calibrate(args.family, args.targets, ball_mass=args.ball_mass)
     summary = {
         "family": cal.family,
@@ -75,20 +73,20 @@ def run(args: argparse.Namespace) -> int:
         "fit": cal.table(),
     }
     if args.out:
-        write_text(files[0], run_file_table(cal.law), overwrite=args.overwrite)
-        meta = provenance(run_parameters(args))
-        write_json(files[1], {"provenance": meta, **summary}, overwrite=args.overwrite)
-        speeds = sorted({t.condition for t in cal.targets if t.quantity != "static_deflection"})
+        import json
+
         from fem_racket.io.law_plots import plot_law_loops
 
-        plot_law_loops(
-            clamped_histories(cal.law, speeds, args.ball_mass),
-            speeds,
-            files[2],
-            title=f"{cal.family} fitted to {cal.target_set} (rigid support)",
-            meta=meta,
-            overwrite=args.overwrite,
-        )
+        meta = provenance(run_parameters(args))
+        speeds = sorted({t.condition for t in cal.targets if t.quantity != "static_deflection"})
+        histories = clamped_histories(cal.law, speeds, args.ball_mass)
+        targets = [Target(f) for f in files]
+        with atomic_outputs(targets, overwrite=args.overwrite) as (toml, js, png):
+            toml.write_text(run_file_table(cal.law), encoding="utf-8")
+            data = json_ready({"provenance": meta, **summary})
+            js.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+            title = f"{cal.family} fitted to {cal.target_set} (rigid support)"
+            plot_law_loops(histories, speeds, png, title=title, meta=meta, overwrite=True)
     if args.json:
         print_json(summary)
         return 0

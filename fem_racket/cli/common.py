@@ -39,7 +39,7 @@ from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.mesh_files import read_mesh
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "OneLineErrorParser",
@@ -268,7 +268,9 @@ def add_output_step_option(group: argparse._ArgumentGroup) -> None:
 def check_output_step(value: float) -> float:
     """``value`` if it is a finite number > 0, else :class:`InputError`."""
     if not 0 < value < math.inf:  # also catches NaN
-        raise InputError(f"output_step = {value!r} s is not allowed: must be a finite number > 0")
+        raise InputError(
+            f"output_step = {show(value)} s is not allowed: must be a finite number > 0"
+        )
     return value
 
 

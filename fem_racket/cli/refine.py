@@ -20,7 +20,7 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.figure_files import check_dpi, figure_format
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 FAMILY_CHOICES = (*FAMILIES, "both")
 
@@ -165,20 +165,22 @@ def _plot_path(args: argparse.Namespace) -> Path:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study, print the table (or JSON), write the CSV and the plot."""
-    from fem_racket.io.refine_files import csv_files, format_study, plot_studies, write_csv
-    from fem_racket.outputs import check_output_path
+    from fem_racket.io.refine_files import format_study, refine_targets, write_outputs
+    from fem_racket.outputs import check_targets
     from fem_racket.studies.refine import refinement_study
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
     if not args.grading >= 1.0 or args.grading == float("inf"):  # also NaN
-        raise InputError(f"grading = {args.grading!r} is not allowed: must be a finite number >= 1")
+        raise InputError(
+            f"grading = {show(args.grading)} is not allowed: must be a finite number >= 1"
+        )
     frame = frame_from_args(args, exclusive=("ei1", "ei2"))
     plot = _plot_path(args)
     check_dpi(args.dpi)
     outputs = [] if args.no_files else [Path(args.csv), plot]
-    for path in [*csv_files(args.csv), plot] if outputs else []:
-        check_output_path(path, overwrite=args.overwrite)  # fail before the work, not after it
+    if outputs:  # fail before the work, not after it
+        check_targets(refine_targets(args.csv, plot), overwrite=args.overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
     impact = {
         "ball_mass": args.ball_mass,
@@ -203,9 +205,13 @@ def run(args: argparse.Namespace) -> int:
         for fam in families
     }
     if outputs:
-        params = run_parameters(args)
-        write_csv(studies, outputs[0], overwrite=args.overwrite, parameters=params)
-        plot_studies(studies, outputs[1], overwrite=args.overwrite, parameters=params, dpi=args.dpi)
+        write_outputs(
+            studies,
+            *outputs,
+            overwrite=args.overwrite,
+            parameters=run_parameters(args),
+            dpi=args.dpi,
+        )
     first, *rest = studies.values()
     if args.json:
         data = first.to_dict()

@@ -23,7 +23,7 @@ from typing import Any
 
 from fem_racket.io.config import RunConfig, load_config
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["add_config_option", "apply_config", "config_values", "file_options"]
 
@@ -130,14 +130,16 @@ def _coerce(action: argparse.Action, value: Any, where: str) -> Any:
     opt = action.option_strings[-1]
     if action.nargs == 0:  # flags: store_true / store_false / store_const
         if not isinstance(value, bool):
-            raise InputError(f"{where} = {value!r} is not allowed: must be true or false ({opt})")
+            raise InputError(
+                f"{where} = {show(value)} is not allowed: must be true or false ({opt})"
+            )
         if isinstance(action.const, bool):
             return action.const if value else not action.const
         return action.const if value else action.default
     many = action.nargs in ("+", "*") or isinstance(action.nargs, int)
     if many:
         if not isinstance(value, list):
-            raise InputError(f"{where} = {value!r} is not allowed: must be an array ({opt})")
+            raise InputError(f"{where} = {show(value)} is not allowed: must be an array ({opt})")
         items = [_coerce_one(action, v, where) for v in value]
         # A list option whose type takes comma lists ("5,10") gives a list per item: flatten.
         return [x for v in items for x in (v if isinstance(v, list) else [v])]
@@ -147,17 +149,19 @@ def _coerce(action: argparse.Action, value: Any, where: str) -> Any:
 def _coerce_one(action: argparse.Action, value: Any, where: str) -> Any:
     opt = action.option_strings[-1]
     if isinstance(value, (dict, list)) or isinstance(value, bool):
-        raise InputError(f"{where} = {value!r} is not allowed: must be a value like {opt} takes")
+        raise InputError(
+            f"{where} = {show(value)} is not allowed: must be a value like {opt} takes"
+        )
     convert = action.type or str
     try:
         if convert is int and isinstance(value, float):
             raise ValueError("must be an integer")
         out = convert(value if isinstance(value, str) or convert in (int, float) else str(value))
     except (TypeError, ValueError, argparse.ArgumentTypeError) as exc:
-        raise InputError(f"{where} = {value!r} is not allowed: {exc} ({opt})") from None
+        raise InputError(f"{where} = {show(value)} is not allowed: {exc} ({opt})") from None
     if action.choices is not None and out not in action.choices:
         options = ", ".join(map(str, action.choices))
-        raise InputError(f"{where} = {value!r} is not allowed: must be one of {options}")
+        raise InputError(f"{where} = {show(value)} is not allowed: must be one of {options}")
     return out
 
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import json
 from pathlib import Path
 from typing import Any
 
@@ -35,12 +36,13 @@ from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.impact.simulate import simulate
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
-    atomic_output,
+    Target,
+    atomic_outputs,
     check_output_path,
+    check_targets,
     sidecar_path,
-    write_sidecar,
 )
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show_path
 
 #: Suffixes --out takes (case-insensitive) and what each writes.
 OUT_SUFFIXES = (".json", ".csv")
@@ -62,18 +64,15 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _check_out(args: argparse.Namespace) -> list[Path]:
-    """The files --out will write, checked before the run."""
+    """The files --out will write (a CSV's sidecar too), checked before the run."""
     path = Path(args.out)
-    suffix = path.suffix.lower()
-    if path.is_dir():
-        check_output_path(path)  # says it is a folder, not a file
-    if suffix not in OUT_SUFFIXES:
+    if path.suffix.lower() not in OUT_SUFFIXES:
+        check_output_path(path, overwrite=True)  # a folder or a bad path says so first
         raise InputError(
-            f"output = '{path}' is not allowed: must end in {' or '.join(OUT_SUFFIXES)}"
+            f"out = {show_path(path)} is not allowed: must end in {' or '.join(OUT_SUFFIXES)}"
         )
-    files = [path, sidecar_path(path)] if suffix == ".csv" else [path]
-    for f in files:
-        check_output_path(f, overwrite=args.overwrite)
+    files = [path, sidecar_path(path)] if path.suffix.lower() == ".csv" else [path]
+    check_targets([Target(f) for f in files], overwrite=args.overwrite)
     return files
 
 
@@ -88,21 +87,23 @@ def _histories(result) -> dict[str, Any]:
     }
 
 
-def _write(args: argparse.Namespace, result, summary: dict[str, Any]) -> None:
+def _write(args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path]) -> None:
+    """Write --out: JSON, or CSV and its sidecar as one set (both or neither)."""
     history = _histories(result)
     meta = impact_provenance(result, run_parameters(args))
-    if Path(args.out).suffix.lower() == ".json":
+    if len(files) == 1:
         data = {"provenance": meta, "summary": summary}
         history = {k: v.tolist() for k, v in history.items()}
         write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
         return
-    with atomic_output(args.out, overwrite=args.overwrite) as tmp:
+    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
         with open(tmp, "w", newline="", encoding="utf-8") as f:
             w = csv.writer(f)
             w.writerow(history)
             for row in zip(*history.values(), strict=True):
                 w.writerow([repr(float(v)) for v in row])
-    write_sidecar(args.out, {**meta, "summary": summary}, overwrite=args.overwrite)
+        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
+        side.write_text(text + "\n", encoding="utf-8")
 
 
 def _law_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
@@ -130,7 +131,7 @@ def run(args: argparse.Namespace) -> int:
     note_modes(args, model)
     summary = result.summary()
     if args.out:
-        _write(args, result, summary)
+        _write(args, result, summary, files)
     if args.json:
         print_json(summary)
         return 0

@@ -26,7 +26,7 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.studies.grid import PARAMETERS, as_values
 from fem_racket.studies.sweep import sweep
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 #: Where the result goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
@@ -49,7 +49,7 @@ def _grid_value(where: str, value: Any) -> Any:
     name = where.rpartition(".")[2]
     if isinstance(value, bool) or not isinstance(value, (int, float, str, list)):
         raise InputError(
-            f"{where} = {value!r} is not allowed: must be a number, an array of numbers or a "
+            f"{where} = {show(value)} is not allowed: must be a number, an array of numbers or a "
             "string like '0.55:0.95:9'"
         )
     try:

@@ -54,7 +54,7 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
         "--scale",
         type=float,
         default=scale,
-        help=f"deflection exaggeration of the geometry [-], > 0 (default {scale:g})",
+        help=f"deflection exaggeration of the geometry [-], in (0, 1e6] (default {scale:g})",
     )
     g.add_argument(
         "--field",
@@ -96,7 +96,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     _add_common(a, scale=10.0, frames=100)
     a.add_argument(
-        "--fps", type=float, default=25.0, help="frames per second [1/s], (0, 100] (default 25)"
+        "--fps",
+        type=float,
+        default=25.0,
+        help="frames per second [1/s], in [0.01, 100] (default 25)",
     )
     a.add_argument(
         "--size",
@@ -120,12 +123,11 @@ def _simulate(args: argparse.Namespace):
 def _check_early(args: argparse.Namespace) -> None:
     """Reject bad drawing options before the simulation runs."""
     from fem_racket.io.vtk import PROVENANCE_NAME
-    from fem_racket.io.vtk_series import field_name
-    from fem_racket.outputs import check_output_folder, check_output_path
-    from fem_racket.validation import check_positive
+    from fem_racket.io.vtk_series import check_scale, field_name
+    from fem_racket.outputs import check_output_folder, check_targets
 
     field_name(args.field)
-    check_positive("scale", args.scale)
+    check_scale(args.scale)
     if args.frames is not None and args.frames < 2:
         raise InputError(f"frames = {args.frames} is not allowed: must be an integer >= 2")
     if args.subdivide < 1:
@@ -133,19 +135,12 @@ def _check_early(args: argparse.Namespace) -> None:
     if args.command == "export-vtk":
         check_output_folder(args.out, overwrite=args.overwrite, marker=PROVENANCE_NAME)
         return
-    from fem_racket.io.animate import ANIMATION_SUFFIXES, check_size
-    from fem_racket.outputs import sidecar_path
+    from fem_racket.io.animate import animation_targets, check_fps, check_size
 
-    if args.out.suffix.lower() not in ANIMATION_SUFFIXES:
-        raise InputError(
-            f"output = '{args.out}' is not allowed: must end in {' or '.join(ANIMATION_SUFFIXES)}"
-        )
-    if not 0 < args.fps <= 100:  # also catches NaN
-        raise InputError(f"fps = {args.fps!r} frames/s is not allowed: must be in (0, 100]")
+    targets = animation_targets(args.out)
+    check_fps(args.fps)
     check_size(args.size)
-    path = args.out.with_suffix(args.out.suffix.lower())
-    for p in (path, sidecar_path(path)):
-        check_output_path(p, overwrite=args.overwrite)
+    check_targets(targets, overwrite=args.overwrite)
 
 
 def run_export(args: argparse.Namespace) -> int:

@@ -27,7 +27,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw, power_contact_time
-from fem_racket.validation import InputError, check_positive, check_range
+from fem_racket.validation import InputError, check_positive, check_range, show
 
 __all__ = ["Hysteretic"]
 
@@ -59,7 +59,7 @@ class Hysteretic(ContactLaw):
             check_range("hyst_exponent", self.exponent, 1.0, 20.0)
             if self.k2 < self.k1:
                 raise InputError(
-                    f"k2 = {self.k2!r} N/m^n is not allowed: must be >= k1 = {self.k1!r}"
+                    f"k2 = {show(self.k2)} N/m^n is not allowed: must be >= k1 = {show(self.k1)}"
                 )
 
     @classmethod

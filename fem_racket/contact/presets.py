@@ -26,7 +26,7 @@ from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.series import SeriesBallString
-from fem_racket.validation import InputError, check_choice, check_finite
+from fem_racket.validation import InputError, check_choice, check_finite, show
 
 __all__ = ["FAMILY_PARAMETERS", "FILE_KEYS", "LAW_NAMES", "PRESETS", "get_law", "law_parameters"]
 
@@ -93,7 +93,7 @@ def get_law(name: str, **params: Any) -> ContactLaw | None:
     if name == "linear" or name in PRESETS:
         if given:
             raise InputError(
-                f"law parameters {sorted(given)} are not allowed with law {name!r}: "
+                f"law parameters {sorted(given)} are not allowed with law {show(name)}: "
                 f"{'it is built from kcb and zeta' if name == 'linear' else 'it is a preset'}"
             )
         return None if name == "linear" else PRESETS[name]
@@ -101,7 +101,7 @@ def get_law(name: str, **params: Any) -> ContactLaw | None:
     for key in given:
         if key not in spec:
             raise InputError(
-                f"law parameter {key} is not allowed with law {name!r}: must be one of "
+                f"law parameter {key} is not allowed with law {show(name)}: must be one of "
                 f"{sorted(spec)}"
             )
     values = {

@@ -21,7 +21,7 @@ from skfem.helpers import dd, ddot
 
 from fem_racket.display import short_repr
 from fem_racket.frame.mesh import FrameMesh
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["FrameFE", "assemble", "bending", "mass"]
 
@@ -79,7 +79,7 @@ class FrameFE:
         order 0 gives deflection [m], 1 slope [rad], 2 curvature [1/m].
         """
         if order not in (0, 1, 2):
-            raise InputError(f"order = {order!r} is not allowed: must be 0, 1 or 2")
+            raise InputError(f"order = {show(order)} is not allowed: must be 0, 1 or 2")
         x = np.atleast_1d(np.asarray(x, dtype=float))
         p = self.mesh.points
         tol = 1e-12 * p[-1]

@@ -14,7 +14,7 @@ import numpy as np
 
 from fem_racket.display import number, short_repr, span
 from fem_racket.frame.segments import EI_RANGE, Frame, check_ei_factor
-from fem_racket.validation import InputError, check_integer
+from fem_racket.validation import InputError, check_integer, show
 
 __all__ = [
     "MAX_ELEMENTS",
@@ -199,7 +199,7 @@ def graded_mesh(
 
     g = check_finite("grading", grading)
     if g < 1.0:
-        raise InputError(f"grading = {grading!r} is not allowed: must be a finite number >= 1")
+        raise InputError(f"grading = {show(grading)} is not allowed: must be a finite number >= 1")
     c = (g - 1.0) / (g + 1.0)
 
     def spacing(n: int) -> np.ndarray:
@@ -215,7 +215,7 @@ def insert_nodes(mesh: FrameMesh, positions: Sequence[float]) -> FrameMesh:
     length = mesh.length
     for s in positions:
         if not 0.0 <= float(s) <= 1.0:
-            raise InputError(f"extra point = {s!r} x/L is not allowed: must lie in [0, 1]")
+            raise InputError(f"extra point = {show(s)} x/L is not allowed: must lie in [0, 1]")
         x = float(s) * length
         if np.min(np.abs(points - x)) <= 1e-12 * length:
             continue

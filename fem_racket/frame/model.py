@@ -15,7 +15,7 @@ from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.modal import FreeModes, MassProperties, free_modes, mass_properties
 from fem_racket.frame.segments import Frame, standard_frame
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, show
 
 __all__ = ["DEFAULT_MODES", "FrameModel"]
 
@@ -55,7 +55,9 @@ class FrameModel:
         elif isinstance(frame, FrameMesh):
             mesh = frame
         else:
-            raise InputError(f"frame = {frame!r} is not allowed: must be a Frame or a FrameMesh")
+            raise InputError(
+                f"frame = {show(frame)} is not allowed: must be a Frame or a FrameMesh"
+            )
         return cls(assemble_closed_form(mesh))
 
     def __repr__(self) -> str:

@@ -12,7 +12,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from fem_racket.validation import InputError, check_positive, check_range
+from fem_racket.validation import InputError, check_positive, check_range, show
 
 __all__ = [
     "EI_RANGE",
@@ -89,7 +89,7 @@ class Frame:
             raise InputError("segments = () is not allowed: must hold at least one Segment")
         for seg in segments:
             if not isinstance(seg, Segment):
-                raise InputError(f"segments item {seg!r} is not allowed: must be a Segment")
+                raise InputError(f"segments item {show(seg)} is not allowed: must be a Segment")
         object.__setattr__(self, "segments", segments)
 
     @property
@@ -117,7 +117,7 @@ def check_stiffness(name: str, ei: float, rhoa: float) -> float:
     low, high = EI_RANGE[0] * rhoa, EI_RANGE[1] * rhoa
     if not low <= ei <= high:
         raise InputError(
-            f"{name} = {ei!r} N m^2 is not allowed with rhoA = {rhoa:g} kg/m: must lie in "
+            f"{name} = {show(ei)} N m^2 is not allowed with rhoA = {rhoa:g} kg/m: must lie in "
             f"[{low:.3g}, {high:.3g}] N m^2 (EI / rhoA in [{EI_RANGE[0]:g}, {EI_RANGE[1]:g}] "
             "m^4/s^2)"
         )
@@ -131,7 +131,7 @@ def check_ei_factor(ei_factor: float, ei_per_rhoa: Sequence[float] | np.ndarray)
     low, high = float(np.min(ei_per_rhoa)) * f, float(np.max(ei_per_rhoa)) * f
     if not (EI_RANGE[0] <= low and high <= EI_RANGE[1]):
         raise InputError(
-            f"ei_factor = {ei_factor!r} is not allowed: the scaled EI / rhoA ({low:.3g} to "
+            f"ei_factor = {show(ei_factor)} is not allowed: the scaled EI / rhoA ({low:.3g} to "
             f"{high:.3g} m^4/s^2) must lie in [{EI_RANGE[0]:g}, {EI_RANGE[1]:g}] m^4/s^2"
         )
     return f

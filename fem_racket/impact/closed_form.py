@@ -31,7 +31,7 @@ from fem_racket.impact.system import (
     no_separation,
     output_times,
 )
-from fem_racket.validation import AccuracyError, InputError, check_choice
+from fem_racket.validation import AccuracyError, InputError, check_choice, show
 
 __all__ = ["ImpactOutcome", "exact_outcome", "solve_exact"]
 
@@ -98,7 +98,7 @@ class _ModalClosedForm:
     def __init__(self, system: CoupledSystem, histories: bool = True) -> None:
         if system.basis != "modal":
             raise InputError(
-                f"basis = {system.basis!r} is not allowed with solver 'exact': must be 'modal'"
+                f"basis = {show(system.basis)} is not allowed with solver 'exact': must be 'modal'"
             )
         om = system.omega
         self.mb = system.ball_mass

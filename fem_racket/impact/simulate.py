@@ -28,7 +28,7 @@ from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.setup import Impact
 from fem_racket.impact.single import engine_impact
 from fem_racket.impact.system import SEPARATION_EVENTS, CoupledSystem, modal_system, physical_system
-from fem_racket.validation import InputError, check_choice, check_integer, check_positive
+from fem_racket.validation import InputError, check_choice, check_integer, check_positive, show
 
 __all__ = ["BASES", "ImpactResult", "build_system", "simulate"]
 
@@ -345,7 +345,7 @@ def _check_output_count(
     limit = f"at most {MAX_OUTPUT_TIMES:.0e} output times of output_step = {output_step!r} s"
     if t_max is not None:
         raise InputError(
-            f"t_max = {t_max!r} s is not allowed: {limit}, so t_max <= "
+            f"t_max = {show(t_max)} s is not allowed: {limit}, so t_max <= "
             f"{MAX_OUTPUT_TIMES * output_step:.3g} s (or a larger output_step)"
         )
     what = f"kcb = {kcb!r} N/m" if kcb is not None else f"ball_mass = {ball_mass!r} kg"
@@ -454,8 +454,8 @@ def simulate(
             solver = "general"
         if solver not in LAW_SOLVERS:
             raise InputError(
-                f"solver = {solver!r} is not allowed with contact law {law.name!r} or a moving "
-                f"racket: must be one of {LAW_SOLVERS}"
+                f"solver = {show(solver)} is not allowed with contact law {show(law.name)} or a "
+                f"moving racket: must be one of {LAW_SOLVERS}"
             )
         if t_max is not None:
             check_positive("t_max", t_max, "s")
@@ -486,7 +486,9 @@ def simulate(
     if modes is not None:
         check_integer("modes", modes)
     if solver == "exact" and basis != "modal":
-        raise InputError(f"basis = {basis!r} is not allowed with solver 'exact': must be 'modal'")
+        raise InputError(
+            f"basis = {show(basis)} is not allowed with solver 'exact': must be 'modal'"
+        )
     tolerance = check_tolerance(tolerance)
     model = frame_model(frame, elements)
     check_solver_settings(solver, basis, model.mesh.n_elements, rtol, atol)

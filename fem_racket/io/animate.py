@@ -9,11 +9,15 @@ settings. The camera is fixed over the whole animation and frames the motion of 
 
 Rendering uses VTK's EGL window when ``VTK_DEFAULT_OPENGL_WINDOW`` is not set (offscreen, no X
 server; Mesa's software EGL is enough). GIFs are written by imageio (Pillow), MP4 (H.264) by
-imageio-ffmpeg, both through pyvista's ``open_gif`` / ``open_movie``.
+imageio-ffmpeg (through pyvista's ``open_movie``, ffmpeg's own messages silenced: a failure
+comes back as an exception). A GIF is assembled in memory (pyvista's ``open_gif`` settings, the
+same bytes) and written by Python, so a full disk is one ``OSError`` at that write rather than an
+error Pillow raises again while its writer is garbage-collected.
 """
 
 from __future__ import annotations
 
+import io
 import json
 import logging
 import os
@@ -24,24 +28,46 @@ import numpy as np
 
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import ImpactSeries, field_name, impact_series
-from fem_racket.outputs import atomic_output, check_output_path, sidecar_path
+from fem_racket.outputs import Target, atomic_outputs, check_targets, sidecar_path
 from fem_racket.progress import progress_bar
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_range, show
 
 if TYPE_CHECKING:
     from fem_racket.impact.simulate import ImpactResult
 
-__all__ = ["ANIMATION_SUFFIXES", "render_animation"]
+__all__ = ["ANIMATION_SUFFIXES", "FPS_RANGE", "animation_targets", "check_fps", "render_animation"]
 
 log = logging.getLogger(__name__)
 
 ANIMATION_SUFFIXES = (".gif", ".mp4")
+
+#: Playback rates accepted [frames/s]: GIF delays are whole 10 ms (so at most 100 frames/s) in a
+#: 16-bit field (a frame lasts at most 655.35 s; below 0.0016 frames/s Pillow fails and leaves an
+#: unreadable file); at most 100 s per frame keeps both formats well inside their limits.
+FPS_RANGE = (0.01, 100.0)
 
 #: Tennis-ball "optic yellow"; a dark background so that coolwarm's light-grey zero stays visible.
 BALL_COLOUR = "#cfdc2a"
 BACKGROUND = "#333333"
 TEXT_COLOUR = "#f0f0f0"
 REFERENCE_COLOUR = "#8a8a8a"
+
+
+def check_fps(fps: object) -> float:
+    """``fps`` as a float if it lies in :data:`FPS_RANGE`."""
+    return check_range("fps", fps, *FPS_RANGE, unit="frames/s")
+
+
+def animation_targets(path: str | os.PathLike) -> list[Target]:
+    """The files an animation writes (the image file, suffix in lower case, and its provenance
+    sidecar), after checking the suffix; see :func:`fem_racket.outputs.atomic_outputs`."""
+    path = Path(path)
+    if path.suffix.lower() not in ANIMATION_SUFFIXES:
+        raise InputError(
+            f"out = {show(str(path))} is not allowed: must end in {' or '.join(ANIMATION_SUFFIXES)}"
+        )
+    path = path.with_suffix(path.suffix.lower())
+    return [Target(path), Target(sidecar_path(path))]
 
 
 def check_size(size: tuple[int, int]) -> tuple[int, int]:
@@ -52,7 +78,7 @@ def check_size(size: tuple[int, int]) -> tuple[int, int]:
         w = h = -1
     if not all(160 <= v <= 3840 and v % 16 == 0 for v in (w, h)):
         raise InputError(
-            f"size = {size!r} is not allowed: must be WIDTH x HEIGHT in pixels, "
+            f"size = {show(size)} is not allowed: must be WIDTH x HEIGHT in pixels, "
             "each a multiple of 16 in [160, 3840]"
         )
     return w, h
@@ -110,6 +136,7 @@ def _render(
     progress: bool | None = None,
 ) -> None:
     _use_egl()
+    import imageio
     import pyvista as pv
 
     cell = field in series.cell_fields
@@ -117,6 +144,7 @@ def _render(
     vmax = float(np.abs(values).max()) or 1.0
     length = float(series.x[-1])
 
+    gif = io.BytesIO() if path.suffix == ".gif" else None
     pl = pv.Plotter(off_screen=True, window_size=list(size))
     try:
         pl.set_background(BACKGROUND)
@@ -166,10 +194,13 @@ def _render(
         scale_text.SetPosition(width - margin, height - margin)
         scale_text.GetTextProperty().SetJustificationToRight()
         _camera(pl, series, size)
-        if path.suffix == ".gif":
-            pl.open_gif(str(path), fps=fps)
+        if gif is not None:  # pyvista's open_gif settings, into memory (see the docstring)
+            pl.mwriter = imageio.get_writer(
+                gif, format=".gif", mode="I", loop=0, palettesize=256, subrectangles=False,
+                duration=1000.0 / fps,
+            )  # fmt: skip
         else:
-            pl.open_movie(str(path), framerate=fps, quality=7)
+            pl.open_movie(str(path), framerate=fps, quality=7, ffmpeg_log_level="quiet")
         force = series.ball_fields["contact force [N]"]
         time_text = _text(pl, "", 14, margin, height - margin)
         caption_text = _text(pl, "", 10, margin, margin)
@@ -185,6 +216,8 @@ def _render(
             pl.write_frame()
     finally:
         pl.close()
+    if gif is not None:
+        path.write_bytes(gif.getvalue())
 
 
 def render_animation(
@@ -204,8 +237,9 @@ def render_animation(
     """Render an impact as a GIF or MP4 offscreen; return the path written.
 
     A sidecar ``<path>.json`` holds the provenance (software, version, date, the impact's
-    settings and results, the animation's settings and its times [s]). Both files are written
-    atomically; existing ones are replaced only with ``overwrite``.
+    settings and results, the animation's settings and its times [s]). Both files are checked
+    before the work and written as a set (both or neither); existing ones are replaced only with
+    ``overwrite``.
 
     Parameters
     ----------
@@ -219,7 +253,7 @@ def render_animation(
     frames : int
         Images, evenly spread over the output times, first and last included (>= 2).
     fps : float
-        Playback rate [frames/s] (> 0, at most 100: GIF delays are whole 10 ms).
+        Playback rate [frames/s], in :data:`FPS_RANGE`.
     scale : float
         Deflection exaggeration (> 0), written on every image.
     subdivide : int
@@ -233,20 +267,11 @@ def render_animation(
     progress : bool or None
         A progress bar over the frames on stderr (None: when stderr is a terminal).
     """
-    path = Path(path)
-    if path.suffix.lower() not in ANIMATION_SUFFIXES:
-        raise InputError(
-            f"output = '{path}' is not allowed: must end in {' or '.join(ANIMATION_SUFFIXES)}"
-        )
-    path = path.with_suffix(path.suffix.lower())
+    targets = check_targets(animation_targets(path), overwrite=overwrite)
+    path = targets[0].path
     field = field_name(field)
-    fps = check_positive("fps", fps, "frames/s")
-    if fps > 100:
-        raise InputError(f"fps = {fps!r} frames/s is not allowed: must be in (0, 100]")
+    fps = check_fps(fps)
     size = check_size(size)
-    sidecar = sidecar_path(path)
-    check_output_path(path, overwrite=overwrite)
-    check_output_path(sidecar, overwrite=overwrite)
     series = impact_series(result, subdivide=subdivide, frames=frames, scale=scale)
     caption = (
         f"ball {result.impact.speed:g} m/s at x/L = {result.impact.position:.3f}, "
@@ -262,10 +287,7 @@ def render_animation(
         "time_s": series.t.tolist(),
     }
     meta = impact_provenance(result, {**settings, **(parameters or {})})
-    with (
-        atomic_output(path, overwrite=overwrite) as tmp,
-        atomic_output(sidecar, overwrite=overwrite) as tmp_json,
-    ):
+    with atomic_outputs(targets, overwrite=overwrite) as (tmp, tmp_json):
         _render(series, tmp, field=field, fps=fps, size=size, caption=caption, progress=progress)
         tmp_json.write_text(json.dumps(meta, indent=2) + "\n")
     log.info("wrote %d frames to %s", series.n_steps, path)

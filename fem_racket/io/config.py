@@ -34,7 +34,7 @@ from typing import Any
 from fem_racket.contact.linear import zeta_from_cor
 from fem_racket.io.config_example import example_config
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS, PRESETS, reject_unknown
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "RunConfig",
@@ -171,7 +171,7 @@ def _check(data: dict[str, Any], source: Path | None, known: set[str]) -> RunCon
     tables: dict[str, dict[str, Any]] = {}
     for name, table in data.items():
         if not isinstance(table, dict):
-            raise InputError(f"{name} = {table!r} is not allowed: must be a table [{name}]")
+            raise InputError(f"{name} = {show(table)} is not allowed: must be a table [{name}]")
         if name not in CORE_KEYS:
             tables[name] = table
             continue
@@ -197,6 +197,11 @@ def _check_combinations(values: dict[str, dict[str, Any]]) -> None:
         raise InputError(
             f"{given} cannot be combined: describe the frame by one of preset/ei1_n_m2/ei2_n_m2, "
             "segments or mesh"
+        )
+    if "mesh" in frame and "elements" in frame:  # as --mesh with --elements on the command line
+        raise InputError(
+            f"frame.elements = {frame['elements']} is not allowed with frame.mesh: the mesh file "
+            "gives the cells and their EI and rhoA; remove one of them"
         )
     if "segments" in frame and "elements" in frame and frame["elements"] < len(frame["segments"]):
         raise InputError(

@@ -17,7 +17,7 @@ from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.simulate import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.validation import InputError, check_choice, check_positive, check_range
+from fem_racket.validation import InputError, check_choice, check_positive, check_range, show
 
 __all__ = ["COMMAND_TABLES", "CORE_DESTS", "CORE_KEYS", "PRESETS", "Key", "reject_unknown"]
 
@@ -42,7 +42,7 @@ PRESETS = {"standard": PAPER_EI1, "rigid": RIGID_EI1}
 def _number(unit: str, check: Callable[..., float]) -> Callable[[str, Any], float]:
     def conv(name: str, value: Any) -> float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise InputError(f"{name} = {value!r} is not allowed: must be a number [{unit}]")
+            raise InputError(f"{name} = {show(value)} is not allowed: must be a number [{unit}]")
         return float(check(name, value, unit))
 
     return conv
@@ -62,7 +62,7 @@ def _interval(low: float, high: float, **kw: bool) -> Callable[[str, Any], float
 def _integer(low: int) -> Callable[[str, Any], int]:
     def conv(name: str, value: Any) -> int:
         if isinstance(value, bool) or not isinstance(value, int) or value < low:
-            raise InputError(f"{name} = {value!r} is not allowed: must be an integer >= {low}")
+            raise InputError(f"{name} = {show(value)} is not allowed: must be an integer >= {low}")
         return value
 
     return conv
@@ -77,13 +77,13 @@ def _choice(options: tuple[str, ...]) -> Callable[[str, Any], str]:
 
 def _string(name: str, value: Any) -> str:
     if not isinstance(value, str) or not value.strip():
-        raise InputError(f"{name} = {value!r} is not allowed: must be a non-empty path string")
+        raise InputError(f"{name} = {show(value)} is not allowed: must be a non-empty path string")
     return value
 
 
 def _boolean(name: str, value: Any) -> bool:
     if not isinstance(value, bool):
-        raise InputError(f"{name} = {value!r} is not allowed: must be true or false")
+        raise InputError(f"{name} = {show(value)} is not allowed: must be true or false")
     return value
 
 
@@ -101,7 +101,7 @@ def _segments(name: str, value: Any) -> tuple[Segment, ...]:
         where = f"{name}[{i}]"
         if not isinstance(item, dict):
             raise InputError(
-                f"{where} = {item!r} is not allowed: must be a table "
+                f"{where} = {show(item)} is not allowed: must be a table "
                 "with length_m, ei_n_m2 and rhoa_kg_m"
             )
         reject_unknown(item, _SEGMENT_KEYS, where)

@@ -38,6 +38,7 @@ __all__ = [
     "check_figure_format",
     "figure_format",
     "save_figure",
+    "same_image",
 ]
 
 #: Formats a figure can be written in (the file suffix decides).
@@ -108,7 +109,9 @@ def _image_chunks(data: bytes) -> list[bytes]:
     return chunks
 
 
-def _same_image(path: Path, data: bytes) -> bool:
+def same_image(path: Path, data: bytes) -> bool:
+    """True if the PNG file ``path`` exists and holds the image of the PNG bytes ``data``
+    (metadata such as the provenance aside)."""
     try:
         return _image_chunks(path.read_bytes()) == _image_chunks(data)
     except OSError:
@@ -145,7 +148,7 @@ def save_figure(
     text = json.dumps(dict(meta), sort_keys=True, default=str)
     creator = f"{meta.get('software', 'fem_racket')} {meta.get('version', '')}".strip()
     png = _png(fig, dpi) if fmt == "png" else b""
-    if png and keep_unchanged and overwrite and _same_image(Path(path), png):
+    if png and keep_unchanged and overwrite and same_image(Path(path), png):
         return Path(path)
     with atomic_output(path, overwrite=overwrite) as tmp:
         if fmt == "png":

@@ -30,8 +30,10 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
     Any format meshio reads (.vtu, .vtk, .xdmf, .msh, ...). The cells must be 2-node ``line``
     cells along x (y and z constant); they may come in any order and are sorted by position, but
     must join end to end (within ``JOIN_TOL`` of the length) without gaps, overlaps or zero-length
-    cells. Coordinates are shifted so the grip end is at x = 0. Other cell types (e.g. vertices)
-    are ignored.
+    cells. x is the distance from the grip end: the grip end is the smallest x, which must be
+    >= 0 (a file starting further along is shifted to x = 0); negative x is refused rather than
+    guessed at (a frame drawn from x = -L to 0 with its grip at 0 would come out mirrored).
+    Other cell types (e.g. vertices) are ignored.
 
     Raises
     ------
@@ -107,6 +109,12 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
     if length <= 0.0:
         raise InputError(f"{where} is not allowed: the mesh has zero length")
     tol = JOIN_TOL * length
+    if left[0] < -tol:
+        raise InputError(
+            f"{where} is not allowed: x runs from {left[0]:g} to {right.max():g} m; x is the "
+            "distance from the grip end, so it must be >= 0 (mirror the file, x -> -x, if its "
+            "grip end is at x = 0)"
+        )
     short = right - left <= tol
     if np.any(short):
         i = int(np.argmax(short))

@@ -5,7 +5,9 @@ Every writer takes the output path (written atomically, never silently replaced 
 (:func:`fem_racket.outputs.provenance`: version, date, the study's settings and ``parameters``,
 and under ``"used"`` what the impacts used: modes kept per mesh, K_CB, zeta, ...) goes into the
 figure (PNG, SVG or PDF: :func:`fem_racket.io.figure_files.save_figure`) and, for the CSV, into
-the sidecar ``<file>.csv.json``.
+the sidecar ``<file>.csv.json``. :func:`write_outputs` writes the CSV, its sidecar and the
+figure as one set: all three or none (:func:`refine_targets` lists them, to check before the
+study runs).
 
 The table gives each quantity in one unit (t_c and its change in ms). The Richardson estimate
 (order 4) is printed only where the three finest meshes show that order (3-5); elsewhere the
@@ -16,6 +18,7 @@ round-off (~1e-8), or not yet in the asymptotic range.
 from __future__ import annotations
 
 import csv
+import json
 import os
 from collections.abc import Mapping
 from pathlib import Path
@@ -24,15 +27,45 @@ from typing import Any
 import numpy as np
 
 from fem_racket.io.figure_files import DEFAULT_DPI, save_figure
-from fem_racket.outputs import atomic_output, provenance, sidecar_path, write_sidecar
+from fem_racket.outputs import Target, atomic_outputs, provenance, sidecar_path
 from fem_racket.studies.refine import ASYMPTOTIC_ORDERS, RefinementStudy
 
-__all__ = ["csv_files", "format_study", "plot_studies", "study_provenance", "write_csv"]
+__all__ = [
+    "format_study",
+    "plot_studies",
+    "refine_targets",
+    "study_provenance",
+    "write_csv",
+    "write_outputs",
+]
 
 
-def csv_files(path: str | os.PathLike) -> list[Path]:
-    """The files :func:`write_csv` writes: the CSV and its provenance sidecar."""
-    return [Path(path), sidecar_path(path)]
+def refine_targets(csv_path: str | os.PathLike, plot_path: str | os.PathLike) -> list[Target]:
+    """The files :func:`write_outputs` writes: the CSV, its sidecar and the figure."""
+    csv_path = Path(csv_path)
+    return [
+        Target(csv_path, name="csv"),
+        Target(sidecar_path(csv_path), name="csv"),
+        Target(Path(plot_path), name="plot"),
+    ]
+
+
+def write_outputs(
+    studies: Mapping[str, RefinementStudy],
+    csv_path: str | os.PathLike,
+    plot_path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
+    dpi: float = DEFAULT_DPI,
+) -> list[Path]:
+    """:func:`write_csv` and :func:`plot_studies` as one set: all their files or none."""
+    targets = refine_targets(csv_path, plot_path)
+    with atomic_outputs(targets, overwrite=overwrite) as (tmp_csv, tmp_side, tmp_plot):
+        _write_table(studies, tmp_csv)
+        _write_meta(studies, tmp_side, parameters)
+        plot_studies(studies, tmp_plot, overwrite=True, parameters=parameters, dpi=dpi)
+    return [Path(csv_path), Path(plot_path)]
 
 
 def study_provenance(
@@ -115,7 +148,23 @@ def write_csv(
 ) -> Path:
     """One row per family and mesh: frequencies, errors, orders, COR and t_c per impact point.
 
-    The provenance (with ``parameters``) goes to ``<path>.json`` beside it."""
+    The provenance (with ``parameters``) goes to ``<path>.json`` beside it (both files or
+    neither)."""
+    targets = [Target(Path(path), name="csv"), Target(sidecar_path(path), name="csv")]
+    with atomic_outputs(targets, overwrite=overwrite) as (tmp, side):
+        _write_table(studies, tmp)
+        _write_meta(studies, side, parameters)
+    return Path(path)
+
+
+def _write_meta(
+    studies: Mapping[str, RefinementStudy], path: Path, parameters: Mapping[str, Any] | None
+) -> None:
+    meta = study_provenance(studies, parameters)
+    path.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
+
+
+def _write_table(studies: Mapping[str, RefinementStudy], path: Path) -> None:
     rows = []
     for family, s in studies.items():
         m = s.exact_frequencies_hz.size
@@ -134,14 +183,11 @@ def write_csv(
             row["impact_time_s"] = s.impact_time_s[i]
             rows.append(row)
     fields = list(dict.fromkeys(k for r in rows for k in r))
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        with open(tmp, "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=fields)
-            w.writeheader()
-            for r in rows:
-                w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in r.items()})
-    write_sidecar(path, study_provenance(studies, parameters), overwrite=overwrite)
-    return Path(path)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in r.items()})
 
 
 def plot_studies(

@@ -3,6 +3,13 @@ plus an ``impact.pvd`` collection with the physical times, and a ``provenance.js
 
 The grids and their fields are described in :mod:`.vtk_series` (with the measurements that chose
 the format).
+
+VTK never writes a file itself here: each ``.vtu`` is made in memory by VTK's XML writer (the
+settings of pyvista's ``save``: base64 binary, zlib; byte for byte the same file) and written by
+Python. VTK's own file output does not report a full disk reliably (it truncated files silently
+and, on a nearly full file system, corrupted the heap and aborted the process); Python's write
+raises an ``OSError``, which :func:`fem_racket.outputs.atomic_folder` turns into one line naming
+the folder, leaving no partial folder behind.
 """
 
 from __future__ import annotations
@@ -28,6 +35,20 @@ log = logging.getLogger(__name__)
 
 PVD_NAME = "impact.pvd"
 PROVENANCE_NAME = "provenance.json"
+
+
+def _write_vtu(grid: Any, path: Path) -> None:
+    """Write ``grid`` (a pyvista UnstructuredGrid) as ``.vtu`` through Python (see above)."""
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+
+    writer = vtkXMLUnstructuredGridWriter()
+    writer.SetInputData(grid)
+    writer.SetDataModeToBinary()
+    writer.SetCompressorTypeToZLib()
+    writer.WriteToOutputStringOn()
+    if writer.Write() != 1:
+        raise OSError(f"the VTK writer could not make {path.name}")
+    path.write_bytes(writer.GetOutputString().encode("ascii"))
 
 
 def _write_pvd(path: Path, entries: list[tuple[float, int, str, str]]) -> None:
@@ -102,8 +123,8 @@ def write_vtk_series(
             if field in series.cell_fields:  # readers colour by the active point scalars first
                 frame.point_data.active_scalars_name = None
             frame.set_active_scalars(field)
-            frame.save(tmp / f"frame_{i:04d}.vtu")
-            series.ball_grid(i).save(tmp / f"ball_{i:04d}.vtu")
+            _write_vtu(frame, tmp / f"frame_{i:04d}.vtu")
+            _write_vtu(series.ball_grid(i), tmp / f"ball_{i:04d}.vtu")
             entries += [
                 (series.t[i], 0, "frame", f"frame_{i:04d}.vtu"),
                 (series.t[i], 1, "ball", f"ball_{i:04d}.vtu"),

@@ -24,9 +24,9 @@ nor pyvista reads it as a time series (pyvista's HDF reader has no time support)
 ``.vtu`` files read back exactly with meshio and pyvista (``PVDReader.time_values``) and the
 ``.pvd`` opens in ParaView. meshio, pyvista and VTK have no ``.pvd`` writer (pyvista only reads
 it), so that small XML collection is written here with ``xml.etree``; the ``.vtu`` files are
-written by pyvista, because meshio's VTU writer drops field data (the ``TimeValue`` that ParaView
-reads from a single file). meshio cannot read VTK string arrays, hence the provenance is a sidecar
-JSON, ``provenance.json``.
+made by VTK's XML writer (as pyvista's ``save`` does), because meshio's VTU writer drops field
+data (the ``TimeValue`` that ParaView reads from a single file). meshio cannot read VTK string
+arrays, hence the provenance is a sidecar JSON, ``provenance.json``.
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from fem_racket.display import number, short_repr
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, check_range, show
 
 if TYPE_CHECKING:
     import pyvista as pv
@@ -50,11 +50,17 @@ __all__ = [
     "BALL_FIELDS",
     "BALL_RADIUS",
     "FRAME_FIELDS",
+    "MAX_SCALE",
     "ImpactSeries",
+    "check_scale",
     "field_name",
     "impact_series",
     "sample_steps",
 ]
+
+#: Largest deflection exaggeration [-]: millimetres drawn as kilometres; far beyond any use, and
+#: far below where the drawn coordinates would overflow to infinity.
+MAX_SCALE = 1e6
 
 log = logging.getLogger(__name__)
 
@@ -85,14 +91,14 @@ def field_name(field: str) -> str:
     if field in FIELD_ALIASES:
         return FIELD_ALIASES[field]
     allowed = ", ".join([*FIELD_ALIASES, *(repr(f) for f in FRAME_FIELDS)])
-    raise InputError(f"field = {field!r} is not allowed: must be one of {allowed}")
+    raise InputError(f"field = {show(field)} is not allowed: must be one of {allowed}")
 
 
 def _check_int(name: str, value: object, low: int, high: int | None = None, why: str = "") -> int:
     ok = isinstance(value, (int, np.integer)) and not isinstance(value, bool)
     if not ok or value < low or (high is not None and value > high):
         rng = f">= {low}" if high is None else f"in [{low}, {high}]"
-        raise InputError(f"{name} = {value!r} is not allowed: must be an integer {rng}{why}")
+        raise InputError(f"{name} = {show(value)} is not allowed: must be an integer {rng}{why}")
     return int(value)
 
 
@@ -212,6 +218,11 @@ def _sphere(resolution: int) -> pv.UnstructuredGrid:
     return grid
 
 
+def check_scale(scale: object) -> float:
+    """``scale`` as a float if it is a deflection exaggeration in (0, :data:`MAX_SCALE`]."""
+    return check_range("scale", scale, 0.0, MAX_SCALE, include_low=False)
+
+
 def impact_series(
     result: ImpactResult,
     *,
@@ -240,7 +251,7 @@ def impact_series(
         R_B [m].
     """
     subdivide = _check_int("subdivide", subdivide, 1, 1000)
-    scale = check_positive("scale", scale)
+    scale = check_scale(scale)
     ball_radius = check_positive("ball_radius", ball_radius, "m")
     if result.t.size < 2:
         raise InputError("result has no time histories: simulate with output_step set (not None)")

@@ -22,8 +22,8 @@ import re
 from collections.abc import Iterable
 from pathlib import Path
 
-from fem_racket.outputs import check_output_path
-from fem_racket.validation import InputError
+from fem_racket.outputs import Target, check_output_path
+from fem_racket.outputs.checks import as_target, refuse
 
 __all__ = ["check_replaceable", "written_by_fem_racket"]
 
@@ -126,15 +126,19 @@ def written_by_fem_racket(path: str | os.PathLike) -> bool:
     return False
 
 
-def check_replaceable(targets: Iterable[str | os.PathLike], *, overwrite: bool = False) -> None:
+def check_replaceable(
+    targets: Iterable[Target | str | os.PathLike], *, overwrite: bool = False
+) -> None:
     """Before any work: each existing target must be one of our own outputs, unless
-    ``overwrite``; an InputError names the first that is not (and any unwritable place)."""
+    ``overwrite``; an InputError names the first that is not (and any unwritable place), with
+    the option that named it (a plain path: ``out``)."""
     for target in targets:
-        p = Path(target)
+        t = as_target(target)
+        p = t.path
         if overwrite or not p.exists() or p.is_dir() or written_by_fem_racket(p):
-            check_output_path(p, overwrite=True)  # a folder, an unwritable place
+            check_output_path(p, overwrite=True, name=t.name)  # a folder, an unwritable place
             continue
-        raise InputError(
-            f"output = '{p}' already exists and is not a file fem-racket reproduce wrote "
-            "(no fem_racket provenance in it): pass --overwrite to replace it"
-        )
+        raise refuse(
+            t, "it already exists and is not a file fem-racket reproduce wrote (no fem_racket "
+            "provenance in it): pass --overwrite to replace it",
+        )  # fmt: skip

@@ -25,14 +25,14 @@ from typing import Any
 
 from fem_racket.display import number, short_repr
 from fem_racket.io.figure_files import DEFAULT_DPI, check_dpi, check_figure_format
-from fem_racket.outputs import atomic_output, provenance
+from fem_racket.outputs import Target, atomic_outputs, provenance
 from fem_racket.paper.claims import AGREES, DIFFERS, NOT_CHECKABLE, Claim, build_claims
 from fem_racket.paper.figures import (
     FIGURES,
     FigureData,
     expected_files,
     used_settings,
-    write_figure,
+    write_figure_into,
 )
 from fem_racket.paper.owned import check_replaceable
 from fem_racket.progress import progress_bar
@@ -252,6 +252,9 @@ def reproduce(
         figures, CSVs listed in its ``values.json``, ``values.json``, the report: recognised by
         their provenance) are replaced, and any other existing output is an error, raised
         before any computation.
+        Every file - figures, CSVs, ``values.json``, the report - is written after all figures
+        are computed, as one set: all of them or, on any failure or interruption, none (old
+        files kept); every destination is checked before the work.
     figures : list of str, optional
         Subset of :data:`fem_racket.figures.FIGURES` keys; all by default (a report needs all).
     parameters : dict, optional
@@ -275,48 +278,47 @@ def reproduce(
     fmt = check_figure_format(fmt)
     dpi = check_dpi(dpi)
     out = Path(out_dir)
-    written = [p for k in keys for p in expected_files(FIGURES[k], out, fmt)]
-    targets = [*written, out / "values.json"]
+    groups = {k: expected_files(FIGURES[k], out, fmt) for k in keys}
+    written = [p for paths in groups.values() for p in paths]
+    targets = [Target(p, name="out") for p in [*written, out / "values.json"]]
     if report is not None:
-        targets.append(Path(report))
+        targets.append(Target(Path(report), name="report"))
     check_replaceable(targets, overwrite=overwrite)
     meta = provenance(
         {"quick": quick, "figures": keys, "format": fmt, "dpi": dpi, **(parameters or {})}
     )
     meta["used"] = used_settings()
     done: dict[str, FigureData] = {}
-    files: list[Path] = []
     seconds: dict[str, float] = {}
     for key in progress_bar(keys, desc="reproduce", unit="figure", enabled=progress):
         t0 = time.perf_counter()
-        data = FIGURES[key].compute(quick)
-        files += write_figure(
-            FIGURES[key],
-            data,
-            out,
-            overwrite=True,
-            meta=meta,
-            fmt=fmt,
-            dpi=dpi,
-            keep_unchanged=True,
-        )
-        done[key] = data
+        done[key] = FIGURES[key].compute(quick)
         seconds[key] = time.perf_counter() - t0
         log.info("%s: %.2f s", key, seconds[key])
     values = {k: d.values for k, d in done.items()}
     listing = [p.name for p in written]
-    with atomic_output(out / "values.json", overwrite=True) as tmp:
-        tmp.write_text(
-            json.dumps({"provenance": meta, "files": listing, "values": values}, indent=1)
-        )
-    files.append(out / "values.json")
     claims = build_claims(values) if report is not None else []
-    if report is not None:
-        rel = os.path.relpath(out.resolve(), Path(report).resolve().parent).replace(os.sep, "/")
-        text = render_report(done, claims, rel, quick=quick, fmt=fmt)
-        if not _same_report(Path(report), text):
-            stamp = f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
-            with atomic_output(report, overwrite=True) as tmp:
+    # Every file of the reproduction moved into place together (check_replaceable above did the
+    # --overwrite check: what remains is ours to replace); unchanged ones are left as they are.
+    with atomic_outputs(targets, overwrite=True) as temps:
+        pending = iter(temps)
+        for key, paths in groups.items():
+            t0 = time.perf_counter()
+            mine = [next(pending) for _ in paths]
+            write_figure_into(
+                FIGURES[key], done[key], mine, paths, meta, dpi=dpi, keep_unchanged=True
+            )
+            seconds[key] += time.perf_counter() - t0
+        listed = {"provenance": meta, "files": listing, "values": values}
+        next(pending).write_text(json.dumps(listed, indent=1))
+        if report is not None:
+            rel = os.path.relpath(out.resolve(), Path(report).resolve().parent).replace(os.sep, "/")
+            text = render_report(done, claims, rel, quick=quick, fmt=fmt)
+            tmp = next(pending)
+            if _same_report(Path(report), text):
+                tmp.unlink()  # left as it is
+            else:
+                stamp = f"\n<!-- provenance: {json.dumps(meta, sort_keys=True, default=str)} -->\n"
                 tmp.write_text(text + stamp)
-        files.append(Path(report))
+    files = [*written, out / "values.json"] + ([Path(report)] if report is not None else [])
     return Reproduction(done, claims, files, seconds)

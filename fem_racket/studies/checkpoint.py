@@ -1,19 +1,28 @@
 """Resumable sweeps: finished cases kept in a folder beside the output until it is written.
 
 The folder ``<output>.checkpoint/`` holds ``spec.json`` (the sweep's description and its
-SHA-256 digest) and one ``chunk-<first case>-<count>.npy`` per finished chunk: an array of
-rows ``[case index, result values...]``. Every file is written to a temporary name and renamed
-into place, so a run killed at any moment leaves only whole chunks (stray temporary files are
-removed on the next start). A restarted sweep with the same specification loads the finished
-cases and computes only the others; a different specification is refused. The folder is
-removed once the result file has been written.
+SHA-256 digest), a ``lock`` file and one ``chunk-<first case>-<count>-<checksum>.npy`` per
+finished chunk: an array of rows ``[case index, result values...]``. The checksum is the first
+16 hex digits of SHA-256 over the sweep's digest and the file's bytes, so a chunk that is
+truncated, empty, altered or from another sweep fails it: such a chunk is never merged - it is
+deleted with a warning and its cases are computed again. A damaged ``spec.json`` is rewritten
+(every chunk is checked on its own); a readable one of another sweep is refused, naming
+``--restart``.
+
+Every file is written to a temporary name and renamed into place, so a run killed at any moment
+leaves only whole chunks (stray temporary files are removed on the next start). The lock
+(``flock``, released by the kernel when the process ends, however it ends) stops a second sweep
+on the same output while one runs. The folder is removed once the result file has been written.
 """
 
 from __future__ import annotations
 
+import hashlib
+import io
 import json
 import logging
 import os
+import re
 import shutil
 import tempfile
 from pathlib import Path
@@ -21,11 +30,21 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.validation import InputError
+from fem_racket.outputs import OutputError
+from fem_racket.validation import InputError, show_path
+
+try:
+    import fcntl
+except ImportError:  # pragma: no cover - not POSIX: no lock
+    fcntl = None  # type: ignore[assignment]
 
 __all__ = ["Checkpoint", "checkpoint_path"]
 
 log = logging.getLogger(__name__)
+
+SPEC_NAME = "spec.json"
+LOCK_NAME = "lock"
+_CHUNK = re.compile(r"^chunk-(\d+)-(\d+)-([0-9a-f]{16})\.npy$")
 
 
 def checkpoint_path(output: str | os.PathLike) -> Path:
@@ -34,32 +53,48 @@ def checkpoint_path(output: str | os.PathLike) -> Path:
     return output.with_name(output.name + ".checkpoint")
 
 
-def _write_atomic(path: Path, write: Any) -> None:
-    fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=path.suffix, dir=path.parent)
+def _checksum(digest: str, data: bytes) -> str:
+    return hashlib.sha256(digest.encode() + b"\0" + data).hexdigest()[:16]
+
+
+def _write_atomic(path: Path, data: bytes) -> None:
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=path.suffix, dir=path.parent)
+    except OSError as exc:
+        raise OutputError(exc.errno, f"cannot write {show_path(path)}: {exc.strerror}") from None
     try:
         with os.fdopen(fd, "wb") as fh:
-            write(fh)
+            fh.write(data)
             fh.flush()
             os.fsync(fh.fileno())
         os.replace(tmp, path)
+    except OSError as exc:
+        raise OutputError(exc.errno, f"cannot write {show_path(path)}: {exc.strerror}") from None
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
 
 
 class Checkpoint:
-    """The finished cases of one sweep, stored beside its output file.
+    """The finished cases of one sweep, stored beside its output file; holds its lock.
 
     Parameters
     ----------
     output : path
         The sweep's result file; the checkpoint is ``<output>.checkpoint/``.
     digest : str
-        The sweep specification's digest (:attr:`fem_racket.grid.SweepSpec.digest`).
+        The sweep specification's digest (:attr:`fem_racket.studies.grid.SweepSpec.digest`).
     description : dict
         Written to ``spec.json`` for people reading the folder.
     n_cases, n_values : int
         Number of cases and of result values per case.
+    restart : bool
+        Discard the finished cases of an earlier run (after taking the lock).
+
+    Raises
+    ------
+    InputError
+        Another sweep holds the lock, or the folder belongs to a different sweep.
     """
 
     def __init__(
@@ -69,56 +104,139 @@ class Checkpoint:
         description: dict[str, Any],
         n_cases: int,
         n_values: int,
+        *,
+        restart: bool = False,
     ) -> None:
+        self.output = Path(output)
         self.folder = checkpoint_path(output)
         self.digest = digest
         self.n_cases, self.n_values = n_cases, n_values
-        spec_file = self.folder / "spec.json"
-        if self.folder.exists():
+        self.cases = 0  # finished cases stored
+        self._lock: Any = None
+        try:
+            self.folder.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise InputError(
+                f"out = {show_path(self.output)} is not allowed: its checkpoint folder "
+                f"{show_path(self.folder)} cannot be made ({exc.strerror})"
+            ) from None
+        self._lock = self._acquire()
+        try:
+            self._prepare(description, restart)
+        except BaseException:
+            self.close()
+            raise
+
+    def _acquire(self) -> Any:
+        fh = open(self.folder / LOCK_NAME, "a+")  # noqa: SIM115 - held until close()
+        if fcntl is not None:
+            try:
+                fcntl.flock(fh.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                fh.seek(0)
+                other = fh.read().strip() or "unknown"
+                fh.close()
+                raise InputError(
+                    f"out = {show_path(self.output)} is not allowed now: another sweep "
+                    f"(process {other}) is writing it (lock {show_path(self.folder / LOCK_NAME)}); "
+                    "wait for it to finish or stop it"
+                ) from None
+        fh.seek(0)
+        fh.truncate()
+        fh.write(f"{os.getpid()}\n")
+        fh.flush()
+        return fh
+
+    def _prepare(self, description: dict[str, Any], restart: bool) -> None:
+        spec_file = self.folder / SPEC_NAME
+        for entry in self.folder.iterdir():
+            stale = entry.name.startswith(".tmp-")
+            if stale or (restart and entry.name != LOCK_NAME):
+                (shutil.rmtree if entry.is_dir() else Path.unlink)(entry)
+        stored = None
+        if spec_file.exists():
             try:
                 stored = json.loads(spec_file.read_text())["digest"]
-            except (OSError, ValueError, KeyError):
-                stored = None
-            if stored != digest:
-                raise InputError(
-                    f"checkpoint = '{self.folder}' belongs to a different sweep: rerun with the "
-                    "options it was started with, or remove it (--restart) to start afresh"
+                if not isinstance(stored, str):
+                    raise TypeError("digest is not a string")
+            except (OSError, ValueError, KeyError, TypeError) as exc:
+                log.warning(
+                    "checkpoint file %s is damaged (%s): rewritten; every chunk is checked "
+                    "on its own",
+                    show_path(spec_file),
+                    " ".join(str(exc).split())[:80] or type(exc).__name__,
                 )
-            for tmp in self.folder.glob(".tmp-*"):
-                tmp.unlink()
-        else:
-            self.folder.mkdir(parents=True)
-            text = json.dumps({"digest": digest, "sweep": description}, indent=1).encode()
-            _write_atomic(spec_file, lambda fh: fh.write(text))
+                stored = None
+        if stored is not None and stored != self.digest:
+            raise InputError(
+                f"out = {show_path(self.output)} is not allowed: its checkpoint "
+                f"{show_path(self.folder)} belongs to a different sweep; rerun with the options "
+                "it was started with, or pass --restart to discard it"
+            )
+        if stored is None:
+            text = json.dumps({"digest": self.digest, "sweep": description}, indent=1)
+            _write_atomic(spec_file, text.encode())
 
-    @staticmethod
-    def discard(output: str | os.PathLike) -> None:
-        """Delete the checkpoint of ``output``, if any."""
-        shutil.rmtree(checkpoint_path(output), ignore_errors=True)
+    def close(self) -> None:
+        """Release the lock (the folder stays for a later run to resume)."""
+        if self._lock is not None and not self._lock.closed:
+            self._lock.close()
+
+    def _read(self, path: Path) -> np.ndarray | None:
+        """The rows of chunk ``path``, or None (with a warning, the file deleted) if damaged."""
+        m = _CHUNK.match(path.name)
+        why = None
+        rows = None
+        if m is None:
+            why = "no checksum in its name: not written by this version of a sweep"
+        else:
+            data = path.read_bytes()
+            if _checksum(self.digest, data) != m.group(3):
+                why = "checksum mismatch: damaged, or from a different sweep"
+            else:
+                rows = np.load(io.BytesIO(data), allow_pickle=False)
+                first, count = int(m.group(1)), int(m.group(2))
+                shape_ok = rows.ndim == 2 and rows.shape == (count, self.n_values + 1)
+                idx = rows[:, 0] if shape_ok else np.array([-1.0])
+                if not shape_ok or idx[0] != first or np.any((idx < 0) | (idx >= self.n_cases)):
+                    why = "its content does not fit this sweep"
+        if why is None:
+            return rows
+        log.warning(
+            "checkpoint file %s is not used (%s); its cases are computed again",
+            show_path(path),
+            why,
+        )
+        path.unlink()
+        return None
 
     def load(self) -> tuple[np.ndarray, np.ndarray]:
         """Finished cases: a boolean mask (n_cases,) and the results (n_cases, n_values),
         NaN where not finished."""
         done = np.zeros(self.n_cases, dtype=bool)
         values = np.full((self.n_cases, self.n_values), np.nan)
-        for path in sorted(self.folder.glob("chunk-*.npy")):
-            rows = np.load(path, allow_pickle=False)
-            if rows.ndim != 2 or rows.shape[1] != self.n_values + 1:
-                raise InputError(f"checkpoint file = '{path}' is not allowed: wrong shape")
+        for path in sorted(self.folder.glob("chunk-*")):
+            rows = self._read(path)
+            if rows is None:
+                continue
             idx = rows[:, 0].astype(np.int64)
-            if np.any((idx < 0) | (idx >= self.n_cases)):
-                raise InputError(f"checkpoint file = '{path}' is not allowed: bad case index")
             done[idx] = True
             values[idx] = rows[:, 1:]
+        self.cases = int(done.sum())
         return done, values
 
     def save(self, indices: np.ndarray, values: np.ndarray) -> None:
         """Record finished cases ``indices`` with their ``values`` (one atomic file)."""
         rows = np.column_stack([np.asarray(indices, dtype=float), values])
-        name = f"chunk-{int(indices[0]):012d}-{len(indices)}.npy"
-        _write_atomic(self.folder / name, lambda fh: np.save(fh, rows, allow_pickle=False))
+        buf = io.BytesIO()
+        np.save(buf, rows, allow_pickle=False)
+        data = buf.getvalue()
+        name = f"chunk-{int(indices[0]):012d}-{len(indices)}-{_checksum(self.digest, data)}.npy"
+        _write_atomic(self.folder / name, data)
+        self.cases += len(indices)
 
     def remove(self) -> None:
-        """Delete the checkpoint folder (after the result file is written)."""
+        """Delete the checkpoint folder (after the result file is written) and release the lock."""
         shutil.rmtree(self.folder, ignore_errors=True)
+        self.close()
         log.debug("removed checkpoint %s", self.folder)

@@ -11,6 +11,14 @@ process (which checkpoints it) as soon as it arrives, in completion order.
 - ``dask``: ``distributed.Client(scheduler)`` - the very code path used on a cluster; each
   worker needs fem_racket installed.
 
+Workers end with the command. When the caller stops for any reason (an error, Ctrl-C's
+KeyboardInterrupt, SIGTERM turned into one by the CLI) the pool's processes are terminated
+before the exception goes on, and the Dask client is closed, so that the scheduler drops the
+tasks not yet run. Pool workers ignore SIGINT (the terminal sends Ctrl-C to the whole process
+group; the parent decides) and end when the command's process is gone - on Linux the kernel
+kills a forked worker with its parent (``PR_SET_PDEATHSIG``); a worker started by the forkserver
+polls the parent instead - so not even SIGKILL of the command leaves them behind.
+
 Every process that computes (the CLI, each pool worker, each Dask task) runs BLAS on one thread
 (:func:`pin_blas_threads`): the work is many small dense products, which multithreaded OpenBLAS
 makes 2-4x slower on an idle 2-core machine and 10-60x slower on a loaded one, and a fixed thread
@@ -22,14 +30,17 @@ from __future__ import annotations
 import logging
 import os
 import re
+import signal
 import sys
+import threading
+import time
 from collections.abc import Callable, Sequence
 from functools import partial
 from typing import Any
 
 import numpy as np
 
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BACKENDS", "check_scheduler", "pin_blas_threads", "run_chunks"]
 
@@ -60,7 +71,9 @@ def _pinned(work: Work, chunk: np.ndarray, **kwargs: Any) -> np.ndarray:
 def check_scheduler(address: str) -> str:
     """Validate a Dask scheduler address ``PROTOCOL://HOST:PORT``."""
     if not isinstance(address, str) or not _ADDRESS.match(address):
-        raise InputError(f"scheduler = {address!r} is not allowed: must look like tcp://HOST:PORT")
+        raise InputError(
+            f"scheduler = {show(address)} is not allowed: must look like tcp://HOST:PORT"
+        )
     return address
 
 
@@ -89,6 +102,61 @@ def _serial(work: Work, chunks: Sequence[np.ndarray], kwargs: dict, done: Done, 
         bar.update(len(chunk))
 
 
+#: ``prctl`` option asking for a signal when the parent process dies (linux/prctl.h).
+_PR_SET_PDEATHSIG = 1
+
+
+def _worker_init(parent: int) -> None:
+    """Start of every pool worker: one BLAS thread (:func:`pin_blas_threads`), SIGINT left to
+    the parent, and death with the parent ``parent`` (the kernel's parent-death signal when it
+    forked us; else, under forkserver or spawn, a watch thread polling it once a second)."""
+    pin_blas_threads()
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if os.getppid() != parent:
+        threading.Thread(target=_watch, args=(parent,), daemon=True).start()
+    elif sys.platform.startswith("linux"):
+        import ctypes
+
+        try:
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        except (OSError, AttributeError):  # no prctl: the watch thread instead
+            threading.Thread(target=_watch, args=(parent,), daemon=True).start()
+        if os.getppid() != parent:  # the parent died before prctl
+            os._exit(1)
+
+
+def _watch(parent: int) -> None:
+    while _alive(parent):
+        time.sleep(1.0)
+    os._exit(1)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _terminate(pool: Any) -> None:
+    """Stop a ProcessPoolExecutor now: cancel the chunks not started, kill the workers."""
+    procs = list((getattr(pool, "_processes", None) or {}).values())  # shutdown forgets them
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in procs:
+        if proc.is_alive():
+            proc.terminate()
+    for proc in procs:
+        proc.join(timeout=5)
+        if proc.is_alive():
+            proc.kill()
+            proc.join(timeout=5)
+
+
 def _pool_context() -> Any:
     """``fork`` when this process has no other thread (fast: no re-import, works from stdin and
     notebooks), else ``forkserver`` with the package preloaded (forking a threaded process is
@@ -101,7 +169,7 @@ def _pool_context() -> Any:
         return mp.get_context("fork")
     if "forkserver" in methods:
         ctx = mp.get_context("forkserver")
-        ctx.set_forkserver_preload(["fem_racket.cases"])
+        ctx.set_forkserver_preload(["fem_racket.studies.cases"])
         return ctx
     return mp.get_context("spawn")
 
@@ -116,21 +184,24 @@ def _processes(
 ) -> None:
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    with ProcessPoolExecutor(
-        max_workers=workers, mp_context=_pool_context(), initializer=pin_blas_threads
-    ) as pool:
+    pool = ProcessPoolExecutor(
+        max_workers=workers,
+        mp_context=_pool_context(),
+        initializer=_worker_init,
+        initargs=(os.getpid(),),
+    )
+    try:
         pending = {pool.submit(work, c, **kwargs): c for c in chunks}
-        try:
-            while pending:
-                finished, _ = wait(pending, return_when=FIRST_COMPLETED)
-                for fut in finished:
-                    chunk = pending.pop(fut)
-                    done(chunk, fut.result())
-                    bar.update(len(chunk))
-        except BaseException:
-            for fut in pending:
-                fut.cancel()
-            raise
+        while pending:
+            finished, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for fut in finished:
+                chunk = pending.pop(fut)
+                done(chunk, fut.result())
+                bar.update(len(chunk))
+    except BaseException:
+        _terminate(pool)
+        raise
+    pool.shutdown(wait=True)
 
 
 def _dask(
@@ -146,7 +217,7 @@ def _dask(
     try:
         client = Client(scheduler, timeout="10s", set_as_default=False)
     except OSError as exc:
-        raise InputError(f"scheduler = {scheduler!r} is not reachable: {exc}") from None
+        raise InputError(f"scheduler = {show(scheduler)} is not reachable: {exc}") from None
     try:
         log.info("dask: %d workers at %s", len(client.scheduler_info()["workers"]), scheduler)
         futures = client.map(partial(_pinned, work), list(chunks), pure=False, **kwargs)
@@ -157,7 +228,7 @@ def _dask(
             bar.update(len(chunk))
             fut.release()
     finally:
-        client.close()
+        client.close()  # the scheduler then drops every task of this sweep not yet run
 
 
 def run_chunks(

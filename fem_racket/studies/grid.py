@@ -39,9 +39,11 @@ from fem_racket.studies.limits import MAX_CASES, check_grid_size
 from fem_racket.validation import (
     InputError,
     check_choice,
+    check_elements,
     check_integer,
     check_positive,
     check_range,
+    show,
 )
 
 __all__ = ["PARAMETERS", "Parameter", "SweepSpec", "as_values", "parse_values"]
@@ -78,12 +80,7 @@ def _check_value(name: str, value: object) -> float | int:
     if name == "zeta":
         return check_range(name, value, 0.0, 1.0, include_high=False)
     if name == "elements":
-        number = check_positive(name, value)
-        if isinstance(value, bool) or not number.is_integer() or number > MAX_ELEMENTS:
-            raise InputError(
-                f"{name} = {value!r} is not allowed: must be an integer from 1 to {MAX_ELEMENTS}"
-            )
-        return int(number)
+        return check_elements(value, 2, MAX_ELEMENTS)  # the words of simulate's --elements
     return check_positive(name, value, "" if unit == "1" else unit)
 
 
@@ -101,19 +98,22 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
         if log:
             parts = parts[:-1]
         if len(parts) != 3:
-            raise InputError(f"{name} = {text!r} is not allowed: must be {form}")
+            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}")
         try:
             start, stop, num = float(parts[0]), float(parts[1]), float(parts[2])
         except ValueError:
-            raise InputError(f"{name} = {text!r} is not allowed: must be {form}") from None
+            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
         if not (num.is_integer() and 1 <= num <= MAX_CASES):
             raise InputError(
-                f"{name} = {text!r} is not allowed: num must be an integer from 1 to {MAX_CASES}"
+                f"{name} = {show(text)} is not allowed: num must be an integer from 1 to "
+                f"{MAX_CASES}"
             )
         if not (math.isfinite(start) and math.isfinite(stop)):
-            raise InputError(f"{name} = {text!r} is not allowed: start and stop must be finite")
+            raise InputError(f"{name} = {show(text)} is not allowed: start and stop must be finite")
         if log and (start <= 0.0 or stop <= 0.0):
-            raise InputError(f"{name} = {text!r} is not allowed: log spacing needs start, stop > 0")
+            raise InputError(
+                f"{name} = {show(text)} is not allowed: log spacing needs start, stop > 0"
+            )
         values = (np.geomspace if log else np.linspace)(start, stop, int(num))
         if log:  # geomspace ends are exact in recent numpy; make sure
             values[0], values[-1] = start, stop
@@ -121,7 +121,7 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
     try:
         numbers = [float(v) for v in text.split(",")]
     except ValueError:
-        raise InputError(f"{name} = {text!r} is not allowed: must be {form}") from None
+        raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
     if len(numbers) == 1:
         return as_values(name, numbers[0])
     return as_values(name, numbers)
@@ -132,7 +132,7 @@ def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
     string (see :func:`parse_values`) or a sequence (swept; a 1-D array of distinct values)."""
     if name not in PARAMETERS:
         raise InputError(
-            f"parameter = {name!r} is not allowed: must be one of {', '.join(PARAMETERS)}"
+            f"parameter = {show(name)} is not allowed: must be one of {', '.join(PARAMETERS)}"
         )
     if value is None:
         return None
@@ -141,11 +141,11 @@ def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
     if np.ndim(value) == 0:
         return _check_value(name, value)
     if np.ndim(value) != 1 or len(value) == 0:
-        raise InputError(f"{name} = {value!r} is not allowed: must be a number or a 1-D list")
+        raise InputError(f"{name} = {show(value)} is not allowed: must be a number or a 1-D list")
     checked = [_check_value(name, v) for v in value]
     arr = np.array(checked, dtype=np.int64 if name == "elements" else float)
     if np.unique(arr).size != arr.size:
-        raise InputError(f"{name} = {arr.tolist()} is not allowed: values must be distinct")
+        raise InputError(f"{name} = {show(arr.tolist())} is not allowed: values must be distinct")
     return arr
 
 
@@ -160,7 +160,7 @@ def _frame_description(frame: Frame | FrameMesh | None) -> dict[str, Any]:
         for arr in (frame.points, frame.EI, frame.rhoA):
             h.update(np.ascontiguousarray(arr, dtype=float).tobytes())
         return {"frame": f"mesh of {frame.n_elements} elements, sha256 {h.hexdigest()[:16]}"}
-    raise InputError(f"frame = {frame!r} is not allowed: must be a Frame, a FrameMesh or None")
+    raise InputError(f"frame = {show(frame)} is not allowed: must be a Frame, a FrameMesh or None")
 
 
 @dataclass(frozen=True, eq=False)
@@ -225,7 +225,7 @@ class SweepSpec:
                     np.ndim(values["elements"]) == 1 or values["elements"] != frame.n_elements
                 ):
                     raise InputError(
-                        f"elements = {given!r} is not allowed with a mesh: it has "
+                        f"elements = {show(given)} is not allowed with a mesh: it has "
                         f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
@@ -240,7 +240,7 @@ class SweepSpec:
         check_choice("basis", spec.basis, ("modal", "physical"))
         if spec.solver == "exact" and spec.basis != "modal":
             raise InputError(
-                f"basis = {spec.basis!r} is not allowed with solver 'exact': must be 'modal'"
+                f"basis = {show(spec.basis)} is not allowed with solver 'exact': must be 'modal'"
             )
         if spec.modes is not None:
             check_integer("modes", spec.modes)

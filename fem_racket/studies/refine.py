@@ -30,7 +30,7 @@ from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.impact.simulate import simulate
 from fem_racket.progress import progress_bar
-from fem_racket.validation import InputError, check_choice, check_integer, check_range
+from fem_racket.validation import InputError, check_choice, check_integer, check_range, show
 
 __all__ = [
     "DEFAULT_ELEMENTS",
@@ -195,14 +195,14 @@ def _check_elements(elements: Sequence[int]) -> np.ndarray:
     try:
         counts = [int(n) for n in elements]
     except (TypeError, ValueError):
-        raise InputError(f"elements = {elements!r} is not allowed: {allowed}") from None
+        raise InputError(f"elements = {show(elements)} is not allowed: {allowed}") from None
     bad = [
         n
         for n, e in zip(counts, elements, strict=True)
         if not 1 <= n <= MAX_ELEMENTS or isinstance(e, bool) or n != e
     ]
     if not counts or bad:
-        raise InputError(f"elements = {list(elements)!r} is not allowed: {allowed}")
+        raise InputError(f"elements = {show(list(elements))} is not allowed: {allowed}")
     return np.unique(counts)
 
 
@@ -259,7 +259,7 @@ def refinement_study(
     if isinstance(frame, FrameMesh):
         frame = frame_from_mesh(frame)
     if not isinstance(frame, Frame):
-        raise InputError(f"frame = {frame!r} is not allowed: must be a Frame or a FrameMesh")
+        raise InputError(f"frame = {show(frame)} is not allowed: must be a Frame or a FrameMesh")
     n_seg = len(frame.segments)
     skipped = tuple(int(n) for n in counts if n < n_seg)
     if skipped:
@@ -267,7 +267,7 @@ def refinement_study(
     counts = counts[counts >= n_seg]
     if counts.size == 0:
         raise InputError(
-            f"elements = {list(elements)!r} is not allowed: need a count >= {n_seg} "
+            f"elements = {show(list(elements))} is not allowed: need a count >= {n_seg} "
             f"(one per segment)"
         )
     exact = free_free_frequencies(frame, n_modes)

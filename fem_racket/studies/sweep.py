@@ -237,52 +237,62 @@ def sweep(
     ckpt = None
     if output is not None:
         output = check_output_path(output, overwrite=overwrite)
-        if restart:
-            Checkpoint.discard(output)
-        ckpt = Checkpoint(output, spec.digest, spec.describe(), spec.size, n_vars)
-        done, values = ckpt.load()
-    todo = np.flatnonzero(~done)
-    log.info(
-        "sweep of %d impacts over %s: %d from the checkpoint, %d to compute",
-        spec.size,
-        ", ".join(spec.dims) or "no dimension",
-        spec.size - todo.size,
-        todo.size,
-    )
-
-    def finished(chunk: np.ndarray, result: np.ndarray) -> None:
-        values[chunk] = result
+        ckpt = Checkpoint(output, spec.digest, spec.describe(), spec.size, n_vars, restart=restart)
+    try:
         if ckpt is not None:
-            ckpt.save(chunk, result)
+            done, values = ckpt.load()
+        todo = np.flatnonzero(~done)
+        log.info(
+            "sweep of %d impacts over %s: %d from the checkpoint, %d to compute",
+            spec.size,
+            ", ".join(spec.dims) or "no dimension",
+            spec.size - todo.size,
+            todo.size,
+        )
 
-    if backend is None:
-        small = spec.solver == "exact" and todo.size < SERIAL_BELOW
-        backend = "dask" if scheduler is not None else ("serial" if small else "processes")
-    n_workers = workers or (os.cpu_count() or 1)
-    size = chunk_size or _chunk_size(spec, todo.size, 1 if backend == "serial" else n_workers)
-    run_chunks(
-        run_chunk,
-        chunks(todo, size),
-        finished,
-        kwargs={"spec": spec},
-        backend=backend,
-        workers=workers,
-        scheduler=scheduler,
-        progress=progress,
-        total=spec.size,
-        initial=spec.size - todo.size,
-    )
-    ds = _dataset(spec, values)
-    ds.attrs["backend"] = backend
-    failed = int(np.count_nonzero(np.isnan(values[:, 0])))
-    ds.attrs["failed_cases"] = failed
-    if parameters:
-        ds.attrs["run_parameters"] = json.dumps(parameters, sort_keys=True, default=str)
-    if failed:
-        log.warning("%d of %d cases failed: NaN in the dataset", failed, spec.size)
-    if output is not None:
-        with atomic_output(Path(output), overwrite=overwrite) as tmp:
-            ds.to_netcdf(tmp)
-        ckpt.remove()
-        log.info("wrote %s", output)
+        def finished(chunk: np.ndarray, result: np.ndarray) -> None:
+            values[chunk] = result
+            if ckpt is not None:
+                ckpt.save(chunk, result)
+
+        if backend is None:
+            small = spec.solver == "exact" and todo.size < SERIAL_BELOW
+            backend = "dask" if scheduler is not None else ("serial" if small else "processes")
+        n_workers = workers or (os.cpu_count() or 1)
+        size = chunk_size or _chunk_size(spec, todo.size, 1 if backend == "serial" else n_workers)
+        run_chunks(
+            run_chunk,
+            chunks(todo, size),
+            finished,
+            kwargs={"spec": spec},
+            backend=backend,
+            workers=workers,
+            scheduler=scheduler,
+            progress=progress,
+            total=spec.size,
+            initial=spec.size - todo.size,
+        )
+        ds = _dataset(spec, values)
+        ds.attrs["backend"] = backend
+        failed = int(np.count_nonzero(np.isnan(values[:, 0])))
+        ds.attrs["failed_cases"] = failed
+        if parameters:
+            ds.attrs["run_parameters"] = json.dumps(parameters, sort_keys=True, default=str)
+        if failed:
+            log.warning("%d of %d cases failed: NaN in the dataset", failed, spec.size)
+        if output is not None:
+            with atomic_output(Path(output), overwrite=overwrite) as tmp:
+                ds.to_netcdf(tmp)
+            ckpt.remove()
+            log.info("wrote %s", output)
+    except BaseException as exc:
+        if ckpt is not None and ckpt.cases:
+            exc.add_note(
+                f"the checkpoint '{ckpt.folder}' holds {ckpt.cases} of {spec.size} cases: "
+                "rerun the same command to resume"
+            )
+        raise
+    finally:
+        if ckpt is not None:
+            ckpt.close()
     return ds

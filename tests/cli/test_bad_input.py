@@ -56,6 +56,7 @@ def repro(*argv: str) -> list[str]:
     return ["reproduce", "--quick", *argv]
 
 
+ELEMENTS_ZERO = "elements = 0 is not allowed: must be an integer from 2 to 50000"
 A_FILE = {"afile": "not a folder"}  # a regular file where an output folder should go
 
 
@@ -134,6 +135,20 @@ SWEEP_CASES = [
     Case("sweep-repeated-values", sweep("--speed", "20,20"), ("speed = [20.0, 20.0]", "distinct")),
     Case("sweep-zeta-one", sweep("--zeta", "0.5,1"), ("zeta = 1", "[0, 1)")),
     Case("sweep-elements-fraction", sweep("--elements", "10.5"), ("elements = 10.5", "integer")),
+    # The same words as simulate's --elements (before: "finite number > 0", "np.float64(0.0)").
+    Case("sweep-elements-zero", sweep("--elements", "0"), (ELEMENTS_ZERO,)),
+    Case("sweep-elements-range-from-zero", sweep("--elements", "0:10:3"), (ELEMENTS_ZERO,)),
+    Case("simulate-elements-zero", sim("--elements", "0"), (ELEMENTS_ZERO,)),
+    Case(
+        "sweep-range-underflows-to-zero",
+        sweep("--speed", "1e-400:3:2"),
+        ("speed = 0.0 m/s is not allowed",),
+    ),
+    Case(
+        "sweep-long-list-shortened",
+        sweep("--position", ",".join(["0.5"] * 80)),
+        ("position = [0.5, 0.5,", "... (80 values)] is not allowed", "distinct"),
+    ),
     Case(
         "sweep-scheduler-form",
         ["sweep", "--quiet", "--scheduler", "localhost:8786"],
@@ -144,13 +159,13 @@ SWEEP_CASES = [
     Case(
         "sweep-out-exists",
         sweep("--out", "old.nc"),
-        ("output = 'old.nc' already exists", "--overwrite"),
+        ("out = 'old.nc'", "already exists", "--overwrite"),
         {"old.nc": "mine"},
     ),
     Case(
         "sweep-out-unwritable",
         sweep("--out", "afile/s.nc"),
-        ("output folder = 'afile'", "must be a folder you can write to"),
+        ("out = 'afile/s.nc'", "cannot be created: 'afile' is a file"),
         A_FILE,
     ),
     Case(
@@ -163,7 +178,8 @@ SWEEP_CASES = [
 
 VTK_CASES = [
     Case("vtk-unknown-field", vtk("--field", "stress"), ("field = 'stress'", "must be one of")),
-    Case("vtk-negative-scale", vtk("--scale", "-1"), ("scale = -1", "> 0")),
+    Case("vtk-negative-scale", vtk("--scale", "-1"), ("scale = -1", "(0, 1e+06]")),
+    Case("vtk-huge-scale", vtk("--scale", "1e300"), ("scale = 1e+300", "(0, 1e+06]")),
     Case("vtk-frames-one", vtk("--frames", "1"), ("frames = 1", ">= 2")),
     Case("vtk-subdivide-zero", vtk("--subdivide", "0"), ("subdivide = 0", ">= 1")),
     Case("vtk-output-step-zero", vtk("--output-step", "0"), ("output_step = 0", "> 0")),
@@ -171,42 +187,43 @@ VTK_CASES = [
     Case(
         "vtk-out-unwritable",
         vtk("--out", "afile/vtk"),
-        ("output folder = ", "afile", "must be a folder you can write to"),
+        ("out = 'afile/vtk'", "cannot be created: 'afile' is a file"),
         A_FILE,
     ),
     Case(
-        "vtk-out-is-a-file", vtk("--out", "afile"), ("output = 'afile' is a file", "folder"), A_FILE
+        "vtk-out-is-a-file", vtk("--out", "afile"), ("out = 'afile'", "is a file", "folder"), A_FILE
     ),
     Case(
         "vtk-out-exists",
         vtk("--out", "old"),
-        ("output = 'old' already exists", "--overwrite"),
+        ("out = 'old'", "already exists", "--overwrite"),
         {"old/provenance.json": "{}"},
     ),
     Case(
         "vtk-overwrite-foreign-folder",
         vtk("--out", "mine", "--overwrite"),
-        ("output = 'mine'", "without 'provenance.json'", "refusing"),
+        ("out = 'mine'", "without 'provenance.json'", "refusing"),
         {"mine/notes.txt": "precious"},
     ),
     Case("anim-unknown-field", anim("--field", "heat"), ("field = 'heat'", "must be one of")),
-    Case("anim-negative-scale", anim("--scale", "-10"), ("scale = -10", "> 0")),
+    Case("anim-negative-scale", anim("--scale", "-10"), ("scale = -10", "(0, 1e+06]")),
     Case("anim-frames-one", anim("--frames", "1"), ("frames = 1", ">= 2")),
-    Case("anim-bad-suffix", anim("--out", "a.avi"), ("output = 'a.avi'", ".gif or .mp4")),
-    Case("anim-fps-zero", anim("--fps", "0"), ("fps = 0", "(0, 100]")),
-    Case("anim-fps-nan", anim("--fps", "nan"), ("fps = nan", "(0, 100]")),
+    Case("anim-bad-suffix", anim("--out", "a.avi"), ("out = 'a.avi'", ".gif or .mp4")),
+    Case("anim-fps-zero", anim("--fps", "0"), ("fps = 0", "[0.01, 100]")),
+    Case("anim-fps-tiny", anim("--fps", "0.001"), ("fps = 0.001", "[0.01, 100]")),
+    Case("anim-fps-nan", anim("--fps", "nan"), ("fps = nan", "finite")),
     Case("anim-size-not-16", anim("--size", "170x160"), ("size = (170, 160)", "multiple of 16")),
     Case("anim-size-form", anim("--size", "big"), ("--size", "WIDTHxHEIGHT")),
     Case(
         "anim-out-unwritable",
         anim("--out", "afile/a.gif"),
-        ("output folder = 'afile'", "must be a folder you can write to"),
+        ("out = 'afile/a.gif'", "cannot be created: 'afile' is a file"),
         A_FILE,
     ),
     Case(
         "anim-sidecar-exists",
         anim("--out", "a.gif"),
-        ("output = 'a.gif.json' already exists", "--overwrite"),
+        ("out = 'a.gif.json'", "already exists", "--overwrite"),
         {"a.gif.json": "{}"},
     ),
 ]
@@ -243,13 +260,13 @@ REFINE_CASES = [
     Case(
         "refine-csv-exists",
         refine("--csv", "r.csv"),
-        ("output = 'r.csv' already exists", "--overwrite"),
+        ("csv = 'r.csv'", "already exists", "--overwrite"),
         {"r.csv": "mine"},
     ),
     Case(
         "refine-plot-unwritable",
         refine("--plot", "afile/r.png"),
-        ("output folder = 'afile'", "must be a folder you can write to"),
+        ("plot = 'afile/r.png'", "cannot be created: 'afile' is a file"),
         A_FILE,
     ),
 ]
@@ -258,19 +275,19 @@ REPRODUCE_CASES = [
     Case(
         "reproduce-out-unwritable",
         repro("--out", "afile/paper"),
-        ("output folder = 'afile/paper'", "must be a folder you can write to"),
+        ("out = 'afile/paper/", "cannot be created: 'afile' is a file"),
         A_FILE,
     ),
     Case(
         "reproduce-report-unwritable",
         repro("--report", "afile/R.md"),
-        ("output folder = 'afile'", "must be a folder you can write to"),
+        ("report = 'afile/R.md'", "cannot be created: 'afile' is a file"),
         A_FILE,
     ),
     Case(
         "reproduce-report-exists",
         repro(),
-        ("output = 'REPRODUCTION.md' already exists", "--overwrite"),
+        ("report = 'REPRODUCTION.md'", "already exists", "--overwrite"),
         {"REPRODUCTION.md": "mine"},
     ),
 ]
@@ -279,13 +296,13 @@ OUTPUT_CASES = [
     Case(
         "out-under-a-regular-file",
         sim("--out", "afile/result.json"),
-        ("output folder = 'afile'", "must be a folder you can write to"),
+        ("out = 'afile/result.json'", "cannot be created: 'afile' is a file"),
         {"afile": "not a folder"},
     ),
     Case(
         "out-exists",
         sim("--out", "old.json"),
-        ("output = 'old.json' already exists", "--overwrite"),
+        ("out = 'old.json'", "already exists", "--overwrite"),
         {"old.json": "{}"},
     ),
     Case(
@@ -293,12 +310,12 @@ OUTPUT_CASES = [
         sim("--out", "new/deeper/r.json", "--t-max", "1e-4"),
         ("t_max = 0.0001 s", "raise t_max"),
     ),
-    Case("out-is-a-folder", sim("--out", ".", "--overwrite"), ("output = '.'", "must be a file")),
-    Case("out-bad-suffix", sim("--out", "r.txt"), ("output = 'r.txt'", ".json or .csv")),
+    Case("out-is-a-folder", sim("--out", ".", "--overwrite"), ("out = '.'", "must be a file")),
+    Case("out-bad-suffix", sim("--out", "r.txt"), ("out = 'r.txt'", ".json or .csv")),
     Case(
         "out-csv-sidecar-exists",
         sim("--out", "r.csv"),
-        ("output = 'r.csv.json' already exists", "--overwrite"),
+        ("out = 'r.csv.json'", "already exists", "--overwrite"),
         {"r.csv.json": "{}"},
     ),
     Case(
@@ -443,6 +460,11 @@ TOML_CASES = [
         toml("[frame]\nsegments = [{length_m=0.7, ei_n_m2=150, rhoa_kg_m=0.5}]\n", "--ei1", "9"),
         ("--ei1 cannot be combined with frame.segments",),
     ),
+    T(  # before: elements silently ignored (the command line refuses --mesh with --elements)
+        "toml-mesh-with-elements",
+        toml("[frame]\nmesh = 'racket.vtu'\nelements = 40\n"),
+        ("frame.elements = 40 is not allowed with frame.mesh", "remove one of them"),
+    ),
     T(
         "toml-missing-mesh",
         toml("[frame]\nmesh = 'meshes/none.vtu'\n"),
@@ -481,7 +503,7 @@ TOML_CASES = [
     T(
         "toml-animate-bad-suffix",
         toml("[animate]\nout = 'a.avi'\n", command="animate"),
-        ("output = 'a.avi'", ".gif or .mp4"),
+        ("out = 'a.avi'", ".gif or .mp4"),
     ),
     T(
         "toml-animate-size-array",
@@ -567,6 +589,11 @@ BAD_MESHES = [
     ),
     ("mesh-EI-nan", _mesh([0, 0.68], [[0, 1]], EI=[np.nan]), ("EI = nan", "finite")),
     ("mesh-unreadable", _garbage, ("could not be read",)),
+    (  # before: silently mirrored (the grip taken at the smallest x, the tip's end)
+        "mesh-negative-x",
+        _mesh([-0.68, -0.3, 0], [[0, 1], [1, 2]]),
+        ("x runs from -0.68 to 0 m", "must be >= 0", "mirror the file"),
+    ),
 ]
 
 #: How a bad mesh reaches each command: a run file, or --mesh.

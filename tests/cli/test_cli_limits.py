@@ -35,6 +35,24 @@ def test_limits_refused_at_once(capsys, tmp_path, monkeypatch, argv, message):
     assert time.perf_counter() - t0 < 2.0
 
 
+@pytest.mark.parametrize(
+    ("option", "message"),
+    [
+        (["--t-max", "11"], "t_max = 11.0 s is not allowed"),
+        (["--kcb", "1e-6"], "kcb = 1e-06 N/m is not allowed"),
+    ],
+)
+def test_output_times_limit_names_the_option_given(tmp_path, monkeypatch, capsys, option, message):
+    # Issue 12: refused with an error about output_step, which the user never gave. With --out
+    # (histories written) the limit names what makes the output times so many; without it no
+    # history is kept, so nothing limits the run.
+    monkeypatch.chdir(tmp_path)
+    assert main(["simulate", *option, "--out", "r.json"]) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1 and list(tmp_path.iterdir()) == []
+    assert main(["simulate", *option]) == 0
+
+
 def test_run_file_elements_limit(tmp_path, capsys):
     # Issue 12: elements = 100000000 in a run file grew to 24 GB and was killed.
     run = tmp_path / "run.toml"

@@ -6,6 +6,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -57,3 +59,41 @@ def test_shell_pipe_into_head(tmp_path):
     lines = res.stdout.splitlines()
     assert lines[0].startswith("mass") and lines[1] in ("rc=0", "rc=141")
     assert res.stderr == ""
+
+
+def _run_with_stdout(argv: list[str], cwd: Path, stdout) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "fem_racket", *argv],
+        stdout=stdout,
+        stderr=subprocess.PIPE,
+        text=True,
+        cwd=cwd,
+        env=_env(),
+        timeout=120,
+    )
+
+
+def test_closed_stdout_is_refused_before_any_work(tmp_path):
+    # `fem-racket modes >&-`: before, an AttributeError traceback.
+    cmd = f"{sys.executable} -m fem_racket simulate --out r.json >&-"
+    res = subprocess.run(
+        ["bash", "-c", cmd], capture_output=True, text=True, cwd=tmp_path, env=_env(), timeout=120
+    )
+    assert res.returncode == 2
+    assert res.stderr == (
+        "fem-racket: error: standard output is closed: give it a file, a pipe or /dev/null "
+        "(> /dev/null)\n"
+    )
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full here")
+@pytest.mark.parametrize("argv", [["modes"], ["simulate", "--json"], ["config", "--example"]])
+def test_stdout_on_a_full_device_is_one_line_exit_1(tmp_path, argv):
+    with open("/dev/full", "w") as full:
+        res = _run_with_stdout(argv, tmp_path, full)
+    assert res.returncode == 1
+    assert (
+        res.stderr
+        == "fem-racket: error: cannot write to standard output: No space left on device\n"
+    )

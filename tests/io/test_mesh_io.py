@@ -38,7 +38,7 @@ def _write_raw(path, x, cells, cell_data=None, y=None):
     return path
 
 
-@pytest.mark.parametrize("suffix", [".vtu", ".vtk", ".msh"])
+@pytest.mark.parametrize("suffix", [".vtu", ".vtk", ".msh", ".xdmf"])  # .xdmf needs h5py
 def test_round_trip(tmp_path, suffix):
     mesh = graded_mesh(standard_frame(), 17, 3.0, extra_points=(0.769,))
     path = write_mesh(mesh, tmp_path / f"frame{suffix}")

@@ -191,3 +191,12 @@ def test_bad_input_leaves_nothing(result, tmp_path):
         with pytest.raises(InputError):
             write_vtk_series(result, tmp_path / "out", **kwargs)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_vtu_files_are_the_bytes_pyvista_would_write(result, export, tmp_path):
+    # Written by Python from VTK's in-memory output (so a full disk is an OSError, not a crash
+    # inside VTK): the same file as pyvista's own save, byte for byte.
+    folder, _ = export
+    series = impact_series(result, subdivide=6)
+    series.ball_grid(3).save(tmp_path / "ball.vtu")
+    assert (folder / "ball_0003.vtu").read_bytes() == (tmp_path / "ball.vtu").read_bytes()

@@ -207,7 +207,7 @@ def test_bad_scheduler_and_options():
 
 def test_refuses_a_different_checkpoint(tmp_path):
     out = tmp_path / "x.nc"
-    Checkpoint(out, "another-sweep", {}, 4, len(VARIABLES))
+    Checkpoint(out, "another-sweep", {}, 4, len(VARIABLES)).close()
     with pytest.raises(InputError, match="different sweep"):
         sweep(position=[0.6, 0.7], output=out, progress=False)
     ds = sweep(position=[0.6, 0.7], output=out, restart=True, progress=False)

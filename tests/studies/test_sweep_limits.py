@@ -50,7 +50,7 @@ def test_sweep_and_simulate_agree_on_rigidity():
 
 
 def test_sweep_elements_and_tolerances_checked_up_front():
-    with pytest.raises(InputError, match=f"elements = 100000000 .*from 1 to {MAX_ELEMENTS}"):
+    with pytest.raises(InputError, match=f"elements = 100000000 .*from 2 to {MAX_ELEMENTS}"):
         sweep(elements=[20, 100000000], progress=False)
     with pytest.raises(InputError, match=r"rtol = 1 is not allowed: must lie in \[1e-12, 1e-06\]"):
         sweep(solver="cvode", rtol=1, progress=False)

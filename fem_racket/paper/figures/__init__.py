@@ -17,6 +17,7 @@ from fem_racket.paper.figures.base import (
     used_settings,
     write_csv,
     write_figure,
+    write_figure_into,
 )
 from fem_racket.paper.figures.histories import FIG_05, FIG_06, FIG_07
 from fem_racket.paper.figures.inputs import FIG_02_03, FIG_04
@@ -33,6 +34,7 @@ __all__ = [
     "used_settings",
     "write_csv",
     "write_figure",
+    "write_figure_into",
 ]
 
 #: Every figure, in the paper's order.
@@ -80,13 +82,12 @@ def make_figure(
     -------
     (FigureData, list of Path)
     """
-    from fem_racket.outputs import check_output_path
+    from fem_racket.outputs import check_targets
     from fem_racket.validation import check_choice
 
     spec = FIGURES[check_choice("figure", key, FIGURES)]
     check_dpi(dpi)
-    for p in expected_files(spec, out_dir, fmt):
-        check_output_path(p, overwrite=overwrite)
+    check_targets(expected_files(spec, out_dir, fmt), overwrite=overwrite)
     from fem_racket.outputs import provenance
 
     data = spec.compute(quick)

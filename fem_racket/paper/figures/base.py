@@ -17,8 +17,8 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.io.figure_files import DEFAULT_DPI, check_figure_format, save_figure
-from fem_racket.outputs import atomic_output, check_output_path, provenance
+from fem_racket.io.figure_files import DEFAULT_DPI, check_figure_format, same_image, save_figure
+from fem_racket.outputs import atomic_output, atomic_outputs, provenance
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 
 __all__ = [
@@ -28,6 +28,7 @@ __all__ = [
     "used_settings",
     "write_csv",
     "write_figure",
+    "write_figure_into",
 ]
 
 log = logging.getLogger(__name__)
@@ -60,17 +61,22 @@ def write_csv(
     path: str | os.PathLike, columns: Mapping[str, np.ndarray], *, overwrite: bool = False
 ) -> Path:
     """Write equal-length ``columns`` (name with unit -> values) as CSV with a header row."""
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        _write_table(tmp, columns, Path(path).name)
+    return Path(path)
+
+
+def _write_table(path: Path, columns: Mapping[str, np.ndarray], label: str) -> None:
     names = list(columns)
     arrays = [np.asarray(columns[n]) for n in names]
     lengths = {a.shape for a in arrays}
     if len(lengths) != 1 or len(next(iter(lengths))) != 1:
-        raise ValueError(f"columns of {path} must be 1-D arrays of one length, got {lengths}")
-    with atomic_output(path, overwrite=overwrite) as tmp, open(tmp, "w", newline="") as fh:
+        raise ValueError(f"columns of {label} must be 1-D arrays of one length, got {lengths}")
+    with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(names)
         for row in zip(*arrays, strict=True):
             w.writerow([_fmt(v) for v in row])
-    return Path(path)
 
 
 def _fmt(v: object) -> str:
@@ -90,30 +96,48 @@ def write_figure(
     dpi: float = DEFAULT_DPI,
     keep_unchanged: bool = False,
 ) -> list[Path]:
-    """Write the tables and the figure of ``data`` into ``out_dir``; returns the paths written.
+    """Write the tables and the figure of ``data`` into ``out_dir``, all or none; returns the
+    paths.
 
     The figure (``fmt``: png, svg or pdf; ``dpi`` [dots per inch]) carries the provenance
     ``meta`` (:func:`fem_racket.outputs.provenance`; by default one naming the figure). With
     ``keep_unchanged`` an existing PNG whose image would not change is left as it is."""
+    paths = expected_files(spec, out_dir, fmt)
+    with atomic_outputs(paths, overwrite=overwrite) as temps:
+        write_figure_into(spec, data, temps, paths, meta, dpi=dpi, keep_unchanged=keep_unchanged)
+    log.info("wrote %s", ", ".join(p.name for p in paths))
+    return paths
+
+
+def write_figure_into(
+    spec: FigureSpec,
+    data: FigureData,
+    temps: list[Path],
+    targets: list[Path],
+    meta: Mapping[str, Any] | None = None,
+    *,
+    dpi: float = DEFAULT_DPI,
+    keep_unchanged: bool = False,
+) -> None:
+    """Write the tables and the figure of ``data`` to ``temps``, the temporaries of a caller's
+    :func:`fem_racket.outputs.atomic_outputs` for ``targets`` (in the order of
+    :func:`expected_files`; no checks here). With ``keep_unchanged`` the figure's temporary is
+    removed when the existing target PNG holds the same image, so that it is left as it is."""
     from fem_racket.paper import plots
     from fem_racket.paper.plots.common import pyplot
 
-    paths = expected_files(spec, out_dir, fmt)
-    for p in paths:
-        check_output_path(p, overwrite=overwrite)
-    for table, path in zip(spec.tables, paths, strict=False):
-        write_csv(path, data.tables[table], overwrite=overwrite)
+    for table, path in zip(spec.tables, temps[:-1], strict=True):
+        _write_table(path, data.tables[table], f"{spec.name}_{table}.csv")
     fig = getattr(plots, spec.plot)(data)
     try:
         save_figure(
-            fig,
-            paths[-1],
-            meta or provenance({"figure": spec.name}),
-            dpi=dpi,
-            overwrite=overwrite,
-            keep_unchanged=keep_unchanged,
+            fig, temps[-1], meta or provenance({"figure": spec.name}), dpi=dpi, overwrite=True
         )
     finally:
         pyplot().close(fig)
-    log.info("wrote %s", ", ".join(p.name for p in paths))
-    return paths
+    if (
+        keep_unchanged
+        and temps[-1].suffix == ".png"
+        and same_image(targets[-1], temps[-1].read_bytes())
+    ):
+        temps[-1].unlink()

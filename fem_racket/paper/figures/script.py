@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from fem_racket.io.figure_files import DEFAULT_DPI, FIGURE_FORMATS
+from fem_racket.outputs import OutputError
 from fem_racket.validation import InputError
 
 __all__ = ["figure_main"]
@@ -23,7 +24,9 @@ def figure_main(
     """Run figure ``key`` with options ``--out DIR --quick --overwrite --format --dpi``; return
     the files. ``runtime`` (e.g. ``"~3 s here; --quick ~2 s"``) ends the ``--help`` text.
 
-    Bad input prints one line on stderr and exits with code 2.
+    Bad input (a destination that cannot be written included) prints one line on stderr and
+    exits with code 2; an output that cannot be written during the run (a full disk) one line
+    and code 1, nothing left behind.
     """
     from fem_racket.paper.figures import make_figure
 
@@ -62,6 +65,9 @@ def figure_main(
     except InputError as exc:
         print(f"{Path(sys.argv[0]).name}: error: {exc}", file=sys.stderr)
         raise SystemExit(2) from None
+    except OutputError as exc:
+        print(f"{Path(sys.argv[0]).name}: error: {exc.strerror}", file=sys.stderr)
+        raise SystemExit(1) from None
     for p in paths:
         print(p)
     return paths

@@ -1,0 +1,248 @@
+"""Faults while writing: every output all-or-nothing, one line naming the path and the reason.
+
+Class by class (issue 12, item 3): destinations checked before the work (exit 2), names too long
+for the file system, temporary names that never exceed the limit, temporaries of killed runs
+removed by the next run, sets of files moved into place together (old outputs kept), and a full
+disk during the run (exit 1, nothing left behind). The full disk is a small tmpfs where the
+machine lets the tests mount one (root on Linux), else skipped; the same paths are covered
+without mounting by an ``OSError(ENOSPC)`` injected at the write.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from fem_racket import InputError
+from fem_racket.cli import main
+from fem_racket.outputs import (
+    OutputError,
+    Target,
+    atomic_output,
+    atomic_outputs,
+    check_output_path,
+)
+
+NAME_MAX = os.pathconf("/", "PC_NAME_MAX") if hasattr(os, "pathconf") else 255
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def listing(folder: Path) -> list[str]:
+    return sorted(str(p.relative_to(folder)) for p in folder.rglob("*"))
+
+
+# -- bad destinations, found before any work (exit 2) ----------------------------------------
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux's /proc")
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["simulate", "--out", "/proc/x.json"],
+        ["simulate", "--out", "/proc/x.csv"],
+        ["sweep", "--serial", "--quiet", "--out", "/proc/x.nc"],
+        ["refine", "--family", "uniform", "--elements", "5", "--plot", "/proc/x.png"],
+        ["animate", "--out", "/proc/x.gif"],
+        ["export-vtk", "--out", "/proc/vtk"],
+        ["reproduce", "--quick", "--out", "paper", "--report", "/proc/R.md"],
+        ["config", "--example", "--out", "/proc/x.toml"],
+    ],
+    ids=lambda a: a[0] + ":" + a[-1],
+)
+def test_a_folder_that_takes_no_file_is_refused_before_the_work(
+    capsys, tmp_path, monkeypatch, argv
+):
+    # /proc's permission bits say root may write: only creating a file tells the truth.
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, *argv)
+    assert code == 2, err
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert "cannot create a file in '/proc'" in err and f"= '{argv[-1]}'" in err
+    assert listing(tmp_path) == []
+
+
+def test_a_name_longer_than_the_file_system_allows_is_refused(capsys, tmp_path):
+    long = "a" * (NAME_MAX + 5)
+    for argv in (["simulate", "--out", tmp_path / f"{long}.json"],
+                 ["simulate", "--out", tmp_path / long / "r.json"],
+                 ["export-vtk", "--out", tmp_path / long]):  # fmt: skip
+        code, _, err = run(capsys, *argv)
+        assert code == 2 and err.count("\n") == 1, err
+        assert "bytes long: at most" in err and "..." in err  # the long name is shortened
+    assert listing(tmp_path) == []
+
+
+def test_the_temporary_name_of_the_longest_allowed_name_fits(tmp_path):
+    # Before: the temporary was 15 bytes longer than the name checked, so the longest names failed
+    for stem in ("b" * (NAME_MAX - 5), "\u00e9" * ((NAME_MAX - 5) // 2)):  # 2-byte characters
+        path = tmp_path / f"{stem}.json"
+        with atomic_output(path) as tmp:
+            assert len(os.fsencode(tmp.name)) <= NAME_MAX
+            tmp.write_text("{}")
+        assert path.read_text() == "{}"
+        path.unlink()
+
+
+def test_library_check_names_the_option(tmp_path):
+    (tmp_path / "x.csv").write_text("old")
+    with pytest.raises(InputError, match=r"^csv = '.*x\.csv' is not allowed: it already exists"):
+        check_output_path(tmp_path / "x.csv", name="csv")
+
+
+# -- temporaries of killed runs ---------------------------------------------------------------
+def _dead_pid() -> int:
+    proc = subprocess.Popen([sys.executable, "-c", "pass"])
+    proc.wait()
+    return proc.pid
+
+
+def test_the_next_run_removes_temporaries_of_a_killed_run(tmp_path):
+    path = tmp_path / "r.json"
+    dead, alive = _dead_pid(), os.getppid()
+    stale = tmp_path / f".r.json.{dead}-0123abcd.part.json"
+    stale_dir = tmp_path / f".r.json.{dead}-89abcdef.old.json"
+    other_run = tmp_path / f".r.json.{alive}-0123abcd.part.json"  # a run still going: kept
+    unrelated = tmp_path / f".r.json.x.{dead}-0123abcd.part.json"  # another target's: kept
+    for p in (stale, other_run, unrelated):
+        p.write_text("{")
+    stale_dir.mkdir()
+    with atomic_output(path) as tmp:
+        tmp.write_text("{}")
+    assert listing(tmp_path) == sorted(p.name for p in (path, other_run, unrelated))
+
+
+def test_export_killed_by_sigkill_leaves_a_part_folder_the_next_run_removes(tmp_path):
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[2]))
+    argv = [
+        sys.executable,
+        "-m",
+        "fem_racket",
+        "export-vtk",
+        "--out",
+        "vtk",
+        "--output-step",
+        "5e-7",
+    ]
+    proc = subprocess.Popen(argv, cwd=tmp_path, env=env, stderr=subprocess.DEVNULL)
+    try:
+        start = time.monotonic()
+        while not any(p.name.startswith(".vtk.") for p in tmp_path.iterdir()):
+            assert time.monotonic() - start < 60 and proc.poll() is None, "no temporary"
+            time.sleep(0.01)
+        proc.kill()
+    finally:
+        proc.wait()
+    assert [p.name.endswith(".part") for p in tmp_path.iterdir()] == [True]
+    code = main(["export-vtk", "--out", str(tmp_path / "vtk"), "--frames", "3"])
+    assert code == 0
+    assert listing(tmp_path)[0] == "vtk" and all(not n.startswith(".") for n in listing(tmp_path))
+
+
+# -- sets of outputs ------------------------------------------------------------------------------
+def test_a_set_moves_into_place_together_and_a_failure_keeps_every_old_file(tmp_path, monkeypatch):
+    a, b = tmp_path / "a.csv", tmp_path / "a.csv.json"
+    a.write_text("old a")
+    b.write_text("old b")
+    real = os.replace
+    moved = []
+
+    def replace_failing_on_b(src, dst):  # the second move into place fails
+        if Path(dst) == b and Path(src).name.endswith(".part.json"):
+            raise OSError(errno.EIO, "Input/output error", str(dst))
+        moved.append(dst)
+        return real(src, dst)
+
+    monkeypatch.setattr(os, "replace", replace_failing_on_b)
+    with pytest.raises(OutputError, match=r"cannot write '.*a\.csv\.json': Input/output error"):
+        with atomic_outputs([a, b], overwrite=True) as (ta, tb):
+            ta.write_text("new a")
+            tb.write_text("new b")
+    assert a.read_text() == "old a" and b.read_text() == "old b"  # a was put back
+    assert listing(tmp_path) == ["a.csv", "a.csv.json"]
+
+
+def test_a_failure_inside_the_block_leaves_nothing_not_even_new_folders(tmp_path):
+    targets = [Target(tmp_path / "new" / "deep" / "x.png", name="plot"),
+               Target(tmp_path / "new" / "vtk", folder=True)]  # fmt: skip
+    with pytest.raises(OutputError) as info, atomic_outputs(targets) as (png, folder):
+        (folder / "frame_0000.vtu").write_text("half")
+        raise OSError(errno.ENOSPC, "No space left on device", str(png))
+    assert (
+        str(info.value) == f"[Errno 28] cannot write '{targets[0].path}': No space left on device"
+    )
+    assert listing(tmp_path) == []
+
+
+# -- a full disk during the run (exit 1) -----------------------------------------------------
+def _full_disk_cases(folder: Path) -> list[list[str]]:
+    return [
+        ["simulate", "--output-step", "1e-7", "--out", f"{folder}/r.csv"],
+        ["export-vtk", "--out", f"{folder}/vtk"],
+        ["animate", "--frames", "20", "--size", "320x160", "--out", f"{folder}/a.gif"],
+        ["sweep", "--serial", "--quiet", "--position", "0.5:0.9:1500", "--out", f"{folder}/s.nc"],
+        ["refine", "--family", "uniform", "--elements", "5", "10", "--csv", f"{folder}/r2.csv",
+         "--plot", f"{folder}/r2.png", "--dpi", "600"],
+    ]  # fmt: skip
+
+
+@pytest.fixture
+def tiny_tmpfs(tmp_path):
+    """A 64 KiB tmpfs (too small for any of these outputs), or skip where mounting is not
+    permitted (not root, no tmpfs, a container without CAP_SYS_ADMIN)."""
+    mnt = tmp_path / "mnt"
+    mnt.mkdir()
+    res = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(mnt)],
+                         capture_output=True, text=True)  # fmt: skip
+    if res.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs here: {res.stderr.strip() or res.returncode}")
+    try:
+        (mnt / "old.txt").write_text("kept")
+        yield mnt
+    finally:
+        subprocess.run(["umount", str(mnt)], check=True)
+
+
+@pytest.mark.parametrize(
+    "case", range(5), ids=["simulate", "export-vtk", "animate", "sweep", "refine"]
+)
+def test_full_disk_gives_one_line_exit_1_and_leaves_nothing(capsys, tiny_tmpfs, case):
+    argv = _full_disk_cases(tiny_tmpfs)[case]
+    code, _, err = run(capsys, *argv)
+    assert code == 1, err
+    assert "Traceback" not in err and err.startswith(f"fem-racket {argv[0]}: error: cannot write")
+    assert "No space left on device" in err.splitlines()[0]
+    left = [n for n in listing(tiny_tmpfs) if not n.startswith("s.nc.checkpoint")]
+    assert left == ["old.txt"] and (tiny_tmpfs / "old.txt").read_text() == "kept"
+
+
+def test_full_disk_without_mounting(capsys, tmp_path, monkeypatch):
+    # The same class without a tmpfs: ENOSPC injected where Python writes the outputs' bytes.
+    import pathlib
+
+    real = pathlib.Path.write_bytes
+
+    def full(self, data):
+        if any(p.startswith(".") and ".part" in p for p in self.parts):  # an output's temporary
+            raise OSError(errno.ENOSPC, "No space left on device", str(self))
+        return real(self, data)
+
+    monkeypatch.setattr(pathlib.Path, "write_bytes", full)
+    (tmp_path / "vtk").mkdir()
+    (tmp_path / "vtk" / "provenance.json").write_text("{}")  # an old export
+    for argv in (
+        ["export-vtk", "--out", tmp_path / "vtk", "--overwrite"],
+        ["animate", "--frames", "5", "--size", "320x160", "--out", tmp_path / "a.gif"],
+    ):
+        code, _, err = run(capsys, *argv)
+        assert code == 1 and err.count("\n") == 1, err
+        assert f"cannot write '{argv[-1 if argv[0] == 'animate' else 2]}': No space left" in err
+    assert listing(tmp_path) == ["vtk", "vtk/provenance.json"]
