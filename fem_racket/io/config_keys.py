@@ -30,6 +30,8 @@ COMMAND_TABLES = {
     "export-vtk": "vtk",
     "animate": "animate",
     "reproduce": "reproduce",
+    "optimize": "design",
+    "sensitivity": "design",
 }
 
 #: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).
