@@ -12,6 +12,7 @@ from __future__ import annotations
 import logging
 import math
 import os
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -22,17 +23,24 @@ from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
 from fem_racket.validation import check_choice
 
-__all__ = ["Evaluator"]
+__all__ = ["Evaluator", "Function"]
+
+#: ``f(problem, designs) -> outputs``: rows of design variables [SI] to rows of outputs
+#: (columns :func:`.objectives.output_names`); picklable for the process pool.
+Function = Callable[[DesignProblem, np.ndarray], np.ndarray]
 
 log = logging.getLogger(__name__)
 
-#: Below this many new designs in a batch the default backend is serial (a pool costs ~0.1-0.5 s).
-SERIAL_BELOW = 8
+#: Below this many new designs in a batch the default backend is serial (each batch starts a
+#: process pool: ~0.1-0.5 s here, more than a generation of 50 designs costs).
+SERIAL_BELOW = 64
 
 
-def evaluate_chunk(chunk: np.ndarray, *, problem: DesignProblem, designs: np.ndarray) -> np.ndarray:
+def evaluate_chunk(
+    chunk: np.ndarray, *, problem: DesignProblem, designs: np.ndarray, function: Function
+) -> np.ndarray:
     """Outputs of ``designs[chunk]`` (picklable work for the executors)."""
-    return evaluate_rows(problem, designs[chunk])
+    return function(problem, designs[chunk])
 
 
 class Evaluator:
@@ -50,6 +58,10 @@ class Evaluator:
         Processes of the local pool (all cores when None).
     scheduler : str, optional
         Dask scheduler address ``tcp://HOST:PORT``.
+    function : callable, optional
+        What a design's outputs are (:data:`Function`): the racket physics
+        (:func:`.objectives.evaluate_rows`) by default; another function gives the same columns
+        from a model of the user's (e.g. a synthetic objective with a known optimum).
     """
 
     def __init__(
@@ -60,12 +72,14 @@ class Evaluator:
         backend: str | None = None,
         workers: int | None = None,
         scheduler: str | None = None,
+        function: Function = evaluate_rows,
     ) -> None:
         if backend is not None:
             check_choice("backend", backend, BACKENDS)
         if scheduler is not None:
             check_scheduler(scheduler)
         self.problem = problem
+        self.function = function
         self.names = output_names(problem)
         self.backend, self.workers, self.scheduler = backend, workers, scheduler
         self.history = History(
@@ -112,7 +126,7 @@ class Evaluator:
                 evaluate_chunk,
                 chunks,
                 done,
-                kwargs={"problem": self.problem, "designs": new},
+                kwargs={"problem": self.problem, "designs": new, "function": self.function},
                 backend=backend,
                 workers=self.workers,
                 scheduler=self.scheduler,

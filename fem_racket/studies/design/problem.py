@@ -158,8 +158,8 @@ class DesignProblem:
     constraints : tuple of Constraint
     objectives : tuple of str
         Names from :data:`OBJECTIVES`, maximised (the first one for single-objective solvers).
-    link_ei : bool
-        One variable "ei" sets every EI keeping the starting ratios.
+    link_ei, link_rhoa : bool
+        One variable "ei" (or "rhoa") sets every EI (rhoA) keeping the starting ratios.
     stiffness_cost : float
         Subtracted from the objectives per N m^2 of EI_1 (a price on stiffness) [1/(N m^2)].
     region : ndarray
@@ -185,6 +185,7 @@ class DesignProblem:
     constraints: tuple[Constraint, ...] = ()
     objectives: tuple[str, ...] = ("cor",)
     link_ei: bool = False
+    link_rhoa: bool = False
     stiffness_cost: float = 0.0
     region: np.ndarray = field(default_factory=lambda: np.linspace(0.5, 0.98, 25))
     power_fraction: float = 0.9
@@ -263,6 +264,8 @@ class DesignProblem:
         for k, v in enumerate(self.variables):
             if v.name == "ei":
                 p[..., :n] = x[..., k, None] * self.start[:n] / self.start[0]
+            elif v.name == "rhoa":
+                p[..., n : 2 * n] = x[..., k, None] * self.start[n : 2 * n] / self.start[n]
             else:
                 p[..., v.index] = x[..., k]
         return p
@@ -322,6 +325,7 @@ class DesignProblem:
             ],
             "objectives": list(self.objectives),
             "link_ei": self.link_ei,
+            "link_rhoa": self.link_rhoa,
             "stiffness_cost_per_n_m2": self.stiffness_cost,
             "region_x_over_l": self.region.tolist(),
             "power_fraction": self.power_fraction,
@@ -360,6 +364,7 @@ def paper_problem(
     mass_positions: tuple[float, ...] = (),
     mass_bounds: tuple[float, float] = (0.0, 0.03),
     link_ei: bool = False,
+    link_rhoa: bool = False,
     start: Frame | None = None,
     **kwargs: Any,
 ) -> DesignProblem:
@@ -376,8 +381,8 @@ def paper_problem(
         Bounds of every EI [N m^2] (Fig 13's 50-3000), rhoA [kg/m] and added mass [kg].
     mass_positions : tuple of float
         Centres of added masses x/L (their starting mass is 0).
-    link_ei : bool
-        One EI variable (EI_1), the others keeping their starting ratios.
+    link_ei, link_rhoa : bool
+        One EI (rhoA) variable, EI_1 (rhoA_1), the others keeping their starting ratios.
     start : Frame, optional
         The starting racket; the paper's standard racket when None.
     **kwargs
@@ -402,7 +407,9 @@ def paper_problem(
             variables.append(Variable("ei", 0, *ei_bounds, "N m^2", log=True))
         else:
             variables += [Variable(f"ei_{k + 1}", k, *ei_bounds, "N m^2", True) for k in range(n)]
-    if "rhoa" in vary:
+    if "rhoa" in vary and link_rhoa:
+        variables.append(Variable("rhoa", n, *rhoa_bounds, "kg/m"))
+    elif "rhoa" in vary:
         variables += [Variable(f"rhoa_{k + 1}", n + k, *rhoa_bounds, "kg/m") for k in range(n)]
     if "mass" in vary:
         variables += [Variable(f"mass_{k + 1}", 2 * n + k, *mass_bounds, "kg") for k in range(a)]
@@ -412,5 +419,6 @@ def paper_problem(
         variables=tuple(variables),
         mass_positions=tuple(mass_positions),
         link_ei=link_ei,
+        link_rhoa=link_rhoa,
         **kwargs,
     )

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import logging
 import sys
+import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -230,9 +231,13 @@ def _local(
                 )
             )
         options = {"maxiter": maxiter, "gtol": tol, "xtol": tol}
-    res = minimize(
-        s.fun, u0, jac=s.jac, bounds=bounds, constraints=cons, method=method, options=options
-    )
+    with warnings.catch_warnings():
+        # trust-constr's quasi-Newton update warns when an iterate repeats (delta_grad == 0),
+        # e.g. on a linear constraint: informational, the step is skipped.
+        warnings.filterwarnings("ignore", "delta_grad == 0.0", UserWarning)
+        res = minimize(
+            s.fun, u0, jac=s.jac, bounds=bounds, constraints=cons, method=method, options=options
+        )
     return np.clip(res.x, 0.0, 1.0), bool(res.success), str(res.message), int(res.nit)
 
 
@@ -286,6 +291,7 @@ def _global(
         constraints=constraints,
         polish=False,
         tol=1e-8,
+        updating="deferred",
     )
     return np.clip(res.x, 0.0, 1.0), bool(res.success), str(res.message), int(res.nit)
 
@@ -429,7 +435,11 @@ def pareto_front(
             verbose=False,
         )
     if res.X is None:
-        raise InputError("no feasible design found: widen the constraints or add generations")
+        raise InputError(
+            f"generations = {generations} is not enough: no design met every constraint; add "
+            "generations or widen the constraints (an equality such as --mass-range start is "
+            "hard for NSGA-II: give a window, e.g. --mass-range 0.355,0.365)"
+        )
     u = np.atleast_2d(res.X)
     x = problem.from_unit(u)
     f = -np.atleast_2d(res.F)
