@@ -41,9 +41,11 @@ def _finite(v: float) -> float | None:
     return float(v) if np.isfinite(v) else None
 
 
-def study_summary(result) -> dict[str, Any]:
-    """The content of ``result.json`` (without provenance)."""
+def study_summary(result, maps: dict | None = None) -> dict[str, Any]:
+    """The content of ``result.json`` (without provenance); ``maps``: the optimum's and the
+    start's :func:`~fem_racket.studies.design.report.racket_map` if already computed."""
     p = result.problem
+    maps = maps or {}
     data: dict[str, Any] = {
         "objective_name": p.objectives[0],
         "objective": result.objective,
@@ -72,8 +74,8 @@ def study_summary(result) -> dict[str, Any]:
         "outputs": result.outputs,
         "start_outputs": result.start_outputs,
         "units": {**{k: v[0] for k, v in QUANTITIES.items()}, **OBJECTIVES},
-        "optimum": racket_report(p, result.x),
-        "start": racket_report(p, result.x_start),
+        "optimum": racket_report(p, result.x, curves_map=maps.get("optimum")),
+        "start": racket_report(p, result.x_start, curves_map=maps.get("start")),
         "problem": p.describe(),
     }
     if result.pareto_f is not None:
@@ -119,7 +121,8 @@ def write_study(
     """Write the study's files (module docstring) into ``folder``; returns the folder."""
     p = result.problem
     meta = provenance(parameters)
-    summary = study_summary(result)
+    maps = {"start": racket_map(p, result.x_start), "optimum": racket_map(p, result.x)}
+    summary = study_summary(result, maps)
     with atomic_folder(folder, overwrite=overwrite, marker=MARKER) as tmp:
         write_mesh(p.mesh(result.x), tmp / "optimum.vtu")
         write_mesh(p.mesh(result.x_start), tmp / "start.vtu")
@@ -128,7 +131,6 @@ def write_study(
         attrs["problem"] = p.describe()
         history_dataset(result, attrs).to_netcdf(tmp / "history.nc")
         plot_progress(result, tmp / "progress.png")
-        maps = {"start": racket_map(p, result.x_start), "optimum": racket_map(p, result.x)}
         plot_map(p, maps, summary["optimum"]["sweet_spots"], tmp / "map.png")
         pngs = ["progress.png", "map.png"]
         if result.pareto_f is not None:

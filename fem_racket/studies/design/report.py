@@ -49,8 +49,13 @@ def racket_map(
     return out
 
 
-def racket_report(problem: DesignProblem, x: np.ndarray, modes: int = 4) -> dict[str, Any]:
-    """Mass properties, the first ``modes`` frequencies and nodes, and the sweet spots."""
+def racket_report(
+    problem: DesignProblem, x: np.ndarray, modes: int = 4, curves_map: dict | None = None
+) -> dict[str, Any]:
+    """Mass properties, the first ``modes`` frequencies and nodes, and the sweet spots.
+
+    ``curves_map``: the design's :func:`racket_map` if already computed.
+    """
     mesh = problem.mesh(x)
     model = FrameModel(assemble_closed_form(mesh))
     fm = model.modes(modes)
@@ -60,7 +65,7 @@ def racket_report(problem: DesignProblem, x: np.ndarray, modes: int = 4) -> dict
     nodes = [mode_nodes(model.fe, fm.shapes[:, k]).tolist() for k in range(fm.omega.size)]
     face = [n for n in nodes[0] if n > 0.5]
     cop = mq["cg"] + mq["inertia_cg"] / (mq["mass"] * (mq["cg"] - pivot))
-    m = racket_map(problem, x)
+    m = racket_map(problem, x) if curves_map is None else curves_map
     spots: dict[str, Any] = {
         "node_x_over_l": face[0] if face else None,
         "cop_x_over_l": cop / length,
