@@ -41,14 +41,20 @@ def studies(quick: bool) -> list[tuple[str, dict, dict]]:
     local = {"method": "SLSQP", "maxiter": 3 if quick else 100}
     return [
         ("", {**zone, "objectives": ("cor",), "constraints": keep}, local),
-        ("ball_speed", {**zone, **swing, "objectives": ("ball_speed",), "constraints": keep},
-         local),
+        (
+            "ball_speed",
+            {**zone, **swing, "objectives": ("ball_speed",), "constraints": keep},
+            local,
+        ),
         (
             "pareto",
-            {**zone, **swing, "objectives": ("ball_speed", "power_region"),
-             "constraints": {"mass_kg": (0.99 * MASS, 1.01 * MASS)}},
-            {"method": "nsga2", "pop_size": 8 if quick else 50,
-             "generations": 3 if quick else 100},
+            {
+                **zone,
+                **swing,
+                "objectives": ("ball_speed", "power_region"),
+                "constraints": {"mass_kg": (0.99 * MASS, 1.01 * MASS)},
+            },
+            {"method": "nsga2", "pop_size": 8 if quick else 50, "generations": 3 if quick else 100},
         ),
     ]
 
@@ -67,26 +73,35 @@ def main(argv: list[str] | None = None) -> list[dict]:
             problem = design_problem(**settings)
             t0 = time.perf_counter()
             r = run_optimization(
-                problem, out=out / sub if sub else out, overwrite=args.overwrite or bool(sub),
-                progress=False, parameters={"script": "design_study", "study": sub or "cor",
-                                            "quick": args.quick}, **solver,
+                problem,
+                out=out / sub if sub else out,
+                overwrite=args.overwrite or bool(sub),
+                progress=False,
+                parameters={"script": "design_study", "study": sub or "cor", "quick": args.quick},
+                **solver,
             )
-            rows.append({
-                "study": sub or "cor",
-                "objective": problem.objectives[0],
-                "start": r.start_objective,
-                "optimum": r.objective,
-                "designs": r.evaluator.computed,
-                "wall_s": time.perf_counter() - t0,
-            })
+            rows.append(
+                {
+                    "study": sub or "cor",
+                    "objective": problem.objectives[0],
+                    "start": r.start_objective,
+                    "optimum": r.objective,
+                    "designs": r.evaluator.computed,
+                    "wall_s": time.perf_counter() - t0,
+                }
+            )
     except InputError as exc:
         print(f"design_study: error: {exc}", file=sys.stderr)
         raise SystemExit(2) from None
-    print(f"{'study':<12} {'objective':<12} {'paper racket':>13} {'optimum':>10} {'gain':>9} "
-          f"{'designs':>8} {'wall [s]':>9}")
+    print(
+        f"{'study':<12} {'objective':<12} {'paper racket':>13} {'optimum':>10} {'gain':>9} "
+        f"{'designs':>8} {'wall [s]':>9}"
+    )
     for r in rows:
-        print(f"{r['study']:<12} {r['objective']:<12} {r['start']:>13.5g} {r['optimum']:>10.5g} "
-              f"{r['optimum'] - r['start']:>+9.4g} {r['designs']:>8} {r['wall_s']:>9.1f}")
+        print(
+            f"{r['study']:<12} {r['objective']:<12} {r['start']:>13.5g} {r['optimum']:>10.5g} "
+            f"{r['optimum'] - r['start']:>+9.4g} {r['designs']:>8} {r['wall_s']:>9.1f}"
+        )
     print(f"wrote {out}")
     return rows
 

@@ -43,15 +43,30 @@ def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
 
 def test_optimize_json_and_files(tmp_path, capsys):
     out = tmp_path / "o"
-    argv = ["optimize", *SMALL, "--mass-range", "start", "--maxiter", "3", "--out", str(out),
-            "--json"]
+    argv = [
+        "optimize",
+        *SMALL,
+        "--mass-range",
+        "start",
+        "--maxiter",
+        "3",
+        "--out",
+        str(out),
+        "--json",
+    ]
     assert main(argv) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["objective"] >= data["start_objective"]
     assert set(data["variables"]) == {"ei_1", "ei_2", "rhoa_1", "rhoa_2"}
     names = {p.name for p in out.iterdir()}
-    assert {"optimum.vtu", "start.vtu", "result.json", "history.nc", "progress.png",
-            "map.png"} <= names
+    assert {
+        "optimum.vtu",
+        "start.vtu",
+        "result.json",
+        "history.nc",
+        "progress.png",
+        "map.png",
+    } <= names
     assert not Path(str(out) + ".history").exists()  # removed once the results are written
     import xarray as xr
 
@@ -99,3 +114,10 @@ def test_bad_input_exits_2(argv, needle, capsys, tmp_path):
     assert main([*argv, "--out", str(tmp_path / "x")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and needle in err
+
+
+def test_bench_design_quick(capsys):
+    rows = load(SCRIPTS / "bench_design.py").main(["--quick"])
+    assert [r["task"] for r in rows] == ["SLSQP 8 variables", "NSGA-II", "Sobol"]
+    assert all(r["designs"] > 0 and r["wall_s"] > 0 for r in rows)
+    assert "us/impact" in capsys.readouterr().out
