@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS, LinearContact
+from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball, LinearContact
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
@@ -32,7 +32,13 @@ from fem_racket.studies.sweetspots import (
     mode_node_positions,
     power_region,
 )
-from fem_racket.validation import InputError, check_choice, check_range
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_integer,
+    check_positive,
+    check_range,
+)
 
 __all__ = ["DEFAULT_POSITIONS", "RacketMap", "apparent_cor_along", "racket_map"]
 
@@ -191,9 +197,14 @@ def racket_map(
     -------
     RacketMap
     """
+    speed = check_positive("speed", speed, "m/s")
+    ball_mass = Ball(ball_mass).mass
+    check_range("power_fraction", power_fraction, 0.0, 1.0, include_low=False)
+    if modes is not None:
+        check_integer("modes", modes)
+    x = _grid(positions)
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
     length = model.mesh.length
-    x = _grid(positions)
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
     v_r = swing.speed_at(x * length)
     closing = np.array([closing_speed(speed, v) for v in v_r])

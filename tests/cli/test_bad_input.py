@@ -52,6 +52,10 @@ def anim(*argv: str) -> list[str]:
     return ["animate", "--frames", "3", "--size", "160x160", *argv]
 
 
+def mapc(*argv: str) -> list[str]:
+    return ["map", "--positions", "0.5:1.0:5", *argv]
+
+
 def repro(*argv: str) -> list[str]:
     return ["reproduce", "--quick", *argv]
 
@@ -264,6 +268,19 @@ REPRODUCE_CASES = [
         ("output = 'REPRODUCTION.md' already exists", "--overwrite"),
         {"REPRODUCTION.md": "mine"},
     ),
+]
+
+MAP_CASES = [
+    Case("map-speed-zero", mapc("--speed", "0"), ("speed = 0", "> 0")),
+    Case("map-positions-off-tip", mapc("--positions", "0.5:1.5:9"), ("position =", "[0, 1]")),
+    Case("map-one-position", mapc("--positions", "0.7"), ("positions", "at least 3")),
+    Case("map-power-fraction", mapc("--power-fraction", "0"), ("power_fraction = 0", "(0, 1]")),
+    Case("map-pivot-at-reference", mapc("--racket-speed", "9", "--pivot", "0.51"), ("pivot",)),
+    Case("map-racket-away", mapc("--racket-speed", "-40"), ("racket speed", "must close")),
+    Case("map-reference-off", mapc("--reference", "2"), ("reference = 2", "[0, 1]")),
+    Case("map-bad-suffix", mapc("--out", "m.txt"), ("m.txt", ".png")),
+    Case("map-unknown-preset", mapc("--preset", "soft"), ("--preset", "choose from")),
+    Case("map-ball-mass", mapc("--ball-mass", "0"), ("ball mass = 0", "> 0")),
 ]
 
 OUTPUT_CASES = [
@@ -569,11 +586,19 @@ MESH_ENTRIES = {
     "refine": refine("--mesh", "bad.vtu"),
     "export-vtk": vtk("--mesh", "bad.vtu"),
     "animate": anim("--mesh", "bad.vtu"),
+    "map": mapc("--mesh", "bad.vtu"),
 }
 
 
 ALL_CASES = (
-    CLI_CASES + SWEEP_CASES + VTK_CASES + REFINE_CASES + REPRODUCE_CASES + OUTPUT_CASES + TOML_CASES
+    CLI_CASES
+    + SWEEP_CASES
+    + VTK_CASES
+    + REFINE_CASES
+    + REPRODUCE_CASES
+    + OUTPUT_CASES
+    + TOML_CASES
+    + MAP_CASES
 )
 MESH_CASES = {c[0]: c[1] for c in BAD_MESHES}
 
