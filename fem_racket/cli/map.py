@@ -57,7 +57,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         nargs="+",
         choices=sorted(PRESETS),
         default=None,
-        help="the paper's stepped frame: standard (EI1 146 N m^2) or rigid (9999)",
+        help="the paper's stepped frame: standard (EI1 146 N m^2) or rigid (9999) (default: "
+        "standard when no --mesh is given)",
     )
     r.add_argument(
         "--mesh",
@@ -65,14 +66,23 @@ def register(sub: argparse._SubParsersAction) -> None:
         nargs="+",
         default=None,
         metavar="FILE",
-        help="mesh file(s) with cell data EI [N m^2] and rhoA [kg/m] (e.g. from fem-racket fit)",
+        help="mesh file(s) with cell data EI [N m^2] and rhoA [kg/m], e.g. from fem-racket fit "
+        "(default: none)",
     )
     r.add_argument(
-        "--elements", type=int, default=20, metavar="N", help="beam elements of a preset (20)"
+        "--elements",
+        type=int,
+        default=20,
+        metavar="N",
+        help="beam elements of a preset (default 20)",
     )
     g = p.add_argument_group("impact")
     g.add_argument(
-        "--speed", type=float, default=20.0, metavar="M_S", help="incoming ball speed [m/s] (20)"
+        "--speed",
+        type=float,
+        default=20.0,
+        metavar="M_S",
+        help="incoming ball speed [m/s] (default 20)",
     )
     start, stop, num = DEFAULT_POSITIONS
     g.add_argument(
@@ -81,16 +91,31 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="VALUES",
         help=f"impact points x/L: start:stop:num or a comma list (default {start}:{stop}:{num})",
     )
-    g.add_argument("--ball-mass", type=float, default=0.057, metavar="KG", help="m_B [kg] (0.057)")
     g.add_argument(
-        "--kcb", type=float, default=None, metavar="N_M", help="K_CB [N/m] (default: from speed)"
+        "--ball-mass", type=float, default=0.057, metavar="KG", help="m_B [kg] (default 0.057)"
+    )
+    g.add_argument(
+        "--kcb",
+        type=float,
+        default=None,
+        metavar="N_M",
+        help="K_CB [N/m] (default: from the closing speed)",
     )
     g.add_argument(
         "--zeta", type=float, default=None, metavar="ZETA", help="damping ratio (default 0.0592)"
     )
-    g.add_argument("--separation", default="displacement", choices=SEPARATION_EVENTS)
     g.add_argument(
-        "--modes", type=int, default=DEFAULT_MODES, metavar="N", help="flexible modes kept"
+        "--separation",
+        default="displacement",
+        choices=SEPARATION_EVENTS,
+        help="end of contact: spring deflection or force back to zero (default displacement)",
+    )
+    g.add_argument(
+        "--modes",
+        type=int,
+        default=DEFAULT_MODES,
+        metavar="N",
+        help=f"flexible modes kept (default {DEFAULT_MODES})",
     )
     add_swing_options(p)
     o = p.add_argument_group("output")
@@ -108,8 +133,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="FILE",
         help=f"file(s) to write: .png, .nc, .csv (default {DEFAULT_OUTPUT})",
     )
-    o.add_argument("--overwrite", action="store_true", help="replace existing output files")
-    o.add_argument("--json", action="store_true", help="print sweet spots and curves as JSON")
+    o.add_argument(
+        "--overwrite", action="store_true", help="replace existing output files (default: refuse)"
+    )
+    o.add_argument(
+        "--json",
+        action="store_true",
+        help="print sweet spots and curves as JSON (default: a table)",
+    )
     add_config_option(p, private=("out", "mesh"))
     p.set_defaults(func=run)
 

@@ -32,6 +32,7 @@ COMMAND_TABLES = {
     "simulate": "simulate",
     "modes": "modes",
     "sweep": "sweep",
+    "map": "map",
     "refine": "refine",
     "export-vtk": "vtk",
     "animate": "animate",
