@@ -15,7 +15,7 @@ import os
 import sys
 from collections.abc import Sequence
 
-from fem_racket.cli import config, map, modes, refine, reproduce, simulate, sweep, vtk
+from fem_racket.cli import config, fit, map, modes, refine, reproduce, simulate, sweep, vtk
 from fem_racket.cli.common import OneLineErrorParser, apply_config
 from fem_racket.validation import InputError
 from fem_racket.version import __version__
@@ -23,7 +23,7 @@ from fem_racket.version import __version__
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, sweep, map, vtk, refine, reproduce, config)
+COMMANDS = (simulate, modes, sweep, map, fit, vtk, refine, reproduce, config)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -33,6 +33,7 @@ COMMAND_TABLES = {
     "modes": "modes",
     "sweep": "sweep",
     "map": "map",
+    "fit": "fit",
     "refine": "refine",
     "export-vtk": "vtk",
     "animate": "animate",

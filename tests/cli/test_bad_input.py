@@ -56,6 +56,12 @@ def mapc(*argv: str) -> list[str]:
     return ["map", "--positions", "0.5:1.0:5", *argv]
 
 
+def fitc(*argv: str, **spec: str) -> list[str]:
+    values = {"length": "0.685", "mass": "0.318", "balance": "0.32", "swing-weight": "316"}
+    values.update({k.replace("_", "-"): v for k, v in spec.items()})
+    return ["fit", *(x for k, v in values.items() for x in (f"--{k}", v)), *argv]
+
+
 def repro(*argv: str) -> list[str]:
     return ["reproduce", "--quick", *argv]
 
@@ -281,6 +287,18 @@ MAP_CASES = [
     Case("map-bad-suffix", mapc("--out", "m.txt"), ("m.txt", ".png")),
     Case("map-unknown-preset", mapc("--preset", "soft"), ("--preset", "choose from")),
     Case("map-ball-mass", mapc("--ball-mass", "0"), ("ball mass = 0", "> 0")),
+]
+
+FIT_CASES = [
+    Case("fit-mass-zero", fitc(mass="0"), ("mass = 0", "> 0")),
+    Case("fit-balance-off", fitc(balance="0.9"), ("balance = 0.9", "must lie in")),
+    Case("fit-balance-extreme", fitc(balance="0.6"), ("balance = 0.6", "must lie in")),
+    Case("fit-swing-weight-high", fitc(swing_weight="600"), ("swing weight = 600", "kg cm^2")),
+    Case("fit-swing-weight-low", fitc(swing_weight="100"), ("swing weight = 100", "kg cm^2")),
+    Case("fit-f1-negative", fitc("--f1", "-5"), ("f1 = -5", "> 0")),
+    Case("fit-elements-two", fitc("--elements", "2"), ("elements = 2", ">= 3")),
+    Case("fit-length-nan", fitc(length="nan"), ("length = nan", "finite")),
+    Case("fit-no-mass", ["fit", "--length", "0.68"], ("mass is required", "--mass")),
 ]
 
 OUTPUT_CASES = [
@@ -599,6 +617,7 @@ ALL_CASES = (
     + OUTPUT_CASES
     + TOML_CASES
     + MAP_CASES
+    + FIT_CASES
 )
 MESH_CASES = {c[0]: c[1] for c in BAD_MESHES}
 
