@@ -17,6 +17,8 @@ from collections.abc import Sequence
 
 from fem_racket.cli import (
     config,
+    fit,
+    map,
     modes,
     optimize,
     refine,
@@ -33,7 +35,7 @@ from fem_racket.version import __version__
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, sweep, vtk, refine, reproduce, optimize, sensitivity, config)
+COMMANDS = (simulate, modes, sweep, map, fit, vtk, refine, reproduce, optimize, sensitivity, config)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -19,6 +19,13 @@ from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.integrators import SOLVERS, get_solver
 from fem_racket.impact.setup import Impact
+from fem_racket.impact.swing import (
+    Swing,
+    closing_speed,
+    racket_velocity,
+    swing_setup,
+    swing_summary,
+)
 from fem_racket.impact.system import SEPARATION_EVENTS, CoupledSystem, modal_system, physical_system
 from fem_racket.validation import InputError, check_choice, check_integer, check_positive
 
@@ -73,6 +80,7 @@ class ImpactResult:
     frame_displacement: np.ndarray
     frame_velocity: np.ndarray
     peak_force: float
+    swing: Swing | None = None
 
     # -- scalar outcomes -------------------------------------------------------------------
     @property
@@ -87,8 +95,31 @@ class ImpactResult:
 
     @property
     def cor(self) -> float:
-        """Coefficient of restitution -v_B(t_c) / V_B0."""
-        return -self.rebound_velocity / self.impact.speed
+        """Coefficient of restitution: the apparent COR :attr:`apparent_cor` (on a stationary
+        racket -v_B(t_c) / V_B0)."""
+        return self.apparent_cor
+
+    @property
+    def racket_speed_at_impact(self) -> float:
+        """v_r: speed of the impact point towards the ball before impact [m/s] (0 at rest)."""
+        return 0.0 if self.swing is None else float(self.swing.speed_at(self.x_impact))
+
+    @property
+    def ball_speed_out(self) -> float:
+        """v_out = -v_B(t_c): the ball's speed away from the racket after impact [m/s]."""
+        return -self.rebound_velocity
+
+    @property
+    def apparent_cor(self) -> float:
+        """e_A = (v_out - v_r) / (v_in + v_r): rebound over closing speed relative to the impact
+        point (the COR of the stationary racket struck at the closing speed)."""
+        v_r = self.racket_speed_at_impact
+        return (self.ball_speed_out - v_r) / (self.impact.speed + v_r)
+
+    def racket_motion_after(self) -> tuple[float, float]:
+        """Rigid motion of the racket at separation: centre-of-gravity speed [m/s] and angular
+        speed [rad/s], both towards the ball (a racket pushed back by the ball slows down)."""
+        return racket_velocity(self.model, -self.frame_velocity[-1])
 
     # -- derived histories -----------------------------------------------------------------
     @property
@@ -168,6 +199,9 @@ class ImpactResult:
         """Scalar results and settings, JSON-ready, units in the keys."""
         return {
             "cor": self.cor,
+            "apparent_cor": self.apparent_cor,
+            "ball_speed_out_m_s": self.ball_speed_out,
+            "racket_speed_at_impact_m_s": self.racket_speed_at_impact,
             "contact_time_s": self.contact_time,
             "rebound_speed_m_s": -self.rebound_velocity,
             "peak_force_n": self.peak_force,
@@ -182,6 +216,7 @@ class ImpactResult:
             "kcb_n_m": self.contact.stiffness,
             "zeta": self.contact.zeta,
             "ccb_n_s_m": self.damping,
+            **swing_summary(self.model, self.swing, self.racket_motion_after()),
         }
 
 
@@ -227,8 +262,9 @@ def simulate(
     t_max: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
+    swing: Swing | None = None,
 ) -> ImpactResult:
-    """Simulate a ball striking the stationary free frame.
+    """Simulate a ball striking the free frame, at rest or swinging.
 
     Parameters
     ----------
@@ -261,6 +297,10 @@ def simulate(
         Give up if the ball has not separated by then [s]; 20 x the eq 11 estimate by default.
     rtol, atol : float
         Tolerances of the BDF integrators.
+    swing : Swing, optional
+        The racket's rigid motion before impact (:mod:`fem_racket.impact.swing`); at rest when
+        None. K_CB then follows the closing speed ``speed + v_r``; the exact solver superposes
+        the swing on the stationary impact, the BDF solvers start from its velocity field.
 
     Returns
     -------
@@ -268,7 +308,6 @@ def simulate(
     """
     impact = Impact(position, speed)
     ball = Ball() if ball_mass is None else Ball(ball_mass)
-    contact = LinearContact.for_speed(impact.speed, kcb=kcb, zeta=zeta)
     check_choice("solver", solver, SOLVERS)
     check_choice("separation", separation, SEPARATION_EVENTS)
     check_choice("basis", basis, BASES)
@@ -283,8 +322,14 @@ def simulate(
     if solver == "exact" and basis != "modal":
         raise InputError(f"basis = {basis!r} is not allowed with solver 'exact': must be 'modal'")
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
+    x_i = impact.position * model.mesh.length
+    v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
+    contact = LinearContact.for_speed(closing_speed(impact.speed, v_r), kcb=kcb, zeta=zeta)
 
     system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
+    to_lab = None
+    if swing is not None:
+        system, to_lab = swing_setup(system, model, swing, x_i, direct=solver != "exact")
     if output_step is not None:
         span = 2.0 * system.contact_time_estimate() if t_max is None else t_max
         if span / output_step > MAX_OUTPUT_TIMES:
@@ -296,6 +341,8 @@ def simulate(
     traj = get_solver(solver)(
         system, separation=separation, output_step=output_step, t_max=t_max, rtol=rtol, atol=atol
     )
+    if to_lab is not None:
+        traj = to_lab(traj)
     if system.frame_map is None:
         q, qd = traj.x[:, 1:], traj.v[:, 1:]
     else:
@@ -315,4 +362,5 @@ def simulate(
         frame_displacement=q,
         frame_velocity=qd,
         peak_force=traj.peak_force,
+        swing=swing,
     )
