@@ -24,7 +24,7 @@ from fem_racket.io.design_plots import plot_map, plot_pareto, plot_progress
 from fem_racket.io.mesh_files import write_mesh
 from fem_racket.outputs import add_png_provenance, atomic_folder, check_output_folder, provenance
 from fem_racket.studies.design.problem import OBJECTIVES, QUANTITIES
-from fem_racket.studies.design.report import racket_map, racket_report
+from fem_racket.studies.design.report import design_maps, racket_report
 
 __all__ = ["MARKER", "check_study_folder", "history_dataset", "study_summary", "write_study"]
 
@@ -43,7 +43,7 @@ def _finite(v: float) -> float | None:
 
 def study_summary(result, maps: dict | None = None) -> dict[str, Any]:
     """The content of ``result.json`` (without provenance); ``maps``: the optimum's and the
-    start's :func:`~fem_racket.studies.design.report.racket_map` if already computed."""
+    start's :func:`~fem_racket.studies.design.report.design_maps` if already computed."""
     p = result.problem
     maps = maps or {}
     data: dict[str, Any] = {
@@ -74,8 +74,8 @@ def study_summary(result, maps: dict | None = None) -> dict[str, Any]:
         "outputs": result.outputs,
         "start_outputs": result.start_outputs,
         "units": {**{k: v[0] for k, v in QUANTITIES.items()}, **OBJECTIVES},
-        "optimum": racket_report(p, result.x, curves_map=maps.get("optimum")),
-        "start": racket_report(p, result.x_start, curves_map=maps.get("start")),
+        "optimum": racket_report(p, result.x, maps.get("optimum")),
+        "start": racket_report(p, result.x_start, maps.get("start")),
         "problem": p.describe(),
     }
     if result.pareto_f is not None:
@@ -121,7 +121,7 @@ def write_study(
     """Write the study's files (module docstring) into ``folder``; returns the folder."""
     p = result.problem
     meta = provenance(parameters)
-    maps = {"start": racket_map(p, result.x_start), "optimum": racket_map(p, result.x)}
+    maps = {"start": design_maps(p, result.x_start), "optimum": design_maps(p, result.x)}
     summary = study_summary(result, maps)
     with atomic_folder(folder, overwrite=overwrite, marker=MARKER) as tmp:
         write_mesh(p.mesh(result.x), tmp / "optimum.vtu")
@@ -131,7 +131,7 @@ def write_study(
         attrs["problem"] = p.describe()
         history_dataset(result, attrs).to_netcdf(tmp / "history.nc")
         plot_progress(result, tmp / "progress.png")
-        plot_map(p, maps, summary["optimum"]["sweet_spots"], tmp / "map.png")
+        plot_map(p, maps, tmp / "map.png")
         pngs = ["progress.png", "map.png"]
         if result.pareto_f is not None:
             plot_pareto(result, tmp / "pareto.png")

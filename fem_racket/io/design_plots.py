@@ -67,53 +67,51 @@ def plot_progress(result, path: str | os.PathLike) -> None:
     _save(fig, path)
 
 
-def plot_map(problem: DesignProblem, maps: dict, spots: dict, path: str | os.PathLike) -> None:
+def plot_map(problem: DesignProblem, maps: dict, path: str | os.PathLike) -> None:
     """e_A and v_out along the frame of the optimum (solid) and the starting racket (dashed).
 
-    ``maps`` holds ``"start"`` and ``"optimum"`` from :func:`.report.racket_map`; ``spots`` the
-    optimum's sweet spots (marked).
+    ``maps`` holds ``"start"`` and ``"optimum"``: lists of
+    :class:`~fem_racket.studies.racket_map.RacketMap`, one per ball speed; the optimum's mode-1
+    node and (with a swing) maximum v_out at the first speed are marked.
     """
     plt = _pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     z = problem.zone.positions
     for ax, key, label in (
-        (axes[0], "cor", "apparent COR e_A [1]"),
-        (axes[1], "ball_speed", "ball speed v_out [m/s]"),
+        (axes[0], "apparent_cor", "apparent COR e_A [1]"),
+        (axes[1], "ball_speed_out", "ball speed v_out [m/s]"),
     ):
         ax.axvspan(z[0], z[-1], color="0.93", label="impact zone")
         for k, v in enumerate(problem.speeds):
             c = colors[k % len(colors)]
-            ax.plot(
-                maps["start"]["positions"],
-                maps["start"][key][k],
-                "--",
-                color=c,
-                label=f"start, {v:g} m/s",
-            )
-            ax.plot(
-                maps["optimum"]["positions"],
-                maps["optimum"][key][k],
-                "-",
-                color=c,
-                label=f"optimum, {v:g} m/s",
-            )
+            for which, style in (("start", "--"), ("optimum", "-")):
+                m = maps[which][k]
+                ax.plot(m.positions, getattr(m, key), style, color=c, label=f"{which}, {v:g} m/s")
         ax.set_xlabel("impact position x/L [1]")
         ax.set_ylabel(label)
-        if spots.get("node_x_over_l") is not None:
-            ax.axvline(spots["node_x_over_l"], color="k", ls=":", lw=1)
-            ax.annotate(
-                "node (optimum)",
-                (spots["node_x_over_l"], 0.02),
-                xycoords=("data", "axes fraction"),
-                fontsize=8,
-                rotation=90,
-            )
+        spots = maps["optimum"][0].spots
+        marks = [(spots.node, "node")]
+        if problem.swing is not None:
+            marks.append((spots.max_ball_speed, "max v_out"))
+        for x, text in marks:
+            if np.isfinite(x):
+                ax.axvline(x, color="k", ls=":", lw=1)
+                ax.annotate(
+                    f"{text} (optimum)",
+                    (x, 0.02),
+                    xycoords=("data", "axes fraction"),
+                    fontsize=8,
+                    rotation=90,
+                )
     axes[0].legend(fontsize=7)
     swing = (
         "stationary racket"
         if problem.swing is None
-        else (f"swing {problem.swing.head_speed:g} m/s at {problem.swing.reference:g} L")
+        else (
+            f"swing {problem.swing.head_speed:g} m/s at {problem.swing.reference:g} L with the "
+            "starting racket"
+        )
     )
     fig.suptitle(f"Optimum vs starting racket ({swing})")
     fig.tight_layout()

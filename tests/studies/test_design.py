@@ -159,9 +159,10 @@ def test_start_constraint_keeps_the_starting_value():
 def test_swing_speed_law():
     """Cross & Bower 2006: swing speed ~ I^-0.27 about the pivot."""
     s = SwingModel(30.0, reference=0.75, pivot=0.1, reference_inertia=0.03)
-    w0 = s.angular_speed(np.array(0.03), 0.68)
-    assert w0 == pytest.approx(30.0 / (0.75 * 0.68 - 0.1), rel=1e-14)
-    assert s.angular_speed(np.array(0.06), 0.68) == pytest.approx(w0 * 2**-0.27, rel=1e-14)
+    assert s.racket_speed(0.03) == 30.0
+    assert s.racket_speed(0.06) == pytest.approx(30.0 * 2**-0.27, rel=1e-14)
+    v_r = s.impact_speed(np.array([0.75, 1.0]), 0.06, 0.68)
+    assert v_r == pytest.approx(30.0 * 2**-0.27 * np.array([1.0, 0.58 / 0.41]), rel=1e-14)
 
 
 @pytest.mark.parametrize(

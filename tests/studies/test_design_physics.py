@@ -79,7 +79,7 @@ def test_tip_mass_raises_ball_speed_and_moves_max_power_tipward():
     v = evaluate_rows(p, np.array([[0.0], [0.03]]))[:, -1]
     assert v[1] > v[0]
     tip = [
-        racket_report(p, np.array([m]))["sweet_spots"]["max_ball_speed_x_over_l"][0]
+        racket_report(p, np.array([m]))["sweet_spots"][0]["max_ball_speed_x_over_l"]
         for m in (0.0, 0.03)
     ]
     assert tip[1] > tip[0]

@@ -26,9 +26,10 @@ import numpy as np
 
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.swing import ball_speed_out
 from fem_racket.studies.design.impacts import apparent_cor
 from fem_racket.studies.design.problem import QUANTITIES, DesignProblem
-from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, ball_speed_out, mass_quantities
+from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, mass_quantities
 
 __all__ = ["evaluate_design", "evaluate_rows", "output_names", "power_region_length"]
 
@@ -57,7 +58,7 @@ def speeds_along(problem: DesignProblem, x: np.ndarray, inertia_pivot: float) ->
     """v_r [m/s] of the points ``x`` (x/L) for a racket of that inertia (0 without a swing)."""
     if problem.swing is None:
         return np.zeros_like(np.asarray(x, dtype=float))
-    return problem.swing.impact_speed(x, np.asarray(inertia_pivot), problem.length)
+    return problem.swing.impact_speed(x, inertia_pivot, problem.length)
 
 
 def curves(
@@ -74,7 +75,7 @@ def curves(
         zeta=problem.zeta,
         modes=problem.modes,
     )
-    return {"cor": cor, "ball_speed": ball_speed_out(cor, v_in, v_r), "racket_speed": v_r + 0 * cor}
+    return {"cor": cor, "ball_speed": ball_speed_out(cor, v_in, v_r)}
 
 
 def evaluate_design(problem: DesignProblem, x: np.ndarray) -> dict[str, Any]:
