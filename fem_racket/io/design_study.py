@@ -18,6 +18,7 @@ from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.sensitivity import SobolIndices, sobol_indices
 from fem_racket.studies.design.solvers import DesignResult, optimize, pareto_front
+from fem_racket.validation import InputError, check_choice
 
 __all__ = ["METHODS", "history_path", "run_optimization", "run_sensitivity"]
 
@@ -67,9 +68,11 @@ def run_optimization(
     ``nsga2`` gives a Pareto front of the problem's objectives; the others maximise the first.
     See :func:`.solvers.optimize`, :func:`.solvers.pareto_front` and :func:`.output.write_study`.
     """
-    from fem_racket.validation import check_choice
-
     check_choice("method", method, METHODS)
+    if method == "nsga2" and len(problem.objectives) < 2:
+        raise InputError(
+            f"objectives = {list(problem.objectives)} is not allowed with nsga2: give 2 or 3"
+        )
     if out is not None:
         check_study_folder(out, overwrite=overwrite)
     ev = _evaluator(problem, out, restart, backend, workers, scheduler)

@@ -26,13 +26,24 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS, PAPER_CLAMPED_COR, zeta_from_cor
+from fem_racket.contact.linear import (
+    DEFAULT_BALL_MASS,
+    KCB_SPEED_RANGE,
+    PAPER_CLAMPED_COR,
+    zeta_from_cor,
+)
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import Frame, Segment, standard_frame
 from fem_racket.studies.design.swing import SwingModel, mass_quantities
 from fem_racket.studies.design.zone import ImpactZone, uniform_zone
-from fem_racket.validation import InputError, check_choice, check_integer, check_range
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_finite,
+    check_integer,
+    check_range,
+)
 
 __all__ = [
     "OBJECTIVES",
@@ -206,6 +217,19 @@ class DesignProblem:
             raise InputError("design objectives: none given; name at least one")
         check_range("power fraction", self.power_fraction, 0.0, 1.0, include_low=False)
         check_integer("elements", self.elements, minimum=n)
+        if not self.speeds:
+            raise InputError("speeds = [] is not allowed: give at least one ball speed [m/s]")
+        for v in self.speeds:  # the K_CB law's range (fem_racket.contact.linear)
+            check_range("speed", v, KCB_SPEED_RANGE[0], KCB_SPEED_RANGE[1], unit="m/s")
+        check_finite("stiffness cost", self.stiffness_cost, "1/(N m^2)")
+        for v in self.variables:
+            floor = 0.0 if v.unit == "kg" else np.nextafter(0.0, 1.0)
+            if not (np.isfinite(v.low) and np.isfinite(v.high) and floor <= v.low < v.high):
+                raise InputError(
+                    f"{v.name} bounds = [{v.low}, {v.high}] {v.unit} are not allowed: need "
+                    f"{'0 <=' if floor == 0.0 else '0 <'} low < high, finite"
+                )
+        self.mesh(self.x_start)  # checks the added masses' positions and widths
         if self.swing is not None and self.swing.reference_inertia is None:
             object.__setattr__(self, "swing", replace(self.swing, reference_inertia=self._i0()))
 
