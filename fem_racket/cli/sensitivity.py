@@ -33,6 +33,12 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="bar chart of the indices, with PNG.json beside it (default: print only)",
     )
     g.add_argument("--overwrite", action="store_true", help="replace the output files")
+    g.add_argument(
+        "--progress",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="progress bar on stderr (default: when stderr is a terminal)",
+    )
     p.add_argument("--json", action="store_true", help="print the indices as JSON")
     add_config_option(p, private=("out",))
     p.set_defaults(func=run)
@@ -53,6 +59,7 @@ def run(args: argparse.Namespace) -> int:
         backend=args.backend,
         workers=args.workers,
         scheduler=args.scheduler,
+        progress=args.progress,
         parameters=run_parameters(args),
     )
     if args.json:

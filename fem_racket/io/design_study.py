@@ -112,6 +112,7 @@ def run_sensitivity(
     backend: str | None = None,
     workers: int | None = None,
     scheduler: str | None = None,
+    progress: bool | None = None,
     parameters: dict[str, Any] | None = None,
 ) -> SobolIndices:
     """Sobol indices of ``output`` (:func:`.sensitivity.sobol_indices`); with ``out`` a PNG bar
@@ -122,7 +123,9 @@ def run_sensitivity(
         out = check_output_path(out, overwrite=overwrite)
         check_output_path(Path(str(out) + ".json"), overwrite=overwrite)
     ev = Evaluator(problem, backend=backend, workers=workers, scheduler=scheduler)
-    s = sobol_indices(problem, output=output, designs=designs, seed=seed, evaluator=ev)
+    s = sobol_indices(
+        problem, output=output, designs=designs, seed=seed, evaluator=ev, progress=progress
+    )
     if out is not None:
         meta = provenance(parameters)
         with atomic_output(out, overwrite=overwrite) as tmp:

@@ -20,6 +20,19 @@ from fem_racket.validation import InputError, check_choice, check_integer
 
 __all__ = ["SobolIndices", "sobol_indices"]
 
+#: The sample is evaluated in up to this many batches (progress between them).
+SLICES = 20
+
+
+def _progress(enabled: bool | None, total: int):
+    import sys
+
+    from tqdm import tqdm
+
+    if enabled is None:
+        enabled = sys.stderr.isatty()
+    return tqdm(total=total, desc="Sobol", unit="design", disable=not enabled, file=sys.stderr)
+
 
 @dataclass(frozen=True)
 class SobolIndices:
@@ -66,6 +79,7 @@ def sobol_indices(
     designs: int = 10_000,
     seed: int = 1,
     evaluator: Evaluator | None = None,
+    progress: bool | None = None,
 ) -> SobolIndices:
     """First-order and total Sobol indices of ``output`` over the problem's variable bounds.
 
@@ -81,6 +95,8 @@ def sobol_indices(
         Scrambling seed of the Sobol sequence.
     evaluator : Evaluator, optional
         Where designs run; serial in memory when None.
+    progress : bool, optional
+        Progress bar (designs) on stderr; None: only when stderr is a terminal.
     """
     from SALib.analyze import sobol as analyze
     from SALib.sample import sobol as sample
@@ -93,7 +109,12 @@ def sobol_indices(
     n = 1 << int(np.ceil(np.log2(max(total / (d + 2), 2))))
     spec = {"num_vars": d, "names": problem.names, "bounds": [[0.0, 1.0]] * d}
     u = sample.sample(spec, n, calc_second_order=False, seed=seed)
-    y = evaluator(problem.from_unit(u))[:, evaluator.column(output)]
+    x = problem.from_unit(u)
+    y = np.empty(len(x))
+    with _progress(progress, len(x)) as bar:
+        for part in np.array_split(np.arange(len(x)), max(1, min(SLICES, len(x) // 64))):
+            y[part] = evaluator(x[part])[:, evaluator.column(output)]
+            bar.update(len(part))
     if not np.all(np.isfinite(y)):
         raise InputError(f"output = {output!r} is not finite on every sampled design")
     si = analyze.analyze(spec, y, calc_second_order=False, seed=seed, print_to_console=False)
