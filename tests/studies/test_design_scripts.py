@@ -23,7 +23,7 @@ def load(path: Path):
 
 def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
     rows = load(SCRIPTS / "design_study.py").main(["--quick", "--out", str(tmp_path / "d")])
-    assert [r["study"] for r in rows] == ["cor", "ball_speed", "pareto"]
+    assert [r["study"] for r in rows] == ["cor", "same_specs", "ball_speed", "pareto"]
     out = tmp_path / "d"
     data = json.loads((out / "result.json").read_text())
     assert data["objective_name"] == "cor"
