@@ -9,8 +9,9 @@ Objectives (maximised), weights w_k of the zone, n_v speeds:
 
 - ``cor``: (1/n_v) sum_v sum_k w_k e_A(x_k, v);
 - ``ball_speed``: (1/n_v) sum_v sum_k w_k v_out(x_k, v) [m/s];
-- ``power_region``: the length [m] of the part of the region grid where v_out at the first speed
-  is at least ``power_fraction`` of its maximum (crossings interpolated linearly); Hatze (1994)
+- ``power_region``: the length [m] of the interval about the maximum of v_out (first speed) on
+  the region grid where v_out stays at least ``power_fraction`` of it
+  (:func:`fem_racket.studies.sweetspots.power_region`, as ``fem-racket map``); Hatze (1994)
   measures the same idea as an area on the string face (> 100 cm^2 on quality rackets).
 
 A stiffness price ``stiffness_cost`` [1/(N m^2)] times EI_1 is subtracted from each objective.
@@ -27,31 +28,17 @@ import numpy as np
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.swing import ball_speed_out
+from fem_racket.studies.sweetspots import power_region
 from fem_racket.studies.design.impacts import apparent_cor
 from fem_racket.studies.design.problem import QUANTITIES, DesignProblem
 from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, mass_quantities
 
-__all__ = ["evaluate_design", "evaluate_rows", "output_names", "power_region_length"]
+__all__ = ["evaluate_design", "evaluate_rows", "output_names"]
 
 
 def output_names(problem: DesignProblem) -> list[str]:
     """Columns of an evaluation: every quantity, then the problem's objectives."""
     return list(QUANTITIES) + list(problem.objectives)
-
-
-def power_region_length(x: np.ndarray, v: np.ndarray, fraction: float) -> float:
-    """Length (in the units of ``x``) where ``v >= fraction * max(v)``, linear between points."""
-    t = fraction * np.max(v)
-    a, b = v[:-1], v[1:]
-    dx = np.diff(x)
-    above = np.where(
-        (a >= t) & (b >= t),
-        1.0,
-        np.where(
-            (a < t) & (b < t), 0.0, (np.maximum(a, b) - t) / np.maximum(np.abs(b - a), 1e-300)
-        ),
-    )
-    return float(np.sum(dx * above))
 
 
 def speeds_along(problem: DesignProblem, x: np.ndarray, inertia_pivot: float) -> np.ndarray:
@@ -100,8 +87,8 @@ def evaluate_design(problem: DesignProblem, x: np.ndarray) -> dict[str, Any]:
                 out[name] = float(np.mean(problem.zone.mean(c[name]))) - cost
     if "power_region" in wanted:
         c = curves(problem, model, problem.region, mq["inertia_pivot"])
-        region = power_region_length(problem.region, c["ball_speed"][0], problem.power_fraction)
-        out["power_region"] = region * problem.length - cost
+        lo, hi = power_region(problem.region, c["ball_speed"][0], problem.power_fraction)
+        out["power_region"] = (hi - lo) * problem.length - cost
     return out
 
 
