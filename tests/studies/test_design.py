@@ -172,3 +172,14 @@ def test_swing_speed_law():
 def test_bad_problem(kwargs):
     with pytest.raises(InputError):
         small(**kwargs) if "boundaries" not in kwargs else paper_problem(**kwargs)
+
+
+def test_process_pool_gives_the_serial_results():
+    p = small(speeds=(30.0,), zone=uniform_zone(0.6, 0.9, 3))
+    x = p.from_unit(np.random.default_rng(1).random((70, 4)))
+    serial = Evaluator(p, backend="serial")(x[:3])
+    pooled = Evaluator(p, backend="processes", workers=2)(x[:3])
+    assert np.array_equal(serial, pooled)
+    # a batch of 64+ new designs goes to the pool by default (picklable planted function)
+    ev = Evaluator(p, workers=2, function=planted)
+    assert np.array_equal(ev(x), planted(p, x))
