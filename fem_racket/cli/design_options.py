@@ -1,6 +1,7 @@
 """Options of the design commands (``optimize``, ``sensitivity``): the design problem and where
-its designs run. A run file's ``[design]`` table takes the same keys (``--ei-bounds`` ->
-``ei_bounds``); the starting racket comes from the frame options or the ``[frame]`` table."""
+its designs run. A run file's ``[design]`` (optimize) or ``[sensitivity]`` table takes the same
+keys (``--ei-bounds`` -> ``ei_bounds``); the starting racket comes from the frame options or the
+``[frame]`` table."""
 
 from __future__ import annotations
 
@@ -37,18 +38,6 @@ def _bounds(text: str) -> tuple:
     return (lo, hi)
 
 
-def _pair(text: str) -> tuple[float, float]:
-    try:
-        lo, hi = (float(w) for w in str(text).split(","))
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"invalid pair: {text!r} (give LOW,HIGH)") from None
-    return (lo, hi)
-
-
-def _words(text: str) -> list[str]:
-    return [w.strip() for w in str(text).split(",") if w.strip()]
-
-
 def add_design_options(parser: argparse.ArgumentParser) -> None:
     """The design problem's options (starting racket: the frame options)."""
     add_frame_options(parser)
@@ -62,7 +51,7 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
     )
     g.add_argument(
         "--vary",
-        type=_words,
+        **number_list(str),
         default=["ei", "rhoa"],
         metavar="LIST",
         help="free parameter groups, comma list of ei, rhoa, mass (default ei,rhoa)",
@@ -74,15 +63,15 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
     )
     g.add_argument(
         "--ei-bounds",
-        type=_pair,
-        default=(50.0, 3000.0),
+        **number_list(),
+        default=[50.0, 3000.0],
         metavar="LOW,HIGH",
         help="bounds of every EI [N m^2] (default 50,3000: Fig 13's range)",
     )
     g.add_argument(
         "--rhoa-bounds",
-        type=_pair,
-        default=(0.2, 1.2),
+        **number_list(),
+        default=[0.2, 1.2],
         metavar="LOW,HIGH",
         help="bounds of every rhoA [kg/m] (default 0.2,1.2)",
     )
@@ -95,8 +84,8 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
     )
     g.add_argument(
         "--mass-bounds",
-        type=_pair,
-        default=(0.0, 0.03),
+        **number_list(),
+        default=[0.0, 0.03],
         metavar="LOW,HIGH",
         help="bounds of every added mass [kg] (default 0,0.03)",
     )
@@ -110,8 +99,8 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
     )
     z.add_argument(
         "--zone-range",
-        type=_pair,
-        default=(0.6, 0.9),
+        **number_list(),
+        default=[0.6, 0.9],
         metavar="LOW,HIGH",
         help="uniform zone x/L (default 0.6,0.9)",
     )
@@ -181,7 +170,7 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
     o = parser.add_argument_group("objectives and constraints")
     o.add_argument(
         "--objective",
-        type=_words,
+        **number_list(str),
         default=["cor"],
         metavar="LIST",
         help="maximised, comma list of "

@@ -30,7 +30,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--out",
         default=None,
         metavar="PNG",
-        help="bar chart of the indices, with PNG.json beside it (default: print only)",
+        help="PNG file: bar chart of the indices, PNG.json beside it (default: print only)",
     )
     g.add_argument("--overwrite", action="store_true", help="replace the output files")
     g.add_argument(

@@ -39,7 +39,7 @@ COMMAND_TABLES = {
     "animate": "animate",
     "reproduce": "reproduce",
     "optimize": "design",
-    "sensitivity": "design",
+    "sensitivity": "sensitivity",
 }
 
 #: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).

@@ -62,6 +62,14 @@ def fitc(*argv: str, **spec: str) -> list[str]:
     return ["fit", *(x for k, v in values.items() for x in (f"--{k}", v)), *argv]
 
 
+def opt(*argv: str) -> list[str]:
+    return ["optimize", "--boundaries", "0.3", "--speeds", "30", "--zone-points", "3", *argv]
+
+
+def sens(*argv: str) -> list[str]:
+    return ["sensitivity", "--boundaries", "0.3", "--speeds", "30", "--designs", "8", *argv]
+
+
 def repro(*argv: str) -> list[str]:
     return ["reproduce", "--quick", *argv]
 
@@ -299,6 +307,25 @@ FIT_CASES = [
     Case("fit-elements-two", fitc("--elements", "2"), ("elements = 2", ">= 3")),
     Case("fit-length-nan", fitc(length="nan"), ("length = nan", "finite")),
     Case("fit-no-mass", ["fit", "--length", "0.68"], ("mass is required", "--mass")),
+]
+
+DESIGN_CASES = [
+    Case("optimize-speed-high", opt("--speeds", "200"), ("speed = 200", "[1, 100]")),
+    Case("optimize-ei-bounds", opt("--ei-bounds", "0,100"), ("ei_1 bounds", "0 < low < high")),
+    Case("optimize-vary", opt("--vary", "stiffness"), ("vary = 'stiffness'", "ei")),
+    Case("optimize-objective", opt("--objective", "speed"), ("objective = 'speed'", "cor")),
+    Case("optimize-mass-range", opt("--mass-range", "0.4,0.3"), ("mass_kg = [0.4, 0.3]", "LOW < HIGH")),
+    Case("optimize-zone-range", opt("--zone-range", "0.9,0.6"), ("zone range", "LOW < HIGH")),
+    Case(
+        "optimize-mass-position",
+        opt("--vary", "mass", "--mass-positions", "1.2"),
+        ("mass position = 1.2", "[0, 1]"),
+    ),
+    Case("optimize-nsga2-one-objective", opt("--method", "nsga2"), ("objectives", "2 or 3")),
+    Case("optimize-racket-speed", opt("--racket-speed", "-5"), ("racket speed = -5", "[0, 100]")),
+    Case("optimize-out-is-file", opt("--out", "afile"), ("afile", "folder"), A_FILE),
+    Case("sensitivity-output", sens("--output", "nothing"), ("output = 'nothing'", "cor")),
+    Case("sensitivity-designs", sens("--designs", "2"), ("designs = 2", ">= 6")),
 ]
 
 OUTPUT_CASES = [
@@ -605,6 +632,8 @@ MESH_ENTRIES = {
     "export-vtk": vtk("--mesh", "bad.vtu"),
     "animate": anim("--mesh", "bad.vtu"),
     "map": mapc("--mesh", "bad.vtu"),
+    "optimize": opt("--mesh", "bad.vtu"),
+    "sensitivity": sens("--mesh", "bad.vtu"),
 }
 
 
@@ -618,6 +647,7 @@ ALL_CASES = (
     + TOML_CASES
     + MAP_CASES
     + FIT_CASES
+    + DESIGN_CASES
 )
 MESH_CASES = {c[0]: c[1] for c in BAD_MESHES}
 

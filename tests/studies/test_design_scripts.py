@@ -81,7 +81,7 @@ def test_run_file_design_table(tmp_path, capsys):
     run = tmp_path / "run.toml"
     run.write_text(
         "[ball]\nmass_kg = 0.058\n[design]\nboundaries = [0.3]\nspeeds = [30]\n"
-        "zone_points = 3\nobjective = 'cor'\nmass_range = 'start'\nmaxiter = 2\n"
+        "zone_points = 3\nobjective = ['cor']\nmass_range = 'start'\nmaxiter = 2\n"
         "backend = 'serial'\n"
         f"out = '{tmp_path / 'r'}'\n"
     )
