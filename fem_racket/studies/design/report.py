@@ -30,7 +30,7 @@ def design_maps(
     """The map of design ``x`` at each of the problem's ball speeds."""
     mesh = problem.mesh(x)
     model = FrameModel(assemble_closed_form(mesh))
-    swing: dict[str, Any] = {}
+    swing: dict[str, Any] = {"pivot": SWING_WEIGHT_AXIS}  # for the centre of percussion
     if problem.swing is not None:
         s = problem.swing
         inertia = mass_quantities(mesh, s.pivot)["inertia_pivot"]
