@@ -21,8 +21,9 @@ import time
 
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.sensitivity import sobol_indices
-from fem_racket.studies.design.solvers import optimize, pareto_front
+from fem_racket.studies.design.solvers import optimize
 
 TARGETS = {"SLSQP 8 variables": 60.0, "NSGA-II": 180.0, "Sobol": 180.0}
 

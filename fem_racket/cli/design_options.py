@@ -11,7 +11,8 @@ from typing import Any
 from fem_racket.cli.common import add_frame_options, frame_from_args
 from fem_racket.cli.lists import number_list
 from fem_racket.studies.design.build import ZONES, design_problem
-from fem_racket.studies.design.problem import OBJECTIVES, DesignProblem
+from fem_racket.studies.design.problem import DesignProblem
+from fem_racket.studies.design.variables import OBJECTIVES
 from fem_racket.studies.executors import BACKENDS
 
 __all__ = ["add_design_options", "add_run_options", "problem_from_args"]

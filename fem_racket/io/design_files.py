@@ -23,8 +23,8 @@ import numpy as np
 from fem_racket.io.design_plots import plot_map, plot_pareto, plot_progress
 from fem_racket.io.mesh_files import write_mesh
 from fem_racket.outputs import add_png_provenance, atomic_folder, check_output_folder, provenance
-from fem_racket.studies.design.problem import OBJECTIVES, QUANTITIES
 from fem_racket.studies.design.report import design_maps, racket_report
+from fem_racket.studies.design.variables import OBJECTIVES, QUANTITIES
 
 __all__ = ["MARKER", "check_study_folder", "history_dataset", "study_summary", "write_study"]
 

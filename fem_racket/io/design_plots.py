@@ -9,7 +9,8 @@ import os
 
 import numpy as np
 
-from fem_racket.studies.design.problem import OBJECTIVES, DesignProblem
+from fem_racket.studies.design.problem import DesignProblem
+from fem_racket.studies.design.variables import OBJECTIVES
 
 __all__ = ["plot_map", "plot_pareto", "plot_progress", "plot_sobol"]
 

@@ -15,9 +15,11 @@ from typing import Any
 from fem_racket.io.design_files import check_study_folder, write_study
 from fem_racket.outputs import add_png_provenance, atomic_output, check_output_path, provenance
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.problem import DesignProblem
+from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.sensitivity import SobolIndices, sobol_indices
-from fem_racket.studies.design.solvers import DesignResult, optimize, pareto_front
+from fem_racket.studies.design.solvers import optimize
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["METHODS", "history_path", "run_optimization", "run_sensitivity"]

@@ -314,7 +314,11 @@ DESIGN_CASES = [
     Case("optimize-ei-bounds", opt("--ei-bounds", "0,100"), ("ei_1 bounds", "0 < low < high")),
     Case("optimize-vary", opt("--vary", "stiffness"), ("vary = 'stiffness'", "ei")),
     Case("optimize-objective", opt("--objective", "speed"), ("objective = 'speed'", "cor")),
-    Case("optimize-mass-range", opt("--mass-range", "0.4,0.3"), ("mass_kg = [0.4, 0.3]", "LOW < HIGH")),
+    Case(
+        "optimize-mass-range",
+        opt("--mass-range", "0.4,0.3"),
+        ("mass_kg = [0.4, 0.3]", "LOW < HIGH"),
+    ),
     Case("optimize-zone-range", opt("--zone-range", "0.9,0.6"), ("zone range", "LOW < HIGH")),
     Case(
         "optimize-mass-position",

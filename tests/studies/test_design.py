@@ -4,13 +4,14 @@ Sobol indices of a known function, resumable history."""
 import numpy as np
 import pytest
 
-from fem_racket.studies.design.build import design_problem
+from fem_racket.studies.design.build import design_problem, paper_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_rows, output_names
-from fem_racket.studies.design.problem import Constraint, paper_problem
+from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.sensitivity import sobol_indices
-from fem_racket.studies.design.solvers import optimize, pareto_front
+from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.swing import SwingModel
+from fem_racket.studies.design.variables import Constraint
 from fem_racket.studies.design.zone import gaussian_zone, uniform_zone
 from fem_racket.validation import InputError
 

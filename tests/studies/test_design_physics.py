@@ -3,12 +3,13 @@ source beside the check."""
 
 import numpy as np
 
+from fem_racket.studies.design.build import paper_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_rows
-from fem_racket.studies.design.problem import Constraint, paper_problem
 from fem_racket.studies.design.report import racket_report
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.swing import SwingModel
+from fem_racket.studies.design.variables import Constraint
 from fem_racket.studies.design.zone import uniform_zone
 
 ZONE = uniform_zone(0.6, 0.9, 7)

@@ -19,17 +19,18 @@ from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
-from fem_racket.studies.design.problem import QUANTITIES, Constraint, DesignProblem, paper_problem
+from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.swing import (
     SWING_EXPONENT,
     SWING_WEIGHT_AXIS,
     SwingModel,
     mass_quantities,
 )
+from fem_racket.studies.design.variables import QUANTITIES, Constraint, Variable
 from fem_racket.studies.design.zone import gaussian_zone, uniform_zone
 from fem_racket.validation import InputError, check_choice
 
-__all__ = ["ZONES", "design_problem", "mode1_node"]
+__all__ = ["ZONES", "design_problem", "mode1_node", "paper_problem"]
 
 ZONES = ("uniform", "node")
 
@@ -152,4 +153,86 @@ def design_problem(
         elements=elements,
         **extra,
         region=np.linspace(0.5, 0.98, 25),
+    )
+
+
+def _resample(frame: Frame, bounds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Length-weighted mean EI and rhoA of ``frame`` over each interval of ``bounds`` [m]."""
+    steps = frame.steps
+    ei = np.empty(bounds.size - 1)
+    ra = np.empty(bounds.size - 1)
+    for k, (a, b) in enumerate(zip(bounds[:-1], bounds[1:], strict=True)):
+        overlap = np.clip(np.minimum(steps[1:], b) - np.maximum(steps[:-1], a), 0.0, None)
+        w = overlap / (b - a)
+        ei[k] = sum(wi * s.EI for wi, s in zip(w, frame.segments, strict=True))
+        ra[k] = sum(wi * s.rhoA for wi, s in zip(w, frame.segments, strict=True))
+    return ei, ra
+
+
+def paper_problem(
+    *,
+    boundaries: tuple[float, ...] = (0.3, 0.5333333333333333, 0.7666666666666667),
+    vary: tuple[str, ...] = ("ei", "rhoa"),
+    ei_bounds: tuple[float, float] = (50.0, 3000.0),
+    rhoa_bounds: tuple[float, float] = (0.2, 1.2),
+    mass_positions: tuple[float, ...] = (),
+    mass_bounds: tuple[float, float] = (0.0, 0.03),
+    link_ei: bool = False,
+    link_rhoa: bool = False,
+    start: Frame | None = None,
+    **kwargs: Any,
+) -> DesignProblem:
+    """A design problem on the paper's racket (or ``start``), split at ``boundaries`` x/L.
+
+    Parameters
+    ----------
+    boundaries : tuple of float
+        Interior segment boundaries x/L; the default splits the paper's step at 0.3 L and the top
+        side into three equal parts (4 segments: 8 variables with ``vary=("ei", "rhoa")``).
+    vary : tuple of str
+        Which parameters are free: "ei", "rhoa", "mass" (each a group over all segments/masses).
+    ei_bounds, rhoa_bounds, mass_bounds : (float, float)
+        Bounds of every EI [N m^2] (Fig 13's 50-3000), rhoA [kg/m] and added mass [kg].
+    mass_positions : tuple of float
+        Centres of added masses x/L (their starting mass is 0).
+    link_ei, link_rhoa : bool
+        One EI (rhoA) variable, EI_1 (rhoA_1), the others keeping their starting ratios.
+    start : Frame, optional
+        The starting racket; the paper's standard racket when None.
+    **kwargs
+        Other :class:`DesignProblem` fields (zone, speeds, swing, constraints, objectives, ...).
+    """
+    for name in vary:
+        check_choice("vary", name, ("ei", "rhoa", "mass"))
+    frame = standard_frame() if start is None else start
+    length = frame.length
+    b = np.asarray(boundaries, dtype=float)
+    if b.size and (np.any(np.diff(b) <= 0.0) or b[0] <= 0.0 or b[-1] >= 1.0):
+        raise InputError(
+            f"boundaries = {list(boundaries)} x/L is not allowed: must increase within (0, 1)"
+        )
+    edges = np.concatenate([[0.0], b, [1.0]]) * length
+    ei, ra = _resample(frame, edges)
+    n, a = ei.size, len(mass_positions)
+    p0 = np.concatenate([ei, ra, np.zeros(a)])
+    variables: list[Variable] = []
+    if "ei" in vary:
+        if link_ei:
+            variables.append(Variable("ei", 0, *ei_bounds, "N m^2", log=True))
+        else:
+            variables += [Variable(f"ei_{k + 1}", k, *ei_bounds, "N m^2", True) for k in range(n)]
+    if "rhoa" in vary and link_rhoa:
+        variables.append(Variable("rhoa", n, *rhoa_bounds, "kg/m"))
+    elif "rhoa" in vary:
+        variables += [Variable(f"rhoa_{k + 1}", n + k, *rhoa_bounds, "kg/m") for k in range(n)]
+    if "mass" in vary:
+        variables += [Variable(f"mass_{k + 1}", 2 * n + k, *mass_bounds, "kg") for k in range(a)]
+    return DesignProblem(
+        segment_lengths=tuple(np.diff(edges)),
+        start=p0,
+        variables=tuple(variables),
+        mass_positions=tuple(mass_positions),
+        link_ei=link_ei,
+        link_rhoa=link_rhoa,
+        **kwargs,
     )

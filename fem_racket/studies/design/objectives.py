@@ -29,8 +29,9 @@ from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.swing import ball_speed_out
 from fem_racket.studies.design.impacts import apparent_cor
-from fem_racket.studies.design.problem import QUANTITIES, DesignProblem
+from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, mass_quantities
+from fem_racket.studies.design.variables import QUANTITIES
 from fem_racket.studies.sweetspots import power_region
 
 __all__ = ["evaluate_design", "evaluate_rows", "output_names"]

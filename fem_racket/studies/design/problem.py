@@ -34,8 +34,9 @@ from fem_racket.contact.linear import (
 )
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
-from fem_racket.frame.segments import Frame, Segment, standard_frame
+from fem_racket.frame.segments import Frame, Segment
 from fem_racket.studies.design.swing import SwingModel, mass_quantities
+from fem_racket.studies.design.variables import OBJECTIVES, Constraint, Variable
 from fem_racket.studies.design.zone import ImpactZone, uniform_zone
 from fem_racket.validation import (
     InputError,
@@ -45,105 +46,7 @@ from fem_racket.validation import (
     check_range,
 )
 
-__all__ = [
-    "OBJECTIVES",
-    "QUANTITIES",
-    "Constraint",
-    "DesignProblem",
-    "Variable",
-    "paper_problem",
-]
-
-#: Derived quantities a constraint can bound: name -> (label with units, tolerance).
-QUANTITIES: dict[str, tuple[str, float]] = {
-    "mass_kg": ("total mass [kg]", 1e-6),
-    "balance_m": ("balance point from the butt [m]", 1e-6),
-    "swing_weight_kg_cm2": ("swing weight about 0.10 m [kg cm^2]", 1e-3),
-    "f1_hz": ("first free-free frequency [Hz]", 1e-3),
-}
-#: Objectives (maximised): name -> label with units.
-OBJECTIVES: dict[str, str] = {
-    "cor": "mean apparent COR e_A [1]",
-    "ball_speed": "mean ball speed v_out [m/s]",
-    "power_region": "power region length [m]",
-}
-
-
-@dataclass(frozen=True)
-class Variable:
-    """A design variable: one entry (or, linked, all EI entries) of the parameter vector.
-
-    Attributes
-    ----------
-    name : str
-        ``ei_k``, ``rhoa_k``, ``mass_k`` (k from 1) or ``ei`` (linked EI).
-    index : int
-        Its entry of the full parameter vector.
-    low, high : float
-        Bounds in SI units.
-    unit : str
-    log : bool
-        Searched on a log scale.
-    """
-
-    name: str
-    index: int
-    low: float
-    high: float
-    unit: str
-    log: bool = False
-
-    def to_unit(self, value: np.ndarray) -> np.ndarray:
-        """Map physical values to [0, 1]."""
-        if self.log:
-            return (np.log(value) - np.log(self.low)) / (np.log(self.high) - np.log(self.low))
-        return (np.asarray(value) - self.low) / (self.high - self.low)
-
-    def from_unit(self, u: np.ndarray) -> np.ndarray:
-        """Map [0, 1] to physical values."""
-        u = np.asarray(u, dtype=float)
-        if self.log:
-            return np.exp(np.log(self.low) + u * (np.log(self.high) - np.log(self.low)))
-        return self.low + u * (self.high - self.low)
-
-
-@dataclass(frozen=True)
-class Constraint:
-    """``low <= quantity <= high`` (either side may be infinite; equal ends: an equality).
-
-    ``tolerance`` is how far outside the bounds a result may be and still count as feasible,
-    in the quantity's unit (default from :data:`QUANTITIES`).
-    """
-
-    name: str
-    low: float = -np.inf
-    high: float = np.inf
-    tolerance: float | None = None
-
-    def __post_init__(self) -> None:
-        check_choice("constraint", self.name, tuple(QUANTITIES))
-        if not self.low <= self.high:
-            raise InputError(
-                f"constraint {self.name} = [{self.low}, {self.high}] is not allowed: "
-                "low must not exceed high"
-            )
-        if self.tolerance is None:
-            object.__setattr__(self, "tolerance", QUANTITIES[self.name][1])
-
-    @property
-    def scale(self) -> float:
-        """Typical size of the quantity (normalises violations)."""
-        ends = [abs(v) for v in (self.low, self.high) if np.isfinite(v)]
-        return max(ends) if ends else 1.0
-
-    def violation(self, value: np.ndarray) -> np.ndarray:
-        """Distance outside [low, high] (0 inside), in the quantity's unit."""
-        value = np.asarray(value)
-        return np.maximum(self.low - value, 0.0) + np.maximum(value - self.high, 0.0)
-
-    def holds(self, value: float) -> bool:
-        """True when ``value`` is within the bounds to the tolerance."""
-        return bool(self.violation(value) <= self.tolerance)
+__all__ = ["DesignProblem"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -364,85 +267,3 @@ class DesignProblem:
         """SHA-256 of :meth:`describe` (a history file belongs to one problem)."""
         text = json.dumps(self.describe(), sort_keys=True, default=str)
         return hashlib.sha256(text.encode()).hexdigest()
-
-
-def _resample(frame: Frame, bounds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Length-weighted mean EI and rhoA of ``frame`` over each interval of ``bounds`` [m]."""
-    steps = frame.steps
-    ei = np.empty(bounds.size - 1)
-    ra = np.empty(bounds.size - 1)
-    for k, (a, b) in enumerate(zip(bounds[:-1], bounds[1:], strict=True)):
-        overlap = np.clip(np.minimum(steps[1:], b) - np.maximum(steps[:-1], a), 0.0, None)
-        w = overlap / (b - a)
-        ei[k] = sum(wi * s.EI for wi, s in zip(w, frame.segments, strict=True))
-        ra[k] = sum(wi * s.rhoA for wi, s in zip(w, frame.segments, strict=True))
-    return ei, ra
-
-
-def paper_problem(
-    *,
-    boundaries: tuple[float, ...] = (0.3, 0.5333333333333333, 0.7666666666666667),
-    vary: tuple[str, ...] = ("ei", "rhoa"),
-    ei_bounds: tuple[float, float] = (50.0, 3000.0),
-    rhoa_bounds: tuple[float, float] = (0.2, 1.2),
-    mass_positions: tuple[float, ...] = (),
-    mass_bounds: tuple[float, float] = (0.0, 0.03),
-    link_ei: bool = False,
-    link_rhoa: bool = False,
-    start: Frame | None = None,
-    **kwargs: Any,
-) -> DesignProblem:
-    """A design problem on the paper's racket (or ``start``), split at ``boundaries`` x/L.
-
-    Parameters
-    ----------
-    boundaries : tuple of float
-        Interior segment boundaries x/L; the default splits the paper's step at 0.3 L and the top
-        side into three equal parts (4 segments: 8 variables with ``vary=("ei", "rhoa")``).
-    vary : tuple of str
-        Which parameters are free: "ei", "rhoa", "mass" (each a group over all segments/masses).
-    ei_bounds, rhoa_bounds, mass_bounds : (float, float)
-        Bounds of every EI [N m^2] (Fig 13's 50-3000), rhoA [kg/m] and added mass [kg].
-    mass_positions : tuple of float
-        Centres of added masses x/L (their starting mass is 0).
-    link_ei, link_rhoa : bool
-        One EI (rhoA) variable, EI_1 (rhoA_1), the others keeping their starting ratios.
-    start : Frame, optional
-        The starting racket; the paper's standard racket when None.
-    **kwargs
-        Other :class:`DesignProblem` fields (zone, speeds, swing, constraints, objectives, ...).
-    """
-    for name in vary:
-        check_choice("vary", name, ("ei", "rhoa", "mass"))
-    frame = standard_frame() if start is None else start
-    length = frame.length
-    b = np.asarray(boundaries, dtype=float)
-    if b.size and (np.any(np.diff(b) <= 0.0) or b[0] <= 0.0 or b[-1] >= 1.0):
-        raise InputError(
-            f"boundaries = {list(boundaries)} x/L is not allowed: must increase within (0, 1)"
-        )
-    edges = np.concatenate([[0.0], b, [1.0]]) * length
-    ei, ra = _resample(frame, edges)
-    n, a = ei.size, len(mass_positions)
-    p0 = np.concatenate([ei, ra, np.zeros(a)])
-    variables: list[Variable] = []
-    if "ei" in vary:
-        if link_ei:
-            variables.append(Variable("ei", 0, *ei_bounds, "N m^2", log=True))
-        else:
-            variables += [Variable(f"ei_{k + 1}", k, *ei_bounds, "N m^2", True) for k in range(n)]
-    if "rhoa" in vary and link_rhoa:
-        variables.append(Variable("rhoa", n, *rhoa_bounds, "kg/m"))
-    elif "rhoa" in vary:
-        variables += [Variable(f"rhoa_{k + 1}", n + k, *rhoa_bounds, "kg/m") for k in range(n)]
-    if "mass" in vary:
-        variables += [Variable(f"mass_{k + 1}", 2 * n + k, *mass_bounds, "kg") for k in range(a)]
-    return DesignProblem(
-        segment_lengths=tuple(np.diff(edges)),
-        start=p0,
-        variables=tuple(variables),
-        mass_positions=tuple(mass_positions),
-        link_ei=link_ei,
-        link_rhoa=link_rhoa,
-        **kwargs,
-    )
