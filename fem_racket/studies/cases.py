@@ -1,15 +1,14 @@
-"""One sweep case -> its result values, with everything reusable cached per process.
+"""A chunk of sweep cases -> their result values, with the frames cached per process.
 
-Each process (the caller, a pool worker or a Dask worker) keeps: the assembled frame and its
-free-free modes per mesh (``FrameModel``), scaled copies for EI changes that scale every
-segment (``FrameModel.scaled``: omega ~ sqrt(factor), no eigen-solve), the point vector g(x_i)
-per impact point, and, for the exact solver, each case's outcome at unit speed. The coupled
-system is linear, so at fixed K_CB the COR and t_c do not depend on the speed and the force
-scales with it: cases differing only in speed share one solve, and every case is solved at
-V_B0 = 1 m/s, which makes results independent of the order in which cases are run.
+Each process (the caller, a pool worker or a Dask worker) keeps the assembled frame and its
+free-free modes per mesh (``FrameModel``); EI changes that scale every segment reuse them
+(omega ~ sqrt(factor), no eigen-solve).
 
-Exact solver: :func:`fem_racket.impact.closed_form.exact_outcome` (scalars only). BDF solvers:
-:func:`fem_racket.simulate` with 1 us output steps, the peak force being the largest over them.
+Exact solver: the batched engine (:func:`fem_racket.impact.engine.impacts`) on all the chunk's
+cases of one frame at once, to the sweep's COR tolerance; every case is solved at
+V_B0 = 1 m/s (the system is linear), so results do not depend on how cases are chunked.
+BDF solvers: :func:`fem_racket.simulate` per case with 1 us output steps, the peak force being
+the largest over them.
 """
 
 from __future__ import annotations
@@ -23,12 +22,12 @@ import numpy as np
 from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
-from fem_racket.impact.closed_form import exact_outcome
+from fem_racket.impact.engine import impacts
 from fem_racket.impact.simulate import simulate
-from fem_racket.impact.system import NoSeparationError, modal_system
+from fem_racket.impact.system import NoSeparationError
 from fem_racket.studies.grid import SweepSpec
 
-__all__ = ["VARIABLES", "clear_caches", "run_chunk"]
+__all__ = ["VARIABLES", "clear_caches", "result_variables", "run_chunk"]
 
 log = logging.getLogger(__name__)
 
@@ -40,14 +39,19 @@ VARIABLES: dict[str, tuple[str, str]] = {
     "peak_force_n": ("N", "largest contact force"),
     "kcb_n_m": ("N/m", "ball/string stiffness K_CB used"),
 }
+
+
+def result_variables(spec: SweepSpec) -> list[str]:
+    """The variables a sweep's dataset holds (the peak force only when asked)."""
+    return [v for v in VARIABLES if spec.peak_force or v != "peak_force_n"]
+
+
 #: Output step of the BDF solvers in sweeps [s] (their peak force is the maximum over it).
 BDF_OUTPUT_STEP = 1e-6
 
 # Per-process caches (each pool or Dask worker fills its own).
 _BASE: dict[tuple, FrameModel] = {}
 _SCALED: OrderedDict[tuple, FrameModel] = OrderedDict()
-_POINT: OrderedDict[tuple, np.ndarray] = OrderedDict()
-_UNIT: OrderedDict[tuple, tuple[float, float, float]] = OrderedDict()
 
 
 def _remember(cache: OrderedDict, key: tuple, value: Any, size: int) -> Any:
@@ -58,19 +62,17 @@ def _remember(cache: OrderedDict, key: tuple, value: Any, size: int) -> Any:
 
 
 def clear_caches() -> None:
-    """Forget the models, point vectors and unit-speed outcomes cached in this process."""
-    for cache in (_BASE, _SCALED, _POINT, _UNIT):
+    """Forget the models cached in this process."""
+    for cache in (_BASE, _SCALED):
         cache.clear()
 
 
-def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) -> tuple:
-    """(key, model) of a case's frame, built from cached assembly and modes."""
+def _base(spec: SweepSpec, elements: int, ei1: float | None) -> tuple[tuple, FrameModel]:
+    """(key, model) of the unscaled frame of a case, assembled once per process."""
     if spec.frame is None and spec.ei2 is not None:  # EI2 fixed: not a scaling of EI1
-        base_key, factor = (spec.frame_key, elements, ei1, spec.ei2), ei_factor
-    elif spec.frame is None:
-        base_key, factor = (spec.frame_key, elements), ei_factor * ei1 / PAPER_EI1
+        base_key = (spec.frame_key, elements, ei1, spec.ei2)
     else:
-        base_key, factor = (spec.frame_key, elements), ei_factor
+        base_key = (spec.frame_key, elements)
     base = _BASE.get(base_key)
     if base is None:
         if spec.frame is None:
@@ -78,7 +80,21 @@ def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) 
         else:
             frame = spec.frame
         base = _BASE[base_key] = FrameModel.build(frame, elements)
-        base.modes(spec.modes)
+    return base_key, base
+
+
+def _factor(spec: SweepSpec, ei1: Any, ei_factor: Any) -> Any:
+    """The factor on every EI of the base frame (see :func:`_base`)."""
+    if spec.frame is None and spec.ei2 is None:
+        return ei_factor * ei1 / PAPER_EI1
+    return ei_factor
+
+
+def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) -> tuple:
+    """(key, model) of a case's frame, built from cached assembly and modes (BDF solvers)."""
+    base_key, base = _base(spec, elements, ei1)
+    factor = _factor(spec, ei1, ei_factor)
+    base.modes(spec.modes)
     if factor == 1.0:
         return base_key + (1.0,), base
     key = base_key + (factor,)
@@ -88,48 +104,76 @@ def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) 
     return key, model
 
 
-def _point_vector(key: tuple, model: FrameModel, position: float) -> np.ndarray:
-    pkey = key[:-1] + (position,)
-    g = _POINT.get(pkey)
-    if g is None:
-        g = _remember(_POINT, pkey, model.fe.point_vector(position * model.mesh.length), 4096)
-    return g
-
-
 def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
-    """The result values (in :data:`VARIABLES` order) of one case."""
+    """The result values (in :data:`VARIABLES` order) of one case of a BDF solver."""
     speed, mass = p["speed"], p["ball_mass"]
     law = LinearContact.for_speed(speed, kcb=p["kcb"], zeta=p["zeta"])
     kcb, zeta = law.stiffness, law.zeta
-    key, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
-    if spec.solver != "exact":
-        r = simulate(
+    _, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
+    r = simulate(
+        model,
+        position=p["position"],
+        speed=speed,
+        ball_mass=mass,
+        kcb=kcb,
+        zeta=zeta,
+        solver=spec.solver,
+        separation=spec.separation,
+        basis=spec.basis,
+        modes=spec.modes,
+        output_step=BDF_OUTPUT_STEP,
+        rtol=spec.rtol,
+        atol=spec.atol,
+    )
+    return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, kcb
+
+
+def _engine_chunk(spec: SweepSpec, chunk: np.ndarray) -> np.ndarray:
+    """Results of the exact solver for the cases ``chunk``: one engine call per frame."""
+    p = spec.case_arrays(chunk)
+    n = len(chunk)
+    out = np.full((n, len(VARIABLES)), np.nan)
+    elements = np.broadcast_to(p["elements"], n)
+    ei1 = np.broadcast_to(np.nan if p["ei1"] is None else p["ei1"], n)
+    # One group per base frame: per element count, and per EI1 when EI2 is fixed.
+    split_ei1 = spec.frame is None and spec.ei2 is not None
+    keys = np.column_stack([elements, ei1 if split_ei1 else np.zeros(n)])
+    uniq, group = np.unique(keys, axis=0, return_inverse=True)
+    group = group.ravel()
+
+    def take(value: Any, rows: np.ndarray) -> Any:
+        return value if np.ndim(value) == 0 else np.asarray(value)[rows]
+
+    for g, (cells, e1) in enumerate(uniq):
+        rows = np.flatnonzero(group == g)
+        _, model = _base(spec, int(cells), float(e1) if split_ei1 else None)
+        factor = _factor(spec, take(p["ei1"], rows), take(p["ei_factor"], rows))
+        b = impacts(
             model,
-            position=p["position"],
-            speed=speed,
-            ball_mass=mass,
-            kcb=kcb,
-            zeta=zeta,
-            solver=spec.solver,
+            position=take(p["position"], rows),
+            speed=take(p["speed"], rows),
+            kcb=take(p["kcb"], rows),
+            zeta=take(p["zeta"], rows),
+            ball_mass=take(p["ball_mass"], rows),
+            ei_factor=factor,
             separation=spec.separation,
-            basis=spec.basis,
+            tolerance=spec.tolerance,
+            peak_force=spec.peak_force,
             modes=spec.modes,
-            output_step=BDF_OUTPUT_STEP,
-            rtol=spec.rtol,
-            atol=spec.atol,
         )
-        return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, kcb
-    ukey = (*key, p["position"], mass, kcb, zeta, spec.separation, spec.modes)
-    unit = _UNIT.get(ukey)
-    if unit is None:
-        fm = model.modes(spec.modes)
-        g = _point_vector(key, model, p["position"])
-        ccb = law.damping(mass)
-        system = modal_system(fm.all_omega, fm.all_shapes, g, mass, kcb, ccb, 1.0)
-        o = exact_outcome(system, separation=spec.separation)
-        unit = _remember(_UNIT, ukey, (-o.rebound_velocity, o.contact_time, o.peak_force), 65536)
-    cor, tc, peak = unit
-    return cor, tc, cor * speed, peak * speed, kcb
+        cols = [b.cor, b.contact_time, b.rebound_speed, b.peak_force, b.kcb]
+        for k, col in enumerate(cols):
+            if col is not None:
+                out[rows, k] = np.broadcast_to(col, rows.shape)
+    failed = np.flatnonzero(np.isnan(out[:, 0]))
+    if failed.size:
+        log.warning(
+            "%d cases failed (NaN in the results; no separation within 20 contact times), "
+            "first: case %d",
+            failed.size,
+            chunk[failed[0]],
+        )
+    return out
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
@@ -138,6 +182,8 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     A case whose ball does not separate within the time limit, or whose solver fails, gets NaN
     (the sweep reports how many); any other error stops the sweep.
     """
+    if spec.solver == "exact":
+        return _engine_chunk(spec, np.asarray(chunk))
     out = np.empty((len(chunk), len(VARIABLES)))
     for row, index in enumerate(chunk):
         try:
