@@ -1,7 +1,8 @@
 """Apparent COR of one racket at many (position, speed) cases: the design studies' only impact call.
 
 Every objective goes through :func:`apparent_cor`, so the impact engine behind it is chosen in one
-place: today :func:`fem_racket.studies.racket_map.apparent_cor_along` (the map's kernel).
+place: the batched engine (:func:`fem_racket.impact.engine.impacts`), all of a design's cases in
+one call, its modes computed once per design.
 """
 
 from __future__ import annotations
@@ -9,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from fem_racket.frame.model import FrameModel
-from fem_racket.studies.racket_map import apparent_cor_along
+from fem_racket.impact.engine import impacts
 
 __all__ = ["apparent_cor"]
 
@@ -22,6 +23,7 @@ def apparent_cor(
     ball_mass: float,
     zeta: float,
     modes: int | None,
+    tolerance: float | None,
 ) -> np.ndarray:
     """e_A of the stationary free racket for each case.
 
@@ -36,7 +38,9 @@ def apparent_cor(
     zeta : float
         Damping ratio of the ball/string law.
     modes : int or None
-        Flexible modes kept (None: all).
+        Flexible modes kept (None: the engine's choice by ``tolerance``).
+    tolerance : float or None
+        COR tolerance of the engine (None: every mode).
 
     Returns
     -------
@@ -44,5 +48,13 @@ def apparent_cor(
         e_A, shape of the broadcast inputs.
     """
     x, v = np.broadcast_arrays(np.asarray(positions, float), np.asarray(speeds, float))
-    e = apparent_cor_along(model, x.ravel(), v.ravel(), ball_mass=ball_mass, zeta=zeta, modes=modes)
-    return e.reshape(x.shape)
+    batch = impacts(
+        model,
+        position=x,
+        speed=v,
+        ball_mass=ball_mass,
+        zeta=zeta,
+        modes=modes,
+        tolerance=tolerance,
+    )
+    return np.asarray(batch.cor).reshape(x.shape)

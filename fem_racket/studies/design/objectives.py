@@ -62,6 +62,7 @@ def curves(
         ball_mass=problem.ball_mass,
         zeta=problem.zeta,
         modes=problem.modes,
+        tolerance=problem.tolerance,
     )
     return {"cor": cor, "ball_speed": ball_speed_out(cor, v_in, v_r)}
 

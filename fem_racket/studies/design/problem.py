@@ -85,7 +85,9 @@ class DesignProblem:
     elements : int
         Cells of each design's mesh (before the added masses' strip nodes).
     modes : int or None
-        Flexible modes kept per impact.
+        Flexible modes kept per impact (None: the engine's choice by ``tolerance``).
+    tolerance : float or None
+        COR tolerance of the impact engine (:mod:`fem_racket.impact.engine`; None: every mode).
     """
 
     segment_lengths: tuple[float, ...]
@@ -106,7 +108,8 @@ class DesignProblem:
     ball_mass: float = DEFAULT_BALL_MASS
     zeta: float = field(default_factory=lambda: zeta_from_cor(PAPER_CLAMPED_COR))
     elements: int = 20
-    modes: int | None = 20
+    modes: int | None = None
+    tolerance: float | None = 1e-6
 
     def __post_init__(self) -> None:
         n = self.n_segments
@@ -259,7 +262,8 @@ class DesignProblem:
             "ball_mass_kg": self.ball_mass,
             "zeta": self.zeta,
             "elements": self.elements,
-            "modes": "all" if self.modes is None else self.modes,
+            "modes": "by tolerance" if self.modes is None else self.modes,
+            "tolerance": self.tolerance,
         }
 
     @property
