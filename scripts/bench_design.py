@@ -8,8 +8,9 @@
 3. Sobol indices of mean e_A with about 10 000 designs (target <= 3 min).
 
 Wall and CPU time (this process and its process pools; batches of 64+ designs run on a pool of
-all cores), designs evaluated, impacts (zone points x speeds per design, plus the report's maps), and
-microseconds of wall time per zone impact. The machine is shared: compare rows of one run.
+all cores), designs evaluated, zone impacts (zone points x speeds per design) and microseconds of
+wall time per zone impact (each design also builds its frame and modes). The machine is shared:
+compare rows of one run.
 
 Usage: python scripts/bench_design.py [--quick]
 """
