@@ -76,12 +76,18 @@ class ScaledProblem:
         return self.df
 
 
-def progress_bar(enabled: bool | None, desc: str, total: int | None) -> Any:
+def progress_bar(enabled: bool | None, desc: str, total: int | None, unit: str = "batch") -> Any:
+    """A tqdm bar on stderr (None: only when stderr is a terminal), without tqdm's monitor
+    thread: a process with a second thread starts its pools by forkserver, not fork (slower;
+    :mod:`fem_racket.studies.executors`)."""
     from tqdm import tqdm
+
+    class Bar(tqdm):
+        monitor_interval = 0
 
     if enabled is None:
         enabled = sys.stderr.isatty()
-    return tqdm(total=total, desc=desc, unit="batch", disable=not enabled, file=sys.stderr)
+    return Bar(total=total, desc=desc, unit=unit, disable=not enabled, file=sys.stderr)
 
 
 class NoBar:

@@ -16,22 +16,13 @@ import numpy as np
 
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.problem import DesignProblem
+from fem_racket.studies.design.scaling import progress_bar
 from fem_racket.validation import InputError, check_choice, check_integer
 
 __all__ = ["SobolIndices", "sobol_indices"]
 
 #: The sample is evaluated in up to this many batches (progress between them).
 SLICES = 20
-
-
-def _progress(enabled: bool | None, total: int):
-    import sys
-
-    from tqdm import tqdm
-
-    if enabled is None:
-        enabled = sys.stderr.isatty()
-    return tqdm(total=total, desc="Sobol", unit="design", disable=not enabled, file=sys.stderr)
 
 
 @dataclass(frozen=True)
@@ -111,7 +102,7 @@ def sobol_indices(
     u = sample.sample(spec, n, calc_second_order=False, seed=seed)
     x = problem.from_unit(u)
     y = np.empty(len(x))
-    with _progress(progress, len(x)) as bar:
+    with progress_bar(progress, "Sobol", len(x), unit="design") as bar:
         for part in np.array_split(np.arange(len(x)), max(1, min(SLICES, len(x) // 64))):
             y[part] = evaluator(x[part])[:, evaluator.column(output)]
             bar.update(len(part))
