@@ -31,11 +31,15 @@ PER_PERIOD = 8.0
 #: Scan window [eq-11 contact times] and smallest grid.
 WINDOW = 2.0
 MIN_GRID = 32
+#: A grid minimum of the event function before separation below this fraction of its largest
+#: value marks a near-touch of zero (see :func:`separation_time`).
+TOUCH = 0.02
 #: Smallest grid of the peak-force search, and of its zoom on the largest value.
 PEAK_GRID = 257
-#: Newton/bisection iterations on the separation time, and its relative tolerance.
+#: Newton/bisection iterations on the separation time, and its absolute tolerance [s] (as
+#: the exact path's Brent search; 4 eps relative on top).
 MAX_NEWTON = 60
-TIME_TOL = 1e-14
+TIME_TOL = 1e-15
 
 
 def _powers(z: np.ndarray, start: np.ndarray, G: int) -> np.ndarray:
@@ -83,8 +87,11 @@ def _value(lam, w, t):
 
 def separation_time(
     roots: RootSet, w: np.ndarray, t_est: np.ndarray, t_max: np.ndarray
-) -> np.ndarray:
-    """First time [s] the signal with weights ``w`` falls through zero after t = 0, per row.
+) -> tuple[np.ndarray, np.ndarray]:
+    """First time [s] the signal with weights ``w`` falls through zero after t = 0, per row,
+    and whether the signal came close to zero before it (a grid minimum below :data:`TOUCH` of
+    its largest value in that window: whether it crosses there is then decided by details a
+    reduced model may miss).
 
     NaN where it has not by ``t_max``.
     """
@@ -94,6 +101,7 @@ def separation_time(
     cols, G = _grid_size(lam, w, span)
     lo = np.full(n, np.nan)
     dt_row = np.empty(n)
+    touch = np.zeros(n, dtype=bool)
     for g in np.unique(G):
         rows = np.flatnonzero(G == g)
         dt = span[rows] / (g - 1)
@@ -108,6 +116,11 @@ def separation_time(
             has = falls.any(axis=1)
             i = np.argmax(falls, axis=1) + first
             hit = todo[has]
+            before = np.arange(g)[None, 1:-1] < i[has, None]
+            v = vals[has]
+            dips = (v[:, 1:-1] <= v[:, :-2]) & (v[:, 1:-1] <= v[:, 2:]) & before
+            low = v[:, 1:-1] < TOUCH * np.max(np.abs(v), axis=1, keepdims=True)
+            touch[rows[hit]] = np.any(dips & low, axis=1)
             lo[rows[hit]] = t0[hit] + i[has] * dt[hit]
             dt_row[rows[hit]] = dt[hit]
             todo = todo[~has]
@@ -118,7 +131,7 @@ def separation_time(
     t = np.full(n, np.nan)
     if found.size:
         t[found] = _refine(lam[found], w[found], lo[found], lo[found] + dt_row[found])
-    return t
+    return t, touch
 
 
 def _refine(lam: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -126,7 +139,8 @@ def _refine(lam: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> n
 
     The terms left out of the scan may move the crossing by a hair: the bracket is first
     shifted by whole steps until the full sum is > 0 at ``lo`` and <= 0 at ``hi``; then Newton
-    steps, replaced by bisection whenever they leave the bracket.
+    steps from the secant point, replaced by bisection whenever they leave the bracket, until
+    a step or the bracket is below :data:`TIME_TOL` (absolute) plus 4 eps t.
     """
     dt = hi - lo
     for _ in range(4):
@@ -140,19 +154,23 @@ def _refine(lam: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> n
             np.where(early, lo - dt, np.where(late, hi, lo)),
             np.where(early, lo, np.where(late, hi + dt, hi)),
         )
-    t = 0.5 * (lo + hi)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = lo + (hi - lo) * f_lo / (f_lo - f_hi)
+    t = np.where((t > lo) & (t < hi), t, 0.5 * (lo + hi))
     active = np.arange(t.size)
     for _ in range(MAX_NEWTON):
         f, df, _ = _value(lam[active], w[active], t[active])
-        ta = t[active]
-        lo[active] = np.where(f > 0.0, ta, lo[active])
-        hi[active] = np.where(f <= 0.0, ta, hi[active])
+        ta, la, ha = t[active], lo[active], hi[active]
+        la = np.where(f > 0.0, ta, la)
+        ha = np.where(f <= 0.0, ta, ha)
+        lo[active], hi[active] = la, ha
         with np.errstate(divide="ignore", invalid="ignore"):
             tn = ta - f / df
-        bisect = ~((tn > lo[active]) & (tn < hi[active]))
-        tn = np.where(bisect, 0.5 * (lo[active] + hi[active]), tn)
+        bisect = ~((tn >= la) & (tn <= ha))
+        tn = np.where(bisect, 0.5 * (la + ha), tn)
         t[active] = tn
-        done = (np.abs(tn - ta) <= TIME_TOL * ta) | (hi[active] - lo[active] <= TIME_TOL * ta)
+        tol = TIME_TOL + 4.0 * np.finfo(float).eps * ta
+        done = (~bisect & (np.abs(tn - ta) <= tol)) | (ha - la <= tol) | (f == 0.0)
         active = active[~done]
         if active.size == 0:
             break
