@@ -6,7 +6,9 @@ segment (``FrameModel.scaled``: omega ~ sqrt(factor), no eigen-solve), the point
 per impact point, and, for the exact solver, each case's outcome at unit speed. The coupled
 system is linear, so at fixed K_CB the COR and t_c do not depend on the speed and the force
 scales with it: cases differing only in speed share one solve, and every case is solved at
-V_B0 = 1 m/s, which makes results independent of the order in which cases are run.
+V_B0 = 1 m/s, which makes results independent of the order in which cases are run. A swing
+(racket_speed, reference, pivot) enters through the closing speed v_in + v_r (K_CB follows it)
+and v_out = e_A v_in + (1 + e_A) v_r (:mod:`fem_racket.impact.swing`).
 
 Exact solver: :func:`fem_racket.impact.closed_form.exact_outcome` (scalars only). BDF solvers:
 :func:`fem_racket.simulate` with 1 us output steps, the peak force being the largest over them.
@@ -25,6 +27,7 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
 from fem_racket.impact.closed_form import exact_outcome
 from fem_racket.impact.simulate import simulate
+from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import NoSeparationError, modal_system
 from fem_racket.studies.grid import SweepSpec
 
@@ -34,11 +37,12 @@ log = logging.getLogger(__name__)
 
 #: Result variables: name -> (units, description).
 VARIABLES: dict[str, tuple[str, str]] = {
-    "cor": ("1", "coefficient of restitution -v_B(t_c)/V_B0"),
+    "cor": ("1", "apparent coefficient of restitution (v_out - v_r)/(v_in + v_r)"),
     "contact_time_s": ("s", "contact time t_c"),
-    "rebound_speed_m_s": ("m/s", "ball rebound speed -v_B(t_c)"),
+    "rebound_speed_m_s": ("m/s", "ball speed after impact -v_B(t_c) (v_out with a swing)"),
     "peak_force_n": ("N", "largest contact force"),
     "kcb_n_m": ("N/m", "ball/string stiffness K_CB used"),
+    "racket_speed_at_impact_m_s": ("m/s", "impact point's speed towards the ball before impact"),
 }
 #: Output step of the BDF solvers in sweeps [s] (their peak force is the maximum over it).
 BDF_OUTPUT_STEP = 1e-6
@@ -99,9 +103,13 @@ def _point_vector(key: tuple, model: FrameModel, position: float) -> np.ndarray:
 def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     """The result values (in :data:`VARIABLES` order) of one case."""
     speed, mass = p["speed"], p["ball_mass"]
-    law = LinearContact.for_speed(speed, kcb=p["kcb"], zeta=p["zeta"])
-    kcb, zeta = law.stiffness, law.zeta
     key, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
+    length = model.mesh.length
+    swing = Swing.from_speed(p["racket_speed"], length, reference=p["reference"], pivot=p["pivot"])
+    v_r = float(swing.speed_at(p["position"] * length))
+    closing = closing_speed(speed, v_r)
+    law = LinearContact.for_speed(closing, kcb=p["kcb"], zeta=p["zeta"])
+    kcb, zeta = law.stiffness, law.zeta
     if spec.solver != "exact":
         r = simulate(
             model,
@@ -117,8 +125,9 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
             output_step=BDF_OUTPUT_STEP,
             rtol=spec.rtol,
             atol=spec.atol,
+            swing=swing,
         )
-        return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, kcb
+        return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r
     ukey = (*key, p["position"], mass, kcb, zeta, spec.separation, spec.modes)
     unit = _UNIT.get(ukey)
     if unit is None:
@@ -129,7 +138,7 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
         o = exact_outcome(system, separation=spec.separation)
         unit = _remember(_UNIT, ukey, (-o.rebound_velocity, o.contact_time, o.peak_force), 65536)
     cor, tc, peak = unit
-    return cor, tc, cor * speed, peak * speed, kcb
+    return cor, tc, ball_speed_out(cor, speed, v_r), peak * closing, kcb, v_r
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
