@@ -123,3 +123,16 @@ def test_no_swing_leaves_the_stationary_impact_unchanged(model):
     b = simulate(model, position=0.7, speed=30.0, swing=Swing(), output_step=None)
     assert a.cor == b.cor and a.rebound_velocity == b.rebound_velocity
     assert a.summary()["racket_speed_at_impact_m_s"] == 0.0
+
+
+def test_energy_balances_in_the_lab(model):
+    # Ball + racket kinetic energy, strain, spring and the dashpot's work stay at the initial
+    # kinetic energy of ball and swinging racket (Simpson on 2e-6 s steps: ~1e-6 relative).
+    swing = Swing.from_speed(25.0, L, pivot=0.08)
+    r = simulate(model, position=0.8, speed=20.0, swing=swing, output_step=2e-6)
+    total = r.energies()["total"]
+    assert total[-1] == pytest.approx(total[0], rel=1e-5)
+    fe = model.fe
+    qd0 = fe.rigid_motion(-swing.velocity, -swing.omega)
+    start = 0.5 * 0.057 * 20.0**2 + 0.5 * qd0 @ (fe.M @ qd0)
+    assert total[0] == pytest.approx(start, rel=1e-12)
