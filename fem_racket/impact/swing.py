@@ -193,7 +193,6 @@ def swing_setup(
     free = np.concatenate([[-v_r], w])
 
     def lab(traj: Trajectory) -> Trajectory:
-        x = traj.x + np.multiply.outer(traj.t, free)
-        return Trajectory(traj.t, x, traj.v + free, traj.peak_force)
+        return replace(traj, x=traj.x + np.multiply.outer(traj.t, free), v=traj.v + free)
 
     return moving, lab
