@@ -26,6 +26,7 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, Segment, rigid_frame, standard_frame
 from fem_racket.frame.specs import RacketSpec, balance_point, fit_racket, racket_spec, swing_weight
 from fem_racket.impact.coupled import CoupledModes, coupled_modes
+from fem_racket.impact.engine import ImpactBatch, impacts, modal_impacts
 from fem_racket.impact.integrators import SOLVERS, NoSeparationError
 from fem_racket.impact.rigid import (
     ClampedImpact,
@@ -60,6 +61,7 @@ __all__ = [
     "FrameModel",
     "FreeModes",
     "Impact",
+    "ImpactBatch",
     "ImpactResult",
     "ImpactSeries",
     "InputError",
@@ -82,10 +84,12 @@ __all__ = [
     "free_free_frequencies",
     "free_modes",
     "impact_series",
+    "impacts",
     "kcb_from_speed",
     "graded_mesh",
     "load_config",
     "mass_properties",
+    "modal_impacts",
     "mode_nodes",
     "parse_config",
     "read_mesh",

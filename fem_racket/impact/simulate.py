@@ -8,7 +8,7 @@ ratio of rebound to incident speed on a free racket (Kawazoe & Kanda 1997, secti
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -18,9 +18,13 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.integrators import SOLVERS, get_solver
+from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.setup import Impact
+from fem_racket.impact.single import engine_impact
 from fem_racket.impact.swing import (
     Swing,
+    add_swing,
     closing_speed,
     racket_velocity,
     swing_setup,
@@ -262,6 +266,7 @@ def simulate(
     t_max: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
+    tolerance: float | None = DEFAULT_TOLERANCE,
     swing: Swing | None = None,
 ) -> ImpactResult:
     """Simulate a ball striking the free frame, at rest or swinging.
@@ -269,8 +274,9 @@ def simulate(
     Parameters
     ----------
     frame : Frame, FrameMesh or FrameModel, optional
-        The racket; the paper's standard racket (EI1 = 146 N m^2) when None. Pass a
-        :class:`FrameModel` to reuse assembly and modes across many impacts.
+        The racket; the paper's standard racket (EI1 = 146 N m^2) when None. A Frame or
+        FrameMesh is assembled once per process (:mod:`.model_cache`) and its modes reused by
+        the next calls; a :class:`FrameModel` keeps its own.
     position : float
         Impact point x/L from the grip end, in [0, 1].
     speed : float
@@ -292,11 +298,17 @@ def simulate(
     modes : int or None
         Flexible modes kept in the modal basis; None keeps all.
     output_step : float or None
-        Spacing of the output times [s]; None keeps only t = 0 and t = t_c.
+        Spacing of the output times [s]; None keeps only t = 0 and t = t_c, and the exact
+        solver then runs the batched engine (:mod:`.engine`) on the ``modes`` modes, dropping
+        those ``tolerance`` does not need.
     t_max : float, optional
         Give up if the ball has not separated by then [s]; 20 x the eq 11 estimate by default.
     rtol, atol : float
         Tolerances of the BDF integrators.
+    tolerance : float or None
+        COR tolerance of the engine (output_step None, solver "exact"; default 1e-6): the
+        modes far above the contact frequency are replaced by one residual pseudo-mode, and the
+        frame state at t_c treats them quasi-statically. None or 0: every mode of ``modes``.
     swing : Swing, optional
         The racket's rigid motion before impact (:mod:`fem_racket.impact.swing`); at rest when
         None. K_CB then follows the closing speed ``speed + v_r``; the exact solver superposes
@@ -321,11 +333,28 @@ def simulate(
         check_integer("modes", modes)
     if solver == "exact" and basis != "modal":
         raise InputError(f"basis = {basis!r} is not allowed with solver 'exact': must be 'modal'")
-    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
+    check_tolerance(tolerance)
+    model = frame_model(frame, elements)
     x_i = impact.position * model.mesh.length
     v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
-    contact = LinearContact.for_speed(closing_speed(impact.speed, v_r), kcb=kcb, zeta=zeta)
-
+    closing = closing_speed(impact.speed, v_r)
+    contact = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
+    if solver == "exact" and output_step is None:
+        traj, frame_map, kept = engine_impact(
+            model,
+            impact if swing is None else replace(impact, speed=closing),
+            ball,
+            contact,
+            separation=separation,
+            modes=modes,
+            tolerance=tolerance,
+            t_max=t_max,
+        )
+        if swing is not None:  # the stationary impact at the closing speed, plus the swing
+            traj = add_swing(traj, frame_map, model, swing, v_r)
+        return _result(
+            model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map, swing
+        )
     system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
     to_lab = None
     if swing is not None:
@@ -343,10 +372,29 @@ def simulate(
     )
     if to_lab is not None:
         traj = to_lab(traj)
-    if system.frame_map is None:
+    n_modes = (system.size - 1 - RIGID_MODES) if basis == "modal" else None
+    return _result(
+        model,
+        impact,
+        ball,
+        contact,
+        solver,
+        separation,
+        basis,
+        n_modes,
+        traj,
+        system.frame_map,
+        swing,
+    )
+
+
+def _result(
+    model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map, swing
+):
+    if frame_map is None:
         q, qd = traj.x[:, 1:], traj.v[:, 1:]
     else:
-        q, qd = traj.x[:, 1:] @ system.frame_map.T, traj.v[:, 1:] @ system.frame_map.T
+        q, qd = traj.x[:, 1:] @ frame_map.T, traj.v[:, 1:] @ frame_map.T
     return ImpactResult(
         model=model,
         impact=impact,
@@ -355,7 +403,7 @@ def simulate(
         solver=solver,
         separation=separation,
         basis=basis,
-        n_modes=(system.size - 1 - RIGID_MODES) if basis == "modal" else None,
+        n_modes=n_modes,
         t=traj.t,
         ball_displacement=traj.x[:, 0],
         ball_velocity=traj.v[:, 0],

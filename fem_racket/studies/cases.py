@@ -1,17 +1,18 @@
-"""One sweep case -> its result values, with everything reusable cached per process.
+"""A chunk of sweep cases -> their result values, with the frames cached per process.
 
-Each process (the caller, a pool worker or a Dask worker) keeps: the assembled frame and its
-free-free modes per mesh (``FrameModel``), scaled copies for EI changes that scale every
-segment (``FrameModel.scaled``: omega ~ sqrt(factor), no eigen-solve), the point vector g(x_i)
-per impact point, and, for the exact solver, each case's outcome at unit speed. The coupled
-system is linear, so at fixed K_CB the COR and t_c do not depend on the speed and the force
-scales with it: cases differing only in speed share one solve, and every case is solved at
-V_B0 = 1 m/s, which makes results independent of the order in which cases are run. A swing
-(racket_speed, reference, pivot) enters through the closing speed v_in + v_r (K_CB follows it)
-and v_out = e_A v_in + (1 + e_A) v_r (:mod:`fem_racket.impact.swing`).
+Each process (the caller, a pool worker or a Dask worker) keeps the assembled frame and its
+free-free modes per mesh (``FrameModel``); EI changes that scale every segment reuse them
+(omega ~ sqrt(factor), no eigen-solve).
 
-Exact solver: :func:`fem_racket.impact.closed_form.exact_outcome` (scalars only). BDF solvers:
-:func:`fem_racket.simulate` with 1 us output steps, the peak force being the largest over them.
+Exact solver: the batched engine (:func:`fem_racket.impact.engine.impacts`) on all the chunk's
+cases of one frame at once, to the sweep's COR tolerance; every case is solved at
+V_B0 = 1 m/s (the system is linear), so results do not depend on how cases are chunked.
+BDF solvers: :func:`fem_racket.simulate` per case with 1 us output steps, the peak force being
+the largest over them.
+
+A swing (racket_speed, reference, pivot; :mod:`fem_racket.impact.swing`) enters through the
+closing speed v_in + v_r of each case, at which the stationary racket is struck (K_CB follows
+it), and the ball leaves at v_out = e_A v_in + (1 + e_A) v_r.
 """
 
 from __future__ import annotations
@@ -25,13 +26,13 @@ import numpy as np
 from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
-from fem_racket.impact.closed_form import exact_outcome
+from fem_racket.impact.engine import impacts
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
-from fem_racket.impact.system import NoSeparationError, modal_system
+from fem_racket.impact.system import NoSeparationError
 from fem_racket.studies.grid import SweepSpec
 
-__all__ = ["VARIABLES", "clear_caches", "run_chunk"]
+__all__ = ["VARIABLES", "clear_caches", "result_variables", "run_chunk"]
 
 log = logging.getLogger(__name__)
 
@@ -44,14 +45,19 @@ VARIABLES: dict[str, tuple[str, str]] = {
     "kcb_n_m": ("N/m", "ball/string stiffness K_CB used"),
     "racket_speed_at_impact_m_s": ("m/s", "impact point's speed towards the ball before impact"),
 }
+
+
+def result_variables(spec: SweepSpec) -> list[str]:
+    """The variables a sweep's dataset holds (the peak force only when asked)."""
+    return [v for v in VARIABLES if spec.peak_force or v != "peak_force_n"]
+
+
 #: Output step of the BDF solvers in sweeps [s] (their peak force is the maximum over it).
 BDF_OUTPUT_STEP = 1e-6
 
 # Per-process caches (each pool or Dask worker fills its own).
 _BASE: dict[tuple, FrameModel] = {}
 _SCALED: OrderedDict[tuple, FrameModel] = OrderedDict()
-_POINT: OrderedDict[tuple, np.ndarray] = OrderedDict()
-_UNIT: OrderedDict[tuple, tuple[float, float, float]] = OrderedDict()
 
 
 def _remember(cache: OrderedDict, key: tuple, value: Any, size: int) -> Any:
@@ -62,19 +68,17 @@ def _remember(cache: OrderedDict, key: tuple, value: Any, size: int) -> Any:
 
 
 def clear_caches() -> None:
-    """Forget the models, point vectors and unit-speed outcomes cached in this process."""
-    for cache in (_BASE, _SCALED, _POINT, _UNIT):
+    """Forget the models cached in this process."""
+    for cache in (_BASE, _SCALED):
         cache.clear()
 
 
-def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) -> tuple:
-    """(key, model) of a case's frame, built from cached assembly and modes."""
+def _base(spec: SweepSpec, elements: int, ei1: float | None) -> tuple[tuple, FrameModel]:
+    """(key, model) of the unscaled frame of a case, assembled once per process."""
     if spec.frame is None and spec.ei2 is not None:  # EI2 fixed: not a scaling of EI1
-        base_key, factor = (spec.frame_key, elements, ei1, spec.ei2), ei_factor
-    elif spec.frame is None:
-        base_key, factor = (spec.frame_key, elements), ei_factor * ei1 / PAPER_EI1
+        base_key = (spec.frame_key, elements, ei1, spec.ei2)
     else:
-        base_key, factor = (spec.frame_key, elements), ei_factor
+        base_key = (spec.frame_key, elements)
     base = _BASE.get(base_key)
     if base is None:
         if spec.frame is None:
@@ -82,7 +86,21 @@ def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) 
         else:
             frame = spec.frame
         base = _BASE[base_key] = FrameModel.build(frame, elements)
-        base.modes(spec.modes)
+    return base_key, base
+
+
+def _factor(spec: SweepSpec, ei1: Any, ei_factor: Any) -> Any:
+    """The factor on every EI of the base frame (see :func:`_base`)."""
+    if spec.frame is None and spec.ei2 is None:
+        return ei_factor * ei1 / PAPER_EI1
+    return ei_factor
+
+
+def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) -> tuple:
+    """(key, model) of a case's frame, built from cached assembly and modes (BDF solvers)."""
+    base_key, base = _base(spec, elements, ei1)
+    factor = _factor(spec, ei1, ei_factor)
+    base.modes(spec.modes)
     if factor == 1.0:
         return base_key + (1.0,), base
     key = base_key + (factor,)
@@ -92,53 +110,104 @@ def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) 
     return key, model
 
 
-def _point_vector(key: tuple, model: FrameModel, position: float) -> np.ndarray:
-    pkey = key[:-1] + (position,)
-    g = _POINT.get(pkey)
-    if g is None:
-        g = _remember(_POINT, pkey, model.fe.point_vector(position * model.mesh.length), 4096)
-    return g
-
-
 def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
-    """The result values (in :data:`VARIABLES` order) of one case."""
+    """The result values (in :data:`VARIABLES` order) of one case of a BDF solver."""
     speed, mass = p["speed"], p["ball_mass"]
-    key, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
-    length = model.mesh.length
-    swing = Swing.from_speed(p["racket_speed"], length, reference=p["reference"], pivot=p["pivot"])
-    v_r = float(swing.speed_at(p["position"] * length))
-    closing = closing_speed(speed, v_r)
-    law = LinearContact.for_speed(closing, kcb=p["kcb"], zeta=p["zeta"])
+    _, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
+    swing = _swing(p, model.mesh.length)
+    v_r = float(swing.speed_at(p["position"] * model.mesh.length))
+    law = LinearContact.for_speed(closing_speed(speed, v_r), kcb=p["kcb"], zeta=p["zeta"])
     kcb, zeta = law.stiffness, law.zeta
-    if spec.solver != "exact":
-        r = simulate(
+    r = simulate(
+        model,
+        position=p["position"],
+        speed=speed,
+        ball_mass=mass,
+        kcb=kcb,
+        zeta=zeta,
+        solver=spec.solver,
+        separation=spec.separation,
+        basis=spec.basis,
+        modes=spec.modes,
+        output_step=BDF_OUTPUT_STEP,
+        rtol=spec.rtol,
+        atol=spec.atol,
+        swing=swing,
+    )
+    return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r
+
+
+def _swing(p: dict[str, Any], length: float) -> Swing:
+    """The swing of one case (scalar parameter values) for a racket of ``length`` [m]."""
+    return Swing.from_speed(p["racket_speed"], length, reference=p["reference"], pivot=p["pivot"])
+
+
+def _racket_speeds(p: dict[str, Any], rows: np.ndarray, length: float) -> np.ndarray:
+    """v_r [m/s] of the cases ``rows`` of ``case_arrays`` values ``p`` (swept or fixed)."""
+    names = ("racket_speed", "reference", "pivot", "position")
+    cols = [
+        np.broadcast_to(np.asarray(p[k], dtype=object), (rows.size,))
+        if np.ndim(p[k]) == 0
+        else np.asarray(p[k])[rows]
+        for k in names
+    ]
+    out = np.empty(rows.size)
+    for i, (v, ref, piv, pos) in enumerate(zip(*cols, strict=True)):
+        swing = _swing({"racket_speed": v, "reference": ref, "pivot": piv}, length)
+        out[i] = swing.speed_at(float(pos) * length)
+    return out
+
+
+def _engine_chunk(spec: SweepSpec, chunk: np.ndarray) -> np.ndarray:
+    """Results of the exact solver for the cases ``chunk``: one engine call per frame."""
+    p = spec.case_arrays(chunk)
+    n = len(chunk)
+    out = np.full((n, len(VARIABLES)), np.nan)
+    elements = np.broadcast_to(p["elements"], n)
+    ei1 = np.broadcast_to(np.nan if p["ei1"] is None else p["ei1"], n)
+    # One group per base frame: per element count, and per EI1 when EI2 is fixed.
+    split_ei1 = spec.frame is None and spec.ei2 is not None
+    keys = np.column_stack([elements, ei1 if split_ei1 else np.zeros(n)])
+    uniq, group = np.unique(keys, axis=0, return_inverse=True)
+    group = group.ravel()
+
+    def take(value: Any, rows: np.ndarray) -> Any:
+        return value if np.ndim(value) == 0 else np.asarray(value)[rows]
+
+    for g, (cells, e1) in enumerate(uniq):
+        rows = np.flatnonzero(group == g)
+        _, model = _base(spec, int(cells), float(e1) if split_ei1 else None)
+        factor = _factor(spec, take(p["ei1"], rows), take(p["ei_factor"], rows))
+        v_in = np.broadcast_to(np.asarray(take(p["speed"], rows), dtype=float), rows.shape)
+        v_r = _racket_speeds(p, rows, model.mesh.length)
+        closing = np.array([closing_speed(vi, vr) for vi, vr in zip(v_in, v_r, strict=True)])
+        b = impacts(
             model,
-            position=p["position"],
-            speed=speed,
-            ball_mass=mass,
-            kcb=kcb,
-            zeta=zeta,
-            solver=spec.solver,
+            position=take(p["position"], rows),
+            speed=closing,
+            kcb=take(p["kcb"], rows),
+            zeta=take(p["zeta"], rows),
+            ball_mass=take(p["ball_mass"], rows),
+            ei_factor=factor,
             separation=spec.separation,
-            basis=spec.basis,
+            tolerance=spec.tolerance,
+            peak_force=spec.peak_force,
             modes=spec.modes,
-            output_step=BDF_OUTPUT_STEP,
-            rtol=spec.rtol,
-            atol=spec.atol,
-            swing=swing,
         )
-        return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r
-    ukey = (*key, p["position"], mass, kcb, zeta, spec.separation, spec.modes)
-    unit = _UNIT.get(ukey)
-    if unit is None:
-        fm = model.modes(spec.modes)
-        g = _point_vector(key, model, p["position"])
-        ccb = law.damping(mass)
-        system = modal_system(fm.all_omega, fm.all_shapes, g, mass, kcb, ccb, 1.0)
-        o = exact_outcome(system, separation=spec.separation)
-        unit = _remember(_UNIT, ukey, (-o.rebound_velocity, o.contact_time, o.peak_force), 65536)
-    cor, tc, peak = unit
-    return cor, tc, ball_speed_out(cor, speed, v_r), peak * closing, kcb, v_r
+        v_out = ball_speed_out(b.cor, v_in, v_r)
+        cols = [b.cor, b.contact_time, v_out, b.peak_force, b.kcb, v_r]
+        for k, col in enumerate(cols):
+            if col is not None:
+                out[rows, k] = np.broadcast_to(col, rows.shape)
+    failed = np.flatnonzero(np.isnan(out[:, 0]))
+    if failed.size:
+        log.warning(
+            "%d cases failed (NaN in the results; no separation within 20 contact times), "
+            "first: case %d",
+            failed.size,
+            chunk[failed[0]],
+        )
+    return out
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
@@ -147,6 +216,8 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     A case whose ball does not separate within the time limit, or whose solver fails, gets NaN
     (the sweep reports how many); any other error stops the sweep.
     """
+    if spec.solver == "exact":
+        return _engine_chunk(spec, np.asarray(chunk))
     out = np.empty((len(chunk), len(VARIABLES)))
     for row, index in enumerate(chunk):
         try:

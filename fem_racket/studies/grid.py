@@ -24,6 +24,7 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import PAPER_EI1, Frame
 from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import (
@@ -170,6 +171,10 @@ class SweepSpec:
         Fixed top-side rigidity of the standard frame [N m^2] (0.88 EI1 when None).
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
+    tolerance : float or None
+        COR tolerance of the batched engine (exact solver); None: every mode.
+    peak_force : bool
+        Whether the peak force is computed (a result variable).
     """
 
     values: dict[str, Any]
@@ -181,6 +186,8 @@ class SweepSpec:
     modes: int | None = DEFAULT_MODES
     rtol: float = 1e-10
     atol: float = 1e-12
+    tolerance: float | None = DEFAULT_TOLERANCE
+    peak_force: bool = False
 
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
@@ -225,6 +232,9 @@ class SweepSpec:
             check_integer("modes", spec.modes)
         check_positive("rtol", spec.rtol)
         check_positive("atol", spec.atol)
+        object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
+        if not isinstance(spec.peak_force, bool):
+            raise InputError(f"peak_force = {spec.peak_force!r} is not allowed: must be a bool")
         return spec
 
     # -- the grid ----------------------------------------------------------------------------
@@ -263,6 +273,16 @@ class SweepSpec:
                 out[name] = vals[i].item()
         return out
 
+    def case_arrays(self, indices: np.ndarray) -> dict[str, Any]:
+        """Parameter values of many cases: swept ones as arrays (one entry per index), fixed
+        ones as they are (a number, or None for the default law)."""
+        out = dict(self.values)
+        if self.axes:
+            where = np.unravel_index(np.asarray(indices, dtype=np.int64), self.shape)
+            for (name, vals), i in zip(self.axes.items(), where, strict=True):
+                out[name] = vals[i]
+        return out
+
     # -- identity --------------------------------------------------------------------------
     def describe(self) -> dict[str, Any]:
         """JSON-ready description of everything that determines the results."""
@@ -281,6 +301,8 @@ class SweepSpec:
             "modes": self.modes,
             "rtol": self.rtol,
             "atol": self.atol,
+            "tolerance": self.tolerance,
+            "peak_force": self.peak_force,
             "version": __version__,
         }
 

@@ -27,8 +27,9 @@ from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.outputs import atomic_output, check_output_path, provenance
-from fem_racket.studies.cases import VARIABLES, run_chunk
+from fem_racket.studies.cases import VARIABLES, result_variables, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
 from fem_racket.studies.grid import PARAMETERS, SweepSpec, chunks
@@ -43,8 +44,11 @@ KCB_LAW = (
     "from the speed: piecewise power law through the paper's 2.74e4, 5.0e4, 8.33e4 N/m "
     "at 20, 30, 40 m/s"
 )
-#: Below this many exact impacts the default backend is serial (a pool takes ~0.5 s to start).
-SERIAL_BELOW = 200
+#: Below this many exact impacts the default backend is serial (a pool takes ~0.5 s to start;
+#: the engine solves ~1e4 impacts in that time).
+SERIAL_BELOW = 20000
+#: Largest chunk of exact impacts (one engine call per frame; also one checkpoint file).
+EXACT_CHUNK = 32768
 
 
 def _attributes(spec: SweepSpec) -> dict[str, Any]:
@@ -73,7 +77,12 @@ def _attributes(spec: SweepSpec) -> dict[str, Any]:
         spec_sha256=spec.digest,
     )
     if spec.solver == "exact":
-        params["tolerances"] = "exact: closed form, separation time to 1e-15 s; rtol, atol unused"
+        params["tolerance"] = "all modes" if spec.tolerance is None else spec.tolerance
+        params["tolerances"] = (
+            "exact: closed form (batched engine), COR within 'tolerance' of every mode, "
+            "separation time to 1e-14 relative; rtol, atol unused"
+        )
+    params["peak_force"] = "computed" if spec.peak_force else "not asked"
     prov = provenance(params)
     attrs = {k: v for k, v in prov.items() if k != "parameters"}
     attrs.update(prov["parameters"])
@@ -91,15 +100,17 @@ def _dataset(spec: SweepSpec, values: np.ndarray) -> Any:
         )
         for name, vals in spec.axes.items()
     }
+    keep = result_variables(spec)
     data = {
         name: (spec.dims, values[:, k].reshape(spec.shape), {"units": unit, "long_name": text})
         for k, (name, (unit, text)) in enumerate(VARIABLES.items())
+        if name in keep
     }
     return xr.Dataset(data, coords=coords, attrs=_attributes(spec))
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
-    cap = 128 if spec.solver == "exact" else 4
+    cap = EXACT_CHUNK if spec.solver == "exact" else 4
     return max(1, min(cap, math.ceil(todo / (4 * workers))))
 
 
@@ -124,6 +135,8 @@ def sweep(
     modes: int | None = DEFAULT_MODES,
     rtol: float = 1e-10,
     atol: float = 1e-12,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    peak_force: bool = False,
     output: str | os.PathLike | None = None,
     overwrite: bool = False,
     restart: bool = False,
@@ -156,6 +169,11 @@ def sweep(
         Fixed top-side EI2 of the standard frame [N m^2]; 0.88 EI1 when None.
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
+    tolerance : float or None
+        COR tolerance of the exact solver's batched engine (default 1e-6; None or 0: every mode
+        of ``modes``); recorded in the dataset's attributes.
+    peak_force : bool
+        Also compute the largest contact force (variable ``peak_force_n``; costs more).
     output : path, optional
         netCDF file to write (atomically). With it the sweep is resumable: finished cases are
         kept in ``<output>.checkpoint/`` and a rerun with the same arguments continues.
@@ -180,7 +198,8 @@ def sweep(
     Returns
     -------
     xarray.Dataset
-        Dimensions: the swept parameters; variables :data:`VARIABLES`; attributes: every fixed
+        Dimensions: the swept parameters; variables :data:`VARIABLES` (``peak_force_n`` only
+        when asked); attributes: every fixed
         parameter, the solver and its tolerances, the package version (provenance).
     """
     spec = SweepSpec.build(
@@ -203,6 +222,8 @@ def sweep(
         modes=modes,
         rtol=rtol,
         atol=atol,
+        tolerance=tolerance,
+        peak_force=peak_force,
     )
     if backend is not None:
         check_choice("backend", backend, BACKENDS)

@@ -143,7 +143,10 @@ def test_no_separation_is_reported(standard_model, solver):
 def test_peak_force_does_not_depend_on_output_times(standard_model):
     # The integrators find the peak on their dense solution, not on the output times.
     ref = simulate(standard_model, position=0.6)
-    assert simulate(standard_model, position=0.6, output_step=None).peak_force == ref.peak_force
+    # Without output times the exact solver runs the batched engine: with every mode it finds
+    # the same maximum of the same closed form (round-off, measured ~1e-13).
+    every = simulate(standard_model, position=0.6, output_step=None, tolerance=None)
+    assert every.peak_force == pytest.approx(ref.peak_force, rel=1e-9)
     bdf = simulate(standard_model, position=0.6, solver="cvode", output_step=None)
     # CVODE samples t_est / 200 steps (~2e-5 s): sampling error ~(omega dt)^2 / 8 ~ 3e-5.
     assert bdf.peak_force == pytest.approx(ref.peak_force, rel=2e-4)

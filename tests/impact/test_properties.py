@@ -128,7 +128,9 @@ def test_exact_and_cvode_agree(frame, position, speed):
     # 20 modes keep CVODE fast (~50 ms; the highest kept frequency sets its step) and the
     # comparison is between integrators of the same system. The issue asks for 1e-6.
     kw = {"position": position, "speed": speed, "modes": 20, "output_step": None}
-    exact = simulate(model, **kw)
+    # Every one of those modes in the exact path too (tolerance None): the engine's default
+    # tolerance bounds the COR, not the contact time, which converges more slowly.
+    exact = simulate(model, tolerance=None, **kw)
     cvode = simulate(model, solver="cvode", **kw)
     assert abs(exact.cor - cvode.cor) <= 1e-6
     assert abs(exact.contact_time - cvode.contact_time) <= 1e-6 * exact.contact_time
@@ -139,7 +141,7 @@ def test_exact_and_cvode_agree(frame, position, speed):
 def test_exact_and_cvode_agree_with_all_modes(frame, position, speed):
     model = FrameModel.build(frame, ELEMENTS)
     kw = {"position": position, "speed": speed, "modes": None, "output_step": None}
-    exact = simulate(model, **kw)
+    exact = simulate(model, tolerance=None, **kw)
     cvode = simulate(model, solver="cvode", **kw)  # ~0.5-1.5 s: every FE mode kept
     assert abs(exact.cor - cvode.cor) <= 1e-6  # the issue's bound
     assert abs(exact.contact_time - cvode.contact_time) <= 1e-6 * exact.contact_time

@@ -55,7 +55,13 @@ def test_identity_against_a_direct_integration(model, position, speed, racket_sp
     v_r = swing.speed_at(position * L)
     kcb = kcb_from_speed(speed + v_r)
     still = simulate(
-        model, position=position, speed=speed + v_r, kcb=kcb, modes=20, output_step=None
+        model,
+        position=position,
+        speed=speed + v_r,
+        kcb=kcb,
+        modes=20,
+        output_step=None,
+        tolerance=None,
     )
     want = ball_speed_out(still.cor, speed, v_r)
     direct = simulate(
@@ -75,7 +81,7 @@ def test_identity_against_a_direct_integration(model, position, speed, racket_sp
 
 def test_superposed_and_direct_racket_motion_agree(model):
     swing = Swing.from_speed(25.0, L, pivot=0.08)
-    kw = dict(position=0.8, speed=20.0, swing=swing, output_step=None, modes=20)
+    kw = dict(position=0.8, speed=20.0, swing=swing, output_step=None, modes=20, tolerance=None)
     exact = simulate(model, **kw)
     direct = simulate(model, solver="cvode", **kw)
     for a, b in zip(exact.racket_motion_after(), direct.racket_motion_after(), strict=True):
@@ -98,14 +104,16 @@ def test_physical_basis_direct_integration(model):
         basis="physical",
         output_step=None,
     )
-    exact = simulate(model, position=0.75, speed=20.0, swing=swing, modes=None, output_step=None)
+    exact = simulate(
+        model, position=0.75, speed=20.0, swing=swing, modes=None, output_step=None, tolerance=None
+    )
     assert direct.ball_speed_out == pytest.approx(exact.ball_speed_out, rel=1e-9)
 
 
 def test_scipy_bdf_direct_integration(model):
     # The fallback integrator too (measured 4e-13 relative on this case).
     swing = Swing.from_speed(30.0, L, pivot=0.08)
-    kw = dict(position=0.9, speed=15.0, swing=swing, modes=20, output_step=None)
+    kw = dict(position=0.9, speed=15.0, swing=swing, modes=20, output_step=None, tolerance=None)
     direct = simulate(model, solver="bdf", **kw)
     assert direct.ball_speed_out == pytest.approx(simulate(model, **kw).ball_speed_out, rel=1e-9)
 

@@ -27,6 +27,9 @@ from fem_racket.studies.cases import VARIABLES, clear_caches
 from fem_racket.studies.checkpoint import Checkpoint, checkpoint_path
 from fem_racket.studies.grid import parse_values
 
+#: The variables of a sweep without the peak force (asked only with peak_force=True).
+RESULTS = [v for v in VARIABLES if v != "peak_force_n"]
+
 ROOT = Path(__file__).resolve().parents[2]
 SMALL = {"position": [0.6, 0.769, 0.9], "speed": [20.0, 40.0], "ei1": [60.0, 146.0, 2000.0]}
 
@@ -55,16 +58,21 @@ def test_parse_values():
 
 
 def test_fast_path_matches_simulate():
-    # The sweep's scalar exact path (eigenvalues + residues, unit speed, cached modes scaled
-    # with EI1) against simulate() building each frame from scratch: same closed form, so
-    # round-off only (1e-9; the residues agree with the eigenvectors to ~1e-11).
+    # The sweep's batched engine with every mode (unit speed, cached modes scaled with EI1)
+    # against simulate() building each frame from scratch, also with every mode: same closed
+    # form, so round-off only (1e-9; the residues agree with the eigenvectors to ~1e-11).
     clear_caches()
-    ds = sweep(**SMALL, backend="serial", progress=False)
+    ds = sweep(**SMALL, tolerance=None, peak_force=True, backend="serial", progress=False)
+    # At the default COR tolerance (1e-6) the sweep stays within it of every mode.
+    fast = sweep(**SMALL, backend="serial", progress=False)
+    assert np.max(np.abs(fast.cor - ds.cor)) <= 1e-6
+    assert fast.attrs["tolerance"] == 1e-6 and ds.attrs["tolerance"] == "all modes"
+    assert "peak_force_n" not in fast
     for pos in SMALL["position"]:
         for v in SMALL["speed"]:
             for ei1 in SMALL["ei1"]:
                 model = FrameModel.build(standard_frame(ei1), 20)
-                r = simulate(model, position=pos, speed=v, output_step=None)
+                r = simulate(model, position=pos, speed=v, output_step=None, tolerance=None)
                 case = ds.sel(position=pos, speed=v, ei1=ei1)
                 assert float(case.cor) == pytest.approx(r.cor, abs=1e-9)
                 assert float(case.contact_time_s) == pytest.approx(r.contact_time, rel=1e-9)
@@ -84,8 +92,9 @@ def test_fast_path_matches_simulate():
 
 def test_fast_path_agrees_with_cvode():
     # Issue 6: the fast path agrees with the CVODE path to 1e-6 in COR.
-    grid = {"position": [0.6, 0.9], "ei1": [80.0, 1000.0], "speed": 30.0}
-    fast = sweep(**grid, backend="serial", progress=False)
+    # The fast path with every mode (tolerance None): the same system as CVODE's.
+    grid = {"position": [0.6, 0.9], "ei1": [80.0, 1000.0], "speed": 30.0, "peak_force": True}
+    fast = sweep(**grid, tolerance=None, backend="serial", progress=False)
     bdf = sweep(**grid, solver="cvode", backend="serial", progress=False)
     np.testing.assert_allclose(bdf.cor, fast.cor, atol=1e-6)
     np.testing.assert_allclose(bdf.contact_time_s, fast.contact_time_s, rtol=1e-6)
@@ -97,7 +106,14 @@ def test_fast_path_agrees_with_cvode():
 def test_cor_depends_on_speed_only_through_kcb():
     # The system is linear: at fixed K_CB the COR and t_c do not depend on the speed and the
     # force scales with it. Checked against simulate() at the swept speed.
-    ds = sweep(speed=[10.0, 25.0, 47.0], kcb=4e4, position=0.7, backend="serial", progress=False)
+    ds = sweep(
+        speed=[10.0, 25.0, 47.0],
+        kcb=4e4,
+        position=0.7,
+        peak_force=True,
+        backend="serial",
+        progress=False,
+    )
     assert np.ptp(ds.cor.values) == 0.0 and np.ptp(ds.contact_time_s.values) == 0.0
     r = simulate(position=0.7, speed=47.0, kcb=4e4, output_step=None)
     assert float(ds.cor.sel(speed=47.0)) == pytest.approx(r.cor, abs=1e-9)
@@ -127,7 +143,8 @@ def test_dataset_contract_and_netcdf(tmp_path):
     assert ds.cor.dims == ("position", "speed", "ei1")
     assert ds.position.attrs["units"] == "x/L" and ds.ei1.attrs["units"] == "N m^2"
     for name, (unit, _) in VARIABLES.items():
-        assert ds[name].attrs["units"] == unit
+        if name != "peak_force_n":  # only when asked
+            assert ds[name].attrs["units"] == unit
     for key in (
         "version",
         "solver",
@@ -158,7 +175,7 @@ def test_process_pool_equals_serial():
     clear_caches()
     pool = sweep(**grid, backend="processes", workers=2, chunk_size=7, progress=False)
     # Same code and inputs in every process: identical to the last bit.
-    xr.testing.assert_equal(pool[list(VARIABLES)], serial[list(VARIABLES)])
+    xr.testing.assert_equal(pool[RESULTS], serial[RESULTS])
 
 
 def test_dask_cluster_equals_serial():
@@ -174,7 +191,7 @@ def test_dask_cluster_equals_serial():
     ) as cluster:
         assert cluster.scheduler_address.startswith("tcp://127.0.0.1:")
         dask = sweep(**grid, scheduler=cluster.scheduler_address, chunk_size=5, progress=False)
-    xr.testing.assert_equal(dask[list(VARIABLES)], serial[list(VARIABLES)])
+    xr.testing.assert_equal(dask[RESULTS], serial[RESULTS])
 
 
 def test_bad_scheduler_and_options():
@@ -244,11 +261,13 @@ def test_killed_sweep_resumes(tmp_path, caplog):
     assert f"{len(saved)} from the checkpoint, {600 - len(saved)} to compute" in note[0]
     assert not folder.exists()
     fresh = sweep(position="0.5:0.95:10", ei1="50:3000:20:log", speed=[20, 30, 40], progress=False)
+    present = [v for v in VARIABLES if v in fresh]  # the peak force is not asked
+    cols = [list(VARIABLES).index(v) for v in present]
     with xr.open_dataset(out) as done:
-        xr.testing.assert_equal(done[list(VARIABLES)].load(), fresh[list(VARIABLES)])
-        flat = np.column_stack([done[v].values.ravel() for v in VARIABLES])
+        xr.testing.assert_equal(done[present].load(), fresh[present])
+        flat = np.column_stack([done[v].values.ravel() for v in present])
     for i, row in saved.items():
-        np.testing.assert_array_equal(flat[i], row)
+        np.testing.assert_array_equal(flat[i], row[cols])
 
 
 def test_cli_summary_and_errors(tmp_path, capsys):

@@ -1,0 +1,393 @@
+"""Many linear impacts at once: arrays of cases in, arrays of COR and contact time out.
+
+Public signature (stable)::
+
+    impacts(frame=None, *, position, speed=20.0, kcb=None, zeta=None, ball_mass=None,
+            ei_factor=1.0, elements=20, separation="displacement",
+            tolerance=1e-6, peak_force=False, modes=None) -> ImpactBatch
+
+    modal_impacts(omega, values, rigid, *, speed=20.0, kcb=None, zeta=None, ball_mass=None,
+                  ei_factor=1.0, residual_flexibility=0.0, residual_mass=0.0,
+                  separation="displacement", tolerance=1e-6, peak_force=False) -> ImpactBatch
+
+Every case argument is a number or an array; they broadcast together. :func:`impacts` takes a
+frame (a :class:`~fem_racket.frame.model.FrameModel`, whose modes it computes once and reuses,
+or a Frame/FrameMesh/None, meshed with ``elements`` cells); :func:`modal_impacts` takes any
+structure's modes directly: flexible angular frequencies ``omega`` (m,) [rad/s], mode values at
+each case's impact point ``values`` (n, m) [1/sqrt(kg)] and the rigid modes' summed squared
+values ``rigid`` (n,) [1/kg] (1/m_R + d^2/I_R for a free frame; any number of rigid modes,
+including none).
+
+Physics: the linear ball/string spring-dashpot (K_CB, C_CB = 2 zeta sqrt(m_B K_CB)) between the
+ball (point mass m_B, speed V_B0) and the structure, as :mod:`fem_racket.impact.closed_form`,
+solved per case from the roots of its characteristic function (:mod:`.roots`) with the modes
+below beta x omega_c kept and one residual pseudo-mode for the others (:mod:`.reduction`;
+``tolerance`` on the COR picks beta, None or 0 keeps every mode given); separation, impulse and
+peak force in :mod:`.separation`. Linear, so everything is solved at V_B0 = 1 m/s: COR and t_c
+do not depend on the speed except through K_CB, and the force scales with it.
+COR = -v_B(t_c)/V_B0 = J(t_c)/(m_B V_B0) - 1.
+
+A case whose ball does not leave the strings within 20 eq-11 contact times gets NaN.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import (
+    DEFAULT_BALL_MASS,
+    KCB_SPEED_RANGE,
+    PAPER_CLAMPED_COR,
+    kcb_from_speed,
+    zeta_from_cor,
+)
+from fem_racket.impact.reduction import (
+    DEFAULT_TOLERANCE,
+    check_tolerance,
+    cutoff_factor,
+    pole_blocks,
+)
+from fem_racket.impact.roots import RootSet, coupled_roots
+from fem_racket.impact.separation import impulse, separation_time
+from fem_racket.impact.separation import peak_force as _peak_force
+from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.validation import InputError, check_choice, check_integer
+
+__all__ = ["DEFAULT_TOLERANCE", "ImpactBatch", "impacts", "modal_impacts"]
+
+#: Cases solved together (bounded memory; small arrays stay in cache).
+BLOCK = 512
+#: Cases whose mode values are gathered at once.
+CHUNK = 8192
+#: Give up on separation after this many eq-11 contact times.
+T_MAX_FACTOR = 20.0
+
+
+@dataclass(frozen=True, eq=False)
+class ImpactBatch:
+    """Outcomes of many impacts, one entry per case (arrays of the broadcast shape).
+
+    Attributes
+    ----------
+    cor : ndarray
+        Coefficient of restitution -v_B(t_c)/V_B0 (NaN: no separation).
+    contact_time : ndarray
+        t_c [s].
+    rebound_speed : ndarray
+        -v_B(t_c) [m/s].
+    peak_force : ndarray or None
+        Largest contact force [N], only when asked.
+    kcb, zeta : ndarray
+        K_CB [N/m] and damping ratio used.
+    modes : ndarray of int
+        Flexible modes kept per case (besides the residual pseudo-mode).
+    tolerance : float or None
+        The COR tolerance asked for (None: every mode).
+    """
+
+    cor: np.ndarray
+    contact_time: np.ndarray
+    rebound_speed: np.ndarray
+    peak_force: np.ndarray | None
+    kcb: np.ndarray
+    zeta: np.ndarray
+    modes: np.ndarray
+    tolerance: float | None
+
+
+def _check_array(name: str, value: Any, unit: str, low: float, high: float, *, closed_high=True):
+    arr = np.asarray(value, dtype=float) if value is not None else None
+    if arr is None:
+        return None
+    bad = ~np.isfinite(arr) | (arr < low) | ((arr > high) if closed_high else (arr >= high))
+    if low == 0.0 and name not in ("position", "zeta"):
+        bad |= arr <= 0.0
+    if np.any(bad):
+        v = float(arr.ravel()[int(np.argmax(bad.ravel()))])
+        unit_txt = f" {unit}" if unit else ""
+        rng = "> 0" if high == math.inf else f"in [{low:g}, {high:g}{']' if closed_high else ')'}"
+        raise InputError(f"{name} = {v!r}{unit_txt} is not allowed: must be {rng}")
+    return arr
+
+
+def _laws(speed, kcb, zeta, ball_mass, shape):
+    """K_CB, zeta, C_CB and m_B per case (flattened)."""
+    v = np.broadcast_to(speed, shape).ravel()
+    if kcb is None:
+        uniq, inv = np.unique(v, return_inverse=True)
+        k = np.array([kcb_from_speed(x) for x in uniq])[inv]
+    else:
+        k = np.broadcast_to(kcb, shape).ravel().astype(float)
+    z = zeta_from_cor(PAPER_CLAMPED_COR) if zeta is None else zeta
+    z = np.broadcast_to(z, shape).ravel().astype(float)
+    mb = np.broadcast_to(DEFAULT_BALL_MASS if ball_mass is None else ball_mass, shape).ravel()
+    mb = mb.astype(float)
+    return v, k, z, 2.0 * z * np.sqrt(mb * k), mb
+
+
+def _solve(omega, values, rigid, flex, mass, k, c, mb, beta, separation, want_peak):
+    """Per-unit-speed COR, t_c, peak force and kept modes of n cases (see the docstring)."""
+    n = omega.shape[0]
+    mu0 = 1.0 / mb + rigid
+    omega_c = np.sqrt(k * mu0)
+    cor, tc = np.full(n, np.nan), np.full(n, np.nan)
+    peak = np.full(n, np.nan)
+    kept = np.zeros(n, dtype=int)
+    for rows, d, v in pole_blocks(omega, values, mu0, omega_c, beta, flex, mass):
+        kept[rows] = np.sum(omega[rows] < beta * omega_c[rows, None], axis=1)
+        for start in range(0, rows.size, BLOCK):
+            sub, sl = rows[start : start + BLOCK], slice(start, start + BLOCK)
+            for part, roots in coupled_roots(d[sl], v[sl], k[sub], c[sub]):
+                if part.size:
+                    idx = sub[part]
+                    cor[idx], tc[idx], peak[idx] = _outcome(
+                        roots, k[idx], c[idx], mb[idx], omega_c[idx], separation, want_peak
+                    )
+    return cor, tc, peak, kept
+
+
+def _outcome(roots: RootSet, k, c, mb, omega_c, separation, want_peak):
+    fw = (k[:, None] + c[:, None] * roots.lam) * roots.res
+    w = roots.res if separation == "displacement" else fw
+    t_est = np.pi / omega_c
+    t = separation_time(roots, w, t_est, T_MAX_FACTOR * t_est)
+    ok = np.isfinite(t)
+    cor, peak = np.full(t.size, np.nan), np.full(t.size, np.nan)
+    if ok.any():
+        sub = RootSet(roots.lam[ok], roots.res[ok], roots.mult)
+        cor[ok] = impulse(sub, fw[ok], t[ok]) / mb[ok] - 1.0
+        if want_peak:
+            peak[ok] = _peak_force(sub, fw[ok], t[ok])[0]
+    return cor, t, peak
+
+
+def _run(
+    omega, values_at, index, rigid, flex, mass, scale, laws, separation, tolerance, want_peak, shape
+):
+    """Solve every case in chunks; values_at[index[i]] are case i's mode values."""
+    v, k, z, c, mb = laws
+    beta = cutoff_factor(tolerance, separation)
+    n = v.size
+    cor, tc, peak = np.empty(n), np.empty(n), np.empty(n)
+    kept = np.empty(n, dtype=int)
+    root_s = np.sqrt(scale)
+    for start in range(0, n, CHUNK):
+        sl = slice(start, start + CHUNK)
+        ix = index[sl]
+        w = omega[None, :] * root_s[sl, None]
+        cor[sl], tc[sl], peak[sl], kept[sl] = _solve(
+            w,
+            values_at[ix],
+            rigid[ix],
+            flex[ix] / scale[sl],
+            mass[ix],
+            k[sl],
+            c[sl],
+            mb[sl],
+            beta,
+            separation,
+            want_peak,
+        )
+    return ImpactBatch(
+        cor=cor.reshape(shape),
+        contact_time=tc.reshape(shape),
+        rebound_speed=(cor * v).reshape(shape),
+        peak_force=(peak * v).reshape(shape) if want_peak else None,
+        kcb=k.reshape(shape),
+        zeta=z.reshape(shape),
+        modes=kept.reshape(shape),
+        tolerance=check_tolerance(tolerance),
+    )
+
+
+def _check_common(speed, kcb, zeta, ball_mass, ei_factor, separation, tolerance):
+    check_choice("separation", separation, SEPARATION_EVENTS)
+    check_tolerance(tolerance)
+    low, high = KCB_SPEED_RANGE
+    if kcb is None:
+        _check_array("speed", speed, "m/s", low, high)
+    else:
+        _check_array("speed", speed, "m/s", 0.0, math.inf)
+        _check_array("kcb", kcb, "N/m", 0.0, math.inf)
+    _check_array("zeta", zeta, "", 0.0, 1.0, closed_high=False)
+    _check_array("ball_mass", ball_mass, "kg", 0.0, math.inf)
+    _check_array("ei_factor", ei_factor, "", 0.0, math.inf)
+
+
+def modal_impacts(
+    omega: Any,
+    values: Any,
+    rigid: Any,
+    *,
+    speed: Any = 20.0,
+    kcb: Any = None,
+    zeta: Any = None,
+    ball_mass: Any = None,
+    ei_factor: Any = 1.0,
+    residual_flexibility: Any = 0.0,
+    residual_mass: Any = 0.0,
+    separation: str = "displacement",
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    peak_force: bool = False,
+) -> ImpactBatch:
+    """Impacts on any structure given by its modes at the impact points.
+
+    Parameters
+    ----------
+    omega : array_like, shape (m,)
+        Flexible angular frequencies, ascending [rad/s] (rigid modes excluded).
+    values : array_like, shape (..., m)
+        Mass-normalised mode values at each case's impact point [1/sqrt(kg)].
+    rigid : array_like, shape (...)
+        Sum of the rigid modes' squared values at the impact point [1/kg].
+    speed, kcb, zeta, ball_mass, ei_factor : array_like
+        V_B0 [m/s], K_CB [N/m] (from the speed when None), damping ratio (from the clamped COR
+        0.83 when None), m_B [kg] (0.057 when None), factor on every EI (omega x sqrt).
+    residual_flexibility, residual_mass : array_like
+        Sums of a^2/omega^2 [s^2/kg] and a^2 [1/kg] over modes not in ``omega``.
+    separation : {"displacement", "force"}
+    tolerance : float or None
+        COR tolerance choosing the modes kept (None or 0: all given).
+    peak_force : bool
+        Also compute the largest contact force.
+    """
+    _check_common(speed, kcb, zeta, ball_mass, ei_factor, separation, tolerance)
+    omega = np.asarray(omega, dtype=float)
+    values = np.asarray(values, dtype=float)
+    if omega.ndim != 1 or values.shape[-1:] != omega.shape or np.any(np.diff(omega) <= 0.0):
+        raise InputError(
+            f"omega = array of shape {omega.shape} is not allowed: must be 1-D, ascending, "
+            f"one per column of values (shape {values.shape})"
+        )
+    shape = np.broadcast_shapes(
+        values.shape[:-1],
+        np.shape(rigid),
+        np.shape(speed),
+        np.shape(kcb),
+        np.shape(zeta),
+        np.shape(ball_mass),
+        np.shape(ei_factor),
+        np.shape(residual_flexibility),
+        np.shape(residual_mass),
+    )
+    n = math.prod(shape)
+    vals = np.broadcast_to(values, shape + omega.shape).reshape(n, omega.size)
+
+    def flat(x):
+        return np.broadcast_to(np.asarray(x, dtype=float), shape).ravel()
+
+    laws = _laws(speed, kcb, zeta, ball_mass, shape)
+    return _run(
+        omega,
+        vals,
+        np.arange(n),
+        flat(rigid),
+        flat(residual_flexibility),
+        flat(residual_mass),
+        flat(ei_factor),
+        laws,
+        separation,
+        tolerance,
+        peak_force,
+        shape,
+    )
+
+
+def impacts(
+    frame: Any = None,
+    *,
+    position: Any,
+    speed: Any = 20.0,
+    kcb: Any = None,
+    zeta: Any = None,
+    ball_mass: Any = None,
+    ei_factor: Any = 1.0,
+    elements: int = 20,
+    separation: str = "displacement",
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    peak_force: bool = False,
+    modes: int | None = None,
+) -> ImpactBatch:
+    """Impacts of the ball on a free frame: COR, contact time (and peak force) per case.
+
+    Parameters
+    ----------
+    frame : FrameModel, Frame or FrameMesh, optional
+        The racket (the paper's standard one when None). A FrameModel keeps its modes for the
+        next call.
+    position : array_like
+        Impact points x/L from the grip end, in [0, 1].
+    speed : array_like
+        Incident ball speeds V_B0 [m/s].
+    kcb : array_like, optional
+        K_CB [N/m]; from the speed through the paper's three points when None.
+    zeta : array_like, optional
+        Damping ratio in [0, 1); from the clamped-frame COR 0.83 (0.0592) when None.
+    ball_mass : array_like, optional
+        m_B [kg]; 0.057 when None.
+    ei_factor : array_like
+        Factor on every EI of the frame (its modes are reused: omega x sqrt(ei_factor)).
+    elements : int
+        Cells when meshing a Frame.
+    separation : {"displacement", "force"}
+        End of contact: delta back to 0 (the paper's) or the contact force back to 0.
+    tolerance : float or None
+        COR tolerance (default 1e-6) choosing the modes kept per case; None or 0: every mode.
+    peak_force : bool
+        Also compute the largest contact force [N].
+    modes : int, optional
+        Use only the lowest ``modes`` flexible modes (a plain truncation, as
+        ``simulate(modes=...)``), then drop those the tolerance does not need. None: the modes
+        below the cut-off are computed and the others enter through static solves.
+
+    Returns
+    -------
+    ImpactBatch
+    """
+    from fem_racket.impact.model_cache import frame_model
+    from fem_racket.impact.structure import frame_modal_data
+
+    _check_common(speed, kcb, zeta, ball_mass, ei_factor, separation, tolerance)
+    pos = _check_array("position", position, "x/L", 0.0, 1.0)
+    model = frame_model(frame, elements)
+    shape = np.broadcast_shapes(
+        pos.shape,
+        np.shape(speed),
+        np.shape(kcb),
+        np.shape(zeta),
+        np.shape(ball_mass),
+        np.shape(ei_factor),
+    )
+    laws = _laws(speed, kcb, zeta, ball_mass, shape)
+    scale = np.broadcast_to(np.asarray(ei_factor, dtype=float), shape).ravel()
+    uniq, index = np.unique(np.broadcast_to(pos, shape).ravel(), return_inverse=True)
+    beta = cutoff_factor(tolerance, separation)
+    cutoff = None
+    if math.isfinite(beta):
+        _, k, _, _, mb = laws
+        props = model.props
+        d = uniq * props.length - props.cg
+        rig = 1.0 / props.mass + d * d / props.inertia
+        wc = np.sqrt(k * (1.0 / mb + rig[index]))
+        cutoff = float(np.max(beta * wc / np.sqrt(scale)))
+    if modes is not None:
+        check_integer("modes", modes)
+    data = frame_modal_data(model, uniq, cutoff, limit=modes)
+    return _run(
+        data.omega,
+        data.values,
+        index,
+        data.rigid,
+        data.residual_flexibility,
+        data.residual_mass,
+        scale,
+        laws,
+        separation,
+        tolerance,
+        peak_force,
+        shape,
+    )

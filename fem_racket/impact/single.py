@@ -1,0 +1,103 @@
+"""One impact through the batched engine, with the state at separation (for ``simulate``).
+
+``simulate(..., output_step=None)`` needs only t = 0 and t = t_c. From the engine's roots
+lambda_j and contact-force residues f_j = (K_CB + C_CB lambda_j) r_j (per unit speed, see
+:mod:`fem_racket.impact.roots`), with F(t) = Re sum m f_j exp(lambda_j t)::
+
+    J(t) = Re sum m f_j (e^{lambda t} - 1) / lambda
+    P(t) = Re sum m f_j (e^{lambda t} - 1 - lambda t) / lambda^2
+    ball:            u_B = V t - P/m_B,   v_B = V - J/m_B
+    rigid mode r:    eta_r = a_r P,       eta_r' = a_r J
+    kept mode f:     eta_f = Re sum m a_f f_j e^{lambda_j t} / (lambda_j^2 + omega_f^2)
+    dropped mode f:  eta_f = a_f F(t) / omega_f^2   (quasi-static, as the pseudo-mode assumes)
+
+(eta_f(s) = a_f F(s) / (s^2 + omega_f^2), and F(s) vanishes at s = +-i omega_f for a mode in the
+model, so only the lambda_j are poles). With ``tolerance=None`` no mode is dropped and the state
+is exact.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fem_racket.contact.linear import Ball, LinearContact
+from fem_racket.frame.model import FrameModel
+from fem_racket.impact.reduction import cutoff_factor, pole_blocks
+from fem_racket.impact.roots import RootSet, coupled_roots
+from fem_racket.impact.separation import impulse, peak_force, separation_time
+from fem_racket.impact.setup import Impact
+from fem_racket.impact.structure import frame_modal_data
+from fem_racket.impact.system import Trajectory, no_separation
+
+__all__ = ["engine_impact"]
+
+#: Give up on separation after this many eq-11 contact times (as the exact path).
+T_MAX_FACTOR = 20.0
+
+
+def engine_impact(
+    model: FrameModel,
+    impact: Impact,
+    ball: Ball,
+    contact: LinearContact,
+    *,
+    separation: str,
+    modes: int | None,
+    tolerance: float | None,
+    t_max: float | None,
+) -> tuple[Trajectory, np.ndarray, int]:
+    """Trajectory at t = 0 and t_c in the coordinates [u_B, rigid, flexible modes], the matrix
+    taking the frame coordinates to Hermite DOFs, and the number of flexible modes kept.
+
+    ``modes`` bounds the frame modes used (a plain truncation, as the other paths);
+    ``tolerance`` then drops those not needed for it (None: keep them all).
+    """
+    fm = model.modes(modes)
+    data = frame_modal_data(model, np.array([impact.position]), None, limit=fm.omega.size)
+    a = data.values[0]
+    k = contact.stiffness
+    c = contact.damping(ball.mass)
+    mu0 = 1.0 / ball.mass + float(data.rigid[0])
+    wc = math.sqrt(k * mu0)
+    beta = cutoff_factor(tolerance, separation)
+    zero = np.zeros(1)
+    _, d, v = next(
+        pole_blocks(data.omega[None], a[None], np.array([mu0]), np.array([wc]), beta, zero, zero)
+    )
+    kept = int(np.sum(data.omega < beta * wc))
+    roots = next(r for p, r in coupled_roots(d, v, np.array([k]), np.array([c])) if p.size)
+    lam = roots.lam[0]
+    fw = (k + c * lam) * roots.res[0]
+    w = roots.res if separation == "displacement" else fw[None]
+    t_est = math.pi / wc
+    limit = T_MAX_FACTOR * t_est if t_max is None else t_max
+    tc = float(separation_time(roots, w, np.array([t_est]), np.array([limit]))[0])
+    if not tc <= limit:
+        raise no_separation(limit)
+    one = RootSet(lam[None], roots.res, roots.mult)
+    J = float(impulse(one, fw[None], np.array([tc]))[0])
+    m = roots.mult
+    e = np.exp(lam * tc)
+    P = m * float((fw * (np.expm1(lam * tc) - lam * tc) / lam**2).real.sum())
+    F = m * float((fw * e).real.sum())
+    dF = m * float((fw * lam * e).real.sum())
+    V = impact.speed
+    n_rigid = fm.rigid.shape[1]
+    x = np.zeros((2, 1 + n_rigid + a.size))
+    xv = np.zeros_like(x)
+    x[1, 0], xv[0, 0], xv[1, 0] = tc - P / ball.mass, 1.0, 1.0 - J / ball.mass
+    rig = model.fe.point_vector(impact.position * model.mesh.length) @ fm.rigid
+    x[1, 1 : 1 + n_rigid], xv[1, 1 : 1 + n_rigid] = rig * P, rig * J
+    w2 = data.omega**2
+    den = lam[None, :] ** 2 + w2[:, None]  # (modes, roots)
+    x[1, 1 + n_rigid :] = a * np.where(
+        np.arange(a.size) < kept, m * ((fw * e)[None, :] / den).real.sum(axis=1), F / w2
+    )
+    xv[1, 1 + n_rigid :] = a * np.where(
+        np.arange(a.size) < kept, m * ((fw * lam * e)[None, :] / den).real.sum(axis=1), dF / w2
+    )
+    peak = float(peak_force(one, fw[None], np.array([tc]))[0][0]) * V
+    traj = Trajectory(np.array([0.0, tc]), x * V, xv * V, peak)
+    return traj, fm.all_shapes, kept
