@@ -114,12 +114,10 @@ def plot_map(
     parameters: Mapping[str, Any] | None = None,
 ) -> Path:
     """PNG: e_A (top) and v_out (bottom) along the frame, sweet spots marked and labelled."""
-    import matplotlib
+    from matplotlib.figure import Figure  # no pyplot: no global state, ~0.2 s less to import
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7.5, 7.0), sharex=True)
+    fig = Figure(figsize=(7.5, 7.0))
+    ax1, ax2 = fig.subplots(2, 1, sharex=True)
     drawn: dict[str, list[float]] = {"mode-1 node": [], "COP": []}
     for k, m in enumerate(maps):
         c = f"C{k}"
@@ -192,7 +190,6 @@ def plot_map(
     with atomic_output(path, overwrite=overwrite) as tmp:
         fig.savefig(tmp, dpi=96, format="png")
         add_png_provenance(tmp, provenance(parameters))
-    plt.close(fig)
     return path
 
 
