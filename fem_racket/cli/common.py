@@ -33,6 +33,7 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
 from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import BASES
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
@@ -263,6 +264,15 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
             "contact time)",
         )
     s.add_argument(
+        "--tolerance",
+        type=float,
+        default=DEFAULT_TOLERANCE,
+        metavar="COR",
+        help="COR error the exact solver may make when no histories are asked: modes far above "
+        f"the contact frequency become one residual mode (default {DEFAULT_TOLERANCE:g}; "
+        "0: every mode)",
+    )
+    s.add_argument(
         "--rtol",
         type=float,
         default=1e-10,
@@ -317,6 +327,7 @@ def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
         "separation": args.separation,
         "basis": args.basis,
         "modes": args.modes,
+        "tolerance": args.tolerance,
         "t_max": args.t_max,
         "rtol": args.rtol,
         "atol": args.atol,

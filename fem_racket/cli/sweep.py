@@ -115,7 +115,12 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=int,
         metavar="N",
         help="impacts per task and checkpoint file (default: about a quarter of each worker's "
-        "share, at most 128 for exact and 4 for cvode/bdf)",
+        "share, at most 32768 for exact and 4 for cvode/bdf)",
+    )
+    r.add_argument(
+        "--peak-force",
+        action="store_true",
+        help="also compute the largest contact force (variable peak_force_n; slower)",
     )
     r.add_argument("--quiet", action="store_true", help="no progress bar")
     r.add_argument("--json", action="store_true", help="print a JSON summary")
@@ -155,7 +160,10 @@ def run(args: argparse.Namespace) -> int:
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:
         args.serial = False  # the command line's choice wins over a run file's serial = true
-    backend = "serial" if args.serial else ("dask" if args.scheduler else "processes")
+    # No choice made: the library picks (serial for small exact sweeps, else a local pool).
+    backend = "serial" if args.serial else ("dask" if args.scheduler else None)
+    if args.workers is not None and backend is None:
+        backend = "processes"
     if args.scheduler is not None:
         check_scheduler(args.scheduler)  # before the checkpoint folder is made
     values = {name: getattr(args, name) for name in PARAMETERS}
@@ -172,6 +180,8 @@ def run(args: argparse.Namespace) -> int:
         modes=args.modes,
         rtol=args.rtol,
         atol=args.atol,
+        tolerance=args.tolerance,
+        peak_force=args.peak_force,
         output=args.out,
         overwrite=args.overwrite,
         restart=args.restart,
@@ -194,7 +204,7 @@ def run(args: argparse.Namespace) -> int:
         "cor_min": float(ds.cor.min()),
         "cor_max": float(ds.cor.max()),
         "solver": args.solver,
-        "backend": backend,
+        "backend": ds.attrs["backend"],
     }
     if args.json:
         print_json(summary)

@@ -33,9 +33,10 @@ WINDOW = 2.0
 MIN_GRID = 32
 #: Smallest grid of the peak-force search, and of its zoom on the largest value.
 PEAK_GRID = 257
-#: Newton/bisection iterations on the separation time, and its relative tolerance.
+#: Newton/bisection iterations on the separation time, and its absolute tolerance [s] (as
+#: the exact path's Brent search; 4 eps relative on top).
 MAX_NEWTON = 60
-TIME_TOL = 1e-14
+TIME_TOL = 1e-15
 
 
 def _powers(z: np.ndarray, start: np.ndarray, G: int) -> np.ndarray:
@@ -126,7 +127,8 @@ def _refine(lam: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> n
 
     The terms left out of the scan may move the crossing by a hair: the bracket is first
     shifted by whole steps until the full sum is > 0 at ``lo`` and <= 0 at ``hi``; then Newton
-    steps, replaced by bisection whenever they leave the bracket.
+    steps from the secant point, replaced by bisection whenever they leave the bracket, until
+    a step or the bracket is below :data:`TIME_TOL` (absolute) plus 4 eps t.
     """
     dt = hi - lo
     for _ in range(4):
@@ -140,19 +142,23 @@ def _refine(lam: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> n
             np.where(early, lo - dt, np.where(late, hi, lo)),
             np.where(early, lo, np.where(late, hi + dt, hi)),
         )
-    t = 0.5 * (lo + hi)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = lo + (hi - lo) * f_lo / (f_lo - f_hi)
+    t = np.where((t > lo) & (t < hi), t, 0.5 * (lo + hi))
     active = np.arange(t.size)
     for _ in range(MAX_NEWTON):
         f, df, _ = _value(lam[active], w[active], t[active])
-        ta = t[active]
-        lo[active] = np.where(f > 0.0, ta, lo[active])
-        hi[active] = np.where(f <= 0.0, ta, hi[active])
+        ta, la, ha = t[active], lo[active], hi[active]
+        la = np.where(f > 0.0, ta, la)
+        ha = np.where(f <= 0.0, ta, ha)
+        lo[active], hi[active] = la, ha
         with np.errstate(divide="ignore", invalid="ignore"):
             tn = ta - f / df
-        bisect = ~((tn > lo[active]) & (tn < hi[active]))
-        tn = np.where(bisect, 0.5 * (lo[active] + hi[active]), tn)
+        bisect = ~((tn >= la) & (tn <= ha))
+        tn = np.where(bisect, 0.5 * (la + ha), tn)
         t[active] = tn
-        done = (np.abs(tn - ta) <= TIME_TOL * ta) | (hi[active] - lo[active] <= TIME_TOL * ta)
+        tol = TIME_TOL + 4.0 * np.finfo(float).eps * ta
+        done = (~bisect & (np.abs(tn - ta) <= tol)) | (ha - la <= tol) | (f == 0.0)
         active = active[~done]
         if active.size == 0:
             break

@@ -49,7 +49,8 @@ def engine_impact(
     t_max: float | None,
 ) -> tuple[Trajectory, np.ndarray, int]:
     """Trajectory at t = 0 and t_c in the coordinates [u_B, rigid, flexible modes], the matrix
-    taking the frame coordinates to Hermite DOFs, and the number of flexible modes kept.
+    taking the frame coordinates to Hermite DOFs, and the number of flexible modes in the model
+    (those above the cut-off are represented by the residual pseudo-mode).
 
     ``modes`` bounds the frame modes used (a plain truncation, as the other paths);
     ``tolerance`` then drops those not needed for it (None: keep them all).
@@ -100,4 +101,4 @@ def engine_impact(
     )
     peak = float(peak_force(one, fw[None], np.array([tc]))[0][0]) * V
     traj = Trajectory(np.array([0.0, tc]), x * V, xv * V, peak)
-    return traj, fm.all_shapes, kept
+    return traj, fm.all_shapes, int(data.omega.size)

@@ -160,6 +160,9 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         "separation": Key(_choice(SEPARATION_EVENTS), "separation", "end of contact"),
         "basis": Key(_choice(BASES), "basis", "frame coordinates for the BDF solvers"),
         "modes": Key(_integer(1), "modes", "flexible modes kept"),
+        "tolerance": Key(
+            _interval(0.0, 0.1), "tolerance", "COR error the exact solver may make (0: every mode)"
+        ),
         "rtol": Key(_positive(), "rtol", "relative tolerance of the BDF solvers"),
         "atol": Key(_positive(), "atol", "absolute tolerance of the BDF solvers"),
         "t_max_s": Key(_positive("s"), "t_max", "give up if no separation by then"),

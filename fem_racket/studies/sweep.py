@@ -274,6 +274,7 @@ def sweep(
         initial=spec.size - todo.size,
     )
     ds = _dataset(spec, values)
+    ds.attrs["backend"] = backend
     failed = int(np.count_nonzero(np.isnan(values[:, 0])))
     ds.attrs["failed_cases"] = failed
     if parameters:

@@ -1,8 +1,9 @@
 """Fig 13 of Kawazoe & Kanda (1997): COR against frame rigidity EI1 (EI2 = 0.88 EI1).
 
 EI1 runs log-spaced from 50 to 3000 N m^2 at 20, 30 and 40 m/s, at three impact points, with
-the ball/string damping (zeta = 0.0592) and without it. One assembled frame is reused through
-:meth:`fem_racket.model.FrameModel.scaled` (K and the modal frequencies scale; shapes do not).
+the ball/string damping (zeta = 0.0592) and without it. One assembled frame serves every EI1
+through the batched engine's ``ei_factor`` (the modal frequencies scale as its square root; the
+shapes do not): one :func:`fem_racket.impacts` call per curve.
 
 Saturation is measured as the smallest EI1 beyond which the COR stays at or above 95 % of
 COR_rigid, the value for the paper's rigid frame (EI1 = 9999 N m^2). With a linear ball/string
@@ -18,7 +19,7 @@ import numpy as np
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, kcb_from_speed, zeta_from_cor
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
-from fem_racket.impact.simulate import simulate
+from fem_racket.impact.engine import impacts
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 
 __all__ = ["FIG_13", "SATURATION_FRACTION", "cor_rigidity", "saturation_ei"]
@@ -46,10 +47,8 @@ def saturation_ei(
 def cor_rigidity(quick: bool = False) -> FigureData:
     """COR against EI1 at three speeds, three positions, with and without damping."""
     base = FrameModel.build(standard_frame(PAPER_EI1), 20)
-    base.modes()  # computed once, reused by every scaled model
     ei = np.geomspace(50.0, 3000.0, 8 if quick else 40)
-    models = [base.scaled(e / PAPER_EI1) for e in ei]
-    rigid = base.scaled(RIGID_EI1 / PAPER_EI1)
+    factors = np.append(ei, RIGID_EI1) / PAPER_EI1  # the last: the paper's rigid frame
     cols: dict[str, list] = {}
     values: dict[str, float] = {"ei_points": float(ei.size)}
     for zeta, ztag in ((None, "damped"), (0.0, "undamped")):
@@ -57,13 +56,8 @@ def cor_rigidity(quick: bool = False) -> FigureData:
             sat = {}
             end = []
             for v in SPEEDS:
-                cor = np.array(
-                    [
-                        simulate(m, position=p, speed=v, zeta=zeta, output_step=None).cor
-                        for m in models
-                    ]
-                )
-                c_rig = simulate(rigid, position=p, speed=v, zeta=zeta, output_step=None).cor
+                every = impacts(base, position=p, speed=v, zeta=zeta, ei_factor=factors).cor
+                cor, c_rig = every[:-1], float(every[-1])
                 for k, val in {
                     "zeta [-]": np.full(
                         ei.size, zeta_from_cor(PAPER_CLAMPED_COR) if zeta is None else zeta
