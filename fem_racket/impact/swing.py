@@ -109,6 +109,13 @@ class Swing:
         out = self.velocity + self.omega * np.asarray(x, dtype=float)
         return float(out) if out.ndim == 0 else out
 
+    def cg_motion(self, cg: float) -> tuple[float, float]:
+        """(v, omega) of the centre of gravity at ``cg`` [m] along the ball's travel: the
+        speed [m/s] and angular speed [rad/s] with the signs of the frame coordinates (a racket
+        swung towards the ball has both negative); the ``frame_velocity`` form of the general
+        integrator's moving racket."""
+        return -float(self.speed_at(cg)), -self.omega
+
     @property
     def pivot(self) -> float | None:
         """The point of zero speed [m from the butt]; None for a translation."""

@@ -144,3 +144,14 @@ def test_energy_balances_in_the_lab(model):
     qd0 = fe.rigid_motion(-swing.velocity, -swing.omega)
     start = 0.5 * 0.057 * 20.0**2 + 0.5 * qd0 @ (fe.M @ qd0)
     assert total[0] == pytest.approx(start, rel=1e-12)
+
+
+def test_cg_motion_is_the_rigid_part_of_the_swing_field(model):
+    # The frame coordinates' sign (along the ball's travel) of the swing's rigid field, about
+    # the centre of gravity, as racket_velocity reads it from the frame's momentum.
+    from fem_racket.impact.swing import racket_velocity
+
+    swing = Swing.from_speed(25.0, L, pivot=0.08)
+    qd = model.fe.rigid_motion(-swing.velocity, -swing.omega)
+    v, omega = swing.cg_motion(model.props.cg)
+    assert racket_velocity(model, qd) == pytest.approx((v, omega), rel=1e-12)
