@@ -23,8 +23,9 @@ ball (point mass m_B, speed V_B0) and the structure, as :mod:`fem_racket.impact.
 solved per case from the roots of its characteristic function (:mod:`.roots`) with the modes
 below beta x omega_c kept and one residual pseudo-mode for the others (:mod:`.reduction`;
 ``tolerance`` on the COR picks beta, None or 0 keeps every mode given); separation, impulse and
-peak force in :mod:`.separation`. Linear, so everything is solved at V_B0 = 1 m/s: COR and t_c
-do not depend on the speed except through K_CB, and the force scales with it.
+peak force in :mod:`.separation`; the batch loop in :mod:`.batch`. Linear, so everything is
+solved at V_B0 = 1 m/s: COR and t_c do not depend on the speed except through K_CB, and the
+force scales with it.
 COR = -v_B(t_c)/V_B0 = J(t_c)/(m_B V_B0) - 1.
 
 A case whose ball does not leave the strings within 20 eq-11 contact times gets NaN.
@@ -45,26 +46,15 @@ from fem_racket.contact.linear import (
     kcb_from_speed,
     zeta_from_cor,
 )
-from fem_racket.impact.reduction import (
-    DEFAULT_TOLERANCE,
-    check_tolerance,
-    cutoff_factor,
-    pole_blocks,
-)
-from fem_racket.impact.roots import RootSet, coupled_roots
-from fem_racket.impact.separation import impulse, separation_time
-from fem_racket.impact.separation import peak_force as _peak_force
+from fem_racket.impact.batch import solve_cases
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance, cutoff_factor
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import InputError, check_choice, check_integer
 
 __all__ = ["DEFAULT_TOLERANCE", "ImpactBatch", "impacts", "modal_impacts"]
 
-#: Cases solved together (bounded memory; small arrays stay in cache).
-BLOCK = 512
 #: Cases whose mode values are gathered at once.
 CHUNK = 8192
-#: Give up on separation after this many eq-11 contact times.
-T_MAX_FACTOR = 20.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -129,42 +119,6 @@ def _laws(speed, kcb, zeta, ball_mass, shape):
     return v, k, z, 2.0 * z * np.sqrt(mb * k), mb
 
 
-def _solve(omega, values, rigid, flex, mass, k, c, mb, beta, separation, want_peak):
-    """Per-unit-speed COR, t_c, peak force and kept modes of n cases (see the docstring)."""
-    n = omega.shape[0]
-    mu0 = 1.0 / mb + rigid
-    omega_c = np.sqrt(k * mu0)
-    cor, tc = np.full(n, np.nan), np.full(n, np.nan)
-    peak = np.full(n, np.nan)
-    kept = np.zeros(n, dtype=int)
-    for rows, d, v in pole_blocks(omega, values, mu0, omega_c, beta, flex, mass):
-        kept[rows] = np.sum(omega[rows] < beta * omega_c[rows, None], axis=1)
-        for start in range(0, rows.size, BLOCK):
-            sub, sl = rows[start : start + BLOCK], slice(start, start + BLOCK)
-            for part, roots in coupled_roots(d[sl], v[sl], k[sub], c[sub]):
-                if part.size:
-                    idx = sub[part]
-                    cor[idx], tc[idx], peak[idx] = _outcome(
-                        roots, k[idx], c[idx], mb[idx], omega_c[idx], separation, want_peak
-                    )
-    return cor, tc, peak, kept
-
-
-def _outcome(roots: RootSet, k, c, mb, omega_c, separation, want_peak):
-    fw = (k[:, None] + c[:, None] * roots.lam) * roots.res
-    w = roots.res if separation == "displacement" else fw
-    t_est = np.pi / omega_c
-    t = separation_time(roots, w, t_est, T_MAX_FACTOR * t_est)
-    ok = np.isfinite(t)
-    cor, peak = np.full(t.size, np.nan), np.full(t.size, np.nan)
-    if ok.any():
-        sub = RootSet(roots.lam[ok], roots.res[ok], roots.mult)
-        cor[ok] = impulse(sub, fw[ok], t[ok]) / mb[ok] - 1.0
-        if want_peak:
-            peak[ok] = _peak_force(sub, fw[ok], t[ok])[0]
-    return cor, t, peak
-
-
 def _run(
     omega, values_at, index, rigid, flex, mass, scale, laws, separation, tolerance, want_peak, shape
 ):
@@ -179,7 +133,7 @@ def _run(
         sl = slice(start, start + CHUNK)
         ix = index[sl]
         w = omega[None, :] * root_s[sl, None]
-        cor[sl], tc[sl], peak[sl], kept[sl] = _solve(
+        cor[sl], tc[sl], peak[sl], kept[sl] = solve_cases(
             w,
             values_at[ix],
             rigid[ix],

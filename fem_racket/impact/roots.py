@@ -89,7 +89,9 @@ def _initial_roots(d: np.ndarray, v: np.ndarray, k: np.ndarray) -> np.ndarray:
 def _aberth(d: np.ndarray, v: np.ndarray, k: np.ndarray, c: np.ndarray) -> tuple:
     """Damped upper-half-plane roots and residues (see the module docstring).
 
-    Returns lam, res, converged (per case).
+    Returns lam, res, ok (per case: converged and its sum rules hold). A case stops moving once
+    its own steps are below STEP_TOL and leaves the arrays, so its result does not depend on
+    the other cases of the block (sweeps give the same bits however they are chunked).
     """
     n, R = d.shape
     om2 = _initial_roots(d, v, k)
@@ -100,49 +102,52 @@ def _aberth(d: np.ndarray, v: np.ndarray, k: np.ndarray, c: np.ndarray) -> tuple
     vp = np.take_along_axis(v, p, axis=1)
     dm = np.where(np.arange(R)[None, None, :] == p[:, :, None], np.inf, d[:, None, :])
     W = np.stack([v, np.ones_like(v)], axis=-1).astype(complex)
-    Wv = W[:, :, :1]
     kk, cc = k[:, None], c[:, None]
-    X = np.empty((n, R, R), complex)
-    rep = np.empty((n, R), complex)
+    lam = s.copy()
     df_last = np.empty((n, R), complex)
-    # A case stops moving once its own steps are below STEP_TOL, so its result does not
-    # depend on the other cases of the block (sweeps give the same bits however chunked).
-    active = np.ones(n, dtype=bool)
+    rows = np.arange(n)  # the cases still moving
     with np.errstate(all="ignore"):
         for _ in range(MAX_ITERATIONS):
             s2 = s * s
-            np.add(dm, s2[:, :, None], out=X)
+            X = dm + s2[:, :, None]
             np.divide(1.0, X, out=X)
             S = X @ W  # sum_i v_i / (d_i + s^2), sum_i 1 / (d_i + s^2)
-            np.multiply(X, X, out=X)
-            S2 = (X @ Wv)[..., 0]
+            X *= X
+            S2 = (X @ W[:, :, :1])[..., 0]
             ikcs = 1.0 / (kk + cc * s)
             q = ikcs + S[..., 0]
-            dq = -cc * ikcs * ikcs - 2.0 * s * S2
             e = dp + s2
             f = vp + e * q
-            df = 2.0 * s * q + e * dq
-            # Aberth: poles of f_p (other d_i, -k/c) minus the other roots (neighbours and
-            # conjugates: the far roots barely move a root and cost R^2 more).
-            corr = 2.0 * s * S[..., 1] + cc * ikcs - 1.0 / (s - s.conj())
+            df = 2.0 * s * q - e * (cc * ikcs * ikcs + 2.0 * s * S2)
+            # Aberth: poles of f_p (the other d_i, -k/c) minus the other roots: the conjugate
+            # (1/(s - conj s) = -i/(2 Im s)) and the neighbours with theirs (far roots barely
+            # move a root and would cost R^2 more).
+            y = s.imag
+            corr = 2.0 * s * S[..., 1] + cc * ikcs + 0.5j / y
             if R > 1:
-                dl = s[:, 1:] - s[:, :-1]
-                rep[:, 0] = 0.0
-                rep[:, 1:] = 1.0 / dl + 1.0 / (s[:, 1:] - s[:, :-1].conj())
-                rep[:, :-1] += 1.0 / (s[:, :-1] - s[:, 1:].conj()) - 1.0 / dl
-                corr -= rep
+                x = s.real
+                u = s[:, 1:] - x[:, :-1]
+                corr[:, 1:] -= 2.0 * u / (u * u + y[:, :-1] ** 2)
+                u = s[:, :-1] - x[:, 1:]
+                corr[:, :-1] -= 2.0 * u / (u * u + y[:, 1:] ** 2)
             step = f / (df + f * corr)
-            s[active] -= step[active]
-            df_last[active] = df[active]
-            active &= ~np.all(np.abs(step) <= STEP_TOL * np.abs(s), axis=1)
-            if not active.any():
+            s = s - step
+            lam[rows], df_last[rows] = s, df
+            done = np.all(np.abs(step) <= STEP_TOL * np.abs(s), axis=1)
+            if done.all():
+                rows = rows[:0]
                 break
+            if done.any():
+                live = ~done
+                rows, s, dm, W = rows[live], s[live], dm[live], W[live]
+                dp, vp, kk, cc = dp[live], vp[live], kk[live], cc[live]
         # Residues at the final roots: df was evaluated one (negligible) step before.
-        e = dp + s * s
-        res = e / (s * s * (kk + cc * s) * df_last)
-        ok = np.all(np.isfinite(res), axis=1) & np.all(s.real <= 1e-12 * np.abs(s), axis=1)
-        ok &= ~active & _sum_rules(s, res, 2.0)
-    return s, res, ok
+        e = np.take_along_axis(d, p, axis=1) + lam * lam
+        res = e / (lam * lam * (k[:, None] + c[:, None] * lam) * df_last)
+        ok = np.all(np.isfinite(res), axis=1) & np.all(lam.real <= 1e-12 * np.abs(lam), axis=1)
+        ok[rows] = False
+        ok &= _sum_rules(lam, res, 2.0)
+    return lam, res, ok
 
 
 def _sum_rules(lam: np.ndarray, res: np.ndarray, mult: float) -> np.ndarray:

@@ -31,6 +31,9 @@ PER_PERIOD = 8.0
 #: Scan window [eq-11 contact times] and smallest grid.
 WINDOW = 2.0
 MIN_GRID = 32
+#: A grid minimum of the event function before separation below this fraction of its largest
+#: value marks a near-touch of zero (see :func:`separation_time`).
+TOUCH = 0.02
 #: Smallest grid of the peak-force search, and of its zoom on the largest value.
 PEAK_GRID = 257
 #: Newton/bisection iterations on the separation time, and its absolute tolerance [s] (as
@@ -84,8 +87,11 @@ def _value(lam, w, t):
 
 def separation_time(
     roots: RootSet, w: np.ndarray, t_est: np.ndarray, t_max: np.ndarray
-) -> np.ndarray:
-    """First time [s] the signal with weights ``w`` falls through zero after t = 0, per row.
+) -> tuple[np.ndarray, np.ndarray]:
+    """First time [s] the signal with weights ``w`` falls through zero after t = 0, per row,
+    and whether the signal came close to zero before it (a grid minimum below :data:`TOUCH` of
+    its largest value in that window: whether it crosses there is then decided by details a
+    reduced model may miss).
 
     NaN where it has not by ``t_max``.
     """
@@ -95,6 +101,7 @@ def separation_time(
     cols, G = _grid_size(lam, w, span)
     lo = np.full(n, np.nan)
     dt_row = np.empty(n)
+    touch = np.zeros(n, dtype=bool)
     for g in np.unique(G):
         rows = np.flatnonzero(G == g)
         dt = span[rows] / (g - 1)
@@ -109,6 +116,11 @@ def separation_time(
             has = falls.any(axis=1)
             i = np.argmax(falls, axis=1) + first
             hit = todo[has]
+            before = np.arange(g)[None, 1:-1] < i[has, None]
+            v = vals[has]
+            dips = (v[:, 1:-1] <= v[:, :-2]) & (v[:, 1:-1] <= v[:, 2:]) & before
+            low = v[:, 1:-1] < TOUCH * np.max(np.abs(v), axis=1, keepdims=True)
+            touch[rows[hit]] = np.any(dips & low, axis=1)
             lo[rows[hit]] = t0[hit] + i[has] * dt[hit]
             dt_row[rows[hit]] = dt[hit]
             todo = todo[~has]
@@ -119,7 +131,7 @@ def separation_time(
     t = np.full(n, np.nan)
     if found.size:
         t[found] = _refine(lam[found], w[found], lo[found], lo[found] + dt_row[found])
-    return t
+    return t, touch
 
 
 def _refine(lam: np.ndarray, w: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:

@@ -299,8 +299,8 @@ def simulate(
         Flexible modes kept in the modal basis; None keeps all.
     output_step : float or None
         Spacing of the output times [s]; None keeps only t = 0 and t = t_c, and the exact
-        solver then runs the batched engine (:mod:`.engine`) on the ``modes`` modes, dropping
-        those ``tolerance`` does not need.
+        solver then runs the batched engine (:mod:`fem_racket.impact.engine`) on the ``modes``
+        modes, dropping those ``tolerance`` does not need.
     t_max : float, optional
         Give up if the ball has not separated by then [s]; 20 x the eq 11 estimate by default.
     rtol, atol : float

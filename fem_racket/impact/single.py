@@ -62,19 +62,25 @@ def engine_impact(
     c = contact.damping(ball.mass)
     mu0 = 1.0 / ball.mass + float(data.rigid[0])
     wc = math.sqrt(k * mu0)
-    beta = cutoff_factor(tolerance, separation)
-    zero = np.zeros(1)
-    _, d, v = next(
-        pole_blocks(data.omega[None], a[None], np.array([mu0]), np.array([wc]), beta, zero, zero)
-    )
-    kept = int(np.sum(data.omega < beta * wc))
-    roots = next(r for p, r in coupled_roots(d, v, np.array([k]), np.array([c])) if p.size)
-    lam = roots.lam[0]
-    fw = (k + c * lam) * roots.res[0]
-    w = roots.res if separation == "displacement" else fw[None]
     t_est = math.pi / wc
     limit = T_MAX_FACTOR * t_est if t_max is None else t_max
-    tc = float(separation_time(roots, w, np.array([t_est]), np.array([limit]))[0])
+    zero = np.zeros(1)
+    # As the batch: a near-touch of zero before separation is solved again with every mode.
+    for beta in (cutoff_factor(tolerance, separation), math.inf):
+        _, d, v = next(
+            pole_blocks(
+                data.omega[None], a[None], np.array([mu0]), np.array([wc]), beta, zero, zero
+            )
+        )
+        kept = int(np.sum(data.omega < beta * wc))
+        roots = next(r for p, r in coupled_roots(d, v, np.array([k]), np.array([c])) if p.size)
+        lam = roots.lam[0]
+        fw = (k + c * lam) * roots.res[0]
+        w = roots.res if separation == "displacement" else fw[None]
+        t, touch = separation_time(roots, w, np.array([t_est]), np.array([limit]))
+        tc = float(t[0])
+        if not touch[0]:
+            break
     if not tc <= limit:
         raise no_separation(limit)
     one = RootSet(lam[None], roots.res, roots.mult)

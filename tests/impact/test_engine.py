@@ -208,3 +208,14 @@ def test_calibrate_engine_script_quick(capsys):
     assert "|dCOR| displ" in out and "|dCOR| force" in out
     # Two frames cannot calibrate, but even they must need a finite beta for 1e-3.
     assert math.isfinite(table["displacement", 1e-3]) and math.isfinite(table["force", 1e-3])
+
+
+def test_bench_engine_script_quick(capsys):
+    rows = _script("bench_engine").main(["--quick"])
+    out = capsys.readouterr().out
+    assert "per-case exact" in out and "engine 1e-06" in out and "fem-racket simulate" in out
+    engine = [r for r in rows if r.get("path", "").startswith("engine")]
+    # Every mode against the per-case path: round-off (measured ~2e-12); the engine within
+    # its tolerance of every mode.
+    assert all(r["dcor"] < 1e-9 for r in rows if r.get("path") == "per-case exact")
+    assert all(r["dcor"] <= float(r["path"].split()[1]) for r in engine)
