@@ -44,7 +44,9 @@ DEFAULT_TOLERANCE = 1e-6
 #: largest COR error is at most tolerance / 1.5. Log-log interpolation in between; below the
 #: smallest tolerance every mode is kept. The force criterion needs far more modes, and below
 #: ~2e-6 every mode: its event K_CB delta + C_CB delta' carries the high modes' ripple (its
-#: error stayed at ~1.2e-6 up to beta = 512 on those cases).
+#: error stayed at ~1.2e-6 up to beta = 512 on those cases). With it, heavily damped impacts
+#: (zeta > 0.1) on very soft frames can even end at a brief dip of the force below zero made
+#: by the highest FE modes, which only every mode (tolerance None) reproduces.
 CALIBRATION: dict[str, tuple[tuple[float, float], ...]] = {
     "displacement": (
         (1e-3, 12.0),
