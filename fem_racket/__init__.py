@@ -13,6 +13,7 @@ from fem_racket.contact.linear import (
 )
 from fem_racket.frame.continuous import free_free_frequencies
 from fem_racket.frame.forms import FrameFE, assemble
+from fem_racket.frame.hand import Hand
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
 from fem_racket.frame.modal import (
@@ -27,6 +28,7 @@ from fem_racket.frame.segments import Frame, Segment, rigid_frame, standard_fram
 from fem_racket.frame.specs import RacketSpec, balance_point, fit_racket, racket_spec, swing_weight
 from fem_racket.impact.coupled import CoupledModes, coupled_modes
 from fem_racket.impact.engine import ImpactBatch, impacts, modal_impacts
+from fem_racket.impact.held import simulate_held
 from fem_racket.impact.integrators import SOLVERS, NoSeparationError
 from fem_racket.impact.rigid import (
     ClampedImpact,
@@ -116,4 +118,6 @@ __all__ = [
     "racket_map",
     "racket_spec",
     "swing_weight",
+    "Hand",
+    "simulate_held",
 ]

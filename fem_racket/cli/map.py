@@ -21,6 +21,7 @@ from fem_racket.cli.common import (
 )
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import standard_frame
+from fem_racket.impact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
 from fem_racket.io.map_files import check_map_output, write_map
@@ -117,6 +118,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="N",
         help=f"flexible modes kept (default {DEFAULT_MODES})",
     )
+    g.add_argument(
+        "--tolerance",
+        type=float,
+        default=DEFAULT_TOLERANCE,
+        metavar="COR",
+        help="COR error the batched engine may make: modes far above the contact frequency "
+        f"become one residual mode (default {DEFAULT_TOLERANCE:g}; 0: every mode)",
+    )
     add_swing_options(p)
     o = p.add_argument_group("output")
     o.add_argument(
@@ -176,6 +185,7 @@ def run(args: argparse.Namespace) -> int:
             separation=args.separation,
             modes=args.modes,
             power_fraction=args.power_fraction,
+            tolerance=args.tolerance,
         )
         for name, frame in _rackets(args)
     ]

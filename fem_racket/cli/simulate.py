@@ -122,10 +122,10 @@ def run(args: argparse.Namespace) -> int:
     check_output_step(args.output_step)
     files = _check_out(args) if args.out else []
     model = build_model(args)
-    swing = swing_from_args(args, model.mesh.length)
     # Histories only when written: the printed summary needs t = 0 and t_c alone, which the
     # exact solver gets from the batched engine (to --tolerance in COR).
     step = args.output_step if args.out else None
+    swing = swing_from_args(args, model.mesh.length)
     result = simulate(model, output_step=step, swing=swing, **impact_kwargs(args))
     note_modes(args, model)
     summary = result.summary()

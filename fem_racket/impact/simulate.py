@@ -8,7 +8,7 @@ ratio of rebound to incident speed on a free racket (Kawazoe & Kanda 1997, secti
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -24,6 +24,7 @@ from fem_racket.impact.setup import Impact
 from fem_racket.impact.single import engine_impact
 from fem_racket.impact.swing import (
     Swing,
+    add_swing,
     closing_speed,
     racket_velocity,
     swing_setup,
@@ -265,8 +266,8 @@ def simulate(
     t_max: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
-    swing: Swing | None = None,
     tolerance: float | None = DEFAULT_TOLERANCE,
+    swing: Swing | None = None,
 ) -> ImpactResult:
     """Simulate a ball striking the free frame, at rest or swinging.
 
@@ -304,14 +305,14 @@ def simulate(
         Give up if the ball has not separated by then [s]; 20 x the eq 11 estimate by default.
     rtol, atol : float
         Tolerances of the BDF integrators.
-    swing : Swing, optional
-        The racket's rigid motion before impact (:mod:`fem_racket.impact.swing`); at rest when
-        None. K_CB then follows the closing speed ``speed + v_r``; the exact solver superposes
-        the swing on the stationary impact, the BDF solvers start from its velocity field.
     tolerance : float or None
         COR tolerance of the engine (output_step None, solver "exact"; default 1e-6): the
         modes far above the contact frequency are replaced by one residual pseudo-mode, and the
         frame state at t_c treats them quasi-statically. None or 0: every mode of ``modes``.
+    swing : Swing, optional
+        The racket's rigid motion before impact (:mod:`fem_racket.impact.swing`); at rest when
+        None. K_CB then follows the closing speed ``speed + v_r``; the exact solver superposes
+        the swing on the stationary impact, the BDF solvers start from its velocity field.
 
     Returns
     -------
@@ -336,12 +337,12 @@ def simulate(
     model = frame_model(frame, elements)
     x_i = impact.position * model.mesh.length
     v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
-    contact = LinearContact.for_speed(closing_speed(impact.speed, v_r), kcb=kcb, zeta=zeta)
-    still = swing is None or (swing.velocity == 0.0 and swing.omega == 0.0)
-    if solver == "exact" and output_step is None and still:  # the engine (racket at rest)
+    closing = closing_speed(impact.speed, v_r)
+    contact = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
+    if solver == "exact" and output_step is None:
         traj, frame_map, kept = engine_impact(
             model,
-            impact,
+            impact if swing is None else replace(impact, speed=closing),
             ball,
             contact,
             separation=separation,
@@ -349,8 +350,10 @@ def simulate(
             tolerance=tolerance,
             t_max=t_max,
         )
+        if swing is not None:  # the stationary impact at the closing speed, plus the swing
+            traj = add_swing(traj, frame_map, model, swing, v_r)
         return _result(
-            model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map
+            model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map, swing
         )
     system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
     to_lab = None
@@ -386,7 +389,7 @@ def simulate(
 
 
 def _result(
-    model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map, swing=None
+    model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map, swing
 ):
     if frame_map is None:
         q, qd = traj.x[:, 1:], traj.v[:, 1:]

@@ -37,6 +37,7 @@ from fem_racket.validation import InputError, check_finite, check_range
 __all__ = [
     "DEFAULT_REFERENCE",
     "Swing",
+    "add_swing",
     "ball_speed_out",
     "closing_speed",
     "racket_velocity",
@@ -108,6 +109,13 @@ class Swing:
         out = self.velocity + self.omega * np.asarray(x, dtype=float)
         return float(out) if out.ndim == 0 else out
 
+    def cg_motion(self, cg: float) -> tuple[float, float]:
+        """(v, omega) of the centre of gravity at ``cg`` [m] along the ball's travel: the
+        speed [m/s] and angular speed [rad/s] with the signs of the frame coordinates (a racket
+        swung towards the ball has both negative); the ``frame_velocity`` form of the general
+        integrator's moving racket."""
+        return -float(self.speed_at(cg)), -self.omega
+
     @property
     def pivot(self) -> float | None:
         """The point of zero speed [m from the butt]; None for a translation."""
@@ -164,15 +172,24 @@ def swing_summary(
     return before
 
 
-def _frame_velocity(system: CoupledSystem, model: FrameModel, swing: Swing) -> np.ndarray:
-    """The swing's rigid velocity field in the system's frame coordinates (positive along the
-    ball's travel, i.e. minus the speed towards the ball)."""
+def _frame_velocity(frame_map: np.ndarray | None, model: FrameModel, swing: Swing) -> np.ndarray:
+    """The swing's rigid velocity field in the frame coordinates of ``frame_map`` (positive
+    along the ball's travel, i.e. minus the speed towards the ball)."""
     fe = model.fe
     qd = fe.rigid_motion(-swing.velocity, -swing.omega)
-    if system.frame_map is None:
+    if frame_map is None:
         return qd
     # Mass-normalised modes: eta' = Phi^T M q' (the rigid field lies in the rigid modes).
-    return system.frame_map.T @ (fe.M @ qd)
+    return frame_map.T @ (fe.M @ qd)
+
+
+def add_swing(
+    traj: Trajectory, frame_map: np.ndarray | None, model: FrameModel, swing: Swing, v_r: float
+) -> Trajectory:
+    """The stationary impact's trajectory (struck at the closing speed) plus the free rigid
+    swing: the ball moving with the impact point at -v_r, the frame with the swing's field."""
+    free = np.concatenate([[-v_r], _frame_velocity(frame_map, model, swing)])
+    return replace(traj, x=traj.x + np.multiply.outer(traj.t, free), v=traj.v + free)
 
 
 def swing_setup(
@@ -185,15 +202,9 @@ def swing_setup(
     system at the closing speed, with the rigid swing added afterwards (superposition; the
     exact closed form, which solves the stationary impact).
     """
-    w = _frame_velocity(system, model, swing)
     v_r = float(swing.speed_at(x_impact))
     if direct:
+        w = _frame_velocity(system.frame_map, model, swing)
         return replace(system, frame_velocity0=w), lambda traj: traj
     moving = replace(system, speed=closing_speed(system.speed, v_r))
-    free = np.concatenate([[-v_r], w])
-
-    def lab(traj: Trajectory) -> Trajectory:
-        x = traj.x + np.multiply.outer(traj.t, free)
-        return Trajectory(traj.t, x, traj.v + free, traj.peak_force)
-
-    return moving, lab
+    return moving, lambda traj: add_swing(traj, system.frame_map, model, swing, v_r)

@@ -25,10 +25,12 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import PAPER_EI1, Frame
 from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
+from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import (
     InputError,
     check_choice,
+    check_finite,
     check_integer,
     check_positive,
     check_range,
@@ -52,6 +54,11 @@ class Parameter:
 PARAMETERS: dict[str, Parameter] = {
     "position": Parameter("x/L", "impact point from the grip end", "position_x_over_l"),
     "speed": Parameter("m/s", "incident ball speed", "speed_m_s"),
+    "racket_speed": Parameter(
+        "m/s", "racket speed towards the ball at the reference point", "racket_speed_m_s"
+    ),
+    "reference": Parameter("x/L", "point whose speed racket_speed gives", "reference_x_over_l"),
+    "pivot": Parameter("m", "pivot of the swing from the butt (none: translation)", "pivot_m"),
     "ei1": Parameter("N m^2", "grip-side bending rigidity EI1 (EI2 = 0.88 EI1)", "ei1_n_m2"),
     "ei_factor": Parameter("1", "factor on every segment's EI", "ei_factor"),
     "ball_mass": Parameter("kg", "ball mass m_B", "ball_mass_kg"),
@@ -63,8 +70,10 @@ PARAMETERS: dict[str, Parameter] = {
 
 def _check_value(name: str, value: object) -> float | int:
     unit = PARAMETERS[name].unit
-    if name == "position":
+    if name in ("position", "reference"):
         return check_range(name, value, 0.0, 1.0, unit=unit)
+    if name in ("racket_speed", "pivot"):  # any sign: towards/away, beyond the butt
+        return check_finite(name, value, unit)
     if name == "zeta":
         return check_range(name, value, 0.0, 1.0, include_high=False)
     if name == "elements":
@@ -187,6 +196,7 @@ class SweepSpec:
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
         values = {name: as_values(name, value) for name, value in raw.items()}
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
+        defaults.update(racket_speed=0.0, reference=DEFAULT_REFERENCE)
         defaults["ball_mass"] = DEFAULT_BALL_MASS
         for name, default in defaults.items():
             values[name] = default if values[name] is None else values[name]

@@ -7,8 +7,8 @@ stationary free racket's COR there is e_A(x), and the ball leaves at
 v_out(x) = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11; exact for the linear
 law, :mod:`fem_racket.impact.swing`). Sweet spots: :mod:`fem_racket.studies.sweetspots`.
 
-:func:`apparent_cor_along` is the one place the impacts are solved (the exact closed form per
-point, frame modes computed once).
+:func:`apparent_cor_along` is the one place the impacts are solved: one call of the batched
+engine (:func:`fem_racket.impact.engine.impacts`) for the whole grid, frame modes computed once.
 """
 
 from __future__ import annotations
@@ -18,13 +18,13 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball, LinearContact
+from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.closed_form import exact_outcome
+from fem_racket.impact.engine import DEFAULT_TOLERANCE, impacts
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
-from fem_racket.impact.system import SEPARATION_EVENTS, modal_system
+from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.sweetspots import (
     SweetSpots,
     centre_of_percussion,
@@ -58,6 +58,7 @@ def apparent_cor_along(
     zeta: float | None = None,
     separation: str = "displacement",
     modes: int | None = DEFAULT_MODES,
+    tolerance: float | None = DEFAULT_TOLERANCE,
 ) -> np.ndarray:
     """e_A of the stationary free frame struck at each position (x/L) at each closing speed.
 
@@ -68,28 +69,29 @@ def apparent_cor_along(
         Impact points x/L.
     speeds : array of float
         Closing speed v_in + v_r at each point [m/s] (sets K_CB unless ``kcb`` is given).
-    ball_mass, kcb, zeta, separation, modes
-        As for :func:`fem_racket.simulate`.
+    ball_mass, kcb, zeta, separation, modes, tolerance
+        As for :func:`fem_racket.simulate` (``tolerance``: the batched engine's COR tolerance).
 
     Returns
     -------
     ndarray
-        e_A = -v_B(t_c) / V_B0 at each point.
+        e_A = -v_B(t_c) / V_B0 at each point (NaN where the ball does not separate).
     """
     check_choice("separation", separation, SEPARATION_EVENTS)
     x = np.atleast_1d(np.asarray(positions, dtype=float))
     v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
-    fm = model.modes(modes)
-    length = model.mesh.length
-    out = np.empty(x.size)
-    for k, (pos, speed) in enumerate(zip(x, v, strict=True)):
-        law = LinearContact.for_speed(float(speed), kcb=kcb, zeta=zeta)
-        g = model.fe.point_vector(float(pos) * length)
-        system = modal_system(
-            fm.all_omega, fm.all_shapes, g, ball_mass, law.stiffness, law.damping(ball_mass), 1.0
-        )
-        out[k] = -exact_outcome(system, separation=separation).rebound_velocity
-    return out
+    batch = impacts(
+        model,
+        position=x,
+        speed=v,
+        kcb=kcb,
+        zeta=zeta,
+        ball_mass=ball_mass,
+        separation=separation,
+        tolerance=tolerance,
+        modes=modes,
+    )
+    return np.asarray(batch.cor, dtype=float).reshape(x.shape)
 
 
 @dataclass(frozen=True, eq=False)
@@ -171,6 +173,7 @@ def racket_map(
     modes: int | None = DEFAULT_MODES,
     elements: int = 20,
     power_fraction: float = DEFAULT_POWER_FRACTION,
+    tolerance: float | None = DEFAULT_TOLERANCE,
 ) -> RacketMap:
     """e_A and v_out along a racket, and its sweet spots.
 
@@ -188,7 +191,7 @@ def racket_map(
         (:meth:`Swing.from_speed`). ``pivot`` also sets the centre of percussion.
     positions : array of float, optional
         Impact points x/L (increasing, at least 3); :data:`DEFAULT_POSITIONS` when None.
-    ball_mass, kcb, zeta, separation, modes, elements
+    ball_mass, kcb, zeta, separation, modes, elements, tolerance
         As for :func:`fem_racket.simulate`.
     power_fraction : float
         The power region is where v_out >= power_fraction x its maximum.
@@ -208,7 +211,14 @@ def racket_map(
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
     v_r = swing.speed_at(x * length)
     closing = np.array([closing_speed(speed, v) for v in v_r])
-    kwargs = dict(ball_mass=ball_mass, kcb=kcb, zeta=zeta, separation=separation, modes=modes)
+    kwargs = dict(
+        ball_mass=ball_mass,
+        kcb=kcb,
+        zeta=zeta,
+        separation=separation,
+        modes=modes,
+        tolerance=tolerance,
+    )
 
     def e_a(s: float) -> float:
         v = closing_speed(speed, swing.speed_at(s * length))

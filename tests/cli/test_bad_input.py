@@ -295,6 +295,7 @@ MAP_CASES = [
     Case("map-bad-suffix", mapc("--out", "m.txt"), ("m.txt", ".png")),
     Case("map-unknown-preset", mapc("--preset", "soft"), ("--preset", "choose from")),
     Case("map-ball-mass", mapc("--ball-mass", "0"), ("ball mass = 0", "> 0")),
+    Case("map-tolerance", mapc("--tolerance", "-1"), ("tolerance = -1",)),
 ]
 
 FIT_CASES = [

@@ -53,7 +53,7 @@ def test_rigid_racket_apparent_cor_closed_form():
     p, mb, speed = model.props, DEFAULT_BALL_MASS, 20.0
     law = LinearContact.for_speed(speed)
     x = np.linspace(0.3, 0.95, 14)
-    got = apparent_cor_along(model, x, speed)
+    got = apparent_cor_along(model, x, speed, tolerance=None)  # every mode: no reduction error
     b = x * p.length - p.cg
     meff = 1.0 / (1.0 / p.mass + b**2 / p.inertia)
     mu = mb * meff / (mb + meff)
