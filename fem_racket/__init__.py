@@ -19,6 +19,7 @@ from fem_racket.contact.series import SeriesBallString
 from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.continuous import free_free_frequencies
 from fem_racket.frame.forms import FrameFE, assemble
+from fem_racket.frame.hand import Hand
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
 from fem_racket.frame.modal import (
@@ -30,8 +31,10 @@ from fem_racket.frame.modal import (
 )
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, Segment, rigid_frame, standard_frame
+from fem_racket.frame.specs import RacketSpec, balance_point, fit_racket, racket_spec, swing_weight
 from fem_racket.impact.coupled import CoupledModes, coupled_modes
 from fem_racket.impact.engine import ImpactBatch, impacts, modal_impacts
+from fem_racket.impact.held import simulate_held
 from fem_racket.impact.integrators import SOLVERS, NoSeparationError
 from fem_racket.impact.rigid import (
     ClampedImpact,
@@ -42,6 +45,7 @@ from fem_racket.impact.rigid import (
 )
 from fem_racket.impact.setup import Impact
 from fem_racket.impact.simulate import ImpactResult, simulate
+from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.io.animate import render_animation
 from fem_racket.io.config import RunConfig, example_config, load_config, parse_config
 from fem_racket.io.figure_files import save_figure
@@ -49,8 +53,10 @@ from fem_racket.io.mesh_files import read_mesh, write_mesh
 from fem_racket.io.plotting import plot_impact, plot_refinement, plot_sweep
 from fem_racket.io.vtk import write_vtk_series
 from fem_racket.io.vtk_series import ImpactSeries, impact_series
+from fem_racket.studies.racket_map import RacketMap, racket_map
 from fem_racket.studies.refine import RefinementStudy, refinement_study
 from fem_racket.studies.sweep import sweep
+from fem_racket.studies.sweetspots import SweetSpots, centre_of_percussion
 from fem_racket.validation import InputError
 from fem_racket.version import __version__
 
@@ -118,4 +124,18 @@ __all__ = [
     "write_mesh",
     "write_vtk_series",
     "zeta_from_cor",
+    # racket motion, sweet spots and power maps, racket from its specification (issue 14)
+    "RacketMap",
+    "RacketSpec",
+    "SweetSpots",
+    "Swing",
+    "balance_point",
+    "ball_speed_out",
+    "centre_of_percussion",
+    "fit_racket",
+    "racket_map",
+    "racket_spec",
+    "swing_weight",
+    "Hand",
+    "simulate_held",
 ]

@@ -8,6 +8,10 @@
   racket) giving 0.317 kg, balance 0.320 m and a first free-free mode at 145 Hz.
 - ``head_heavy_racket.vtu``: the same length with a light handle and a heavy head (3 segments):
   0.322 kg, balance 0.374 m, first mode 128 Hz.
+- ``fit_*_racket.vtu``: frames fitted to catalogue numbers (:func:`fem_racket.frame.specs.
+  fit_racket`, as ``fem-racket fit`` does) for three illustrative rackets in :data:`SPECS`
+  (typical figures of current frames, not a measured model); EI and rhoA rounded to 10
+  significant digits so the files are reproducible to the bit.
 
 Usage: python scripts/make_meshes.py [--out meshes] [--check]
 
@@ -25,6 +29,8 @@ import numpy as np
 
 from fem_racket import FrameMesh, frame_mesh, read_mesh, standard_frame, write_mesh
 from fem_racket.frame.segments import Frame, Segment
+from fem_racket.frame.specs import DEFAULT_ELEMENTS as FIT_ELEMENTS
+from fem_racket.frame.specs import KG_CM2, fit_racket
 
 MESH_DIR = Path(__file__).resolve().parent.parent / "meshes"
 
@@ -48,6 +54,26 @@ HEAD_HEAVY = (
 )
 
 
+#: name -> (length [m], mass [kg], balance [m], swing weight [kg cm^2], f1 [Hz]); illustrative.
+SPECS = {
+    "fit_modern_racket.vtu": (0.685, 0.318, 0.320, 316.0, 150.0),  # 300 g class, strung
+    "fit_light_racket.vtu": (0.690, 0.285, 0.340, 300.0, 160.0),  # light, head-heavy, long
+    "fit_heavy_racket.vtu": (0.685, 0.340, 0.310, 325.0, 135.0),  # heavy, head-light, flexible
+}
+
+
+def _fitted(spec: tuple[float, ...]) -> FrameMesh:
+    length, mass, balance, sw, f1 = spec
+    frame = fit_racket(length, mass, balance, sw * KG_CM2, f1, elements=FIT_ELEMENTS)
+    rounded = Frame(
+        tuple(
+            Segment(s.length, float(f"{s.EI:.10g}"), float(f"{s.rhoA:.10g}"))
+            for s in frame.segments
+        )
+    )
+    return frame_mesh(rounded, FIT_ELEMENTS)
+
+
 def _frame(rows: tuple[tuple[float, float, float], ...]) -> Frame:
     return Frame(tuple(Segment(*r) for r in rows))
 
@@ -58,6 +84,7 @@ def build_meshes() -> dict[str, FrameMesh]:
         "standard_racket.vtu": frame_mesh(standard_frame(), 20),
         "tapered_racket.vtu": frame_mesh(_frame(TAPERED), 3 * len(TAPERED)),
         "head_heavy_racket.vtu": frame_mesh(_frame(HEAD_HEAVY), 20),
+        **{name: _fitted(spec) for name, spec in SPECS.items()},
     }
 
 

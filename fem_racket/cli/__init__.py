@@ -28,7 +28,20 @@ import os
 import sys
 from collections.abc import Sequence
 
-from fem_racket.cli import calibrate, config, modes, refine, reproduce, simulate, sweep, vtk
+from fem_racket.cli import (
+    calibrate,
+    config,
+    fit,
+    map,
+    modes,
+    optimize,
+    refine,
+    reproduce,
+    sensitivity,
+    simulate,
+    sweep,
+    vtk,
+)
 from fem_racket.cli.common import OneLineErrorParser, apply_config
 from fem_racket.cli.signals import (
     GuardedStdout,
@@ -46,7 +59,10 @@ from fem_racket.version import __version__
 __all__ = ["main"]
 
 #: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (simulate, modes, sweep, vtk, refine, reproduce, calibrate, config)
+COMMANDS = (
+    simulate, modes, sweep, map, fit, vtk, refine, reproduce, calibrate, optimize, sensitivity,
+    config,
+)  # fmt: skip
 
 
 def build_parser() -> argparse.ArgumentParser:

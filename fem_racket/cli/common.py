@@ -37,6 +37,7 @@ from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.law_impact import LAW_SOLVERS
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import BASES
+from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.validation import InputError, show
@@ -50,6 +51,7 @@ __all__ = [
     "add_mesh_option",
     "add_output_options",
     "add_solver_options",
+    "add_swing_options",
     "add_output_step_option",
     "apply_config",
     "build_model",
@@ -62,6 +64,7 @@ __all__ = [
     "print_json",
     "run_parameters",
     "significant",
+    "swing_from_args",
     "write_json",
     "write_text",
 ]
@@ -183,6 +186,45 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
     )
     add_law_options(parser)
     add_solver_options(parser)
+
+
+def add_swing_options(parser: argparse.ArgumentParser) -> None:
+    """--racket-speed, --reference, --pivot: the racket's motion before impact (every command
+    that takes a swing: simulate, sweep, map); read them with :func:`swing_from_args`."""
+    g = parser.add_argument_group("swing (racket motion before impact)")
+    g.add_argument(
+        "--racket-speed",
+        type=float,
+        default=0.0,
+        metavar="M_S",
+        help="racket speed towards the ball before impact [m/s] at the --reference point "
+        "(default 0: a racket at rest)",
+    )
+    g.add_argument(
+        "--reference",
+        type=float,
+        default=DEFAULT_REFERENCE,
+        metavar="X_OVER_L",
+        help=f"point x/L whose speed --racket-speed gives (default {DEFAULT_REFERENCE}, the "
+        "string centre)",
+    )
+    g.add_argument(
+        "--pivot",
+        type=float,
+        default=None,
+        metavar="M",
+        help="the racket turns about this point [m from the butt; negative beyond it, e.g. a "
+        "shoulder], so the impact point moves at V (x_i - P)/(x_ref - P) (default: none, the "
+        "racket translates at V)",
+    )
+
+
+def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
+    """The swing the options give for a racket of ``length`` [m]; None for a racket at rest."""
+    if args.racket_speed == 0.0:
+        Swing.from_speed(0.0, length, reference=args.reference, pivot=args.pivot)  # checks
+        return None
+    return Swing.from_speed(args.racket_speed, length, reference=args.reference, pivot=args.pivot)
 
 
 def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -> None:

@@ -23,6 +23,7 @@ from fem_racket.cli.common import (
     add_impact_options,
     add_output_options,
     add_output_step_option,
+    add_swing_options,
     build_model,
     check_output_step,
     impact_kwargs,
@@ -30,6 +31,7 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
     significant,
+    swing_from_args,
     write_json,
 )
 from fem_racket.contact.presets import FILE_KEYS
@@ -52,6 +54,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``simulate`` command."""
     p = sub.add_parser("simulate", help="simulate one ball impact on the racket")
     add_impact_options(p)
+    add_swing_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON object")
     g = add_output_options(
         p,
@@ -119,6 +122,16 @@ def _law_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
     ]
 
 
+def _swing_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str, str]]:
+    """Table rows of a swing: the ball's speed out and the racket's speed at the impact point."""
+    if not swinging:
+        return []
+    return [
+        ("ball speed out", significant(summary["ball_speed_out_m_s"], 5), "m/s"),
+        ("racket speed at impact", significant(summary["racket_speed_at_impact_m_s"], 5), "m/s"),
+    ]
+
+
 def run(args: argparse.Namespace) -> int:
     """Simulate and print the result (and write it with ``--out``)."""
     check_output_step(args.output_step)
@@ -127,7 +140,8 @@ def run(args: argparse.Namespace) -> int:
     # Histories only when written: the printed summary needs t = 0 and t_c alone, which the
     # exact solver gets from the batched engine (to --tolerance in COR).
     step = args.output_step if args.out else None
-    result = simulate(model, output_step=step, **impact_kwargs(args))
+    swing = swing_from_args(args, model.mesh.length)
+    result = simulate(model, output_step=step, swing=swing, **impact_kwargs(args))
     note_modes(args, model)
     summary = result.summary()
     if args.out:
@@ -144,6 +158,7 @@ def run(args: argparse.Namespace) -> int:
         ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound),
         ("peak force", significant(summary["peak_force_n"], 4), "N"),
         ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+        *_swing_rows(summary, swing is not None),
         ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),
         *_law_rows(summary),
         ("solver", f"{summary['solver']} ({summary['basis']}, {summary['elements']} elements)", ""),

@@ -34,6 +34,9 @@ DEFAULT_OUTPUT = Path("output") / "sweep.nc"
 _HELP = {
     "position": "impact point x/L from the grip end (default 0.75)",
     "speed": "incident ball speed [m/s] (default 20)",
+    "racket_speed": "racket speed towards the ball at --reference [m/s] (default 0)",
+    "reference": "point x/L whose speed --racket-speed gives (default 0.75)",
+    "pivot": "pivot of the swing [m from the butt] (default: none, the racket translates)",
     "ei1": "grip-side EI1 [N m^2], EI2 = 0.88 EI1 unless --ei2 (default 146)",
     "ei_factor": "factor on every segment's EI [-] (default 1)",
     "ball_mass": "ball mass [kg] (default 0.057)",

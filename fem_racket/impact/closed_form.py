@@ -100,6 +100,11 @@ class _ModalClosedForm:
             raise InputError(
                 f"basis = {show(system.basis)} is not allowed with solver 'exact': must be 'modal'"
             )
+        if system.frame_velocity0 is not None:
+            raise InputError(
+                "frame_velocity0 is not allowed with solver 'exact': it solves the stationary "
+                "impact (a swing is superposed on it, fem_racket.impact.swing)"
+            )
         om = system.omega
         self.mb = system.ball_mass
         self.v0 = system.speed

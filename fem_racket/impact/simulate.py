@@ -8,7 +8,7 @@ ratio of rebound to incident speed on a free racket (Kawazoe & Kanda 1997, secti
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -27,6 +27,14 @@ from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.setup import Impact
 from fem_racket.impact.single import engine_impact
+from fem_racket.impact.swing import (
+    Swing,
+    add_swing,
+    closing_speed,
+    racket_velocity,
+    swing_setup,
+    swing_summary,
+)
 from fem_racket.impact.system import SEPARATION_EVENTS, CoupledSystem, modal_system, physical_system
 from fem_racket.validation import InputError, check_choice, check_integer, check_positive, show
 
@@ -114,6 +122,8 @@ class ImpactResult:
 
         return impact_dataset(self, x)
 
+    swing: Swing | None = None
+
     # -- scalar outcomes -------------------------------------------------------------------
     @property
     def contact_time(self) -> float:
@@ -127,8 +137,31 @@ class ImpactResult:
 
     @property
     def cor(self) -> float:
-        """Coefficient of restitution -v_B(t_c) / V_B0."""
-        return -self.rebound_velocity / self.impact.speed
+        """Coefficient of restitution: the apparent COR :attr:`apparent_cor` (on a stationary
+        racket -v_B(t_c) / V_B0)."""
+        return self.apparent_cor
+
+    @property
+    def racket_speed_at_impact(self) -> float:
+        """v_r: speed of the impact point towards the ball before impact [m/s] (0 at rest)."""
+        return 0.0 if self.swing is None else float(self.swing.speed_at(self.x_impact))
+
+    @property
+    def ball_speed_out(self) -> float:
+        """v_out = -v_B(t_c): the ball's speed away from the racket after impact [m/s]."""
+        return -self.rebound_velocity
+
+    @property
+    def apparent_cor(self) -> float:
+        """e_A = (v_out - v_r) / (v_in + v_r): rebound over closing speed relative to the impact
+        point (the COR of the stationary racket struck at the closing speed)."""
+        v_r = self.racket_speed_at_impact
+        return (self.ball_speed_out - v_r) / (self.impact.speed + v_r)
+
+    def racket_motion_after(self) -> tuple[float, float]:
+        """Rigid motion of the racket at separation: centre-of-gravity speed [m/s] and angular
+        speed [rad/s], both towards the ball (a racket pushed back by the ball slows down)."""
+        return racket_velocity(self.model, -self.frame_velocity[-1])
 
     # -- derived histories -----------------------------------------------------------------
     @property
@@ -222,10 +255,14 @@ class ImpactResult:
         """Scalar results and :meth:`settings`, JSON-ready, units in the keys."""
         return {
             "cor": self.cor,
+            "apparent_cor": self.apparent_cor,
+            "ball_speed_out_m_s": self.ball_speed_out,
+            "racket_speed_at_impact_m_s": self.racket_speed_at_impact,
             "contact_time_s": self.contact_time,
             "rebound_speed_m_s": -self.rebound_velocity,
             "peak_force_n": self.peak_force,
             **self.settings(),
+            **swing_summary(self.model, self.swing, self.racket_motion_after()),
         }
 
     def settings(self) -> dict[str, Any]:
@@ -375,8 +412,10 @@ def simulate(
     law: ContactLaw | str | None = None,
     frame_velocity: Any = None,
     tolerance: float | None = DEFAULT_TOLERANCE,
+    swing: Swing | None = None,
 ) -> ImpactResult:
-    """Simulate a ball striking the free frame (at rest, or moving with ``frame_velocity``).
+    """Simulate a ball striking the free frame, at rest or swinging (``swing``, or any initial
+    motion ``frame_velocity``).
 
     Parameters
     ----------
@@ -434,6 +473,10 @@ def simulate(
         COR tolerance of the engine (output_step None, solver "exact"; default 1e-6): the
         modes far above the contact frequency are replaced by one residual pseudo-mode, and the
         frame state at t_c treats them quasi-statically. None or 0: every mode of ``modes``.
+    swing : Swing, optional
+        The racket's rigid motion before impact (:mod:`fem_racket.impact.swing`); at rest when
+        None. K_CB then follows the closing speed ``speed + v_r``; the exact solver superposes
+        the swing on the stationary impact, the BDF solvers start from its velocity field.
 
     Returns
     -------
@@ -445,6 +488,7 @@ def simulate(
     check_choice("solver", solver, (*SOLVERS, *LAW_SOLVERS))
     law = get_law(law) if isinstance(law, str) else law
     if law is not None or solver == "general" or frame_velocity is not None:
+        # any contact law, or a racket moving as given: the general integrator (or CVODE)
         if law is None:
             law = SpringDashpot(contact.stiffness, contact.damping(ball.mass), separation)
             contact_used: LinearContact | None = contact
@@ -460,9 +504,20 @@ def simulate(
         if t_max is not None:
             check_positive("t_max", t_max, "s")
         model = frame_model(frame, elements)
+        if swing is not None:  # the swing as the general integrator's moving racket
+            if frame_velocity is not None:
+                raise InputError("swing and frame_velocity cannot be combined: give one")
+            v_r = float(swing.speed_at(impact.position * model.mesh.length))
+            if contact_used is not None:  # the paper's K_CB at the closing speed
+                closing = closing_speed(impact.speed, v_r)
+                contact_used = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
+                law = SpringDashpot(
+                    contact_used.stiffness, contact_used.damping(ball.mass), separation
+                )
+            frame_velocity = swing.cg_motion(model.props.cg)
         if solver == "cvode":  # the general integrator has no tolerances
             check_solver_settings(solver, "modal", model.mesh.n_elements, rtol, atol)
-        return _simulate_law(
+        result = _simulate_law(
             model,
             impact,
             ball,
@@ -475,6 +530,7 @@ def simulate(
             rtol,
             atol,
         )
+        return result if swing is None else replace(result, swing=swing)
     check_choice("separation", separation, SEPARATION_EVENTS)
     check_choice("basis", basis, BASES)
     if output_step is not None:
@@ -492,10 +548,14 @@ def simulate(
     tolerance = check_tolerance(tolerance)
     model = frame_model(frame, elements)
     check_solver_settings(solver, basis, model.mesh.n_elements, rtol, atol)
+    x_i = impact.position * model.mesh.length
+    v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
+    closing = closing_speed(impact.speed, v_r)
+    contact = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
     if solver == "exact" and output_step is None:
         traj, frame_map, kept = engine_impact(
             model,
-            impact,
+            impact if swing is None else replace(impact, speed=closing),
             ball,
             contact,
             separation=separation,
@@ -503,26 +563,33 @@ def simulate(
             tolerance=tolerance,
             t_max=t_max,
         )
+        if swing is not None:  # the stationary impact at the closing speed, plus the swing
+            traj = add_swing(traj, frame_map, model, swing, v_r)
         return _result(
             model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map,
-            tolerance=tolerance,
+            swing=swing, tolerance=tolerance,
         )  # fmt: skip
     system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
+    to_lab = None
+    if swing is not None:
+        system, to_lab = swing_setup(system, model, swing, x_i, direct=solver != "exact")
     if output_step is not None:
         _check_output_count(output_step, t_max, system.contact_time_estimate(), kcb, ball.mass)
     traj = get_solver(solver)(
         system, separation=separation, output_step=output_step, t_max=t_max, rtol=rtol, atol=atol
     )
+    if to_lab is not None:
+        traj = to_lab(traj)
     n_modes = (system.size - 1 - RIGID_MODES) if basis == "modal" else None
     return _result(
         model, impact, ball, contact, solver, separation, basis, n_modes, traj, system.frame_map,
-        rtol=rtol, atol=atol,
+        swing=swing, rtol=rtol, atol=atol,
     )  # fmt: skip
 
 
 def _result(
     model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map,
-    *, rtol=None, atol=None, tolerance=None,
+    *, swing=None, rtol=None, atol=None, tolerance=None,
 ):  # fmt: skip
     """The :class:`ImpactResult` of a linear-law run from its trajectory in the solver's
     coordinates (``frame_map`` takes them to the frame's Hermite DOFs, None: they are those)."""
@@ -548,4 +615,5 @@ def _result(
         rtol=None if solver == "exact" else rtol,
         atol=None if solver == "exact" else atol,
         tolerance=tolerance,
+        swing=swing,
     )

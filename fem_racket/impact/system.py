@@ -66,7 +66,8 @@ def output_times(step: float | None, t_end: float) -> np.ndarray:
 
 @dataclass(frozen=True, eq=False)
 class CoupledSystem:
-    """``M x'' + K x = -h (kcb delta + ccb delta')`` with x(0) = 0, x'(0) = speed * e_0.
+    """``M x'' + K x = -h (kcb delta + ccb delta')`` with x(0) = 0, x'(0) = speed * e_0
+    (plus the frame's ``frame_velocity0``).
 
     Attributes
     ----------
@@ -86,6 +87,10 @@ class CoupledSystem:
         For the modal basis: angular frequency of each frame coordinate [rad/s] (rigid = 0).
     frame_map : ndarray or None
         Matrix taking frame coordinates to physical Hermite DOFs (None: identity).
+    frame_velocity0 : ndarray or None
+        Initial rates of the frame coordinates (a swinging racket's rigid velocity field, see
+        :mod:`fem_racket.impact.swing`); at rest when None. Taken by the BDF integrators; the
+        exact solver solves the stationary impact and refuses it.
     """
 
     mass: sp.spmatrix
@@ -98,6 +103,7 @@ class CoupledSystem:
     rigid_compliance: float
     omega: np.ndarray | None = None
     frame_map: np.ndarray | None = None
+    frame_velocity0: np.ndarray | None = None
 
     @property
     def size(self) -> int:
@@ -113,6 +119,8 @@ class CoupledSystem:
         """First-order state [x, x'] at t = 0."""
         y0 = np.zeros(2 * self.size)
         y0[self.size] = self.speed
+        if self.frame_velocity0 is not None:
+            y0[self.size + 1 :] = self.frame_velocity0
         return y0
 
     @cached_property

@@ -46,6 +46,10 @@ clamped_cor = 0.83           # clamped-frame COR, fixes zeta by eqs 1-4 (0.0592)
 [impact]
 position_x_over_l = 0.75     # impact point x/L from the grip end, in [0, 1]
 speed_m_s = 20.0             # incident ball speed V_B0 [m/s], > 0
+racket_speed_m_s = 0.0       # swing: racket speed towards the ball [m/s] at ...
+reference_x_over_l = 0.75    # ... this point x/L (the string centre)
+# pivot_m = 0.08             # the racket turns about this point [m from the butt]
+#                            # (default: it translates); simulate, sweep and map
 
 [solver]
 name = "exact"               # "exact" (closed form), "cvode" or "bdf"

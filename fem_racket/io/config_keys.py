@@ -17,7 +17,14 @@ from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.simulate import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.validation import InputError, check_choice, check_positive, check_range, show
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_finite,
+    check_positive,
+    check_range,
+    show,
+)
 
 __all__ = ["COMMAND_TABLES", "CORE_DESTS", "CORE_KEYS", "PRESETS", "Key", "reject_unknown"]
 
@@ -28,10 +35,14 @@ COMMAND_TABLES = {
     "simulate": "simulate",
     "modes": "modes",
     "sweep": "sweep",
+    "map": "map",
+    "fit": "fit",
     "refine": "refine",
     "export-vtk": "vtk",
     "animate": "animate",
     "reproduce": "reproduce",
+    "optimize": "design",
+    "sensitivity": "sensitivity",
 }
 
 #: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).
@@ -155,6 +166,11 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
     "impact": {
         "position_x_over_l": Key(_interval(0.0, 1.0), "position", "impact point x/L"),
         "speed_m_s": Key(_positive("m/s"), "speed", "incident ball speed V_B0"),
+        "racket_speed_m_s": Key(
+            _number("m/s", check_finite), "racket_speed", "racket speed towards the ball"
+        ),
+        "reference_x_over_l": Key(_interval(0.0, 1.0), "reference", "racket speed's point x/L"),
+        "pivot_m": Key(_number("m", check_finite), "pivot", "pivot of the swing from the butt"),
     },
     "solver": {
         "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),

@@ -10,6 +10,10 @@ V_B0 = 1 m/s (the system is linear), so results do not depend on how cases are c
 Another contact law: the chunk's cases batched per frame (:mod:`fem_racket.studies.law_cases`).
 BDF solvers: :func:`fem_racket.simulate` per case with 1 us output steps, the peak force being
 the largest over them.
+
+A swing (racket_speed, reference, pivot; :mod:`fem_racket.impact.swing`) enters through the
+closing speed v_in + v_r of each case, at which the stationary racket is struck (K_CB follows
+it), and the ball leaves at v_out = e_A v_in + (1 + e_A) v_r.
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
 from fem_racket.impact.engine import impacts
 from fem_racket.impact.simulate import simulate
+from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import NoSeparationError
 from fem_racket.studies.grid import SweepSpec
 from fem_racket.studies.law_cases import law_chunk
@@ -36,11 +41,12 @@ log = logging.getLogger(__name__)
 
 #: Result variables: name -> (units, description).
 VARIABLES: dict[str, tuple[str, str]] = {
-    "cor": ("1", "coefficient of restitution -v_B(t_c)/V_B0"),
+    "cor": ("1", "apparent coefficient of restitution (v_out - v_r)/(v_in + v_r)"),
     "contact_time_s": ("s", "contact time t_c"),
-    "rebound_speed_m_s": ("m/s", "ball rebound speed -v_B(t_c)"),
+    "rebound_speed_m_s": ("m/s", "ball speed after impact -v_B(t_c) (v_out with a swing)"),
     "peak_force_n": ("N", "largest contact force"),
     "kcb_n_m": ("N/m", "ball/string stiffness K_CB used"),
+    "racket_speed_at_impact_m_s": ("m/s", "impact point's speed towards the ball before impact"),
 }
 #: Column of the peak force in a chunk's results (computed only when asked).
 PEAK_COLUMN = list(VARIABLES).index("peak_force_n")
@@ -112,8 +118,6 @@ def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) 
 def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     """The result values (in :data:`VARIABLES` order) of one case of a BDF solver."""
     speed, mass = p["speed"], p["ball_mass"]
-    law = LinearContact.for_speed(speed, kcb=p["kcb"], zeta=p["zeta"])
-    kcb, zeta = law.stiffness, law.zeta
     _, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
     if spec.law is not None:  # any contact law: one impact by the general integrator (or CVODE)
         r = simulate(
@@ -127,7 +131,11 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
             rtol=spec.rtol,
             atol=spec.atol,
         )
-        return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, np.nan
+        return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, np.nan, 0.0
+    swing = _swing(p, model.mesh.length)
+    v_r = float(swing.speed_at(p["position"] * model.mesh.length))
+    law = LinearContact.for_speed(closing_speed(speed, v_r), kcb=p["kcb"], zeta=p["zeta"])
+    kcb, zeta = law.stiffness, law.zeta
     r = simulate(
         model,
         position=p["position"],
@@ -142,8 +150,30 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
         output_step=BDF_OUTPUT_STEP,
         rtol=spec.rtol,
         atol=spec.atol,
+        swing=swing,
     )
-    return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, kcb
+    return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r
+
+
+def _swing(p: dict[str, Any], length: float) -> Swing:
+    """The swing of one case (scalar parameter values) for a racket of ``length`` [m]."""
+    return Swing.from_speed(p["racket_speed"], length, reference=p["reference"], pivot=p["pivot"])
+
+
+def _racket_speeds(p: dict[str, Any], rows: np.ndarray, length: float) -> np.ndarray:
+    """v_r [m/s] of the cases ``rows`` of ``case_arrays`` values ``p`` (swept or fixed)."""
+    names = ("racket_speed", "reference", "pivot", "position")
+    cols = [
+        np.broadcast_to(np.asarray(p[k], dtype=object), (rows.size,))
+        if np.ndim(p[k]) == 0
+        else np.asarray(p[k])[rows]
+        for k in names
+    ]
+    out = np.empty(rows.size)
+    for i, (v, ref, piv, pos) in enumerate(zip(*cols, strict=True)):
+        swing = _swing({"racket_speed": v, "reference": ref, "pivot": piv}, length)
+        out[i] = swing.speed_at(float(pos) * length)
+    return out
 
 
 def _engine_chunk(spec: SweepSpec, chunk: np.ndarray) -> np.ndarray:
@@ -190,10 +220,13 @@ def _engine_group(
     out = np.full((rows.size, len(VARIABLES)), np.nan)
     _, model = _base(spec, cells, ei1)
     factor = _factor(spec, take(p["ei1"], rows), take(p["ei_factor"], rows))
+    v_in = np.broadcast_to(np.asarray(take(p["speed"], rows), dtype=float), rows.shape)
+    v_r = _racket_speeds(p, rows, model.mesh.length)
+    closing = np.array([closing_speed(vi, vr) for vi, vr in zip(v_in, v_r, strict=True)])
     b = impacts(
         model,
         position=take(p["position"], rows),
-        speed=take(p["speed"], rows),
+        speed=closing,
         kcb=take(p["kcb"], rows),
         zeta=take(p["zeta"], rows),
         ball_mass=take(p["ball_mass"], rows),
@@ -203,7 +236,8 @@ def _engine_group(
         peak_force=spec.peak_force,
         modes=spec.modes,
     )
-    cols = [b.cor, b.contact_time, b.rebound_speed, b.peak_force, b.kcb]
+    v_out = ball_speed_out(b.cor, v_in, v_r)
+    cols = [b.cor, b.contact_time, v_out, b.peak_force, b.kcb, v_r]
     for k, col in enumerate(cols):
         if col is not None:
             out[:, k] = np.broadcast_to(col, rows.shape)

@@ -34,12 +34,14 @@ from fem_racket.frame.segments import (
 )
 from fem_racket.impact.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
+from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.limits import MAX_CASES, check_grid_size
 from fem_racket.validation import (
     InputError,
     check_choice,
     check_elements,
+    check_finite,
     check_integer,
     check_positive,
     check_range,
@@ -64,6 +66,11 @@ class Parameter:
 PARAMETERS: dict[str, Parameter] = {
     "position": Parameter("x/L", "impact point from the grip end", "position_x_over_l"),
     "speed": Parameter("m/s", "incident ball speed", "speed_m_s"),
+    "racket_speed": Parameter(
+        "m/s", "racket speed towards the ball at the reference point", "racket_speed_m_s"
+    ),
+    "reference": Parameter("x/L", "point whose speed racket_speed gives", "reference_x_over_l"),
+    "pivot": Parameter("m", "pivot of the swing from the butt (none: translation)", "pivot_m"),
     "ei1": Parameter("N m^2", "grip-side bending rigidity EI1 (EI2 = 0.88 EI1)", "ei1_n_m2"),
     "ei_factor": Parameter("1", "factor on every segment's EI", "ei_factor"),
     "ball_mass": Parameter("kg", "ball mass m_B", "ball_mass_kg"),
@@ -75,8 +82,10 @@ PARAMETERS: dict[str, Parameter] = {
 
 def _check_value(name: str, value: object) -> float | int:
     unit = PARAMETERS[name].unit
-    if name == "position":
+    if name in ("position", "reference"):
         return check_range(name, value, 0.0, 1.0, unit=unit)
+    if name in ("racket_speed", "pivot"):  # any sign: towards/away, beyond the butt
+        return check_finite(name, value, unit)
     if name == "zeta":
         return check_range(name, value, 0.0, 1.0, include_high=False)
     if name == "elements":
@@ -206,6 +215,7 @@ class SweepSpec:
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
         values = {name: as_values(name, value) for name, value in raw.items()}
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
+        defaults.update(racket_speed=0.0, reference=DEFAULT_REFERENCE)
         defaults["ball_mass"] = DEFAULT_BALL_MASS
         for name, default in defaults.items():
             values[name] = default if values[name] is None else values[name]
@@ -252,6 +262,13 @@ class SweepSpec:
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         if not isinstance(spec.peak_force, bool):
             raise InputError(f"peak_force = {spec.peak_force!r} is not allowed: must be a bool")
+        speeds = np.atleast_1d(spec.values["racket_speed"])
+        if spec.law is not None and np.any(speeds != 0.0):
+            raise InputError(
+                f"racket_speed = {show(float(speeds[speeds != 0.0][0]))} m/s is not allowed with "
+                f"contact law {spec.law.name!r} in a sweep: must be 0 (sweeps of a swinging "
+                "racket take the linear law; simulate takes a law with a swing)"
+            )
         return spec
 
     def _check_rigidity(self) -> None:

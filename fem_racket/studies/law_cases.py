@@ -37,7 +37,7 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         key, model = model_of(spec, p["elements"], p["ei1"], p["ei_factor"])
         groups.setdefault(key, []).append(row)
         models[key] = model
-    out = np.full((len(cases), 5), np.nan)
+    out = np.full((len(cases), 6), np.nan)
     for key, rows in groups.items():
         pos = np.array([cases[r]["position"] for r in rows])
         speed = np.array([cases[r]["speed"] for r in rows])
@@ -51,4 +51,5 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         out[rows, 1] = o.contact_time
         out[rows, 2] = -o.ball_velocity
         out[rows, 3] = o.peak_force
+        out[rows, 5] = 0.0  # the racket at rest (a swing is refused with a law)
     return out

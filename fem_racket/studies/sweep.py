@@ -130,6 +130,9 @@ def sweep(
     ball_mass: Any = None,
     zeta: Any = None,
     kcb: Any = None,
+    racket_speed: Any = None,
+    reference: Any = None,
+    pivot: Any = None,
     elements: Any = None,
     solver: str = "exact",
     separation: str = "displacement",
@@ -162,6 +165,12 @@ def sweep(
         :func:`fem_racket.simulate` (position x/L, speed m/s, EI1 N m^2, ball mass kg, K_CB N/m);
         ``kcb`` and ``zeta`` None follow the speed and the clamped COR 0.83; ``ei_factor``
         multiplies every segment's EI.
+    racket_speed, reference, pivot
+        The swing, fixed or swept like the others: the racket's speed towards the ball [m/s]
+        (0 by default) at the point ``reference`` (x/L, 0.75), turning about ``pivot`` [m from
+        the butt] or translating when None (:class:`fem_racket.impact.swing.Swing`). K_CB
+        follows the closing speed; ``rebound_speed_m_s`` is then the ball's v_out and ``cor``
+        the apparent COR.
     ei2 : float, optional
         Fixed top-side EI2 of the standard frame [N m^2]; 0.88 EI1 when None.
     solver, separation, basis, modes, rtol, atol
@@ -213,6 +222,9 @@ def sweep(
         ball_mass=ball_mass,
         zeta=zeta,
         kcb=kcb,
+        racket_speed=racket_speed,
+        reference=reference,
+        pivot=pivot,
         elements=elements,
         solver=solver,
         separation=separation,

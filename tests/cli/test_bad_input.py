@@ -52,6 +52,24 @@ def anim(*argv: str) -> list[str]:
     return ["animate", "--frames", "3", "--size", "160x160", *argv]
 
 
+def mapc(*argv: str) -> list[str]:
+    return ["map", "--positions", "0.5:1.0:5", *argv]
+
+
+def fitc(*argv: str, **spec: str) -> list[str]:
+    values = {"length": "0.685", "mass": "0.318", "balance": "0.32", "swing-weight": "316"}
+    values.update({k.replace("_", "-"): v for k, v in spec.items()})
+    return ["fit", *(x for k, v in values.items() for x in (f"--{k}", v)), *argv]
+
+
+def opt(*argv: str) -> list[str]:
+    return ["optimize", "--boundaries", "0.3", "--speeds", "30", "--zone-points", "3", *argv]
+
+
+def sens(*argv: str) -> list[str]:
+    return ["sensitivity", "--boundaries", "0.3", "--speeds", "30", "--designs", "8", *argv]
+
+
 def repro(*argv: str) -> list[str]:
     return ["reproduce", "--quick", *argv]
 
@@ -290,6 +308,55 @@ REPRODUCE_CASES = [
         ("report = 'REPRODUCTION.md'", "already exists", "--overwrite"),
         {"REPRODUCTION.md": "mine"},
     ),
+]
+
+MAP_CASES = [
+    Case("map-speed-zero", mapc("--speed", "0"), ("speed = 0", "> 0")),
+    Case("map-positions-off-tip", mapc("--positions", "0.5:1.5:9"), ("position =", "[0, 1]")),
+    Case("map-one-position", mapc("--positions", "0.7"), ("positions", "at least 3")),
+    Case("map-power-fraction", mapc("--power-fraction", "0"), ("power_fraction = 0", "(0, 1]")),
+    Case("map-pivot-at-reference", mapc("--racket-speed", "9", "--pivot", "0.51"), ("pivot",)),
+    Case("map-racket-away", mapc("--racket-speed", "-40"), ("racket speed", "must close")),
+    Case("map-reference-off", mapc("--reference", "2"), ("reference = 2", "[0, 1]")),
+    Case("map-bad-suffix", mapc("--out", "m.txt"), ("m.txt", ".png")),
+    Case("map-unknown-preset", mapc("--preset", "soft"), ("--preset", "choose from")),
+    Case("map-ball-mass", mapc("--ball-mass", "0"), ("ball mass = 0", "> 0")),
+    Case("map-tolerance", mapc("--tolerance", "-1"), ("tolerance = -1",)),
+]
+
+FIT_CASES = [
+    Case("fit-mass-zero", fitc(mass="0"), ("mass = 0", "> 0")),
+    Case("fit-balance-off", fitc(balance="0.9"), ("balance = 0.9", "must lie in")),
+    Case("fit-balance-extreme", fitc(balance="0.6"), ("balance = 0.6", "must lie in")),
+    Case("fit-swing-weight-high", fitc(swing_weight="600"), ("swing weight = 600", "kg cm^2")),
+    Case("fit-swing-weight-low", fitc(swing_weight="100"), ("swing weight = 100", "kg cm^2")),
+    Case("fit-f1-negative", fitc("--f1", "-5"), ("f1 = -5", "> 0")),
+    Case("fit-elements-two", fitc("--elements", "2"), ("elements = 2", ">= 3")),
+    Case("fit-length-nan", fitc(length="nan"), ("length = nan", "finite")),
+    Case("fit-no-mass", ["fit", "--length", "0.68"], ("mass is required", "--mass")),
+]
+
+DESIGN_CASES = [
+    Case("optimize-speed-high", opt("--speeds", "200"), ("speed = 200", "[1, 100]")),
+    Case("optimize-ei-bounds", opt("--ei-bounds", "0,100"), ("ei_1 bounds", "0 < low < high")),
+    Case("optimize-vary", opt("--vary", "stiffness"), ("vary = 'stiffness'", "ei")),
+    Case("optimize-objective", opt("--objective", "speed"), ("objective = 'speed'", "cor")),
+    Case(
+        "optimize-mass-range",
+        opt("--mass-range", "0.4,0.3"),
+        ("mass_kg = [0.4, 0.3]", "LOW < HIGH"),
+    ),
+    Case("optimize-zone-range", opt("--zone-range", "0.9,0.6"), ("zone range", "LOW < HIGH")),
+    Case(
+        "optimize-mass-position",
+        opt("--vary", "mass", "--mass-positions", "1.2"),
+        ("mass position = 1.2", "[0, 1]"),
+    ),
+    Case("optimize-nsga2-one-objective", opt("--method", "nsga2"), ("objectives", "2 or 3")),
+    Case("optimize-racket-speed", opt("--racket-speed", "-5"), ("racket speed = -5", "[0, 100]")),
+    Case("optimize-out-is-file", opt("--out", "afile"), ("afile", "folder"), A_FILE),
+    Case("sensitivity-output", sens("--output", "nothing"), ("output = 'nothing'", "cor")),
+    Case("sensitivity-designs", sens("--designs", "2"), ("designs = 2", ">= 6")),
 ]
 
 OUTPUT_CASES = [
@@ -605,6 +672,9 @@ MESH_ENTRIES = {
     "refine": refine("--mesh", "bad.vtu"),
     "export-vtk": vtk("--mesh", "bad.vtu"),
     "animate": anim("--mesh", "bad.vtu"),
+    "map": mapc("--mesh", "bad.vtu"),
+    "optimize": opt("--mesh", "bad.vtu"),
+    "sensitivity": sens("--mesh", "bad.vtu"),
 }
 
 
@@ -628,6 +698,9 @@ ALL_CASES = (
     + OUTPUT_CASES
     + TOML_CASES
     + LAW_CASES
+    + MAP_CASES
+    + FIT_CASES
+    + DESIGN_CASES
 )
 MESH_CASES = {c[0]: c[1] for c in BAD_MESHES}
 

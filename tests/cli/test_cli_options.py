@@ -134,7 +134,7 @@ def test_every_option_states_its_default():
 
 
 def test_every_out_says_file_or_folder():
-    folders = {"export-vtk", "reproduce", "calibrate"}
+    folders = {"export-vtk", "reproduce", "calibrate", "optimize"}
     for name, parser in commands().items():
         for action in parser._actions:
             if "--out" not in action.option_strings:

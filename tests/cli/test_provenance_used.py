@@ -33,9 +33,16 @@ def printed():
     return json.loads(buf.getvalue())
 
 
+#: What simulate --json prints beside the settings: the results and the swing (at rest here).
+RESULTS = ("cor", "apparent_cor", "ball_speed_out_m_s", "racket_speed_at_impact_m_s",
+           "contact_time_s", "rebound_speed_m_s", "peak_force_n")  # fmt: skip
+SWING = ("racket_butt_speed_m_s", "racket_angular_speed_rad_s", "pivot_m",
+         "racket_cg_speed_before_m_s", "racket_cg_speed_after_m_s",
+         "racket_angular_speed_after_rad_s")  # fmt: skip
+
+
 def used_keys(printed):
-    return {k: v for k, v in printed.items() if k not in ("cor", "contact_time_s",
-            "rebound_speed_m_s", "peak_force_n")}  # fmt: skip
+    return {k: v for k, v in printed.items() if k not in RESULTS + SWING}
 
 
 def test_simulate_json_prints_what_was_used(printed):

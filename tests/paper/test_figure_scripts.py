@@ -64,6 +64,12 @@ def test_bench_script_runs(capsys):
     assert "COR" in capsys.readouterr().out
 
 
+def test_bench_map_script_runs(capsys):
+    rows = load(SCRIPTS / "bench_map.py").main(["--quick"])
+    assert rows and all(r["wall_s"] > 0 for r in rows)
+    assert "racket_map" in capsys.readouterr().out
+
+
 def test_figure_script_refuses_to_overwrite(tmp_path, capsys):
     main = load(SCRIPTS / "fig04_frame_modes.py").main
     first = main(["--out", str(tmp_path)])

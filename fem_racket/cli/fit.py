@@ -1,0 +1,142 @@
+"""``fem-racket fit``: a racket frame from its catalogue numbers, written as a mesh file.
+
+``fem-racket fit --length 0.685 --mass 0.318 --balance 0.320 --swing-weight 316 --f1 150
+--out racket.vtu`` fits the three-segment frame of :mod:`fem_racket.frame.specs` (mass, balance
+and swing weight exact, f1 by scaling EI) and writes a mesh every ``--mesh`` option loads, with
+the targets, the fitted values and the provenance in the sidecar ``racket.vtu.json``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from fem_racket.cli.common import add_config_option, print_json, run_parameters, significant
+from fem_racket.frame.mesh import frame_mesh
+from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2, fit_racket, racket_spec
+from fem_racket.io.mesh_files import write_mesh
+from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
+from fem_racket.validation import InputError, check_integer
+
+#: Where the mesh goes unless --out is given.
+DEFAULT_OUTPUT = Path("output") / "racket.vtu"
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``fit`` command."""
+    p = sub.add_parser(
+        "fit",
+        help="a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
+        description="Fit a three-segment frame (handle 0-0.3 L, throat 0.3-0.6 L, head "
+        "0.6-1 L; EI with the paper's 0.88 step) to a racket's specification and write it as "
+        "a mesh file for --mesh. Example: fem-racket fit --length 0.685 --mass 0.318 "
+        "--balance 0.320 --swing-weight 316 --f1 150 --out racket.vtu",
+    )
+    g = p.add_argument_group("specification")
+    g.add_argument(
+        "--length",
+        type=float,
+        default=None,
+        metavar="M",
+        help="length L [m] (required; no default)",
+    )
+    g.add_argument(
+        "--mass", type=float, default=None, metavar="KG", help="mass [kg] (required; no default)"
+    )
+    g.add_argument(
+        "--balance",
+        type=float,
+        default=None,
+        metavar="M",
+        help="balance point from the butt [m] (required; no default)",
+    )
+    g.add_argument(
+        "--swing-weight",
+        type=float,
+        default=None,
+        metavar="KG_CM2",
+        help="moment of inertia about an axis 0.10 m from the butt [kg cm^2] (required; no "
+        "default)",
+    )
+    g.add_argument(
+        "--f1",
+        type=float,
+        default=None,
+        metavar="HZ",
+        help="first free-free bending frequency [Hz] (default: none, EI1 = 146 N m^2 kept)",
+    )
+    g.add_argument(
+        "--elements",
+        type=int,
+        default=DEFAULT_ELEMENTS,
+        metavar="N",
+        help=f"cells of the mesh written, on which f1 is matched (default {DEFAULT_ELEMENTS})",
+    )
+    o = p.add_argument_group("output")
+    o.add_argument(
+        "--out",
+        default=str(DEFAULT_OUTPUT),
+        metavar="FILE",
+        help=f"mesh file to write (.vtu recommended; default {DEFAULT_OUTPUT}); the "
+        "specification and provenance go to FILE.json",
+    )
+    o.add_argument(
+        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
+    )
+    o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
+    add_config_option(p, private=("out", "elements"))
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Fit, write the mesh and its sidecar, print targets against fitted values."""
+    elements = check_integer("elements", args.elements, minimum=3)
+    for name in ("length", "mass", "balance", "swing_weight"):
+        if getattr(args, name) is None:
+            flag = "--" + name.replace("_", "-")
+            raise InputError(f"{name} is required: give {flag} (or {name} in the run file's [fit])")
+    out = Path(args.out)
+    for f in (out, sidecar_path(out)):
+        check_output_path(f, overwrite=args.overwrite)
+    frame = fit_racket(
+        args.length,
+        args.mass,
+        args.balance,
+        args.swing_weight * KG_CM2,
+        args.f1,
+        elements=elements,
+    )
+    mesh = frame_mesh(frame, elements)
+    got = racket_spec(mesh).as_dict()
+    target = {
+        "length_m": args.length,
+        "mass_kg": args.mass,
+        "balance_m": args.balance,
+        "swing_weight_kg_cm2": args.swing_weight,
+        "f1_hz": args.f1,
+    }
+    segments = [
+        {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
+    ]
+    summary = {"target": target, "fitted": got, "segments": segments, "mesh": str(out)}
+    meta = provenance(run_parameters(args))
+    # the mesh and its sidecar as one set: both or neither
+    with atomic_outputs([out, sidecar_path(out)], overwrite=args.overwrite) as (tmp, side):
+        write_mesh(mesh, tmp, overwrite=True)
+        text = json.dumps({**meta, **summary}, indent=2, default=str)
+        side.write_text(text + "\n", encoding="utf-8")
+    if args.json:
+        print_json(summary)
+        return 0
+    print(f"{'':<22} {'target':>12} {'fitted':>12}")
+    for key in target:
+        want = "-" if target[key] is None else significant(target[key], 6)
+        print(f"{key:<22} {want:>12} {significant(got[key], 6):>12}")
+    for k, s in enumerate(segments):
+        print(
+            f"segment {k + 1}: {s['length_m']:.4f} m, EI {significant(s['ei_n_m2'], 5)} N m^2, "
+            f"rhoA {significant(s['rhoa_kg_m'], 5)} kg/m"
+        )
+    print(f"{'written':<22} {out}")
+    return 0

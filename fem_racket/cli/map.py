@@ -1,0 +1,214 @@
+"""``fem-racket map``: e_A and v_out along the frame, with sweet spots, for one or more rackets.
+
+Rackets: ``--preset standard rigid`` and/or ``--mesh A.vtu B.vtu`` (each option also repeatable);
+the paper's standard racket when neither is given. ``--out`` takes one or more files, the
+format from the suffix: .png (curves with the sweet spots marked), .nc (netCDF) and .csv (with a
+``.json`` sidecar); ``output/map.png`` by default. ``--json`` prints the sweet spots and curves.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from fem_racket.cli.common import (
+    add_config_option,
+    add_swing_options,
+    print_json,
+    run_parameters,
+    significant,
+)
+from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.segments import standard_frame
+from fem_racket.impact.engine import DEFAULT_TOLERANCE
+from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.io.config_keys import PRESETS
+from fem_racket.io.map_files import check_map_output, write_map
+from fem_racket.io.mesh_files import read_mesh
+from fem_racket.studies.grid import as_values
+from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
+
+#: Where the map goes unless --out is given.
+DEFAULT_OUTPUT = Path("output") / "map.png"
+
+
+class _Extend(argparse.Action):
+    """Collect the values of every use of the option (``--mesh A B --mesh C``)."""
+
+    def __call__(self, parser, namespace, values, option_string=None) -> None:  # noqa: D102
+        old = getattr(namespace, self.dest, None)
+        setattr(namespace, self.dest, (old if isinstance(old, list) else []) + list(values))
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``map`` command."""
+    p = sub.add_parser(
+        "map",
+        help="apparent COR and ball speed along the frame, with sweet spots",
+        description="e_A (the free racket's COR at the closing speed) and the ball's speed "
+        "after impact v_out = e_A v_in + (1 + e_A) v_r along the frame, for a ball speed and a "
+        "swing; sweet spots: centre of percussion (with --pivot), mode-1 node, max e_A, max "
+        "v_out, power region. Example: fem-racket map --speed 20 --racket-speed 25 --pivot 0.1",
+    )
+    r = p.add_argument_group("rackets (several are overlaid)")
+    r.add_argument(
+        "--preset",
+        action=_Extend,
+        nargs="+",
+        choices=sorted(PRESETS),
+        default=None,
+        help="the paper's stepped frame: standard (EI1 146 N m^2) or rigid (9999) (default: "
+        "standard when no --mesh is given)",
+    )
+    r.add_argument(
+        "--mesh",
+        action=_Extend,
+        nargs="+",
+        default=None,
+        metavar="FILE",
+        help="mesh file(s) with cell data EI [N m^2] and rhoA [kg/m], e.g. from fem-racket fit "
+        "(default: none)",
+    )
+    r.add_argument(
+        "--elements",
+        type=int,
+        default=20,
+        metavar="N",
+        help="beam elements of a preset (default 20)",
+    )
+    g = p.add_argument_group("impact")
+    g.add_argument(
+        "--speed",
+        type=float,
+        default=20.0,
+        metavar="M_S",
+        help="incoming ball speed [m/s] (default 20)",
+    )
+    start, stop, num = DEFAULT_POSITIONS
+    g.add_argument(
+        "--positions",
+        default=f"{start}:{stop}:{num}",
+        metavar="VALUES",
+        help=f"impact points x/L: start:stop:num or a comma list (default {start}:{stop}:{num})",
+    )
+    g.add_argument(
+        "--ball-mass", type=float, default=0.057, metavar="KG", help="m_B [kg] (default 0.057)"
+    )
+    g.add_argument(
+        "--kcb",
+        type=float,
+        default=None,
+        metavar="N_M",
+        help="K_CB [N/m] (default: from the closing speed)",
+    )
+    g.add_argument(
+        "--zeta", type=float, default=None, metavar="ZETA", help="damping ratio (default 0.0592)"
+    )
+    g.add_argument(
+        "--separation",
+        default="displacement",
+        choices=SEPARATION_EVENTS,
+        help="end of contact: spring deflection or force back to zero (default displacement)",
+    )
+    g.add_argument(
+        "--modes",
+        type=int,
+        default=DEFAULT_MODES,
+        metavar="N",
+        help=f"flexible modes kept (default {DEFAULT_MODES})",
+    )
+    g.add_argument(
+        "--tolerance",
+        type=float,
+        default=DEFAULT_TOLERANCE,
+        metavar="COR",
+        help="COR error the batched engine may make: modes far above the contact frequency "
+        f"become one residual mode (default {DEFAULT_TOLERANCE:g}; 0: every mode)",
+    )
+    add_swing_options(p)
+    o = p.add_argument_group("output")
+    o.add_argument(
+        "--power-fraction",
+        type=float,
+        default=DEFAULT_POWER_FRACTION,
+        metavar="F",
+        help="power region: v_out >= F x its maximum, 0 < F <= 1 (default 0.95)",
+    )
+    o.add_argument(
+        "--out",
+        nargs="+",
+        default=None,
+        metavar="FILE",
+        help=f"file(s) to write: .png, .nc, .csv (default {DEFAULT_OUTPUT})",
+    )
+    o.add_argument(
+        "--overwrite", action="store_true", help="replace existing output files (default: refuse)"
+    )
+    o.add_argument(
+        "--json",
+        action="store_true",
+        help="print sweet spots and curves as JSON (default: a table)",
+    )
+    add_config_option(p, private=("out", "mesh"))
+    p.set_defaults(func=run)
+
+
+def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
+    """(name, frame) of every racket the options name, presets first."""
+    out: list[tuple[str, Any]] = []
+    for name in args.preset or []:
+        out.append((name, standard_frame(PRESETS[name])))
+    for path in args.mesh or []:
+        out.append((Path(path).stem, read_mesh(path)))
+    return out or [("standard", standard_frame())]
+
+
+def run(args: argparse.Namespace) -> int:
+    """Map every racket, write the files and print the sweet spots."""
+    outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
+    for path in outs:
+        check_map_output(path, overwrite=args.overwrite)
+    positions = as_values("position", args.positions)
+    maps = [
+        racket_map(
+            FrameModel.build(frame, args.elements),
+            name=name,
+            speed=args.speed,
+            racket_speed=args.racket_speed,
+            reference=args.reference,
+            pivot=args.pivot,
+            positions=positions,
+            ball_mass=args.ball_mass,
+            kcb=args.kcb,
+            zeta=args.zeta,
+            separation=args.separation,
+            modes=args.modes,
+            power_fraction=args.power_fraction,
+            tolerance=args.tolerance,
+        )
+        for name, frame in _rackets(args)
+    ]
+    for path in outs:
+        write_map(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
+    if args.json:
+        objs = [m.summary() for m in maps]
+        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+        return 0
+    for m in maps:
+        s = m.spots
+        print(f"{m.name}")
+        rows = [
+            ("centre of percussion", s.cop),
+            ("mode-1 node", s.node),
+            ("max apparent COR", s.max_apparent_cor),
+            ("max ball speed", s.max_ball_speed),
+            ("power region start", s.power_region[0]),
+            ("power region end", s.power_region[1]),
+        ]
+        for label, value in rows:
+            text = "-" if value != value else significant(value, 4)
+            print(f"  {label:<26} {text:>10} x/L")
+    for path in outs:
+        print(f"{'written':<28} {path}")
+    return 0

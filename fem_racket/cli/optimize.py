@@ -1,0 +1,115 @@
+"""``fem-racket optimize``: search a racket design (stiffness and mass distribution, added
+masses) maximising the ball's rebound or speed over an impact zone, within a mass, balance,
+swing-weight and frequency budget; writes the optimum, its report, the history and figures."""
+
+from __future__ import annotations
+
+import argparse
+
+from fem_racket.cli.common import add_config_option, run_parameters
+from fem_racket.cli.design_options import add_design_options, add_run_options, problem_from_args
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``optimize`` command."""
+    from fem_racket.io.design_study import METHODS
+
+    p = sub.add_parser("optimize", help="optimum racket design (scipy, pymoo NSGA-II)")
+    add_design_options(p)
+    s = p.add_argument_group("solver")
+    s.add_argument(
+        "--method",
+        choices=METHODS,
+        default="SLSQP",
+        help="SLSQP or trust-constr (local, from the starting racket), "
+        "differential-evolution (global, then SLSQP), nsga2 (Pareto front of the "
+        "objectives) (default SLSQP)",
+    )
+    s.add_argument(
+        "--maxiter",
+        type=int,
+        default=100,
+        help="iterations (local) or generations (differential evolution) (default 100)",
+    )
+    s.add_argument(
+        "--popsize",
+        type=int,
+        default=10,
+        help="differential evolution: population per variable (default 10)",
+    )
+    s.add_argument("--pop-size", type=int, default=50, help="nsga2: population (default 50)")
+    s.add_argument("--generations", type=int, default=100, help="nsga2: generations (default 100)")
+    add_run_options(p)
+    g = p.add_argument_group("output")
+    g.add_argument(
+        "--out",
+        default="output/design",
+        metavar="DIR",
+        help="output folder: optimum.vtu, start.vtu, result.json, history.nc, PNGs "
+        "(default output/design); designs are kept in DIR.history/ until it is "
+        "written, so a rerun resumes",
+    )
+    g.add_argument("--overwrite", action="store_true", help="replace the output folder")
+    g.add_argument("--restart", action="store_true", help="discard DIR.history/ and start afresh")
+    g.add_argument(
+        "--progress",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="progress bar on stderr (default: when stderr is a terminal)",
+    )
+    p.add_argument("--json", action="store_true", help="print result.json's summary as JSON")
+    add_config_option(p, private=("out",))
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the study and print its summary."""
+    from fem_racket.cli.common import print_json
+    from fem_racket.io.design_study import run_optimization
+
+    problem = problem_from_args(args)
+    r = run_optimization(
+        problem,
+        method=args.method,
+        out=args.out,
+        overwrite=args.overwrite,
+        restart=args.restart,
+        backend=args.backend,
+        workers=args.workers,
+        scheduler=args.scheduler,
+        maxiter=args.maxiter,
+        popsize=args.popsize,
+        pop_size=args.pop_size,
+        generations=args.generations,
+        seed=args.seed,
+        progress=args.progress,
+        parameters=run_parameters(args),
+    )
+    summary = {
+        "objective_name": problem.objectives[0],
+        "objective": r.objective,
+        "start_objective": r.start_objective,
+        "variables": dict(zip(problem.names, map(float, r.x), strict=True)),
+        "constraints": r.constraints(),
+        "success": r.success,
+        "message": r.message,
+        "out": args.out,
+    }
+    if args.json:
+        print_json(summary)
+        return 0
+    name = problem.objectives[0]
+    print(f"{r.method}: {r.message}")
+    print(
+        f"{name:<24} {r.start_objective:>12.6g} -> {r.objective:.6g} "
+        f"({r.objective - r.start_objective:+.4g})"
+    )
+    for v, x, x0 in zip(problem.variables, r.x, r.x_start, strict=True):
+        print(f"{v.name + ' [' + v.unit + ']':<24} {x0:>12.6g} -> {x:.6g}")
+    for c in r.constraints():
+        ok = "ok" if c["holds"] else "VIOLATED"
+        print(f"{c['label']:<40} {c['value']:>12.6g} in [{c['low']:g}, {c['high']:g}] {ok}")
+    if r.pareto_f is not None:
+        print(f"Pareto front: {len(r.pareto_f)} designs (pareto.png, result.json)")
+    print(f"wrote {args.out}")
+    return 0

@@ -1,0 +1,75 @@
+"""``fem-racket sensitivity``: Sobol indices of a design objective to each design variable."""
+
+from __future__ import annotations
+
+import argparse
+
+from fem_racket.cli.common import add_config_option, run_parameters
+from fem_racket.cli.design_options import add_design_options, add_run_options, problem_from_args
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``sensitivity`` command."""
+    p = sub.add_parser("sensitivity", help="Sobol sensitivity of a design objective (SALib)")
+    add_design_options(p)
+    s = p.add_argument_group("sensitivity")
+    s.add_argument(
+        "--output",
+        default=None,
+        help="objective or quantity analysed (default: the first --objective)",
+    )
+    s.add_argument(
+        "--designs",
+        type=int,
+        default=10_000,
+        help="about this many designs, N (D + 2) with N a power of two (default 10000)",
+    )
+    add_run_options(p)
+    g = p.add_argument_group("output")
+    g.add_argument(
+        "--out",
+        default=None,
+        metavar="PNG",
+        help="PNG file: bar chart of the indices, PNG.json beside it (default: print only)",
+    )
+    g.add_argument("--overwrite", action="store_true", help="replace the output files")
+    g.add_argument(
+        "--progress",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="progress bar on stderr (default: when stderr is a terminal)",
+    )
+    p.add_argument("--json", action="store_true", help="print the indices as JSON")
+    add_config_option(p, private=("out",))
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Compute and print the indices."""
+    from fem_racket.cli.common import print_json
+    from fem_racket.io.design_study import run_sensitivity, sobol_json
+
+    s = run_sensitivity(
+        problem_from_args(args),
+        output=args.output,
+        designs=args.designs,
+        seed=args.seed,
+        out=args.out,
+        overwrite=args.overwrite,
+        backend=args.backend,
+        workers=args.workers,
+        scheduler=args.scheduler,
+        progress=args.progress,
+        parameters=run_parameters(args),
+    )
+    if args.json:
+        print_json(sobol_json(s))
+        return 0
+    print(
+        f"Sobol indices of {s.output} ({s.designs} designs; mean {s.mean:.6g}, "
+        f"std {s.std:.3g}; +- are 95 % confidence half-widths)"
+    )
+    print(s.table())
+    if args.out:
+        print(f"wrote {args.out}")
+    return 0

@@ -1,0 +1,210 @@
+"""The racket's motion before impact: a swing, and the ball speed it gives.
+
+A swinging racket moves as a rigid body before the impact: the point at x [m] from the butt
+moves towards the ball at ``s(x) = v + omega x`` (``v`` the butt's speed, ``omega`` the angular
+speed; positive towards the ball). Players give it as a racket speed V at a reference point
+x_ref (the string centre, 0.75 L by default) and a pivot P (the hand, 0.07-0.10 m from the butt,
+or the shoulder beyond the butt at P < 0): the racket turns about P, so
+``s(x) = V (x - P) / (x_ref - P)``; without a pivot it translates, ``s(x) = V``.
+
+The ball arrives at v_in; the impact point x_i moves at ``v_r = s(x_i)``. In the linear model the
+rigid swing, with the ball moving along with the contact point, is a free solution (rigid modes
+carry no strain and the spring stays at delta = 0), so the impact superposes on the stationary
+one at the closing speed v_in + v_r (Brody, Cross & Lindsey, *The Physics and Technology of
+Tennis*, 2002, ch. 11)::
+
+    v_out = e_A v_in + (1 + e_A) v_r
+
+with e_A the apparent coefficient of restitution: the COR of the stationary free racket struck
+at the closing speed (the COR every other command computes). The ball/string stiffness K_CB
+follows the closing speed (the speed at which ball and strings meet) unless given. The identity
+is exact for the linear law; the tests check it against a direct BDF/CVODE integration started
+from the swing's velocity field.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from fem_racket.frame.model import FrameModel
+from fem_racket.impact.system import CoupledSystem, Trajectory
+from fem_racket.validation import InputError, check_finite, check_range
+
+__all__ = [
+    "DEFAULT_REFERENCE",
+    "Swing",
+    "add_swing",
+    "ball_speed_out",
+    "closing_speed",
+    "racket_velocity",
+    "swing_setup",
+    "swing_summary",
+]
+
+#: Reference point of the racket speed, x/L (the string centre).
+DEFAULT_REFERENCE = 0.75
+
+
+@dataclass(frozen=True)
+class Swing:
+    """Rigid racket motion before impact: the point x [m] moves at v + omega x towards the ball.
+
+    Parameters
+    ----------
+    velocity : float
+        Speed of the butt (x = 0) towards the ball [m/s].
+    omega : float
+        Angular speed [rad/s], positive when the tip moves faster towards the ball.
+    """
+
+    velocity: float = 0.0
+    omega: float = 0.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "velocity", check_finite("velocity", self.velocity, "m/s"))
+        object.__setattr__(self, "omega", check_finite("omega", self.omega, "rad/s"))
+
+    @classmethod
+    def from_speed(
+        cls,
+        racket_speed: float,
+        length: float,
+        *,
+        reference: float = DEFAULT_REFERENCE,
+        pivot: float | None = None,
+    ) -> Swing:
+        """A swing given as a racket speed at a reference point, about an optional pivot.
+
+        Parameters
+        ----------
+        racket_speed : float
+            Speed of the reference point towards the ball [m/s].
+        length : float
+            Racket length L [m].
+        reference : float
+            Reference point, x/L in [0, 1].
+        pivot : float, optional
+            Pivot from the butt [m] (negative: beyond the butt, e.g. a shoulder); the racket
+            translates when None.
+        """
+        v = check_finite("racket_speed", racket_speed, "m/s")
+        ref = check_range("reference", reference, 0.0, 1.0, unit="x/L") * length
+        if pivot is None:
+            return cls(v, 0.0)
+        p = check_finite("pivot", pivot, "m")
+        if abs(ref - p) < 1e-9 * length:
+            raise InputError(
+                f"pivot = {pivot!r} m is not allowed: it is the reference point "
+                f"({ref:g} m), whose speed it would fix at zero"
+            )
+        omega = v / (ref - p)
+        return cls(-omega * p, omega)
+
+    def speed_at(self, x: float | np.ndarray) -> float | np.ndarray:
+        """Speed of the point(s) ``x`` [m] towards the ball [m/s]."""
+        out = self.velocity + self.omega * np.asarray(x, dtype=float)
+        return float(out) if out.ndim == 0 else out
+
+    def cg_motion(self, cg: float) -> tuple[float, float]:
+        """(v, omega) of the centre of gravity at ``cg`` [m] along the ball's travel: the
+        speed [m/s] and angular speed [rad/s] with the signs of the frame coordinates (a racket
+        swung towards the ball has both negative); the ``frame_velocity`` form of the general
+        integrator's moving racket."""
+        return -float(self.speed_at(cg)), -self.omega
+
+    @property
+    def pivot(self) -> float | None:
+        """The point of zero speed [m from the butt]; None for a translation."""
+        return None if self.omega == 0.0 else -self.velocity / self.omega
+
+    def summary(self) -> dict[str, Any]:
+        """JSON-ready, units in the keys."""
+        return {
+            "racket_butt_speed_m_s": self.velocity,
+            "racket_angular_speed_rad_s": self.omega,
+            "pivot_m": self.pivot,
+        }
+
+
+def closing_speed(speed: float, racket_speed: float) -> float:
+    """Speed at which ball and strings meet, v_in + v_r [m/s]; > 0 or an InputError."""
+    c = float(speed) + float(racket_speed)
+    if not c > 0.0:
+        raise InputError(
+            f"racket speed at the impact point = {racket_speed:g} m/s is not allowed with ball "
+            f"speed {speed:g} m/s: the two must close (v_in + v_r > 0)"
+        )
+    return c
+
+
+def ball_speed_out(apparent_cor: Any, speed: Any, racket_speed: Any) -> Any:
+    """v_out = e_A v_in + (1 + e_A) v_r [m/s] (Brody, Cross & Lindsey 2002, ch. 11).
+
+    Elementwise on arrays: apparent COR e_A, ball speed v_in and impact-point speed v_r [m/s].
+    """
+    e = np.asarray(apparent_cor)
+    return e * np.asarray(speed) + (1.0 + e) * np.asarray(racket_speed)
+
+
+def racket_velocity(model: FrameModel, qd: np.ndarray) -> tuple[float, float]:
+    """Rigid part of a frame velocity ``qd`` (Hermite DOF rates): the centre of gravity's speed
+    [m/s] and the angular speed [rad/s], from the frame's linear and angular momentum
+    (1^T M qd / M and (x - x_CG)^T M qd / I_CG), in the sign of ``qd``."""
+    fe, props = model.fe, model.props
+    v_cg = fe.rigid_motion(1.0, 0.0) @ (fe.M @ qd) / props.mass
+    omega = fe.rigid_motion(0.0, 1.0, about=props.cg) @ (fe.M @ qd) / props.inertia
+    return float(v_cg), float(omega)
+
+
+def swing_summary(
+    model: FrameModel, swing: Swing | None, after: tuple[float, float]
+) -> dict[str, Any]:
+    """The swing before and the racket's rigid motion ``after`` the impact, JSON-ready."""
+    before = (swing or Swing()).summary()
+    props = model.props
+    before["racket_cg_speed_before_m_s"] = float((swing or Swing()).speed_at(props.cg))
+    before["racket_cg_speed_after_m_s"] = after[0]
+    before["racket_angular_speed_after_rad_s"] = after[1]
+    return before
+
+
+def _frame_velocity(frame_map: np.ndarray | None, model: FrameModel, swing: Swing) -> np.ndarray:
+    """The swing's rigid velocity field in the frame coordinates of ``frame_map`` (positive
+    along the ball's travel, i.e. minus the speed towards the ball)."""
+    fe = model.fe
+    qd = fe.rigid_motion(-swing.velocity, -swing.omega)
+    if frame_map is None:
+        return qd
+    # Mass-normalised modes: eta' = Phi^T M q' (the rigid field lies in the rigid modes).
+    return frame_map.T @ (fe.M @ qd)
+
+
+def add_swing(
+    traj: Trajectory, frame_map: np.ndarray | None, model: FrameModel, swing: Swing, v_r: float
+) -> Trajectory:
+    """The stationary impact's trajectory (struck at the closing speed) plus the free rigid
+    swing: the ball moving with the impact point at -v_r, the frame with the swing's field."""
+    free = np.concatenate([[-v_r], _frame_velocity(frame_map, model, swing)])
+    return replace(traj, x=traj.x + np.multiply.outer(traj.t, free), v=traj.v + free)
+
+
+def swing_setup(
+    system: CoupledSystem, model: FrameModel, swing: Swing, x_impact: float, *, direct: bool
+) -> tuple[CoupledSystem, Callable[[Trajectory], Trajectory]]:
+    """The system to integrate for a swing, and the map from its trajectory to the lab's.
+
+    ``direct``: the racket starts with the swing's velocity field and the ball at its own
+    speed (every integrator that takes an initial state: BDF, CVODE). Otherwise the stationary
+    system at the closing speed, with the rigid swing added afterwards (superposition; the
+    exact closed form, which solves the stationary impact).
+    """
+    v_r = float(swing.speed_at(x_impact))
+    if direct:
+        w = _frame_velocity(system.frame_map, model, swing)
+        return replace(system, frame_velocity0=w), lambda traj: traj
+    moving = replace(system, speed=closing_speed(system.speed, v_r))
+    return moving, lambda traj: add_swing(traj, system.frame_map, model, swing, v_r)

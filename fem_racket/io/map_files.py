@@ -1,0 +1,240 @@
+"""Power-map outputs: netCDF (xarray), CSV (+ JSON sidecar) and a PNG plot with sweet spots.
+
+One file per call, the format from the suffix (:data:`MAP_SUFFIXES`); every file is written
+atomically and carries the provenance (:mod:`fem_racket.outputs`): netCDF global attributes, the
+CSV's sidecar ``<file>.json``, PNG text chunks. Several rackets share the position grid when
+they were mapped on the same one; the dataset's dimensions are (racket, position) and each
+sweet spot is an attribute holding one value per racket (NaN where undefined).
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from fem_racket.outputs import (
+    add_png_provenance,
+    atomic_output,
+    atomic_outputs,
+    check_output_path,
+    provenance,
+    sidecar_path,
+)
+from fem_racket.studies.racket_map import RacketMap
+from fem_racket.validation import InputError
+
+__all__ = ["MAP_SUFFIXES", "check_map_output", "map_dataset", "plot_map", "write_map"]
+
+#: Suffixes a map can be written to.
+MAP_SUFFIXES = (".nc", ".csv", ".png")
+#: Curves: attribute of RacketMap -> (variable name, units, description).
+CURVES = {
+    "apparent_cor": (
+        "apparent_cor",
+        "1",
+        "apparent COR e_A of the free racket at the closing speed",
+    ),
+    "ball_speed_out": ("ball_speed_out_m_s", "m/s", "ball speed after impact v_out"),
+    "racket_speed": ("racket_speed_at_impact_m_s", "m/s", "impact point's speed v_r before impact"),
+}
+#: Sweet spots: SweetSpots attribute -> attribute name (x/L).
+SPOTS = {
+    "cop": "cop_x_over_l",
+    "node": "node_x_over_l",
+    "max_apparent_cor": "max_apparent_cor_x_over_l",
+    "max_ball_speed": "max_ball_speed_x_over_l",
+}
+
+
+def check_map_output(path: str | os.PathLike, *, overwrite: bool = False) -> list[Path]:
+    """The files writing ``path`` makes (the CSV's sidecar too), checked before the work."""
+    path = Path(path)
+    if path.suffix.lower() not in MAP_SUFFIXES:
+        raise InputError(f"output = '{path}' is not allowed: must end in {', '.join(MAP_SUFFIXES)}")
+    files = [path, sidecar_path(path)] if path.suffix.lower() == ".csv" else [path]
+    return [check_output_path(f, overwrite=overwrite) for f in files]
+
+
+def _same_grid(maps: Sequence[RacketMap]) -> np.ndarray:
+    x = maps[0].positions
+    for m in maps[1:]:
+        if m.positions.shape != x.shape or not np.array_equal(m.positions, x):
+            raise InputError("maps = several position grids is not allowed: must share one grid")
+    return x
+
+
+def map_dataset(maps: Sequence[RacketMap], parameters: Mapping[str, Any] | None = None) -> Any:
+    """The maps as an :class:`xarray.Dataset` (dims racket, position), sweet spots as attributes."""
+    import xarray as xr
+
+    x = _same_grid(maps)
+    data = {
+        var: (
+            ("racket", "position"),
+            np.stack([getattr(m, attr) for m in maps]),
+            {"units": unit, "long_name": text},
+        )
+        for attr, (var, unit, text) in CURVES.items()
+    }
+    coords = {
+        "racket": ("racket", [m.name for m in maps]),
+        "position": ("position", x, {"units": "x/L", "long_name": "impact point from the butt"}),
+    }
+    attrs: dict[str, Any] = {
+        name: np.array([getattr(m.spots, attr) for m in maps], dtype=float)
+        for attr, name in SPOTS.items()
+    }
+    attrs["power_region_start_x_over_l"] = np.array([m.spots.power_region[0] for m in maps])
+    attrs["power_region_end_x_over_l"] = np.array([m.spots.power_region[1] for m in maps])
+    attrs["power_fraction"] = maps[0].spots.power_fraction
+    attrs["mode1_nodes_x_over_l"] = json.dumps([list(m.spots.mode1_nodes) for m in maps])
+    attrs["mode2_nodes_x_over_l"] = json.dumps([list(m.spots.mode2_nodes) for m in maps])
+    attrs["ball_speed_m_s"] = maps[0].speed
+    attrs["length_m"] = np.array([m.length for m in maps])
+    attrs["racket_butt_speed_m_s"] = np.array([m.swing.velocity for m in maps])
+    attrs["racket_angular_speed_rad_s"] = np.array([m.swing.omega for m in maps])
+    attrs["formula"] = "v_out = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11)"
+    prov = provenance(parameters)
+    attrs.update({k: v for k, v in prov.items() if k != "parameters"})
+    attrs["run_parameters"] = json.dumps(prov.get("parameters", {}), sort_keys=True, default=str)
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def plot_map(
+    maps: Sequence[RacketMap],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
+) -> Path:
+    """PNG: e_A (top) and v_out (bottom) along the frame, sweet spots marked and labelled."""
+    from matplotlib.figure import Figure  # no pyplot: no global state, ~0.2 s less to import
+
+    fig = Figure(figsize=(7.5, 7.0))
+    ax1, ax2 = fig.subplots(2, 1, sharex=True)
+    drawn: dict[str, list[float]] = {"mode-1 node": [], "COP": []}
+    for k, m in enumerate(maps):
+        c = f"C{k}"
+        s = m.spots
+        ax1.plot(m.positions, m.apparent_cor, color=c, label=m.name)
+        ax2.plot(m.positions, m.ball_speed_out, color=c, label=m.name)
+        ax2.axvspan(*s.power_region, color=c, alpha=0.12)
+        marks = [("mode-1 node", s.node, ":"), ("COP", s.cop, "--")]
+        for label, xv, style in marks:
+            if not np.isfinite(xv) or any(abs(xv - o) < 1e-3 for o in drawn[label]):
+                continue  # the same spot on an earlier racket: one line and label
+            drawn[label].append(xv)
+            for ax in (ax1, ax2):
+                ax.axvline(xv, color=c, ls=style, lw=1)
+            right = label == "COP"  # COP left of its line, the node right of its own
+            ax2.annotate(
+                f"{label} {xv:.3f}",
+                (xv, 0.02),
+                xycoords=("data", "axes fraction"),
+                xytext=(-3 if right else 3, 0),
+                textcoords="offset points",
+                rotation=90,
+                ha="right" if right else "left",
+                va="bottom",
+                color=c,
+                fontsize=8,
+            )
+        xe = s.max_apparent_cor
+        ye = np.interp(xe, m.positions, m.apparent_cor)
+        ax1.plot([xe], [ye], "o", color=c)
+        ax1.annotate(
+            f"max e_A {xe:.3f}",
+            (xe, ye),
+            xytext=(4, 4),
+            textcoords="offset points",
+            color=c,
+            fontsize=8,
+        )
+        if np.isfinite(s.max_ball_speed):
+            xv = s.max_ball_speed
+            yv = np.interp(xv, m.positions, m.ball_speed_out)
+            ax2.plot([xv], [yv], "s", color=c)
+            ax2.annotate(
+                f"max v_out {xv:.3f}",
+                (xv, yv),
+                xytext=(4, 4),
+                textcoords="offset points",
+                color=c,
+                fontsize=8,
+            )
+    pct = round(100 * maps[0].spots.power_fraction)
+    ax1.set_ylabel("apparent COR e_A [-]")
+    ax2.set_ylabel("ball speed out v_out [m/s]")
+    ax2.set_xlabel("impact point x/L from the butt [-]")
+    sw = maps[0].swing
+    if sw.omega != 0.0:
+        motion = f"racket turning at {sw.omega:.3g} rad/s about {sw.pivot:.3g} m from the butt"
+    else:
+        motion = f"racket moving at {sw.velocity:.3g} m/s" if sw.velocity else "racket at rest"
+    ax1.set_title(
+        f"ball at {maps[0].speed:g} m/s, {motion} ({maps[0].name})\n"
+        f"shaded: power region (v_out >= {pct} % of its max)",
+        fontsize=9,
+    )
+    ax1.legend(fontsize=8, loc="lower left")
+    for ax in (ax1, ax2):
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    path = Path(path)
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        fig.savefig(tmp, dpi=96, format="png")
+        add_png_provenance(tmp, provenance(parameters))
+    return path
+
+
+def _write_csv(
+    maps: Sequence[RacketMap], path: Path, overwrite: bool, parameters: Mapping[str, Any] | None
+) -> None:
+    cols = [
+        "racket",
+        "position [x/L]",
+        "apparent COR [-]",
+        "ball speed out [m/s]",
+        "racket speed at impact [m/s]",
+    ]
+    meta = provenance(parameters)
+    meta["sweet_spots"] = {m.name: m.summary(curves=False) for m in maps}
+    # the CSV and its provenance sidecar as one set: both or neither
+    with atomic_outputs([path, sidecar_path(path)], overwrite=overwrite) as (tmp, side):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            w = csv.writer(f)
+            w.writerow(cols)
+            for m in maps:
+                for row in zip(
+                    m.positions, m.apparent_cor, m.ball_speed_out, m.racket_speed, strict=True
+                ):
+                    w.writerow([m.name, *(repr(float(v)) for v in row)])
+        side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
+
+
+def write_map(
+    maps: Sequence[RacketMap],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
+) -> Path:
+    """Write the maps to ``path``: .nc (netCDF), .csv (+ ``<file>.json``) or .png."""
+    check_map_output(path, overwrite=overwrite)
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix == ".png":
+        return plot_map(maps, path, overwrite=overwrite, parameters=parameters)
+    if suffix == ".csv":
+        _write_csv(maps, path, overwrite, parameters)
+        return path
+    ds = map_dataset(maps, parameters)
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        ds.to_netcdf(tmp)
+    return path

@@ -1,0 +1,273 @@
+"""A racket design problem: variables with bounds, fixed quantities, impact zone, constraints.
+
+The racket is a stepped beam of fixed length L whose segments (between fixed boundaries x/L) each
+have a bending rigidity EI_k [N m^2] and mass per length rhoA_k [kg/m], plus optional masses added
+at chosen positions (strips, :mod:`fem_racket.masses`). Its full parameter vector is::
+
+    p = [EI_1 .. EI_n, rhoA_1 .. rhoA_n, m_1 .. m_a]
+
+Any subset of p is free (the design variables, each with bounds); the rest keeps the starting
+racket's values. With ``link_ei`` one variable "ei" is EI_1 and every EI_k keeps its starting ratio
+EI_k / EI_1 (the paper's Fig 13 varies EI1 with EI2 = 0.88 EI1 this way). EI variables are searched
+on a log scale. The starting racket by default is the paper's (Kawazoe & Kanda 1997, section 2.2)
+sampled on the segments.
+
+Constraints bound derived quantities (:data:`QUANTITIES`): total mass, balance point, swing weight
+about 0.10 m, first free-free frequency. Objectives (:data:`OBJECTIVES`, all maximised) average
+over the impact zone (:mod:`.zone`) and the ball speeds; see :mod:`.objectives`.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import (
+    DEFAULT_BALL_MASS,
+    KCB_SPEED_RANGE,
+    PAPER_CLAMPED_COR,
+    zeta_from_cor,
+)
+from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
+from fem_racket.frame.mesh import FrameMesh, frame_mesh
+from fem_racket.frame.segments import Frame, Segment
+from fem_racket.studies.design.swing import SwingModel, mass_quantities
+from fem_racket.studies.design.variables import OBJECTIVES, Constraint, Variable
+from fem_racket.studies.design.zone import ImpactZone, uniform_zone
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_finite,
+    check_integer,
+    check_range,
+)
+
+__all__ = ["DesignProblem"]
+
+
+@dataclass(frozen=True, eq=False)
+class DesignProblem:
+    """Everything a design study fixes, and its variables.
+
+    Attributes
+    ----------
+    segment_lengths : tuple of float
+        Lengths of the design segments [m], grip end first (their sum is L).
+    start : ndarray
+        The starting racket's full parameter vector (see the module docstring).
+    variables : tuple of Variable
+    mass_positions : tuple of float
+        Centres of the added masses x/L (one entry of p each).
+    mass_width : float
+        Width of each added mass's strip [m].
+    zone : ImpactZone
+    speeds : tuple of float
+        Incoming ball speeds [m/s]; objectives average over them with equal weights.
+    swing : SwingModel or None
+        The player's swing for ``ball_speed`` and ``power_region`` (None: a stationary racket).
+    constraints : tuple of Constraint
+    objectives : tuple of str
+        Names from :data:`OBJECTIVES`, maximised (the first one for single-objective solvers).
+    link_ei, link_rhoa : bool
+        One variable "ei" (or "rhoa") sets every EI (rhoA) keeping the starting ratios.
+    stiffness_cost : float
+        Subtracted from the objectives per N m^2 of EI_1 (a price on stiffness) [1/(N m^2)].
+    region : ndarray
+        Positions x/L over which the power region is measured.
+    power_fraction : float
+        The power region is where v_out >= this fraction of its maximum (e_A without a swing).
+    ball_mass, zeta : float
+        m_B [kg] and the ball/string damping ratio.
+    elements : int
+        Cells of each design's mesh (before the added masses' strip nodes).
+    modes : int or None
+        Flexible modes kept per impact (None: the engine's choice by ``tolerance``).
+    tolerance : float or None
+        COR tolerance of the impact engine (:mod:`fem_racket.impact.engine`; None: every mode).
+    """
+
+    segment_lengths: tuple[float, ...]
+    start: np.ndarray
+    variables: tuple[Variable, ...]
+    mass_positions: tuple[float, ...] = ()
+    mass_width: float = DEFAULT_WIDTH
+    zone: ImpactZone = field(default_factory=uniform_zone)
+    speeds: tuple[float, ...] = (20.0, 30.0, 40.0)
+    swing: SwingModel | None = None
+    constraints: tuple[Constraint, ...] = ()
+    objectives: tuple[str, ...] = ("cor",)
+    link_ei: bool = False
+    link_rhoa: bool = False
+    stiffness_cost: float = 0.0
+    region: np.ndarray = field(default_factory=lambda: np.linspace(0.5, 0.98, 25))
+    power_fraction: float = 0.9
+    ball_mass: float = DEFAULT_BALL_MASS
+    zeta: float = field(default_factory=lambda: zeta_from_cor(PAPER_CLAMPED_COR))
+    elements: int = 20
+    modes: int | None = None
+    tolerance: float | None = 1e-6
+
+    def __post_init__(self) -> None:
+        n = self.n_segments
+        if self.start.shape != (2 * n + len(self.mass_positions),):
+            raise InputError("design start vector does not match the segments and masses")
+        if not self.variables:
+            raise InputError("design variables: none given; vary at least one")
+        for name in self.objectives:
+            check_choice("objective", name, tuple(OBJECTIVES))
+        if not self.objectives:
+            raise InputError("design objectives: none given; name at least one")
+        check_range("power fraction", self.power_fraction, 0.0, 1.0, include_low=False)
+        check_integer("elements", self.elements, minimum=n)
+        if not self.speeds:
+            raise InputError("speeds = [] is not allowed: give at least one ball speed [m/s]")
+        for v in self.speeds:  # the K_CB law's range (fem_racket.contact.linear)
+            check_range("speed", v, KCB_SPEED_RANGE[0], KCB_SPEED_RANGE[1], unit="m/s")
+        check_finite("stiffness cost", self.stiffness_cost, "1/(N m^2)")
+        for v in self.variables:
+            floor = 0.0 if v.unit == "kg" else np.nextafter(0.0, 1.0)
+            if not (np.isfinite(v.low) and np.isfinite(v.high) and floor <= v.low < v.high):
+                raise InputError(
+                    f"{v.name} bounds = [{v.low}, {v.high}] {v.unit} are not allowed: need "
+                    f"{'0 <=' if floor == 0.0 else '0 <'} low < high, finite"
+                )
+        self.mesh(self.x_start)  # checks the added masses' positions and widths
+        if self.swing is not None and self.swing.reference_inertia is None:
+            object.__setattr__(self, "swing", replace(self.swing, reference_inertia=self._i0()))
+
+    # -- layout -----------------------------------------------------------------------------
+    @property
+    def n_segments(self) -> int:
+        """Number of design segments."""
+        return len(self.segment_lengths)
+
+    @property
+    def length(self) -> float:
+        """Frame length L [m]."""
+        return float(sum(self.segment_lengths))
+
+    @property
+    def names(self) -> list[str]:
+        """Variable names."""
+        return [v.name for v in self.variables]
+
+    @property
+    def n_var(self) -> int:
+        """Number of design variables."""
+        return len(self.variables)
+
+    @property
+    def lower(self) -> np.ndarray:
+        """Lower bounds [SI]."""
+        return np.array([v.low for v in self.variables])
+
+    @property
+    def upper(self) -> np.ndarray:
+        """Upper bounds [SI]."""
+        return np.array([v.high for v in self.variables])
+
+    @property
+    def x_start(self) -> np.ndarray:
+        """The starting racket's design variables, clipped into the bounds [SI]."""
+        x = self.start[[v.index for v in self.variables]]
+        return np.clip(x, self.lower, self.upper)
+
+    def to_unit(self, x: np.ndarray) -> np.ndarray:
+        """Design variables [SI], shape (..., n_var) -> unit box."""
+        x = np.asarray(x, dtype=float)
+        return np.stack([v.to_unit(x[..., k]) for k, v in enumerate(self.variables)], -1)
+
+    def from_unit(self, u: np.ndarray) -> np.ndarray:
+        """Unit box -> design variables [SI]."""
+        u = np.clip(np.asarray(u, dtype=float), 0.0, 1.0)
+        return np.stack([v.from_unit(u[..., k]) for k, v in enumerate(self.variables)], -1)
+
+    def parameters(self, x: np.ndarray) -> np.ndarray:
+        """Full parameter vector(s) p for design variables ``x`` (shape (..., n_var))."""
+        x = np.asarray(x, dtype=float)
+        p = np.broadcast_to(self.start, x.shape[:-1] + self.start.shape).copy()
+        n = self.n_segments
+        for k, v in enumerate(self.variables):
+            if v.name == "ei":
+                p[..., :n] = x[..., k, None] * self.start[:n] / self.start[0]
+            elif v.name == "rhoa":
+                p[..., n : 2 * n] = x[..., k, None] * self.start[n : 2 * n] / self.start[n]
+            else:
+                p[..., v.index] = x[..., k]
+        return p
+
+    def mesh(self, x: np.ndarray) -> FrameMesh:
+        """The racket of design variables ``x`` (one design) as a mesh."""
+        p = self.parameters(x)
+        n = self.n_segments
+        frame = Frame(
+            tuple(
+                Segment(h, float(p[k]), float(p[n + k])) for k, h in enumerate(self.segment_lengths)
+            )
+        )
+        masses = [
+            AddedMass(pos, float(m), self.mass_width)
+            for pos, m in zip(self.mass_positions, p[2 * n :], strict=True)
+        ]
+        return add_masses(frame_mesh(frame, self.elements), masses)
+
+    def stiffness(self, x: np.ndarray) -> np.ndarray:
+        """EI_1 of each design [N m^2] (priced by ``stiffness_cost``)."""
+        return self.parameters(x)[..., 0]
+
+    def _i0(self) -> float:
+        q = mass_quantities(self.mesh(self.x_start), self.swing.pivot)
+        return float(q["inertia_pivot"])
+
+    def describe(self) -> dict[str, Any]:
+        """A JSON-able description (provenance, history files)."""
+        return {
+            "segment_lengths_m": list(self.segment_lengths),
+            "start": self.start.tolist(),
+            "variables": [
+                {"name": v.name, "low": v.low, "high": v.high, "unit": v.unit, "log": v.log}
+                for v in self.variables
+            ],
+            "mass_positions_x_over_l": list(self.mass_positions),
+            "mass_width_m": self.mass_width,
+            "zone": {
+                "description": self.zone.description,
+                "positions_x_over_l": self.zone.positions.tolist(),
+                "weights": self.zone.weights.tolist(),
+            },
+            "speeds_m_s": list(self.speeds),
+            "swing": None
+            if self.swing is None
+            else {
+                "head_speed_m_s": self.swing.head_speed,
+                "reference_x_over_l": self.swing.reference,
+                "pivot_m": self.swing.pivot,
+                "exponent": self.swing.exponent,
+                "reference_inertia_kg_m2": self.swing.reference_inertia,
+            },
+            "constraints": [
+                {"name": c.name, "low": c.low, "high": c.high, "tolerance": c.tolerance}
+                for c in self.constraints
+            ],
+            "objectives": list(self.objectives),
+            "link_ei": self.link_ei,
+            "link_rhoa": self.link_rhoa,
+            "stiffness_cost_per_n_m2": self.stiffness_cost,
+            "region_x_over_l": self.region.tolist(),
+            "power_fraction": self.power_fraction,
+            "ball_mass_kg": self.ball_mass,
+            "zeta": self.zeta,
+            "elements": self.elements,
+            "modes": "by tolerance" if self.modes is None else self.modes,
+            "tolerance": self.tolerance,
+        }
+
+    @property
+    def digest(self) -> str:
+        """SHA-256 of :meth:`describe` (a history file belongs to one problem)."""
+        text = json.dumps(self.describe(), sort_keys=True, default=str)
+        return hashlib.sha256(text.encode()).hexdigest()

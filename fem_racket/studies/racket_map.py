@@ -1,0 +1,244 @@
+"""Power maps: the apparent COR e_A and the ball speed v_out along the frame, with sweet spots.
+
+For a racket, an incoming ball speed v_in and a swing (:class:`fem_racket.impact.swing.Swing`),
+every point x of a position grid is struck at the closing speed v_in + v_r(x) (v_r the speed of
+that point towards the ball), which sets K_CB through the speed law unless K_CB is given; the
+stationary free racket's COR there is e_A(x), and the ball leaves at
+v_out(x) = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11; exact for the linear
+law, :mod:`fem_racket.impact.swing`). Sweet spots: :mod:`fem_racket.studies.sweetspots`.
+
+:func:`apparent_cor_along` is the one place the impacts are solved: one call of the batched
+engine (:func:`fem_racket.impact.engine.impacts`) for the whole grid, frame modes computed once.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
+from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.segments import Frame
+from fem_racket.impact.engine import DEFAULT_TOLERANCE, impacts
+from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
+from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.studies.sweetspots import (
+    SweetSpots,
+    centre_of_percussion,
+    curve_maximum,
+    mode_node_positions,
+    power_region,
+)
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_integer,
+    check_positive,
+    check_range,
+)
+
+__all__ = ["DEFAULT_POSITIONS", "RacketMap", "apparent_cor_along", "racket_map"]
+
+#: Default grid: the string face from its throat end to the tip, x/L (start, stop, points).
+DEFAULT_POSITIONS = (0.5, 1.0, 200)
+#: Default fraction of the maximum v_out bounding the power region.
+DEFAULT_POWER_FRACTION = 0.95
+
+
+def apparent_cor_along(
+    model: FrameModel,
+    positions: np.ndarray,
+    speeds: np.ndarray,
+    *,
+    ball_mass: float = DEFAULT_BALL_MASS,
+    kcb: float | None = None,
+    zeta: float | None = None,
+    separation: str = "displacement",
+    modes: int | None = DEFAULT_MODES,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+) -> np.ndarray:
+    """e_A of the stationary free frame struck at each position (x/L) at each closing speed.
+
+    Parameters
+    ----------
+    model : FrameModel
+    positions : array of float
+        Impact points x/L.
+    speeds : array of float
+        Closing speed v_in + v_r at each point [m/s] (sets K_CB unless ``kcb`` is given).
+    ball_mass, kcb, zeta, separation, modes, tolerance
+        As for :func:`fem_racket.simulate` (``tolerance``: the batched engine's COR tolerance).
+
+    Returns
+    -------
+    ndarray
+        e_A = -v_B(t_c) / V_B0 at each point (NaN where the ball does not separate).
+    """
+    check_choice("separation", separation, SEPARATION_EVENTS)
+    x = np.atleast_1d(np.asarray(positions, dtype=float))
+    v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
+    batch = impacts(
+        model,
+        position=x,
+        speed=v,
+        kcb=kcb,
+        zeta=zeta,
+        ball_mass=ball_mass,
+        separation=separation,
+        tolerance=tolerance,
+        modes=modes,
+    )
+    return np.asarray(batch.cor, dtype=float).reshape(x.shape)
+
+
+@dataclass(frozen=True, eq=False)
+class RacketMap:
+    """e_A and v_out along one racket, with its sweet spots.
+
+    Attributes
+    ----------
+    name : str
+        Label of the racket.
+    positions : ndarray
+        Impact points x/L.
+    apparent_cor : ndarray
+        e_A at each point (at its closing speed).
+    ball_speed_out : ndarray
+        v_out [m/s].
+    racket_speed : ndarray
+        v_r, the point's speed towards the ball before impact [m/s].
+    speed : float
+        Incoming ball speed v_in [m/s].
+    swing : Swing
+    spots : SweetSpots
+    length : float
+        Racket length L [m].
+    """
+
+    name: str
+    positions: np.ndarray
+    apparent_cor: np.ndarray
+    ball_speed_out: np.ndarray
+    racket_speed: np.ndarray
+    speed: float
+    swing: Swing
+    spots: SweetSpots
+    length: float
+
+    def summary(self, curves: bool = True) -> dict[str, Any]:
+        """JSON-ready: sweet spots (x/L) and, with ``curves``, the curves; units in the keys."""
+        out: dict[str, Any] = {"racket": self.name, "length_m": self.length}
+        out.update(self.spots.summary())
+        out.update(self.swing.summary())
+        if curves:
+            out["curves"] = {
+                "position_x_over_l": self.positions.tolist(),
+                "apparent_cor": self.apparent_cor.tolist(),
+                "ball_speed_out_m_s": self.ball_speed_out.tolist(),
+                "racket_speed_at_impact_m_s": self.racket_speed.tolist(),
+            }
+        return out
+
+
+def _grid(positions: Any) -> np.ndarray:
+    if positions is None:
+        start, stop, num = DEFAULT_POSITIONS
+        return np.linspace(start, stop, num)
+    x = np.atleast_1d(np.asarray(positions, dtype=float))
+    if x.size < 3 or np.any(np.diff(x) <= 0.0):
+        raise InputError(
+            f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L"
+        )
+    for p in (x[0], x[-1]):
+        check_range("position", p, 0.0, 1.0, unit="x/L")
+    return x
+
+
+def racket_map(
+    frame: Frame | FrameMesh | FrameModel | None = None,
+    *,
+    name: str = "racket",
+    speed: float = 20.0,
+    racket_speed: float = 0.0,
+    reference: float = DEFAULT_REFERENCE,
+    pivot: float | None = None,
+    positions: Any = None,
+    ball_mass: float = DEFAULT_BALL_MASS,
+    kcb: float | None = None,
+    zeta: float | None = None,
+    separation: str = "displacement",
+    modes: int | None = DEFAULT_MODES,
+    elements: int = 20,
+    power_fraction: float = DEFAULT_POWER_FRACTION,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+) -> RacketMap:
+    """e_A and v_out along a racket, and its sweet spots.
+
+    Parameters
+    ----------
+    frame : Frame, FrameMesh or FrameModel, optional
+        The racket (the paper's standard one when None).
+    name : str
+        Its label in tables and plots.
+    speed : float
+        Incoming ball speed v_in [m/s].
+    racket_speed, reference, pivot
+        The swing: speed [m/s] of the point ``reference`` (x/L) towards the ball, turning
+        about ``pivot`` [m from the butt] or translating when None
+        (:meth:`Swing.from_speed`). ``pivot`` also sets the centre of percussion.
+    positions : array of float, optional
+        Impact points x/L (increasing, at least 3); :data:`DEFAULT_POSITIONS` when None.
+    ball_mass, kcb, zeta, separation, modes, elements, tolerance
+        As for :func:`fem_racket.simulate`.
+    power_fraction : float
+        The power region is where v_out >= power_fraction x its maximum.
+
+    Returns
+    -------
+    RacketMap
+    """
+    speed = check_positive("speed", speed, "m/s")
+    ball_mass = Ball(ball_mass).mass
+    check_range("power_fraction", power_fraction, 0.0, 1.0, include_low=False)
+    if modes is not None:
+        check_integer("modes", modes)
+    x = _grid(positions)
+    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
+    length = model.mesh.length
+    swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
+    v_r = swing.speed_at(x * length)
+    closing = np.array([closing_speed(speed, v) for v in v_r])
+    kwargs = dict(
+        ball_mass=ball_mass,
+        kcb=kcb,
+        zeta=zeta,
+        separation=separation,
+        modes=modes,
+        tolerance=tolerance,
+    )
+
+    def e_a(s: float) -> float:
+        v = closing_speed(speed, swing.speed_at(s * length))
+        return float(apparent_cor_along(model, [s], [v], **kwargs)[0])
+
+    def v_out(s: float) -> float:
+        return float(ball_speed_out(e_a(s), speed, swing.speed_at(s * length)))
+
+    e = apparent_cor_along(model, x, closing, **kwargs)
+    vo = ball_speed_out(e, speed, v_r)
+    nodes = mode_node_positions(model, 2)
+    swinging = swing.velocity != 0.0 or swing.omega != 0.0
+    spots = SweetSpots(
+        cop=np.nan if pivot is None else centre_of_percussion(model.props, pivot) / length,
+        mode1_nodes=tuple(float(n) for n in nodes[0]),
+        mode2_nodes=tuple(float(n) for n in nodes[1]) if len(nodes) > 1 else (),
+        node=float(nodes[0].max()) if nodes[0].size else np.nan,
+        max_apparent_cor=curve_maximum(x, e, e_a),
+        max_ball_speed=curve_maximum(x, vo, v_out) if swinging else np.nan,
+        power_region=power_region(x, vo, power_fraction),
+        power_fraction=power_fraction,
+    )
+    return RacketMap(name, x, e, vo, np.asarray(v_r, dtype=float), speed, swing, spots, length)

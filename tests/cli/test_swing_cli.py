@@ -1,0 +1,60 @@
+"""The swing options on the command line: --racket-speed, --reference, --pivot."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from fem_racket import simulate
+from fem_racket.cli import main
+from fem_racket.impact.swing import Swing
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_simulate_with_a_swing_is_the_library_call(capsys):
+    argv = ("simulate", "--racket-speed", "25", "--pivot", "0.08", "--position", "0.8")
+    code, out, _ = run(capsys, *argv, "--json")
+    assert code == 0
+    data = json.loads(out)
+    ref = simulate(position=0.8, swing=Swing.from_speed(25.0, 0.68, pivot=0.08), output_step=None)
+    assert data["ball_speed_out_m_s"] == ref.ball_speed_out
+    assert data["apparent_cor"] == ref.apparent_cor == data["cor"]
+    assert data["racket_speed_at_impact_m_s"] == ref.racket_speed_at_impact
+    assert data["pivot_m"] == pytest.approx(0.08, rel=1e-14)
+    code, out, _ = run(capsys, *argv)
+    assert "ball speed out" in out and "m/s" in out
+
+
+def test_a_racket_at_rest_reports_zero_racket_speed(capsys):
+    data = json.loads(run(capsys, "simulate", "--json")[1])
+    assert data["racket_speed_at_impact_m_s"] == 0.0
+    assert data["ball_speed_out_m_s"] == data["rebound_speed_m_s"]
+
+
+def test_swing_from_a_run_file(capsys, tmp_path):
+    f = tmp_path / "run.toml"
+    f.write_text("[impact]\nracket_speed_m_s = 25.0\npivot_m = 0.08\nposition_x_over_l = 0.8\n")
+    from_file = json.loads(run(capsys, "simulate", "--config", str(f), "--json")[1])
+    argv = ("simulate", "--racket-speed", "25", "--pivot", "0.08", "--position", "0.8", "--json")
+    assert from_file == json.loads(run(capsys, *argv)[1])
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (("--racket-speed", "-30"), "the two must close"),
+        (("--racket-speed", "10", "--pivot", "0.51"), "pivot = 0.51 m is not allowed"),
+        (("--reference", "1.5"), "reference = 1.5"),
+        (("--racket-speed", "nan"), "racket_speed = nan"),
+    ],
+)
+def test_bad_swing_is_one_line_exit_2(capsys, argv, message):
+    code, _, err = run(capsys, "simulate", *argv)
+    assert code == 2
+    assert message in err and len(err.strip().splitlines()) == 1
