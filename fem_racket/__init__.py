@@ -44,7 +44,8 @@ from fem_racket.impact.rigid import (
     rigid_impact_at,
 )
 from fem_racket.impact.setup import Impact
-from fem_racket.impact.simulate import ImpactResult, simulate
+from fem_racket.impact.result import ImpactResult
+from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.io.animate import render_animation
 from fem_racket.io.config import RunConfig, example_config, load_config, parse_config
