@@ -36,6 +36,7 @@ from fem_racket.impact.coupled import CoupledModes, coupled_modes
 from fem_racket.impact.engine import ImpactBatch, impacts, modal_impacts
 from fem_racket.impact.held import simulate_held
 from fem_racket.impact.integrators import SOLVERS, NoSeparationError
+from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.rigid import (
     ClampedImpact,
     RigidImpact,
@@ -44,7 +45,6 @@ from fem_racket.impact.rigid import (
     rigid_impact_at,
 )
 from fem_racket.impact.setup import Impact
-from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.io.animate import render_animation
