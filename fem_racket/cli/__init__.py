@@ -152,6 +152,11 @@ def _run(argv: Sequence[str] | None) -> int:
         return EXIT_FAULT
     except KeyboardInterrupt as exc:
         return _interrupted(exc, prog)
+    except Exception:
+        if received:  # the signal's exception became another on its way out (VTK's module
+            # loader turns one raised during `import pyvista` into an ImportError)
+            return _interrupted(received[0](), prog)
+        raise
 
 
 def _interrupted(exc: KeyboardInterrupt, prog: str) -> int:

@@ -190,3 +190,23 @@ def test_sigterm_and_sigint_leave_no_temporary(tmp_path, command):
         assert proc.returncode == code, err
         assert err.count("\n") == 1 and "interrupted by" in err and "Traceback" not in err
         assert list(tmp_path.iterdir()) == []
+
+
+def test_a_signal_turned_into_another_exception_still_ends_as_the_signal(monkeypatch, capsys):
+    # A SIGINT arriving during `import pyvista` reached the command as VTK's ImportError
+    # ("Failed to load vtkCommonMath"): a traceback and exit 1 where Ctrl-C means exit 130.
+    from fem_racket.cli import modes, signals
+
+    def interrupted_import(args):
+        signals.received.append(KeyboardInterrupt)  # what the handler records
+        raise ImportError("Failed to load vtkCommonMath")
+
+    monkeypatch.setattr(modes, "run", interrupted_import)
+    from fem_racket.cli import main
+
+    try:
+        assert main(["modes"]) == 130
+    finally:
+        signals.received.clear()
+    err = capsys.readouterr().err
+    assert err == "fem-racket modes: interrupted by SIGINT; no partial output is left\n"
