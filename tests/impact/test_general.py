@@ -83,22 +83,19 @@ def test_hunt_crossley_flores_cor():
     assert -out.ball_velocity[0] / 7.06 == pytest.approx(0.75, abs=0.02)
 
 
+def _cvode_reference(model, law):
+    """The reference run: CVODE (rtol 1e-11, atol 1e-14) at 0.75 L, 30 m/s, ends only."""
+    return solve_law_impact(
+        law, model, 0.75, 0.057, 30.0, solver="cvode", output_step=None, rtol=1e-11, atol=1e-14
+    )
+
+
 @pytest.mark.parametrize("name", LAWS)
 def test_general_matches_cvode(standard_model, name):
     # DESIGN section 3, round 2: CVODE is the reference path of every law; the general
     # integrator at its defaults is within the benchmark target 1e-5 (measured 5e-8 ... 8e-6)
     law = LAWS[name]
-    ref = solve_law_impact(
-        law,
-        standard_model,
-        0.75,
-        0.057,
-        30.0,
-        solver="cvode",
-        output_step=None,
-        rtol=1e-11,
-        atol=1e-14,
-    )
+    ref = _cvode_reference(standard_model, law)
     fast = solve_law_impact(law, standard_model, 0.75, 0.057, 30.0, output_step=None)
     assert fast.ball_velocity[-1] / 30.0 == pytest.approx(ref.ball_velocity[-1] / 30.0, abs=1e-5)
     assert fast.t[-1] == pytest.approx(ref.t[-1], rel=1e-5)
@@ -150,17 +147,7 @@ def test_converges_as_tolerance_tightens(standard_model, name):
     # against CVODE (rtol 1e-11): tightening steps and the mode cut-off beta together, the COR
     # error falls at every stage and ends below 2e-7 (measured 1e-11 ... 1.7e-7)
     law = LAWS[name]
-    ref = solve_law_impact(
-        law,
-        standard_model,
-        0.75,
-        0.057,
-        30.0,
-        solver="cvode",
-        output_step=None,
-        rtol=1e-11,
-        atol=1e-14,
-    )
+    ref = _cvode_reference(standard_model, law)
     rec = receptance(standard_model, 0.75, 0.057)
     err = [
         abs(solve_general(law, rec, 30.0, steps=s, beta=b).ball_velocity[0] - ref.ball_velocity[-1])
