@@ -106,6 +106,22 @@ def map_dataset(maps: Sequence[RacketMap], parameters: Mapping[str, Any] | None 
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
+def _mark_maximum(
+    ax: Any, x: float, xs: np.ndarray, ys: np.ndarray, marker: str, name: str, color: str
+) -> None:
+    """A marker at the curve (xs, ys) at ``x`` labelled ``max NAME x``."""
+    y = np.interp(x, xs, ys)
+    ax.plot([x], [y], marker, color=color)
+    ax.annotate(
+        f"max {name} {x:.3f}",
+        (x, y),
+        xytext=(4, 4),
+        textcoords="offset points",
+        color=color,
+        fontsize=8,
+    )
+
+
 def plot_map(
     maps: Sequence[RacketMap],
     path: str | os.PathLike,
@@ -145,29 +161,9 @@ def plot_map(
                 color=c,
                 fontsize=8,
             )
-        xe = s.max_apparent_cor
-        ye = np.interp(xe, m.positions, m.apparent_cor)
-        ax1.plot([xe], [ye], "o", color=c)
-        ax1.annotate(
-            f"max e_A {xe:.3f}",
-            (xe, ye),
-            xytext=(4, 4),
-            textcoords="offset points",
-            color=c,
-            fontsize=8,
-        )
+        _mark_maximum(ax1, s.max_apparent_cor, m.positions, m.apparent_cor, "o", "e_A", c)
         if np.isfinite(s.max_ball_speed):
-            xv = s.max_ball_speed
-            yv = np.interp(xv, m.positions, m.ball_speed_out)
-            ax2.plot([xv], [yv], "s", color=c)
-            ax2.annotate(
-                f"max v_out {xv:.3f}",
-                (xv, yv),
-                xytext=(4, 4),
-                textcoords="offset points",
-                color=c,
-                fontsize=8,
-            )
+            _mark_maximum(ax2, s.max_ball_speed, m.positions, m.ball_speed_out, "s", "v_out", c)
     pct = round(100 * maps[0].spots.power_fraction)
     ax1.set_ylabel("apparent COR e_A [-]")
     ax2.set_ylabel("ball speed out v_out [m/s]")
