@@ -15,6 +15,7 @@ general first-order form ``y' = A y``; the separation events are named parts of 
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -35,6 +36,7 @@ __all__ = [
     "SOLVERS",
     "NoSeparationError",
     "check_solver_settings",
+    "cvode_bdf",
     "get_solver",
     "solve_bdf",
     "solve_cvode",
@@ -98,6 +100,35 @@ def _trajectory(system: CoupledSystem, t: np.ndarray, y: np.ndarray, keep_all: b
     return Trajectory(np.asarray(t), y[:, :n].copy(), y[:, n:].copy(), peak)
 
 
+def cvode_bdf(
+    rhs: Callable[..., None],
+    jac: Callable[..., None],
+    events: Callable[..., None],
+    num_events: int,
+    *,
+    rtol: float,
+    atol: float,
+    max_num_steps: int,
+) -> Any:
+    """A scikit-sundae CVODE solver: BDF, the dense Jacobian ``jac``, root-found ``events``.
+
+    The callbacks take CVODE's in-place forms (``rhs(t, y, yp)``, ``jac(t, y, yp, JJ)``,
+    ``events(t, y, ev)``); ``events.terminal`` and ``events.direction`` are read by CVODE.
+    """
+    from sksundae.cvode import CVODE
+
+    return CVODE(
+        rhs,
+        method="BDF",
+        rtol=rtol,
+        atol=atol,
+        jacfn=jac,
+        eventsfn=events,
+        num_events=num_events,
+        max_num_steps=max_num_steps,
+    )
+
+
 def solve_cvode(
     system: CoupledSystem,
     *,
@@ -108,8 +139,6 @@ def solve_cvode(
     atol: float = 1e-12,
 ) -> Trajectory:
     """SUNDIALS CVODE (BDF) through scikit-sundae, dense constant Jacobian, root-found event."""
-    from sksundae.cvode import CVODE
-
     A, c, tspan, y0 = _bdf_setup(system, separation, output_step, t_max)
 
     def rhs(t: float, y: np.ndarray, yp: np.ndarray) -> None:
@@ -123,16 +152,7 @@ def solve_cvode(
 
     events.terminal = [True]
     events.direction = [-1]
-    solver = CVODE(
-        rhs,
-        method="BDF",
-        rtol=rtol,
-        atol=atol,
-        jacfn=jac,
-        eventsfn=events,
-        num_events=1,
-        max_num_steps=100000,
-    )
+    solver = cvode_bdf(rhs, jac, events, 1, rtol=rtol, atol=atol, max_num_steps=100000)
     sol = solver.solve(tspan, y0)
     if not sol.success:
         raise AccuracyError(f"solver = 'cvode' failed: {_one_line(sol.message)}")

@@ -77,8 +77,7 @@ def solve_law_cvode(
     output_step : float, optional
         Spacing of stored times [s]; by default 400 points per estimated contact time.
     """
-    from sksundae.cvode import CVODE
-
+    from fem_racket.impact.integrators import cvode_bdf
     from fem_racket.impact.system import no_separation
 
     n = omega.size + 1
@@ -154,16 +153,7 @@ def solve_law_cvode(
         span = np.arange(t0, t_max + 0.5 * step, step)
         if span.size < 2:
             raise no_separation(t_max)
-        solver = CVODE(
-            rhs,
-            method="BDF",
-            rtol=rtol,
-            atol=atol,
-            jacfn=jac,
-            eventsfn=events,
-            num_events=2,
-            max_num_steps=200000,
-        )
+        solver = cvode_bdf(rhs, jac, events, 2, rtol=rtol, atol=atol, max_num_steps=200000)
         sol = solver.solve(span, y0)
         if not sol.success:
             raise RuntimeError(f"CVODE failed: {sol.message}")
