@@ -8,14 +8,20 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from fem_racket.cli.common import add_frame_options, frame_from_args
+from fem_racket.cli.common import add_frame_options, frame_from_args, run_parameters
 from fem_racket.cli.lists import number_list
 from fem_racket.studies.design.build import ZONES, design_problem
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.variables import OBJECTIVES
 from fem_racket.studies.executors import BACKENDS
 
-__all__ = ["add_design_options", "add_run_options", "problem_from_args"]
+__all__ = [
+    "add_design_options",
+    "add_progress_option",
+    "add_run_options",
+    "problem_from_args",
+    "run_options",
+]
 
 #: Constraint options: dest -> (quantity, help).
 CONSTRAINTS = {
@@ -219,6 +225,29 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
         help="Dask scheduler tcp://HOST:PORT (default none)",
     )
     g.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
+
+
+def add_progress_option(group: argparse._ArgumentGroup) -> None:
+    """--progress / --no-progress, in the command's output group."""
+    group.add_argument(
+        "--progress",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="progress bar on stderr (default: when stderr is a terminal)",
+    )
+
+
+def run_options(args: argparse.Namespace) -> dict[str, Any]:
+    """Keywords of the design studies from the run and progress options: backend, workers,
+    scheduler, seed, progress and the run parameters (provenance)."""
+    return {
+        "backend": args.backend,
+        "workers": args.workers,
+        "scheduler": args.scheduler,
+        "seed": args.seed,
+        "progress": args.progress,
+        "parameters": run_parameters(args),
+    }
 
 
 def problem_from_args(args: argparse.Namespace) -> DesignProblem:

@@ -6,8 +6,14 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_config_option, run_parameters
-from fem_racket.cli.design_options import add_design_options, add_run_options, problem_from_args
+from fem_racket.cli.common import add_config_option
+from fem_racket.cli.design_options import (
+    add_design_options,
+    add_progress_option,
+    add_run_options,
+    problem_from_args,
+    run_options,
+)
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -51,12 +57,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     g.add_argument("--overwrite", action="store_true", help="replace the output folder")
     g.add_argument("--restart", action="store_true", help="discard DIR.history/ and start afresh")
-    g.add_argument(
-        "--progress",
-        action=argparse.BooleanOptionalAction,
-        default=None,
-        help="progress bar on stderr (default: when stderr is a terminal)",
-    )
+    add_progress_option(g)
     p.add_argument("--json", action="store_true", help="print result.json's summary as JSON")
     add_config_option(p, private=("out",))
     p.set_defaults(func=run)
@@ -74,16 +75,11 @@ def run(args: argparse.Namespace) -> int:
         out=args.out,
         overwrite=args.overwrite,
         restart=args.restart,
-        backend=args.backend,
-        workers=args.workers,
-        scheduler=args.scheduler,
         maxiter=args.maxiter,
         popsize=args.popsize,
         pop_size=args.pop_size,
         generations=args.generations,
-        seed=args.seed,
-        progress=args.progress,
-        parameters=run_parameters(args),
+        **run_options(args),
     )
     summary = {
         "objective_name": problem.objectives[0],

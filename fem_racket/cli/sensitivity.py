@@ -4,8 +4,14 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_config_option, run_parameters
-from fem_racket.cli.design_options import add_design_options, add_run_options, problem_from_args
+from fem_racket.cli.common import add_config_option
+from fem_racket.cli.design_options import (
+    add_design_options,
+    add_progress_option,
+    add_run_options,
+    problem_from_args,
+    run_options,
+)
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -33,12 +39,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="PNG file: bar chart of the indices, PNG.json beside it (default: print only)",
     )
     g.add_argument("--overwrite", action="store_true", help="replace the output files")
-    g.add_argument(
-        "--progress",
-        action=argparse.BooleanOptionalAction,
-        default=None,
-        help="progress bar on stderr (default: when stderr is a terminal)",
-    )
+    add_progress_option(g)
     p.add_argument("--json", action="store_true", help="print the indices as JSON")
     add_config_option(p, private=("out",))
     p.set_defaults(func=run)
@@ -53,14 +54,9 @@ def run(args: argparse.Namespace) -> int:
         problem_from_args(args),
         output=args.output,
         designs=args.designs,
-        seed=args.seed,
         out=args.out,
         overwrite=args.overwrite,
-        backend=args.backend,
-        workers=args.workers,
-        scheduler=args.scheduler,
-        progress=args.progress,
-        parameters=run_parameters(args),
+        **run_options(args),
     )
     if args.json:
         print_json(sobol_json(s))
