@@ -182,7 +182,8 @@ def _processes(
     bar: Any,
     workers: int,
 ) -> None:
-    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+    import queue
+    from concurrent.futures import ProcessPoolExecutor
 
     pool = ProcessPoolExecutor(
         max_workers=workers,
@@ -190,14 +191,25 @@ def _processes(
         initializer=_worker_init,
         initargs=(os.getpid(),),
     )
+    # Finished futures arrive on a queue, not through concurrent.futures.wait(): wait() takes
+    # every pending future's lock in a Python loop, and a signal landing inside that loop left
+    # some locks held by this thread for ever; the pool's manager thread then blocked on them
+    # and the interpreter hung at exit, joining it, after saying "interrupted".
+    finished: queue.SimpleQueue = queue.SimpleQueue()
     try:
-        pending = {pool.submit(work, c, **kwargs): c for c in chunks}
+        pending = {}
+        for c in chunks:
+            fut = pool.submit(work, c, **kwargs)
+            pending[fut] = c
+            fut.add_done_callback(finished.put)
         while pending:
-            finished, _ = wait(pending, return_when=FIRST_COMPLETED)
-            for fut in finished:
-                chunk = pending.pop(fut)
-                done(chunk, fut.result())
-                bar.update(len(chunk))
+            try:
+                fut = finished.get(timeout=1.0)  # a timeout: a signal is handled within 1 s
+            except queue.Empty:
+                continue
+            chunk = pending.pop(fut)
+            done(chunk, fut.result())
+            bar.update(len(chunk))
     except BaseException:
         _terminate(pool)
         raise
