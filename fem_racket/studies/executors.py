@@ -134,18 +134,25 @@ def _watch(parent: int) -> None:
 
 
 def _alive(pid: int) -> bool:
+    """Whether ``pid`` runs; a zombie (dead, not yet reaped: a caller killed by SIGKILL whose
+    own parent waits for our end of its stdout pipe first) counts as dead."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return False
     except PermissionError:
         return True
-    return True
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rsplit(b")", 1)[1].split()[0] != b"Z"
+    except (OSError, IndexError):  # no /proc (not Linux): kill(pid, 0) is all we know
+        return True
 
 
 def _terminate(pool: Any) -> None:
     """Stop a ProcessPoolExecutor now: cancel the chunks not started, kill the workers."""
     procs = list((getattr(pool, "_processes", None) or {}).values())  # shutdown forgets them
+    manager = getattr(pool, "_executor_manager_thread", None)
     pool.shutdown(wait=False, cancel_futures=True)
     for proc in procs:
         if proc.is_alive():
@@ -155,6 +162,11 @@ def _terminate(pool: Any) -> None:
         if proc.is_alive():
             proc.kill()
             proc.join(timeout=5)
+    # Its manager thread closes the pool's wake-up pipe as it ends; at exit concurrent.futures
+    # writes to that pipe (Python 3.11), and a thread still ending then printed "Exception
+    # ignored ... Bad file descriptor" after the command's line. Let it end first.
+    if manager is not None:
+        manager.join(timeout=10)
 
 
 def _pool_context() -> Any:
