@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import Any
 
-from fem_racket.outputs import record_interrupt
+from fem_racket.outputs import deferring, record_interrupt
 
 __all__ = [
     "GuardedStdout",
@@ -77,7 +77,8 @@ def signal_handlers() -> Iterator[None]:
         kind = Terminated if signum == signal.SIGTERM else KeyboardInterrupt
         record_interrupt(kind)
         received.append(kind)
-        raise kind()
+        if not deferring():  # else raised at the end of the deferred block
+            raise kind()
 
     old = {}
     try:

@@ -28,7 +28,13 @@ import numpy as np
 
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import ImpactSeries, field_name, impact_series
-from fem_racket.outputs import Target, atomic_outputs, check_targets, sidecar_path
+from fem_racket.outputs import (
+    Target,
+    atomic_outputs,
+    check_targets,
+    deferred_interrupts,
+    sidecar_path,
+)
 from fem_racket.progress import progress_bar
 from fem_racket.validation import InputError, check_range, show
 
@@ -84,9 +90,22 @@ def check_size(size: tuple[int, int]) -> tuple[int, int]:
     return w, h
 
 
-def _use_egl() -> None:
+def _renderer() -> tuple[Any, Any]:
+    """imageio and pyvista, VTK set to render offscreen with EGL.
+
+    Imported with interruptions deferred, before any temporary output is made: a signal in the
+    middle of VTK's import ended in an ImportError with a traceback, or a crash inside VTK that
+    left the temporaries behind (13 of 30 runs interrupted within 50 ms of the temporaries
+    appearing, before this).
+    """
     # DESIGN.md section 7: EGL renders offscreen without an X server and avoids the X warning.
     os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    with deferred_interrupts():
+        import imageio
+        import pyvista
+        import pyvista.plotting  # pyvista imports it on first use of pyvista.Plotter
+
+    return imageio, pyvista
 
 
 def _camera(pl: Any, series: ImpactSeries, size: tuple[int, int]) -> None:
@@ -135,9 +154,7 @@ def _render(
     caption: str,
     progress: bool | None = None,
 ) -> None:
-    _use_egl()
-    import imageio
-    import pyvista as pv
+    imageio, pv = _renderer()  # imported already (render_animation)
 
     cell = field in series.cell_fields
     values = (series.cell_fields if cell else series.point_fields)[field]
@@ -145,75 +162,78 @@ def _render(
     length = float(series.x[-1])
 
     gif = io.BytesIO() if path.suffix == ".gif" else None
-    pl = pv.Plotter(off_screen=True, window_size=list(size))
+    with deferred_interrupts():  # VTK calls back into Python: a signal waits for a frame's end
+        pl = pv.Plotter(off_screen=True, window_size=list(size))
     try:
-        pl.set_background(BACKGROUND)
-        pl.add_mesh(
-            pv.Line((0.0, 0.0, 0.0), (length, 0.0, 0.0)), color=REFERENCE_COLOUR, line_width=2
-        )
-        frame = series.frame_grid(0)
-        pl.add_mesh(
-            frame,
-            scalars=field,
-            preference="cell" if cell else "point",
-            cmap="coolwarm",
-            clim=(-vmax, vmax),
-            line_width=9,
-            render_lines_as_tubes=True,
-            scalar_bar_args={
-                "title": field,
-                "color": TEXT_COLOUR,
-                "fmt": "%.3g",
-                "n_labels": 5,
-                "vertical": True,
-                "position_x": 0.86,
-                "position_y": 0.14,
-                "width": 0.05,
-                "height": 0.62,
-                "title_font_size": 14,
-                "label_font_size": 12,
-            },
-        )
-        # The title sits above the bar; keep it clear of the top tick label.
-        pl.scalar_bars[field].SetVerticalTitleSeparation(int(0.04 * size[1]))
-        ball = series.ball_grid(0)
-        ball_points0 = np.array(ball.points)
-        pl.add_mesh(ball, color=BALL_COLOUR, smooth_shading=True, specular=0.3, scalars=None)
-        pl.add_point_labels(
-            np.array([[0.0, 0.0, 0.0], [length, 0.0, 0.0]]),
-            ["grip end", "tip"],
-            font_size=14,
-            text_color=TEXT_COLOUR,
-            shape=None,
-            show_points=False,
-            always_visible=True,
-        )
-        width, height = size
-        margin = max(8, int(0.015 * width))  # texts stand off the image's edges
-        scale_text = _text(pl, f"deflection \u00d7 {series.scale:g}", 12, margin, height)
-        scale_text.SetPosition(width - margin, height - margin)
-        scale_text.GetTextProperty().SetJustificationToRight()
-        _camera(pl, series, size)
-        if gif is not None:  # pyvista's open_gif settings, into memory (see the docstring)
-            pl.mwriter = imageio.get_writer(
-                gif, format=".gif", mode="I", loop=0, palettesize=256, subrectangles=False,
-                duration=1000.0 / fps,
-            )  # fmt: skip
-        else:
-            pl.open_movie(str(path), framerate=fps, quality=7, ffmpeg_log_level="quiet")
-        force = series.ball_fields["contact force [N]"]
-        time_text = _text(pl, "", 14, margin, height - margin)
-        caption_text = _text(pl, "", 10, margin, margin)
-        caption_text.GetTextProperty().SetVerticalJustificationToBottom()
+        with deferred_interrupts():
+            pl.set_background(BACKGROUND)
+            pl.add_mesh(
+                pv.Line((0.0, 0.0, 0.0), (length, 0.0, 0.0)), color=REFERENCE_COLOUR, line_width=2
+            )
+            frame = series.frame_grid(0)
+            pl.add_mesh(
+                frame,
+                scalars=field,
+                preference="cell" if cell else "point",
+                cmap="coolwarm",
+                clim=(-vmax, vmax),
+                line_width=9,
+                render_lines_as_tubes=True,
+                scalar_bar_args={
+                    "title": field,
+                    "color": TEXT_COLOUR,
+                    "fmt": "%.3g",
+                    "n_labels": 5,
+                    "vertical": True,
+                    "position_x": 0.86,
+                    "position_y": 0.14,
+                    "width": 0.05,
+                    "height": 0.62,
+                    "title_font_size": 14,
+                    "label_font_size": 12,
+                },
+            )
+            # The title sits above the bar; keep it clear of the top tick label.
+            pl.scalar_bars[field].SetVerticalTitleSeparation(int(0.04 * size[1]))
+            ball = series.ball_grid(0)
+            ball_points0 = np.array(ball.points)
+            pl.add_mesh(ball, color=BALL_COLOUR, smooth_shading=True, specular=0.3, scalars=None)
+            pl.add_point_labels(
+                np.array([[0.0, 0.0, 0.0], [length, 0.0, 0.0]]),
+                ["grip end", "tip"],
+                font_size=14,
+                text_color=TEXT_COLOUR,
+                shape=None,
+                show_points=False,
+                always_visible=True,
+            )
+            width, height = size
+            margin = max(8, int(0.015 * width))  # texts stand off the image's edges
+            scale_text = _text(pl, f"deflection \u00d7 {series.scale:g}", 12, margin, height)
+            scale_text.SetPosition(width - margin, height - margin)
+            scale_text.GetTextProperty().SetJustificationToRight()
+            _camera(pl, series, size)
+            if gif is not None:  # pyvista's open_gif settings, into memory (see the docstring)
+                pl.mwriter = imageio.get_writer(
+                    gif, format=".gif", mode="I", loop=0, palettesize=256, subrectangles=False,
+                    duration=1000.0 / fps,
+                )  # fmt: skip
+            else:
+                pl.open_movie(str(path), framerate=fps, quality=7, ffmpeg_log_level="quiet")
+            force = series.ball_fields["contact force [N]"]
+            time_text = _text(pl, "", 14, margin, height - margin)
+            caption_text = _text(pl, "", 10, margin, margin)
+            caption_text.GetTextProperty().SetVerticalJustificationToBottom()
         steps = progress_bar(range(series.n_steps), desc="animate", unit="frame", enabled=progress)
         for i in steps:
-            frame.points = series.frame_points(i)
-            target = frame.cell_data if cell else frame.point_data
-            target[field] = values[i]
-            ball.points = ball_points0 + (0.0, 0.0, series.ball_z[i] - series.ball_z[0])
-            time_text.SetInput(f"t = {series.t[i] * 1e3:5.3f} ms")
-            caption_text.SetInput(f"{caption}\ncontact force {force[i]:5.0f} N{_why(i, force)}")
-            pl.write_frame()
+            with deferred_interrupts():
+                frame.points = series.frame_points(i)
+                target = frame.cell_data if cell else frame.point_data
+                target[field] = values[i]
+                ball.points = ball_points0 + (0.0, 0.0, series.ball_z[i] - series.ball_z[0])
+                time_text.SetInput(f"t = {series.t[i] * 1e3:5.3f} ms")
+                caption_text.SetInput(f"{caption}\ncontact force {force[i]:5.0f} N{_why(i, force)}")
+                pl.write_frame()
     finally:
         pl.close()
     if gif is not None:
@@ -287,6 +307,7 @@ def render_animation(
         "time_s": series.t.tolist(),
     }
     meta = impact_provenance(result, {**settings, **(parameters or {})})
+    _renderer()  # before any temporary exists (see _renderer)
     with atomic_outputs(targets, overwrite=overwrite) as (tmp, tmp_json):
         _render(series, tmp, field=field, fps=fps, size=size, caption=caption, progress=progress)
         tmp_json.write_text(json.dumps(meta, indent=2) + "\n")

@@ -33,6 +33,8 @@ from fem_racket.outputs.atomic import (
     atomic_folder,
     atomic_output,
     atomic_outputs,
+    deferred_interrupts,
+    deferring,
     record_interrupt,
 )
 from fem_racket.outputs.checks import (
@@ -55,6 +57,8 @@ __all__ = [
     "check_output_path",
     "check_targets",
     "provenance",
+    "deferred_interrupts",
+    "deferring",
     "record_interrupt",
     "sidecar_path",
 ]

@@ -31,7 +31,14 @@ from fem_racket.outputs.checks import (
     refuse,
 )
 
-__all__ = ["atomic_folder", "atomic_output", "atomic_outputs", "record_interrupt"]
+__all__ = [
+    "atomic_folder",
+    "atomic_output",
+    "atomic_outputs",
+    "deferred_interrupts",
+    "deferring",
+    "record_interrupt",
+]
 
 log = logging.getLogger(__name__)
 
@@ -160,6 +167,31 @@ def record_interrupt(kind: type[BaseException] | None) -> None:
     :func:`atomic_outputs` raises ``kind`` instead of moving its outputs into place."""
     global _interrupted
     _interrupted = kind
+
+
+#: Depth of :func:`deferred_interrupts` blocks around the current code.
+_deferring = 0
+
+
+@contextmanager
+def deferred_interrupts() -> Iterator[None]:
+    """A block that a signal handler does not interrupt (see :func:`deferring`): an
+    interruption recorded meanwhile (:func:`record_interrupt`) is raised when it ends. For code
+    that cannot stop halfway: an import of a compiled library (VTK's, interrupted, fails later
+    with an ImportError or a crash) or Python called back from C++ (VTK logs the exception)."""
+    global _deferring
+    _deferring += 1
+    try:
+        yield
+    finally:
+        _deferring -= 1
+    if _deferring == 0 and _interrupted is not None:
+        raise _interrupted()
+
+
+def deferring() -> bool:
+    """True inside :func:`deferred_interrupts`: a signal handler should only record."""
+    return _deferring > 0
 
 
 def _commit(targets: Sequence[Target], temps: Sequence[Path], overwrite: bool) -> None:

@@ -134,18 +134,25 @@ def _watch(parent: int) -> None:
 
 
 def _alive(pid: int) -> bool:
+    """Whether ``pid`` runs; a zombie (dead, not yet reaped: a caller killed by SIGKILL whose
+    own parent waits for our end of its stdout pipe first) counts as dead."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return False
     except PermissionError:
         return True
-    return True
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rsplit(b")", 1)[1].split()[0] != b"Z"
+    except (OSError, IndexError):  # no /proc (not Linux): kill(pid, 0) is all we know
+        return True
 
 
 def _terminate(pool: Any) -> None:
     """Stop a ProcessPoolExecutor now: cancel the chunks not started, kill the workers."""
     procs = list((getattr(pool, "_processes", None) or {}).values())  # shutdown forgets them
+    manager = getattr(pool, "_executor_manager_thread", None)
     pool.shutdown(wait=False, cancel_futures=True)
     for proc in procs:
         if proc.is_alive():
@@ -155,6 +162,11 @@ def _terminate(pool: Any) -> None:
         if proc.is_alive():
             proc.kill()
             proc.join(timeout=5)
+    # Its manager thread closes the pool's wake-up pipe as it ends; at exit concurrent.futures
+    # writes to that pipe (Python 3.11), and a thread still ending then printed "Exception
+    # ignored ... Bad file descriptor" after the command's line. Let it end first.
+    if manager is not None:
+        manager.join(timeout=10)
 
 
 def _pool_context() -> Any:
@@ -182,7 +194,8 @@ def _processes(
     bar: Any,
     workers: int,
 ) -> None:
-    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+    import queue
+    from concurrent.futures import ProcessPoolExecutor
 
     pool = ProcessPoolExecutor(
         max_workers=workers,
@@ -190,14 +203,25 @@ def _processes(
         initializer=_worker_init,
         initargs=(os.getpid(),),
     )
+    # Finished futures arrive on a queue, not through concurrent.futures.wait(): wait() takes
+    # every pending future's lock in a Python loop, and a signal landing inside that loop left
+    # some locks held by this thread for ever; the pool's manager thread then blocked on them
+    # and the interpreter hung at exit, joining it, after saying "interrupted".
+    finished: queue.SimpleQueue = queue.SimpleQueue()
     try:
-        pending = {pool.submit(work, c, **kwargs): c for c in chunks}
+        pending = {}
+        for c in chunks:
+            fut = pool.submit(work, c, **kwargs)
+            pending[fut] = c
+            fut.add_done_callback(finished.put)
         while pending:
-            finished, _ = wait(pending, return_when=FIRST_COMPLETED)
-            for fut in finished:
-                chunk = pending.pop(fut)
-                done(chunk, fut.result())
-                bar.update(len(chunk))
+            try:
+                fut = finished.get(timeout=1.0)  # a timeout: a signal is handled within 1 s
+            except queue.Empty:
+                continue
+            chunk = pending.pop(fut)
+            done(chunk, fut.result())
+            bar.update(len(chunk))
     except BaseException:
         _terminate(pool)
         raise

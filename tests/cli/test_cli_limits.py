@@ -27,12 +27,12 @@ from fem_racket.frame.mesh import MAX_ELEMENTS
 )
 def test_limits_refused_at_once(capsys, tmp_path, monkeypatch, argv, message):
     monkeypatch.chdir(tmp_path)
-    t0 = time.perf_counter()
+    t0 = time.process_time()  # CPU seconds: other processes on the machine do not count
     assert main(argv) == 2
     assert not list(tmp_path.iterdir())  # refused before anything is written
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1 and "Traceback" not in err
-    assert time.perf_counter() - t0 < 2.0
+    assert time.process_time() - t0 < 2.0
 
 
 @pytest.mark.parametrize(

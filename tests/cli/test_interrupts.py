@@ -116,6 +116,39 @@ def test_interrupted_sweep_resumes_to_the_uninterrupted_result(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["s.nc", "whole.nc"]
 
 
+BUSY_POOL = """
+import os, signal, sys, threading
+import numpy as np
+from fem_racket.cli.signals import signal_handlers
+from fem_racket.studies.executors import run_chunks
+
+def done(chunk, values):
+    if chunk[0] == 200:  # the pool is running: SIGTERM while the parent waits on 20000 futures
+        threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGTERM)).start()
+
+if __name__ == "__main__":
+    try:
+        with signal_handlers():
+            chunks = [np.array([i]) for i in range(20000)]
+            run_chunks(np.negative, chunks, done, workers=2, progress=False)
+    except KeyboardInterrupt:
+        sys.exit(143)
+"""
+
+
+def test_sigterm_while_waiting_on_many_chunks_exits(tmp_path):
+    # Before: concurrent.futures.wait() took every pending future's lock in a loop; a signal
+    # inside it left locks held, the pool's manager thread blocked on one and the process hung
+    # at exit (about one run in two of this script; a pool sweep now and then).
+    (tmp_path / "run.py").write_text(BUSY_POOL)
+    proc = subprocess.Popen([sys.executable, "run.py"], cwd=tmp_path, env=_env())
+    try:
+        assert proc.wait(timeout=60) == 143
+    finally:
+        proc.kill()
+        proc.wait()
+
+
 def test_sigkill_of_a_pool_sweep_leaves_no_worker(tmp_path):
     proc = _start([*SWEEP, "--workers", "2", "--chunk-size", "20", "--out", "s.nc"], tmp_path)
     _wait_for(lambda: len(_children(proc.pid)) >= 2, "workers")

@@ -77,7 +77,7 @@ def test_every_returned_mode_passes_the_residual_check(monkeypatch):
 
 
 def test_element_limit_refused_at_once():
-    t0 = time.perf_counter()
+    t0 = time.process_time()  # CPU seconds: other processes on the machine do not count
     for n in (MAX_ELEMENTS + 1, 9223372036854775807):
         with pytest.raises(InputError, match=f"elements = {n} .*from 2 to {MAX_ELEMENTS}"):
             FrameModel.build(None, n)
@@ -85,7 +85,7 @@ def test_element_limit_refused_at_once():
     cells = np.ones(MAX_ELEMENTS + 1)
     with pytest.raises(InputError, match=f"{MAX_ELEMENTS + 1} cells .*at most {MAX_ELEMENTS}"):
         FrameMesh(points, 146.0 * cells, 0.7 * cells)
-    assert time.perf_counter() - t0 < 1.0
+    assert time.process_time() - t0 < 1.0
 
 
 def test_every_mode_of_a_large_mesh_refused():

@@ -93,10 +93,10 @@ def test_reproduce_refuses_a_file_it_did_not_write_before_computing(quick_run, c
     text = report.read_text()
     user = report.with_name("USER.md")
     user.write_text("# my notes\n")
-    t0 = time.perf_counter()
+    t0 = time.process_time()  # CPU seconds: other processes on the machine do not count
     code = main(["reproduce", "--out", str(out), "--report", str(user), "--quick"])
     assert code == 2
-    assert time.perf_counter() - t0 < 2.0  # refused up front, not after the work
+    assert time.process_time() - t0 < 2.0  # refused up front, not after the work
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "not a file fem-racket reproduce wrote" in err
     assert "--overwrite" in err and user.read_text() == "# my notes\n"

@@ -117,9 +117,9 @@ def test_cli_refine_json_contract(tmp_path, capsys):
     assert (tmp_path / "r.csv").read_text().startswith("family,elements,f1_hz")
     assert (tmp_path / "r.png").stat().st_size > 10_000
     # Outputs exist now: a second run refuses to replace them (before doing the work).
-    t0 = time.perf_counter()
+    t0 = time.process_time()  # CPU seconds: other processes on the machine do not count
     assert main(argv) == 2
-    assert time.perf_counter() - t0 < 1.0
+    assert time.process_time() - t0 < 1.0
     assert "already exists" in capsys.readouterr()[1]
 
 

@@ -16,12 +16,12 @@ from fem_racket.validation import InputError
 
 def test_huge_grids_refused_at_once():
     # Issue 12: a 1e8-point grid was accepted (7.9 GB after 2 minutes).
-    t0 = time.perf_counter()
+    t0 = time.process_time()  # CPU seconds: other processes on the machine do not count
     with pytest.raises(InputError, match="num must be an integer from 1 to 10000000"):
         sweep(position="0:1:100000000", progress=False)
     with pytest.raises(InputError, match=r"100000000 cases \(position 10000 x speed 10000\)"):
         sweep(position="0:1:10000", speed="10:40:10000", progress=False)
-    assert time.perf_counter() - t0 < 2.0
+    assert time.process_time() - t0 < 2.0
 
 
 def test_grid_memory_estimate_against_available_memory(monkeypatch):
