@@ -9,30 +9,19 @@ conserved without damping and balanced by the dashpot's work with it; -1 <= COR 
 finite contact time; the exact and CVODE integrators agree to 1e-6.
 
 The default profile is derandomized (the same examples every run, so CI is reproducible); run
-``HYPOTHESIS_PROFILE=explore python -m pytest tests/test_properties.py`` to search new ones.
+``HYPOTHESIS_PROFILE=explore python -m pytest tests/impact/test_properties.py`` to search new ones.
 """
 
 from __future__ import annotations
 
 import math
-import os
 
 import numpy as np
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import PROFILE, frames
 
-from fem_racket import Frame, FrameModel, Segment, simulate
-
-settings.register_profile(
-    "ci",
-    derandomize=True,
-    database=None,
-    deadline=None,
-    suppress_health_check=[HealthCheck.too_slow],
-)
-settings.register_profile("explore", deadline=None, max_examples=200)
-PROFILE = os.environ.get("HYPOTHESIS_PROFILE", "ci")
-settings.load_profile(PROFILE)
+from fem_racket import FrameModel, simulate
 
 
 def budget(n: int) -> settings:
@@ -41,18 +30,6 @@ def budget(n: int) -> settings:
 
 
 ELEMENTS = 20  # the paper's mesh
-
-
-@st.composite
-def frames(draw) -> Frame:
-    """1-5 segments with random shares of a 0.5-0.8 m frame, EI and rhoA in plausible ranges."""
-    n = draw(st.integers(1, 5))
-    length = draw(st.floats(0.5, 0.8))
-    shares = np.array([draw(st.floats(0.2, 1.0)) for _ in range(n)])
-    ei = [draw(st.floats(50.0, 3000.0)) for _ in range(n)]
-    rhoa = [draw(st.floats(0.2, 1.2)) for _ in range(n)]
-    lengths = length * shares / shares.sum()
-    return Frame(tuple(Segment(float(h), e, r) for h, e, r in zip(lengths, ei, rhoa, strict=True)))
 
 
 positions = st.floats(0.0, 1.0)
