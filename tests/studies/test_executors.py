@@ -1,0 +1,74 @@
+"""Every worker of a sweep runs its BLAS on one thread, whatever it was started with.
+
+On this 2-core machine two OpenBLAS threads make the small dense work of a case 2-4x slower
+(DESIGN §9), so :func:`fem_racket.studies.executors.run_chunks` pins BLAS in each pool worker and
+in each Dask task. The workers here are started with two BLAS threads on purpose, so the pin is
+what brings them to one.
+"""
+
+from __future__ import annotations
+
+import os
+
+import numpy as np
+import pytest
+
+from fem_racket.studies.executors import run_chunks
+
+
+def _blas_threads(chunk: np.ndarray) -> np.ndarray:
+    """The largest thread count of any BLAS library in this process, once per case."""
+    from threadpoolctl import threadpool_info
+
+    threads = max(i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas")
+    return np.full(len(chunk), threads)
+
+
+def _collect(backend: str, **options) -> np.ndarray:
+    seen: list[np.ndarray] = []
+    chunks = [np.arange(i, i + 2) for i in range(0, 6, 2)]
+    run_chunks(
+        _blas_threads, chunks, lambda c, r: seen.append(r), backend=backend, progress=False,
+        **options,
+    )
+    return np.concatenate(seen)
+
+
+needs_two_cores = pytest.mark.skipif(
+    (os.cpu_count() or 1) < 2, reason="OpenBLAS runs one thread on one core anyway"
+)
+
+
+@needs_two_cores
+def test_pool_workers_run_one_blas_thread(monkeypatch):
+    # Workers started by fork inherit this process's BLAS (pinned by other tests, or by the
+    # environment); forkserver/spawn workers read the environment: ask for two threads.
+    monkeypatch.setenv("OPENBLAS_NUM_THREADS", "2")
+    monkeypatch.setenv("OMP_NUM_THREADS", "2")
+    assert np.all(_collect("processes", workers=2) == 1)
+
+
+@needs_two_cores
+def test_dask_tasks_run_one_blas_thread(monkeypatch):
+    distributed = pytest.importorskip("distributed")
+    import dask
+
+    # Dask's nannies start workers with one thread unless the caller's environment says
+    # otherwise; say otherwise, in both places.
+    two = {"OMP_NUM_THREADS": 2, "MKL_NUM_THREADS": 2, "OPENBLAS_NUM_THREADS": 2}
+    for name, value in two.items():
+        monkeypatch.setenv(name, str(value))
+    with dask.config.set({"distributed.nanny.pre-spawn-environ": two}):
+        with distributed.LocalCluster(
+            n_workers=1,
+            threads_per_worker=1,
+            processes=True,
+            host="127.0.0.1",
+            dashboard_address=None,
+        ) as cluster:
+            with distributed.Client(cluster) as client:
+                # Without the pin the worker would use both threads: the test can fail.
+                before = client.submit(_blas_threads, np.arange(1), pure=False).result()
+                assert before[0] == 2
+            threads = _collect("dask", scheduler=cluster.scheduler_address)
+    assert np.all(threads == 1)
