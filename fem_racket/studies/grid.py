@@ -4,7 +4,9 @@ A sweepable parameter takes one value (held fixed) or several (a dimension of th
 On the command line the values are a number, a comma list (``20,30,40``) or
 ``start:stop:num`` with an optional ``:log`` (``50:3000:60:log``: 60 values evenly spaced in
 log between 50 and 3000, both ends included). The dimensions are named after the options and
-ordered as in :data:`PARAMETERS`; the flat case index runs over them in C order (last fastest).
+ordered as in :data:`PARAMETERS`, then the contact law's (:data:`LAW_PARAMETERS`, only those
+of the sweep's law family: :mod:`fem_racket.studies.law_axes`); the flat case index runs over
+them in C order (last fastest).
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS
 from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import (
@@ -36,6 +39,12 @@ from fem_racket.impact.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.studies.law_axes import (
+    LAW_DESCRIPTIONS,
+    case_law,
+    check_law_value,
+    sweep_law_values,
+)
 from fem_racket.studies.limits import MAX_CASES, check_grid_size
 from fem_racket.validation import (
     InputError,
@@ -48,7 +57,15 @@ from fem_racket.validation import (
     show,
 )
 
-__all__ = ["PARAMETERS", "Parameter", "SweepSpec", "as_values", "parse_values"]
+__all__ = [
+    "LAW_PARAMETERS",
+    "PARAMETERS",
+    "Parameter",
+    "SweepSpec",
+    "as_values",
+    "parameter",
+    "parse_values",
+]
 
 #: Reference grip-side rigidity of the standard racket [N m^2]; ei1 sweeps scale its modes.
 
@@ -79,8 +96,25 @@ PARAMETERS: dict[str, Parameter] = {
     "elements": Parameter("1", "number of beam elements", "elements"),
 }
 
+#: Sweepable parameters of the contact law families (a sweep holds those of its law's family):
+#: the attribute is the run file's [contact] key with ``contact_`` before it.
+LAW_PARAMETERS: dict[str, Parameter] = {
+    name: Parameter(
+        "1" if unit == "-" else unit, LAW_DESCRIPTIONS[name], "contact_" + FILE_KEYS[name]
+    )
+    for spec in FAMILY_PARAMETERS.values()
+    for name, (unit, _default) in spec.items()
+}
+
+
+def parameter(name: str) -> Parameter:
+    """The :class:`Parameter` called ``name`` (impact or law parameter)."""
+    return PARAMETERS[name] if name in PARAMETERS else LAW_PARAMETERS[name]
+
 
 def _check_value(name: str, value: object) -> float | int:
+    if name in LAW_PARAMETERS:
+        return check_law_value(name, value)
     unit = PARAMETERS[name].unit
     if name in ("position", "reference"):
         return check_range(name, value, 0.0, 1.0, unit=unit)
@@ -139,10 +173,9 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
 def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
     """Normalise a Python value of parameter ``name``: None (default), a number (fixed), a
     string (see :func:`parse_values`) or a sequence (swept; a 1-D array of distinct values)."""
-    if name not in PARAMETERS:
-        raise InputError(
-            f"parameter = {show(name)} is not allowed: must be one of {', '.join(PARAMETERS)}"
-        )
+    if name not in PARAMETERS and name not in LAW_PARAMETERS:
+        known = ", ".join([*PARAMETERS, *LAW_PARAMETERS])
+        raise InputError(f"parameter = {show(name)} is not allowed: must be one of {known}")
     if value is None:
         return None
     if isinstance(value, str):
@@ -179,7 +212,8 @@ class SweepSpec:
     Attributes
     ----------
     values : dict
-        Parameter name -> fixed value (number, or None for the default law) or a 1-D array.
+        Parameter name -> fixed value (number, or None for the default law) or a 1-D array;
+        with a law family, its parameters too (:data:`LAW_PARAMETERS`).
     frame : Frame, FrameMesh or None
         The racket (the standard one when None, whose EI1 is ``ei1``).
     ei2 : float or None
@@ -188,7 +222,8 @@ class SweepSpec:
         As for :func:`fem_racket.simulate`.
     law : ContactLaw or None
         A contact law other than the paper's (every case then runs the general integrator, or
-        CVODE); None: the paper's linear law from ``kcb`` and ``zeta``.
+        CVODE), its parameters overridden case by case by those in ``values``
+        (:meth:`case_law`); None: the paper's linear law from ``kcb`` and ``zeta``.
     tolerance : float or None
         COR tolerance of the batched engine (exact solver); None: every mode.
     peak_force : bool
@@ -211,9 +246,13 @@ class SweepSpec:
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
         """Validated spec from user values (numbers, strings, sequences); see
-        :func:`fem_racket.sweep` for the keywords."""
+        :func:`fem_racket.sweep` for the keywords (the law's parameters by their names in
+        :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
         values = {name: as_values(name, value) for name, value in raw.items()}
+        law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
+        for name, value in sweep_law_values(kwargs.get("law"), law_given).items():
+            values[name] = as_values(name, value)
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
         defaults.update(racket_speed=0.0, reference=DEFAULT_REFERENCE)
         defaults["ball_mass"] = DEFAULT_BALL_MASS
@@ -262,13 +301,6 @@ class SweepSpec:
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         if not isinstance(spec.peak_force, bool):
             raise InputError(f"peak_force = {spec.peak_force!r} is not allowed: must be a bool")
-        speeds = np.atleast_1d(spec.values["racket_speed"])
-        if spec.law is not None and np.any(speeds != 0.0):
-            raise InputError(
-                f"racket_speed = {show(float(speeds[speeds != 0.0][0]))} m/s is not allowed with "
-                f"contact law {spec.law.name!r} in a sweep: must be 0 (sweeps of a swinging "
-                "racket take the linear law; simulate takes a law with a swing)"
-            )
         return spec
 
     def _check_rigidity(self) -> None:
@@ -338,6 +370,11 @@ class SweepSpec:
             for (name, vals), i in zip(self.axes.items(), where, strict=True):
                 out[name] = vals[i]
         return out
+
+    def case_law(self, p: dict[str, Any], n: int | None = None) -> Any:
+        """The contact law of the case(s) with parameter values ``p`` (:meth:`case` or, with
+        ``n`` cases, :meth:`case_arrays`); None for the paper's linear law."""
+        return case_law(self.law, p, n)
 
     # -- identity --------------------------------------------------------------------------
     def describe(self) -> dict[str, Any]:
