@@ -104,8 +104,7 @@ def case_law(law: ContactLaw | None, values: Mapping[str, Any], n: int | None = 
     params = {k: values[k] for k in FAMILY_PARAMETERS[family]}
     if n is not None:
         params = {
-            k: np.broadcast_to(np.asarray(v, dtype=float), (n,)).copy()
-            for k, v in params.items()
+            k: np.broadcast_to(np.asarray(v, dtype=float), (n,)).copy() for k, v in params.items()
         }
     else:
         params = {k: float(v) for k, v in params.items()}
