@@ -152,3 +152,18 @@ def test_a_swing_under_a_law_with_cvode_cases_agrees_with_the_batch():
     assert float(one.cor) == pytest.approx(float(batch.cor), abs=GENERAL_COR)
     assert float(one.rebound_speed_m_s) == pytest.approx(float(batch.rebound_speed_m_s), abs=1e-4)
     assert float(one.racket_speed_at_impact_m_s) == float(batch.racket_speed_at_impact_m_s)
+
+
+def test_bench_law_studies_script_runs(capsys):
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[2] / "scripts" / "bench_law_studies.py"
+    spec = importlib.util.spec_from_file_location("bench_law_studies", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    rows = module.main(["--quick"])
+    assert all(r["wall_s"] > 0 for r in rows if "wall_s" in r)
+    # batched sweep and one simulate per case: the same impacts within the integrator's error
+    assert rows[-1]["value"] <= GENERAL_COR
+    assert "per impact" in capsys.readouterr().out
