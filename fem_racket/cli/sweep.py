@@ -120,7 +120,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=int,
         metavar="N",
         help="impacts per task and checkpoint file (default: about a quarter of each worker's "
-        "share, at most 32768 for exact and 4 for cvode/bdf)",
+        "share, at most 32768 for exact and 4 for cvode/bdf; 64 under a contact law)",
     )
     r.add_argument(
         "--peak-force",

@@ -34,9 +34,8 @@ def test_sweep_law_parameter_options_are_the_library_call(capsys, cwd):
     summary = json.loads(out)
     assert summary["dims"] == {"position": 2, "k2": 3}
     assert summary["contact_law"] == "hysteretic" and summary["solver"] == "general"
-    # the same chunks (a batch's step is its shortest contact's: chunks change results ~1e-6)
-    kw = dict(k2="6e16:1.2e17:3", position=[0.6, 0.8], speed=30.0, backend="serial")
-    ref = sweep(law="hysteretic", **kw)
+    # a process pool: the same batches as --serial (fixed chunks under a law)
+    ref = sweep(law="hysteretic", k2="6e16:1.2e17:3", position=[0.6, 0.8], speed=30.0, workers=2)
     with xr.open_dataset(cwd / "output" / "sweep.nc") as ds:
         np.testing.assert_array_equal(ds.cor.values, ref.cor.values)
         assert ds.k2.attrs["units"] == "N/m^n" and ds.attrs["contact_law"] == "hysteretic"

@@ -47,7 +47,9 @@ def test_a_law_parameter_sweep_is_simulate_at_each_value():
             assert float(case.rebound_speed_m_s) == pytest.approx(-r.rebound_velocity, abs=1e-4)
             # contact time converges more slowly than the COR (DESIGN section 9)
             assert float(case.contact_time_s) == pytest.approx(r.contact_time, rel=1e-4)
-            assert float(case.peak_force_n) == pytest.approx(r.peak_force, rel=1e-3)
+            # the peak force is the largest sample on the step the batch shares: the n = 8.9
+            # law's sharp peak moves it by ~1e-3
+            assert float(case.peak_force_n) == pytest.approx(r.peak_force, rel=3e-3)
     # a stiffer unloading branch returns less energy: e^2 = k1/k2 for linear branches (Cross 2000)
     assert np.all(np.diff(ds.cor.values, axis=1) < 0.0)
 
@@ -80,6 +82,15 @@ def test_a_law_object_takes_overrides_and_the_linear_law_is_unchanged():
     named = sweep(position=[0.6, 0.8], speed=[20.0, 30.0], law="linear", backend="serial")
     np.testing.assert_array_equal(lin.cor.values, named.cor.values)
     assert lin.attrs["contact_law"] == "linear" and lin.attrs["solver"] == "exact"
+
+
+def test_law_sweeps_give_the_same_numbers_on_every_backend():
+    # fixed chunks of 64 cases under a law (studies/sweep.py LAW_CHUNK): 70 cases, two batches
+    kw = dict(law=KAWAZOE, k2=np.geomspace(5e16, 1.5e17, 14), position="0.5:0.9:5", speed=25.0)
+    serial = sweep(**kw, backend="serial")
+    pool = sweep(**kw, backend="processes", workers=2)
+    np.testing.assert_array_equal(serial.cor.values, pool.cor.values)
+    assert np.all(np.isfinite(serial.cor.values))
 
 
 @pytest.mark.parametrize(
