@@ -34,10 +34,11 @@ from fem_racket.frame.segments import (
     check_ei_factor,
     check_stiffness,
     standard_ei1_range,
+    standard_frame,
 )
 from fem_racket.impact.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
-from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.law_axes import (
     LAW_DESCRIPTIONS,
@@ -297,6 +298,7 @@ class SweepSpec:
             spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
         )
         spec._check_rigidity()
+        spec._check_swings()
         check_grid_size(spec.shape, spec.dims)
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         if not isinstance(spec.peak_force, bool):
@@ -324,6 +326,23 @@ class SweepSpec:
         factors = np.atleast_1d(self.values["ei_factor"])
         for f in (float(np.min(factors)), float(np.max(factors))):
             check_ei_factor(f, ratio)
+
+    def _check_swings(self) -> None:
+        """Every swing of the grid valid (no pivot at its reference point) and closing on the
+        slowest ball at every impact point, so that no case fails on it mid-sweep."""
+        v = self.values
+        if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
+            return
+        frame = self.frame if self.frame is not None else standard_frame()
+        length = float(frame.length)
+        x = np.atleast_1d(v["position"]) * length
+        slowest = float(np.min(v["speed"]))
+        pivots = [None] if v["pivot"] is None else np.atleast_1d(v["pivot"]).tolist()
+        for speed in np.atleast_1d(v["racket_speed"]).tolist():
+            for ref in np.atleast_1d(v["reference"]).tolist():
+                for pivot in pivots:
+                    swing = Swing.from_speed(speed, length, reference=ref, pivot=pivot)
+                    closing_speed(slowest, float(np.min(swing.speed_at(x))))
 
     # -- the grid ----------------------------------------------------------------------------
     @cached_property

@@ -193,6 +193,16 @@ SWEEP_CASES = [
         {"run.toml": "[frame]\nsegments = [{length_m=0.7, ei_n_m2=150, rhoa_kg_m=0.5}]\n"},
     ),
     Case(
+        "sweep-racket-away-before-any-file",
+        sweep("--law", "hysteretic", "--racket-speed=-30,0", "--out", "x.nc"),
+        ("racket speed at the impact point = -30 m/s", "must close"),
+    ),
+    Case(
+        "sweep-pivot-at-reference",
+        sweep("--racket-speed", "10", "--pivot", "0,0.51", "--out", "x.nc"),
+        ("pivot = 0.51", "reference point"),
+    ),
+    Case(
         "sweep-law-parameter-range",
         sweep("--law", "hunt-crossley", "--hc-exponent", "0.5:2:3"),
         ("hc_exponent = 0.5", "[1, 20]"),
