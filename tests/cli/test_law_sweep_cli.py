@@ -101,3 +101,14 @@ def test_map_under_the_linear_law_is_today_s_map(capsys, cwd):
     assert code == 0, err
     today, linear = json.loads(out), json.loads(named)
     assert linear["curves"] == today["curves"] and linear["contact"] == {"law": "linear"}
+
+
+def test_map_takes_the_law_from_a_run_file(capsys, cwd):
+    (cwd / "run.toml").write_text(
+        '[contact]\nlaw = "hunt-crossley"\nhc_stiffness_n_m_n = 1e7\n'
+        '[map]\npositions = "0.5:1:5"\nout = ["r.nc"]\n'
+    )
+    code, out, err = run(capsys, "map", "--config", "run.toml", "--json")
+    assert code == 0, err
+    law = get_law("hunt-crossley", hc_stiffness=1e7)
+    assert json.loads(out)["contact"] == law.describe()
