@@ -15,8 +15,9 @@ from fem_racket.contact.presets import FAMILY_PARAMETERS, LAW_NAMES, get_law, la
 __all__ = ["add_law_options", "law_from_args"]
 
 
-def add_law_options(parser: argparse.ArgumentParser) -> None:
-    """--law and one option per family parameter (``--hc-alpha``, ``--k1`` ...)."""
+def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> None:
+    """--law and one option per family parameter (``--hc-alpha``, ``--k1`` ...); ``swept``:
+    each takes sweep values (a number, a comma list or start:stop:num[:log]) as text."""
     g = parser.add_argument_group("contact law")
     g.add_argument(
         "--law",
@@ -30,10 +31,11 @@ def add_law_options(parser: argparse.ArgumentParser) -> None:
             g.add_argument(
                 f"--{name.replace('_', '-')}",
                 dest=name,
-                type=float,
+                type=str if swept else float,
                 default=None,
-                metavar="X",
-                help=f"{family}: {name} [{unit}] (default {default:.4g})",
+                metavar="VALUES" if swept else "X",
+                help=f"{family}: {name} [{unit}]{', swept or fixed' if swept else ''} "
+                f"(default {default:.4g})",
             )
 
 

@@ -4,6 +4,7 @@ Rackets: ``--preset standard rigid`` and/or ``--mesh A.vtu B.vtu`` (each option 
 the paper's standard racket when neither is given. ``--out`` takes one or more files, the
 format from the suffix: .png (curves with the sweet spots marked), .nc (netCDF) and .csv (with a
 ``.json`` sidecar); ``output/map.png`` by default. ``--json`` prints the sweet spots and curves.
+``--law NAME`` (and its parameters) maps under another ball/string law than the paper's.
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
+from fem_racket.cli.laws import add_law_options, law_from_args
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.engine import DEFAULT_TOLERANCE
@@ -49,7 +51,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         description="e_A (the free racket's COR at the closing speed) and the ball's speed "
         "after impact v_out = e_A v_in + (1 + e_A) v_r along the frame, for a ball speed and a "
         "swing; sweet spots: centre of percussion (with --pivot), mode-1 node, max e_A, max "
-        "v_out, power region. Example: fem-racket map --speed 20 --racket-speed 25 --pivot 0.1",
+        "v_out, power region; under the paper's linear law or another (--law). Example: "
+        "fem-racket map --speed 20 --racket-speed 25 --pivot 0.1 --law kawazoe-1997-nonlinear",
     )
     r = p.add_argument_group("rackets (several are overlaid)")
     r.add_argument(
@@ -100,7 +103,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=float,
         default=None,
         metavar="N_M",
-        help="K_CB [N/m] (default: from the closing speed)",
+        help="K_CB [N/m] of the linear law (default: from the closing speed)",
     )
     g.add_argument(
         "--zeta", type=float, default=None, metavar="ZETA", help="damping ratio (default 0.0592)"
@@ -127,6 +130,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         f"become one residual mode (default {DEFAULT_TOLERANCE:g}; 0: every mode)",
     )
     add_swing_options(p)
+    add_law_options(p)
     o = p.add_argument_group("output")
     o.add_argument(
         "--power-fraction",
@@ -170,6 +174,7 @@ def run(args: argparse.Namespace) -> int:
     for path in outs:
         check_map_output(path, overwrite=args.overwrite)
     positions = as_values("position", args.positions)
+    law = law_from_args(args)
     maps = [
         racket_map(
             FrameModel.build(frame, args.elements),
@@ -186,6 +191,7 @@ def run(args: argparse.Namespace) -> int:
             modes=args.modes,
             power_fraction=args.power_fraction,
             tolerance=args.tolerance,
+            law=law,
         )
         for name, frame in _rackets(args)
     ]

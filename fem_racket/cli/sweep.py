@@ -1,6 +1,7 @@
 """``fem-racket sweep``: a grid of impacts -> one netCDF dataset (see :func:`fem_racket.sweep`).
 
-Each parameter option takes a number (fixed), a comma list or ``start:stop:num[:log]``.
+Each parameter option takes a number (fixed), a comma list or ``start:stop:num[:log]``; so do
+the contact law's (``--law hunt-crossley --hc-exponent 1.3:1.7:5``).
 """
 
 from __future__ import annotations
@@ -20,11 +21,12 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
 )
-from fem_racket.cli.laws import add_law_options, law_from_args
+from fem_racket.cli.laws import add_law_options
+from fem_racket.contact.presets import law_parameters
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame, standard_frame
-from fem_racket.studies.grid import PARAMETERS, as_values
+from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
 from fem_racket.studies.sweep import sweep
 from fem_racket.validation import InputError, show
 
@@ -70,7 +72,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="simulate a grid of impacts and save one netCDF dataset",
         description="Simulate every combination of the given values. Each parameter takes a "
         "number, a comma list (20,30,40) or start:stop:num with an optional :log "
-        "(50:3000:60:log). Example: fem-racket sweep --position 0.55:0.95:9 "
+        "(50:3000:60:log); so do the contact law's parameters (--law hunt-crossley "
+        "--hc-exponent 1.3:1.7:5). Example: fem-racket sweep --position 0.55:0.95:9 "
         "--speed 20,30,40 --ei1 50:3000:60:log --out fig13.nc",
     )
     g = p.add_argument_group("swept or fixed parameters")
@@ -83,7 +86,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="fixed top-side EI2 [N m^2] (default 0.88 EI1)",
     )
     add_mesh_option(g, replaces="replaces --ei1, --ei2 and --elements; scale it with --ei-factor")
-    add_law_options(p)
+    add_law_options(p, swept=True)
     add_solver_options(p, t_max=False)
     r = p.add_argument_group("execution and output")
     r.add_argument(
@@ -117,7 +120,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=int,
         metavar="N",
         help="impacts per task and checkpoint file (default: about a quarter of each worker's "
-        "share, at most 32768 for exact and 4 for cvode/bdf)",
+        "share, at most 32768 for exact and 4 for cvode/bdf; 64 under a contact law)",
     )
     r.add_argument(
         "--peak-force",
@@ -128,9 +131,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     r.add_argument("--json", action="store_true", help="print a JSON summary")
     add_config_option(
         p,
-        own=PARAMETERS,
+        own=[*PARAMETERS, *LAW_PARAMETERS],
         private=("out",),
-        convert={name: _grid_value for name in PARAMETERS},
+        convert={name: _grid_value for name in [*PARAMETERS, *LAW_PARAMETERS]},
     )
     p.set_defaults(func=run)
 
@@ -182,7 +185,7 @@ def run(args: argparse.Namespace) -> int:
         modes=args.modes,
         rtol=args.rtol,
         atol=args.atol,
-        law=law_from_args(args),
+        law=args.law,
         tolerance=args.tolerance,
         peak_force=args.peak_force,
         output=args.out,
@@ -194,6 +197,7 @@ def run(args: argparse.Namespace) -> int:
         chunk_size=args.chunk_size,
         progress=False if args.quiet else None,
         parameters=run_parameters(args),
+        **law_parameters(vars(args)),
     )
     wall = time.perf_counter() - start
     _note_modes(args, frame)
@@ -206,7 +210,8 @@ def run(args: argparse.Namespace) -> int:
         "impacts_per_s": n / wall if wall > 0 else None,
         "cor_min": float(ds.cor.min()),
         "cor_max": float(ds.cor.max()),
-        "solver": args.solver,
+        "solver": ds.attrs["solver"],
+        "contact_law": ds.attrs["contact_law"],
         "backend": ds.attrs["backend"],
     }
     if args.json:

@@ -28,7 +28,15 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.validation import InputError, check_choice, check_finite, show
 
-__all__ = ["FAMILY_PARAMETERS", "FILE_KEYS", "LAW_NAMES", "PRESETS", "get_law", "law_parameters"]
+__all__ = [
+    "FAMILY_PARAMETERS",
+    "FILE_KEYS",
+    "LAW_NAMES",
+    "PRESETS",
+    "family_law",
+    "get_law",
+    "law_parameters",
+]
 
 #: family -> {parameter (command-line dest): (unit, default)}.
 FAMILY_PARAMETERS: dict[str, dict[str, tuple[str, float]]] = {
@@ -114,3 +122,11 @@ def law_parameters(values: dict[str, Any]) -> dict[str, Any]:
     """The family parameters found in ``values`` (e.g. parsed options), None where not given."""
     names = {k for spec in FAMILY_PARAMETERS.values() for k in spec}
     return {k: values.get(k) for k in sorted(names)}
+
+
+def family_law(name: str, values: dict[str, Any]) -> ContactLaw:
+    """The law of family ``name`` from every one of its parameters (:data:`FAMILY_PARAMETERS`
+    keys): numbers, or arrays with one value per case for a batch (every law works
+    elementwise). Values are not checked here: check each one with :func:`get_law`."""
+    check_choice("law", name, tuple(FAMILY_PARAMETERS))
+    return _BUILD[name](values)

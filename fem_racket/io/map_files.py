@@ -4,7 +4,9 @@ One file per call, the format from the suffix (:data:`MAP_SUFFIXES`); every file
 atomically and carries the provenance (:mod:`fem_racket.outputs`): netCDF global attributes, the
 CSV's sidecar ``<file>.json``, PNG text chunks. Several rackets share the position grid when
 they were mapped on the same one; the dataset's dimensions are (racket, position) and each
-sweet spot is an attribute holding one value per racket (NaN where undefined).
+sweet spot is an attribute holding one value per racket (NaN where undefined). The contact law
+(shared by the rackets of one call) is recorded as ``contact_law`` and ``contact_<parameter>``
+attributes, in the CSV's sidecar and in the plot's title.
 """
 
 from __future__ import annotations
@@ -100,6 +102,7 @@ def map_dataset(maps: Sequence[RacketMap], parameters: Mapping[str, Any] | None 
     attrs["racket_butt_speed_m_s"] = np.array([m.swing.velocity for m in maps])
     attrs["racket_angular_speed_rad_s"] = np.array([m.swing.omega for m in maps])
     attrs["formula"] = "v_out = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11)"
+    attrs.update({f"contact_{k}": v for k, v in maps[0].law_summary().items()})
     prov = provenance(parameters)
     attrs.update({k: v for k, v in prov.items() if k != "parameters"})
     attrs["run_parameters"] = json.dumps(prov.get("parameters", {}), sort_keys=True, default=str)
@@ -173,8 +176,9 @@ def plot_map(
         motion = f"racket turning at {sw.omega:.3g} rad/s about {sw.pivot:.3g} m from the butt"
     else:
         motion = f"racket moving at {sw.velocity:.3g} m/s" if sw.velocity else "racket at rest"
+    law = maps[0].law_summary()["law"]
     ax1.set_title(
-        f"ball at {maps[0].speed:g} m/s, {motion} ({maps[0].name})\n"
+        f"ball at {maps[0].speed:g} m/s, {motion} ({maps[0].name}), {law} contact law\n"
         f"shaded: power region (v_out >= {pct} % of its max)",
         fontsize=9,
     )

@@ -7,13 +7,16 @@ free-free modes per mesh (``FrameModel``); EI changes that scale every segment r
 Exact solver: the batched engine (:func:`fem_racket.impact.engine.impacts`) on all the chunk's
 cases of one frame at once, to the sweep's COR tolerance; every case is solved at
 V_B0 = 1 m/s (the system is linear), so results do not depend on how cases are chunked.
-Another contact law: the chunk's cases batched per frame (:mod:`fem_racket.studies.law_cases`).
+Another contact law: the chunk's cases batched per frame, the law's parameters per case
+(:mod:`fem_racket.studies.law_cases`).
 BDF solvers: :func:`fem_racket.simulate` per case with 1 us output steps, the peak force being
 the largest over them.
 
 A swing (racket_speed, reference, pivot; :mod:`fem_racket.impact.swing`) enters through the
 closing speed v_in + v_r of each case, at which the stationary racket is struck (K_CB follows
-it), and the ball leaves at v_out = e_A v_in + (1 + e_A) v_r.
+it), and the ball leaves at v_out = e_A v_in + (1 + e_A) v_r; under any contact law too
+(:mod:`fem_racket.studies.law_cases` derives it). The BDF solvers start from the swing's
+velocity field instead.
 """
 
 from __future__ import annotations
@@ -29,10 +32,10 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
 from fem_racket.impact.engine import impacts
 from fem_racket.impact.simulate import simulate
-from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
+from fem_racket.impact.swing import ball_speed_out, closing_speed
 from fem_racket.impact.system import NoSeparationError
 from fem_racket.studies.grid import SweepSpec
-from fem_racket.studies.law_cases import law_chunk
+from fem_racket.studies.law_cases import case_swing, law_chunk
 from fem_racket.validation import AccuracyError
 
 __all__ = ["VARIABLES", "clear_caches", "result_variables", "run_chunk"]
@@ -119,21 +122,23 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     """The result values (in :data:`VARIABLES` order) of one case of a BDF solver."""
     speed, mass = p["speed"], p["ball_mass"]
     _, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
-    if spec.law is not None:  # any contact law: one impact by the general integrator (or CVODE)
+    swing = case_swing(p, model.mesh.length)
+    v_r = float(swing.speed_at(p["position"] * model.mesh.length))
+    if spec.law is not None:  # any contact law: one impact by CVODE, from the swing's motion
+        closing_speed(speed, v_r)  # ball and racket must close
         r = simulate(
             model,
             position=p["position"],
             speed=speed,
             ball_mass=mass,
-            law=spec.law,
+            law=spec.case_law(p),
             solver=spec.solver,
             output_step=None,
             rtol=spec.rtol,
             atol=spec.atol,
+            swing=swing if swing.velocity or swing.omega else None,
         )
-        return r.cor, r.contact_time, -r.rebound_velocity, r.peak_force, np.nan, 0.0
-    swing = _swing(p, model.mesh.length)
-    v_r = float(swing.speed_at(p["position"] * model.mesh.length))
+        return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, np.nan, v_r
     law = LinearContact.for_speed(closing_speed(speed, v_r), kcb=p["kcb"], zeta=p["zeta"])
     kcb, zeta = law.stiffness, law.zeta
     r = simulate(
@@ -155,11 +160,6 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r
 
 
-def _swing(p: dict[str, Any], length: float) -> Swing:
-    """The swing of one case (scalar parameter values) for a racket of ``length`` [m]."""
-    return Swing.from_speed(p["racket_speed"], length, reference=p["reference"], pivot=p["pivot"])
-
-
 def _racket_speeds(p: dict[str, Any], rows: np.ndarray, length: float) -> np.ndarray:
     """v_r [m/s] of the cases ``rows`` of ``case_arrays`` values ``p`` (swept or fixed)."""
     names = ("racket_speed", "reference", "pivot", "position")
@@ -171,7 +171,7 @@ def _racket_speeds(p: dict[str, Any], rows: np.ndarray, length: float) -> np.nda
     ]
     out = np.empty(rows.size)
     for i, (v, ref, piv, pos) in enumerate(zip(*cols, strict=True)):
-        swing = _swing({"racket_speed": v, "reference": ref, "pivot": piv}, length)
+        swing = case_swing({"racket_speed": v, "reference": ref, "pivot": piv}, length)
         out[i] = swing.speed_at(float(pos) * length)
     return out
 
@@ -256,6 +256,8 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     if spec.solver == "exact" and spec.law is None:
         return _engine_chunk(spec, np.asarray(chunk))
     out = np.empty((len(chunk), len(VARIABLES)))
+    # K_CB is NaN under another contact law than the paper's (it has none)
+    checked = [k for k, v in enumerate(VARIABLES) if spec.law is None or v != "kcb_n_m"]
     for row, index in enumerate(chunk):
         try:
             out[row] = _case(spec, spec.case(int(index)))
@@ -263,7 +265,7 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
             log.warning("case %d failed (NaN in the results): %s", index, exc)
             out[row] = np.nan
             continue
-        if not np.all(np.isfinite(out[row])):
+        if not np.all(np.isfinite(out[row, checked])):
             log.warning("case %d failed (NaN in the results): a result is not finite", index)
             out[row] = np.nan
     return out

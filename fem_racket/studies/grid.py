@@ -1,17 +1,16 @@
-"""Sweep grids: parameter values from text or Python, and the full sweep specification.
+"""Sweep grids: the full sweep specification and its cases.
 
-A sweepable parameter takes one value (held fixed) or several (a dimension of the sweep).
-On the command line the values are a number, a comma list (``20,30,40``) or
-``start:stop:num`` with an optional ``:log`` (``50:3000:60:log``: 60 values evenly spaced in
-log between 50 and 3000, both ends included). The dimensions are named after the options and
-ordered as in :data:`PARAMETERS`; the flat case index runs over them in C order (last fastest).
+Each parameter is fixed or swept (:mod:`fem_racket.studies.grid_values`, whose names this
+module also exports). The dimensions are named after the options and
+ordered as in :data:`PARAMETERS`, then the contact law's (:data:`LAW_PARAMETERS`, only those
+of the sweep's law family: :mod:`fem_racket.studies.law_axes`); the flat case index runs over
+them in C order (last fastest).
 """
 
 from __future__ import annotations
 
 import hashlib
 import json
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
@@ -20,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh
+from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import (
     EI_RATIO,
@@ -31,131 +30,40 @@ from fem_racket.frame.segments import (
     check_ei_factor,
     check_stiffness,
     standard_ei1_range,
+    standard_frame,
 )
 from fem_racket.impact.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
-from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.studies.limits import MAX_CASES, check_grid_size
+from fem_racket.studies.grid_values import (
+    LAW_PARAMETERS,
+    PARAMETERS,
+    Parameter,
+    as_values,
+    parameter,
+    parse_values,
+)
+from fem_racket.studies.law_axes import case_law, sweep_law_values
+from fem_racket.studies.limits import check_grid_size
 from fem_racket.validation import (
     InputError,
     check_choice,
-    check_elements,
-    check_finite,
     check_integer,
     check_positive,
     check_range,
     show,
 )
 
-__all__ = ["PARAMETERS", "Parameter", "SweepSpec", "as_values", "parse_values"]
-
-#: Reference grip-side rigidity of the standard racket [N m^2]; ei1 sweeps scale its modes.
-
-
-@dataclass(frozen=True)
-class Parameter:
-    """A sweepable parameter: unit, description and attribute name (with its unit)."""
-
-    unit: str
-    description: str
-    attribute: str
-
-
-#: Sweepable parameters in dimension order.
-PARAMETERS: dict[str, Parameter] = {
-    "position": Parameter("x/L", "impact point from the grip end", "position_x_over_l"),
-    "speed": Parameter("m/s", "incident ball speed", "speed_m_s"),
-    "racket_speed": Parameter(
-        "m/s", "racket speed towards the ball at the reference point", "racket_speed_m_s"
-    ),
-    "reference": Parameter("x/L", "point whose speed racket_speed gives", "reference_x_over_l"),
-    "pivot": Parameter("m", "pivot of the swing from the butt (none: translation)", "pivot_m"),
-    "ei1": Parameter("N m^2", "grip-side bending rigidity EI1 (EI2 = 0.88 EI1)", "ei1_n_m2"),
-    "ei_factor": Parameter("1", "factor on every segment's EI", "ei_factor"),
-    "ball_mass": Parameter("kg", "ball mass m_B", "ball_mass_kg"),
-    "zeta": Parameter("1", "ball/string damping ratio", "zeta"),
-    "kcb": Parameter("N/m", "ball/string stiffness K_CB", "kcb_n_m"),
-    "elements": Parameter("1", "number of beam elements", "elements"),
-}
-
-
-def _check_value(name: str, value: object) -> float | int:
-    unit = PARAMETERS[name].unit
-    if name in ("position", "reference"):
-        return check_range(name, value, 0.0, 1.0, unit=unit)
-    if name in ("racket_speed", "pivot"):  # any sign: towards/away, beyond the butt
-        return check_finite(name, value, unit)
-    if name == "zeta":
-        return check_range(name, value, 0.0, 1.0, include_high=False)
-    if name == "elements":
-        return check_elements(value, 2, MAX_ELEMENTS)  # the words of simulate's --elements
-    return check_positive(name, value, "" if unit == "1" else unit)
-
-
-def parse_values(name: str, text: str) -> float | np.ndarray:
-    """Values of parameter ``name`` from ``text``: one number (fixed), a comma list, or
-    ``start:stop:num[:log]`` (a swept dimension).
-
-    Raises :class:`InputError` with a one-line message on malformed text or bad values.
-    """
-    text = str(text).strip()
-    form = "a number, a comma list or start:stop:num[:log]"
-    if ":" in text:
-        parts = [p.strip() for p in text.split(":")]
-        log = parts[-1].lower() == "log"
-        if log:
-            parts = parts[:-1]
-        if len(parts) != 3:
-            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}")
-        try:
-            start, stop, num = float(parts[0]), float(parts[1]), float(parts[2])
-        except ValueError:
-            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
-        if not (num.is_integer() and 1 <= num <= MAX_CASES):
-            raise InputError(
-                f"{name} = {show(text)} is not allowed: num must be an integer from 1 to "
-                f"{MAX_CASES}"
-            )
-        if not (math.isfinite(start) and math.isfinite(stop)):
-            raise InputError(f"{name} = {show(text)} is not allowed: start and stop must be finite")
-        if log and (start <= 0.0 or stop <= 0.0):
-            raise InputError(
-                f"{name} = {show(text)} is not allowed: log spacing needs start, stop > 0"
-            )
-        values = (np.geomspace if log else np.linspace)(start, stop, int(num))
-        if log:  # geomspace ends are exact in recent numpy; make sure
-            values[0], values[-1] = start, stop
-        return as_values(name, values)
-    try:
-        numbers = [float(v) for v in text.split(",")]
-    except ValueError:
-        raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
-    if len(numbers) == 1:
-        return as_values(name, numbers[0])
-    return as_values(name, numbers)
-
-
-def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
-    """Normalise a Python value of parameter ``name``: None (default), a number (fixed), a
-    string (see :func:`parse_values`) or a sequence (swept; a 1-D array of distinct values)."""
-    if name not in PARAMETERS:
-        raise InputError(
-            f"parameter = {show(name)} is not allowed: must be one of {', '.join(PARAMETERS)}"
-        )
-    if value is None:
-        return None
-    if isinstance(value, str):
-        return parse_values(name, value)
-    if np.ndim(value) == 0:
-        return _check_value(name, value)
-    if np.ndim(value) != 1 or len(value) == 0:
-        raise InputError(f"{name} = {show(value)} is not allowed: must be a number or a 1-D list")
-    checked = [_check_value(name, v) for v in value]
-    arr = np.array(checked, dtype=np.int64 if name == "elements" else float)
-    if np.unique(arr).size != arr.size:
-        raise InputError(f"{name} = {show(arr.tolist())} is not allowed: values must be distinct")
-    return arr
+__all__ = [
+    "LAW_PARAMETERS",
+    "PARAMETERS",
+    "Parameter",
+    "SweepSpec",
+    "as_values",
+    "parameter",
+    "parse_values",
+]
 
 
 def _frame_description(frame: Frame | FrameMesh | None) -> dict[str, Any]:
@@ -179,7 +87,8 @@ class SweepSpec:
     Attributes
     ----------
     values : dict
-        Parameter name -> fixed value (number, or None for the default law) or a 1-D array.
+        Parameter name -> fixed value (number, or None for the default law) or a 1-D array;
+        with a law family, its parameters too (:data:`LAW_PARAMETERS`).
     frame : Frame, FrameMesh or None
         The racket (the standard one when None, whose EI1 is ``ei1``).
     ei2 : float or None
@@ -188,7 +97,8 @@ class SweepSpec:
         As for :func:`fem_racket.simulate`.
     law : ContactLaw or None
         A contact law other than the paper's (every case then runs the general integrator, or
-        CVODE); None: the paper's linear law from ``kcb`` and ``zeta``.
+        CVODE), its parameters overridden case by case by those in ``values``
+        (:meth:`case_law`); None: the paper's linear law from ``kcb`` and ``zeta``.
     tolerance : float or None
         COR tolerance of the batched engine (exact solver); None: every mode.
     peak_force : bool
@@ -211,9 +121,13 @@ class SweepSpec:
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:
         """Validated spec from user values (numbers, strings, sequences); see
-        :func:`fem_racket.sweep` for the keywords."""
+        :func:`fem_racket.sweep` for the keywords (the law's parameters by their names in
+        :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
         values = {name: as_values(name, value) for name, value in raw.items()}
+        law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
+        for name, value in sweep_law_values(kwargs.get("law"), law_given).items():
+            values[name] = as_values(name, value)
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
         defaults.update(racket_speed=0.0, reference=DEFAULT_REFERENCE)
         defaults["ball_mass"] = DEFAULT_BALL_MASS
@@ -258,17 +172,11 @@ class SweepSpec:
             spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
         )
         spec._check_rigidity()
+        spec._check_swings()
         check_grid_size(spec.shape, spec.dims)
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         if not isinstance(spec.peak_force, bool):
             raise InputError(f"peak_force = {spec.peak_force!r} is not allowed: must be a bool")
-        speeds = np.atleast_1d(spec.values["racket_speed"])
-        if spec.law is not None and np.any(speeds != 0.0):
-            raise InputError(
-                f"racket_speed = {show(float(speeds[speeds != 0.0][0]))} m/s is not allowed with "
-                f"contact law {spec.law.name!r} in a sweep: must be 0 (sweeps of a swinging "
-                "racket take the linear law; simulate takes a law with a swing)"
-            )
         return spec
 
     def _check_rigidity(self) -> None:
@@ -292,6 +200,23 @@ class SweepSpec:
         factors = np.atleast_1d(self.values["ei_factor"])
         for f in (float(np.min(factors)), float(np.max(factors))):
             check_ei_factor(f, ratio)
+
+    def _check_swings(self) -> None:
+        """Every swing of the grid valid (no pivot at its reference point) and closing on the
+        slowest ball at every impact point, so that no case fails on it mid-sweep."""
+        v = self.values
+        if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
+            return
+        frame = self.frame if self.frame is not None else standard_frame()
+        length = float(frame.length)
+        x = np.atleast_1d(v["position"]) * length
+        slowest = float(np.min(v["speed"]))
+        pivots = [None] if v["pivot"] is None else np.atleast_1d(v["pivot"]).tolist()
+        for speed in np.atleast_1d(v["racket_speed"]).tolist():
+            for ref in np.atleast_1d(v["reference"]).tolist():
+                for pivot in pivots:
+                    swing = Swing.from_speed(speed, length, reference=ref, pivot=pivot)
+                    closing_speed(slowest, float(np.min(swing.speed_at(x))))
 
     # -- the grid ----------------------------------------------------------------------------
     @cached_property
@@ -338,6 +263,11 @@ class SweepSpec:
             for (name, vals), i in zip(self.axes.items(), where, strict=True):
                 out[name] = vals[i]
         return out
+
+    def case_law(self, p: dict[str, Any], n: int | None = None) -> Any:
+        """The contact law of the case(s) with parameter values ``p`` (:meth:`case` or, with
+        ``n`` cases, :meth:`case_arrays`); None for the paper's linear law."""
+        return case_law(self.law, p, n)
 
     # -- identity --------------------------------------------------------------------------
     def describe(self) -> dict[str, Any]:

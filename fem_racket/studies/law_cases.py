@@ -1,8 +1,31 @@
 """Sweep cases under a contact law, batched per frame through the general integrator.
 
 The cases of a chunk that share a frame (mesh, EI scaling) run as one batch of
-:func:`fem_racket.impact.general.solve_general` (positions, speeds and ball masses as arrays),
-which is what makes the general integrator cheap per impact (``scripts/bench_laws.py``).
+:func:`fem_racket.impact.general.solve_general`: positions, speeds, ball masses and the law's
+parameters (:mod:`fem_racket.studies.law_axes`) as arrays of one value per case, which is what
+makes the general integrator cheap per impact (``scripts/bench_laws.py``). Inside the batch the
+integrator groups cases by their estimated contact time, each group with its own step.
+
+**A swinging racket.** The free frame is linear, so its motion is the rigid swing (the point x
+moving towards the ball at s(x) = v + omega x, :mod:`fem_racket.impact.swing`) plus the
+response to the contact force; the rigid motion carries no strain. Let the ball arrive at v_in
+and the impact point move at v_r = s(x_i). In the frame's coordinates the deflection is
+delta = u_B - w(x_i) with w = -v_r t + w_F (w_F: the response to F) and u_B = v_in t + u_F, so::
+
+    delta(t) = (v_in + v_r) t + u_F(t) - w_F(t)
+
+which is the deflection of the stationary racket struck at the closing speed v_c = v_in + v_r.
+Every law's force depends on delta, delta' and its internal state (driven by the same two), so
+the force history, the contact time and the end condition are those of the stationary impact at
+v_c, whatever the law. The stationary ball leaves at -e_A(v_c) v_c (e_A: the stationary free
+racket's COR at v_c, which a nonlinear law makes depend on v_c); the lab's ball velocity is
+that plus the swing's -v_r, so the ball's speed away from the racket is::
+
+    v_out = e_A(v_c) v_c + v_r = e_A v_in + (1 + e_A) v_r
+
+(Brody, Cross & Lindsey 2002, ch. 11, exact here for any law), and e_A = (v_out - v_r) / v_c is
+the sweep's ``cor``. The tests check v_out against CVODE started from the swing's velocity field
+(:func:`fem_racket.impact.law_impact.solve_law_impact` with ``frame_velocity``).
 """
 
 from __future__ import annotations
@@ -15,16 +38,22 @@ import numpy as np
 
 from fem_racket.impact.general import solve_general
 from fem_racket.impact.law_impact import receptance
+from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import NoSeparationError
-from fem_racket.studies.grid import SweepSpec
+from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec
 
-__all__ = ["law_chunk"]
+__all__ = ["case_swing", "law_chunk"]
 
 log = logging.getLogger(__name__)
 
 
+def case_swing(p: dict[str, Any], length: float) -> Swing:
+    """The swing of one case (scalar parameter values) for a racket of ``length`` [m]."""
+    return Swing.from_speed(p["racket_speed"], length, reference=p["reference"], pivot=p["pivot"])
+
+
 def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]) -> np.ndarray:
-    """Results (cor, t_c, rebound speed, peak force, NaN for K_CB) of the cases ``chunk``.
+    """Results (cor, t_c, v_out, peak force, NaN for K_CB, v_r) of the cases ``chunk``.
 
     ``model_of(spec, elements, ei1, ei_factor) -> (key, FrameModel)`` gives each case's frame
     (cached by the caller). A batch that fails (no separation within its time limit, or a
@@ -39,17 +68,25 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         models[key] = model
     out = np.full((len(cases), 6), np.nan)
     for key, rows in groups.items():
+        model = models[key]
+        length = model.mesh.length
         pos = np.array([cases[r]["position"] for r in rows])
         speed = np.array([cases[r]["speed"] for r in rows])
         mass = np.array([cases[r]["ball_mass"] for r in rows])
+        swings = [case_swing(cases[r], length) for r in rows]
+        v_r = np.array([sw.speed_at(x * length) for sw, x in zip(swings, pos, strict=True)])
+        closing = np.array([closing_speed(v, w) for v, w in zip(speed, v_r, strict=True)])
+        named = {k: [cases[r][k] for r in rows] for k in LAW_PARAMETERS if k in spec.values}
+        law = spec.case_law(named, len(rows))
         try:
-            o = solve_general(spec.law, receptance(models[key], pos, mass), speed)
+            o = solve_general(law, receptance(model, pos, mass), closing)
         except (NoSeparationError, RuntimeError) as exc:
             log.warning("%d cases failed (NaN in the results): %s", len(rows), exc)
             continue
-        out[rows, 0] = -o.ball_velocity / speed
+        e_a = -o.ball_velocity / closing
+        out[rows, 0] = e_a
         out[rows, 1] = o.contact_time
-        out[rows, 2] = -o.ball_velocity
+        out[rows, 2] = ball_speed_out(e_a, speed, v_r)
         out[rows, 3] = o.peak_force
-        out[rows, 5] = 0.0  # the racket at rest (a swing is refused with a law)
+        out[rows, 5] = v_r
     return out

@@ -8,7 +8,12 @@ v_out(x) = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11; exact 
 law, :mod:`fem_racket.impact.swing`). Sweet spots: :mod:`fem_racket.studies.sweetspots`.
 
 :func:`apparent_cor_along` is the one place the impacts are solved: one call of the batched
-engine (:func:`fem_racket.impact.engine.impacts`) for the whole grid, frame modes computed once.
+engine (:func:`fem_racket.impact.engine.impacts`) for the whole grid, frame modes computed once;
+under a contact law other than the paper's, one batch of the general integrator
+(:func:`fem_racket.impact.general.solve_general`, every mode available, those far above the
+contact frequency as one residual mode). The identity for v_out holds for any law: the impact
+of a swinging free racket is the stationary one at the closing speed
+(:mod:`fem_racket.studies.law_cases` derives it), e_A depending on that speed.
 """
 
 from __future__ import annotations
@@ -19,10 +24,13 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
+from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.engine import DEFAULT_TOLERANCE, impacts
+from fem_racket.impact.general import solve_general
+from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.sweetspots import (
@@ -38,6 +46,7 @@ from fem_racket.validation import (
     check_integer,
     check_positive,
     check_range,
+    show,
 )
 
 __all__ = ["DEFAULT_POSITIONS", "RacketMap", "apparent_cor_along", "racket_map"]
@@ -59,6 +68,7 @@ def apparent_cor_along(
     separation: str = "displacement",
     modes: int | None = DEFAULT_MODES,
     tolerance: float | None = DEFAULT_TOLERANCE,
+    law: Any = None,
 ) -> np.ndarray:
     """e_A of the stationary free frame struck at each position (x/L) at each closing speed.
 
@@ -71,6 +81,9 @@ def apparent_cor_along(
         Closing speed v_in + v_r at each point [m/s] (sets K_CB unless ``kcb`` is given).
     ball_mass, kcb, zeta, separation, modes, tolerance
         As for :func:`fem_racket.simulate` (``tolerance``: the batched engine's COR tolerance).
+    law : ContactLaw, optional
+        A contact law other than the paper's: the general integrator, the law's own end
+        condition (``kcb``, ``zeta``, ``separation``, ``modes`` and ``tolerance`` do not apply).
 
     Returns
     -------
@@ -80,6 +93,9 @@ def apparent_cor_along(
     check_choice("separation", separation, SEPARATION_EVENTS)
     x = np.atleast_1d(np.asarray(positions, dtype=float))
     v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
+    if law is not None:
+        out = solve_general(law, receptance(model, x, ball_mass), v)
+        return -out.ball_velocity / v
     batch = impacts(
         model,
         position=x,
@@ -127,12 +143,19 @@ class RacketMap:
     swing: Swing
     spots: SweetSpots
     length: float
+    law: Any = None
+
+    def law_summary(self) -> dict[str, Any]:
+        """The contact law's name and parameters, units in the keys (``linear``: the paper's
+        K_CB from the closing speed, or as given, and zeta)."""
+        return {"law": "linear"} if self.law is None else self.law.describe()
 
     def summary(self, curves: bool = True) -> dict[str, Any]:
         """JSON-ready: sweet spots (x/L) and, with ``curves``, the curves; units in the keys."""
         out: dict[str, Any] = {"racket": self.name, "length_m": self.length}
         out.update(self.spots.summary())
         out.update(self.swing.summary())
+        out["contact"] = self.law_summary()
         if curves:
             out["curves"] = {
                 "position_x_over_l": self.positions.tolist(),
@@ -174,6 +197,7 @@ def racket_map(
     elements: int = 20,
     power_fraction: float = DEFAULT_POWER_FRACTION,
     tolerance: float | None = DEFAULT_TOLERANCE,
+    law: Any = None,
 ) -> RacketMap:
     """e_A and v_out along a racket, and its sweet spots.
 
@@ -195,12 +219,24 @@ def racket_map(
         As for :func:`fem_racket.simulate`.
     power_fraction : float
         The power region is where v_out >= power_fraction x its maximum.
+    law : ContactLaw or str, optional
+        The ball/string law (a law or a name of :data:`fem_racket.contact.presets.LAW_NAMES`);
+        the paper's linear law (K_CB, zeta) when None or ``"linear"``. Another law runs the
+        general integrator and takes neither ``kcb`` nor ``zeta``.
 
     Returns
     -------
     RacketMap
     """
     speed = check_positive("speed", speed, "m/s")
+    law = get_law(law) if isinstance(law, str) else law
+    if law is not None:
+        for key, value in (("kcb", kcb), ("zeta", zeta)):
+            if value is not None:
+                raise InputError(
+                    f"{key} = {show(value)} is not allowed with contact law {show(law.name)}: "
+                    "it sets the linear law's K_CB and zeta only"
+                )
     ball_mass = Ball(ball_mass).mass
     check_range("power_fraction", power_fraction, 0.0, 1.0, include_low=False)
     if modes is not None:
@@ -218,6 +254,7 @@ def racket_map(
         separation=separation,
         modes=modes,
         tolerance=tolerance,
+        law=law,
     )
 
     def e_a(s: float) -> float:
@@ -241,4 +278,5 @@ def racket_map(
         power_region=power_region(x, vo, power_fraction),
         power_fraction=power_fraction,
     )
-    return RacketMap(name, x, e, vo, np.asarray(v_r, dtype=float), speed, swing, spots, length)
+    v_r = np.asarray(v_r, dtype=float)
+    return RacketMap(name, x, e, vo, v_r, speed, swing, spots, length, law)

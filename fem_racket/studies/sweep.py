@@ -4,6 +4,8 @@
 runs every combination (the Fig 13 study of Kawazoe & Kanda 1997 with 7-9 impact points) and
 returns a dataset with one dimension per swept parameter (:mod:`.grid`) and the
 variables ``cor``, ``contact_time_s``, ``rebound_speed_m_s``, ``peak_force_n`` and ``kcb_n_m``.
+A contact law's parameters sweep the same way:
+``sweep(law="hunt-crossley", hc_exponent="1.3:1.7:5", hc_stiffness=1e6)``.
 
 Per case only the small coupled problem is solved; assembly and modes are reused
 (:mod:`fem_racket.studies.cases`).
@@ -24,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
-from fem_racket.contact.presets import get_law
+from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame
@@ -33,8 +35,9 @@ from fem_racket.outputs import atomic_output, check_output_path, provenance
 from fem_racket.studies.cases import VARIABLES, result_variables, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
-from fem_racket.studies.grid import PARAMETERS, SweepSpec, chunks
-from fem_racket.validation import check_choice, check_integer
+from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec, chunks, parameter
+from fem_racket.studies.law_axes import family_of
+from fem_racket.validation import InputError, check_choice, check_integer, show
 
 __all__ = ["VARIABLES", "sweep"]
 
@@ -50,13 +53,17 @@ KCB_LAW = (
 SERIAL_BELOW = 20000
 #: Largest chunk of exact impacts (one engine call per frame; also one checkpoint file).
 EXACT_CHUNK = 32768
+#: Chunk of the general integrator's cases (contact laws): fixed, so that every backend and a
+#: resumed run make the same batches (a batch's time step follows its cases, which moves
+#: results at the integrator's error, ~1e-6 in COR).
+LAW_CHUNK = 64
 
 
 def _attributes(spec: SweepSpec) -> dict[str, Any]:
     """Provenance, every fixed parameter (units in the names), solver and tolerances."""
     params: dict[str, Any] = {}
     for name, value in spec.fixed.items():
-        attr = PARAMETERS[name].attribute
+        attr = parameter(name).attribute
         if value is None and name == "kcb":
             value = KCB_LAW
         elif value is None and name == "zeta":
@@ -77,9 +84,13 @@ def _attributes(spec: SweepSpec) -> dict[str, Any]:
         swept=" ".join(spec.dims),
         spec_sha256=spec.digest,
     )
-    if spec.law is not None:
+    if spec.law is None:
+        params["contact_law"] = "linear"
+    elif family_of(spec.law) is None:  # no named parameters: the law as it describes itself
         params.update({f"contact_{k}": v for k, v in spec.law.describe().items()})
-    elif spec.solver == "exact":
+    else:  # its parameters: fixed ones above, swept ones are dimensions
+        params["contact_law"] = spec.law.name
+    if spec.law is None and spec.solver == "exact":
         params["tolerance"] = "all modes" if spec.tolerance is None else spec.tolerance
         params["tolerances"] = (
             "exact: closed form (batched engine), COR within 'tolerance' of every mode, "
@@ -99,7 +110,7 @@ def _dataset(spec: SweepSpec, values: np.ndarray) -> Any:
         name: (
             name,
             vals,
-            {"units": PARAMETERS[name].unit, "long_name": PARAMETERS[name].description},
+            {"units": parameter(name).unit, "long_name": parameter(name).description},
         )
         for name, vals in spec.axes.items()
     }
@@ -113,9 +124,10 @@ def _dataset(spec: SweepSpec, values: np.ndarray) -> Any:
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
-    # the engine (exact solver) and the general integrator's batches (contact laws) take big
-    # chunks
-    cap = EXACT_CHUNK if spec.solver == "exact" else 128 if spec.solver == "general" else 4
+    if spec.solver == "general":  # batches of the general integrator (see LAW_CHUNK)
+        return LAW_CHUNK
+    # the engine (exact solver) takes big chunks
+    cap = EXACT_CHUNK if spec.solver == "exact" else 4
     return max(1, min(cap, math.ceil(todo / (4 * workers))))
 
 
@@ -152,6 +164,7 @@ def sweep(
     chunk_size: int | None = None,
     progress: bool | None = None,
     parameters: dict[str, Any] | None = None,
+    **law_parameters: Any,
 ) -> Any:
     """Simulate every combination of the given parameter values.
 
@@ -176,9 +189,10 @@ def sweep(
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
     law : ContactLaw or str, optional
-        A contact law other than the paper's, fixed for the sweep (a law or a name of
-        :data:`fem_racket.contact.presets.LAW_NAMES`); its name and parameters become attributes
-        and the ``kcb`` variable is NaN.
+        A contact law other than the paper's (a law or a name of
+        :data:`fem_racket.contact.presets.LAW_NAMES`); its name and fixed parameters become
+        attributes and the ``kcb`` variable is NaN. With a swing the impact is the stationary
+        one at the closing speed (exact for any law, :mod:`fem_racket.studies.law_cases`).
     tolerance : float or None
         COR tolerance of the exact solver's batched engine (default 1e-6; None or 0: every mode
         of ``modes``); recorded in the dataset's attributes.
@@ -204,6 +218,12 @@ def sweep(
         Progress bar with rate and ETA on stderr; None: only when stderr is a terminal.
     parameters : dict, optional
         Extra provenance (e.g. the command's options): the attribute ``run_parameters`` (JSON).
+    **law_parameters
+        The parameters of the law's family (:data:`fem_racket.studies.grid.LAW_PARAMETERS`:
+        ``hc_stiffness``, ``hc_exponent``, ``hc_alpha``; ``k1``, ``k2``, ``hyst_exponent``;
+        ``ball_stiffness``, ``ball_damping``, ``string_stiffness``, ``string_cubic``), each fixed
+        or swept like the others (a dimension named after it); the law's own value when
+        not given. Not with ``linear`` or a preset given by name.
 
     Returns
     -------
@@ -212,6 +232,16 @@ def sweep(
         when asked); attributes: every fixed
         parameter, the solver and its tolerances, the package version (provenance).
     """
+    for name in law_parameters:
+        if name not in LAW_PARAMETERS:
+            raise InputError(
+                f"{name} is not a sweep parameter: must be one of the impact's or a law's "
+                f"({', '.join(LAW_PARAMETERS)})"
+            )
+    given = sorted(k for k, v in law_parameters.items() if v is not None)
+    if isinstance(law, str) and given and law in ("linear", *PRESETS):
+        why = "it is built from kcb and zeta" if law == "linear" else "it is a preset"
+        raise InputError(f"law parameters {given} are not allowed with law {show(law)}: {why}")
     spec = SweepSpec.build(
         frame,
         position=position,
@@ -235,6 +265,7 @@ def sweep(
         law=get_law(law) if isinstance(law, str) else law,
         tolerance=tolerance,
         peak_force=peak_force,
+        **law_parameters,
     )
     if backend is not None:
         check_choice("backend", backend, BACKENDS)

@@ -192,6 +192,42 @@ SWEEP_CASES = [
         ("--ei1 cannot be combined with frame.segments",),
         {"run.toml": "[frame]\nsegments = [{length_m=0.7, ei_n_m2=150, rhoa_kg_m=0.5}]\n"},
     ),
+    Case(
+        "sweep-racket-away-before-any-file",
+        sweep("--law", "hysteretic", "--racket-speed=-30,0", "--out", "x.nc"),
+        ("racket speed at the impact point = -30 m/s", "must close"),
+    ),
+    Case(
+        "sweep-pivot-at-reference",
+        sweep("--racket-speed", "10", "--pivot", "0,0.51", "--out", "x.nc"),
+        ("pivot = 0.51", "reference point"),
+    ),
+    Case(
+        "sweep-law-parameter-range",
+        sweep("--law", "hunt-crossley", "--hc-exponent", "0.5:2:3"),
+        ("hc_exponent = 0.5", "[1, 20]"),
+    ),
+    Case(
+        "sweep-law-parameter-form",
+        sweep("--law", "series", "--string-cubic", "1:2"),
+        ("string_cubic = '1:2'", "start:stop:num"),
+    ),
+    Case(
+        "sweep-law-parameter-other-family",
+        sweep("--law", "hysteretic", "--hc-alpha", "0.1,0.2"),
+        ("hc_alpha", "law 'hysteretic'", "k1"),
+    ),
+    Case(
+        "sweep-law-parameter-of-a-preset",
+        sweep("--law", "kawazoe-1997-nonlinear", "--k1", "1e15,2e15"),
+        ("k1", "preset"),
+    ),
+    Case(
+        "sweep-law-parameter-in-run-file",
+        ["sweep", "--serial", "--quiet", "--config", "run.toml"],
+        ("sweep.k2 = 0.0", "> 0"),
+        {"run.toml": '[contact]\nlaw = "hysteretic"\n[sweep]\nk2 = [0.0, 1e17]\n'},
+    ),
 ]
 
 VTK_CASES = [
@@ -318,6 +354,9 @@ MAP_CASES = [
     Case("map-pivot-at-reference", mapc("--racket-speed", "9", "--pivot", "0.51"), ("pivot",)),
     Case("map-racket-away", mapc("--racket-speed", "-40"), ("racket speed", "must close")),
     Case("map-reference-off", mapc("--reference", "2"), ("reference = 2", "[0, 1]")),
+    Case("map-law-parameter-linear", mapc("--hc-alpha", "0.1"), ("hc_alpha", "law 'linear'")),
+    Case("map-kcb-with-a-law", mapc("--law", "hysteretic", "--kcb", "5e4"), ("kcb", "contact law")),
+    Case("map-law-range", mapc("--law", "hysteretic", "--hyst-exponent", "30"), ("hyst_exponent",)),
     Case("map-bad-suffix", mapc("--out", "m.txt"), ("m.txt", ".png")),
     Case("map-unknown-preset", mapc("--preset", "soft"), ("--preset", "choose from")),
     Case("map-ball-mass", mapc("--ball-mass", "0"), ("ball mass = 0", "> 0")),

@@ -39,9 +39,46 @@ def test_the_refined_maximum_beats_every_grid_point(model):
     assert lo < m.spots.max_ball_speed < hi
 
 
+def test_the_linear_law_by_name_is_the_paper_s_map(model):
+    kwargs = dict(speed=25.0, racket_speed=20.0, pivot=0.1, positions=np.linspace(0.5, 1.0, 11))
+    m, named = racket_map(model, **kwargs), racket_map(model, **kwargs, law="linear")
+    np.testing.assert_array_equal(m.apparent_cor, named.apparent_cor)
+    np.testing.assert_array_equal(m.ball_speed_out, named.ball_speed_out)
+    assert m.spots == named.spots and named.summary()["contact"] == {"law": "linear"}
+
+
+def test_a_point_under_a_nonlinear_law_is_one_simulate(model):
+    x = np.array([0.55, 0.7, 0.85])
+    m = racket_map(
+        model, speed=20.0, racket_speed=25.0, pivot=0.1, positions=x, law="kawazoe-1997-nonlinear"
+    )
+    assert m.summary(curves=False)["contact"]["law"] == "hysteretic"
+    swing = Swing.from_speed(25.0, 0.68, pivot=0.1)
+    for k, p in enumerate(x):
+        # CVODE from the swing's velocity field; the map strikes the stationary racket at the
+        # closing speed (exact for any law: studies/law_cases.py)
+        r = simulate(
+            model,
+            position=p,
+            speed=20.0,
+            swing=swing,
+            law="kawazoe-1997-nonlinear",
+            solver="cvode",
+            output_step=None,
+        )
+        # the general integrator's COR error ~1e-6 (impact/general.py DEFAULT_STEPS), a batch
+        # sharing the step of its shortest contact
+        assert m.apparent_cor[k] == pytest.approx(r.apparent_cor, abs=2e-6)
+        assert m.ball_speed_out[k] == pytest.approx(r.ball_speed_out, abs=1e-4)
+    # max e_A refined between grid points by single-point runs
+    assert 0.55 <= m.spots.max_apparent_cor <= 0.85
+
+
 @pytest.mark.parametrize(
     ("kwargs", "message"),
     [
+        ({"law": "hysteretic", "kcb": 5e4}, "kcb = 50000.0 is not allowed with contact law"),
+        ({"law": "nonsense"}, "law = 'nonsense'"),
         ({"positions": [0.6, 0.7]}, "at least 3"),
         ({"positions": [0.6, 0.8, 0.7]}, "increasing"),
         ({"power_fraction": 1.5}, "power_fraction = 1.5"),

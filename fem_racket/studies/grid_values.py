@@ -1,0 +1,152 @@
+"""Sweep parameters and their values, from text or Python.
+
+A sweepable parameter takes one value (held fixed) or several (a dimension of the sweep).
+On the command line the values are a number, a comma list (``20,30,40``) or
+``start:stop:num`` with an optional ``:log`` (``50:3000:60:log``: 60 values evenly spaced in
+log between 50 and 3000, both ends included). The impact's parameters are :data:`PARAMETERS`,
+the contact law families' :data:`LAW_PARAMETERS` (:mod:`fem_racket.studies.law_axes`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS
+from fem_racket.frame.mesh import MAX_ELEMENTS
+from fem_racket.studies.law_axes import LAW_DESCRIPTIONS, check_law_value
+from fem_racket.studies.limits import MAX_CASES
+from fem_racket.validation import (
+    InputError,
+    check_elements,
+    check_finite,
+    check_positive,
+    check_range,
+    show,
+)
+
+__all__ = ["LAW_PARAMETERS", "PARAMETERS", "Parameter", "as_values", "parameter", "parse_values"]
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A sweepable parameter: unit, description and attribute name (with its unit)."""
+
+    unit: str
+    description: str
+    attribute: str
+
+
+#: Sweepable parameters in dimension order.
+PARAMETERS: dict[str, Parameter] = {
+    "position": Parameter("x/L", "impact point from the grip end", "position_x_over_l"),
+    "speed": Parameter("m/s", "incident ball speed", "speed_m_s"),
+    "racket_speed": Parameter(
+        "m/s", "racket speed towards the ball at the reference point", "racket_speed_m_s"
+    ),
+    "reference": Parameter("x/L", "point whose speed racket_speed gives", "reference_x_over_l"),
+    "pivot": Parameter("m", "pivot of the swing from the butt (none: translation)", "pivot_m"),
+    "ei1": Parameter("N m^2", "grip-side bending rigidity EI1 (EI2 = 0.88 EI1)", "ei1_n_m2"),
+    "ei_factor": Parameter("1", "factor on every segment's EI", "ei_factor"),
+    "ball_mass": Parameter("kg", "ball mass m_B", "ball_mass_kg"),
+    "zeta": Parameter("1", "ball/string damping ratio", "zeta"),
+    "kcb": Parameter("N/m", "ball/string stiffness K_CB", "kcb_n_m"),
+    "elements": Parameter("1", "number of beam elements", "elements"),
+}
+
+#: Sweepable parameters of the contact law families (a sweep holds those of its law's family):
+#: the attribute is the run file's [contact] key with ``contact_`` before it.
+LAW_PARAMETERS: dict[str, Parameter] = {
+    name: Parameter(
+        "1" if unit == "-" else unit, LAW_DESCRIPTIONS[name], "contact_" + FILE_KEYS[name]
+    )
+    for spec in FAMILY_PARAMETERS.values()
+    for name, (unit, _default) in spec.items()
+}
+
+
+def parameter(name: str) -> Parameter:
+    """The :class:`Parameter` called ``name`` (impact or law parameter)."""
+    return PARAMETERS[name] if name in PARAMETERS else LAW_PARAMETERS[name]
+
+
+def _check_value(name: str, value: object) -> float | int:
+    if name in LAW_PARAMETERS:
+        return check_law_value(name, value)
+    unit = PARAMETERS[name].unit
+    if name in ("position", "reference"):
+        return check_range(name, value, 0.0, 1.0, unit=unit)
+    if name in ("racket_speed", "pivot"):  # any sign: towards/away, beyond the butt
+        return check_finite(name, value, unit)
+    if name == "zeta":
+        return check_range(name, value, 0.0, 1.0, include_high=False)
+    if name == "elements":
+        return check_elements(value, 2, MAX_ELEMENTS)  # the words of simulate's --elements
+    return check_positive(name, value, "" if unit == "1" else unit)
+
+
+def parse_values(name: str, text: str) -> float | np.ndarray:
+    """Values of parameter ``name`` from ``text``: one number (fixed), a comma list, or
+    ``start:stop:num[:log]`` (a swept dimension).
+
+    Raises :class:`InputError` with a one-line message on malformed text or bad values.
+    """
+    text = str(text).strip()
+    form = "a number, a comma list or start:stop:num[:log]"
+    if ":" in text:
+        parts = [p.strip() for p in text.split(":")]
+        log = parts[-1].lower() == "log"
+        if log:
+            parts = parts[:-1]
+        if len(parts) != 3:
+            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}")
+        try:
+            start, stop, num = float(parts[0]), float(parts[1]), float(parts[2])
+        except ValueError:
+            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
+        if not (num.is_integer() and 1 <= num <= MAX_CASES):
+            raise InputError(
+                f"{name} = {show(text)} is not allowed: num must be an integer from 1 to "
+                f"{MAX_CASES}"
+            )
+        if not (math.isfinite(start) and math.isfinite(stop)):
+            raise InputError(f"{name} = {show(text)} is not allowed: start and stop must be finite")
+        if log and (start <= 0.0 or stop <= 0.0):
+            raise InputError(
+                f"{name} = {show(text)} is not allowed: log spacing needs start, stop > 0"
+            )
+        values = (np.geomspace if log else np.linspace)(start, stop, int(num))
+        if log:  # geomspace ends are exact in recent numpy; make sure
+            values[0], values[-1] = start, stop
+        return as_values(name, values)
+    try:
+        numbers = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
+    if len(numbers) == 1:
+        return as_values(name, numbers[0])
+    return as_values(name, numbers)
+
+
+def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
+    """Normalise a Python value of parameter ``name``: None (default), a number (fixed), a
+    string (see :func:`parse_values`) or a sequence (swept; a 1-D array of distinct values)."""
+    if name not in PARAMETERS and name not in LAW_PARAMETERS:
+        known = ", ".join([*PARAMETERS, *LAW_PARAMETERS])
+        raise InputError(f"parameter = {show(name)} is not allowed: must be one of {known}")
+    if value is None:
+        return None
+    if isinstance(value, str):
+        return parse_values(name, value)
+    if np.ndim(value) == 0:
+        return _check_value(name, value)
+    if np.ndim(value) != 1 or len(value) == 0:
+        raise InputError(f"{name} = {show(value)} is not allowed: must be a number or a 1-D list")
+    checked = [_check_value(name, v) for v in value]
+    arr = np.array(checked, dtype=np.int64 if name == "elements" else float)
+    if np.unique(arr).size != arr.size:
+        raise InputError(f"{name} = {show(arr.tolist())} is not allowed: values must be distinct")
+    return arr
