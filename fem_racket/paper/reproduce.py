@@ -8,6 +8,13 @@ tables and figure (PNG by default, or SVG, PDF) into an output folder, writes ``
 folder, so a report at the repository root shows the figures of ``output/paper/`` (committed, so
 that it reads well right after ``git clone``).
 
+With a contact ``law`` (``reproduce(..., law="kawazoe-1997-nonlinear")``) the figures are drawn
+with that law instead of the paper's per-speed linear K_CB, those that have no meaning under it
+are left out with the reason, and the report is the law's
+(:func:`fem_racket.paper.law_report.render_law_report`): conclusions (1)-(4) re-checked and the
+contact times against the paper's 6-3 ms. Its outputs belong in their own folder (the command's
+default: ``output/paper/<law>/``).
+
 Its own earlier outputs are replaced without ``overwrite`` (recognised by their provenance,
 :func:`fem_racket.paper.owned.written_by_fem_racket`); any other existing file is refused before
 any work unless ``overwrite``.
@@ -23,10 +30,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from fem_racket.contact.law import ContactLaw
 from fem_racket.display import number, short_repr
 from fem_racket.io.figure_files import DEFAULT_DPI, check_dpi, check_figure_format
 from fem_racket.outputs import Target, atomic_outputs, provenance
 from fem_racket.paper.claims import AGREES, DIFFERS, NOT_CHECKABLE, Claim, build_claims
+from fem_racket.paper.claims.conclusions import conclusion_claims, contact_time_claim
 from fem_racket.paper.figures import (
     FIGURES,
     FigureData,
@@ -34,6 +43,7 @@ from fem_racket.paper.figures import (
     used_settings,
     write_figure_into,
 )
+from fem_racket.paper.law_report import render_law_report
 from fem_racket.paper.owned import check_replaceable
 from fem_racket.progress import progress_bar
 from fem_racket.validation import InputError
@@ -41,6 +51,9 @@ from fem_racket.validation import InputError
 __all__ = ["Reproduction", "render_report", "reproduce"]
 
 log = logging.getLogger(__name__)
+
+#: The calibrated nonlinear law whose reproduction the linear report links.
+NONLINEAR_PRESET = "kawazoe-1997-nonlinear"
 
 #: Paper section of each figure (the report shows a figure after its section's table).
 SECTION_OF = {
@@ -220,9 +233,23 @@ def render_report(
         "(`fig11`/`fig12`, keys ending `_0769`).",
         "- Fig. 13 is drawn at 0.60, 0.75 and 0.90 L; the paper's figure does not name its impact "
         "points in the text.",
+        f"- The same figures under the calibrated nonlinear ball/string law "
+        f"`{NONLINEAR_PRESET}` (one parameter set for every speed instead of one K_CB per "
+        f"speed), with which of conclusions (1)-(4) still hold and the contact times beside the "
+        f"paper's 6-3 ms: [{img}/{NONLINEAR_PRESET}/REPRODUCTION.md]"
+        f"({img}/{NONLINEAR_PRESET}/REPRODUCTION.md), written by `fem-racket reproduce --law "
+        f"{NONLINEAR_PRESET}`.",
         "",
     ]
     return "\n".join(lines)
+
+
+def _claims(values: dict[str, dict[str, float]], law: ContactLaw | None) -> list[Claim]:
+    """The report's claims: every statement of the paper (its linear law), or under another
+    law conclusions (1)-(4) and the contact-time statement."""
+    if law is None:
+        return build_claims(values)
+    return [*conclusion_claims(values), contact_time_claim(values)]
 
 
 def reproduce(
@@ -236,6 +263,7 @@ def reproduce(
     fmt: str = "png",
     dpi: float = DEFAULT_DPI,
     progress: bool | None = None,
+    law: ContactLaw | str | None = None,
 ) -> Reproduction:
     """Compute every figure, write data + figures + ``values.json`` to ``out_dir``, and the report.
 
@@ -267,13 +295,30 @@ def reproduce(
         Resolution of the figures [dots per inch].
     progress : bool or None
         A progress bar over the figures on stderr (None: when stderr is a terminal).
+    law : ContactLaw or str, optional
+        Draw the figures with this contact law (or the law of that name,
+        :data:`fem_racket.contact.presets.LAW_NAMES`) instead of the paper's linear K_CB;
+        None or ``"linear"``: the paper's. Figures without meaning under a law
+        (:attr:`FigureSpec.law_skip`) are left out, and the report is the law's
+        (:func:`fem_racket.paper.law_report.render_law_report`). Every provenance records the
+        law (``"law"``, and its parameters under ``"used"``).
     """
+    from fem_racket.contact.presets import get_law
+    from fem_racket.paper.figures.law_runs import law_title
     from fem_racket.validation import check_choice
 
+    if isinstance(law, str):
+        law = get_law(law)
+    drawable = [k for k in FIGURES if law is None or not FIGURES[k].law_skip]
     keys = (
-        list(FIGURES) if figures is None else [check_choice("figure", k, FIGURES) for k in figures]
+        list(drawable) if figures is None else [check_choice("figure", k, FIGURES) for k in figures]
     )
-    if report is not None and set(keys) != set(FIGURES):
+    for k in keys:
+        if k not in drawable:
+            raise InputError(
+                f"figure = {k!r} is not allowed with law {law_title(law)!r}: {FIGURES[k].law_skip}"
+            )
+    if report is not None and set(keys) != set(drawable):
         raise InputError("figures is not allowed with a report: the report needs every figure")
     fmt = check_figure_format(fmt)
     dpi = check_dpi(dpi)
@@ -284,20 +329,22 @@ def reproduce(
     if report is not None:
         targets.append(Target(Path(report), name="report"))
     check_replaceable(targets, overwrite=overwrite)
+    described = {"law": "linear"} if law is None else {**law.describe(), "name": law_title(law)}
     meta = provenance(
         {"quick": quick, "figures": keys, "format": fmt, "dpi": dpi, **(parameters or {})}
     )
-    meta["used"] = used_settings()
+    meta["law"] = described
+    meta["used"] = used_settings(law)
     done: dict[str, FigureData] = {}
     seconds: dict[str, float] = {}
     for key in progress_bar(keys, desc="reproduce", unit="figure", enabled=progress):
         t0 = time.perf_counter()
-        done[key] = FIGURES[key].compute(quick)
+        done[key] = FIGURES[key].compute(quick, law)
         seconds[key] = time.perf_counter() - t0
         log.info("%s: %.2f s", key, seconds[key])
     values = {k: d.values for k, d in done.items()}
     listing = [p.name for p in written]
-    claims = build_claims(values) if report is not None else []
+    claims = [] if report is None else _claims(values, law)
     # Every file of the reproduction moved into place together (check_replaceable above did the
     # --overwrite check: what remains is ours to replace); unchanged ones are left as they are.
     with atomic_outputs(targets, overwrite=True) as temps:
@@ -313,7 +360,12 @@ def reproduce(
         next(pending).write_text(json.dumps(listed, indent=1))
         if report is not None:
             rel = os.path.relpath(out.resolve(), Path(report).resolve().parent).replace(os.sep, "/")
-            text = render_report(done, claims, rel, quick=quick, fmt=fmt)
+            if law is None:
+                text = render_report(done, claims, rel, quick=quick, fmt=fmt)
+            else:
+                text = render_law_report(
+                    law_title(law), law, done, claims, values, rel, quick=quick, fmt=fmt
+                )
             tmp = next(pending)
             if _same_report(Path(report), text):
                 tmp.unlink()  # left as it is
