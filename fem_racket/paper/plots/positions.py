@@ -20,6 +20,8 @@ def cor_position(data: FigureData) -> Figure:
     c, v = data.tables["cor"], data.values
     x = c["position [x/L]"]
     lossy, lossless = loss_labels(data)
+    if not data.law:
+        lossless = "no damping (ζ = 0)"
     fig, ax = plt.subplots(figsize=(9, 6), layout="constrained")
     ax.plot(x, c["COR standard [-]"], "C0-", lw=2, label="standard, EI1 = 146 N m²")
     ax.plot(x, c["COR rigid [-]"], "C3-", lw=2, label="rigid, EI1 = 9999 N m²")
@@ -30,7 +32,7 @@ def cor_position(data: FigureData) -> Figure:
             x[::2],
             c["COR eq 12 rigid undamped [-]"][::2],
             "kx",
-            label="rigid closed form, eq 12 (no loss)",
+            label="rigid closed form, eq 12 (no " + ("loss)" if data.law else "damping)"),
         )
     ax.plot(
         x,
@@ -65,7 +67,7 @@ def contact_time_position(data: FigureData) -> Figure:
             c["contact time eq 11 rigid undamped [s]"] * 1e3,
             "k-",
             lw=2.5,
-            label="eq 11 (rigid frame, no loss)"
+            label="eq 11 (rigid frame, no damping)"
             if not data.law
             else "rigid frame, elastic counterpart (closed form)",
         )
