@@ -17,21 +17,12 @@ from fem_racket.paper.claims import AGREES, DIFFERS, Claim
 from fem_racket.paper.claims.conclusions import PAPER_TC_RANGE_S, contact_time_rows
 from fem_racket.paper.figures import FIGURES, FigureData
 from fem_racket.paper.figures.law_runs import elastic_counterpart
+from fem_racket.paper.report import cell, figure_link
 
 __all__ = ["VERDICT_WORDS", "render_law_report"]
 
 #: How the law report words the verdicts.
 VERDICT_WORDS = {AGREES: "holds", DIFFERS: "does not hold"}
-
-
-def _cell(text: str) -> str:
-    return text.replace("|", "\\|").replace("\n", " ")
-
-
-def _figure_link(title: str, path: str) -> str:
-    if path.endswith(".pdf"):
-        return f"[{title} (PDF)]({path})"
-    return f"![{title}]({path})"
 
 
 def _number(x: Any) -> str:
@@ -87,8 +78,8 @@ def render_law_report(
     for c in claims[:4]:
         fig = f" ([{c.figure}](#{c.figure}))" if c.figure else ""
         lines.append(
-            f"| {_cell(c.section)} | {_cell(c.paper)} | {_cell(c.ours)}{fig} | "
-            f"**{VERDICT_WORDS.get(c.verdict, c.verdict)}** | {_cell(c.reason)} |"
+            f"| {cell(c.section)} | {cell(c.paper)} | {cell(c.ours)}{fig} | "
+            f"**{VERDICT_WORDS.get(c.verdict, c.verdict)}** | {cell(c.reason)} |"
         )
     tc = claims[4]
     low, high = (t * 1e3 for t in PAPER_TC_RANGE_S)
@@ -118,7 +109,7 @@ def render_law_report(
                 f'<a id="{key}"></a>',
                 f"### {data.title}",
                 "",
-                _figure_link(data.title, f"{img}/{spec.name}.{fmt}"),
+                figure_link(data.title, f"{img}/{spec.name}.{fmt}"),
                 "",
                 f"Data: {files}.{note}",
                 "",

@@ -108,7 +108,7 @@ def test_committed_law_report_shows_its_committed_figures():
     folder = ROOT / "output" / "paper" / LAW
     text = (folder / "REPRODUCTION.md").read_text()
     assert "Quick run" not in text
-    for key, spec in FIGURES.items():
+    for spec in FIGURES.values():
         if spec.law_skip:
             assert f"{spec.name}: not drawn" in text
         else:

@@ -220,7 +220,8 @@ def conclusion_claims(v: dict[str, dict[str, float]]) -> list[Claim]:
         claim(
             "Concl. (4)",
             CONCLUSIONS["(4)"],
-            f"standard vs rigid frame: at most {rig * 100:.1f} % apart; over 0.55-0.95 L the "
+            f"standard vs rigid frame: at most {rig * 100:.1f} % apart (at "
+            f"{p9['tc_rigidity_argmax_x_over_l']:.2f} L); over 0.55-0.95 L the "
             f"standard frame's contact time spans {p9['tc_standard_min_s'] * ms:.2f}-"
             f"{p9['tc_standard_max_s'] * ms:.2f} ms ({spread * 100:.0f} % spread; 20 m/s)",
             rig < RIGIDITY_TC and spread < POSITION_TC,

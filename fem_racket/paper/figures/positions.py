@@ -173,6 +173,9 @@ def contact_time_position(quick: bool = False, law: ContactLaw | None = None) ->
             ),
             "tc_end_below_start": float(all(v[-1] < v[0] for v in fe.values())),
             "tc_rigidity_max_rel_diff": float(np.max(np.abs(std / rig - 1.0))),
+            "tc_rigidity_argmax_x_over_l": float(
+                cols["position [x/L]"][np.argmax(np.abs(std / rig - 1.0))]
+            ),
             "tc_standard_position_spread": float(std.max() / std.min() - 1.0),
         }
     )
