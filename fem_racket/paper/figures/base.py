@@ -34,17 +34,20 @@ __all__ = [
 log = logging.getLogger(__name__)
 
 
-def used_settings() -> dict[str, Any]:
+def used_settings(law: Any = None) -> dict[str, Any]:
     """What the paper's figures use, unless their tables say otherwise (the zeta = 0 curves, the
     rigid frame's EI1): the settings of the standard impact as run (solver, modes kept, m_B,
-    zeta, ...; :meth:`fem_racket.ImpactResult.settings`) and K_CB at the paper's three speeds.
-    Every figure's provenance records it under ``"used"``."""
+    zeta, ...; :meth:`fem_racket.ImpactResult.settings`) and K_CB at the paper's three speeds;
+    under a contact ``law`` (a :class:`~fem_racket.contact.law.ContactLaw`) its name and
+    parameters instead of K_CB and zeta. Every figure's provenance records it under ``"used"``."""
     from fem_racket.contact.linear import kcb_from_speed
     from fem_racket.impact.simulate import simulate
 
-    used = simulate(position=0.75, speed=20.0, output_step=None).settings()
-    for key in ("position_x_over_l", "speed_m_s", "kcb_n_m", "ccb_n_s_m"):
-        del used[key]
+    used = simulate(position=0.75, speed=20.0, output_step=None, law=law).settings()
+    del used["position_x_over_l"], used["speed_m_s"]
+    if law is not None:
+        return used
+    del used["kcb_n_m"], used["ccb_n_s_m"]
     used["kcb_n_m_at_20_30_40_m_s"] = [kcb_from_speed(v) for v in (20.0, 30.0, 40.0)]
     return used
 

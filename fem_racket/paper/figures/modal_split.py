@@ -13,6 +13,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
@@ -20,8 +21,9 @@ from fem_racket.impact.coupled import CoupledModes, coupled_modes
 from fem_racket.impact.rigid import rigid_impact_at
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
+from fem_racket.validation import InputError
 
-__all__ = ["FIG_11", "FIG_12", "modal_terms", "system_modes"]
+__all__ = ["FIG_11", "FIG_12", "LINEAR_ONLY", "modal_terms", "system_modes"]
 
 SPEED = 20.0
 #: System modes drawn individually; the rest are summed.
@@ -35,8 +37,23 @@ def _cases() -> tuple[FrameModel, dict[float, CoupledModes]]:
     return model, {p: coupled_modes(model, p, speed=SPEED) for p in (0.60, node, 0.769)}
 
 
-def modal_terms(quick: bool = False) -> FigureData:
-    """The terms of eq 13 against time at 0.60 L and at the mode-1 node (Fig 11)."""
+#: Why Figs 11-12 are not drawn under another contact law than the paper's linear one.
+LINEAR_ONLY = (
+    "eqs 13-16 split the ball velocity into the natural modes of the linear ball + frame "
+    "system; a nonlinear or hysteretic ball/string law has no such modes (its stiffness changes "
+    "during the contact), so there is nothing to draw"
+)
+
+
+def _linear_only(law: ContactLaw | None) -> None:
+    if law is not None:
+        raise InputError(f"law = {law.name!r} is not allowed for Figs 11-12: {LINEAR_ONLY}")
+
+
+def modal_terms(quick: bool = False, law: ContactLaw | None = None) -> FigureData:
+    """The terms of eq 13 against time at 0.60 L and at the mode-1 node (Fig 11); the paper's
+    linear law only (:data:`LINEAR_ONLY`)."""
+    _linear_only(law)
     model, cases = _cases()
     cols: dict[str, list] = {}
     values: dict[str, float] = {}
@@ -99,8 +116,10 @@ def modal_terms(quick: bool = False) -> FigureData:
     )
 
 
-def system_modes(quick: bool = False) -> FigureData:
-    """Frequencies and shapes of the first system modes at 0.60 L and the node (Fig 12)."""
+def system_modes(quick: bool = False, law: ContactLaw | None = None) -> FigureData:
+    """Frequencies and shapes of the first system modes at 0.60 L and the node (Fig 12); the
+    paper's linear law only (:data:`LINEAR_ONLY`)."""
+    _linear_only(law)
     model, cases = _cases()
     L = model.mesh.length
     x = np.linspace(0.0, L, 35 if quick else 137)
@@ -150,5 +169,9 @@ def system_modes(quick: bool = False) -> FigureData:
     )
 
 
-FIG_11 = FigureSpec("fig11_modal_terms", ("terms",), modal_terms, "modal_terms")
-FIG_12 = FigureSpec("fig12_system_modes", ("modes", "shapes"), system_modes, "system_modes")
+FIG_11 = FigureSpec(
+    "fig11_modal_terms", ("terms",), modal_terms, "modal_terms", law_skip=LINEAR_ONLY
+)
+FIG_12 = FigureSpec(
+    "fig12_system_modes", ("modes", "shapes"), system_modes, "system_modes", law_skip=LINEAR_ONLY
+)

@@ -4,6 +4,8 @@ One sweep over 0.55-0.95 L feeds both figures: the standard (EI1 = 146 N m^2) an
 (EI1 = 9999 N m^2) frames, with the ball/string damping (zeta = 0.0592) and without (zeta = 0),
 the rigid-frame closed forms (eq 12 for the COR and eq 11 for the contact time, both without
 damping), and the standard frame reduced to its rigid modes plus flexible mode 1 (conclusion 1).
+Under another contact law the same cases run with that law and its elastic counterpart
+(:mod:`.law_runs`).
 """
 
 from __future__ import annotations
@@ -12,12 +14,20 @@ from functools import lru_cache
 
 import numpy as np
 
+from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.linear import Ball
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
 from fem_racket.impact.rigid import rigid_impact_at
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
+from fem_racket.paper.figures.law_runs import (
+    elastic_counterpart,
+    free_impacts,
+    law_title,
+    rigid_contact_time,
+)
 
 __all__ = ["FIG_08", "FIG_09", "contact_time_position", "cor_position", "position_sweep"]
 
@@ -25,33 +35,61 @@ SPEED = 20.0
 
 
 @lru_cache(maxsize=2)
-def position_sweep(quick: bool = False) -> tuple[dict[str, np.ndarray], dict[str, float]]:
-    """COR and contact time against position for every case; and the frame's reference points."""
+def position_sweep(
+    quick: bool = False, law: ContactLaw | None = None
+) -> tuple[dict[str, np.ndarray], dict[str, float]]:
+    """COR and contact time against position for every case; and the frame's reference points.
+
+    Under ``law`` the "undamped" cases use its elastic counterpart (left out when it has none)
+    and the eq 11 column the counterpart's rigid-frame contact time (:mod:`.law_runs`).
+    """
     base = FrameModel.build(standard_frame(), 20)
     base.modes()  # computed once, reused by the scaled model
     rigid = base.scaled(RIGID_EI1 / PAPER_EI1)
     x = np.linspace(0.55, 0.95, 9 if quick else 41)
     out: dict[str, np.ndarray] = {"position [x/L]": x}
-    cases = {
-        "standard": (base, None, None),
-        "rigid": (rigid, None, None),
-        "standard undamped": (base, 0.0, None),
-        "rigid undamped": (rigid, 0.0, None),
-        "standard rigid modes + mode 1": (base, None, 1),
-    }
-    for name, (model, zeta, modes) in cases.items():
-        kw = {"zeta": zeta, "output_step": None}
-        if modes is not None:
-            kw["modes"] = modes
-        rs = [simulate(model, position=p, speed=SPEED, **kw) for p in x]
-        out[f"COR {name} [-]"] = np.array([r.cor for r in rs])
-        out[f"contact time {name} [s]"] = np.array([r.contact_time for r in rs])
     props = base.props
     closed = [rigid_impact_at(props, p, SPEED) for p in x]
-    out["COR eq 12 rigid undamped [-]"] = np.array([c.cor for c in closed])
-    out["contact time eq 11 rigid undamped [s]"] = np.array([c.contact_time for c in closed])
     xw = np.linspace(0.30, 0.95, 27 if quick else 66)
-    cor_wide = [simulate(rigid, position=p, speed=SPEED, output_step=None).cor for p in xw]
+    if law is None:
+        cases = {
+            "standard": (base, None, None),
+            "rigid": (rigid, None, None),
+            "standard undamped": (base, 0.0, None),
+            "rigid undamped": (rigid, 0.0, None),
+            "standard rigid modes + mode 1": (base, None, 1),
+        }
+        for name, (model, zeta, modes) in cases.items():
+            kw = {"zeta": zeta, "output_step": None}
+            if modes is not None:
+                kw["modes"] = modes
+            rs = [simulate(model, position=p, speed=SPEED, **kw) for p in x]
+            out[f"COR {name} [-]"] = np.array([r.cor for r in rs])
+            out[f"contact time {name} [s]"] = np.array([r.contact_time for r in rs])
+        out["COR eq 12 rigid undamped [-]"] = np.array([c.cor for c in closed])
+        out["contact time eq 11 rigid undamped [s]"] = np.array([c.contact_time for c in closed])
+        cor_wide = [simulate(rigid, position=p, speed=SPEED, output_step=None).cor for p in xw]
+    else:
+        m_b = Ball().mass
+        elastic = elastic_counterpart(law)
+        runs = {
+            "standard": (law, base, None),
+            "rigid": (law, rigid, None),
+            "standard undamped": (elastic, base, None),
+            "rigid undamped": (elastic, rigid, None),
+            "standard rigid modes + mode 1": (law, base, 1),
+        }
+        for name, (used, model, flexible) in runs.items():
+            if used is None:
+                continue
+            cor, tc = free_impacts(used, model, x, SPEED, m_b, flexible=flexible)
+            out[f"COR {name} [-]"], out[f"contact time {name} [s]"] = cor, tc
+        if elastic is not None:
+            out["COR eq 12 rigid undamped [-]"] = np.array([c.cor for c in closed])
+            out["contact time eq 11 rigid undamped [s]"] = rigid_contact_time(
+                elastic, base, x, SPEED, m_b
+            )
+        cor_wide = free_impacts(law, rigid, xw, SPEED, m_b)[0]
     refs = {
         "node_x_over_l": float(mode_nodes(base.fe, base.modes(1).shapes[:, 0])[-1]),
         "cg_x_over_l": props.cg_over_length,
@@ -62,14 +100,17 @@ def position_sweep(quick: bool = False) -> tuple[dict[str, np.ndarray], dict[str
     return out, refs
 
 
-def cor_position(quick: bool = False) -> FigureData:
+def _title(text: str, law: ContactLaw | None) -> str:
+    return text if law is None else f"{text}, {law_title(law)} law"
+
+
+def cor_position(quick: bool = False, law: ContactLaw | None = None) -> FigureData:
     """COR against impact position (Fig 8)."""
-    data, refs = position_sweep(quick)
+    data, refs = position_sweep(quick, law)
     x = data["position [x/L]"]
     cols = {k: v for k, v in data.items() if not k.startswith("contact time")}
     std, rig = data["COR standard [-]"], data["COR rigid [-]"]
     loss = rig - std
-    loss0 = data["COR rigid undamped [-]"] - data["COR standard undamped [-]"]
     fit = np.polyfit(x, rig, 1)
     values = dict(refs)
     values.update(
@@ -85,37 +126,40 @@ def cor_position(quick: bool = False) -> FigureData:
             "vibration_loss_argmin_x_over_l": float(x[np.argmin(loss)]),
             "vibration_loss_min": float(loss.min()),
             "vibration_loss_max": float(loss.max()),
-            "vibration_loss_undamped_argmin_x_over_l": float(x[np.argmin(loss0)]),
-            "eq16_max_excess": float(
-                np.max(data["COR standard undamped [-]"] - data["COR eq 12 rigid undamped [-]"])
-            ),
-            "eq12_vs_rigid_fe_max_diff": float(
-                np.max(
-                    np.abs(data["COR eq 12 rigid undamped [-]"] - data["COR rigid undamped [-]"])
-                )
-            ),
             "mode1_only_max_cor_diff": float(
                 np.max(np.abs(data["COR standard rigid modes + mode 1 [-]"] - std))
             ),
         }
     )
+    nan = float("nan")
+    if "COR standard undamped [-]" in data:  # not for a law without an elastic counterpart
+        std0, rig0 = data["COR standard undamped [-]"], data["COR rigid undamped [-]"]
+        eq12 = data["COR eq 12 rigid undamped [-]"]
+        values["vibration_loss_undamped_argmin_x_over_l"] = float(x[np.argmin(rig0 - std0)])
+        values["eq16_max_excess"] = float(np.max(std0 - eq12))
+        values["eq12_vs_rigid_fe_max_diff"] = float(np.max(np.abs(eq12 - rig0)))
+    else:
+        for key in ("vibration_loss_undamped_argmin_x_over_l", "eq16_max_excess",
+                    "eq12_vs_rigid_fe_max_diff"):  # fmt: skip
+            values[key] = nan
     return FigureData(
         "fig08_cor_position",
-        "Fig. 8: coefficient of restitution against impact position, 20 m/s",
+        _title("Fig. 8: coefficient of restitution against impact position, 20 m/s", law),
         {"cor": cols},
         values,
+        law="" if law is None else law_title(law),
     )
 
 
-def contact_time_position(quick: bool = False) -> FigureData:
+def contact_time_position(quick: bool = False, law: ContactLaw | None = None) -> FigureData:
     """Contact time against impact position (Fig 9)."""
-    data, refs = position_sweep(quick)
+    data, refs = position_sweep(quick, law)
     cols = {"position [x/L]": data["position [x/L]"]}
     cols.update({k: v for k, v in data.items() if k.startswith("contact time")})
     fe = {k: v for k, v in cols.items() if k.startswith("contact time") and "eq 11" not in k}
     std, rig = cols["contact time standard [s]"], cols["contact time rigid [s]"]
-    eq11 = cols["contact time eq 11 rigid undamped [s]"]
     allfe = np.array(list(fe.values()))
+    rigids = [v for k, v in fe.items() if k.startswith("contact time rigid")]
     values = dict(refs)
     values.update(
         {
@@ -123,30 +167,37 @@ def contact_time_position(quick: bool = False) -> FigureData:
             "tc_max_s": float(allfe.max()),
             "tc_standard_min_s": float(std.min()),
             "tc_standard_max_s": float(std.max()),
-            "tc_rigid_decreasing": float(
-                np.all(np.diff(rig) < 0.0)
-                and np.all(np.diff(cols["contact time rigid undamped [s]"]) < 0.0)
-            ),
+            "tc_rigid_decreasing": float(all(np.all(np.diff(v) < 0.0) for v in rigids)),
             "tc_max_rel_rise": float(
                 max(np.max(np.maximum.accumulate(v[::-1])[::-1] / v - 1.0) for v in fe.values())
             ),
             "tc_end_below_start": float(all(v[-1] < v[0] for v in fe.values())),
             "tc_rigidity_max_rel_diff": float(np.max(np.abs(std / rig - 1.0))),
-            "tc_damping_max_rel_diff": float(
-                np.max(np.abs(std / cols["contact time standard undamped [s]"] - 1.0))
-            ),
-            "tc_fe_vs_eq11_max_rel_diff": float(np.max(np.abs(allfe / eq11 - 1.0))),
-            "tc_rigid_undamped_vs_eq11_max_rel_diff": float(
-                np.max(np.abs(cols["contact time rigid undamped [s]"] / eq11 - 1.0))
+            "tc_rigidity_argmax_x_over_l": float(
+                cols["position [x/L]"][np.argmax(np.abs(std / rig - 1.0))]
             ),
             "tc_standard_position_spread": float(std.max() / std.min() - 1.0),
         }
     )
+    nan = float("nan")
+    if "contact time standard undamped [s]" in cols:
+        eq11 = cols["contact time eq 11 rigid undamped [s]"]
+        undamped = cols["contact time standard undamped [s]"]
+        values["tc_damping_max_rel_diff"] = float(np.max(np.abs(std / undamped - 1.0)))
+        values["tc_fe_vs_eq11_max_rel_diff"] = float(np.max(np.abs(allfe / eq11 - 1.0)))
+        values["tc_rigid_undamped_vs_eq11_max_rel_diff"] = float(
+            np.max(np.abs(cols["contact time rigid undamped [s]"] / eq11 - 1.0))
+        )
+    else:
+        for key in ("tc_damping_max_rel_diff", "tc_fe_vs_eq11_max_rel_diff",
+                    "tc_rigid_undamped_vs_eq11_max_rel_diff"):  # fmt: skip
+            values[key] = nan
     return FigureData(
         "fig09_contact_time_position",
-        "Fig. 9: contact time against impact position, 20 m/s",
+        _title("Fig. 9: contact time against impact position, 20 m/s", law),
         {"contact_time": cols},
         values,
+        law="" if law is None else law_title(law),
     )
 
 

@@ -8,7 +8,7 @@ functions return their figure; :func:`fem_racket.paper.figures.base.write_figure
 
 from __future__ import annotations
 
-__all__ = ["mark_position", "pyplot"]
+__all__ = ["loss_labels", "mark_position", "plot_title", "pyplot"]
 
 
 def pyplot():
@@ -33,3 +33,19 @@ def mark_position(ax, x: float, label: str, color: str) -> None:
         color=color,
         fontsize=8,
     )
+
+
+def loss_labels(data) -> tuple[str, str]:
+    """Legend labels of the curves with and without the ball/string losses: the paper's zeta
+    and zeta = 0, or a contact law's name and its elastic counterpart (``data.law``)."""
+    if not data.law:
+        return "ζ = 0.059", "ζ = 0"
+    return data.law, "elastic counterpart"
+
+
+def plot_title(data) -> str:
+    """``data.title`` with a contact law's name (its ending ``", NAME law"``) on its own line."""
+    tail = f", {data.law} law"
+    if data.law and data.title.endswith(tail):
+        return data.title[: -len(tail)] + f"\n{data.law} law"
+    return data.title

@@ -20,6 +20,8 @@ __all__ = ["ball_string", "frame_modes"]
 
 def ball_string(data: FigureData) -> Figure:
     """Figs 2-3 inputs: K_CB and C_CB, clamped COR and contact times against speed."""
+    if data.law:
+        return _ball_string_law(data)
     plt = pyplot()
     c, pts = data.tables["curve"], data.tables["paper_points"]
     v = c["speed [m/s]"]
@@ -50,6 +52,47 @@ def ball_string(data: FigureData) -> Figure:
     for i, k in enumerate(k for k in c if k.startswith("free frame")):
         pos = k.split(" at ")[1].split(" [")[0]
         ax[2].plot(v, c[k] * 1e3, f"C{i}--", label=f"free standard frame, {pos}")
+    ax[2].set(
+        xlabel="impact speed V_B0 [m/s]", ylabel="contact time [ms]", title="(c) contact time"
+    )
+    ax[2].legend(fontsize=8)
+    for a in ax:
+        a.grid(alpha=0.3)
+    fig.suptitle(data.title + f" (m_B = {DEFAULT_BALL_MASS} kg)")
+    return fig
+
+
+def _ball_string_law(data: FigureData) -> Figure:
+    """Figs 2-3 under a contact law: its equivalent K_CB, clamped COR and contact times beside
+    the paper's linear K_CB, with the paper's 6-3 ms for real impacts."""
+    plt = pyplot()
+    c, pts = data.tables["curve"], data.tables["paper_points"]
+    v = c["speed [m/s]"]
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6), layout="constrained")
+    ax[0].plot(v, c["equivalent K_CB [N/m]"] / 1e4, "C0-", label=f"{data.law}: m_B (π/T_c)²")
+    ax[0].plot(v, c["paper K_CB [N/m]"] / 1e4, "k:", label="paper's interpolation")
+    ax[0].plot(pts["speed [m/s]"], pts["K_CB [N/m]"] / 1e4, "ko", label="paper, section 2.1.1")
+    ax[0].set(
+        xlabel="impact speed V_B0 [m/s]",
+        ylabel="K_CB [10⁴ N/m]",
+        title="(a) equivalent ball/string stiffness (Fig. 2)",
+    )
+    ax[0].legend(loc="upper left", fontsize=8)
+    ax[1].plot(v, c["clamped COR [-]"], "C0-", label=data.law)
+    ax[1].axhline(0.83, color="k", ls=":", label="paper: 0.83 (eq 4)")
+    ax[1].set(
+        xlabel="impact speed V_B0 [m/s]",
+        ylabel="COR, clamped frame [-]",
+        ylim=(0, 1),
+        title="(b) clamped-frame COR (Fig. 3)",
+    )
+    ax[1].legend(fontsize=8)
+    ax[2].axhspan(3.0, 6.0, color="0.9", label="paper: 6-3 ms for real impacts")
+    ax[2].plot(v, c["paper clamped contact time [s]"] * 1e3, "k:", label="paper's K_CB, clamped")
+    ax[2].plot(v, c["clamped contact time [s]"] * 1e3, "k-", label=f"{data.law}, clamped")
+    for i, k in enumerate(k for k in c if k.startswith("free frame")):
+        pos = k.split(" at ")[1].split(" [")[0]
+        ax[2].plot(v, c[k] * 1e3, f"C{i}--", label=f"{data.law}, free standard frame, {pos}")
     ax[2].set(
         xlabel="impact speed V_B0 [m/s]", ylabel="contact time [ms]", title="(c) contact time"
     )
