@@ -28,6 +28,7 @@ Shock measures: :mod:`fem_racket.impact.held_shock`.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -44,7 +45,7 @@ from fem_racket.impact.closed_form import (
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, cutoff_factor
 from fem_racket.validation import InputError, check_range
 
-__all__ = ["HeldBasis", "HeldContact", "held_basis", "held_contact"]
+__all__ = ["HeldBasis", "HeldContact", "held_basis", "held_contact", "held_contacts"]
 
 #: Eigenvalues of (K_held, M_held) below this fraction of the largest are rigid-body modes.
 RIGID = 1e-10
@@ -210,18 +211,53 @@ def held_contact(
         COR tolerance choosing the modes kept (:func:`fem_racket.impact.reduction.
         cutoff_factor`); None keeps every mode.
     """
-    pos = check_range("position", position, 0.0, 1.0, unit="x/L")
+    (c,) = held_contacts(
+        basis, [position], [speed], ball_mass=ball_mass, kcb=kcb, zeta=zeta, tolerance=tolerance
+    )
+    return c
+
+
+def held_contacts(
+    basis: HeldBasis,
+    positions: Sequence[float],
+    speeds: Sequence[float],
+    *,
+    ball_mass: float | None = None,
+    kcb: float | None = None,
+    zeta: float | None = None,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+) -> list[HeldContact]:
+    """:func:`held_contact` for each pair of ``positions`` (x/L) and ``speeds`` [m/s]."""
+    x = [check_range("position", p, 0.0, 1.0, unit="x/L") for p in positions]
+    if len(x) != len(speeds):
+        raise InputError(f"{len(x)} positions and {len(speeds)} speeds: need as many of each")
     ball = Ball() if ball_mass is None else Ball(ball_mass)
-    law = LinearContact.for_speed(speed, kcb=kcb, zeta=zeta)
+    fe = basis.fe
+    g = fe.field_matrix(np.asarray(x) * fe.mesh.length, 0).toarray()
+    a_r, a = g @ basis.rigid[: fe.ndof], g @ basis.shapes[: fe.ndof]
+    beta = cutoff_factor(tolerance)
+    return [
+        _contact(basis, a_r[i], a[i], LinearContact.for_speed(v, kcb=kcb, zeta=zeta), ball, v, beta)
+        for i, v in enumerate(speeds)
+    ]
+
+
+def _contact(
+    basis: HeldBasis,
+    a_r: np.ndarray,
+    a: np.ndarray,
+    law: LinearContact,
+    ball: Ball,
+    speed: float,
+    beta: float,
+) -> HeldContact:
+    """One impact from the modes' values at the impact point (module docstring)."""
     k, c, mb = law.stiffness, law.damping(ball.mass), ball.mass
-    fe, j = basis.fe, basis.hand_row
-    g = fe.point_vector(pos * fe.mesh.length)
-    a_r = basis.rigid[: fe.ndof].T @ g
-    a = basis.shapes[: fe.ndof].T @ g
+    j = basis.hand_row
     p = basis.shapes[j]
     mu0 = 1.0 / mb + float(a_r @ a_r)
     omega_c = math.sqrt(k * mu0)
-    kept = int(np.sum(basis.omega < cutoff_factor(tolerance) * omega_c))
+    kept = int(np.sum(basis.omega < beta * omega_c))
     w2 = basis.omega**2
     af, wf2, pf = a[:kept], w2[:kept], p[:kept]
     D = basis.damping[:kept, :kept]

@@ -17,7 +17,7 @@ frame's bending and the hand's own motion on the grip layer). Two measures over 
 Each phase is a sum of exponentials F_v = Re sum_j w_j exp(lambda_j s), real, so its energy
 over a phase of length tau is exact::
 
-    int_0^tau F_v^2 ds = Re sum_jk w_j w_k (exp((lambda_j + lambda_k) tau) - 1) / (lambda_j + lambda_k)
+    int_0^tau F_v^2 ds = Re sum_jk w_j w_k (exp(s_jk tau) - 1) / s_jk,   s_jk = lambda_j + lambda_k
 
 The peak is the largest |F_h| on a grid of :data:`GRID` points per contact time, refined on a
 grid 128 times finer around it.

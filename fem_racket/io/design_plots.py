@@ -10,7 +10,7 @@ import os
 import numpy as np
 
 from fem_racket.studies.design.problem import DesignProblem
-from fem_racket.studies.design.variables import OBJECTIVES
+from fem_racket.studies.design.variables import OBJECTIVES, sense
 
 __all__ = ["plot_map", "plot_pareto", "plot_progress", "plot_sobol"]
 
@@ -51,13 +51,14 @@ def plot_progress(result, path: str | os.PathLike) -> None:
     fig, ax = plt.subplots(figsize=(7, 4))
     ax.plot(batch[~ok], f[~ok], ".", color="0.8", ms=3, label="infeasible design")
     ax.plot(batch[ok], f[ok], ".", color="tab:blue", ms=3, alpha=0.5, label="feasible design")
+    s = sense(name)  # best = largest s f
     best = np.full(batch.max() + 1, np.nan)
     run = -np.inf
     for b in range(batch.max() + 1):
         sel = ok & (batch == b)
         if sel.any():
-            run = max(run, f[sel].max())
-        best[b] = run if np.isfinite(run) else np.nan
+            run = max(run, (s * f[sel]).max())
+        best[b] = s * run if np.isfinite(run) else np.nan
     ax.step(np.arange(best.size), best, where="post", color="tab:red", label="best feasible")
     ax.axhline(result.start_objective, color="k", ls="--", lw=1, label="starting racket")
     ax.set_xlabel("batch (iteration or generation)")
