@@ -157,6 +157,7 @@ def plot_pareto(result, path: str | os.PathLike) -> None:
         axes[1].set_xlim(lo[0] - pad[0], hi[0] + pad[0])
         axes[1].set_ylim(lo[1] - pad[1], hi[1] + pad[1])
         axes[1].set_title("the front, zoomed", fontsize=9)
+        axes[1].locator_params(axis="x", nbins=5)
         axes = axes[[0, 2, 3]]
     for c, i in zip(colors, picks, strict=False):
         mesh = p.mesh(result.pareto_x[i])

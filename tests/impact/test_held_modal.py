@@ -11,7 +11,7 @@ from fem_racket.impact.held import simulate_held
 from fem_racket.impact.held_modal import held_basis, held_contact
 from fem_racket.impact.held_shock import grip_peak, vibration_energy, vibration_rms
 from fem_racket.impact.simulate import simulate
-from fem_racket.validation import InputError
+from fem_racket.validation import AccuracyError, InputError
 
 GRIPS = {"loose": LOOSE_GRIP, "firm": FIRM_GRIP}
 
@@ -115,6 +115,8 @@ def test_a_feather_hand_leaves_the_free_racket(standard_model):
 def test_bad_inputs(standard_model, bases):
     with pytest.raises(InputError, match="grip stiffness = 0.0"):
         held_basis(standard_model.fe, Hand(stiffness=0.0))
+    with pytest.raises(AccuracyError, match="rigid-body modes are not separated"):
+        held_basis(standard_model.fe, Hand(stiffness=1e-9))
     c = held_contact(bases["loose"], position=0.75, speed=20.0)
     with pytest.raises(InputError, match="window = 0.001 s"):
         vibration_rms(c, 0.001)
