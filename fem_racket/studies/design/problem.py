@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from dataclasses import dataclass, field, replace
+from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -288,17 +288,7 @@ class DesignProblem:
             "elements": self.elements,
             "modes": "by tolerance" if self.modes is None else self.modes,
             "tolerance": self.tolerance,
-        } | ({"hand": self._hand(), "shock_window_s": self.shock_window} if self.shock else {})
-
-    def _hand(self) -> dict[str, Any]:
-        h = self.hand
-        return {
-            "mass_kg": h.mass,
-            "grip_m": [h.grip_start, h.grip_end],
-            "stiffness_n_m2": h.stiffness,
-            "damping_n_s_m2": h.damping,
-            "inertia_kg_m2": h.rotary_inertia,
-        }
+        } | ({"hand": asdict(self.hand), "shock_window_s": self.shock_window} if self.shock else {})
 
     @property
     def digest(self) -> str:
