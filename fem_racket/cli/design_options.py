@@ -10,9 +10,11 @@ from typing import Any
 
 from fem_racket.cli.common import add_frame_options, frame_from_args, run_parameters
 from fem_racket.cli.lists import number_list
+from fem_racket.frame.hand import GRIPS
+from fem_racket.impact.held_shock import DEFAULT_WINDOW
 from fem_racket.studies.design.build import ZONES, design_problem
 from fem_racket.studies.design.problem import DesignProblem
-from fem_racket.studies.design.variables import OBJECTIVES
+from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
 from fem_racket.studies.executors import BACKENDS
 
 __all__ = [
@@ -180,9 +182,11 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         **number_list(str),
         default=["cor"],
         metavar="LIST",
-        help="maximised, comma list of "
+        help="comma list of "
         + ", ".join(OBJECTIVES)
-        + " (default cor; nsga2 takes 2-3)",
+        + " (maximised; "
+        + ", ".join(sorted(MINIMISED))
+        + " minimised) (default cor; nsga2 takes 2-3)",
     )
     o.add_argument(
         "--power-fraction",
@@ -197,6 +201,21 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         default=0.0,
         metavar="PER_N_M2",
         help="subtracted from the objectives per N m^2 of EI_1 (default 0)",
+    )
+    o.add_argument(
+        "--grip",
+        choices=tuple(GRIPS),
+        default="loose",
+        help="the hand of handle_shock and peak_grip_force: an illustrative loose or firm grip "
+        "(assumptions, fem_racket.frame.hand) (default loose)",
+    )
+    o.add_argument(
+        "--shock-window",
+        type=float,
+        default=DEFAULT_WINDOW,
+        metavar="S",
+        help=f"window of the handle-shock measures from the start of contact [s] "
+        f"(default {DEFAULT_WINDOW:g})",
     )
     for dest, (_, text) in CONSTRAINTS.items():
         o.add_argument(
@@ -276,5 +295,7 @@ def problem_from_args(args: argparse.Namespace) -> DesignProblem:
         "ball_mass": args.ball_mass,
         "zeta": args.zeta,
         "elements": args.elements,
+        "grip": args.grip,
+        "shock_window": args.shock_window,
     }
     return design_problem(frame_from_args(args), **kwargs)

@@ -1,6 +1,7 @@
 """``fem-racket optimize``: search a racket design (stiffness and mass distribution, added
-masses) maximising the ball's rebound or speed over an impact zone, within a mass, balance,
-swing-weight and frequency budget; writes the optimum, its report, the history and figures."""
+masses) maximising the ball's rebound or speed (or minimising the handle shock) over an impact
+zone, within a mass, balance, swing-weight and frequency budget; writes the optimum, its report,
+the history and figures."""
 
 from __future__ import annotations
 

@@ -27,7 +27,7 @@ import numpy as np
 from fem_racket.frame.forms import FrameFE
 from fem_racket.validation import InputError, check_finite, check_positive
 
-__all__ = ["FIRM_GRIP", "LOOSE_GRIP", "Hand", "HeldFrame", "held_frame", "held_modes"]
+__all__ = ["FIRM_GRIP", "GRIPS", "LOOSE_GRIP", "Hand", "HeldFrame", "held_frame", "held_modes"]
 
 
 @dataclass(frozen=True)
@@ -87,6 +87,8 @@ class Hand:
 #: Illustrative loose and firm grips (assumptions; module docstring).
 LOOSE_GRIP = Hand(stiffness=1e5, damping=100.0)
 FIRM_GRIP = Hand(stiffness=3e5, damping=1000.0)
+#: The presets by name.
+GRIPS = {"loose": LOOSE_GRIP, "firm": FIRM_GRIP}
 
 
 @dataclass(frozen=True, eq=False)

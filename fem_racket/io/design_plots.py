@@ -10,7 +10,7 @@ import os
 import numpy as np
 
 from fem_racket.studies.design.problem import DesignProblem
-from fem_racket.studies.design.variables import OBJECTIVES
+from fem_racket.studies.design.variables import OBJECTIVES, sense
 
 __all__ = ["plot_map", "plot_pareto", "plot_progress", "plot_sobol"]
 
@@ -51,13 +51,14 @@ def plot_progress(result, path: str | os.PathLike) -> None:
     fig, ax = plt.subplots(figsize=(7, 4))
     ax.plot(batch[~ok], f[~ok], ".", color="0.8", ms=3, label="infeasible design")
     ax.plot(batch[ok], f[ok], ".", color="tab:blue", ms=3, alpha=0.5, label="feasible design")
+    s = sense(name)  # best = largest s f
     best = np.full(batch.max() + 1, np.nan)
     run = -np.inf
     for b in range(batch.max() + 1):
         sel = ok & (batch == b)
         if sel.any():
-            run = max(run, f[sel].max())
-        best[b] = run if np.isfinite(run) else np.nan
+            run = max(run, (s * f[sel]).max())
+        best[b] = s * run if np.isfinite(run) else np.nan
     ax.step(np.arange(best.size), best, where="post", color="tab:red", label="best feasible")
     ax.axhline(result.start_objective, color="k", ls="--", lw=1, label="starting racket")
     ax.set_xlabel("batch (iteration or generation)")
@@ -119,34 +120,45 @@ def plot_map(problem: DesignProblem, maps: dict, path: str | os.PathLike) -> Non
     _save(fig, path)
 
 
+#: The front gets a zoomed panel when it spans less than this fraction of the designs' range in
+#: each objective.
+ZOOM_BELOW = 0.25
+
+
 def plot_pareto(result, path: str | os.PathLike) -> None:
-    """Every evaluated design, the Pareto front, and EI(x), rhoA(x) of three front designs."""
+    """Every evaluated design, the Pareto front (zoomed in a second panel when it is small),
+    and EI(x), rhoA(x) of three front designs."""
     plt = _pyplot()
     p = result.problem
     names = result.evaluator.names
     _, y, _ = result.evaluator.arrays()
     k0, k1 = names.index(p.objectives[0]), names.index(p.objectives[1])
     ok = feasible(p, names, y)
-    fig, axes = plt.subplots(1, 3, figsize=(14, 4.2))
-    ax = axes[0]
-    ax.plot(y[~ok, k0], y[~ok, k1], ".", color="0.85", ms=3, label="infeasible")
-    ax.plot(y[ok, k0], y[ok, k1], ".", color="0.55", ms=3, label="feasible")
     f = result.pareto_f
-    ax.plot(f[:, 0], f[:, 1], "o-", color="tab:red", ms=4, label="Pareto front")
-    ax.plot(
-        result.start_outputs[p.objectives[0]],
-        result.start_outputs[p.objectives[1]],
-        "k*",
-        ms=12,
-        label="starting racket",
-    )
+    s0 = [result.start_outputs[o] for o in p.objectives[:2]]
+    cloud = np.vstack([y[:, [k0, k1]], [s0]])
+    zoom = bool(np.all(np.ptp(f[:, :2], axis=0) < ZOOM_BELOW * np.ptp(cloud, axis=0)))
+    fig, axes = plt.subplots(1, 4 if zoom else 3, figsize=(18 if zoom else 14, 4.2))
     picks = sorted({0, len(f) // 2, len(f) - 1})
     colors = ["tab:blue", "tab:green", "tab:purple"]
-    for c, i in zip(colors, picks, strict=False):
-        ax.plot(f[i, 0], f[i, 1], "s", color=c, ms=8, mfc="none", mew=2)
-    ax.set_xlabel(OBJECTIVES[p.objectives[0]])
-    ax.set_ylabel(OBJECTIVES[p.objectives[1]])
-    ax.legend(fontsize=7)
+    for ax in axes[: 2 if zoom else 1]:
+        ax.plot(y[~ok, k0], y[~ok, k1], ".", color="0.85", ms=3, label="infeasible")
+        ax.plot(y[ok, k0], y[ok, k1], ".", color="0.55", ms=3, label="feasible")
+        ax.plot(f[:, 0], f[:, 1], "o-", color="tab:red", ms=4, label="Pareto front")
+        ax.plot(*s0, "k*", ms=12, label="starting racket")
+        for c, i in zip(colors, picks, strict=False):
+            ax.plot(f[i, 0], f[i, 1], "s", color=c, ms=8, mfc="none", mew=2)
+        ax.set_xlabel(OBJECTIVES[p.objectives[0]])
+        ax.set_ylabel(OBJECTIVES[p.objectives[1]])
+    axes[0].legend(fontsize=7)
+    if zoom:
+        lo, hi = f[:, :2].min(axis=0), f[:, :2].max(axis=0)
+        pad = 0.15 * np.maximum(hi - lo, 1e-9 * np.abs(hi))
+        axes[1].set_xlim(lo[0] - pad[0], hi[0] + pad[0])
+        axes[1].set_ylim(lo[1] - pad[1], hi[1] + pad[1])
+        axes[1].set_title("the front, zoomed", fontsize=9)
+        axes[1].locator_params(axis="x", nbins=5)
+        axes = axes[[0, 2, 3]]
     for c, i in zip(colors, picks, strict=False):
         mesh = p.mesh(result.pareto_x[i])
         xs = np.repeat(mesh.points, 2)[1:-1] / mesh.length

@@ -393,6 +393,11 @@ DESIGN_CASES = [
     ),
     Case("optimize-nsga2-one-objective", opt("--method", "nsga2"), ("objectives", "2 or 3")),
     Case("optimize-racket-speed", opt("--racket-speed", "-5"), ("racket speed = -5", "[0, 100]")),
+    Case(
+        "optimize-shock-window",
+        opt("--objective", "handle_shock", "--shock-window", "-1"),
+        ("shock window = -1", "> 0"),
+    ),
     Case("optimize-out-is-file", opt("--out", "afile"), ("afile", "folder"), A_FILE),
     Case("sensitivity-output", sens("--output", "nothing"), ("output = 'nothing'", "cor")),
     Case("sensitivity-designs", sens("--designs", "2"), ("designs = 2", ">= 6")),

@@ -115,3 +115,13 @@ def test_tour_runs_as_a_script(tmp_path, capsys, monkeypatch):
     names = {p.name for p in tmp_path.iterdir()}
     assert {"force.png", "sweep.png", "refine.png", "impact_vtk"} <= names
     assert (tmp_path / "impact_vtk" / "impact.pvd").is_file()
+
+
+def test_bench_held_script_runs(capsys):
+    # the held racket's exact path against CVODE: every mode agrees to round-off (measured
+    # ~1e-11 in COR), the default cut-off to its COR tolerance 1e-6 (x1.5, reduction.py)
+    rows = load(SCRIPTS / "bench_held.py").main(["--quick"])
+    every, cut = rows[1], rows[2]
+    assert every["cor_diff"] < 1e-9 and every["peak_grip_rel_diff"] < 1e-6
+    assert cut["cor_diff"] < 1.5e-6 and cut["speedup"] > 1.0
+    assert "CVODE" in capsys.readouterr().out

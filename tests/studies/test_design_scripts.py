@@ -23,7 +23,7 @@ def load(path: Path):
 
 def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
     rows = load(SCRIPTS / "design_study.py").main(["--quick", "--out", str(tmp_path / "d")])
-    assert [r["study"] for r in rows] == ["cor", "same_specs", "ball_speed", "pareto"]
+    assert [r["study"] for r in rows] == ["cor", "same_specs", "ball_speed", "pareto", "shock"]
     out = tmp_path / "d"
     data = json.loads((out / "result.json").read_text())
     assert data["objective_name"] == "cor"
@@ -38,6 +38,8 @@ def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
     assert modes["mass_kg"] == pytest.approx(data["outputs"]["mass_kg"], rel=1e-12)
     assert read_mesh(out / "optimum.vtu").length == pytest.approx(0.68)
     assert (out / "pareto" / "pareto.png").is_file()
+    shock = json.loads((out / "shock" / "result.json").read_text())
+    assert shock["outputs"]["handle_shock"] > 0.0 and (out / "shock" / "pareto.png").is_file()
     assert (out / "ball_speed" / "map.png").is_file()
 
 

@@ -14,11 +14,13 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
+from fem_racket.impact.held_shock import DEFAULT_WINDOW
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.swing import (
     SWING_EXPONENT,
@@ -90,6 +92,8 @@ def design_problem(
     ball_mass: float | None = None,
     zeta: float | None = None,
     elements: int = 20,
+    grip: str = "loose",
+    shock_window: float = DEFAULT_WINDOW,
 ) -> DesignProblem:
     """Build a design problem; see the module docstring and :func:`.problem.paper_problem`.
 
@@ -101,12 +105,15 @@ def design_problem(
     racket_speed : float, optional
         Swing: the reference point's speed towards the ball with the starting racket [m/s]
         (:class:`.swing.SwingModel`); a stationary racket when None.
+    grip : {"loose", "firm"}
+        The hand of the handle-shock objectives (:data:`fem_racket.frame.hand.GRIPS`).
     constraints : dict, optional
         Quantity name (:data:`.problem.QUANTITIES`) -> None, ``(low, high)`` or ``("start",)``.
     Other parameters
         As the fields of :class:`.problem.DesignProblem` and :func:`.problem.paper_problem`.
     """
     check_choice("zone", zone, ZONES)
+    check_choice("grip", grip, tuple(GRIPS))
     frame = standard_frame() if start is None else start
     if isinstance(frame, FrameMesh):
         frame = frame_from_mesh(frame)
@@ -151,6 +158,8 @@ def design_problem(
         stiffness_cost=stiffness_cost,
         power_fraction=power_fraction,
         elements=elements,
+        hand=GRIPS[grip],
+        shock_window=shock_window,
         **extra,
         region=np.linspace(0.5, 0.98, 25),
     )

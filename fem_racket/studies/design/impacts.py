@@ -1,18 +1,23 @@
-"""Apparent COR of one racket at many (position, speed) cases: the design studies' only impact call.
+"""Impacts of one racket at many (position, speed) cases: the design studies' only impact calls.
 
-Every objective goes through :func:`apparent_cor`, so the impact engine behind it is chosen in one
-place: the batched engine (:func:`fem_racket.impact.engine.impacts`), all of a design's cases in
-one call, its modes computed once per design.
+Every objective goes through :func:`apparent_cor` or :func:`handle_shock`, so the impact engines
+behind them are chosen in one place: the batched engine (:func:`fem_racket.impact.engine.impacts`),
+all of a design's cases in one call, its modes computed once per design; and for the hand-held
+racket the exact modal path (:mod:`fem_racket.impact.held_modal`), the modes of frame + hand
+computed once per design.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.engine import impacts
+from fem_racket.impact.held_modal import held_basis, held_contacts
+from fem_racket.impact.held_shock import grip_peak, vibration_rms
 
-__all__ = ["apparent_cor"]
+__all__ = ["apparent_cor", "handle_shock"]
 
 
 def apparent_cor(
@@ -58,3 +63,47 @@ def apparent_cor(
         tolerance=tolerance,
     )
     return np.asarray(batch.cor).reshape(x.shape)
+
+
+def handle_shock(
+    model: FrameModel,
+    positions: np.ndarray,
+    speeds: np.ndarray,
+    *,
+    hand: Hand,
+    window: float,
+    ball_mass: float,
+    zeta: float,
+    tolerance: float | None,
+    peak: bool = True,
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Vibration RMS and peak of the grip force [N] of the racket held by ``hand``, each case.
+
+    Parameters
+    ----------
+    model : FrameModel
+    positions, speeds : ndarray
+        Impact points x/L and closing speeds [m/s] (a swing is a rigid motion of racket and
+        hand superposed on the stationary impact at the closing speed), broadcast together.
+    hand : Hand
+    window : float
+        Window of the shock measures [s] (:mod:`fem_racket.impact.held_shock`).
+    ball_mass, zeta, tolerance
+        As for :func:`apparent_cor`.
+    peak : bool
+        Compute the peaks too (about half again the cost).
+
+    Returns
+    -------
+    rms, peak : ndarray
+        Shape of the broadcast inputs (peak None unless asked for).
+    """
+    x, v = np.broadcast_arrays(np.asarray(positions, float), np.asarray(speeds, float))
+    basis = held_basis(model.fe, hand)
+    cases = held_contacts(
+        basis, x.ravel(), v.ravel(), ball_mass=ball_mass, zeta=zeta, tolerance=tolerance
+    )
+    rms = np.array([vibration_rms(c, window) for c in cases]).reshape(x.shape)
+    if not peak:
+        return rms, None
+    return rms, np.array([grip_peak(c, window) for c in cases]).reshape(x.shape)

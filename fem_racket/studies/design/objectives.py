@@ -14,7 +14,16 @@ Objectives (maximised), weights w_k of the zone, n_v speeds:
   (:func:`fem_racket.studies.sweetspots.power_region`, as ``fem-racket map``); Hatze (1994)
   measures the same idea as an area on the string face (> 100 cm^2 on quality rackets).
 
-A stiffness price ``stiffness_cost`` [1/(N m^2)] times EI_1 is subtracted from each objective.
+Objectives minimised, of the racket held by the problem's hand (:mod:`fem_racket.frame.hand`,
+exact path :mod:`fem_racket.impact.held_modal`) struck at rest at the closing speed v_in + v_r
+(the swing being a rigid motion of racket and hand):
+
+- ``handle_shock``: (1/n_v) sum_v sum_k w_k RMS of the grip force's vibration part over the
+  shock window [N] (:mod:`fem_racket.impact.held_shock`);
+- ``peak_grip_force``: the same mean of the largest grip force over the window [N].
+
+A stiffness price ``stiffness_cost`` [1/(N m^2)] times EI_1 is subtracted from each maximised
+objective and added to each minimised one.
 Quantities: mass [kg], balance point [m], swing weight about 0.10 m [kg cm^2] (I_CG + M (x_CG -
 0.10)^2), first free-free frequency [Hz].
 """
@@ -28,10 +37,10 @@ import numpy as np
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.swing import ball_speed_out
-from fem_racket.studies.design.impacts import apparent_cor
+from fem_racket.studies.design.impacts import apparent_cor, handle_shock
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, mass_quantities
-from fem_racket.studies.design.variables import QUANTITIES
+from fem_racket.studies.design.variables import QUANTITIES, sense
 from fem_racket.studies.sweetspots import power_region
 
 __all__ = ["evaluate_design", "evaluate_rows", "output_names"]
@@ -67,6 +76,26 @@ def curves(
     return {"cor": cor, "ball_speed": ball_speed_out(cor, v_in, v_r)}
 
 
+def shock_curves(
+    problem: DesignProblem, model: FrameModel, inertia_pivot: float
+) -> dict[str, np.ndarray]:
+    """Handle shock over the zone at every speed: arrays (n_speeds, n_zone) [N]."""
+    x = problem.zone.positions
+    v = np.asarray(problem.speeds, dtype=float)[:, None] + speeds_along(problem, x, inertia_pivot)
+    rms, peak = handle_shock(
+        model,
+        x[None, :],
+        v,
+        hand=problem.hand,
+        window=problem.shock_window,
+        ball_mass=problem.ball_mass,
+        zeta=problem.zeta,
+        tolerance=problem.tolerance,
+        peak="peak_grip_force" in problem.objectives,
+    )
+    return {"handle_shock": rms, "peak_grip_force": peak}
+
+
 def evaluate_design(problem: DesignProblem, x: np.ndarray) -> dict[str, Any]:
     """Every output of one design (variables ``x`` [SI]): quantities and objectives."""
     mesh = problem.mesh(x)
@@ -91,6 +120,11 @@ def evaluate_design(problem: DesignProblem, x: np.ndarray) -> dict[str, Any]:
         c = curves(problem, model, problem.region, mq["inertia_pivot"])
         lo, hi = power_region(problem.region, c["ball_speed"][0], problem.power_fraction)
         out["power_region"] = (hi - lo) * problem.length - cost
+    if problem.shock:
+        c = shock_curves(problem, model, mq["inertia_pivot"])
+        for name in ("handle_shock", "peak_grip_force"):
+            if name in wanted:
+                out[name] = float(np.mean(problem.zone.mean(c[name]))) - sense(name) * cost
     return out
 
 

@@ -14,6 +14,7 @@ from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.scaling import NoBar, ScaledProblem, progress_bar
+from fem_racket.studies.design.variables import sense
 from fem_racket.validation import InputError, check_integer
 
 __all__ = ["pareto_front"]
@@ -28,10 +29,11 @@ def pareto_front(
     seed: int = 1,
     progress: bool | None = None,
 ) -> DesignResult:
-    """Pareto front of the problem's objectives (all maximised) by NSGA-II (pymoo).
+    """Pareto front of the problem's objectives (maximised, or minimised for those in
+    :data:`.variables.MINIMISED`) by NSGA-II (pymoo).
 
     Returns a :class:`DesignResult` whose ``pareto_x``/``pareto_f`` hold the non-dominated
-    feasible designs, sorted by the first objective; ``x`` is the one best in the first objective.
+    feasible designs, best first in the first objective; ``x`` is the one best in it.
     """
     from pymoo.algorithms.moo.nsga2 import NSGA2
     from pymoo.core.callback import Callback
@@ -48,6 +50,7 @@ def pareto_front(
     evaluator = Evaluator(problem) if evaluator is None else evaluator
     s = ScaledProblem(problem, evaluator, 1e-4, NoBar())
     k = [evaluator.column(o) for o in problem.objectives]
+    signs = np.array([sense(o) for o in problem.objectives])
     n_g = sum(
         1 if c.low == c.high else int(np.isfinite(c.low)) + int(np.isfinite(c.high))
         for c in problem.constraints
@@ -59,7 +62,7 @@ def pareto_front(
 
         def _evaluate(self, u: np.ndarray, out: dict, *args: Any, **kwargs: Any) -> None:
             y = evaluator(problem.from_unit(u))
-            out["F"] = -y[:, k]
+            out["F"] = -signs * y[:, k]
             if n_g:
                 ineq, eq = s.constraint_values(y)
                 tol = np.array(
@@ -89,8 +92,8 @@ def pareto_front(
         )
     u = np.atleast_2d(res.X)
     x = problem.from_unit(u)
-    f = -np.atleast_2d(res.F)
-    order = np.argsort(-f[:, 0])
+    f = -signs * np.atleast_2d(res.F)
+    order = np.argsort(-signs[0] * f[:, 0])
     x, f = x[order], f[order]
     names = evaluator.names
     y = evaluator(np.vstack([x[0], problem.x_start]))

@@ -13,15 +13,16 @@ on a log scale. The starting racket by default is the paper's (Kawazoe & Kanda 1
 sampled on the segments.
 
 Constraints bound derived quantities (:data:`QUANTITIES`): total mass, balance point, swing weight
-about 0.10 m, first free-free frequency. Objectives (:data:`OBJECTIVES`, all maximised) average
-over the impact zone (:mod:`.zone`) and the ball speeds; see :mod:`.objectives`.
+about 0.10 m, first free-free frequency. Objectives (:data:`OBJECTIVES`, maximised but for the
+handle shock's, minimised) average over the impact zone (:mod:`.zone`) and the ball speeds; see
+:mod:`.objectives`.
 """
 
 from __future__ import annotations
 
 import hashlib
 import json
-from dataclasses import dataclass, field, replace
+from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -32,17 +33,20 @@ from fem_racket.contact.linear import (
     PAPER_CLAMPED_COR,
     zeta_from_cor,
 )
+from fem_racket.frame.hand import Hand
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import Frame, Segment
+from fem_racket.impact.held_shock import DEFAULT_WINDOW
 from fem_racket.studies.design.swing import SwingModel, mass_quantities
-from fem_racket.studies.design.variables import OBJECTIVES, Constraint, Variable
+from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES, Constraint, Variable
 from fem_racket.studies.design.zone import ImpactZone, uniform_zone
 from fem_racket.validation import (
     InputError,
     check_choice,
     check_finite,
     check_integer,
+    check_positive,
     check_range,
 )
 
@@ -71,7 +75,8 @@ class DesignProblem:
         The player's swing for ``ball_speed`` and ``power_region`` (None: a stationary racket).
     constraints : tuple of Constraint
     objectives : tuple of str
-        Names from :data:`OBJECTIVES`, maximised (the first one for single-objective solvers).
+        Names from :data:`OBJECTIVES`, maximised, those in :data:`MINIMISED` minimised (the
+        first one for single-objective solvers).
     link_ei, link_rhoa : bool
         One variable "ei" (or "rhoa") sets every EI (rhoA) keeping the starting ratios.
     stiffness_cost : float
@@ -88,6 +93,11 @@ class DesignProblem:
         Flexible modes kept per impact (None: the engine's choice by ``tolerance``).
     tolerance : float or None
         COR tolerance of the impact engine (:mod:`fem_racket.impact.engine`; None: every mode).
+    hand : Hand
+        The hand on the grip for the handle-shock objectives (:mod:`fem_racket.frame.hand`).
+    shock_window : float
+        Window of the handle-shock measures from the start of contact [s]
+        (:mod:`fem_racket.impact.held_shock`).
     """
 
     segment_lengths: tuple[float, ...]
@@ -110,6 +120,8 @@ class DesignProblem:
     elements: int = 20
     modes: int | None = None
     tolerance: float | None = 1e-6
+    hand: Hand = field(default_factory=Hand)
+    shock_window: float = DEFAULT_WINDOW
 
     def __post_init__(self) -> None:
         n = self.n_segments
@@ -136,8 +148,20 @@ class DesignProblem:
                     f"{'0 <=' if floor == 0.0 else '0 <'} low < high, finite"
                 )
         self.mesh(self.x_start)  # checks the added masses' positions and widths
+        if self.shock:
+            check_positive("shock window", self.shock_window, "s")
+            if not self.hand.grip_end < self.length:
+                raise InputError(
+                    f"grip_end = {self.hand.grip_end!r} m is not allowed: must lie on the frame "
+                    f"(< {self.length:g} m)"
+                )
         if self.swing is not None and self.swing.reference_inertia is None:
             object.__setattr__(self, "swing", replace(self.swing, reference_inertia=self._i0()))
+
+    @property
+    def shock(self) -> bool:
+        """Whether an objective needs the hand-held racket (:data:`MINIMISED`)."""
+        return bool(MINIMISED & set(self.objectives))
 
     # -- layout -----------------------------------------------------------------------------
     @property
@@ -264,7 +288,7 @@ class DesignProblem:
             "elements": self.elements,
             "modes": "by tolerance" if self.modes is None else self.modes,
             "tolerance": self.tolerance,
-        }
+        } | ({"hand": asdict(self.hand), "shock_window_s": self.shock_window} if self.shock else {})
 
     @property
     def digest(self) -> str:

@@ -1,7 +1,8 @@
 """A design problem as the solvers see it: the unit box, a minimised scaled objective,
 constraints as ``>= 0`` / ``= 0`` functions with forward-difference gradients from one batch.
 
-Objectives are maximised: the solvers minimise ``-f / |f(start)|``. A constraint
+Objectives are maximised (minimised: those in :data:`.variables.MINIMISED`): the solvers
+minimise ``-s f / |f(start)|`` (s = +1, or -1 for a minimised one). A constraint
 ``low <= q <= high`` enters as ``(q - low) / s >= 0`` and ``(high - q) / s >= 0`` (``s`` its
 scale), or ``(q - low) / s = 0`` when low = high.
 """
@@ -15,6 +16,7 @@ import numpy as np
 
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.problem import DesignProblem
+from fem_racket.studies.design.variables import sense
 
 __all__ = ["NoBar", "ScaledProblem", "progress_bar"]
 
@@ -25,6 +27,7 @@ class ScaledProblem:
     def __init__(self, problem: DesignProblem, evaluator: Evaluator, step: float, bar: Any):
         self.problem, self.evaluator, self.step, self.bar = problem, evaluator, step, bar
         self.k_obj = evaluator.column(problem.objectives[0])
+        self.sense = sense(problem.objectives[0])
         y0 = evaluator(problem.x_start)[0]
         self.f_scale = max(abs(float(y0[self.k_obj])), 1e-12)
         self._u: np.ndarray | None = None
@@ -47,8 +50,8 @@ class ScaledProblem:
         return as_array(ineq), as_array(eq)
 
     def objective_values(self, y: np.ndarray) -> np.ndarray:
-        """-f / |f(start)| (minimised)."""
-        return -y[..., self.k_obj] / self.f_scale
+        """-s f / |f(start)| (minimised; module docstring)."""
+        return -self.sense * y[..., self.k_obj] / self.f_scale
 
     def _evaluate(self, u: np.ndarray) -> None:
         if self._u is not None and np.array_equal(u, self._u):
@@ -65,7 +68,7 @@ class ScaledProblem:
         self.ineq, self.dineq = ineq[0], ((ineq[1:] - ineq[0]) / h[:, None]).T
         self.eq, self.deq = eq[0], ((eq[1:] - eq[0]) / h[:, None]).T
         self.bar.update(1)
-        self.bar.set_postfix_str(f"{self.problem.objectives[0]} {-f[0] * self.f_scale:.6g}")
+        self.bar.set_postfix_str(f"{self.problem.objectives[0]} {y[0, self.k_obj]:.6g}")
 
     def fun(self, u: np.ndarray) -> float:
         self._evaluate(u)

@@ -3,7 +3,7 @@
 A :class:`Variable` is one entry of a racket's parameter vector (or, linked, all its EI or rhoA
 entries) with bounds; EI variables are searched on a log scale. A :class:`Constraint` bounds a
 derived quantity (:data:`QUANTITIES`) to a tolerance. Objectives (:data:`OBJECTIVES`) are
-maximised (:mod:`.objectives`).
+maximised, those in :data:`MINIMISED` (handle shock) minimised (:mod:`.objectives`).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import numpy as np
 
 from fem_racket.validation import InputError, check_choice
 
-__all__ = ["OBJECTIVES", "QUANTITIES", "Constraint", "Variable"]
+__all__ = ["MINIMISED", "OBJECTIVES", "QUANTITIES", "Constraint", "Variable", "sense"]
 
 #: Derived quantities a constraint can bound: name -> (label with units, tolerance).
 QUANTITIES: dict[str, tuple[str, float]] = {
@@ -28,7 +28,16 @@ OBJECTIVES: dict[str, str] = {
     "cor": "mean apparent COR e_A [1]",
     "ball_speed": "mean ball speed v_out [m/s]",
     "power_region": "power region length [m]",
+    "handle_shock": "mean handle shock, RMS grip vibration force [N]",
+    "peak_grip_force": "mean peak grip force [N]",
 }
+#: Objectives minimised (the others are maximised).
+MINIMISED = frozenset({"handle_shock", "peak_grip_force"})
+
+
+def sense(name: str) -> float:
+    """+1 for an objective maximised, -1 for one minimised (:data:`MINIMISED`)."""
+    return -1.0 if name in MINIMISED else 1.0
 
 
 @dataclass(frozen=True)
