@@ -41,10 +41,8 @@ modes, wanted only when every mode is kept, are less orthogonal).
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
-import scipy.sparse.linalg as spla
 
-from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.fe import FrameFE
 from fem_racket.validation import AccuracyError, InputError
 
 __all__ = ["DENSE_LIMIT", "DENSE_MAX", "RESIDUAL_TOL", "flexible_modes"]
@@ -167,9 +165,13 @@ def flexible_modes(fe: FrameFE, rigid: np.ndarray, n_modes: int) -> tuple[np.nda
             f"{DENSE_MAX // 2} elements)"
         )
     if dense:
+        import scipy.linalg as sla
+
         A = coords.apply(np.eye(n))
         mu, y = sla.eigh(0.5 * (A + A.T), subset_by_index=[n - n_modes, n - 1])
     else:
+        import scipy.sparse.linalg as spla
+
         op = spla.LinearOperator((n, n), matvec=coords.apply, matmat=coords.apply, dtype=float)
         v0 = np.random.default_rng(START_SEED).standard_normal(n)
         mu, y = spla.eigsh(op, k=n_modes, which="LA", v0=v0)
