@@ -44,4 +44,4 @@ def assemble(mesh: FrameMesh) -> FrameFE:
     p0 = basis.with_element(ElementLineP0())
     K = asm(bending, basis, EI=p0.interpolate(np.asarray(mesh.EI)))
     M = asm(mass, basis, rhoA=p0.interpolate(np.asarray(mesh.rhoA)))
-    return FrameFE(mesh=mesh, K=K.tocsr(), M=M.tocsr())
+    return FrameFE.from_matrices(mesh, K.tocsr(), M.tocsr())

@@ -13,8 +13,8 @@ shape functions per cell from monomials in global x, which loses precision as (x
 assembled matrices then differ from the exact ones by ~4e-12 (relative, largest entry) at 20
 elements, ~1e-9 at 80, ~5e-7 at 640 and ~1e-2 at 20 000 elements of the standard racket.
 :func:`assemble_closed_form` returns the same :class:`~fem_racket.frame.fe.FrameFE` (same DOF
-numbering) with exact matrices, without importing scikit-fem; :meth:`FrameModel.build` uses it
-on every mesh.
+numbering) with exact matrices, as their diagonals, importing neither scikit-fem nor scipy;
+:meth:`FrameModel.build` uses it on every mesh.
 
 :func:`strain_energy` evaluates q^T K q as a sum of squares of element curvatures (2-point Gauss,
 exact for the linear curvature of a cubic), which avoids the cancellation of q^T (K q) (K q of a
@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem_racket.frame.fe import FrameFE, nodal_dofs
+from fem_racket.frame.fe import BANDWIDTH, FrameFE
 from fem_racket.frame.mesh import FrameMesh
 
 __all__ = ["assemble_closed_form", "rayleigh_frequencies", "strain_energy"]
@@ -38,10 +38,16 @@ _M = np.array(
 _P = np.array([0, 1, 0, 1])
 
 
-def _cell_dofs(n_nodes: int) -> np.ndarray:
-    """DOF indices (w_a, w'_a, w_b, w'_b) of each cell, shape (n_nodes - 1, 4)."""
-    u, ux = nodal_dofs(n_nodes)
-    return np.column_stack([u[:-1], ux[:-1], u[1:], ux[1:]])
+def _bands(ke: np.ndarray) -> np.ndarray:
+    """Diagonals (see :func:`fem_racket.frame.fe.bands_of`) of the matrix assembled from the
+    element matrices ``ke`` (ncells, 4, 4) of consecutive cells: entry (i, j) of cell c lands on
+    row 2c + i, diagonal j - i; a node's entries sum its two cells' (in either order, the same)."""
+    n = 2 * (ke.shape[0] + 1)
+    bands = np.zeros((2 * BANDWIDTH + 1, n))
+    for i in range(4):
+        for j in range(4):
+            bands[BANDWIDTH + j - i, i : n - 2 + i : 2] += ke[:, i, j]
+    return bands
 
 
 def assemble_closed_form(mesh: FrameMesh) -> FrameFE:
@@ -50,20 +56,12 @@ def assemble_closed_form(mesh: FrameMesh) -> FrameFE:
     The returned :class:`~fem_racket.frame.fe.FrameFE` has the same DOF numbering as
     :func:`fem_racket.frame.forms.assemble`; only the round-off of K and M differs.
     """
-    import scipy.sparse as sp
-
     p = np.asarray(mesh.points, dtype=float)
     h = np.diff(p)
     scale = h[:, None, None] ** (_P[:, None] + _P[None, :])
     ke = (mesh.EI / h**3)[:, None, None] * _K * scale
     me = (mesh.rhoA * h / 420.0)[:, None, None] * _M * scale
-    dofs = _cell_dofs(p.size)
-    rows = np.repeat(dofs, 4, axis=1).ravel()
-    cols = np.tile(dofs, (1, 4)).ravel()
-    n = 2 * p.size
-    K = sp.csr_matrix((ke.ravel(), (rows, cols)), shape=(n, n))
-    M = sp.csr_matrix((me.ravel(), (rows, cols)), shape=(n, n))
-    return FrameFE(mesh=mesh, K=K, M=M)
+    return FrameFE(mesh, _bands(ke), _bands(me))
 
 
 def strain_energy(fe: FrameFE, q: np.ndarray) -> np.ndarray:
@@ -86,5 +84,5 @@ def strain_energy(fe: FrameFE, q: np.ndarray) -> np.ndarray:
 def rayleigh_frequencies(fe: FrameFE, shapes: np.ndarray) -> np.ndarray:
     """Rayleigh-quotient frequencies [Hz] of mode ``shapes`` (ndof, n), cancellation-free energy."""
     shapes = np.asarray(shapes, dtype=float)
-    kinetic = np.einsum("ij,ij->j", shapes, fe.M @ shapes)
+    kinetic = np.einsum("ij,ij->j", shapes, fe.mass_product(shapes))
     return np.sqrt(strain_energy(fe, shapes) / kinetic) / (2.0 * np.pi)

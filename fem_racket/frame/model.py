@@ -99,5 +99,5 @@ class FrameModel:
     def scaled(self, ei_factor: float) -> FrameModel:
         """The same frame with every EI multiplied by ``ei_factor`` (modes reused)."""
         f = check_positive("ei_factor", ei_factor)
-        fe = FrameFE(mesh=self.fe.mesh.scaled(f), K=self.fe.K * f, M=self.fe.M)
+        fe = FrameFE(self.fe.mesh.scaled(f), self.fe.K_bands * f, self.fe.M_bands)
         return FrameModel(fe, {n: m.scaled(f) for n, m in self._modes.items()})
