@@ -13,8 +13,6 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-from fem_racket.version import __version__
-
 #: Public names by the module that defines them (relative to ``fem_racket``).
 _PUBLIC: dict[str, tuple[str, ...]] = {
     "contact.hunt_crossley": ("HuntCrossley",),
@@ -61,10 +59,11 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "studies.sweep": ("sweep",),
     "studies.sweetspots": ("SweetSpots", "centre_of_percussion"),
     "validation": ("InputError",),
+    "version": ("__version__",),
 }
 _HOME = {name: module for module, names in _PUBLIC.items() for name in names}
 
-__all__ = ["__version__", *_HOME]
+__all__ = list(_HOME)
 
 
 def __getattr__(name: str) -> Any:

@@ -28,6 +28,7 @@ import logging
 import os
 import sys
 from collections.abc import Sequence
+from typing import Any
 
 from fem_racket.cli.parser import OneLineErrorParser
 from fem_racket.cli.runfile import apply_config
@@ -42,7 +43,6 @@ from fem_racket.cli.signals import (
 from fem_racket.outputs import OutputError
 from fem_racket.studies.executors import pin_blas_threads
 from fem_racket.validation import InputError, show
-from fem_racket.version import __version__
 
 __all__ = ["main"]
 
@@ -76,6 +76,20 @@ def _command_named(argv: Sequence[str]) -> str | None:
     return None
 
 
+class _Version(argparse.Action):
+    """``--version``: print ``fem-racket VERSION`` and exit 0; the version (installed metadata,
+    slow to import) is looked up only then."""
+
+    def __init__(self, option_strings: Sequence[str], dest: str, **kwargs: Any) -> None:
+        super().__init__(option_strings, dest=argparse.SUPPRESS, nargs=0, **kwargs)
+
+    def __call__(self, parser: argparse.ArgumentParser, *args: Any) -> None:
+        from fem_racket.version import __version__
+
+        print(f"{parser.prog} {__version__}")
+        parser.exit()
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The top-level parser.
 
@@ -88,7 +102,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         description="Finite-element simulation of a tennis ball striking a racket frame "
         "(Kawazoe & Kanda 1997).",
     )
-    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("--version", action=_Version, help="show the version and exit")
     parser.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     named = None if argv is None else _command_named(argv)

@@ -34,10 +34,10 @@ of the modes are wanted, A is formed and solved by numpy's dense ``eigh`` (no sc
 Results repeat bit for bit (for a given BLAS thread count; the CLI and sweep workers pin one
 thread). Every returned pair is checked a posteriori: ``||A y - mu y|| <= RESIDUAL_TOL ||A||`` (a
 backward error; for symmetric A it bounds |d mu| by the same amount, i.e. omega_k^2 to
-RESIDUAL_TOL (omega_k / omega_1)^2), else :class:`~fem_racket.validation.AccuracyError`. The frequencies returned are Rayleigh
-quotients ``c^T K_c c / q^T M q`` of the final shapes. Shapes are M-orthogonal to
-~eps omega_j omega_k / omega_1^2 (1e-15 among the lowest 80 modes; only a mesh's very highest
-modes, wanted only when every mode is kept, are less orthogonal).
+RESIDUAL_TOL (omega_k / omega_1)^2), else :class:`~fem_racket.validation.AccuracyError`. The
+frequencies returned are Rayleigh quotients ``c^T K_c c / q^T M q`` of the final shapes. Shapes
+are M-orthogonal to ~eps omega_j omega_k / omega_1^2 (1e-15 among the lowest 80 modes; only a
+mesh's very highest modes, wanted only when every mode is kept, are less orthogonal).
 """
 
 from __future__ import annotations

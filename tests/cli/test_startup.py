@@ -4,7 +4,8 @@ Each check runs in a fresh interpreter and reads ``sys.modules`` after the comma
 so load on the machine cannot fail it. What each command must not import, and why it need not:
 
 - ``import fem_racket`` and ``fem-racket --help``: no numerical or file library at all beyond
-  numpy (the public names are imported on first use; the option defaults are plain numbers);
+  numpy (the public names are imported on first use; the option defaults are plain numbers),
+  nor the installed metadata (the version is read when asked for);
 - ``simulate`` without ``--out``: no scipy at all (the modes come from numpy's dense eigen-solver
   on the frame's diagonals, the engine is numpy), and it writes nothing (no xarray, netCDF,
   dask, plotting or VTK).
@@ -68,11 +69,10 @@ def test_package_and_help_import_no_heavy_library(argv, tmp_path):
     modules = imported(argv, tmp_path)
     assert not loaded(modules, ("scipy", *SOLVERS, *FILES, *PLOTTING, *OTHERS))
     if argv is None:  # the package alone: its public names wait for first use
-        assert {m for m in modules if m.startswith("fem_racket")} == {
-            "fem_racket",
-            "fem_racket.version",
-        }
+        assert {m for m in modules if m.startswith("fem_racket")} == {"fem_racket"}
         assert "numpy" not in modules
+    # the version (installed metadata) is looked up only when asked for
+    assert "importlib.metadata" not in modules
 
 
 @pytest.mark.parametrize("swing", [[], ["--racket-speed", "10"]], ids=["at-rest", "swing"])
@@ -89,3 +89,14 @@ def test_simulate_with_histories_writes_without_file_libraries(tmp_path):
     modules = imported(["simulate", "--out", str(tmp_path / "r.csv")], tmp_path)
     assert (tmp_path / "r.csv").is_file()
     assert not loaded(modules, ("skfem", *FILES, *PLOTTING, *OTHERS))
+
+
+def test_version_is_looked_up_when_asked(capsys):
+    from importlib.metadata import version
+
+    import fem_racket
+    from fem_racket.cli import main
+
+    assert main(["--version"]) == 0
+    assert capsys.readouterr().out == f"fem-racket {version('fem_racket')}\n"
+    assert fem_racket.__version__ == version("fem_racket")
