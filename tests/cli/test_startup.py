@@ -100,3 +100,17 @@ def test_version_is_looked_up_when_asked(capsys):
     assert main(["--version"]) == 0
     assert capsys.readouterr().out == f"fem-racket {version('fem_racket')}\n"
     assert fem_racket.__version__ == version("fem_racket")
+
+
+def test_the_command_table_names_each_commands_module():
+    from fem_racket.cli import COMMANDS, build_parser
+
+    def commands(parser) -> set[str]:
+        subs = next(a for a in parser._actions if hasattr(a, "choices") and a.choices)
+        return set(subs.choices)
+
+    assert commands(build_parser()) == set(COMMANDS)  # every module's commands are listed
+    for name in COMMANDS:  # and each name's module registers it
+        assert name in commands(build_parser([name, "--help"]))
+    assert commands(build_parser(["-v", "sweep"])) == {"sweep"}
+    assert commands(build_parser(["simulat"])) == set(COMMANDS)  # a typo sees every choice
