@@ -23,26 +23,15 @@ Standard output closed (``fem-racket modes >&-``) is refused before any work (ex
 from __future__ import annotations
 
 import argparse
+import importlib
 import logging
 import os
 import sys
 from collections.abc import Sequence
+from typing import Any
 
-from fem_racket.cli import (
-    calibrate,
-    config,
-    fit,
-    map,
-    modes,
-    optimize,
-    refine,
-    reproduce,
-    sensitivity,
-    simulate,
-    sweep,
-    vtk,
-)
-from fem_racket.cli.common import OneLineErrorParser, apply_config
+from fem_racket.cli.parser import OneLineErrorParser
+from fem_racket.cli.runfile import apply_config
 from fem_racket.cli.signals import (
     GuardedStdout,
     StdoutFault,
@@ -54,29 +43,72 @@ from fem_racket.cli.signals import (
 from fem_racket.outputs import OutputError
 from fem_racket.studies.executors import pin_blas_threads
 from fem_racket.validation import InputError, show
-from fem_racket.version import __version__
 
 __all__ = ["main"]
 
-#: Sub-command modules, in the order ``--help`` lists them.
-COMMANDS = (
-    simulate, modes, sweep, map, fit, vtk, refine, reproduce, calibrate, optimize, sensitivity,
-    config,
-)  # fmt: skip
+#: Sub-command -> the module of :mod:`fem_racket.cli` that registers it (``register(sub)``), in
+#: the order ``--help`` lists them.
+COMMANDS = {
+    "simulate": "simulate",
+    "modes": "modes",
+    "sweep": "sweep",
+    "map": "map",
+    "fit": "fit",
+    "export-vtk": "vtk",
+    "animate": "vtk",
+    "refine": "refine",
+    "reproduce": "reproduce",
+    "calibrate": "calibrate",
+    "optimize": "optimize",
+    "sensitivity": "sensitivity",
+    "config": "config",
+}
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The top-level parser with every sub-command registered."""
+def _command_named(argv: Sequence[str]) -> str | None:
+    """The sub-command ``argv`` runs: its first word that is not a top-level option, if that is
+    a command's name (the top-level options take no value)."""
+    for word in argv:
+        if word == "--":
+            return None
+        if not word.startswith("-"):
+            return word if word in COMMANDS else None
+    return None
+
+
+class _Version(argparse.Action):
+    """``--version``: print ``fem-racket VERSION`` and exit 0; the version (installed metadata,
+    slow to import) is looked up only then."""
+
+    def __init__(self, option_strings: Sequence[str], dest: str, **kwargs: Any) -> None:
+        super().__init__(option_strings, dest=argparse.SUPPRESS, nargs=0, **kwargs)
+
+    def __call__(self, parser: argparse.ArgumentParser, *args: Any) -> None:
+        from fem_racket.version import __version__
+
+        print(f"{parser.prog} {__version__}")
+        parser.exit()
+
+
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
+    """The top-level parser.
+
+    Every sub-command is registered, unless ``argv`` (the arguments about to be parsed) names
+    one: then only its module is imported and registered, so a command starts without importing
+    the others' libraries (``--help``, a mistyped name or none still see them all).
+    """
     parser = OneLineErrorParser(
         prog="fem-racket",
         description="Finite-element simulation of a tennis ball striking a racket frame "
         "(Kawazoe & Kanda 1997).",
     )
-    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("--version", action=_Version, help="show the version and exit")
     parser.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    for module in COMMANDS:
-        module.register(sub)
+    named = None if argv is None else _command_named(argv)
+    modules = [COMMANDS[named]] if named else list(dict.fromkeys(COMMANDS.values()))
+    for module in modules:
+        importlib.import_module(f"fem_racket.cli.{module}").register(sub)
     for command in sub.choices.values():  # -v also after the command name
         command.add_argument(
             "-v",
@@ -132,7 +164,8 @@ def _describe(exc: OSError) -> str:
 
 
 def _run(argv: Sequence[str] | None) -> int:
-    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(argv)
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help

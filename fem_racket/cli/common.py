@@ -1,4 +1,8 @@
-"""Options shared by the commands that run an impact, and their translation to library calls.
+"""What the commands share, in one place to import from: options, run files, output and notes.
+
+The options live by concept in :mod:`.frame_options` (the frame), :mod:`.impact_options` (ball,
+law, swing, solver), :mod:`.laws`, :mod:`.output` (``--out``, JSON), :mod:`.runfile`
+(``--config``), :mod:`.text` (notes, digits) and :mod:`.parser`.
 
 Conventions every command follows (so a new command plugs in with a few lines):
 
@@ -15,11 +19,24 @@ Conventions every command follows (so a new command plugs in with a few lines):
 
 from __future__ import annotations
 
-import argparse
-import math
-from typing import Any
-
-from fem_racket.cli.laws import add_law_options, law_from_args
+from fem_racket.cli.frame_options import (
+    MESH_EXCLUSIVE,
+    add_ei_options,
+    add_frame_options,
+    add_mesh_option,
+    build_model,
+    frame_from_args,
+)
+from fem_racket.cli.impact_options import (
+    DEFAULT_OUTPUT_STEP,
+    add_impact_options,
+    add_output_step_option,
+    add_solver_options,
+    add_swing_options,
+    check_output_step,
+    impact_kwargs,
+    swing_from_args,
+)
 from fem_racket.cli.lists import number_list
 from fem_racket.cli.output import (
     add_output_options,
@@ -28,21 +45,13 @@ from fem_racket.cli.output import (
     write_json,
     write_text,
 )
+from fem_racket.cli.parser import OneLineErrorParser
 from fem_racket.cli.runfile import add_config_option, apply_config
 from fem_racket.cli.text import note, note_modes, significant
-from fem_racket.frame.mesh import FrameMesh
-from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
-from fem_racket.impact.integrators import SOLVERS
-from fem_racket.impact.law_impact import LAW_SOLVERS
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.simulate import BASES
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
-from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.io.mesh_files import read_mesh
-from fem_racket.validation import InputError, show
 
 __all__ = [
+    "DEFAULT_OUTPUT_STEP",
+    "MESH_EXCLUSIVE",
     "OneLineErrorParser",
     "add_config_option",
     "add_ei_options",
@@ -68,282 +77,3 @@ __all__ = [
     "write_json",
     "write_text",
 ]
-
-#: Frame options that a mesh file replaces (giving one with --mesh is an error).
-MESH_EXCLUSIVE = ("ei1", "ei2", "elements")
-
-
-def add_mesh_option(
-    group: argparse._ArgumentGroup, replaces: str = "replaces --ei1, --ei2 and --elements"
-) -> None:
-    """--mesh FILE: a 1-D line mesh with cell data EI [N m^2] and rhoA [kg/m]; ``replaces``
-    says which of the command's options the file takes the place of."""
-    group.add_argument(
-        "--mesh",
-        default=None,
-        metavar="FILE",
-        help="frame from a mesh file meshio reads (.vtu, ...; line cells along x with cell "
-        f"data EI [N m^2] and rhoA [kg/m]); {replaces} (default: the paper's stepped frame)",
-    )
-
-
-def add_ei_options(group: argparse._ArgumentGroup) -> None:
-    """--ei1 and --ei2 of the paper's stepped frame (EI2 = 0.88 EI1 unless given)."""
-    group.add_argument(
-        "--ei1",
-        type=float,
-        default=PAPER_EI1,
-        metavar="N_M2",
-        help=f"grip-side bending rigidity EI1 [N m^2] (default {PAPER_EI1:g}, the paper's)",
-    )
-    group.add_argument(
-        "--ei2",
-        type=float,
-        default=None,
-        metavar="N_M2",
-        help="top-side bending rigidity EI2 [N m^2] (default 0.88 * EI1)",
-    )
-
-
-def add_frame_options(parser: argparse.ArgumentParser) -> None:
-    """Frame options: --ei1, --ei2, --elements, --mesh."""
-    g = parser.add_argument_group("frame")
-    add_ei_options(g)
-    g.add_argument(
-        "--elements",
-        type=int,
-        default=20,
-        metavar="N",
-        help="number of beam elements (default 20, as in the paper)",
-    )
-    add_mesh_option(g)
-
-
-def frame_from_args(
-    args: argparse.Namespace, exclusive: tuple[str, ...] = MESH_EXCLUSIVE
-) -> Frame | FrameMesh:
-    """The frame the options describe.
-
-    A mesh file (``--mesh`` or a run file's ``frame.mesh``) wins over segments (a run file's
-    ``[[frame.segments]]``), which win over the paper's stepped frame with --ei1/--ei2.
-    --mesh together with an explicit --ei1, --ei2 or --elements is an error: the file fixes the
-    cells and their EI and rhoA. ``exclusive`` names the options a mesh file replaces (refine's
-    --elements is a list of counts to refine the file's profile with, so not one of them there).
-    """
-    path = getattr(args, "mesh", None)
-    if path is None:
-        segments = getattr(args, "segments", None)
-        if segments:
-            return Frame(tuple(segments))
-        return standard_frame(args.ei1, args.ei2)
-    clash = sorted(set(getattr(args, "explicit_options", ())) & set(exclusive))
-    if clash:
-        raise InputError(
-            f"--{clash[0]} is not allowed with --mesh: the mesh file gives the cells and their "
-            "EI and rhoA"
-        )
-    return read_mesh(path)
-
-
-def add_impact_options(parser: argparse.ArgumentParser) -> None:
-    """Frame options plus the ball, the ball/string law, the impact and the solver."""
-    add_frame_options(parser)
-    g = parser.add_argument_group("impact")
-    g.add_argument(
-        "--speed",
-        type=float,
-        default=20.0,
-        metavar="M_S",
-        help="incident ball speed V_B0 [m/s] (default 20)",
-    )
-    g.add_argument(
-        "--position",
-        type=float,
-        default=0.75,
-        metavar="X_OVER_L",
-        help="impact point x/L from the grip end, 0..1 (default 0.75)",
-    )
-    g.add_argument(
-        "--ball-mass",
-        type=float,
-        default=0.057,
-        metavar="KG",
-        help="ball mass m_B [kg] (default 0.057; not stated in the paper)",
-    )
-    g.add_argument(
-        "--kcb",
-        type=float,
-        default=None,
-        metavar="N_M",
-        help="ball/string stiffness K_CB [N/m] (default: from the speed)",
-    )
-    g.add_argument(
-        "--zeta",
-        type=float,
-        default=None,
-        metavar="ZETA",
-        help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
-    )
-    add_law_options(parser)
-    add_solver_options(parser)
-
-
-def add_swing_options(parser: argparse.ArgumentParser) -> None:
-    """--racket-speed, --reference, --pivot: the racket's motion before impact (every command
-    that takes a swing: simulate, sweep, map); read them with :func:`swing_from_args`."""
-    g = parser.add_argument_group("swing (racket motion before impact)")
-    g.add_argument(
-        "--racket-speed",
-        type=float,
-        default=0.0,
-        metavar="M_S",
-        help="racket speed towards the ball before impact [m/s] at the --reference point "
-        "(default 0: a racket at rest)",
-    )
-    g.add_argument(
-        "--reference",
-        type=float,
-        default=DEFAULT_REFERENCE,
-        metavar="X_OVER_L",
-        help=f"point x/L whose speed --racket-speed gives (default {DEFAULT_REFERENCE}, the "
-        "string centre)",
-    )
-    g.add_argument(
-        "--pivot",
-        type=float,
-        default=None,
-        metavar="M",
-        help="the racket turns about this point [m from the butt; negative beyond it, e.g. a "
-        "shoulder], so the impact point moves at V (x_i - P)/(x_ref - P) (default: none, the "
-        "racket translates at V)",
-    )
-
-
-def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
-    """The swing the options give for a racket of ``length`` [m]; None for a racket at rest."""
-    if args.racket_speed == 0.0:
-        Swing.from_speed(0.0, length, reference=args.reference, pivot=args.pivot)  # checks
-        return None
-    return Swing.from_speed(args.racket_speed, length, reference=args.reference, pivot=args.pivot)
-
-
-def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -> None:
-    """--solver, --separation, --basis, --modes, --rtol, --atol and (optionally) --t-max."""
-    s = parser.add_argument_group("solver")
-    s.add_argument(
-        "--solver",
-        default="exact",
-        choices=sorted((*SOLVERS, *LAW_SOLVERS)),
-        help="integrator: exact (closed-form modal solution), cvode, bdf or general (any "
-        "contact law; used for a nonlinear --law when exact is asked) (default exact)",
-    )
-    s.add_argument(
-        "--separation",
-        default="displacement",
-        choices=SEPARATION_EVENTS,
-        help="end of contact: spring deflection or force back to zero "
-        "(default displacement, the paper's)",
-    )
-    s.add_argument(
-        "--basis",
-        default="modal",
-        choices=BASES,
-        help="frame coordinates for the BDF solvers; exact needs modal (default modal)",
-    )
-    s.add_argument(
-        "--modes",
-        type=int,
-        default=DEFAULT_MODES,
-        metavar="N",
-        help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES}; "
-        "a mesh of n elements has 2n, all kept when fewer)",
-    )
-    if t_max:
-        s.add_argument(
-            "--t-max",
-            type=float,
-            default=None,
-            metavar="S",
-            help="give up if the ball has not separated by then [s] (default 20 x the eq 11 "
-            "contact time)",
-        )
-    s.add_argument(
-        "--tolerance",
-        type=float,
-        default=DEFAULT_TOLERANCE,
-        metavar="COR",
-        help="COR error the exact solver may make when no histories are asked: modes far above "
-        f"the contact frequency become one residual mode (default {DEFAULT_TOLERANCE:g}; "
-        "0: every mode)",
-    )
-    s.add_argument(
-        "--rtol",
-        type=float,
-        default=1e-10,
-        help="relative tolerance of cvode/bdf [-] (default 1e-10)",
-    )
-    s.add_argument(
-        "--atol",
-        type=float,
-        default=1e-12,
-        help="absolute tolerance of cvode/bdf, in the state's units (default 1e-12)",
-    )
-
-
-#: Default spacing of the output times of an impact's histories [s].
-DEFAULT_OUTPUT_STEP = 1e-5
-
-
-def add_output_step_option(group: argparse._ArgumentGroup) -> None:
-    """--output-step S: spacing of the simulation's output times [s] (simulate, export-vtk,
-    animate); check it with :func:`check_output_step`."""
-    group.add_argument(
-        "--output-step",
-        type=float,
-        default=DEFAULT_OUTPUT_STEP,
-        metavar="S",
-        help="spacing of the simulation's output times [s], > 0 (default 1e-5); the end of "
-        "contact is always the last output time",
-    )
-
-
-def check_output_step(value: float) -> float:
-    """``value`` if it is a finite number > 0, else :class:`InputError`."""
-    if not 0 < value < math.inf:  # also catches NaN
-        raise InputError(
-            f"output_step = {show(value)} s is not allowed: must be a finite number > 0"
-        )
-    return value
-
-
-def build_model(args: argparse.Namespace) -> FrameModel:
-    """Assemble the frame the options describe (a --mesh file as it is)."""
-    return FrameModel.build(frame_from_args(args), args.elements)
-
-
-def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
-    """Keyword arguments of :func:`fem_racket.simulate` from the parsed options."""
-    return {
-        "position": args.position,
-        "speed": args.speed,
-        "ball_mass": args.ball_mass,
-        "kcb": args.kcb,
-        "zeta": args.zeta,
-        "solver": args.solver,
-        "separation": args.separation,
-        "basis": args.basis,
-        "modes": args.modes,
-        "tolerance": args.tolerance,
-        "t_max": args.t_max,
-        "rtol": args.rtol,
-        "atol": args.atol,
-        "law": law_from_args(args),
-    }
-
-
-class OneLineErrorParser(argparse.ArgumentParser):
-    """An argparse parser whose usage errors are one line (no usage dump), exit code 2."""
-
-    def error(self, message: str) -> None:  # type: ignore[override]
-        """Print ``prog: error: message`` and exit 2."""
-        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")

@@ -25,26 +25,26 @@ positive semi-definite operator (a discrete Green's function: flexibility times 
 
     A = L^-1 T_c^T P^T M P T_c L^-T,    A y = mu y,   mu = 1 / omega^2
 
-whose largest eigenvalues are the lowest modes. Applying A costs O(n) (cumulative sums, the
-sparse M) and only adds and scales well-scaled numbers, so its round-off is ~eps mu_1 and mode k's
-omega_k^2 is good to ~eps (omega_k / omega_1)^2 on any mesh (measured: 1e-14 on mode 1 from 5 000
-to 70 000 cells). Lanczos (``eigsh``) starts from a fixed vector, so results repeat bit for bit
-(for a given BLAS thread count; the CLI and sweep workers pin one thread). Every returned pair is
-checked a posteriori: ``||A y - mu y|| <= RESIDUAL_TOL ||A||`` (a backward error; for symmetric
-A it bounds |d mu| by the same amount, i.e. omega_k^2 to RESIDUAL_TOL (omega_k / omega_1)^2),
-else :class:`~fem_racket.validation.AccuracyError`. The frequencies returned are Rayleigh
-quotients ``c^T K_c c / q^T M q`` of the final shapes. Shapes are M-orthogonal to
-~eps omega_j omega_k / omega_1^2 (1e-15 among the lowest 80 modes; only a mesh's very highest
-modes, wanted only when every mode is kept, are less orthogonal).
+whose largest eigenvalues are the lowest modes. Applying A costs O(n) (cumulative sums, M from
+its diagonals) and only adds and scales well-scaled numbers, so its round-off is ~eps mu_1 and
+mode k's omega_k^2 is good to ~eps (omega_k / omega_1)^2 on any mesh (measured: 1e-14 on mode 1
+from 5 000 to 70 000 cells). Up to DENSE_LIMIT curvature DOFs (200 cells), or when more than half
+of the modes are wanted, A is formed and solved by numpy's dense ``eigh`` (no scipy to import:
+``simulate`` starts faster); above, by Lanczos (scipy's ``eigsh``) from a fixed start vector.
+Results repeat bit for bit (for a given BLAS thread count; the CLI and sweep workers pin one
+thread). Every returned pair is checked a posteriori: ``||A y - mu y|| <= RESIDUAL_TOL ||A||`` (a
+backward error; for symmetric A it bounds |d mu| by the same amount, i.e. omega_k^2 to
+RESIDUAL_TOL (omega_k / omega_1)^2), else :class:`~fem_racket.validation.AccuracyError`. The
+frequencies returned are Rayleigh quotients ``c^T K_c c / q^T M q`` of the final shapes. Shapes
+are M-orthogonal to ~eps omega_j omega_k / omega_1^2 (1e-15 among the lowest 80 modes; only a
+mesh's very highest modes, wanted only when every mode is kept, are less orthogonal).
 """
 
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
-import scipy.sparse.linalg as spla
 
-from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.fe import FrameFE
 from fem_racket.validation import AccuracyError, InputError
 
 __all__ = ["DENSE_LIMIT", "DENSE_MAX", "RESIDUAL_TOL", "flexible_modes"]
@@ -68,7 +68,7 @@ class _Coordinates:
         self.h = np.diff(fe.mesh.points)[:, None]
         self.u, self.t = fe.deflection_dofs, fe.slope_dofs
         self.rigid = rigid
-        self.m_rigid = fe.M @ rigid
+        self.m_rigid = fe.mass_product(rigid)
         #: L = s [[1, 0], [1/2, sqrt(3)/2]] per cell, s = sqrt(EI h / 3).
         self.s = np.sqrt(fe.mesh.EI * np.diff(fe.mesh.points) / 3.0)[:, None]
 
@@ -130,7 +130,7 @@ class _Coordinates:
         """A y (columns), see the module docstring."""
         y = np.asarray(y, dtype=float).reshape(self.size, -1)
         q = self.shapes(y)
-        return self.solve_l(self.nodal_transpose(self.fe.M @ q))
+        return self.solve_l(self.nodal_transpose(self.fe.mass_product(q)))
 
 
 def flexible_modes(fe: FrameFE, rigid: np.ndarray, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
@@ -166,10 +166,13 @@ def flexible_modes(fe: FrameFE, rigid: np.ndarray, n_modes: int) -> tuple[np.nda
             f"{n // 2} (half of all modes; every mode is computed only up to "
             f"{DENSE_MAX // 2} elements)"
         )
-    if dense:
+    if dense:  # every pair, the top n_modes kept
         A = coords.apply(np.eye(n))
-        mu, y = sla.eigh(0.5 * (A + A.T), subset_by_index=[n - n_modes, n - 1])
+        mu, y = np.linalg.eigh(0.5 * (A + A.T))
+        mu, y = mu[n - n_modes :], y[:, n - n_modes :]
     else:
+        import scipy.sparse.linalg as spla
+
         op = spla.LinearOperator((n, n), matvec=coords.apply, matmat=coords.apply, dtype=float)
         v0 = np.random.default_rng(START_SEED).standard_normal(n)
         mu, y = spla.eigsh(op, k=n_modes, which="LA", v0=v0)
@@ -186,7 +189,7 @@ def flexible_modes(fe: FrameFE, rigid: np.ndarray, n_modes: int) -> tuple[np.nda
             "this mesh cannot be solved to the stated accuracy"
         )
     q = coords.shapes(y)
-    kinetic = np.einsum("ij,ij->j", q, fe.M @ q)
+    kinetic = np.einsum("ij,ij->j", q, fe.mass_product(q))
     # Rayleigh quotient: strain energy c^T K_c c = y^T y = 1 exactly in these coordinates.
     omega = 1.0 / np.sqrt(kinetic)
     return omega, q * omega

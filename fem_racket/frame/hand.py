@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.fe import FrameFE
 from fem_racket.validation import InputError, check_finite, check_positive
 
 __all__ = ["FIRM_GRIP", "GRIPS", "LOOSE_GRIP", "Hand", "HeldFrame", "held_frame", "held_modes"]

@@ -12,8 +12,9 @@ These are the same integrals as :func:`fem_racket.frame.forms.assemble` (``int E
 shape functions per cell from monomials in global x, which loses precision as (x / h)^3 grows. The
 assembled matrices then differ from the exact ones by ~4e-12 (relative, largest entry) at 20
 elements, ~1e-9 at 80, ~5e-7 at 640 and ~1e-2 at 20 000 elements of the standard racket.
-:func:`assemble_closed_form` returns the same :class:`~fem_racket.forms.FrameFE` (scikit-fem
-basis, same DOF numbering) with exact matrices; :meth:`FrameModel.build` uses it on every mesh.
+:func:`assemble_closed_form` returns the same :class:`~fem_racket.frame.fe.FrameFE` (same DOF
+numbering) with exact matrices, as their diagonals, importing neither scikit-fem nor scipy;
+:meth:`FrameModel.build` uses it on every mesh.
 
 :func:`strain_energy` evaluates q^T K q as a sum of squares of element curvatures (2-point Gauss,
 exact for the linear curvature of a cubic), which avoids the cancellation of q^T (K q) (K q of a
@@ -23,10 +24,8 @@ smooth field loses ~(h beta)^-4 of its digits; see :mod:`fem_racket.frame.curvat
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
-from skfem import Basis, ElementLineHermite, MeshLine
 
-from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.fe import BANDWIDTH, FrameFE
 from fem_racket.frame.mesh import FrameMesh
 
 __all__ = ["assemble_closed_form", "rayleigh_frequencies", "strain_energy"]
@@ -39,31 +38,30 @@ _M = np.array(
 _P = np.array([0, 1, 0, 1])
 
 
-def _cell_dofs(fe_basis: Basis) -> np.ndarray:
-    """DOF indices (w_a, w'_a, w_b, w'_b) of each cell, shape (ncells, 4)."""
-    u, ux = fe_basis.nodal_dofs
-    return np.column_stack([u[:-1], ux[:-1], u[1:], ux[1:]])
+def _bands(ke: np.ndarray) -> np.ndarray:
+    """Diagonals (see :func:`fem_racket.frame.fe.bands_of`) of the matrix assembled from the
+    element matrices ``ke`` (ncells, 4, 4) of consecutive cells: entry (i, j) of cell c lands on
+    row 2c + i, diagonal j - i; a node's entries sum its two cells' (in either order, the same)."""
+    n = 2 * (ke.shape[0] + 1)
+    bands = np.zeros((2 * BANDWIDTH + 1, n))
+    for i in range(4):
+        for j in range(4):
+            bands[BANDWIDTH + j - i, i : n - 2 + i : 2] += ke[:, i, j]
+    return bands
 
 
 def assemble_closed_form(mesh: FrameMesh) -> FrameFE:
     """K [N/m] and M [kg] of ``mesh`` from the closed-form element matrices (see module doc).
 
-    The returned :class:`~fem_racket.forms.FrameFE` has the same basis and DOF numbering as
+    The returned :class:`~fem_racket.frame.fe.FrameFE` has the same DOF numbering as
     :func:`fem_racket.frame.forms.assemble`; only the round-off of K and M differs.
     """
     p = np.asarray(mesh.points, dtype=float)
-    basis = Basis(MeshLine(p), ElementLineHermite())
     h = np.diff(p)
     scale = h[:, None, None] ** (_P[:, None] + _P[None, :])
     ke = (mesh.EI / h**3)[:, None, None] * _K * scale
     me = (mesh.rhoA * h / 420.0)[:, None, None] * _M * scale
-    dofs = _cell_dofs(basis)
-    rows = np.repeat(dofs, 4, axis=1).ravel()
-    cols = np.tile(dofs, (1, 4)).ravel()
-    n = basis.N
-    K = sp.csr_matrix((ke.ravel(), (rows, cols)), shape=(n, n))
-    M = sp.csr_matrix((me.ravel(), (rows, cols)), shape=(n, n))
-    return FrameFE(mesh=mesh, basis=basis, K=K, M=M)
+    return FrameFE(mesh, _bands(ke), _bands(me))
 
 
 def strain_energy(fe: FrameFE, q: np.ndarray) -> np.ndarray:
@@ -86,5 +84,5 @@ def strain_energy(fe: FrameFE, q: np.ndarray) -> np.ndarray:
 def rayleigh_frequencies(fe: FrameFE, shapes: np.ndarray) -> np.ndarray:
     """Rayleigh-quotient frequencies [Hz] of mode ``shapes`` (ndof, n), cancellation-free energy."""
     shapes = np.asarray(shapes, dtype=float)
-    kinetic = np.einsum("ij,ij->j", shapes, fe.M @ shapes)
+    kinetic = np.einsum("ij,ij->j", shapes, fe.mass_product(shapes))
     return np.sqrt(strain_energy(fe, shapes) / kinetic) / (2.0 * np.pi)

@@ -17,7 +17,7 @@ import numpy as np
 
 from fem_racket.display import number, short_repr
 from fem_racket.frame.curvature import flexible_modes
-from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.fe import FrameFE
 from fem_racket.validation import check_integer
 
 __all__ = ["FreeModes", "MassProperties", "free_modes", "mass_properties", "mode_nodes"]

@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from fem_racket.display import number, short_repr, span
-from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.fe import FrameFE
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.modal import FreeModes, MassProperties, free_modes, mass_properties
@@ -99,5 +99,5 @@ class FrameModel:
     def scaled(self, ei_factor: float) -> FrameModel:
         """The same frame with every EI multiplied by ``ei_factor`` (modes reused)."""
         f = check_positive("ei_factor", ei_factor)
-        fe = FrameFE(mesh=self.fe.mesh.scaled(f), basis=self.fe.basis, K=self.fe.K * f, M=self.fe.M)
+        fe = FrameFE(self.fe.mesh.scaled(f), self.fe.K_bands * f, self.fe.M_bands)
         return FrameModel(fe, {n: m.scaled(f) for n, m in self._modes.items()})

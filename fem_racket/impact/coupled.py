@@ -31,7 +31,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg as sla
 
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.display import number, short_repr
@@ -175,6 +174,8 @@ def coupled_modes(
     -------
     CoupledModes
     """
+    import scipy.linalg as sla
+
     impact = Impact(position, speed)
     m_b = Ball().mass if ball_mass is None else Ball(ball_mass).mass
     k_cb = LinearContact.for_speed(impact.speed, kcb=kcb).stiffness

@@ -19,7 +19,6 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-import scipy.sparse as sp
 
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.hand import Hand, HeldFrame, held_frame
@@ -147,6 +146,8 @@ def simulate_held(
     law = LinearContact.for_speed(speed, kcb=kcb, zeta=zeta)
     if not output_step > 0.0:
         raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
+    import scipy.sparse as sp
+
     held = held_frame(model.fe, hand)
     x_i = pos * model.mesh.length
     g = np.concatenate([model.fe.point_vector(x_i), [0.0, 0.0]])

@@ -130,9 +130,9 @@ def frame_modal_data(
         while fm.omega.size < cap and fm.omega[-1] < cutoff:
             n = min(2 * n, cap)
             fm = model.modes(n)
-    g = model.fe.field_matrix(positions * model.mesh.length, 0)
-    values = np.asarray(g @ fm.shapes)
-    rigid = (np.asarray(g @ fm.rigid) ** 2).sum(axis=1)
+    x = positions * model.mesh.length
+    values = model.fe.field_values(x, fm.shapes)
+    rigid = (model.fe.field_values(x, fm.rigid) ** 2).sum(axis=1)
     zero = np.zeros(positions.size)
     if cutoff is None or fm.omega.size >= cap or limit is not None:
         return ModalData(fm.omega, values, rigid, zero, zero)

@@ -155,8 +155,8 @@ def racket_velocity(model: FrameModel, qd: np.ndarray) -> tuple[float, float]:
     [m/s] and the angular speed [rad/s], from the frame's linear and angular momentum
     (1^T M qd / M and (x - x_CG)^T M qd / I_CG), in the sign of ``qd``."""
     fe, props = model.fe, model.props
-    v_cg = fe.rigid_motion(1.0, 0.0) @ (fe.M @ qd) / props.mass
-    omega = fe.rigid_motion(0.0, 1.0, about=props.cg) @ (fe.M @ qd) / props.inertia
+    v_cg = fe.rigid_motion(1.0, 0.0) @ fe.mass_product(qd) / props.mass
+    omega = fe.rigid_motion(0.0, 1.0, about=props.cg) @ fe.mass_product(qd) / props.inertia
     return float(v_cg), float(omega)
 
 
@@ -180,7 +180,7 @@ def _frame_velocity(frame_map: np.ndarray | None, model: FrameModel, swing: Swin
     if frame_map is None:
         return qd
     # Mass-normalised modes: eta' = Phi^T M q' (the rigid field lies in the rigid modes).
-    return frame_map.T @ (fe.M @ qd)
+    return frame_map.T @ fe.mass_product(qd)
 
 
 def add_swing(

@@ -19,11 +19,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
-import scipy.sparse as sp
 
 from fem_racket.validation import InputError, check_choice
+
+if TYPE_CHECKING:
+    import scipy.sparse as sp
 
 __all__ = [
     "SEPARATION_EVENTS",
@@ -199,6 +202,8 @@ def modal_system(
     g : ndarray, shape (ndof,)
         Point vector at the impact point.
     """
+    import scipy.sparse as sp
+
     a = shapes.T @ g
     m = a.size
     mass = sp.diags(np.concatenate([[ball_mass], np.ones(m)]))
@@ -222,6 +227,8 @@ def physical_system(
 
     ``rigid_compliance`` is 1/m_R + d^2/I_R [1/kg], used only to estimate the contact time.
     """
+    import scipy.sparse as sp
+
     mass = sp.block_diag([sp.csr_matrix([[ball_mass]]), M]).tocsr()
     stiff = sp.block_diag([sp.csr_matrix((1, 1)), K]).tocsr()
     h = np.concatenate([[1.0], -g])

@@ -70,6 +70,16 @@ def test_bench_map_script_runs(capsys):
     assert "racket_map" in capsys.readouterr().out
 
 
+def test_bench_cli_script_runs(capsys):
+    # start-up of the command line (issue 13): wall times are printed, not asserted (a loaded
+    # machine); tests/cli/test_startup.py checks what each command imports
+    rows = load(SCRIPTS / "bench_cli.py").main(["--quick"])
+    assert [r["command"] for r in rows] == ["--help", "simulate"]
+    assert all(r["wall_s"] >= r["fastest_s"] > 0 and r["imports_s"] for r in rows)
+    assert "numpy" in rows[1]["imports_s"] and "skfem" not in rows[1]["imports_s"]
+    assert "target" in capsys.readouterr().out
+
+
 def test_figure_script_refuses_to_overwrite(tmp_path, capsys):
     main = load(SCRIPTS / "fig04_frame_modes.py").main
     first = main(["--out", str(tmp_path)])

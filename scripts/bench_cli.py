@@ -1,0 +1,179 @@
+"""Start-up of the command line: wall time of each command, and what its imports cost.
+
+Runs each command ``--repeat`` times as ``python -m fem_racket ...`` in a fresh process (the
+``fem-racket`` console script does the same import; a pyenv shim in front of it adds its own
+~0.1 s) and prints the median and the fastest wall time per command; with several ``--tree``
+(source trees, e.g. an export of an older commit) every tree runs each command in turn, so load
+on the machine hits them alike: compare the columns of one run, not runs of different days.
+
+Then, per command and tree, one run under ``python -X importtime``: the top-level packages whose
+imports cost the most (the own time of every module of the package: ``scipy`` holds every
+``scipy.*`` module the command imports, but not the numpy modules scipy imports).
+
+Python's bytecode cache is written to a temporary folder (``PYTHONPYCACHEPREFIX``; the source
+trees are not touched) and warmed by one untimed run, as after ``pip install``; ``--no-cache``
+compiles every module at every start instead (what ``PYTHONDONTWRITEBYTECODE=1`` costs).
+
+Targets (issue 13): ``--help`` <= 0.3 s, ``simulate`` <= 0.35 s, the Fig 13 sweep <= 0.8 s.
+
+Usage: python scripts/bench_cli.py [--quick] [--repeat N] [--tree DIR ...] [--no-cache]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+FIG13 = ["--position", "0.55:0.95:7", "--speed", "20,30,40", "--ei1", "50:3000:60:log"]
+#: label -> (arguments, target wall time [s] or None); {out} is a fresh temporary folder.
+COMMANDS = {
+    "--help": (["--help"], 0.3),
+    "simulate": (["simulate", "--speed", "20", "--position", "0.75"], 0.35),
+    "simulate --out (histories)": (["simulate", "--out", "{out}/r.json"], None),
+    "sweep Fig 13 (1 260 impacts)": (["sweep", *FIG13, "--out", "{out}/s.nc", "--quiet"], 0.8),
+}
+QUICK = {"--help": COMMANDS["--help"], "simulate": COMMANDS["simulate"]}
+
+
+def environment(tree: Path, cache: Path | None) -> dict[str, str]:
+    """The environment of a run of ``tree``: its package first on the path, one BLAS thread."""
+    env = dict(os.environ, PYTHONPATH=str(tree))
+    env.update(OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", MKL_NUM_THREADS="1")
+    env.pop("PYTHONPYCACHEPREFIX", None)
+    if cache is None:
+        env["PYTHONDONTWRITEBYTECODE"] = "1"
+    else:
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
+        env["PYTHONPYCACHEPREFIX"] = str(cache)
+    return env
+
+
+def run(
+    args: list[str], env: dict[str, str], scratch: Path, flags: tuple[str, ...] = ()
+) -> tuple[float, str]:
+    """(wall time [s], stderr) of ``python FLAGS -m fem_racket ARGS`` in a fresh output folder."""
+    with tempfile.TemporaryDirectory(dir=scratch) as out:
+        argv = [a.format(out=out) for a in args]
+        t0 = time.perf_counter()
+        done = subprocess.run(
+            [sys.executable, *flags, "-m", "fem_racket", *argv],
+            env=env,
+            cwd=out,  # not the repository: python puts the working directory first on the path
+            capture_output=True,
+            text=True,
+        )
+        wall = time.perf_counter() - t0
+    if done.returncode != 0:
+        raise SystemExit(f"bench_cli: {' '.join(argv)} failed:\n{done.stderr}")
+    return wall, done.stderr
+
+
+def import_costs(stderr: str) -> dict[str, float]:
+    """Import time [s] per top-level package from ``-X importtime`` output: the sum of the own
+    (self) times of its modules, so a package is not charged for what it imports from others."""
+    costs: dict[str, float] = {}
+    for line in stderr.splitlines():
+        if not line.startswith("import time:") or line.count("|") != 2:
+            continue
+        own, _, name = line.removeprefix("import time:").split("|")
+        if not own.strip().isdigit():
+            continue  # the header
+        root = name.strip().split(".")[0]
+        costs[root] = costs.get(root, 0.0) + int(own) * 1e-6
+    return costs
+
+
+def main(argv: list[str] | None = None) -> list[dict]:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument(
+        "--quick",
+        action="store_true",
+        help="a smoke test: --help and simulate once each, under -X importtime, not warmed up",
+    )
+    parser.add_argument("--repeat", type=int, default=None, help="runs per command (default 7)")
+    parser.add_argument(
+        "--tree",
+        action="append",
+        type=Path,
+        default=None,
+        help="source tree holding fem_racket/ (repeatable; default: this repository)",
+    )
+    parser.add_argument("--no-cache", action="store_true", help="no bytecode cache")
+    parser.add_argument("--top", type=int, default=6, help="packages listed per command")
+    args = parser.parse_args(argv)
+    trees = [t.resolve() for t in args.tree or [ROOT]]
+    commands = QUICK if args.quick else COMMANDS
+    repeat = 0 if args.quick else args.repeat or 7
+    rows: list[dict] = []
+    with tempfile.TemporaryDirectory() as tmp:
+        scratch = Path(tmp)
+        envs = {}
+        for i, tree in enumerate(trees):
+            envs[tree] = environment(tree, None if args.no_cache else scratch / f"pyc{i}")
+            found = subprocess.run(
+                [sys.executable, "-c", "import fem_racket; print(fem_racket.__file__)"],
+                env=envs[tree],
+                cwd=scratch,
+                capture_output=True,
+                text=True,
+                check=True,
+            ).stdout.strip()
+            if not Path(found).is_relative_to(tree):
+                raise SystemExit(f"bench_cli: {tree} is not imported first (got {found})")
+            for cmd, _ in () if args.quick else commands.values():  # writes the bytecode cache
+                run(cmd, envs[tree], scratch)
+        walls: dict[tuple[str, Path], list[float]] = {}
+        costs: dict[tuple[str, Path], dict[str, float]] = {}
+        for _ in range(repeat):
+            for label, (cmd, _) in commands.items():
+                for tree in trees:
+                    walls.setdefault((label, tree), []).append(run(cmd, envs[tree], scratch)[0])
+        for label, (cmd, _) in commands.items():
+            for tree in trees:
+                wall, err = run(cmd, envs[tree], scratch, ("-X", "importtime"))
+                costs[(label, tree)] = import_costs(err)
+                if args.quick:  # the smoke test times this run alone
+                    walls[(label, tree)] = [wall]
+    cache = "no bytecode cache" if args.no_cache else "bytecode cached"
+    if args.quick and not args.no_cache:
+        cache = "bytecode cache not warmed up"
+    runs = "1 run under -X importtime" if args.quick else f"median (fastest) of {repeat}"
+    print(f"wall time [s] of python -m fem_racket, {runs}, {cache}")
+    for i, tree in enumerate(trees):
+        print(f"  [{i}] {tree}")
+    head = "".join(f"{f'[{i}]':>16}" for i in range(len(trees)))
+    print(f"{'command':<30}{head}{'target':>8}")
+    for label, (_, target) in commands.items():
+        cells = ""
+        for tree in trees:
+            w = walls[(label, tree)]
+            rows.append(
+                dict(
+                    command=label,
+                    tree=str(tree),
+                    wall_s=statistics.median(w),
+                    fastest_s=min(w),
+                    target_s=target,
+                    imports_s=costs[(label, tree)],
+                )
+            )
+            cells += f"{statistics.median(w):9.3f} ({min(w):.3f})"[-16:].rjust(16)
+        print(f"{label:<30}{cells}{'' if target is None else f'{target:8.2f}'}")
+    print(f"\nimport time [s] by package, own time of its modules (one -X importtime run; {cache})")
+    for label in commands:
+        for i, tree in enumerate(trees):
+            top = sorted(costs[(label, tree)].items(), key=lambda kv: -kv[1])[: args.top]
+            shown = ", ".join(f"{name} {s:.3f}" for name, s in top)
+            print(f"{label:<30}[{i}] {shown}")
+    return rows
+
+
+if __name__ == "__main__":
+    main()

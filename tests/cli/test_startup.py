@@ -1,0 +1,116 @@
+"""Start-up (issue 13, item 4): a command imports only what it needs.
+
+Each check runs in a fresh interpreter and reads ``sys.modules`` after the command: no timings,
+so load on the machine cannot fail it. What each command must not import, and why it need not:
+
+- ``import fem_racket`` and ``fem-racket --help``: no numerical or file library at all beyond
+  numpy (the public names are imported on first use; the option defaults are plain numbers),
+  nor the installed metadata (the version is read when asked for);
+- ``simulate`` without ``--out``: no scipy at all (the modes come from numpy's dense eigen-solver
+  on the frame's diagonals, the engine is numpy), and it writes nothing (no xarray, netCDF,
+  dask, plotting or VTK).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+#: Heavy libraries, and the commands that may import them.
+PLOTTING = ("matplotlib", "pyvista", "vtk", "vtkmodules", "imageio")
+FILES = ("xarray", "pandas", "netCDF4", "h5py", "meshio", "dask", "distributed")
+SOLVERS = ("skfem", "scipy.sparse.linalg", "scipy.optimize", "scipy.integrate", "sksundae")
+OTHERS = ("pymoo", "SALib", "tqdm")
+
+PROBE = """
+import json, sys
+argv = json.loads(sys.argv[1])
+if argv is None:
+    import fem_racket
+else:
+    from fem_racket.cli import main
+    code = main(argv)
+    assert code == 0, code
+print(json.dumps(sorted(sys.modules)))
+"""
+
+
+def imported(argv: list[str] | None, tmp_path: Path) -> set[str]:
+    """Modules loaded after ``fem-racket ARGV`` (after ``import fem_racket`` when None)."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    done = subprocess.run(
+        [sys.executable, "-c", PROBE, json.dumps(argv)],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stderr
+    return set(json.loads(done.stdout.splitlines()[-1]))
+
+
+def loaded(modules: set[str], names: tuple[str, ...]) -> list[str]:
+    """The ``names`` (packages or modules) of which anything is in ``modules``."""
+    return [n for n in names if any(m == n or m.startswith(n + ".") for m in modules)]
+
+
+@pytest.mark.parametrize(
+    "argv", [None, ["--help"], ["simulate", "--help"]], ids=["import", "help", "simulate-help"]
+)
+def test_package_and_help_import_no_heavy_library(argv, tmp_path):
+    modules = imported(argv, tmp_path)
+    assert not loaded(modules, ("scipy", *SOLVERS, *FILES, *PLOTTING, *OTHERS))
+    if argv is None:  # the package alone: its public names wait for first use
+        assert {m for m in modules if m.startswith("fem_racket")} == {"fem_racket"}
+        assert "numpy" not in modules
+    # the version (installed metadata) is looked up only when asked for
+    assert "importlib.metadata" not in modules
+
+
+@pytest.mark.parametrize("swing", [[], ["--racket-speed", "10"]], ids=["at-rest", "swing"])
+def test_simulate_imports_only_the_engine(swing, tmp_path):
+    modules = imported(["simulate", "--speed", "20", "--position", "0.75", *swing], tmp_path)
+    assert "fem_racket.impact.single" in modules  # the engine path did run
+    assert not loaded(modules, ("scipy", *SOLVERS, *FILES, *PLOTTING, *OTHERS))
+    # nor the other commands, nor the library's drawing and study modules
+    others = ("fem_racket.cli.sweep", "fem_racket.cli.vtk", "fem_racket.cli.reproduce")
+    assert not loaded(modules, (*others, "fem_racket.io.plotting", "fem_racket.paper"))
+
+
+def test_simulate_with_histories_writes_without_file_libraries(tmp_path):
+    modules = imported(["simulate", "--out", str(tmp_path / "r.csv")], tmp_path)
+    assert (tmp_path / "r.csv").is_file()
+    assert not loaded(modules, ("skfem", *FILES, *PLOTTING, *OTHERS))
+
+
+def test_version_is_looked_up_when_asked(capsys):
+    from importlib.metadata import version
+
+    import fem_racket
+    from fem_racket.cli import main
+
+    assert main(["--version"]) == 0
+    assert capsys.readouterr().out == f"fem-racket {version('fem_racket')}\n"
+    assert fem_racket.__version__ == version("fem_racket")
+
+
+def test_the_command_table_names_each_commands_module():
+    from fem_racket.cli import COMMANDS, build_parser
+
+    def commands(parser) -> set[str]:
+        subs = next(a for a in parser._actions if hasattr(a, "choices") and a.choices)
+        return set(subs.choices)
+
+    assert commands(build_parser()) == set(COMMANDS)  # every module's commands are listed
+    for name in COMMANDS:  # and each name's module registers it
+        assert name in commands(build_parser([name, "--help"]))
+    assert commands(build_parser(["-v", "sweep"])) == {"sweep"}
+    assert commands(build_parser(["simulat"])) == set(COMMANDS)  # a typo sees every choice
