@@ -32,10 +32,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.linalg as sla
 
 from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.frame.forms import FrameFE
+from fem_racket.frame.fe import FrameFE
 from fem_racket.frame.hand import Hand, held_frame
 from fem_racket.impact.closed_form import (
     _ModalClosedForm,
@@ -109,6 +108,8 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
             f"grip stiffness = {hand.stiffness!r} N/m^2 is not allowed with the modal held "
             "solver: must be > 0 (use fem_racket.simulate_held)"
         )
+    import scipy.linalg as sla  # here, not at import: the CLI's --help stays without scipy
+
     held = held_frame(fe, hand)
     w2, phi = sla.eigh(held.K, held.M)
     # With a stiff grip layer frame + hand has exactly two rigid-body modes (zero up to
