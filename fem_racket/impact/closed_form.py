@@ -33,7 +33,14 @@ from fem_racket.impact.system import (
 )
 from fem_racket.validation import AccuracyError, InputError, check_choice, show
 
-__all__ = ["ImpactOutcome", "exact_outcome", "solve_exact"]
+__all__ = [
+    "ImpactOutcome",
+    "ModalClosedForm",
+    "exact_outcome",
+    "reduced_matrix",
+    "separation_time",
+    "solve_exact",
+]
 
 
 def _re_matmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -52,8 +59,20 @@ DECOUPLED = 1e-7
 SUM_RULE_TOL = 1e-9
 
 
-def _reduced_matrix(af: np.ndarray, wf2: np.ndarray, mu: float, k: float, c: float) -> np.ndarray:
-    """State matrix A of z = [delta, eta_f, delta', eta_f'] (module docstring)."""
+def reduced_matrix(af: np.ndarray, wf2: np.ndarray, mu: float, k: float, c: float) -> np.ndarray:
+    """State matrix A of z = [delta, eta_f, delta', eta_f'] (module docstring), z' = A z.
+
+    Parameters
+    ----------
+    af : ndarray
+        Flexible mode shapes at the impact point [1/sqrt(kg)].
+    wf2 : ndarray
+        Their squared angular frequencies [rad^2/s^2].
+    mu : float
+        1/m_B plus the rigid modes' inverse effective mass at the impact point [1/kg].
+    k, c : float
+        Contact stiffness [N/m] and damping [N s/m].
+    """
     n = af.size + 1
     A = np.zeros((2 * n, 2 * n))
     A[:n, n:] = np.eye(n)
@@ -87,7 +106,7 @@ def _deflection_residues(
     return r if ok and np.all(np.isfinite(r)) else None
 
 
-class _ModalClosedForm:
+class ModalClosedForm:
     """Closed-form evaluation of the linear modal system at arbitrary times.
 
     ``Z`` holds the amplitudes of [delta, eta_f] on the eigenvalues ``lam``: from the
@@ -116,13 +135,13 @@ class _ModalClosedForm:
         r = None
         if not histories:
             coupled = np.abs(af) > DECOUPLED * float(np.max(np.abs(self.a)))
-            A = _reduced_matrix(af[coupled], wf2[coupled], mu, k, c)
+            A = reduced_matrix(af[coupled], wf2[coupled], mu, k, c)
             lam = np.linalg.eigvals(A)
             r = _deflection_residues(lam, af[coupled], wf2[coupled], mu, k, c, self.v0)
             Z = None if r is None else r[None, :]
         if r is None:
             n = af.size + 1
-            A = _reduced_matrix(af, wf2, mu, k, c)
+            A = reduced_matrix(af, wf2, mu, k, c)
             lam, V = np.linalg.eig(A)
             z0 = np.zeros(2 * n)
             z0[n] = self.v0
@@ -206,8 +225,8 @@ class _ModalClosedForm:
         return x, v
 
 
-def _separation_time(
-    cf: _ModalClosedForm, separation: str, t_est: float, t_max: float | None
+def separation_time(
+    cf: ModalClosedForm, separation: str, t_est: float, t_max: float | None
 ) -> float:
     """First time the event function falls through 0 [s]: a sign change on a grid of 513
     points per 2 t_est window, refined by Brent's method on the closed form."""
@@ -249,8 +268,8 @@ def solve_exact(
 ) -> Trajectory:
     """Closed-form (eigen-solution) path; see the module docstring. Tolerances are unused."""
     check_choice("separation", separation, SEPARATION_EVENTS)
-    cf = _ModalClosedForm(system)
-    tc = _separation_time(cf, separation, system.contact_time_estimate(), t_max)
+    cf = ModalClosedForm(system)
+    tc = separation_time(cf, separation, system.contact_time_estimate(), t_max)
     t = output_times(output_step, tc)
     x, v = cf.states(t)
     return Trajectory(t, x, v, _peak_force(cf, tc)[0])
@@ -278,7 +297,7 @@ class ImpactOutcome:
     peak_time: float
 
 
-def _peak_force(cf: _ModalClosedForm, tc: float) -> tuple[float, float]:
+def _peak_force(cf: ModalClosedForm, tc: float) -> tuple[float, float]:
     """Maximum of F on [0, t_c] and its time.
 
     The largest of 257 values on [0, t_c], then of 257 values on the four grid steps around it
@@ -312,8 +331,8 @@ def exact_outcome(
     from the eigenvalues alone (no eigenvectors), plus the exact maximum of the contact force.
     """
     check_choice("separation", separation, SEPARATION_EVENTS)
-    cf = _ModalClosedForm(system, histories=False)
-    tc = _separation_time(cf, separation, system.contact_time_estimate(), t_max)
+    cf = ModalClosedForm(system, histories=False)
+    tc = separation_time(cf, separation, system.contact_time_estimate(), t_max)
     rebound = cf.v0 - cf.impulse(tc) / cf.mb
     peak, t_peak = _peak_force(cf, tc)
     return ImpactOutcome(tc, rebound, peak, t_peak)

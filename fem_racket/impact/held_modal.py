@@ -37,9 +37,9 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.fe import FrameFE
 from fem_racket.frame.hand import Hand, held_frame
 from fem_racket.impact.closed_form import (
-    _ModalClosedForm,
-    _reduced_matrix,
-    _separation_time,
+    ModalClosedForm,
+    reduced_matrix,
+    separation_time,
 )
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, cutoff_factor
 from fem_racket.validation import AccuracyError, InputError, check_range
@@ -130,7 +130,7 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
     )
 
 
-class _HeldClosedForm(_ModalClosedForm):
+class _HeldClosedForm(ModalClosedForm):
     """The closed form of :mod:`fem_racket.impact.closed_form` on the held racket's reduced
     state matrix (with the grip damping); amplitudes from the eigenvectors."""
 
@@ -272,11 +272,11 @@ def _contact(
         pf = np.append(pf, 0.0)
         D = np.pad(D, ((0, 1), (0, 1)))
     n = af.size + 1
-    A = _reduced_matrix(af, wf2, mu0 + float(af @ af), k, c)
+    A = reduced_matrix(af, wf2, mu0 + float(af @ af), k, c)
     A[n + 1 :, n + 1 :] -= D
     A[n, n + 1 :] += af @ D
     cf = _HeldClosedForm(A, n, mb, float(speed), k, c)
-    tc = _separation_time(cf, "displacement", math.pi / omega_c, None)
+    tc = separation_time(cf, "displacement", math.pi / omega_c, None)
     m_h = basis.hand.mass
     vib = m_h * (pf @ cf.Z[1:]) * cf.lam**2
     rigid = m_h * float(basis.rigid[j] @ a_r) * cf.fvec
