@@ -22,6 +22,8 @@ smooth field loses ~(h beta)^-4 of its digits; see :mod:`fem_racket.frame.curvat
 
 from __future__ import annotations
 
+from collections import OrderedDict
+
 import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, MeshLine
@@ -39,6 +41,26 @@ _M = np.array(
 _P = np.array([0, 1, 0, 1])
 
 
+#: Bases kept for the most recent node sets (building one costs ~1.5 ms, more than assembling:
+#: design studies assemble thousands of frames on one mesh).
+_BASES: OrderedDict[bytes, Basis] = OrderedDict()
+_BASES_KEPT = 8
+
+
+def _basis(points: np.ndarray) -> Basis:
+    """The scikit-fem Hermite basis on ``points``, shared by equal node sets (read-only)."""
+    key = points.tobytes()
+    basis = _BASES.get(key)
+    if basis is None:
+        basis = Basis(MeshLine(points), ElementLineHermite())
+        _BASES[key] = basis
+        if len(_BASES) > _BASES_KEPT:
+            _BASES.popitem(last=False)
+    else:
+        _BASES.move_to_end(key)
+    return basis
+
+
 def _cell_dofs(fe_basis: Basis) -> np.ndarray:
     """DOF indices (w_a, w'_a, w_b, w'_b) of each cell, shape (ncells, 4)."""
     u, ux = fe_basis.nodal_dofs
@@ -52,7 +74,7 @@ def assemble_closed_form(mesh: FrameMesh) -> FrameFE:
     :func:`fem_racket.frame.forms.assemble`; only the round-off of K and M differs.
     """
     p = np.asarray(mesh.points, dtype=float)
-    basis = Basis(MeshLine(p), ElementLineHermite())
+    basis = _basis(p)
     h = np.diff(p)
     scale = h[:, None, None] ** (_P[:, None] + _P[None, :])
     ke = (mesh.EI / h**3)[:, None, None] * _K * scale

@@ -132,7 +132,7 @@ def _run(
     for start in range(0, n, CHUNK):
         sl = slice(start, start + CHUNK)
         ix = index[sl]
-        w = omega[None, :] * root_s[sl, None]
+        w = (omega[None, :] if omega.ndim == 1 else omega[ix]) * root_s[sl, None]
         cor[sl], tc[sl], peak[sl], kept[sl] = solve_cases(
             w,
             values_at[ix],
@@ -192,8 +192,9 @@ def modal_impacts(
 
     Parameters
     ----------
-    omega : array_like, shape (m,)
-        Flexible angular frequencies, ascending [rad/s] (rigid modes excluded).
+    omega : array_like, shape (m,) or (..., m)
+        Flexible angular frequencies, ascending [rad/s] (rigid modes excluded); one row per
+        case (broadcast with ``values``) when the cases are on different structures.
     values : array_like, shape (..., m)
         Mass-normalised mode values at each case's impact point [1/sqrt(kg)].
     rigid : array_like, shape (...)
@@ -212,12 +213,17 @@ def modal_impacts(
     _check_common(speed, kcb, zeta, ball_mass, ei_factor, separation, tolerance)
     omega = np.asarray(omega, dtype=float)
     values = np.asarray(values, dtype=float)
-    if omega.ndim != 1 or values.shape[-1:] != omega.shape or np.any(np.diff(omega) <= 0.0):
+    if (
+        omega.ndim == 0
+        or values.shape[-1:] != omega.shape[-1:]
+        or np.any(np.diff(omega, axis=-1) <= 0.0)
+    ):
         raise InputError(
-            f"omega = array of shape {omega.shape} is not allowed: must be 1-D, ascending, "
-            f"one per column of values (shape {values.shape})"
+            f"omega = array of shape {omega.shape} is not allowed: must be ascending along its "
+            f"last axis, one per column of values (shape {values.shape})"
         )
     shape = np.broadcast_shapes(
+        omega.shape[:-1],
         values.shape[:-1],
         np.shape(rigid),
         np.shape(speed),
@@ -229,7 +235,10 @@ def modal_impacts(
         np.shape(residual_mass),
     )
     n = math.prod(shape)
-    vals = np.broadcast_to(values, shape + omega.shape).reshape(n, omega.size)
+    m = omega.shape[-1]
+    vals = np.broadcast_to(values, shape + (m,)).reshape(n, m)
+    if omega.ndim > 1:
+        omega = np.broadcast_to(omega, shape + (m,)).reshape(n, m)
 
     def flat(x):
         return np.broadcast_to(np.asarray(x, dtype=float), shape).ravel()

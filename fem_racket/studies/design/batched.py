@@ -1,0 +1,124 @@
+"""Many designs at once: each design's modes, then every design's impacts in one engine call.
+
+Evaluating a design one at a time pays the engine's fixed cost per call (grouping the cases by
+reduced size, the root and separation iterations over small blocks) for only its ~60 impacts.
+Here a batch of designs is evaluated in two passes:
+
+1. per design: its mesh, closed-form matrices (:func:`fem_racket.frame.hermite.
+   assemble_closed_form`), every free-free mode (a 20-cell frame has 40: one small dense
+   eigenproblem, no static solves for the modes left out), mass properties and the mode values
+   at the zone's (and the power region's) points;
+2. all the designs' cases together through :func:`fem_racket.impact.engine.modal_impacts`, each
+   case with its own structure's frequencies (designs with equal mode counts share a call).
+
+The physics is that of :func:`.objectives.evaluate_design` (the same reduction of the modes
+above the COR tolerance's cut-off to one pseudo-mode per case); the two agree to round-off and
+the engine's tolerance.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from fem_racket.frame.hermite import assemble_closed_form
+from fem_racket.frame.model import FrameModel
+from fem_racket.impact.engine import modal_impacts
+from fem_racket.impact.structure import frame_modal_data
+from fem_racket.impact.swing import ball_speed_out
+from fem_racket.studies.design.problem import DesignProblem
+from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, mass_quantities
+from fem_racket.studies.design.variables import QUANTITIES
+from fem_racket.studies.sweetspots import power_region
+
+__all__ = ["BATCHED", "evaluate_batch"]
+
+#: Objectives evaluated here (the others go design by design).
+BATCHED = frozenset({"cor", "ball_speed", "power_region"})
+
+
+@dataclass(frozen=True, eq=False)
+class _Design:
+    """One design's structure at its impact points and its quantities."""
+
+    omega: np.ndarray  # (m,)
+    values: np.ndarray  # (p, m)
+    rigid: np.ndarray  # (p,)
+    quantities: dict[str, float]
+    inertia_pivot: float
+
+
+def _design(problem: DesignProblem, x: np.ndarray, positions: np.ndarray) -> _Design:
+    mesh = problem.mesh(x)
+    model = FrameModel(assemble_closed_form(mesh))
+    data = frame_modal_data(model, positions, None, limit=problem.modes)
+    pivot = SWING_WEIGHT_AXIS if problem.swing is None else problem.swing.pivot
+    mq = mass_quantities(mesh, pivot)
+    quantities = {
+        "mass_kg": mq["mass"],
+        "balance_m": mq["cg"],
+        "swing_weight_kg_cm2": mq["swing_weight_kg_cm2"],
+        "f1_hz": float(data.omega[0] / (2.0 * np.pi)),
+    }
+    return _Design(data.omega, data.values, data.rigid, quantities, mq["inertia_pivot"])
+
+
+def _closing_speeds(problem: DesignProblem, x: np.ndarray, inertia: float) -> np.ndarray:
+    """v_r [m/s] of the points ``x`` (x/L) for a racket of that inertia (0 without a swing)."""
+    if problem.swing is None:
+        return np.zeros_like(x)
+    return problem.swing.impact_speed(x, inertia, problem.length)
+
+
+def evaluate_batch(problem: DesignProblem, designs: np.ndarray) -> np.ndarray:
+    """Outputs (every quantity, then the objectives) of each row of ``designs`` [SI].
+
+    Every objective of the problem must be in :data:`BATCHED`.
+    """
+    designs = np.atleast_2d(np.asarray(designs, dtype=float))
+    wanted = set(problem.objectives)
+    zone = problem.zone.positions if wanted & {"cor", "ball_speed"} else np.empty(0)
+    region = problem.region if "power_region" in wanted else np.empty(0)
+    points = np.concatenate([zone, region])
+    v_in = np.asarray(problem.speeds, dtype=float)
+    nd, nz, nr, nv = len(designs), zone.size, region.size, v_in.size
+    built = [_design(problem, x, points) for x in designs]
+    # cases per design: every speed at every zone point, then the first speed on the region
+    v_r = np.array([_closing_speeds(problem, points, d.inertia_pivot) for d in built])
+    speed = np.concatenate(
+        [(v_in[None, :, None] + v_r[:, None, :nz]).reshape(nd, -1), v_in[0] + v_r[:, nz:]], 1
+    )
+    rows = np.concatenate([np.tile(np.arange(nz), nv), nz + np.arange(nr)])
+    cor = np.empty(speed.shape)
+    modes = np.array([d.omega.size for d in built])
+    for m in np.unique(modes):
+        group = np.flatnonzero(modes == m)
+        batch = modal_impacts(
+            np.stack([built[i].omega for i in group])[:, None, :],
+            np.stack([built[i].values[rows] for i in group]),
+            np.stack([built[i].rigid[rows] for i in group]),
+            speed=speed[group],
+            zeta=problem.zeta,
+            ball_mass=problem.ball_mass,
+            tolerance=problem.tolerance,
+        )
+        cor[group] = batch.cor
+    out = np.empty((nd, len(QUANTITIES) + len(problem.objectives)))
+    cost = problem.stiffness_cost * problem.stiffness(designs)
+    zone_cor = cor[:, : nv * nz].reshape(nd, nv, nz)
+    zone_vr = v_r[:, None, :nz]
+    zone_speed = ball_speed_out(zone_cor, v_in[None, :, None], zone_vr)
+    for i, d in enumerate(built):
+        out[i, : len(QUANTITIES)] = [d.quantities[q] for q in QUANTITIES]
+        for j, name in enumerate(problem.objectives):
+            if name == "cor":
+                value = float(np.mean(problem.zone.mean(zone_cor[i])))
+            elif name == "ball_speed":
+                value = float(np.mean(problem.zone.mean(zone_speed[i])))
+            else:
+                v_out = ball_speed_out(cor[i, nv * nz :], v_in[0], v_r[i, nz:])
+                lo, hi = power_region(region, v_out, problem.power_fraction)
+                value = (hi - lo) * problem.length
+            out[i, len(QUANTITIES) + j] = value - cost[i]
+    return out
