@@ -61,7 +61,7 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         **number_list(str),
         default=["ei", "rhoa"],
         metavar="LIST",
-        help="free parameter groups, comma list of ei, rhoa, mass (default ei,rhoa)",
+        help="free parameter groups, comma list of ei, rhoa, mass, position (default ei,rhoa)",
     )
     g.add_argument(
         "--link-ei",
@@ -95,6 +95,42 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         default=[0.0, 0.03],
         metavar="LOW,HIGH",
         help="bounds of every added mass [kg] (default 0,0.03)",
+    )
+    g.add_argument(
+        "--mass-start",
+        type=float,
+        default=0.0,
+        metavar="KG",
+        help="starting value of every added mass [kg] (default 0)",
+    )
+    g.add_argument(
+        "--position-bounds",
+        **number_list(),
+        default=[0.0, 1.0],
+        metavar="LOW,HIGH",
+        help="bounds x/L of every added mass's centre with --vary position (default 0,1)",
+    )
+    g.add_argument(
+        "--ei-points",
+        **number_list(),
+        default=[],
+        metavar="X",
+        help="control stations x/L of a smooth EI(x) (first 0, last 1), one EI variable each, "
+        "instead of one per segment (default: segments)",
+    )
+    g.add_argument(
+        "--rhoa-points",
+        **number_list(),
+        default=[],
+        metavar="X",
+        help="control stations x/L of a smooth rhoA(x), as --ei-points (default: segments)",
+    )
+    g.add_argument(
+        "--interpolation",
+        choices=("pchip", "linear"),
+        default="pchip",
+        help="profile between control points: monotone cubic (PCHIP) or linear "
+        "(default pchip)",
     )
     z = parser.add_argument_group("impact zone, ball and swing")
     z.add_argument(
@@ -261,6 +297,11 @@ def problem_from_args(args: argparse.Namespace) -> DesignProblem:
         "rhoa_bounds": args.rhoa_bounds,
         "mass_positions": args.mass_positions,
         "mass_bounds": args.mass_bounds,
+        "mass_start": args.mass_start,
+        "position_bounds": args.position_bounds,
+        "ei_points": args.ei_points,
+        "rhoa_points": args.rhoa_points,
+        "interpolation": args.interpolation,
         "zone": args.zone,
         "zone_range": args.zone_range,
         "zone_points": args.zone_points,

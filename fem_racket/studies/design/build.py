@@ -4,7 +4,9 @@
 :class:`~.problem.DesignProblem` on the starting racket: each constraint is ``None`` (absent), a
 ``(low, high)`` pair, or ``("start",)`` (equal to the starting racket's value: "keep its mass");
 the zone is ``"uniform"`` over ``zone_range`` or ``"node"``, a Gaussian about the starting
-racket's mode-1 node on the string face (Hatze 1994).
+racket's mode-1 node on the string face (Hatze 1994). ``ei_points`` / ``rhoa_points`` (control
+stations x/L) make EI(x) / rhoA(x) smooth profiles (:mod:`.profiles`); ``vary`` "position"
+frees the added masses' centres within ``position_bounds``.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.studies.design.problem import DesignProblem
+from fem_racket.studies.design.profiles import check_stations, tributary_edges
 from fem_racket.studies.design.swing import (
     SWING_EXPONENT,
     SWING_WEIGHT_AXIS,
@@ -75,6 +78,11 @@ def design_problem(
     mass_positions: Sequence[float] = (),
     mass_bounds: Sequence[float] = (0.0, 0.03),
     mass_width: float = 0.02,
+    ei_points: Sequence[float] = (),
+    rhoa_points: Sequence[float] = (),
+    interpolation: str = "pchip",
+    position_bounds: Sequence[float] = (0.0, 1.0),
+    mass_start: float = 0.0,
     zone: str = "uniform",
     zone_range: Sequence[float] = (0.6, 0.9),
     zone_points: int = 20,
@@ -98,6 +106,13 @@ def design_problem(
     start : Frame or FrameMesh, optional
         The starting racket (the paper's when None); a mesh is read as its piecewise-uniform
         frame.
+    ei_points, rhoa_points : sequence of float
+        Control stations x/L of smooth EI(x), rhoA(x) profiles (first 0, last 1); empty: one
+        value per segment.
+    position_bounds : (float, float)
+        Bounds x/L of every added mass's centre when ``vary`` has "position".
+    mass_start : float
+        Starting value of every added mass [kg] (0: the starting racket as it is).
     racket_speed : float, optional
         Swing: the reference point's speed towards the ball with the starting racket [m/s]
         (:class:`.swing.SwingModel`); a stationary racket when None.
@@ -143,6 +158,11 @@ def design_problem(
         mass_bounds=_pair("mass bounds", mass_bounds),
         link_ei=link_ei,
         mass_width=mass_width,
+        ei_points=tuple(ei_points),
+        rhoa_points=tuple(rhoa_points),
+        interpolation=interpolation,
+        position_bounds=_pair("position bounds", position_bounds),
+        mass_start=mass_start,
         zone=z,
         speeds=tuple(float(v) for v in speeds),
         swing=swing,
@@ -180,6 +200,10 @@ def paper_problem(
     link_ei: bool = False,
     link_rhoa: bool = False,
     start: Frame | None = None,
+    ei_points: tuple[float, ...] = (),
+    rhoa_points: tuple[float, ...] = (),
+    position_bounds: tuple[float, float] = (0.0, 1.0),
+    mass_start: float = 0.0,
     **kwargs: Any,
 ) -> DesignProblem:
     """A design problem on the paper's racket (or ``start``), split at ``boundaries`` x/L.
@@ -190,7 +214,8 @@ def paper_problem(
         Interior segment boundaries x/L; the default splits the paper's step at 0.3 L and the top
         side into three equal parts (4 segments: 8 variables with ``vary=("ei", "rhoa")``).
     vary : tuple of str
-        Which parameters are free: "ei", "rhoa", "mass" (each a group over all segments/masses).
+        Which parameters are free: "ei", "rhoa", "mass", "position" (each a group over all
+        segments, control points or added masses).
     ei_bounds, rhoa_bounds, mass_bounds : (float, float)
         Bounds of every EI [N m^2] (Fig 13's 50-3000), rhoA [kg/m] and added mass [kg].
     mass_positions : tuple of float
@@ -199,11 +224,19 @@ def paper_problem(
         One EI (rhoA) variable, EI_1 (rhoA_1), the others keeping their starting ratios.
     start : Frame, optional
         The starting racket; the paper's standard racket when None.
+    ei_points, rhoa_points : tuple of float
+        Control stations x/L of smooth profiles (:mod:`.profiles`) instead of segment values;
+        their starting values are the starting racket's means over each station's share of the
+        frame (between the midpoints to its neighbours).
+    position_bounds : (float, float)
+        Bounds x/L of the added masses' centres ("position" in ``vary``).
+    mass_start : float
+        Starting value of every added mass [kg].
     **kwargs
         Other :class:`DesignProblem` fields (zone, speeds, swing, constraints, objectives, ...).
     """
     for name in vary:
-        check_choice("vary", name, ("ei", "rhoa", "mass"))
+        check_choice("vary", name, ("ei", "rhoa", "mass", "position"))
     frame = standard_frame() if start is None else start
     length = frame.length
     b = np.asarray(boundaries, dtype=float)
@@ -213,8 +246,14 @@ def paper_problem(
         )
     edges = np.concatenate([[0.0], b, [1.0]]) * length
     ei, ra = _resample(frame, edges)
-    n, a = ei.size, len(mass_positions)
-    p0 = np.concatenate([ei, ra, np.zeros(a)])
+    if ei_points:
+        ei = _resample(frame, tributary_edges(check_stations("ei_points", ei_points)) * length)[0]
+    if rhoa_points:
+        share = tributary_edges(check_stations("rhoa_points", rhoa_points)) * length
+        ra = _resample(frame, share)[1]
+    n, r, a = ei.size, ra.size, len(mass_positions)
+    m0 = float(mass_start)
+    p0 = np.concatenate([ei, ra, np.full(a, m0), np.asarray(mass_positions, dtype=float)])
     variables: list[Variable] = []
     if "ei" in vary:
         if link_ei:
@@ -224,9 +263,13 @@ def paper_problem(
     if "rhoa" in vary and link_rhoa:
         variables.append(Variable("rhoa", n, *rhoa_bounds, "kg/m"))
     elif "rhoa" in vary:
-        variables += [Variable(f"rhoa_{k + 1}", n + k, *rhoa_bounds, "kg/m") for k in range(n)]
+        variables += [Variable(f"rhoa_{k + 1}", n + k, *rhoa_bounds, "kg/m") for k in range(r)]
     if "mass" in vary:
-        variables += [Variable(f"mass_{k + 1}", 2 * n + k, *mass_bounds, "kg") for k in range(a)]
+        variables += [Variable(f"mass_{k + 1}", n + r + k, *mass_bounds, "kg") for k in range(a)]
+    if "position" in vary:
+        variables += [
+            Variable(f"pos_{k + 1}", n + r + a + k, *position_bounds, "x/L") for k in range(a)
+        ]
     return DesignProblem(
         segment_lengths=tuple(np.diff(edges)),
         start=p0,
@@ -234,5 +277,7 @@ def paper_problem(
         mass_positions=tuple(mass_positions),
         link_ei=link_ei,
         link_rhoa=link_rhoa,
+        ei_stations=tuple(ei_points),
+        rhoa_stations=tuple(rhoa_points),
         **kwargs,
     )
