@@ -9,6 +9,7 @@ import argparse
 from typing import Any
 
 from fem_racket.cli.common import add_frame_options, frame_from_args, run_parameters
+from fem_racket.cli.laws import add_law_options, law_from_args
 from fem_racket.cli.lists import number_list
 from fem_racket.studies.design.build import ZONES, design_problem
 from fem_racket.studies.design.problem import DesignProblem
@@ -61,7 +62,8 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         **number_list(str),
         default=["ei", "rhoa"],
         metavar="LIST",
-        help="free parameter groups, comma list of ei, rhoa, mass, position (default ei,rhoa)",
+        help="free parameter groups, comma list of ei, rhoa, mass, position, string, "
+        "string_cubic (default ei,rhoa)",
     )
     g.add_argument(
         "--link-ei",
@@ -129,8 +131,23 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         "--interpolation",
         choices=("pchip", "linear"),
         default="pchip",
-        help="profile between control points: monotone cubic (PCHIP) or linear "
-        "(default pchip)",
+        help="profile between control points: monotone cubic (PCHIP) or linear (default pchip)",
+    )
+    g.add_argument(
+        "--string-bounds",
+        **number_list(),
+        default=None,
+        metavar="LOW,HIGH",
+        help="with --vary string: bounds of the factor on K_CB (linear law) or of k_s [N/m] "
+        "(--law series) (default 0.5-2 x the start)",
+    )
+    g.add_argument(
+        "--cubic-bounds",
+        **number_list(),
+        default=None,
+        metavar="LOW,HIGH",
+        help="with --vary string_cubic (--law series): bounds of k_3 [N/m^3] "
+        "(default 0-2 x the start)",
     )
     z = parser.add_argument_group("impact zone, ball and swing")
     z.add_argument(
@@ -242,6 +259,7 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
             metavar="LOW,HIGH",
             help=f"{text}: LOW,HIGH or 'start' (keep the starting racket's) (default: free)",
         )
+    add_law_options(parser)
 
 
 def add_run_options(parser: argparse.ArgumentParser) -> None:
@@ -302,6 +320,9 @@ def problem_from_args(args: argparse.Namespace) -> DesignProblem:
         "ei_points": args.ei_points,
         "rhoa_points": args.rhoa_points,
         "interpolation": args.interpolation,
+        "law": law_from_args(args),
+        "string_bounds": args.string_bounds,
+        "cubic_bounds": args.cubic_bounds,
         "zone": args.zone,
         "zone_range": args.zone_range,
         "zone_points": args.zone_points,

@@ -12,8 +12,10 @@ properties, modes, impacts and mesh files need nothing new, and a mesh file writ
 reloads the same racket. A strip end closer than :data:`MIN_GAP` x L (0.7 um on a 0.68 m frame)
 to an existing node is moved onto it (the strip keeps its mass), so a mass whose position varies
 continuously (a design variable) never makes a cell of vanishing length, whose stiffness
-~EI/h^3 would swamp the others (scikit-fem's Hermite basis is singular below ~1e-9 L). As ``w`` -> 0 the strip tends to a point mass (its own moment of inertia
-m w^2 / 12 is 3e-6 kg m^2 for 30 g over 20 mm: 0.02 % of the paper racket's I_CG).
+~EI/h^3 would swamp the others (scikit-fem's Hermite basis is singular below ~1e-9 L; the
+engine's static solves lose digits below ~1e-5 L). As ``w`` -> 0 the strip tends to a point mass
+(its own moment of inertia m w^2 / 12 is 3e-6 kg m^2 for 30 g over 20 mm: 0.02 % of the paper
+racket's I_CG).
 """
 
 from __future__ import annotations

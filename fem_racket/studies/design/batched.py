@@ -13,18 +13,28 @@ Here a batch of designs is evaluated in two passes:
 
 The physics is that of :func:`.objectives.evaluate_design` (the same reduction of the modes
 above the COR tolerance's cut-off to one pseudo-mode per case); the two agree to round-off and
-the engine's tolerance.
+the engine's tolerance. With the paper's linear law K_CB is the closing speed's K_CB(v) times the
+design's ``kcb_factor``. Any other contact law (:attr:`.problem.DesignProblem.law`, with the
+design's string-bed k_s and k_3 for the series law) runs each design's cases through the general
+integrator (:func:`fem_racket.impact.general.solve_general`: 100 steps per contact time and
+Richardson extrapolation, |dCOR| ~ 1e-6) on the design's receptance at the impact points; e_A is
+-v_B(t_c) / v_closing as for the linear law.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import logging
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from fem_racket.contact.linear import kcb_from_speed
+from fem_racket.contact.series import SeriesBallString
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.engine import modal_impacts
+from fem_racket.impact.general import DEFAULT_BETA, DEFAULT_STEPS, solve_general
+from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.structure import frame_modal_data
 from fem_racket.impact.swing import ball_speed_out
 from fem_racket.studies.design.problem import DesignProblem
@@ -36,12 +46,23 @@ __all__ = ["BATCHED", "evaluate_batch"]
 
 #: Objectives evaluated here (the others go design by design).
 BATCHED = frozenset({"cor", "ball_speed", "power_region"})
+#: (steps per contact time, beta) of the general integrator, tried in turn: on rare frames the
+#: law's per-step Newton iteration fails at the default step and succeeds at half of it or with
+#: every mode (measured on random designs of the paper's racket with the series law).
+RETRIES = (
+    (DEFAULT_STEPS, DEFAULT_BETA),
+    (2 * DEFAULT_STEPS, DEFAULT_BETA),
+    (2 * DEFAULT_STEPS, None),
+)
+
+log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True, eq=False)
 class _Design:
     """One design's structure at its impact points and its quantities."""
 
+    model: FrameModel
     omega: np.ndarray  # (m,)
     values: np.ndarray  # (p, m)
     rigid: np.ndarray  # (p,)
@@ -61,7 +82,7 @@ def _design(problem: DesignProblem, x: np.ndarray, positions: np.ndarray) -> _De
         "swing_weight_kg_cm2": mq["swing_weight_kg_cm2"],
         "f1_hz": float(data.omega[0] / (2.0 * np.pi)),
     }
-    return _Design(data.omega, data.values, data.rigid, quantities, mq["inertia_pivot"])
+    return _Design(model, data.omega, data.values, data.rigid, quantities, mq["inertia_pivot"])
 
 
 def _closing_speeds(problem: DesignProblem, x: np.ndarray, inertia: float) -> np.ndarray:
@@ -69,6 +90,68 @@ def _closing_speeds(problem: DesignProblem, x: np.ndarray, inertia: float) -> np
     if problem.swing is None:
         return np.zeros_like(x)
     return problem.swing.impact_speed(x, inertia, problem.length)
+
+
+def _linear_cor(
+    problem: DesignProblem,
+    built: list[_Design],
+    rows: np.ndarray,
+    speed: np.ndarray,
+    factor: np.ndarray,
+) -> np.ndarray:
+    """e_A (designs, cases) under the linear law, designs with equal mode counts in one call."""
+    kcb = None
+    if np.any(factor != 1.0):
+        uniq, inv = np.unique(speed, return_inverse=True)
+        kcb = np.array([kcb_from_speed(v) for v in uniq])[inv].reshape(speed.shape)
+        kcb = kcb * factor[:, None]
+    cor = np.empty(speed.shape)
+    modes = np.array([d.omega.size for d in built])
+    for m in np.unique(modes):
+        group = np.flatnonzero(modes == m)
+        batch = modal_impacts(
+            np.stack([built[i].omega for i in group])[:, None, :],
+            np.stack([built[i].values[rows] for i in group]),
+            np.stack([built[i].rigid[rows] for i in group]),
+            speed=speed[group],
+            kcb=None if kcb is None else kcb[group],
+            zeta=problem.zeta,
+            ball_mass=problem.ball_mass,
+            tolerance=problem.tolerance,
+        )
+        cor[group] = batch.cor
+    return cor
+
+
+def _law_cor(
+    problem: DesignProblem,
+    model: FrameModel,
+    positions: np.ndarray,
+    speed: np.ndarray,
+    values: dict[str, float],
+) -> np.ndarray:
+    """e_A of one design's cases under the problem's (nonlinear) law, by the general integrator."""
+    law = problem.law
+    if isinstance(law, SeriesBallString):
+        law = replace(
+            law,
+            string_stiffness=float(values["string_stiffness"]),
+            string_cubic=float(values["string_cubic"]),
+        )
+    rec = receptance(model, positions, problem.ball_mass, problem.modes)
+    for steps, beta in RETRIES[:-1]:
+        try:
+            out = solve_general(law, rec, speed, steps=steps, beta=beta)
+            return -out.ball_velocity / speed
+        except RuntimeError as err:  # a step's Newton iteration on the law failed
+            log.debug("general integrator (%d steps, beta %s): %s; retrying", steps, beta, err)
+    steps, beta = RETRIES[-1]
+    out = solve_general(law, rec, speed, steps=steps, beta=beta)
+    return -out.ball_velocity / speed
+
+
+def _row(values: dict[str, np.ndarray], i: int) -> dict[str, float]:
+    return {k: float(v[i]) for k, v in values.items()}
 
 
 def evaluate_batch(problem: DesignProblem, designs: np.ndarray) -> np.ndarray:
@@ -90,20 +173,18 @@ def evaluate_batch(problem: DesignProblem, designs: np.ndarray) -> np.ndarray:
         [(v_in[None, :, None] + v_r[:, None, :nz]).reshape(nd, -1), v_in[0] + v_r[:, nz:]], 1
     )
     rows = np.concatenate([np.tile(np.arange(nz), nv), nz + np.arange(nr)])
-    cor = np.empty(speed.shape)
-    modes = np.array([d.omega.size for d in built])
-    for m in np.unique(modes):
-        group = np.flatnonzero(modes == m)
-        batch = modal_impacts(
-            np.stack([built[i].omega for i in group])[:, None, :],
-            np.stack([built[i].values[rows] for i in group]),
-            np.stack([built[i].rigid[rows] for i in group]),
-            speed=speed[group],
-            zeta=problem.zeta,
-            ball_mass=problem.ball_mass,
-            tolerance=problem.tolerance,
+    law = problem.law_values(designs)
+    if problem.law is None:
+        cor = _linear_cor(problem, built, rows, speed, law["kcb_factor"])
+    else:
+        cor = np.array(
+            [
+                _law_cor(
+                    problem, d.model, points[rows], speed[i], {k: v[i] for k, v in law.items()}
+                )
+                for i, d in enumerate(built)
+            ]
         )
-        cor[group] = batch.cor
     out = np.empty((nd, len(QUANTITIES) + len(problem.objectives)))
     cost = problem.stiffness_cost * problem.stiffness(designs)
     zone_cor = cor[:, : nv * nz].reshape(nd, nv, nz)

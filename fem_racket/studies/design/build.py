@@ -6,7 +6,9 @@
 the zone is ``"uniform"`` over ``zone_range`` or ``"node"``, a Gaussian about the starting
 racket's mode-1 node on the string face (Hatze 1994). ``ei_points`` / ``rhoa_points`` (control
 stations x/L) make EI(x) / rhoA(x) smooth profiles (:mod:`.profiles`); ``vary`` "position"
-frees the added masses' centres within ``position_bounds``.
+frees the added masses' centres within ``position_bounds``; "string" frees the string bed's
+stiffness (the factor on K_CB for the paper's linear law, k_s of the series law, within
+``string_bounds``) and "string_cubic" the series law's k_3 (``cubic_bounds``).
 """
 
 from __future__ import annotations
@@ -16,6 +18,8 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.series import SeriesBallString
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh
 from fem_racket.frame.modal import mode_nodes
@@ -36,6 +40,8 @@ from fem_racket.validation import InputError, check_choice
 __all__ = ["ZONES", "design_problem", "mode1_node", "paper_problem"]
 
 ZONES = ("uniform", "node")
+#: Parameter groups a design may vary.
+VARY = ("ei", "rhoa", "mass", "position", "string", "string_cubic")
 
 
 def mode1_node(frame: Frame, elements: int = 20) -> float:
@@ -83,6 +89,9 @@ def design_problem(
     interpolation: str = "pchip",
     position_bounds: Sequence[float] = (0.0, 1.0),
     mass_start: float = 0.0,
+    law: ContactLaw | None = None,
+    string_bounds: Sequence[float] | None = None,
+    cubic_bounds: Sequence[float] | None = None,
     zone: str = "uniform",
     zone_range: Sequence[float] = (0.6, 0.9),
     zone_points: int = 20,
@@ -113,6 +122,10 @@ def design_problem(
         Bounds x/L of every added mass's centre when ``vary`` has "position".
     mass_start : float
         Starting value of every added mass [kg] (0: the starting racket as it is).
+    law : ContactLaw, optional
+        The ball/string law; the paper's linear law when None.
+    string_bounds, cubic_bounds : (float, float), optional
+        Bounds of the string-bed variables (see :func:`paper_problem`).
     racket_speed : float, optional
         Swing: the reference point's speed towards the ball with the starting racket [m/s]
         (:class:`.swing.SwingModel`); a stationary racket when None.
@@ -163,6 +176,9 @@ def design_problem(
         interpolation=interpolation,
         position_bounds=_pair("position bounds", position_bounds),
         mass_start=mass_start,
+        law=law,
+        string_bounds=None if string_bounds is None else _pair("string bounds", string_bounds),
+        cubic_bounds=None if cubic_bounds is None else _pair("cubic bounds", cubic_bounds),
         zone=z,
         speeds=tuple(float(v) for v in speeds),
         swing=swing,
@@ -204,6 +220,9 @@ def paper_problem(
     rhoa_points: tuple[float, ...] = (),
     position_bounds: tuple[float, float] = (0.0, 1.0),
     mass_start: float = 0.0,
+    law: ContactLaw | None = None,
+    string_bounds: tuple[float, float] | None = None,
+    cubic_bounds: tuple[float, float] | None = None,
     **kwargs: Any,
 ) -> DesignProblem:
     """A design problem on the paper's racket (or ``start``), split at ``boundaries`` x/L.
@@ -232,11 +251,20 @@ def paper_problem(
         Bounds x/L of the added masses' centres ("position" in ``vary``).
     mass_start : float
         Starting value of every added mass [kg].
+    law : ContactLaw, optional
+        The ball/string law (the paper's linear one when None).
+    string_bounds : (float, float), optional
+        Bounds of the string-bed stiffness ("string" in ``vary``): the factor on the paper's
+        K_CB(v) [-] for the linear law, k_s [N/m] for the series law; 0.5-2 times the start
+        by default.
+    cubic_bounds : (float, float), optional
+        Bounds of the series law's k_3 [N/m^3] ("string_cubic" in ``vary``); 0-2 times the
+        start by default.
     **kwargs
         Other :class:`DesignProblem` fields (zone, speeds, swing, constraints, objectives, ...).
     """
     for name in vary:
-        check_choice("vary", name, ("ei", "rhoa", "mass", "position"))
+        check_choice("vary", name, VARY)
     frame = standard_frame() if start is None else start
     length = frame.length
     b = np.asarray(boundaries, dtype=float)
@@ -253,7 +281,15 @@ def paper_problem(
         ra = _resample(frame, share)[1]
     n, r, a = ei.size, ra.size, len(mass_positions)
     m0 = float(mass_start)
-    p0 = np.concatenate([ei, ra, np.full(a, m0), np.asarray(mass_positions, dtype=float)])
+    if law is None:
+        law_start = [1.0]
+    elif isinstance(law, SeriesBallString):
+        law_start = [float(law.string_stiffness), float(law.string_cubic)]
+    else:
+        law_start = []
+    p0 = np.concatenate(
+        [ei, ra, np.full(a, m0), np.asarray(mass_positions, dtype=float), law_start]
+    )
     variables: list[Variable] = []
     if "ei" in vary:
         if link_ei:
@@ -270,6 +306,7 @@ def paper_problem(
         variables += [
             Variable(f"pos_{k + 1}", n + r + a + k, *position_bounds, "x/L") for k in range(a)
         ]
+    variables += _law_variables(vary, law, law_start, n + r + 2 * a, string_bounds, cubic_bounds)
     return DesignProblem(
         segment_lengths=tuple(np.diff(edges)),
         start=p0,
@@ -279,5 +316,40 @@ def paper_problem(
         link_rhoa=link_rhoa,
         ei_stations=tuple(ei_points),
         rhoa_stations=tuple(rhoa_points),
+        law=law,
         **kwargs,
     )
+
+
+def _law_variables(
+    vary: tuple[str, ...],
+    law: ContactLaw | None,
+    start: list[float],
+    index: int,
+    string_bounds: tuple[float, float] | None,
+    cubic_bounds: tuple[float, float] | None,
+) -> list[Variable]:
+    """The string-bed variables: K_CB factor (linear law) or k_s, k_3 (series law)."""
+    out: list[Variable] = []
+    series = isinstance(law, SeriesBallString)
+    if "string" in vary:
+        if law is not None and not series:
+            raise InputError(
+                f"vary = 'string' is not allowed with law {law.name!r}: only the linear and "
+                "series laws have a string-bed stiffness"
+            )
+        lo, hi = (0.5 * start[0], 2.0 * start[0]) if string_bounds is None else string_bounds
+        if series:
+            out.append(Variable("k_s", index, lo, hi, "N/m", log=True))
+        else:
+            out.append(Variable("kcb_factor", index, lo, hi, "-", log=True))
+    if "string_cubic" in vary:
+        if not series:
+            raise InputError(
+                "vary = 'string_cubic' is not allowed without law 'series': only its string "
+                "bed hardens (k_3)"
+            )
+        default = (0.0, 2.0 * start[1] if start[1] > 0.0 else 1e9)
+        lo, hi = default if cubic_bounds is None else cubic_bounds
+        out.append(Variable("k_3", index + 1, lo, hi, "N/m^3"))
+    return out

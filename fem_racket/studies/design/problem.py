@@ -6,15 +6,18 @@ at chosen positions (strips, :mod:`fem_racket.frame.masses`). Its full parameter
 
     p = [EI_1 .. EI_n, rhoA_1 .. rhoA_n, m_1 .. m_a, x_1 .. x_a]
 
-(x_k the added masses' centres x/L). With ``ei_stations`` (``rhoa_stations``) the EI (rhoA)
+(x_k the added masses' centres x/L), followed by the contact law's string-bed parameters
+(:meth:`DesignProblem.law_names`): the factor on the paper's K_CB(v) for its linear law, k_s and
+k_3 for the series law. With ``ei_stations`` (``rhoa_stations``) the EI (rhoA)
 entries are instead the values of a smooth profile at those control points x/L, interpolated
 between them and averaged over each mesh cell (:mod:`.profiles`); their count is the stations'.
 
 Any subset of p is free (the design variables, each with bounds); the rest keeps the starting
 racket's values. With ``link_ei`` one variable "ei" is EI_1 and every EI_k keeps its starting ratio
 EI_k / EI_1 (the paper's Fig 13 varies EI1 with EI2 = 0.88 EI1 this way). EI variables are searched
-on a log scale. An added mass's position is a variable too (``pos_k``, bounded inside [0, 1]). The starting racket by default is the paper's (Kawazoe & Kanda 1997, section 2.2)
-sampled on the segments.
+on a log scale. An added mass's position is a variable too (``pos_k``, bounded inside [0, 1]).
+The starting racket by default is the paper's (Kawazoe & Kanda 1997, section 2.2) sampled on the
+segments.
 
 Constraints bound derived quantities (:data:`QUANTITIES`): total mass, balance point, swing weight
 about 0.10 m, first free-free frequency. Objectives (:data:`OBJECTIVES`, all maximised) average
@@ -30,12 +33,14 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import (
     DEFAULT_BALL_MASS,
     KCB_SPEED_RANGE,
     PAPER_CLAMPED_COR,
     zeta_from_cor,
 )
+from fem_racket.contact.series import SeriesBallString
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import Frame, Segment
@@ -99,6 +104,10 @@ class DesignProblem:
         per segment.
     interpolation : {"pchip", "linear"}
         The profiles' interpolant between control points.
+    law : ContactLaw or None
+        The ball/string law (None: the paper's linear law, K_CB from the closing speed times the
+        ``kcb_factor`` entry of p, and ``zeta``); another law's impacts run through the general
+        integrator (:func:`fem_racket.impact.general.solve_general`).
     """
 
     segment_lengths: tuple[float, ...]
@@ -124,6 +133,7 @@ class DesignProblem:
     ei_stations: tuple[float, ...] = ()
     rhoa_stations: tuple[float, ...] = ()
     interpolation: str = "pchip"
+    law: ContactLaw | None = None
 
     def __post_init__(self) -> None:
         n = self.n_segments
@@ -131,7 +141,8 @@ class DesignProblem:
             if getattr(self, name):
                 object.__setattr__(self, name, check_stations(name, getattr(self, name)))
         check_choice("interpolation", self.interpolation, INTERPOLATIONS)
-        if self.start.shape != (self.n_ei + self.n_rhoa + 2 * len(self.mass_positions),):
+        size = self.n_ei + self.n_rhoa + 2 * len(self.mass_positions) + len(self.law_names)
+        if self.start.shape != (size,):
             raise InputError("design start vector does not match the segments and masses")
         edges = np.concatenate([[0.0], np.cumsum(self.segment_lengths)])
         frame = Frame(tuple(Segment(h, 1.0, 1.0) for h in self.segment_lengths))
@@ -149,14 +160,19 @@ class DesignProblem:
         if not self.speeds:
             raise InputError("speeds = [] is not allowed: give at least one ball speed [m/s]")
         for v in self.speeds:  # the K_CB law's range (fem_racket.contact.linear)
-            check_range("speed", v, KCB_SPEED_RANGE[0], KCB_SPEED_RANGE[1], unit="m/s")
+            if self.law is None:
+                check_range("speed", v, KCB_SPEED_RANGE[0], KCB_SPEED_RANGE[1], unit="m/s")
+            else:
+                check_range("speed", v, 0.0, KCB_SPEED_RANGE[1], unit="m/s", include_low=False)
         check_finite("stiffness cost", self.stiffness_cost, "1/(N m^2)")
         for v in self.variables:
-            floor = 0.0 if v.unit in ("kg", "x/L") else np.nextafter(0.0, 1.0)
+            floor = 0.0 if v.unit in ("kg", "x/L", "N/m^3") else np.nextafter(0.0, 1.0)
             top = 1.0 if v.unit == "x/L" else np.inf
             if not (np.isfinite(v.low) and np.isfinite(v.high) and floor <= v.low < v.high <= top):
-                need = "0 <= low < high <= 1" if v.unit == "x/L" else (
-                    f"{'0 <=' if floor == 0.0 else '0 <'} low < high, finite"
+                need = (
+                    "0 <= low < high <= 1"
+                    if v.unit == "x/L"
+                    else (f"{'0 <=' if floor == 0.0 else '0 <'} low < high, finite")
                 )
                 raise InputError(
                     f"{v.name} bounds = [{v.low}, {v.high}] {v.unit} are not allowed: need {need}"
@@ -180,6 +196,22 @@ class DesignProblem:
     def n_rhoa(self) -> int:
         """Number of rhoA entries of p (control points or segments)."""
         return len(self.rhoa_stations) or self.n_segments
+
+    @property
+    def law_names(self) -> tuple[str, ...]:
+        """The contact law's entries at the end of p (see the module docstring)."""
+        if self.law is None:
+            return ("kcb_factor",)
+        if isinstance(self.law, SeriesBallString):
+            return ("string_stiffness", "string_cubic")
+        return ()
+
+    def law_values(self, x: np.ndarray) -> dict[str, np.ndarray]:
+        """The law entries of p for design variables ``x`` (shape (..., n_var)), by name."""
+        p = self.parameters(x)
+        k = len(self.law_names)
+        tail = p[..., p.shape[-1] - k :]
+        return {name: tail[..., j] for j, name in enumerate(self.law_names)}
 
     @property
     def length(self) -> float:
@@ -242,8 +274,10 @@ class DesignProblem:
         n, r, a = self.n_ei, self.n_rhoa, len(self.mass_positions)
         points = self._points
         ei, ra = p[:n], p[n : n + r]
-        ei = cell_means(self.ei_stations, ei, points, self.interpolation) if self.ei_stations else (
-            ei[self._cell_segment]
+        ei = (
+            cell_means(self.ei_stations, ei, points, self.interpolation)
+            if self.ei_stations
+            else (ei[self._cell_segment])
         )
         if self.rhoa_stations:
             ra = cell_means(self.rhoa_stations, ra, points, self.interpolation)
@@ -251,7 +285,7 @@ class DesignProblem:
             ra = ra[self._cell_segment]
         masses = [
             AddedMass(float(pos), float(m), self.mass_width)
-            for m, pos in zip(p[n + r : n + r + a], p[n + r + a :], strict=True)
+            for m, pos in zip(p[n + r : n + r + a], p[n + r + a : n + r + 2 * a], strict=True)
         ]
         return add_masses(FrameMesh(points, ei, ra), masses)
 
@@ -313,6 +347,7 @@ class DesignProblem:
                 if self.ei_stations or self.rhoa_stations
                 else {}
             ),
+            **({} if self.law is None else {"law": self.law.describe()}),
         }
 
     @property
