@@ -21,6 +21,7 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.frame.hermite import assemble_closed_form
+from fem_racket.frame.masses import DEFAULT_WIDTH
 from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
@@ -248,7 +249,8 @@ def paper_problem(
         their starting values are the starting racket's means over each station's share of the
         frame (between the midpoints to its neighbours).
     position_bounds : (float, float)
-        Bounds x/L of the added masses' centres ("position" in ``vary``).
+        Bounds x/L of the added masses' centres ("position" in ``vary``), narrowed to keep each
+        strip on the frame (a centre within half a width of an end acts as if at that limit).
     mass_start : float
         Starting value of every added mass [kg].
     law : ContactLaw, optional
@@ -303,9 +305,8 @@ def paper_problem(
     if "mass" in vary:
         variables += [Variable(f"mass_{k + 1}", n + r + k, *mass_bounds, "kg") for k in range(a)]
     if "position" in vary:
-        variables += [
-            Variable(f"pos_{k + 1}", n + r + a + k, *position_bounds, "x/L") for k in range(a)
-        ]
+        bounds = _strip_bounds(position_bounds, kwargs.get("mass_width", DEFAULT_WIDTH) / length)
+        variables += [Variable(f"pos_{k + 1}", n + r + a + k, *bounds, "x/L") for k in range(a)]
     variables += _law_variables(vary, law, law_start, n + r + 2 * a, string_bounds, cubic_bounds)
     return DesignProblem(
         segment_lengths=tuple(np.diff(edges)),
@@ -319,6 +320,15 @@ def paper_problem(
         law=law,
         **kwargs,
     )
+
+
+def _strip_bounds(bounds: tuple[float, float], width: float) -> tuple[float, float]:
+    """Position bounds x/L narrowed so that the whole strip (``width`` x/L) lies on the frame:
+    beyond them the strip is pushed back inside and its position no longer matters."""
+    lo, hi = bounds
+    if not 0.0 <= lo < hi <= 1.0:
+        return lo, hi  # refused by the problem with the bounds as given
+    return max(lo, 0.5 * width), min(hi, 1.0 - 0.5 * width)
 
 
 def _law_variables(
