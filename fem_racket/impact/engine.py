@@ -13,7 +13,8 @@ Public signature (stable)::
 Every case argument is a number or an array; they broadcast together. :func:`impacts` takes a
 frame (a :class:`~fem_racket.frame.model.FrameModel`, whose modes it computes once and reuses,
 or a Frame/FrameMesh/None, meshed with ``elements`` cells); :func:`modal_impacts` takes any
-structure's modes directly: flexible angular frequencies ``omega`` (m,) [rad/s], mode values at
+structure's modes directly: flexible angular frequencies ``omega`` (m,) [rad/s] (or (n, m), one
+row per case, for cases on different structures: many designs in one call), mode values at
 each case's impact point ``values`` (n, m) [1/sqrt(kg)] and the rigid modes' summed squared
 values ``rigid`` (n,) [1/kg] (1/m_R + d^2/I_R for a free frame; any number of rigid modes,
 including none).

@@ -275,3 +275,22 @@ def test_new_variables_round_trip_through_a_run_file(case, tmp_path, capsys):
     assert main(["modes", "--mesh", str(out / "optimum.vtu"), "--json"]) == 0
     modes = json.loads(capsys.readouterr().out)
     assert modes["mass_kg"] == pytest.approx(result["outputs"]["mass_kg"], rel=1e-12)
+
+
+def test_modal_impacts_with_one_structure_per_case():
+    """Cases on two frames in one call (a row of omega per case) give each frame's own call."""
+    fm = [FrameModel.build(standard_frame(), 20), FrameModel.build(None, 24)]
+    x = np.array([0.7, 0.85])
+    omega, values, rigid = [], [], []
+    for model in fm:
+        modes = model.modes(None)
+        g = model.fe.field_matrix(x * model.mesh.length, 0)
+        omega.append(modes.omega[:40])
+        values.append((g @ modes.shapes)[:, :40])
+        rigid.append(((g @ modes.rigid) ** 2).sum(axis=1))
+    both = fem_racket.modal_impacts(
+        np.stack(omega)[:, None, :], np.stack(values), np.stack(rigid), speed=30.0
+    )
+    for k in range(2):
+        one = fem_racket.modal_impacts(omega[k], values[k], rigid[k], speed=30.0)
+        assert np.array_equal(both.cor[k], one.cor)
