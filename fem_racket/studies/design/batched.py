@@ -85,7 +85,7 @@ def _design(problem: DesignProblem, x: np.ndarray, positions: np.ndarray) -> _De
     return _Design(model, data.omega, data.values, data.rigid, quantities, mq["inertia_pivot"])
 
 
-def _closing_speeds(problem: DesignProblem, x: np.ndarray, inertia: float) -> np.ndarray:
+def _racket_speeds(problem: DesignProblem, x: np.ndarray, inertia: float) -> np.ndarray:
     """v_r [m/s] of the points ``x`` (x/L) for a racket of that inertia (0 without a swing)."""
     if problem.swing is None:
         return np.zeros_like(x)
@@ -168,7 +168,7 @@ def evaluate_batch(problem: DesignProblem, designs: np.ndarray) -> np.ndarray:
     nd, nz, nr, nv = len(designs), zone.size, region.size, v_in.size
     built = [_design(problem, x, points) for x in designs]
     # cases per design: every speed at every zone point, then the first speed on the region
-    v_r = np.array([_closing_speeds(problem, points, d.inertia_pivot) for d in built])
+    v_r = np.array([_racket_speeds(problem, points, d.inertia_pivot) for d in built])
     speed = np.concatenate(
         [(v_in[None, :, None] + v_r[:, None, :nz]).reshape(nd, -1), v_in[0] + v_r[:, nz:]], 1
     )
