@@ -7,7 +7,8 @@ Here a batch of designs is evaluated in two passes:
 1. per design: its mesh, closed-form matrices (:func:`fem_racket.frame.hermite.
    assemble_closed_form`), every free-free mode (a 20-cell frame has 40: one small dense
    eigenproblem, no static solves for the modes left out), mass properties and the mode values
-   at the zone's (and the power region's) points;
+   at the zone's (and the power region's) points (their Hermite point vectors are shared by
+   the designs on one mesh);
 2. all the designs' cases together through :func:`fem_racket.impact.engine.modal_impacts`, each
    case with its own structure's frequencies (designs with equal mode counts share a call).
 
@@ -24,7 +25,9 @@ Richardson extrapolation, |dCOR| ~ 1e-6) on the design's receptance at the impac
 from __future__ import annotations
 
 import logging
+from collections import OrderedDict
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -35,7 +38,6 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.impact.engine import modal_impacts
 from fem_racket.impact.general import DEFAULT_BETA, DEFAULT_STEPS, solve_general
 from fem_racket.impact.law_impact import receptance
-from fem_racket.impact.structure import frame_modal_data
 from fem_racket.impact.swing import ball_speed_out
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, mass_quantities
@@ -70,19 +72,39 @@ class _Design:
     inertia_pivot: float
 
 
+#: Hermite point vectors at the impact points, per node set (designs on one mesh share them).
+_FIELDS: OrderedDict[bytes, Any] = OrderedDict()
+_FIELDS_KEPT = 8
+
+
+def _field(model: FrameModel, positions: np.ndarray) -> Any:
+    """Sparse (points, ndof) matrix of the deflection at ``positions`` (x/L), cached."""
+    key = model.mesh.points.tobytes() + b"|" + positions.tobytes()
+    g = _FIELDS.get(key)
+    if g is None:
+        g = model.fe.field_matrix(positions * model.mesh.length, 0)
+        _FIELDS[key] = g
+        if len(_FIELDS) > _FIELDS_KEPT:
+            _FIELDS.popitem(last=False)
+    return g
+
+
 def _design(problem: DesignProblem, x: np.ndarray, positions: np.ndarray) -> _Design:
     mesh = problem.mesh(x)
     model = FrameModel(assemble_closed_form(mesh))
-    data = frame_modal_data(model, positions, None, limit=problem.modes)
+    modes = model.modes(problem.modes)  # every mode when None
+    g = _field(model, positions)
     pivot = SWING_WEIGHT_AXIS if problem.swing is None else problem.swing.pivot
     mq = mass_quantities(mesh, pivot)
     quantities = {
         "mass_kg": mq["mass"],
         "balance_m": mq["cg"],
         "swing_weight_kg_cm2": mq["swing_weight_kg_cm2"],
-        "f1_hz": float(data.omega[0] / (2.0 * np.pi)),
+        "f1_hz": float(modes.frequencies[0]),
     }
-    return _Design(model, data.omega, data.values, data.rigid, quantities, mq["inertia_pivot"])
+    values = np.asarray(g @ modes.shapes)
+    rigid = (np.asarray(g @ modes.rigid) ** 2).sum(axis=1)
+    return _Design(model, modes.omega, values, rigid, quantities, mq["inertia_pivot"])
 
 
 def _racket_speeds(problem: DesignProblem, x: np.ndarray, inertia: float) -> np.ndarray:
