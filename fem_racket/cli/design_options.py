@@ -9,6 +9,7 @@ import argparse
 from typing import Any
 
 from fem_racket.cli.common import add_frame_options, frame_from_args, run_parameters
+from fem_racket.cli.laws import add_law_options, law_from_args
 from fem_racket.cli.lists import number_list
 from fem_racket.frame.hand import GRIPS
 from fem_racket.impact.held_shock import DEFAULT_WINDOW
@@ -63,7 +64,8 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         **number_list(str),
         default=["ei", "rhoa"],
         metavar="LIST",
-        help="free parameter groups, comma list of ei, rhoa, mass (default ei,rhoa)",
+        help="free parameter groups, comma list of ei, rhoa, mass, position, string, "
+        "string_cubic (default ei,rhoa)",
     )
     g.add_argument(
         "--link-ei",
@@ -97,6 +99,57 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
         default=[0.0, 0.03],
         metavar="LOW,HIGH",
         help="bounds of every added mass [kg] (default 0,0.03)",
+    )
+    g.add_argument(
+        "--mass-start",
+        type=float,
+        default=0.0,
+        metavar="KG",
+        help="starting value of every added mass [kg] (default 0)",
+    )
+    g.add_argument(
+        "--position-bounds",
+        **number_list(),
+        default=[0.0, 1.0],
+        metavar="LOW,HIGH",
+        help="bounds x/L of every added mass's centre with --vary position (default 0,1)",
+    )
+    g.add_argument(
+        "--ei-points",
+        **number_list(),
+        default=[],
+        metavar="X",
+        help="control stations x/L of a smooth EI(x) (first 0, last 1), one EI variable each, "
+        "instead of one per segment (default: segments)",
+    )
+    g.add_argument(
+        "--rhoa-points",
+        **number_list(),
+        default=[],
+        metavar="X",
+        help="control stations x/L of a smooth rhoA(x), as --ei-points (default: segments)",
+    )
+    g.add_argument(
+        "--interpolation",
+        choices=("pchip", "linear"),
+        default="pchip",
+        help="profile between control points: monotone cubic (PCHIP) or linear (default pchip)",
+    )
+    g.add_argument(
+        "--string-bounds",
+        **number_list(),
+        default=None,
+        metavar="LOW,HIGH",
+        help="with --vary string: bounds of the factor on K_CB (linear law) or of k_s [N/m] "
+        "(--law series) (default 0.5-2 x the start)",
+    )
+    g.add_argument(
+        "--cubic-bounds",
+        **number_list(),
+        default=None,
+        metavar="LOW,HIGH",
+        help="with --vary string_cubic (--law series): bounds of k_3 [N/m^3] "
+        "(default 0-2 x the start)",
     )
     z = parser.add_argument_group("impact zone, ball and swing")
     z.add_argument(
@@ -225,6 +278,7 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
             metavar="LOW,HIGH",
             help=f"{text}: LOW,HIGH or 'start' (keep the starting racket's) (default: free)",
         )
+    add_law_options(parser)
 
 
 def add_run_options(parser: argparse.ArgumentParser) -> None:
@@ -280,6 +334,14 @@ def problem_from_args(args: argparse.Namespace) -> DesignProblem:
         "rhoa_bounds": args.rhoa_bounds,
         "mass_positions": args.mass_positions,
         "mass_bounds": args.mass_bounds,
+        "mass_start": args.mass_start,
+        "position_bounds": args.position_bounds,
+        "ei_points": args.ei_points,
+        "rhoa_points": args.rhoa_points,
+        "interpolation": args.interpolation,
+        "law": law_from_args(args),
+        "string_bounds": args.string_bounds,
+        "cubic_bounds": args.cubic_bounds,
         "zone": args.zone,
         "zone_range": args.zone_range,
         "zone_points": args.zone_points,

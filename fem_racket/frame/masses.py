@@ -9,8 +9,13 @@ piece of tape) over which the frame's mass per length rises by ``m / w``::
 
 Nodes are inserted at the strip's ends, so the result is an ordinary :class:`FrameMesh`: mass
 properties, modes, impacts and mesh files need nothing new, and a mesh file written from it
-reloads the same racket. As ``w`` -> 0 the strip tends to a point mass (its own moment of inertia
-m w^2 / 12 is 3e-6 kg m^2 for 30 g over 20 mm: 0.02 % of the paper racket's I_CG).
+reloads the same racket. A strip end closer than :data:`MIN_GAP` x L (0.7 um on a 0.68 m frame)
+to an existing node is moved onto it (the strip keeps its mass), so a mass whose position varies
+continuously (a design variable) never makes a cell of vanishing length, whose stiffness
+~EI/h^3 would swamp the others (scikit-fem's Hermite basis is singular below ~1e-9 L; the
+engine's static solves lose digits below ~1e-5 L). As ``w`` -> 0 the strip tends to a point mass
+(its own moment of inertia m w^2 / 12 is 3e-6 kg m^2 for 30 g over 20 mm: 0.02 % of the paper
+racket's I_CG).
 """
 
 from __future__ import annotations
@@ -23,10 +28,12 @@ import numpy as np
 from fem_racket.frame.mesh import FrameMesh, insert_nodes
 from fem_racket.validation import InputError, check_positive, check_range
 
-__all__ = ["DEFAULT_WIDTH", "AddedMass", "add_masses", "strip_ends"]
+__all__ = ["DEFAULT_WIDTH", "MIN_GAP", "AddedMass", "add_masses", "strip_ends"]
 
 #: Width of an added mass's strip [m] (a piece of lead tape).
 DEFAULT_WIDTH = 0.02
+#: Strip ends this close to a node (as a fraction of L) are moved onto it.
+MIN_GAP = 1e-6
 
 
 @dataclass(frozen=True)
@@ -73,7 +80,18 @@ def add_masses(mesh: FrameMesh, masses: Sequence[AddedMass]) -> FrameMesh:
     The total mass rises by exactly the sum of the added masses.
     """
     length = mesh.length
-    ends = [strip_ends(m.position, m.width, length) for m in masses]
+    nodes = mesh.points
+
+    def snap(e: float) -> float:
+        near = nodes[int(np.argmin(np.abs(nodes - e)))]
+        return float(near) if abs(near - e) <= MIN_GAP * length else e
+
+    ends = []
+    for m in masses:
+        a, b = strip_ends(m.position, m.width, length)
+        a, b = snap(a), snap(b)
+        ends.append((a, b))
+        nodes = np.union1d(nodes, [a, b])
     out = insert_nodes(mesh, [e / length for ab in ends for e in ab])
     rho = out.rhoA.copy()
     mid = 0.5 * (out.points[:-1] + out.points[1:])

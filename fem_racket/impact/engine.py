@@ -13,7 +13,8 @@ Public signature (stable)::
 Every case argument is a number or an array; they broadcast together. :func:`impacts` takes a
 frame (a :class:`~fem_racket.frame.model.FrameModel`, whose modes it computes once and reuses,
 or a Frame/FrameMesh/None, meshed with ``elements`` cells); :func:`modal_impacts` takes any
-structure's modes directly: flexible angular frequencies ``omega`` (m,) [rad/s], mode values at
+structure's modes directly: flexible angular frequencies ``omega`` (m,) [rad/s] (or (n, m), one
+row per case, for cases on different structures: many designs in one call), mode values at
 each case's impact point ``values`` (n, m) [1/sqrt(kg)] and the rigid modes' summed squared
 values ``rigid`` (n,) [1/kg] (1/m_R + d^2/I_R for a free frame; any number of rigid modes,
 including none).
@@ -132,7 +133,7 @@ def _run(
     for start in range(0, n, CHUNK):
         sl = slice(start, start + CHUNK)
         ix = index[sl]
-        w = omega[None, :] * root_s[sl, None]
+        w = (omega[None, :] if omega.ndim == 1 else omega[ix]) * root_s[sl, None]
         cor[sl], tc[sl], peak[sl], kept[sl] = solve_cases(
             w,
             values_at[ix],
@@ -192,8 +193,9 @@ def modal_impacts(
 
     Parameters
     ----------
-    omega : array_like, shape (m,)
-        Flexible angular frequencies, ascending [rad/s] (rigid modes excluded).
+    omega : array_like, shape (m,) or (..., m)
+        Flexible angular frequencies, ascending [rad/s] (rigid modes excluded); one row per
+        case (broadcast with ``values``) when the cases are on different structures.
     values : array_like, shape (..., m)
         Mass-normalised mode values at each case's impact point [1/sqrt(kg)].
     rigid : array_like, shape (...)
@@ -212,12 +214,17 @@ def modal_impacts(
     _check_common(speed, kcb, zeta, ball_mass, ei_factor, separation, tolerance)
     omega = np.asarray(omega, dtype=float)
     values = np.asarray(values, dtype=float)
-    if omega.ndim != 1 or values.shape[-1:] != omega.shape or np.any(np.diff(omega) <= 0.0):
+    if (
+        omega.ndim == 0
+        or values.shape[-1:] != omega.shape[-1:]
+        or np.any(np.diff(omega, axis=-1) <= 0.0)
+    ):
         raise InputError(
-            f"omega = array of shape {omega.shape} is not allowed: must be 1-D, ascending, "
-            f"one per column of values (shape {values.shape})"
+            f"omega = array of shape {omega.shape} is not allowed: must be ascending along its "
+            f"last axis, one per column of values (shape {values.shape})"
         )
     shape = np.broadcast_shapes(
+        omega.shape[:-1],
         values.shape[:-1],
         np.shape(rigid),
         np.shape(speed),
@@ -229,7 +236,10 @@ def modal_impacts(
         np.shape(residual_mass),
     )
     n = math.prod(shape)
-    vals = np.broadcast_to(values, shape + omega.shape).reshape(n, omega.size)
+    m = omega.shape[-1]
+    vals = np.broadcast_to(values, shape + (m,)).reshape(n, m)
+    if omega.ndim > 1:
+        omega = np.broadcast_to(omega, shape + (m,)).reshape(n, m)
 
     def flat(x):
         return np.broadcast_to(np.asarray(x, dtype=float), shape).ravel()

@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
+from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball, kcb_from_speed
 from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
@@ -69,6 +69,7 @@ def apparent_cor_along(
     modes: int | None = DEFAULT_MODES,
     tolerance: float | None = DEFAULT_TOLERANCE,
     law: Any = None,
+    kcb_factor: float = 1.0,
 ) -> np.ndarray:
     """e_A of the stationary free frame struck at each position (x/L) at each closing speed.
 
@@ -84,6 +85,9 @@ def apparent_cor_along(
     law : ContactLaw, optional
         A contact law other than the paper's: the general integrator, the law's own end
         condition (``kcb``, ``zeta``, ``separation``, ``modes`` and ``tolerance`` do not apply).
+    kcb_factor : float
+        Factor on the linear law's K_CB (``kcb``, or the paper's K_CB of each closing speed):
+        a stiffer or softer string bed, as the design studies vary it.
 
     Returns
     -------
@@ -96,6 +100,11 @@ def apparent_cor_along(
     if law is not None:
         out = solve_general(law, receptance(model, x, ball_mass), v)
         return -out.ball_velocity / v
+    if kcb_factor != 1.0:
+        check_positive("kcb_factor", kcb_factor, "")
+        if kcb is None:
+            kcb = np.array([kcb_from_speed(s) for s in v.ravel()]).reshape(v.shape)
+        kcb = kcb * kcb_factor
     batch = impacts(
         model,
         position=x,
@@ -198,6 +207,7 @@ def racket_map(
     power_fraction: float = DEFAULT_POWER_FRACTION,
     tolerance: float | None = DEFAULT_TOLERANCE,
     law: Any = None,
+    kcb_factor: float = 1.0,
 ) -> RacketMap:
     """e_A and v_out along a racket, and its sweet spots.
 
@@ -223,6 +233,8 @@ def racket_map(
         The ball/string law (a law or a name of :data:`fem_racket.contact.presets.LAW_NAMES`);
         the paper's linear law (K_CB, zeta) when None or ``"linear"``. Another law runs the
         general integrator and takes neither ``kcb`` nor ``zeta``.
+    kcb_factor : float
+        Factor on the linear law's K_CB (:func:`apparent_cor_along`).
 
     Returns
     -------
@@ -231,8 +243,8 @@ def racket_map(
     speed = check_positive("speed", speed, "m/s")
     law = get_law(law) if isinstance(law, str) else law
     if law is not None:
-        for key, value in (("kcb", kcb), ("zeta", zeta)):
-            if value is not None:
+        for key, value in (("kcb", kcb), ("zeta", zeta), ("kcb_factor", kcb_factor)):
+            if value is not None and not (key == "kcb_factor" and value == 1.0):
                 raise InputError(
                     f"{key} = {show(value)} is not allowed with contact law {show(law.name)}: "
                     "it sets the linear law's K_CB and zeta only"
@@ -255,6 +267,7 @@ def racket_map(
         modes=modes,
         tolerance=tolerance,
         law=law,
+        kcb_factor=kcb_factor,
     )
 
     def e_a(s: float) -> float:

@@ -399,6 +399,35 @@ DESIGN_CASES = [
         ("shock window = -1", "> 0"),
     ),
     Case("optimize-out-is-file", opt("--out", "afile"), ("afile", "folder"), A_FILE),
+    Case(
+        "optimize-position-bounds",
+        opt("--vary", "position", "--mass-positions", "0.8", "--position-bounds", "0.5,1.2"),
+        ("pos_1 bounds = [0.5, 1.2]", "0 <= low < high <= 1"),
+    ),
+    Case(
+        "optimize-position-bounds-order",
+        opt("--vary", "position", "--mass-positions", "0.8", "--position-bounds", "0.9,0.5"),
+        ("position bounds = [0.9, 0.5]", "LOW < HIGH"),
+    ),
+    Case("optimize-ei-points", opt("--ei-points", "0.2,0.6,1"), ("ei_points", "first 0")),
+    Case(
+        "optimize-rhoa-points", opt("--rhoa-points", "0,0.7,0.5,1"), ("rhoa_points", "increasing")
+    ),
+    Case(
+        "optimize-string-bounds",
+        opt("--vary", "string", "--string-bounds", "0,2"),
+        ("kcb_factor bounds = [0.0, 2.0]", "0 < low < high"),
+    ),
+    Case(
+        "optimize-string-law",
+        opt("--vary", "string", "--law", "hysteretic"),
+        ("vary = 'string'", "linear and series"),
+    ),
+    Case(
+        "optimize-cubic-bounds",
+        opt("--vary", "string_cubic", "--law", "series", "--cubic-bounds=-1,5"),
+        ("k_3 bounds = [-1.0, 5.0]", "0 <= low < high"),
+    ),
     Case("sensitivity-output", sens("--output", "nothing"), ("output = 'nothing'", "cor")),
     Case("sensitivity-designs", sens("--designs", "2"), ("designs = 2", ">= 6")),
 ]

@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+from fem_racket.contact.presets import get_law
 from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.impact.held_modal import held_basis, held_contact
@@ -103,3 +104,9 @@ def test_shock_settings_and_their_errors():
         design_problem(objectives=("handle_shock",), grip="tight")
     with pytest.raises(InputError, match="shock window = -1"):
         design_problem(objectives=("handle_shock",), shock_window=-1.0)
+    # The held racket's exact path is linear at the paper's K_CB(v): a string-bed variable or
+    # another law would reach the power objectives only, so the pair is refused.
+    with pytest.raises(InputError, match="variable kcb_factor is not allowed"):
+        design_problem(objectives=("ball_speed", "handle_shock"), vary=("ei", "string"))
+    with pytest.raises(InputError, match="law = 'series' is not allowed"):
+        design_problem(objectives=("handle_shock",), law=get_law("series"))

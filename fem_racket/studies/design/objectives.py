@@ -37,6 +37,7 @@ import numpy as np
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.swing import ball_speed_out
+from fem_racket.studies.design.batched import BATCHED, evaluate_batch
 from fem_racket.studies.design.impacts import apparent_cor, handle_shock
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.swing import SWING_WEIGHT_AXIS, mass_quantities
@@ -129,7 +130,13 @@ def evaluate_design(problem: DesignProblem, x: np.ndarray) -> dict[str, Any]:
 
 
 def evaluate_rows(problem: DesignProblem, designs: np.ndarray) -> np.ndarray:
-    """Outputs (columns :func:`output_names`) of each row of ``designs`` [SI]."""
+    """Outputs (columns :func:`output_names`) of each row of ``designs`` [SI].
+
+    Objectives in :data:`.batched.BATCHED` run all the designs' impacts together
+    (:func:`.batched.evaluate_batch`); others go design by design.
+    """
+    if set(problem.objectives) <= BATCHED:
+        return evaluate_batch(problem, designs)
     names = output_names(problem)
     rows = np.empty((len(designs), len(names)))
     for i, x in enumerate(np.atleast_2d(designs)):

@@ -2,15 +2,22 @@
 
 The racket is a stepped beam of fixed length L whose segments (between fixed boundaries x/L) each
 have a bending rigidity EI_k [N m^2] and mass per length rhoA_k [kg/m], plus optional masses added
-at chosen positions (strips, :mod:`fem_racket.masses`). Its full parameter vector is::
+at chosen positions (strips, :mod:`fem_racket.frame.masses`). Its full parameter vector is::
 
-    p = [EI_1 .. EI_n, rhoA_1 .. rhoA_n, m_1 .. m_a]
+    p = [EI_1 .. EI_n, rhoA_1 .. rhoA_n, m_1 .. m_a, x_1 .. x_a]
+
+(x_k the added masses' centres x/L), followed by the contact law's string-bed parameters
+(:meth:`DesignProblem.law_names`): the factor on the paper's K_CB(v) for its linear law, k_s and
+k_3 for the series law. With ``ei_stations`` (``rhoa_stations``) the EI (rhoA)
+entries are instead the values of a smooth profile at those control points x/L, interpolated
+between them and averaged over each mesh cell (:mod:`.profiles`); their count is the stations'.
 
 Any subset of p is free (the design variables, each with bounds); the rest keeps the starting
 racket's values. With ``link_ei`` one variable "ei" is EI_1 and every EI_k keeps its starting ratio
 EI_k / EI_1 (the paper's Fig 13 varies EI1 with EI2 = 0.88 EI1 this way). EI variables are searched
-on a log scale. The starting racket by default is the paper's (Kawazoe & Kanda 1997, section 2.2)
-sampled on the segments.
+on a log scale. An added mass's position is a variable too (``pos_k``, bounded inside [0, 1]).
+The starting racket by default is the paper's (Kawazoe & Kanda 1997, section 2.2) sampled on the
+segments.
 
 Constraints bound derived quantities (:data:`QUANTITIES`): total mass, balance point, swing weight
 about 0.10 m, first free-free frequency. Objectives (:data:`OBJECTIVES`, maximised but for the
@@ -27,17 +34,20 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import (
     DEFAULT_BALL_MASS,
     KCB_SPEED_RANGE,
     PAPER_CLAMPED_COR,
     zeta_from_cor,
 )
+from fem_racket.contact.series import SeriesBallString
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import Frame, Segment
 from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.studies.design.profiles import INTERPOLATIONS, cell_means, check_stations
 from fem_racket.studies.design.swing import SwingModel, mass_quantities
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES, Constraint, Variable
 from fem_racket.studies.design.zone import ImpactZone, uniform_zone
@@ -65,7 +75,8 @@ class DesignProblem:
         The starting racket's full parameter vector (see the module docstring).
     variables : tuple of Variable
     mass_positions : tuple of float
-        Centres of the added masses x/L (one entry of p each).
+        Starting centres of the added masses x/L (their entries of p, fixed unless a ``pos_k``
+        variable frees them).
     mass_width : float
         Width of each added mass's strip [m].
     zone : ImpactZone
@@ -98,6 +109,15 @@ class DesignProblem:
     shock_window : float
         Window of the handle-shock measures from the start of contact [s]
         (:mod:`fem_racket.impact.held_shock`).
+    ei_stations, rhoa_stations : tuple of float
+        Control points x/L of a smooth EI (rhoA) profile (:mod:`.profiles`); empty: one value
+        per segment.
+    interpolation : {"pchip", "linear"}
+        The profiles' interpolant between control points.
+    law : ContactLaw or None
+        The ball/string law (None: the paper's linear law, K_CB from the closing speed times the
+        ``kcb_factor`` entry of p, and ``zeta``); another law's impacts run through the general
+        integrator (:func:`fem_racket.impact.general.solve_general`).
     """
 
     segment_lengths: tuple[float, ...]
@@ -122,11 +142,26 @@ class DesignProblem:
     tolerance: float | None = 1e-6
     hand: Hand = field(default_factory=Hand)
     shock_window: float = DEFAULT_WINDOW
+    ei_stations: tuple[float, ...] = ()
+    rhoa_stations: tuple[float, ...] = ()
+    interpolation: str = "pchip"
+    law: ContactLaw | None = None
 
     def __post_init__(self) -> None:
         n = self.n_segments
-        if self.start.shape != (2 * n + len(self.mass_positions),):
+        for name in ("ei_stations", "rhoa_stations"):
+            if getattr(self, name):
+                object.__setattr__(self, name, check_stations(name, getattr(self, name)))
+        check_choice("interpolation", self.interpolation, INTERPOLATIONS)
+        size = self.n_ei + self.n_rhoa + 2 * len(self.mass_positions) + len(self.law_names)
+        if self.start.shape != (size,):
             raise InputError("design start vector does not match the segments and masses")
+        edges = np.concatenate([[0.0], np.cumsum(self.segment_lengths)])
+        frame = Frame(tuple(Segment(h, 1.0, 1.0) for h in self.segment_lengths))
+        points = frame_mesh(frame, check_integer("elements", self.elements, minimum=n)).points
+        mid = 0.5 * (points[1:] + points[:-1])
+        object.__setattr__(self, "_points", points)
+        object.__setattr__(self, "_cell_segment", np.searchsorted(edges, mid) - 1)
         if not self.variables:
             raise InputError("design variables: none given; vary at least one")
         for name in self.objectives:
@@ -134,22 +169,43 @@ class DesignProblem:
         if not self.objectives:
             raise InputError("design objectives: none given; name at least one")
         check_range("power fraction", self.power_fraction, 0.0, 1.0, include_low=False)
-        check_integer("elements", self.elements, minimum=n)
         if not self.speeds:
             raise InputError("speeds = [] is not allowed: give at least one ball speed [m/s]")
         for v in self.speeds:  # the K_CB law's range (fem_racket.contact.linear)
-            check_range("speed", v, KCB_SPEED_RANGE[0], KCB_SPEED_RANGE[1], unit="m/s")
+            if self.law is None:
+                check_range("speed", v, KCB_SPEED_RANGE[0], KCB_SPEED_RANGE[1], unit="m/s")
+            else:
+                check_range("speed", v, 0.0, KCB_SPEED_RANGE[1], unit="m/s", include_low=False)
         check_finite("stiffness cost", self.stiffness_cost, "1/(N m^2)")
         for v in self.variables:
-            floor = 0.0 if v.unit == "kg" else np.nextafter(0.0, 1.0)
-            if not (np.isfinite(v.low) and np.isfinite(v.high) and floor <= v.low < v.high):
+            floor = 0.0 if v.unit in ("kg", "x/L", "N/m^3") else np.nextafter(0.0, 1.0)
+            top = 1.0 if v.unit == "x/L" else np.inf
+            if not (np.isfinite(v.low) and np.isfinite(v.high) and floor <= v.low < v.high <= top):
+                need = (
+                    "0 <= low < high <= 1"
+                    if v.unit == "x/L"
+                    else (f"{'0 <=' if floor == 0.0 else '0 <'} low < high, finite")
+                )
                 raise InputError(
-                    f"{v.name} bounds = [{v.low}, {v.high}] {v.unit} are not allowed: need "
-                    f"{'0 <=' if floor == 0.0 else '0 <'} low < high, finite"
+                    f"{v.name} bounds = [{v.low}, {v.high}] {v.unit} are not allowed: need {need}"
                 )
         self.mesh(self.x_start)  # checks the added masses' positions and widths
         if self.shock:
             check_positive("shock window", self.shock_window, "s")
+            # The held racket's exact path (fem_racket.impact.held_modal) is the paper's linear
+            # law at K_CB(v); the string bed's variables would reach only the other objectives.
+            if self.law is not None:
+                raise InputError(
+                    f"law = {self.law.name!r} is not allowed with the objectives "
+                    f"{sorted(MINIMISED & set(self.objectives))}: the hand-held racket's "
+                    "exact path takes the linear law only"
+                )
+            if any(v.name == "kcb_factor" for v in self.variables):
+                raise InputError(
+                    "variable kcb_factor is not allowed with the objectives "
+                    f"{sorted(MINIMISED & set(self.objectives))}: the hand-held racket's "
+                    "exact path takes K_CB(v) as it is (drop 'string' from the variables)"
+                )
             if not self.hand.grip_end < self.length:
                 raise InputError(
                     f"grip_end = {self.hand.grip_end!r} m is not allowed: must lie on the frame "
@@ -168,6 +224,45 @@ class DesignProblem:
     def n_segments(self) -> int:
         """Number of design segments."""
         return len(self.segment_lengths)
+
+    @property
+    def n_ei(self) -> int:
+        """Number of EI entries of p (control points or segments)."""
+        return len(self.ei_stations) or self.n_segments
+
+    @property
+    def n_rhoa(self) -> int:
+        """Number of rhoA entries of p (control points or segments)."""
+        return len(self.rhoa_stations) or self.n_segments
+
+    @property
+    def law_names(self) -> tuple[str, ...]:
+        """The contact law's entries at the end of p (see the module docstring)."""
+        if self.law is None:
+            return ("kcb_factor",)
+        if isinstance(self.law, SeriesBallString):
+            return ("string_stiffness", "string_cubic")
+        return ()
+
+    def law_values(self, x: np.ndarray) -> dict[str, np.ndarray]:
+        """The law entries of p for design variables ``x`` (shape (..., n_var)), by name."""
+        p = self.parameters(x)
+        k = len(self.law_names)
+        tail = p[..., p.shape[-1] - k :]
+        return {name: tail[..., j] for j, name in enumerate(self.law_names)}
+
+    def design_law(self, x: np.ndarray) -> ContactLaw | None:
+        """The contact law of one design ``x`` (1-D): the problem's law with the design's
+        string bed (series law), or None for the paper's linear law (its K_CB factor is
+        ``law_values(x)["kcb_factor"]``)."""
+        if not isinstance(self.law, SeriesBallString):
+            return self.law
+        values = self.law_values(np.asarray(x, dtype=float))
+        return replace(
+            self.law,
+            string_stiffness=float(values["string_stiffness"]),
+            string_cubic=float(values["string_cubic"]),
+        )
 
     @property
     def length(self) -> float:
@@ -214,12 +309,12 @@ class DesignProblem:
         """Full parameter vector(s) p for design variables ``x`` (shape (..., n_var))."""
         x = np.asarray(x, dtype=float)
         p = np.broadcast_to(self.start, x.shape[:-1] + self.start.shape).copy()
-        n = self.n_segments
+        n, r = self.n_ei, self.n_rhoa
         for k, v in enumerate(self.variables):
             if v.name == "ei":
                 p[..., :n] = x[..., k, None] * self.start[:n] / self.start[0]
             elif v.name == "rhoa":
-                p[..., n : 2 * n] = x[..., k, None] * self.start[n : 2 * n] / self.start[n]
+                p[..., n : n + r] = x[..., k, None] * self.start[n : n + r] / self.start[n]
             else:
                 p[..., v.index] = x[..., k]
         return p
@@ -227,17 +322,23 @@ class DesignProblem:
     def mesh(self, x: np.ndarray) -> FrameMesh:
         """The racket of design variables ``x`` (one design) as a mesh."""
         p = self.parameters(x)
-        n = self.n_segments
-        frame = Frame(
-            tuple(
-                Segment(h, float(p[k]), float(p[n + k])) for k, h in enumerate(self.segment_lengths)
-            )
+        n, r, a = self.n_ei, self.n_rhoa, len(self.mass_positions)
+        points = self._points
+        ei, ra = p[:n], p[n : n + r]
+        ei = (
+            cell_means(self.ei_stations, ei, points, self.interpolation)
+            if self.ei_stations
+            else (ei[self._cell_segment])
         )
+        if self.rhoa_stations:
+            ra = cell_means(self.rhoa_stations, ra, points, self.interpolation)
+        else:
+            ra = ra[self._cell_segment]
         masses = [
-            AddedMass(pos, float(m), self.mass_width)
-            for pos, m in zip(self.mass_positions, p[2 * n :], strict=True)
+            AddedMass(float(pos), float(m), self.mass_width)
+            for m, pos in zip(p[n + r : n + r + a], p[n + r + a : n + r + 2 * a], strict=True)
         ]
-        return add_masses(frame_mesh(frame, self.elements), masses)
+        return add_masses(FrameMesh(points, ei, ra), masses)
 
     def stiffness(self, x: np.ndarray) -> np.ndarray:
         """EI_1 of each design [N m^2] (priced by ``stiffness_cost``)."""
@@ -288,6 +389,16 @@ class DesignProblem:
             "elements": self.elements,
             "modes": "by tolerance" if self.modes is None else self.modes,
             "tolerance": self.tolerance,
+            **(
+                {
+                    "ei_stations_x_over_l": list(self.ei_stations),
+                    "rhoa_stations_x_over_l": list(self.rhoa_stations),
+                    "interpolation": self.interpolation,
+                }
+                if self.ei_stations or self.rhoa_stations
+                else {}
+            ),
+            **({} if self.law is None else {"law": self.law.describe()}),
         } | ({"hand": asdict(self.hand), "shock_window_s": self.shock_window} if self.shock else {})
 
     @property

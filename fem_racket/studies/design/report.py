@@ -39,15 +39,20 @@ def design_maps(
             "reference": s.reference,
             "pivot": s.pivot,
         }
+    law = problem.design_law(x)
+    contact: dict[str, Any] = {"law": law}  # the string bed as the objectives see it
+    if law is None:
+        factor = float(problem.law_values(np.asarray(x, dtype=float))["kcb_factor"])
+        contact = {"zeta": problem.zeta, "kcb_factor": factor}
     return [
         racket_map(
             model,
             speed=v,
             positions=positions,
             ball_mass=problem.ball_mass,
-            zeta=problem.zeta,
             modes=problem.modes,
             power_fraction=problem.power_fraction,
+            **contact,
             **swing,
         )
         for v in problem.speeds
