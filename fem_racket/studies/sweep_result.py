@@ -159,12 +159,10 @@ class SweepResult:
         """The labelled :class:`xarray.Dataset` (what :func:`fem_racket.sweep` returns)."""
         import xarray as xr
 
-        return xr.Dataset(
-            self.data_variables(), coords=self.coordinates(), attrs=dict(self.attrs)
-        )
+        return xr.Dataset(self.data_variables(), coords=self.coordinates(), attrs=dict(self.attrs))
 
     def summary(self) -> dict[str, Any]:
-        """Cases, dimensions, the COR's range (NaN when no case was solved), solver, law, backend."""
+        """Cases, dimensions, the COR range (NaN when no case solved), solver, law, backend."""
         cor = self.values[:, 0]
         solved = cor[np.isfinite(cor)]
         return {
