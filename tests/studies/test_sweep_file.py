@@ -110,3 +110,13 @@ def test_modes_kept_are_those_simulate_reports_as_used(options, kept):
 def test_no_modes_under_the_physical_basis():
     r = sweep_result(position=0.6, basis="physical", solver="cvode", progress=False)
     assert r.attrs["modes_kept"] == "none (physical basis)"
+
+
+@pytest.mark.parametrize("value", [None, True, {"a": 1}])
+def test_attributes_netcdf_cannot_hold_are_refused_as_by_xarray(tmp_path, value):
+    from fem_racket.outputs.netcdf import write_netcdf
+
+    with pytest.raises(TypeError, match="netCDF attribute a"):
+        write_netcdf(tmp_path / "x.nc", {}, {"a": value})
+    with pytest.raises(TypeError):
+        xr.Dataset(attrs={"a": value}).to_netcdf(tmp_path / "y.nc")
