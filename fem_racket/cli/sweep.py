@@ -27,7 +27,7 @@ from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
-from fem_racket.studies.sweep import sweep
+from fem_racket.studies.sweep import sweep_result
 from fem_racket.validation import InputError, show
 
 #: Where the result goes unless --out is given.
@@ -175,7 +175,7 @@ def run(args: argparse.Namespace) -> int:
     custom = args.mesh is not None or getattr(args, "segments", None)
     frame = frame_from_args(args, exclusive=("ei1", "ei2")) if custom else None
     start = time.perf_counter()
-    ds = sweep(
+    result = sweep_result(
         frame,
         **values,
         ei2=args.ei2,
@@ -201,18 +201,15 @@ def run(args: argparse.Namespace) -> int:
     )
     wall = time.perf_counter() - start
     _note_modes(args, frame)
-    n = int(ds.cor.size)
+    done = result.summary()
+    n = done["impacts"]
     summary = {
         "output": str(args.out),
         "impacts": n,
-        "dims": {d: int(ds.sizes[d]) for d in ds.cor.dims},
+        "dims": done["dims"],
         "wall_s": wall,
         "impacts_per_s": n / wall if wall > 0 else None,
-        "cor_min": float(ds.cor.min()),
-        "cor_max": float(ds.cor.max()),
-        "solver": ds.attrs["solver"],
-        "contact_law": ds.attrs["contact_law"],
-        "backend": ds.attrs["backend"],
+        **{k: done[k] for k in ("cor_min", "cor_max", "solver", "contact_law", "backend")},
     }
     if args.json:
         print_json(summary)

@@ -27,6 +27,9 @@ The conventions, the same for every command (README, "Outputs, --overwrite and p
    attributes; PNG text chunks (:func:`add_png_provenance`); a folder a ``provenance.json`` in
    it; formats that cannot hold it (CSV, GIF, MP4) a sidecar ``<file>.json``
    (:func:`sidecar_path`), written in the same :func:`atomic_outputs` set as the file.
+
+:func:`fem_racket.outputs.netcdf.write_netcdf` writes a netCDF file from plain arrays as xarray
+would, without xarray's imports (import it from its module: netCDF4 loads only when used).
 """
 
 from fem_racket.outputs.atomic import (

@@ -38,7 +38,7 @@ from fem_racket.studies.grid import SweepSpec
 from fem_racket.studies.law_cases import case_swing, law_chunk
 from fem_racket.validation import AccuracyError
 
-__all__ = ["VARIABLES", "clear_caches", "result_variables", "run_chunk"]
+__all__ = ["COLUMNS", "MODES_COLUMN", "VARIABLES", "clear_caches", "result_variables", "run_chunk"]
 
 log = logging.getLogger(__name__)
 
@@ -53,6 +53,11 @@ VARIABLES: dict[str, tuple[str, str]] = {
 }
 #: Column of the peak force in a chunk's results (computed only when asked).
 PEAK_COLUMN = list(VARIABLES).index("peak_force_n")
+#: Columns of a chunk's results: the :data:`VARIABLES`, then the flexible modes the solver kept
+#: for each case (the dataset's ``modes_kept`` attribute, not a variable; NaN for the physical
+#: basis and for a failed case).
+COLUMNS = (*VARIABLES, "modes_kept")
+MODES_COLUMN = COLUMNS.index("modes_kept")
 
 
 def result_variables(spec: SweepSpec) -> list[str]:
@@ -138,7 +143,7 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
             atol=spec.atol,
             swing=swing if swing.velocity or swing.omega else None,
         )
-        return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, np.nan, v_r
+        return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, np.nan, v_r, r.n_modes
     law = LinearContact.for_speed(closing_speed(speed, v_r), kcb=p["kcb"], zeta=p["zeta"])
     kcb, zeta = law.stiffness, law.zeta
     r = simulate(
@@ -157,7 +162,8 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
         atol=spec.atol,
         swing=swing,
     )
-    return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r
+    kept = np.nan if r.n_modes is None else r.n_modes  # None: the physical basis
+    return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r, kept
 
 
 def _racket_speeds(p: dict[str, Any], rows: np.ndarray, length: float) -> np.ndarray:
@@ -180,7 +186,7 @@ def _engine_chunk(spec: SweepSpec, chunk: np.ndarray) -> np.ndarray:
     """Results of the exact solver for the cases ``chunk``: one engine call per frame."""
     p = spec.case_arrays(chunk)
     n = len(chunk)
-    out = np.full((n, len(VARIABLES)), np.nan)
+    out = np.full((n, len(COLUMNS)), np.nan)
     elements = np.broadcast_to(p["elements"], n)
     ei1 = np.broadcast_to(np.nan if p["ei1"] is None else p["ei1"], n)
     # One group per base frame: per element count, and per EI1 when EI2 is fixed.
@@ -212,12 +218,12 @@ def _engine_group(
     spec: SweepSpec, p: dict[str, Any], rows: np.ndarray, cells: int, ei1: float | None
 ) -> np.ndarray:
     """Results of the cases ``rows`` of one base frame (``cells`` elements, EI1 when EI2 is
-    fixed) by one engine call, shape (len(rows), len(VARIABLES))."""
+    fixed) by one engine call, shape (len(rows), len(COLUMNS))."""
 
     def take(value: Any, rows: np.ndarray) -> Any:
         return value if np.ndim(value) == 0 else np.asarray(value)[rows]
 
-    out = np.full((rows.size, len(VARIABLES)), np.nan)
+    out = np.full((rows.size, len(COLUMNS)), np.nan)
     _, model = _base(spec, cells, ei1)
     factor = _factor(spec, take(p["ei1"], rows), take(p["ei_factor"], rows))
     v_in = np.broadcast_to(np.asarray(take(p["speed"], rows), dtype=float), rows.shape)
@@ -237,7 +243,7 @@ def _engine_group(
         modes=spec.modes,
     )
     v_out = ball_speed_out(b.cor, v_in, v_r)
-    cols = [b.cor, b.contact_time, v_out, b.peak_force, b.kcb, v_r]
+    cols = [b.cor, b.contact_time, v_out, b.peak_force, b.kcb, v_r, b.modes]
     for k, col in enumerate(cols):
         if col is not None:
             out[:, k] = np.broadcast_to(col, rows.shape)
@@ -245,7 +251,8 @@ def _engine_group(
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
-    """Results of the cases ``chunk`` (flat indices), shape (len(chunk), len(VARIABLES)).
+    """Results of the cases ``chunk`` (flat indices), shape (len(chunk), len(COLUMNS)): the
+    :data:`VARIABLES`, then the flexible modes kept.
 
     A case whose ball does not separate within the time limit, whose solver fails or refuses
     it (:class:`~fem_racket.validation.AccuracyError`), or any of whose values is not finite,
@@ -255,7 +262,7 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
         return law_chunk(spec, chunk, _model)
     if spec.solver == "exact" and spec.law is None:
         return _engine_chunk(spec, np.asarray(chunk))
-    out = np.empty((len(chunk), len(VARIABLES)))
+    out = np.empty((len(chunk), len(COLUMNS)))
     # K_CB is NaN under another contact law than the paper's (it has none)
     checked = [k for k, v in enumerate(VARIABLES) if spec.law is None or v != "kcb_n_m"]
     for row, index in enumerate(chunk):

@@ -53,7 +53,9 @@ def case_swing(p: dict[str, Any], length: float) -> Swing:
 
 
 def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]) -> np.ndarray:
-    """Results (cor, t_c, v_out, peak force, NaN for K_CB, v_r) of the cases ``chunk``.
+    """Results (cor, t_c, v_out, peak force, NaN for K_CB, v_r, flexible modes) of the cases
+    ``chunk``; the modes are those given to the integrator (every mode of the frame's mesh, as
+    :func:`fem_racket.simulate` reports under a law).
 
     ``model_of(spec, elements, ei1, ei_factor) -> (key, FrameModel)`` gives each case's frame
     (cached by the caller). A batch that fails (no separation within its time limit, or a
@@ -66,7 +68,7 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         key, model = model_of(spec, p["elements"], p["ei1"], p["ei_factor"])
         groups.setdefault(key, []).append(row)
         models[key] = model
-    out = np.full((len(cases), 6), np.nan)
+    out = np.full((len(cases), 7), np.nan)
     for key, rows in groups.items():
         model = models[key]
         length = model.mesh.length
@@ -78,8 +80,9 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         closing = np.array([closing_speed(v, w) for v, w in zip(speed, v_r, strict=True)])
         named = {k: [cases[r][k] for r in rows] for k in LAW_PARAMETERS if k in spec.values}
         law = spec.case_law(named, len(rows))
+        rec = receptance(model, pos, mass)
         try:
-            o = solve_general(law, receptance(model, pos, mass), closing)
+            o = solve_general(law, rec, closing)
         except (NoSeparationError, RuntimeError) as exc:
             log.warning("%d cases failed (NaN in the results): %s", len(rows), exc)
             continue
@@ -89,4 +92,5 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         out[rows, 2] = ball_speed_out(e_a, speed, v_r)
         out[rows, 3] = o.peak_force
         out[rows, 5] = v_r
+        out[rows, 6] = rec.omega.size
     return out

@@ -12,11 +12,12 @@ Per case only the small coupled problem is solved; assembly and modes are reused
 
 Execution (:mod:`fem_racket.studies.executors`): serial, a local process pool (default) or a Dask
 scheduler. With an output file the sweep is resumable (:mod:`fem_racket.studies.checkpoint`).
+:func:`sweep_result` is the same sweep as plain arrays (:mod:`fem_racket.studies.sweep_result`),
+its netCDF file written without xarray: the command line's path.
 """
 
 from __future__ import annotations
 
-import json
 import logging
 import math
 import os
@@ -25,29 +26,23 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.outputs import atomic_output, check_output_path, provenance
-from fem_racket.studies.cases import VARIABLES, result_variables, run_chunk
+from fem_racket.outputs import atomic_output, check_output_path
+from fem_racket.studies.cases import COLUMNS, VARIABLES, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
-from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec, chunks, parameter
-from fem_racket.studies.law_axes import family_of
+from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, SweepSpec, chunks
+from fem_racket.studies.sweep_result import SweepResult
 from fem_racket.validation import InputError, check_choice, check_integer, show
 
-__all__ = ["VARIABLES", "sweep"]
+__all__ = ["VARIABLES", "sweep", "sweep_result"]
 
 log = logging.getLogger(__name__)
 
-#: What a kcb of None means.
-KCB_LAW = (
-    "from the speed: piecewise power law through the paper's 2.74e4, 5.0e4, 8.33e4 N/m "
-    "at 20, 30, 40 m/s"
-)
 #: Below this many exact impacts the default backend is serial (a pool takes ~0.5 s to start;
 #: the engine solves ~1e4 impacts in that time).
 SERIAL_BELOW = 20000
@@ -57,70 +52,6 @@ EXACT_CHUNK = 32768
 #: resumed run make the same batches (a batch's time step follows its cases, which moves
 #: results at the integrator's error, ~1e-6 in COR).
 LAW_CHUNK = 64
-
-
-def _attributes(spec: SweepSpec) -> dict[str, Any]:
-    """Provenance, every fixed parameter (units in the names), solver and tolerances."""
-    params: dict[str, Any] = {}
-    for name, value in spec.fixed.items():
-        attr = parameter(name).attribute
-        if value is None and name == "kcb":
-            value = KCB_LAW
-        elif value is None and name == "zeta":
-            value = zeta_from_cor(PAPER_CLAMPED_COR)
-        if value is not None:
-            params[attr] = value
-    if spec.frame is None:
-        params["ei2_n_m2"] = "0.88 ei1" if spec.ei2 is None else spec.ei2
-    desc = spec.describe()
-    params.update(
-        frame=desc["frame"],
-        solver=spec.solver,
-        separation=spec.separation,
-        basis=spec.basis,
-        modes="all" if spec.modes is None else int(spec.modes),
-        rtol=spec.rtol,
-        atol=spec.atol,
-        swept=" ".join(spec.dims),
-        spec_sha256=spec.digest,
-    )
-    if spec.law is None:
-        params["contact_law"] = "linear"
-    elif family_of(spec.law) is None:  # no named parameters: the law as it describes itself
-        params.update({f"contact_{k}": v for k, v in spec.law.describe().items()})
-    else:  # its parameters: fixed ones above, swept ones are dimensions
-        params["contact_law"] = spec.law.name
-    if spec.law is None and spec.solver == "exact":
-        params["tolerance"] = "all modes" if spec.tolerance is None else spec.tolerance
-        params["tolerances"] = (
-            "exact: closed form (batched engine), COR within 'tolerance' of every mode, "
-            "separation time to 1e-14 relative; rtol, atol unused"
-        )
-    params["peak_force"] = "computed" if spec.peak_force else "not asked"
-    prov = provenance(params)
-    attrs = {k: v for k, v in prov.items() if k != "parameters"}
-    attrs.update(prov["parameters"])
-    return attrs
-
-
-def _dataset(spec: SweepSpec, values: np.ndarray) -> Any:
-    import xarray as xr
-
-    coords = {
-        name: (
-            name,
-            vals,
-            {"units": parameter(name).unit, "long_name": parameter(name).description},
-        )
-        for name, vals in spec.axes.items()
-    }
-    keep = result_variables(spec)
-    data = {
-        name: (spec.dims, values[:, k].reshape(spec.shape), {"units": unit, "long_name": text})
-        for k, (name, (unit, text)) in enumerate(VARIABLES.items())
-        if name in keep
-    }
-    return xr.Dataset(data, coords=coords, attrs=_attributes(spec))
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
@@ -229,9 +160,45 @@ def sweep(
     -------
     xarray.Dataset
         Dimensions: the swept parameters; variables :data:`VARIABLES` (``peak_force_n`` only
-        when asked); attributes: every fixed
-        parameter, the solver and its tolerances, the package version (provenance).
+        when asked); attributes: every fixed parameter, the solver and its tolerances, the
+        flexible modes kept (``modes_kept``; ``modes`` is the request), the package version
+        (provenance).
     """
+    options = dict(locals())
+    options.update(options.pop("law_parameters"))
+    return sweep_result(**options).to_xarray()
+
+
+#: The keywords of :meth:`SweepSpec.build` besides the parameters.
+_SPEC_OPTIONS = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
+
+
+def sweep_result(
+    frame: Frame | FrameMesh | None = None,
+    *,
+    law: Any = None,
+    peak_force: bool = False,
+    output: str | os.PathLike | None = None,
+    overwrite: bool = False,
+    restart: bool = False,
+    backend: str | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    chunk_size: int | None = None,
+    progress: bool | None = None,
+    parameters: dict[str, Any] | None = None,
+    **grid: Any,
+) -> SweepResult:
+    """:func:`sweep` (the same keywords) as plain arrays, the netCDF file written without
+    xarray: what the command line runs (xarray's imports cost it more than the Fig 13 sweep's
+    1 260 impacts).
+
+    Returns
+    -------
+    SweepResult
+        The values of every case, the attributes; ``to_xarray()`` gives :func:`sweep`'s dataset.
+    """
+    law_parameters = {k: v for k, v in grid.items() if k not in (*PARAMETERS, *_SPEC_OPTIONS)}
     for name in law_parameters:
         if name not in LAW_PARAMETERS:
             raise InputError(
@@ -244,28 +211,9 @@ def sweep(
         raise InputError(f"law parameters {given} are not allowed with law {show(law)}: {why}")
     spec = SweepSpec.build(
         frame,
-        position=position,
-        speed=speed,
-        ei1=ei1,
-        ei2=ei2,
-        ei_factor=ei_factor,
-        ball_mass=ball_mass,
-        zeta=zeta,
-        kcb=kcb,
-        racket_speed=racket_speed,
-        reference=reference,
-        pivot=pivot,
-        elements=elements,
-        solver=solver,
-        separation=separation,
-        basis=basis,
-        modes=modes,
-        rtol=rtol,
-        atol=atol,
+        **grid,
         law=get_law(law) if isinstance(law, str) else law,
-        tolerance=tolerance,
         peak_force=peak_force,
-        **law_parameters,
     )
     if backend is not None:
         check_choice("backend", backend, BACKENDS)
@@ -274,7 +222,7 @@ def sweep(
             check_integer(name, value)
     if scheduler is not None:
         check_scheduler(scheduler)  # before any checkpoint folder is made
-    n_vars = len(VARIABLES)
+    n_vars = len(COLUMNS)
     values = np.full((spec.size, n_vars), np.nan)
     done = np.zeros(spec.size, dtype=bool)
     ckpt = None
@@ -315,17 +263,12 @@ def sweep(
             total=spec.size,
             initial=spec.size - todo.size,
         )
-        ds = _dataset(spec, values)
-        ds.attrs["backend"] = backend
-        failed = int(np.count_nonzero(np.isnan(values[:, 0])))
-        ds.attrs["failed_cases"] = failed
-        if parameters:
-            ds.attrs["run_parameters"] = json.dumps(parameters, sort_keys=True, default=str)
-        if failed:
-            log.warning("%d of %d cases failed: NaN in the dataset", failed, spec.size)
+        result = SweepResult(spec, values, backend, parameters)
+        if result.failed:
+            log.warning("%d of %d cases failed: NaN in the dataset", result.failed, spec.size)
         if output is not None:
             with atomic_output(Path(output), overwrite=overwrite) as tmp:
-                ds.to_netcdf(tmp)
+                result.write(tmp)
             ckpt.remove()
             log.info("wrote %s", output)
     except BaseException as exc:
@@ -338,4 +281,4 @@ def sweep(
     finally:
         if ckpt is not None:
             ckpt.close()
-    return ds
+    return result

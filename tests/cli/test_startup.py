@@ -9,6 +9,9 @@ so load on the machine cannot fail it. What each command must not import, and wh
 - ``simulate`` without ``--out``: no scipy at all (the modes come from numpy's dense eigen-solver
   on the frame's diagonals, the engine is numpy), and it writes nothing (no xarray, netCDF,
   dask, plotting or VTK).
+- ``sweep`` over the exact engine: netCDF4 writes its file from the arrays, without xarray
+  (which imports dask, dask.array and through them scipy, and dask.distributed to write), so
+  no xarray, pandas, dask or scipy.
 """
 
 from __future__ import annotations
@@ -89,6 +92,13 @@ def test_simulate_with_histories_writes_without_file_libraries(tmp_path):
     modules = imported(["simulate", "--out", str(tmp_path / "r.csv")], tmp_path)
     assert (tmp_path / "r.csv").is_file()
     assert not loaded(modules, ("skfem", *FILES, *PLOTTING, *OTHERS))
+
+
+def test_sweep_writes_without_xarray_or_dask(tmp_path):
+    out = tmp_path / "s.nc"
+    modules = imported(["sweep", "--position", "0.6,0.8", "--out", str(out), "--quiet"], tmp_path)
+    assert out.is_file() and "netCDF4" in modules
+    assert not loaded(modules, ("xarray", "pandas", "dask", "distributed", "scipy", *PLOTTING))
 
 
 def test_version_is_looked_up_when_asked(capsys):

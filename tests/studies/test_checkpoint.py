@@ -12,9 +12,10 @@ import pytest
 import xarray as xr
 
 from fem_racket import InputError, sweep
-from fem_racket.studies.cases import VARIABLES
+from fem_racket.studies.cases import COLUMNS
 from fem_racket.studies.checkpoint import Checkpoint, checkpoint_path
 from fem_racket.studies.grid import SweepSpec
+from fem_racket.studies.sweep import sweep_result
 
 GRID = {"position": "0.55:0.95:6", "ei1": [60.0, 146.0, 2000.0]}
 
@@ -30,11 +31,9 @@ def _checkpoint(tmp_path, chunk: int = 6):
     it when the file was not yet written), and the result file's path."""
     out = tmp_path / "s.nc"
     spec = SweepSpec.build(None, **GRID)
-    ds = sweep(**GRID, backend="serial", progress=False)
-    # every variable's column (the peak force, not asked, is NaN in the checkpoint)
-    nan = np.full(spec.size, np.nan)
-    values = np.column_stack([ds[v].values.ravel() if v in ds else nan for v in VARIABLES])
-    ckpt = Checkpoint(out, spec.digest, spec.describe(), spec.size, len(VARIABLES))
+    # every column (the peak force, not asked, is NaN in the checkpoint; the modes kept last)
+    values = sweep_result(**GRID, backend="serial", progress=False).values
+    ckpt = Checkpoint(out, spec.digest, spec.describe(), spec.size, len(COLUMNS))
     for start in range(0, spec.size, chunk):
         idx = np.arange(start, min(start + chunk, spec.size))
         ckpt.save(idx, values[idx])
@@ -101,7 +100,7 @@ def test_another_sweeps_checkpoint_is_refused_naming_restart(tmp_path, reference
 def test_the_lock_stops_a_second_sweep_on_the_same_output(tmp_path):
     out = tmp_path / "s.nc"
     spec = SweepSpec.build(None, **GRID)
-    holder = Checkpoint(out, spec.digest, spec.describe(), spec.size, len(VARIABLES))
+    holder = Checkpoint(out, spec.digest, spec.describe(), spec.size, len(COLUMNS))
     try:
         with pytest.raises(InputError, match=r"another sweep \(process \d+\) is writing it"):
             sweep(**GRID, backend="serial", progress=False, output=out)

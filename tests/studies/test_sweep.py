@@ -23,7 +23,7 @@ from fem_racket import (
     sweep,
 )
 from fem_racket.cli import main
-from fem_racket.studies.cases import VARIABLES, clear_caches
+from fem_racket.studies.cases import COLUMNS, VARIABLES, clear_caches
 from fem_racket.studies.checkpoint import Checkpoint, checkpoint_path
 from fem_racket.studies.grid import parse_values
 
@@ -207,7 +207,7 @@ def test_bad_scheduler_and_options():
 
 def test_refuses_a_different_checkpoint(tmp_path):
     out = tmp_path / "x.nc"
-    Checkpoint(out, "another-sweep", {}, 4, len(VARIABLES)).close()
+    Checkpoint(out, "another-sweep", {}, 4, len(COLUMNS)).close()
     with pytest.raises(InputError, match="different sweep"):
         sweep(position=[0.6, 0.7], output=out, progress=False)
     ds = sweep(position=[0.6, 0.7], output=out, restart=True, progress=False)

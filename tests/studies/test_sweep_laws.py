@@ -94,18 +94,19 @@ def test_law_sweeps_give_the_same_numbers_on_every_backend():
 
 
 def test_a_resumed_law_sweep_equals_an_uninterrupted_one(tmp_path):
-    from fem_racket.studies.cases import VARIABLES
+    from fem_racket.studies.cases import COLUMNS
     from fem_racket.studies.checkpoint import Checkpoint
     from fem_racket.studies.grid import SweepSpec
+    from fem_racket.studies.sweep import sweep_result
 
     kw = dict(k2=np.geomspace(5e16, 1.5e17, 14), position="0.5:0.9:5", speed=25.0)
-    clean = sweep(law=KAWAZOE, **kw, backend="serial", peak_force=True)
+    run = sweep_result(law=KAWAZOE, **kw, backend="serial", peak_force=True)
+    clean = run.to_xarray()
     # a run killed after its first chunk of 64 cases (studies/sweep.py LAW_CHUNK)
     out = tmp_path / "s.nc"
     spec = SweepSpec.build(None, law=KAWAZOE, peak_force=True, **kw)
-    values = np.column_stack([clean[v].values.ravel() for v in VARIABLES])
-    ckpt = Checkpoint(out, spec.digest, spec.describe(), spec.size, len(VARIABLES))
-    ckpt.save(np.arange(64), values[:64])
+    ckpt = Checkpoint(out, spec.digest, spec.describe(), spec.size, len(COLUMNS))
+    ckpt.save(np.arange(64), run.values[:64])
     ckpt.close()
     resumed = sweep(law=KAWAZOE, **kw, backend="serial", peak_force=True, output=out)
     np.testing.assert_array_equal(resumed.cor.values, clean.cor.values)

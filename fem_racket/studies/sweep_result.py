@@ -1,0 +1,176 @@
+"""A finished sweep as plain arrays: its variables, attributes, netCDF file and summary.
+
+:class:`SweepResult` holds the values of every case (one row per case, the columns of
+:data:`fem_racket.studies.cases.COLUMNS`) and turns them into the labelled variables of the
+dataset: one dimension per swept parameter (its values the coordinate, with units and a
+long name), the result variables :data:`~fem_racket.studies.cases.VARIABLES` and the global
+attributes (provenance, every fixed parameter, solver, tolerances, modes kept). The same
+variables give the netCDF file (:func:`fem_racket.outputs.netcdf.write_netcdf`, no xarray: what
+the command line writes) and the :class:`xarray.Dataset` of :func:`fem_racket.sweep`, so
+``xarray.open_dataset`` of the file is identical to that dataset.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
+from fem_racket.outputs import provenance
+from fem_racket.studies.cases import MODES_COLUMN, VARIABLES, result_variables
+from fem_racket.studies.grid import SweepSpec, parameter
+from fem_racket.studies.law_axes import family_of
+
+__all__ = ["KCB_LAW", "SweepResult"]
+
+#: What a kcb of None means.
+KCB_LAW = (
+    "from the speed: piecewise power law through the paper's 2.74e4, 5.0e4, 8.33e4 N/m "
+    "at 20, 30, 40 m/s"
+)
+
+
+def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
+    """Provenance, every fixed parameter (units in the names), solver and tolerances."""
+    params: dict[str, Any] = {}
+    for name, value in spec.fixed.items():
+        attr = parameter(name).attribute
+        if value is None and name == "kcb":
+            value = KCB_LAW
+        elif value is None and name == "zeta":
+            value = zeta_from_cor(PAPER_CLAMPED_COR)
+        if value is not None:
+            params[attr] = value
+    if spec.frame is None:
+        params["ei2_n_m2"] = "0.88 ei1" if spec.ei2 is None else spec.ei2
+    desc = spec.describe()
+    params.update(
+        frame=desc["frame"],
+        solver=spec.solver,
+        separation=spec.separation,
+        basis=spec.basis,
+        modes="all" if spec.modes is None else int(spec.modes),
+        rtol=spec.rtol,
+        atol=spec.atol,
+        swept=" ".join(spec.dims),
+        spec_sha256=spec.digest,
+    )
+    if spec.law is None:
+        params["contact_law"] = "linear"
+    elif family_of(spec.law) is None:  # no named parameters: the law as it describes itself
+        params.update({f"contact_{k}": v for k, v in spec.law.describe().items()})
+    else:  # its parameters: fixed ones above, swept ones are dimensions
+        params["contact_law"] = spec.law.name
+    if spec.law is None and spec.solver == "exact":
+        params["tolerance"] = "all modes" if spec.tolerance is None else spec.tolerance
+        params["tolerances"] = (
+            "exact: closed form (batched engine), COR within 'tolerance' of every mode, "
+            "separation time to 1e-14 relative; rtol, atol unused"
+        )
+    params["peak_force"] = "computed" if spec.peak_force else "not asked"
+    prov = provenance(params)
+    attrs = {k: v for k, v in prov.items() if k != "parameters"}
+    attrs.update(prov["parameters"])
+    return attrs
+
+
+def modes_kept(spec: SweepSpec, kept: np.ndarray) -> int | str:
+    """The ``modes_kept`` attribute: the flexible modes the solver kept, one number when every
+    case kept the same, else their range (the engine's COR tolerance chooses them per case)."""
+    kept = kept[np.isfinite(kept)]
+    if kept.size == 0:
+        return "none (physical basis)" if spec.basis == "physical" else "none (no case solved)"
+    low, high = int(kept.min()), int(kept.max())
+    return low if low == high else f"{low} to {high} (per case)"
+
+
+@dataclass
+class SweepResult:
+    """The outcome of a sweep (:func:`fem_racket.studies.sweep.sweep_result`).
+
+    Attributes
+    ----------
+    spec : SweepSpec
+        What was swept.
+    values : ndarray, shape (cases, len(COLUMNS))
+        One row per case in C order of the dimensions: the variables, then the modes kept.
+    backend : str
+        Where it ran ("serial", "processes" or "dask").
+    parameters : dict, optional
+        Extra provenance (the attribute ``run_parameters``, JSON).
+    """
+
+    spec: SweepSpec
+    values: np.ndarray
+    backend: str
+    parameters: dict[str, Any] | None = field(default=None)
+
+    @property
+    def failed(self) -> int:
+        """Number of cases that failed (NaN in every variable)."""
+        return int(np.count_nonzero(np.isnan(self.values[:, 0])))
+
+    @cached_property
+    def attrs(self) -> dict[str, Any]:
+        """The dataset's global attributes (made once: the file and the dataset share the
+        creation time)."""
+        attrs = spec_attributes(self.spec)
+        attrs["modes_kept"] = modes_kept(self.spec, self.values[:, MODES_COLUMN])
+        attrs["backend"] = self.backend
+        attrs["failed_cases"] = self.failed
+        if self.parameters:
+            attrs["run_parameters"] = json.dumps(self.parameters, sort_keys=True, default=str)
+        return attrs
+
+    def coordinates(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
+        """Each swept parameter's values: name -> ((name,), values, units and long name)."""
+        return {
+            name: (
+                (name,),
+                vals,
+                {"units": parameter(name).unit, "long_name": parameter(name).description},
+            )
+            for name, vals in self.spec.axes.items()
+        }
+
+    def data_variables(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
+        """The result variables: name -> (dimensions, values, units and long name)."""
+        spec, keep = self.spec, result_variables(self.spec)
+        return {
+            name: (spec.dims, self.values[:, k].reshape(spec.shape), {"units": u, "long_name": t})
+            for k, (name, (u, t)) in enumerate(VARIABLES.items())
+            if name in keep
+        }
+
+    def write(self, path: str | os.PathLike) -> None:
+        """Write the netCDF file (no xarray; inside an ``atomic_output``)."""
+        from fem_racket.outputs.netcdf import write_netcdf
+
+        # variables before coordinates, as xarray writes a dataset made like to_xarray's
+        write_netcdf(path, {**self.data_variables(), **self.coordinates()}, self.attrs)
+
+    def to_xarray(self) -> Any:
+        """The labelled :class:`xarray.Dataset` (what :func:`fem_racket.sweep` returns)."""
+        import xarray as xr
+
+        return xr.Dataset(self.data_variables(), coords=self.coordinates(), attrs=dict(self.attrs))
+
+    def summary(self) -> dict[str, Any]:
+        """Cases, dimensions, the COR range (NaN when no case solved), solver, law, backend."""
+        cor = self.values[:, 0]
+        solved = cor[np.isfinite(cor)]
+        return {
+            "impacts": self.spec.size,
+            "dims": dict(zip(self.spec.dims, map(int, self.spec.shape), strict=True)),
+            "cor_min": float(solved.min()) if solved.size else math.nan,
+            "cor_max": float(solved.max()) if solved.size else math.nan,
+            "solver": self.attrs["solver"],
+            "contact_law": self.attrs["contact_law"],
+            "backend": self.backend,
+        }
