@@ -28,7 +28,11 @@ def _collect(backend: str, **options) -> np.ndarray:
     seen: list[np.ndarray] = []
     chunks = [np.arange(i, i + 2) for i in range(0, 6, 2)]
     run_chunks(
-        _blas_threads, chunks, lambda c, r: seen.append(r), backend=backend, progress=False,
+        _blas_threads,
+        chunks,
+        lambda c, r: seen.append(r),
+        backend=backend,
+        progress=False,
         **options,
     )
     return np.concatenate(seen)
