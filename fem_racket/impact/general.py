@@ -22,6 +22,7 @@ whose force jumps at contact keep it at that order in practice (measured).
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import fields, replace
 from typing import Any
 
@@ -30,17 +31,23 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.impact.general_march import GeneralOutcome, march
 from fem_racket.impact.receptance import Receptance
-from fem_racket.impact.reduction import contact_frequency
+from fem_racket.impact.reduction import (
+    DEFAULT_TOLERANCE,
+    check_tolerance,
+    contact_frequency,
+    cutoff_factor,
+)
 from fem_racket.validation import check_integer, check_positive
 
-__all__ = ["DEFAULT_BETA", "DEFAULT_STEPS", "GeneralOutcome", "solve_general"]
+__all__ = ["STEP_ERROR", "GeneralOutcome", "settings", "solve_general"]
 
 log = logging.getLogger(__name__)
 
-#: Time steps per estimated contact time.
-DEFAULT_STEPS = 50
-#: Flexible modes above beta x the contact frequency become one residual pseudo-mode.
-DEFAULT_BETA = 50.0
+#: Time steps per estimated contact time for a COR tolerance tol: (STEP_ERROR / tol)^(1/4)
+#: (fourth order; the largest COR error over the laws of ``scripts/bench_laws.py`` at 8 random
+#: impacts each with every mode kept was ~660 / steps^4 (Hunt-Crossley, n = 9, 64-128 steps),
+#: times a safety factor of 2).
+STEP_ERROR = 1300.0
 #: First integration span as a multiple of the estimated contact time (doubled while some case
 #: has not separated, up to t_max).
 SPAN = 2.0
@@ -49,6 +56,9 @@ SPAN = 2.0
 GROUP_RATIO = 1.3
 #: Default t_max as a multiple of the estimated contact time.
 LIMIT = 16.0
+#: Batches up to this size (laws without an ODE state) solve all nodes at once
+#: (:mod:`fem_racket.impact.general_global`); larger ones march, vectorised across cases.
+WHOLE = 2
 
 
 def solve_general(
@@ -57,8 +67,9 @@ def solve_general(
     speed: Any,
     *,
     frame_velocity: np.ndarray | None = None,
-    steps: int = DEFAULT_STEPS,
-    beta: float | None = DEFAULT_BETA,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    steps: int | None = None,
+    beta: float | None = None,
     t_max: float | None = None,
 ) -> GeneralOutcome:
     """Integrate a batch of impacts until each ball separates.
@@ -75,10 +86,13 @@ def solve_general(
         Initial modal velocities of the frame (rigid translation and rotation about the CG first,
         then the flexible modes of ``rec.omega``) [sqrt(kg) m/s]; at rest when None. Positive
         moves the frame along the ball's travel (away from the ball).
-    steps : int
+    tolerance : float or None
+        COR tolerance [-] setting ``steps`` and ``beta`` when they are not given
+        (:func:`settings`); None (or 0): every mode, 400 steps.
+    steps : int, optional
         Time steps per estimated contact time (the step is shared by a group of cases).
-    beta : float or None
-        Keep flexible modes below beta x pi / t_c (the rest: one pseudo-mode); None keeps all.
+    beta : float, optional
+        Keep flexible modes below beta x pi / t_c (the rest: one pseudo-mode; inf keeps all).
     t_max : float, optional
         Give up at this time [s]; 16 x the estimated contact time by default.
 
@@ -86,8 +100,7 @@ def solve_general(
     -------
     GeneralOutcome
     """
-    check_integer("steps", steps, 10)
-    beta = np.inf if beta is None else check_positive("beta", beta)
+    steps, beta = settings(tolerance, steps, beta)
     ncase = rec.a.shape[0]
     speed = np.broadcast_to(np.asarray(speed, dtype=float), (ncase,)).copy()
     t_case = np.broadcast_to(
@@ -101,6 +114,7 @@ def solve_general(
                 _subset(rec, idx, ncase),
                 speed[idx],
                 frame_velocity=None if frame_velocity is None else frame_velocity[idx],
+                tolerance=tolerance,
                 steps=steps,
                 beta=beta,
                 t_max=t_max,
@@ -110,11 +124,11 @@ def solve_general(
         return _merge(parts, groups, ncase)
     t_est = float(np.min(t_case))
     t_max = LIMIT * t_est if t_max is None else check_positive("t_max", t_max, "s")
-    omega_c = contact_frequency(t_case)
+    omega_c = contact_frequency(t_case, getattr(law, "exponent", 1.0))
     h = t_est / steps
     span = min(SPAN * t_est, t_max)
     while True:
-        out = march(law, rec, speed, frame_velocity, omega_c, beta, span, h)
+        out = march(law, rec, speed, frame_velocity, omega_c, beta, span, h, ncase <= WHOLE)
         if out is not None:
             return out
         if span >= t_max:
@@ -122,6 +136,26 @@ def solve_general(
 
             raise no_separation(t_max)
         span = min(2.0 * span, t_max)
+
+
+def settings(
+    tolerance: float | None, steps: int | None = None, beta: float | None = None
+) -> tuple[int, float]:
+    """Steps per contact time and cut-off factor for a COR ``tolerance``.
+
+    The modes follow the engine's rule (:func:`fem_racket.impact.reduction.cutoff_factor`, its
+    "displacement" calibration, with the law's contact frequency pi / t_c); the step count is
+    (:data:`STEP_ERROR` / tolerance)^(1/4). Given ``steps`` or ``beta`` take precedence.
+    """
+    tol = check_tolerance(tolerance)
+    if steps is None:
+        steps = 400 if tol is None else int(np.ceil((STEP_ERROR / tol) ** 0.25))
+    check_integer("steps", steps, 10)
+    if beta is None:
+        beta = cutoff_factor(tol)
+    elif beta != math.inf:
+        beta = check_positive("beta", beta)
+    return int(steps), float(beta)
 
 
 def _groups(t_case: np.ndarray) -> list[np.ndarray]:

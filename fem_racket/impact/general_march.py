@@ -83,8 +83,13 @@ def march(
     beta: float,
     span: float,
     h: float,
+    whole: bool = False,
 ) -> GeneralOutcome | None:
-    """One run with step ``h`` [s] up to ``span`` [s] (None: some case is still in contact)."""
+    """One run with step ``h`` [s] up to ``span`` [s] (None: some case is still in contact).
+
+    ``whole``: solve every node at once (:func:`fem_racket.impact.general_global.solve_all`,
+    laws without an ODE state), marching only if that does not converge.
+    """
     ncase = rec.a.shape[0]
     nsteps = max(int(np.ceil(span / h)) + 1, ORDER + 2)
     K = kernels(rec, omega_c, beta, h, nsteps)
@@ -98,6 +103,13 @@ def march(
     if ode:
         G[:, 0] = law.rate(D[:, 0], V[:, 0], zero)
     scale = np.abs(speed) / (rec.compliance * span)
+    if whole and not ode:
+        done = _whole(law, K, dfree, vfree, F[:, 0], h, scale, speed / rec.compliance, span, G)
+        if done is not None:
+            F, D, V, Z, last, frac = done
+            if np.any(last < 0):
+                return None
+            return _outcome(F, D, V, Z, last, frac, h, speed, rec, K.kept)
 
     def node(m: int, guess: np.ndarray) -> None:
         """Solve node m with every other node's current values."""
@@ -143,7 +155,8 @@ def march(
     for m in range(1, nsteps):
         if m >= ORDER:
             node(m, 3.0 * F[:, m - 1] - 3.0 * F[:, m - 2] + F[:, m - 3])
-        ended, s = _ended(law, F, D, V, Z, G, m, last < 0, h)
+        ended, s = find_end(law, F, D, V, Z, G, h, m, m + 1)
+        ended = (ended > 0) & (last < 0)
         last = np.where(ended, m, last)
         frac = np.where(ended, s, frac)
         if np.all(last >= 0):
@@ -153,28 +166,61 @@ def march(
     return _outcome(F, D, V, Z, last, frac, h, speed, rec, K.kept)
 
 
-def _ended(law, F, D, V, Z, G, m, open_, h):
-    """Cases whose contact ends in step m - 1 -> m, and where in it (fraction)."""
-    ncase = F.shape[0]
-    s = np.ones(ncase)
+def _whole(law, K, dfree, vfree, F0, h, scale, momentum, span, G):
+    """Every node at once from a half-sine guess (impulse 1.5 m_eff v0 over span / 2)."""
+    from fem_racket.impact.general_global import solve_all
+
+    t = np.arange(dfree.shape[1]) * h
+    dur = 0.5 * span
+    pulse = np.where(t < dur, np.sin(np.pi * np.minimum(t, dur) / dur), 0.0)
+    guess = (0.75 * np.pi * momentum / dur)[:, None] * pulse[None, :]
+    guess[:, 0] = F0
+
+    def ends(F, D, V, Z):
+        last = find_end(law, F, D, V, Z, G, h, where=False)[0]
+        return np.where(last < 0, F.shape[1] - 1, last)
+
+    out = solve_all(law, K, dfree, vfree, guess, h, scale, ends)
+    if out is None:
+        return None
+    F, D, V, Z = out
+    return (F, D, V, Z, *find_end(law, F, D, V, Z, G, h))
+
+
+def find_end(law, F, D, V, Z, G, h, first=1, stop=None, where=True):
+    """First step (its end node ``last``) in which each case's contact ends among the nodes
+    ``first`` .. ``stop`` - 1, and where in it (fraction; ones unless ``where``); last = -1
+    where it does not."""
+    stop = F.shape[1] if stop is None else stop
+    sl, pr = slice(first, stop), slice(first - 1, stop - 1)
     if law.end == "force":
-        ended = open_ & (F[:, m - 1] > 0) & (F[:, m] <= 0)
-        if np.any(ended):
-            vals, off = _stencil_values(F[ended], m - 1)
-            s[ended] = cubic_root(vals, off)
-        return ended, s
-    if law.end == "state":
-        ended = open_ & (Z[:, m - 1] > 0) & (Z[:, m] <= 0)
-        if np.any(ended):
-            k = np.flatnonzero(ended)
-            s[k] = hermite_root(Z[k, m - 1], G[k, m - 1], Z[k, m], G[k, m], 0.0, h)
-        return ended, s
-    end = np.broadcast_to(law.end_deflection(Z[:, m]), (ncase,))
-    ended = open_ & (D[:, m - 1] - end > 0) & (D[:, m] - end <= 0)
-    if np.any(ended):
-        k = np.flatnonzero(ended)
-        s[k] = hermite_root(D[k, m - 1], V[k, m - 1], D[k, m], V[k, m], end[k], h)
-    return ended, s
+        cond = (F[:, pr] > 0) & (F[:, sl] <= 0)
+    elif law.end == "state":
+        cond = (Z[:, pr] > 0) & (Z[:, sl] <= 0)
+    else:
+        end = np.broadcast_to(law.end_deflection(Z), F.shape)
+        cond = (D[:, pr] - end[:, pr] > 0) & (D[:, sl] - end[:, sl] <= 0)
+    hit = np.any(cond, axis=1)
+    last = np.where(hit, first + np.argmax(cond, axis=1), -1)
+    frac = np.ones(F.shape[0])
+    k = np.flatnonzero(hit)
+    if k.size == 0 or not where:
+        return last, frac
+    m = last[k]
+    if law.end == "force":
+        vals = np.stack([F[k, m - 1 + o] for o in BACKWARD], axis=1) if np.all(m >= 3) else None
+        if vals is None:
+            for i, mm in zip(k, m, strict=True):
+                v_, off = _stencil_values(F[i : i + 1], int(mm) - 1)
+                frac[i] = cubic_root(v_, off)[0]
+        else:
+            frac[k] = cubic_root(vals, BACKWARD)
+    elif law.end == "state":
+        frac[k] = hermite_root(Z[k, m - 1], G[k, m - 1], Z[k, m], G[k, m], 0.0, h)
+    else:
+        end = np.broadcast_to(law.end_deflection(Z[k, m]), k.shape)
+        frac[k] = hermite_root(D[k, m - 1], V[k, m - 1], D[k, m], V[k, m], end, h)
+    return last, frac
 
 
 def _outcome(F, D, V, Z, last, frac, h, speed, rec, kept) -> GeneralOutcome:

@@ -39,7 +39,7 @@ def turn_max(d0, v0, d1, v1, h) -> np.ndarray:
     disc = np.sqrt(np.maximum(qb * qb - 4.0 * qa * m0, 0.0))
     # the root of p'(s) = qa s^2 + qb s + m0 where p' falls from m0 > 0 (stable form)
     den = -qb + disc
-    s = np.clip(2.0 * m0 / np.where(den > 0, den, 1.0), 0.0, 1.0)
+    s = np.minimum(np.maximum(2.0 * m0 / np.where(den > 0, den, 1.0), 0.0), 1.0)
     p = hermite_value(s, d0, m0, d1, m1)
     return np.where(turn, np.maximum(p, np.maximum(d0, d1)), np.maximum(d0, d1))
 
@@ -47,12 +47,12 @@ def turn_max(d0, v0, d1, v1, h) -> np.ndarray:
 def hermite_root(d0, v0, d1, v1, end, h) -> np.ndarray:
     """Fraction s in (0, 1] where the cubic Hermite interpolant of delta reaches ``end``."""
     p0, p1, m0, m1 = d0 - end, d1 - end, h * v0, h * v1
-    s = np.clip(p0 / np.where(p0 - p1 > 0, p0 - p1, 1.0), 0.0, 1.0)
+    s = np.minimum(np.maximum(p0 / np.where(p0 - p1 > 0, p0 - p1, 1.0), 0.0), 1.0)
     for _ in range(8):
         f = hermite_value(s, p0, m0, p1, m1)
         s2 = s * s
         df = (6 * s2 - 6 * s) * (p0 - p1) + (3 * s2 - 4 * s + 1) * m0 + (3 * s2 - 2 * s) * m1
-        s = np.clip(s - f / np.where(df != 0, df, -1.0), 0.0, 1.0)
+        s = np.minimum(np.maximum(s - f / np.where(df != 0, df, -1.0), 0.0), 1.0)
     return np.where(p1 >= 0, 1.0, s)
 
 
@@ -61,11 +61,11 @@ def cubic_root(values: np.ndarray, offsets: tuple[int, ...]) -> np.ndarray:
     falls through zero (the step's end value is <= 0, its start > 0)."""
     coef = values @ lagrange(offsets)  # (C, 4): coefficients of sigma^q
     p0, p1 = values[:, offsets.index(0)], values[:, offsets.index(1)]
-    s = np.clip(p0 / np.where(p0 - p1 > 0, p0 - p1, 1.0), 0.0, 1.0)
+    s = np.minimum(np.maximum(p0 / np.where(p0 - p1 > 0, p0 - p1, 1.0), 0.0), 1.0)
     for _ in range(8):
         f = coef[:, 0] + s * (coef[:, 1] + s * (coef[:, 2] + s * coef[:, 3]))
         df = coef[:, 1] + s * (2 * coef[:, 2] + 3 * s * coef[:, 3])
-        s = np.clip(s - f / np.where(df != 0, df, -1.0), 0.0, 1.0)
+        s = np.minimum(np.maximum(s - f / np.where(df != 0, df, -1.0), 0.0), 1.0)
     return np.where(p1 > 0, 1.0, s)
 
 

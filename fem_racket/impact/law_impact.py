@@ -26,12 +26,8 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.cubic_force import ORDER, lagrange, moments, step_stencil
-from fem_racket.impact.general import (
-    DEFAULT_BETA,
-    DEFAULT_STEPS,
-    GeneralOutcome,
-    solve_general,
-)
+from fem_racket.impact.general import GeneralOutcome, solve_general
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.law_cvode import solve_law_cvode
 from fem_racket.impact.receptance import Receptance
 from fem_racket.impact.system import output_times
@@ -174,14 +170,18 @@ def run_law(
     speed: float,
     *,
     frame_velocity: np.ndarray | None,
-    steps: int,
+    tolerance: float | None,
+    steps: int | None,
     beta: float | None,
     t_max: float | None,
 ) -> GeneralOutcome:
     """:func:`solve_general` for one impact on ``model`` (all its modes available)."""
     rec = receptance(model, position, ball_mass, None)
     fv = None if frame_velocity is None else frame_velocity[None, :]
-    return solve_general(law, rec, speed, frame_velocity=fv, steps=steps, beta=beta, t_max=t_max)
+    return solve_general(
+        law, rec, speed, frame_velocity=fv, tolerance=tolerance, steps=steps, beta=beta,
+        t_max=t_max,
+    )  # fmt: skip
 
 
 def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
@@ -247,13 +247,15 @@ def solve_law_impact(
     t_max: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
-    steps: int = DEFAULT_STEPS,
-    beta: float | None = DEFAULT_BETA,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    steps: int | None = None,
+    beta: float | None = None,
 ) -> LawRun:
     """One impact of the ball at ``position`` (x/L) and ``speed`` [m/s] under ``law``.
 
     ``solver``: ``"general"`` (:func:`~fem_racket.impact.general.solve_general`, all modes
-    available, truncated by ``beta``) or ``"cvode"`` (:func:`solve_law_cvode`, all modes).
+    available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
+    given) or ``"cvode"`` (:func:`solve_law_cvode`, all modes, ``rtol``/``atol``).
     ``frame_velocity``: see :func:`modal_velocity`.
     """
     check_choice("solver", solver, LAW_SOLVERS)
@@ -289,6 +291,7 @@ def solve_law_impact(
         ball_mass,
         speed,
         frame_velocity=fv,
+        tolerance=tolerance,
         steps=steps,
         beta=beta,
         t_max=t_max,
