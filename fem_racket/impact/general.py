@@ -88,7 +88,7 @@ def solve_general(
         moves the frame along the ball's travel (away from the ball).
     tolerance : float or None
         COR tolerance [-] setting ``steps`` and ``beta`` when they are not given
-        (:func:`settings`); None (or 0): every mode, 400 steps.
+        (:func:`settings`); None (or 0): every mode, 800 steps.
     steps : int, optional
         Time steps per estimated contact time (the step is shared by a group of cases).
     beta : float, optional
@@ -149,7 +149,7 @@ def settings(
     """
     tol = check_tolerance(tolerance)
     if steps is None:
-        steps = 400 if tol is None else int(np.ceil((STEP_ERROR / tol) ** 0.25))
+        steps = 800 if tol is None else int(np.ceil((STEP_ERROR / tol) ** 0.25))
     check_integer("steps", steps, 10)
     if beta is None:
         beta = cutoff_factor(tol)

@@ -25,7 +25,7 @@ import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.cubic_force import ORDER, lagrange, moments, step_stencil
+from fem_racket.impact.cubic_force import ORDER, STENCILS, moments, step_stencil
 from fem_racket.impact.general import GeneralOutcome, solve_general
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.law_cvode import solve_law_cvode
@@ -92,18 +92,12 @@ def _step_parts(omega: np.ndarray, h: float, k: np.ndarray, s: np.ndarray):
     q = np.arange(ORDER)[:, None, None]
     rig_v = s[None, :, None] ** (q + 1) / (q + 1)
     rig_x = h * s[None, :, None] ** (q + 2) / ((q + 1) * (q + 2))
-    parts_y, parts_v, parts_x = [], [], []
-    for kk in np.unique(k):
-        coef = lagrange(step_stencil(int(kk)))
-        parts_y.append(np.tensordot(coef, M, axes=(1, 0)))
-        parts_v.append(np.tensordot(coef, rig_v, axes=(1, 0)))
-        parts_x.append(np.tensordot(coef, rig_x, axes=(1, 0)))
-    which = np.searchsorted(np.unique(k), k)
-    pick = np.arange(k.size)
-    py = np.stack(parts_y)[which, :, pick]  # (T, 4, n)
-    pv = np.stack(parts_v)[which, :, pick]
-    px = np.stack(parts_x)[which, :, pick]
-    return py, pv[..., 0], px[..., 0], np.exp(1j * theta[None, :] * s[:, None])
+    kind = np.minimum(k, 2)  # the stencils: forward on steps 0 and 1, backward after
+    coef = STENCILS[np.array([1, 2, 0])[kind]]  # (T, 4 nodes, 4 powers)
+    py = np.einsum("trq,qtn->trn", coef, M)
+    pv = np.einsum("trq,qt->tr", coef, rig_v[:, :, 0])
+    px = np.einsum("trq,qt->tr", coef, rig_x[:, :, 0])
+    return py, pv, px, np.exp(1j * theta[None, :] * s[:, None])
 
 
 def law_histories(
