@@ -31,7 +31,15 @@ import math
 
 import numpy as np
 
-__all__ = ["BACKWARD", "ORDER", "STENCILS", "forward_stencil", "lagrange", "moments", "step_stencil"]
+__all__ = [
+    "BACKWARD",
+    "ORDER",
+    "STENCILS",
+    "forward_stencil",
+    "lagrange",
+    "moments",
+    "step_stencil",
+]
 
 #: Polynomial degree + 1 of the force on a step (cubic: fourth order).
 ORDER = 4
@@ -65,7 +73,7 @@ def step_stencil(k: int) -> tuple[int, ...]:
 
 
 #: Lagrange coefficients (3, 4, 4) of the backward stencil and of the forward ones of steps 0, 1.
-STENCILS = np.stack([lagrange(BACKWARD), lagrange(forward_stencil(0)), lagrange(forward_stencil(1))])
+STENCILS = np.stack([lagrange(k) for k in (BACKWARD, forward_stencil(0), forward_stencil(1))])
 
 
 def moments(theta: np.ndarray, s: np.ndarray | float = 1.0) -> np.ndarray:

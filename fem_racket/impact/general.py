@@ -200,5 +200,3 @@ def _merge(parts: list[GeneralOutcome], groups: list[np.ndarray], ncase: int) ->
             arr[idx, : h.shape[1]] = h
         out[name] = arr
     return GeneralOutcome(**out)
-
-

@@ -105,6 +105,6 @@ def solve_all(
             cap = 2.0 * (np.abs(f[c, 1:]) + scale[c])
             step = np.maximum(np.minimum(dF, cap), -cap)
             F[c, 1:live_n] += np.where(np.isfinite(step), step, 0.0)
-        if np.all(err <= 1e-6):  # near the answer: its separation steps are known
+        if np.all(err <= 1e-3):  # near the answer: its separation steps are known
             live_n = min(live_n, int(np.max(last)) + max(8, int(np.max(last)) // 8))
     return None

@@ -129,9 +129,8 @@ def march(
             pos = off.index(1)
             zc = q[pos]
             z_base = Z[:, m - 1] + vals @ q - zc * vals[:, pos]
-        Fm, zm = solve_step(
-            law, A, B, kd0, kv0, guess, Z[:, m - 1], z_base, zc, h, scale, (D[:, m - 1], V[:, m - 1])
-        )
+        start = (D[:, m - 1], V[:, m - 1])
+        Fm, zm = solve_step(law, A, B, kd0, kv0, guess, Z[:, m - 1], z_base, zc, h, scale, start)
         d, v = A - kd0 * Fm, B - kv0 * Fm
         if memory:
             zm = np.maximum(Z[:, m - 1], turn_max(D[:, m - 1], V[:, m - 1], d, v, h))
@@ -264,4 +263,3 @@ def _outcome(F, D, V, Z, last, frac, h, speed, rec, kept) -> GeneralOutcome:
         fraction=frac,
         kept=kept,
     )
-

@@ -25,7 +25,8 @@ _NEWTON_ITER = 40
 def hermite_value(s, p0, m0, p1, m1):
     """Cubic Hermite interpolant at fraction s of a step (values p, slopes m per step)."""
     s2, s3 = s * s, s * s * s
-    return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1
+    ends = (2 * s3 - 3 * s2 + 1) * p0 + (-2 * s3 + 3 * s2) * p1
+    return ends + (s3 - 2 * s2 + s) * m0 + (s3 - s2) * m1
 
 
 def turn_max(d0, v0, d1, v1, h) -> np.ndarray:

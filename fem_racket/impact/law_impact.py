@@ -27,9 +27,9 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.cubic_force import ORDER, STENCILS, moments, step_stencil
 from fem_racket.impact.general import GeneralOutcome, solve_general
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.law_cvode import solve_law_cvode
 from fem_racket.impact.receptance import Receptance
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.system import output_times
 from fem_racket.validation import InputError, check_choice, check_finite
 
@@ -271,12 +271,12 @@ def solve_law_impact(
         )
         n = tr.n
         t, y = tr.t, tr.y
-        if output_step is None:
-            t, y = t[[0, -1]], y[[0, -1]]
         d = y[:, :n] @ np.concatenate([[1.0], -a])
         v = y[:, n : 2 * n] @ np.concatenate([[1.0], -a])
         z = y[:, -1] if law.state == "ode" else np.maximum.accumulate(d)
-        peak = float(np.max(law.force(d, v, z)))
+        peak = float(np.max(law.force(d, v, z)))  # on CVODE's output grid (sampled)
+        if output_step is None:
+            t, y, z = t[[0, -1]], y[[0, -1]], z[[0, -1]]
         return LawRun(t, y[:, 0], y[:, n], y[:, 1:n], y[:, n + 1 : 2 * n], z, peak)
     out = run_law(
         law,

@@ -128,9 +128,7 @@ def _tables(
     return Td, Tv
 
 
-def kernels(
-    rec: Receptance, omega_c: np.ndarray, beta: float, h: float, nsteps: int
-) -> Kernels:
+def kernels(rec: Receptance, omega_c: np.ndarray, beta: float, h: float, nsteps: int) -> Kernels:
     """The weight tables of a grid of ``nsteps`` nodes of step ``h`` [s].
 
     Flexible modes below ``beta`` x ``omega_c`` (per case [rad/s]) are kept, the others
