@@ -33,9 +33,12 @@ _ITER = 40
 
 def full_weights(T: np.ndarray, S: np.ndarray) -> np.ndarray:
     """W[c, m, j] = T[c, m - j] (j <= m) + S[c, m, j] (j <= 3), shape (C, N, N)."""
-    n = T.shape[1]
-    lag = np.arange(n)[:, None] - np.arange(n)[None, :]
-    W = np.where(lag >= 0, T[:, np.maximum(lag, 0)], 0.0)
+    from numpy.lib.stride_tricks import sliding_window_view
+
+    ncase, n = T.shape
+    # row m is T[m], T[m-1], ..., T[0], 0, ...: a window of T reversed and padded with zeros
+    rev = np.concatenate([T[:, ::-1], np.zeros((ncase, n - 1))], axis=1)
+    W = sliding_window_view(rev, n, axis=1)[:, ::-1].copy()
     W[:, :, :ORDER] += S
     return W
 
