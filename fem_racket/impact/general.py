@@ -35,7 +35,7 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.impact.general_march import GeneralOutcome, march
 from fem_racket.impact.general_step import per_case
-from fem_racket.impact.receptance import Receptance
+from fem_racket.impact.receptance import Receptance, free_motion
 from fem_racket.impact.reduction import (
     DEFAULT_TOLERANCE,
     check_tolerance,
@@ -108,8 +108,11 @@ def solve_general(
     steps, beta = settings(tolerance, steps, beta)
     ncase = rec.a.shape[0]
     speed = np.broadcast_to(np.asarray(speed, dtype=float), (ncase,)).copy()
+    closing = speed  # ball against the frame's impact point at t = 0 [m/s]
+    if frame_velocity is not None:
+        closing = free_motion(rec, speed, frame_velocity, np.zeros(1))[1][:, 0]
     t_case = np.broadcast_to(
-        law.contact_time_estimate(1.0 / rec.compliance, np.abs(speed)), (ncase,)
+        law.contact_time_estimate(1.0 / rec.compliance, np.abs(closing)), (ncase,)
     )
     groups = _groups(t_case)
     if len(groups) > 1:
