@@ -92,4 +92,6 @@ def test_a_swing_is_recorded_as_used(capsys, tmp_path):
     assert main(["simulate", "--out", str(out), *argv]) == 0
     meta = json.loads(out.read_text())["provenance"]
     assert meta["used"] == used_keys(printed)
-    assert meta["used"]["swing"]["racket_butt_speed_m_s"] == pytest.approx(15.0)  # no pivot: a translation
+    assert meta["used"]["swing"]["racket_butt_speed_m_s"] == pytest.approx(
+        15.0
+    )  # no pivot: a translation
