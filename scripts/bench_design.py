@@ -12,9 +12,10 @@ cores, whose CPU is not in that column: the Sobol row), designs evaluated, zone 
 points x speeds per design) and microseconds of wall time per zone impact (each design also
 builds its frame and modes), how the SLSQP run ended (its message, iterations, mean e_A and
 whether every constraint holds: its path, and so its design count, can change with round-off in
-the objective, its optimum does not), then the Sobol indices the third task found (first order S1
-and total ST of mean e_A per variable). The machine is shared: compare rows of one run. Run time:
-about 2 minutes on a quiet 2-core machine; ``--quick`` a few seconds.
+the objective), then the Sobol indices the third task found (first order S1
+and total ST of mean e_A per variable). The machine is shared: compare rows of one run.
+
+Run time here: ~2-3 minutes in full (a shared 2-core machine, load average 3-4); --quick ~3 s.
 
 Usage: python scripts/bench_design.py [--quick]
 """
@@ -41,7 +42,10 @@ def problem(quick: bool, **kwargs):
 
 def main(argv: list[str] | None = None) -> list[dict]:
     """Run the benchmarks; returns one row per task."""
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(
+        description=__doc__.splitlines()[0],
+        epilog="Run time here: ~2-3 minutes in full; --quick ~3 s.",
+    )
     ap.add_argument("--quick", action="store_true", help="tiny runs (tests)")
     args = ap.parse_args(argv)
     q = args.quick

@@ -21,9 +21,11 @@ EI 50-3000 N m^2 as Fig 13, rhoA 0.2-1.2 kg/m):
    9 variables); it starts from the paper's racket smoothed the same way.
 
 Prints a table: each study's objective for its starting racket and the optimum, the gain, the
-designs evaluated and the wall time. Run time: about 10 minutes in all on a quiet 2-core machine
-(the handle-shock front, study 5, takes most of it); ``--quick`` under a minute. ``--quick`` runs a coarse version (5 zone points, a few
+designs evaluated and the wall time. ``--quick`` runs a coarse version (5 zone points, a few
 iterations, a tiny NSGA-II) for the tests.
+
+Run time here: ~3.5 minutes in full (2-3 of them study 5; a shared 2-core machine, load average
+~4); --quick ~11 s.
 
 Usage: python scripts/design_study.py [--quick] [--out DIR] [--overwrite] [--only STUDY]
 """
@@ -91,7 +93,10 @@ def studies(quick: bool) -> list[tuple[str, dict, dict]]:
 
 def main(argv: list[str] | None = None) -> list[dict]:
     """Run the studies; returns one row per study."""
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(
+        description=__doc__.splitlines()[0],
+        epilog="Run time here: ~3.5 minutes in full (2-3 of them study 5); --quick ~11 s.",
+    )
     ap.add_argument("--quick", action="store_true", help="coarse, fast variant (tests)")
     ap.add_argument("--out", default="output/design_study", help="output folder")
     ap.add_argument("--overwrite", action="store_true", help="replace the output folder")
