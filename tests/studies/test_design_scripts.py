@@ -54,6 +54,7 @@ def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
     assert names == [f"ei_{k}" for k in range(1, 6)] + [f"rhoa_{k}" for k in range(1, 5)]
     assert smooth["problem"]["ei_stations_x_over_l"] == [0.0, 0.25, 0.5, 0.75, 1.0]
     assert smooth["constraints"][0]["holds"] and smooth["objective"] > smooth["start_objective"]
+    assert (out / "smooth" / "profiles.png").is_file()  # studies 1 and 6 side by side
 
 
 def test_optimize_json_and_files(tmp_path, capsys):
