@@ -10,7 +10,12 @@
 Wall time and CPU time of this process (batches of 64+ designs run on a process pool of all
 cores, whose CPU is not in that column: the Sobol row), designs evaluated, zone impacts (zone
 points x speeds per design) and microseconds of wall time per zone impact (each design also
-builds its frame and modes). The machine is shared: compare rows of one run.
+builds its frame and modes), how the SLSQP run ended (its message, iterations, mean e_A and
+whether every constraint holds: its path, and so its design count, can change with round-off in
+the objective), then the Sobol indices the third task found (first order S1
+and total ST of mean e_A per variable). The machine is shared: compare rows of one run.
+
+Run time here: ~2-3 minutes in full (a shared 2-core machine, load average 3-4); --quick ~3 s.
 
 Usage: python scripts/bench_design.py [--quick]
 """
@@ -37,16 +42,20 @@ def problem(quick: bool, **kwargs):
 
 def main(argv: list[str] | None = None) -> list[dict]:
     """Run the benchmarks; returns one row per task."""
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(
+        description=__doc__.splitlines()[0],
+        epilog="Run time here: ~2-3 minutes in full; --quick ~3 s.",
+    )
     ap.add_argument("--quick", action="store_true", help="tiny runs (tests)")
     args = ap.parse_args(argv)
     q = args.quick
     rows = []
+    found = {}
 
     def run(task: str, p, call) -> None:
         ev = Evaluator(p)
         t0, c0 = time.perf_counter(), time.process_time()
-        call(p, ev)
+        found[task] = call(p, ev)
         wall, cpu = time.perf_counter() - t0, time.process_time() - c0
         impacts = ev.computed * p.zone.positions.size * len(p.speeds)
         rows.append(
@@ -93,6 +102,17 @@ def main(argv: list[str] | None = None) -> list[dict]:
             f"{r['task']:<20} {r['designs']:>8} {r['impacts']:>9} {r['wall_s']:>9.2f} "
             f"{r['cpu_s']:>12.2f} {r['us_per_impact']:>10.1f} {r['target_s']:>11.0f}"
         )
+    local = found["SLSQP 8 variables"]
+    holds = all(c["holds"] for c in local.constraints())
+    print(
+        f"\nSLSQP: {local.message} after {local.iterations} iterations; mean e_A "
+        f"{local.start_objective:.5f} -> {local.objective:.5f}; every constraint holds: {holds}"
+    )
+    sobol = found["Sobol"]
+    print(f"\nSobol indices of mean e_A ({sobol.designs} designs)")
+    print(f"{'variable':<10} {'S1':>8} {'ST':>8}")
+    for name, s1, st in zip(sobol.names, sobol.s1, sobol.st, strict=True):
+        print(f"{name:<10} {s1:>8.4f} {st:>8.4f}")
     return rows
 
 

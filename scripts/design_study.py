@@ -15,11 +15,19 @@ EI 50-3000 N m^2 as Fig 13, rhoA 0.2-1.2 kg/m):
    v_out is within 90 % of its maximum) for that swing, mass within 1 % of the paper's;
 5. ``DIR/shock/``: NSGA-II Pareto front of mean v_out for that swing against the mean handle
    shock (RMS of the grip force's vibration part over 50 ms, minimised) of the racket held
-   by a firm grip (fem_racket.frame.hand.FIRM_GRIP, an assumption), mass within 1 %.
+   by a firm grip (fem_racket.frame.hand.FIRM_GRIP, an assumption), mass within 1 %;
+6. ``DIR/smooth/``: study 1 with EI(x) a smooth profile (monotone cubic, PCHIP) through control
+   points at 0, 0.25, 0.5, 0.75 and 1 L instead of one EI per segment (rhoA still per segment:
+   9 variables); it starts from the paper's racket smoothed the same way. When studies 1 and 6
+   both run, ``DIR/smooth/profiles.png`` draws EI(x) and rhoA(x) of the paper's racket and of
+   both optima.
 
-Prints a table: each study's objective for the paper's racket and the optimum, the gain, the
+Prints a table: each study's objective for its starting racket and the optimum, the gain, the
 designs evaluated and the wall time. ``--quick`` runs a coarse version (5 zone points, a few
 iterations, a tiny NSGA-II) for the tests.
+
+Run time here: ~3-3.5 minutes in full (2-3 of them study 5; a shared 2-core machine, load
+average 3-4); --quick ~11 s.
 
 Usage: python scripts/design_study.py [--quick] [--out DIR] [--overwrite] [--only STUDY]
 """
@@ -31,11 +39,18 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
+
 from fem_racket.io.design_study import run_optimization
+from fem_racket.io.figure_files import save_figure
+from fem_racket.outputs import provenance
 from fem_racket.studies.design.build import design_problem
+from fem_racket.studies.design.profiles import cell_means
 from fem_racket.validation import InputError
 
 MASS = 0.359992
+#: Control stations x/L of study 6's smooth EI(x).
+SMOOTH_EI = (0.0, 0.25, 0.5, 0.75, 1.0)
 
 
 def studies(quick: bool) -> list[tuple[str, dict, dict]]:
@@ -75,12 +90,73 @@ def studies(quick: bool) -> list[tuple[str, dict, dict]]:
             },
             nsga2,
         ),
+        (
+            "smooth",
+            {**zone, "objectives": ("cor",), "constraints": keep, "ei_points": SMOOTH_EI},
+            local,
+        ),
     ]
+
+
+def plot_profiles(steps, smooth, path: Path, quick: bool) -> None:
+    """EI(x) and rhoA(x) of the paper's racket, study 1's optimum (4 segments) and study 6's
+    (smooth EI: its cells, the profile itself and its control points), to ``path`` (PNG)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (ax_ei, ax_ra) = plt.subplots(1, 2, figsize=(11, 4.2))
+    start = steps.problem.mesh(steps.problem.x_start)
+    curves = [
+        (start, "k--", "paper's racket"),
+        (
+            steps.problem.mesh(steps.x),
+            "tab:blue",
+            f"study 1: 4 segments, e_A {steps.objective:.4f}",
+        ),
+        (
+            smooth.problem.mesh(smooth.x),
+            "tab:red",
+            f"study 6: smooth EI, e_A {smooth.objective:.4f}",
+        ),
+    ]
+    for mesh, style, label in curves:
+        xs = np.repeat(mesh.points, 2)[1:-1] / mesh.length
+        ax_ei.plot(xs, np.repeat(mesh.EI, 2), style, label=label)
+        ax_ra.plot(xs, np.repeat(mesh.rhoA, 2), style)
+    sp = smooth.problem
+    stations = np.asarray(sp.ei_stations)
+    values = sp.parameters(smooth.x)[: sp.n_ei]
+    fine = np.linspace(0.0, sp.length, 401)
+    mid = 0.5 * (fine[1:] + fine[:-1]) / sp.length
+    profile = cell_means(stations, values, fine, sp.interpolation)
+    ax_ei.plot(
+        mid, profile, ":", color="tab:red", label=f"study 6: the profile ({sp.interpolation})"
+    )
+    ax_ei.plot(stations, values, "o", color="tab:red", label="study 6: control points")
+    ax_ei.set_yscale("log")
+    ax_ei.set_ylabel("EI [N m^2]")
+    ax_ra.set_ylabel("rhoA [kg/m]")
+    for ax in (ax_ei, ax_ra):
+        ax.set_xlabel("x/L [1]")
+    ax_ra.legend(*ax_ei.get_legend_handles_labels(), fontsize=8, loc="upper left")
+    speeds = ", ".join(f"{v:g}" for v in sp.speeds)
+    fig.suptitle(
+        f"Maximum mean e_A ({sp.zone.description}; {speeds} m/s), mass kept: the optima's profiles"
+    )
+    fig.tight_layout()
+    meta = provenance({"script": "design_study", "study": "smooth", "quick": quick})
+    save_figure(fig, path, meta, overwrite=True)
+    plt.close(fig)
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
     """Run the studies; returns one row per study."""
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(
+        description=__doc__.splitlines()[0],
+        epilog="Run time here: ~3-3.5 minutes in full (2-3 of them study 5); --quick ~11 s.",
+    )
     ap.add_argument("--quick", action="store_true", help="coarse, fast variant (tests)")
     ap.add_argument("--out", default="output/design_study", help="output folder")
     ap.add_argument("--overwrite", action="store_true", help="replace the output folder")
@@ -93,6 +169,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
     args = ap.parse_args(argv)
     out = Path(args.out)
     rows = []
+    results = {}
     try:
         for sub, settings, solver in studies(args.quick):
             if args.only not in (None, sub or "cor"):
@@ -107,6 +184,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
                 parameters={"script": "design_study", "study": sub or "cor", "quick": args.quick},
                 **solver,
             )
+            results[sub or "cor"] = r
             rows.append(
                 {
                     "study": sub or "cor",
@@ -117,11 +195,15 @@ def main(argv: list[str] | None = None) -> list[dict]:
                     "wall_s": time.perf_counter() - t0,
                 }
             )
+        if {"cor", "smooth"} <= set(results):
+            plot_profiles(
+                results["cor"], results["smooth"], out / "smooth" / "profiles.png", args.quick
+            )
     except InputError as exc:
         print(f"design_study: error: {exc}", file=sys.stderr)
         raise SystemExit(2) from None
     print(
-        f"{'study':<12} {'objective':<12} {'paper racket':>13} {'optimum':>10} {'gain':>9} "
+        f"{'study':<12} {'objective':<12} {'start':>13} {'optimum':>10} {'gain':>9} "
         f"{'designs':>8} {'wall [s]':>9}"
     )
     for r in rows:

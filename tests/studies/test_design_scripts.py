@@ -23,7 +23,14 @@ def load(path: Path):
 
 def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
     rows = load(SCRIPTS / "design_study.py").main(["--quick", "--out", str(tmp_path / "d")])
-    assert [r["study"] for r in rows] == ["cor", "same_specs", "ball_speed", "pareto", "shock"]
+    assert [r["study"] for r in rows] == [
+        "cor",
+        "same_specs",
+        "ball_speed",
+        "pareto",
+        "shock",
+        "smooth",
+    ]
     out = tmp_path / "d"
     data = json.loads((out / "result.json").read_text())
     assert data["objective_name"] == "cor"
@@ -41,6 +48,13 @@ def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
     shock = json.loads((out / "shock" / "result.json").read_text())
     assert shock["outputs"]["handle_shock"] > 0.0 and (out / "shock" / "pareto.png").is_file()
     assert (out / "ball_speed" / "map.png").is_file()
+    # study 6: EI(x) through 5 control points (a variable each), rhoA per segment, mass kept
+    smooth = json.loads((out / "smooth" / "result.json").read_text())
+    names = [v["name"] for v in smooth["variables"]]
+    assert names == [f"ei_{k}" for k in range(1, 6)] + [f"rhoa_{k}" for k in range(1, 5)]
+    assert smooth["problem"]["ei_stations_x_over_l"] == [0.0, 0.25, 0.5, 0.75, 1.0]
+    assert smooth["constraints"][0]["holds"] and smooth["objective"] > smooth["start_objective"]
+    assert (out / "smooth" / "profiles.png").is_file()  # studies 1 and 6 side by side
 
 
 def test_optimize_json_and_files(tmp_path, capsys):
