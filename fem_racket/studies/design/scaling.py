@@ -49,6 +49,19 @@ class ScaledProblem:
         as_array = lambda v: np.stack(v, -1) if v else np.zeros((*shape, 0))  # noqa: E731
         return as_array(ineq), as_array(eq)
 
+    def feasible(self) -> bool:
+        """Whether the last evaluated design meets every constraint to its tolerance
+        (:meth:`Constraint.satisfied`, here on the scaled values of :meth:`constraint_values`)."""
+        ineq_tol, eq_tol = [], []
+        for c in self.problem.constraints:
+            if c.low == c.high:
+                eq_tol.append(c.tolerance / c.scale)
+            else:
+                ineq_tol += [c.tolerance / c.scale] * (
+                    int(np.isfinite(c.low)) + int(np.isfinite(c.high))
+                )
+        return bool(np.all(self.ineq >= -np.array(ineq_tol)) and np.all(np.abs(self.eq) <= eq_tol))
+
     def objective_values(self, y: np.ndarray) -> np.ndarray:
         """-s f / |f(start)| (minimised; module docstring)."""
         return -self.sense * y[..., self.k_obj] / self.f_scale
