@@ -163,6 +163,8 @@ class HeldContact:
         F = Re sum_j w_j exp(mu_j (t - t_c)).
     modes : int
         Flexible modes kept (plus the pseudo-mode when any is dropped).
+    force : ndarray
+        Weights [N] of the contact force on ``lam``, F = Re sum_j w_j exp(lambda_j t).
     """
 
     speed: float
@@ -174,11 +176,20 @@ class HeldContact:
     mu: np.ndarray
     free: np.ndarray
     modes: int
+    force: np.ndarray
 
     @property
     def cor(self) -> float:
         """-v_B(t_c) / V_B0."""
         return -self.rebound_velocity / self.speed
+
+    def contact_force(self, t: np.ndarray) -> np.ndarray:
+        """Contact force F [N] at times ``t`` >= 0 [s] (zero after separation)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        out = np.zeros_like(t)
+        on = t <= self.contact_time
+        out[on] = np.real(np.exp(np.multiply.outer(t[on], self.lam)) @ self.force)
+        return out
 
     def grip_force(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Grip force on the hand F_h and its rigid part [N] at times ``t`` >= 0 [s]."""
@@ -288,4 +299,4 @@ def _contact(
     Y = W[:kept] * (Winv @ y)
     free = m_h * (p[:kept] @ Y) * mu**2
     rebound = cf.v0 - cf.impulse(tc) / mb
-    return HeldContact(float(speed), tc, rebound, cf.lam, vib, rigid, mu, free, kept)
+    return HeldContact(float(speed), tc, rebound, cf.lam, vib, rigid, mu, free, kept, cf.fvec)
