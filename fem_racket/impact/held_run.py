@@ -217,7 +217,8 @@ def held_impact(
     solver: str = "exact",
     swing: Swing | None = None,
     window: float = DEFAULT_WINDOW,
-    output_step: float | None = None,
+    output_step: float = 1e-5,
+    histories: bool = False,
     tolerance: float | None = DEFAULT_TOLERANCE,
     rtol: float = 1e-10,
     atol: float = 1e-12,
@@ -235,9 +236,11 @@ def held_impact(
         Racket and hand's rigid motion before impact; at rest when None.
     window : float
         Window T of the shock measures from the start of contact [s], > t_c.
-    output_step : float or None
-        Spacing of the histories' times [s]; None: no histories (exact only; the integrators
-        sample at 1e-5 s then).
+    output_step : float
+        Spacing of the histories' times and of the integrators' samples [s] (the integrators'
+        shock measures are to it, module docstring).
+    histories : bool
+        Keep the histories (:attr:`HeldRun.histories`).
     tolerance : float or None
         COR tolerance choosing the exact path's modes (None: every mode).
     rtol, atol
@@ -248,20 +251,20 @@ def held_impact(
     HeldRun
     """
     check_choice("solver", solver, HELD_RUN_SOLVERS)
+    if not output_step > 0.0:
+        raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
     x = check_range("position", position, 0.0, 1.0, unit="x/L")
     ball = Ball() if ball_mass is None else Ball(ball_mass)
     v_r = 0.0 if swing is None else float(swing.speed_at(x * model.mesh.length))
     closing = closing_speed(speed, v_r)
     if solver == "exact":
-        out, hist, used = _exact(
-            model, hand, x, closing, ball, kcb, zeta, tolerance, window, output_step
-        )
+        step = output_step if histories else None
+        out, hist, used = _exact(model, hand, x, closing, ball, kcb, zeta, tolerance, window, step)
     else:
-        step = 1e-5 if output_step is None else output_step
         out, hist, used = _integrated(
-            model, hand, x, speed, ball, kcb, zeta, solver, swing, window, step, rtol, atol
+            model, hand, x, speed, ball, kcb, zeta, solver, swing, window, output_step, rtol, atol
         )
-        hist = hist if output_step is not None else None
+        hist = hist if histories else None
     cor, tc, peak_force, peak_grip, rms = out
     law = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
     used = {
