@@ -117,7 +117,8 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
     if not abs(w2[1]) < RIGID * w2[2]:
         raise AccuracyError(
             "the held racket's rigid-body modes are not separated from its flexible ones "
-            f"(eigenvalues {w2[1]:.3g} and {w2[2]:.3g} rad^2/s^2); use fem_racket.simulate_held"
+            f"(eigenvalues {w2[1]:.3g} and {w2[2]:.3g} rad^2/s^2); use solver 'cvode' or 'bdf' "
+            "(fem_racket.simulate_held)"
         )
     shapes = phi[:, 2:]
     return HeldBasis(

@@ -37,6 +37,7 @@ from fem_racket.impact.held_shock import (
     grip_peak,
     vibration_rms,
 )
+from fem_racket.impact.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.validation import InputError, check_choice, check_range
@@ -45,6 +46,30 @@ __all__ = ["HELD_RUN_SOLVERS", "HeldRun", "hand_summary", "held_impact"]
 
 #: Solvers of :func:`held_impact`.
 HELD_RUN_SOLVERS = ("exact", *HELD_SOLVERS)
+#: Longest window of the shock measures [s] (the samples and the peak's grid grow with it).
+MAX_WINDOW = 1.0
+#: Most elements of a held racket: the exact path's dense eigenproblem of frame + hand (1.8 s
+#: at 200 elements; at 400 round-off mixes its rigid modes with the flexible ones).
+HELD_MAX_ELEMENTS = 200
+
+
+def _check_size(solver: str, elements: int, rtol: float, atol: float) -> None:
+    """Refuse element counts and tolerances the held racket's solvers cannot meet in time."""
+    if solver == "exact":
+        if elements > HELD_MAX_ELEMENTS:
+            raise InputError(
+                f"elements = {elements} is not allowed with a hand: at most {HELD_MAX_ELEMENTS} "
+                "(dense matrices of frame + hand)"
+            )
+        return
+    check_range("rtol", rtol, *RTOL_RANGE)
+    check_range("atol", atol, *ATOL_RANGE)
+    if elements > PHYSICAL_MAX_ELEMENTS:
+        raise InputError(
+            f"elements = {elements} is not allowed with a hand and solver {solver!r}: at most "
+            f"{PHYSICAL_MAX_ELEMENTS} (BDF on every DOF of frame + hand takes minutes beyond: "
+            "10 s at 40, 50 s at 60; use solver 'exact')"
+        )
 
 
 def hand_summary(hand: Hand) -> dict[str, Any]:
@@ -77,8 +102,8 @@ class HeldRun:
     histories : dict or None
         Column name (units in it) -> values at the output times over [0, T] (t_c is one of
         them): time, contact force, grip force and its rigid and vibration parts.
-    settings : dict
-        What the run used (:meth:`summary`'s non-result keys), the hand under ``"hand"``.
+    used : dict
+        What the run used (:meth:`settings`), the hand under ``"hand"``.
     """
 
     apparent_cor: float
@@ -135,6 +160,7 @@ def _columns(t, force, grip, rigid) -> dict[str, np.ndarray]:
 
 
 def _exact(model, hand, x, speed, ball, kcb, zeta, tolerance, window, step):
+    """The exact path: (e_A, t_c, peak F, peak F_h, RMS), histories or None, what it used."""
     c = held_contact(
         held_basis(model.fe, hand),
         position=x,
@@ -178,6 +204,7 @@ def _free_grip(model: FrameModel, hand: Hand, state: np.ndarray, s: np.ndarray) 
 
 
 def _integrated(model, hand, x, speed, ball, kcb, zeta, solver, swing, window, step, rtol, atol):
+    """The integrators' path: as :func:`_exact`, the shock measures from the samples."""
     from scipy.integrate import simpson
 
     r: HeldImpact = simulate_held(
@@ -202,7 +229,7 @@ def _integrated(model, hand, x, speed, ball, kcb, zeta, solver, swing, window, s
         np.concatenate([r.grip_force, free]),
         np.concatenate([r.grip_force_rigid, zeros]),
     )
-    return out, hist, {"modes": held_frame(model.fe, hand).K.shape[0], "rtol": rtol, "atol": atol}
+    return out, hist, {"modes": model.fe.ndof + 2, "rtol": rtol, "atol": atol}
 
 
 def held_impact(
@@ -235,7 +262,8 @@ def held_impact(
     swing : Swing, optional
         Racket and hand's rigid motion before impact; at rest when None.
     window : float
-        Window T of the shock measures from the start of contact [s], > t_c.
+        Window T of the shock measures from the start of contact [s], > t_c and at most
+        :data:`MAX_WINDOW`.
     output_step : float
         Spacing of the histories' times and of the integrators' samples [s] (the integrators'
         shock measures are to it, module docstring).
@@ -251,6 +279,8 @@ def held_impact(
     HeldRun
     """
     check_choice("solver", solver, HELD_RUN_SOLVERS)
+    _check_size(solver, model.mesh.n_elements, rtol, atol)
+    window = check_range("shock_window", window, 0.0, MAX_WINDOW, unit="s", include_low=False)
     if not output_step > 0.0:
         raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
     x = check_range("position", position, 0.0, 1.0, unit="x/L")

@@ -149,6 +149,12 @@ CLI_CASES = [
         ("window = 0.001", "exceed the contact time"),
     ),
     Case(
+        "shock-window-inf", sim("--grip", "firm", "--shock-window", "inf"), ("shock_window = inf",)
+    ),
+    Case(
+        "shock-window-long", sim("--grip", "firm", "--shock-window", "5"), ("shock_window = 5", "1")
+    ),
+    Case(
         "shock-window-without-hand",
         sim("--shock-window", "0.03"),
         ("shock_window", "without a hand"),
@@ -157,6 +163,17 @@ CLI_CASES = [
         "grip-without-stiffness-exact",
         sim("--grip-stiffness", "0"),
         ("grip stiffness = 0", "> 0", "cvode"),
+    ),
+    Case(
+        "hand-elements-exact", sim("--grip", "firm", "--elements", "500"), ("elements = 500", "200")
+    ),
+    Case(
+        "hand-elements-cvode",
+        sim("--grip", "firm", "--elements", "60", "--solver", "cvode"),
+        ("elements = 60", "at most 40", "exact"),
+    ),
+    Case(
+        "hand-rtol-zero", sim("--grip", "firm", "--solver", "cvode", "--rtol", "0"), ("rtol = 0",)
     ),
     Case("hand-with-modes", sim("--grip", "firm", "--modes", "10"), ("--modes", "with a hand")),
     Case(
