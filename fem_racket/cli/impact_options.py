@@ -131,7 +131,7 @@ HAND_OPTIONS = {
         "--hand-inertia",
         "inertia",
         "KG_M2",
-        "hand's inertia about its centre [kg m^2] (default: a uniform rod over the grip)",
+        "hand's inertia about its centre [kg m^2], a uniform rod over the grip unless given",
     ),
 }
 
@@ -150,13 +150,14 @@ def add_hand_options(parser: argparse.ArgumentParser) -> None:
         help="an illustrative loose or firm grip (assumptions, fem_racket.frame.hand); the "
         "options below change its values (default: no hand; loose when only they are given)",
     )
-    loose = GRIPS["loose"]
+    loose, firm = GRIPS["loose"], GRIPS["firm"]
     for dest, (option, name, metavar, text) in HAND_OPTIONS.items():
-        value = getattr(loose, name)
-        default = "" if value is None else f"; loose grip {value:g}"
+        a, b = getattr(loose, name), getattr(firm, name)
+        default = "the grip's" if a is None else f"the grip's: {a:g} loose, {b:g} firm"
         g.add_argument(
-            option, dest=dest, type=float, default=None, metavar=metavar, help=text + default
-        )
+            option, dest=dest, type=float, default=None, metavar=metavar,
+            help=f"{text} (default {default})",
+        )  # fmt: skip
     g.add_argument(
         "--shock-window",
         dest="hand_shock_window",
