@@ -1,18 +1,19 @@
 """One impact with any contact law: receptance, initial racket motion, histories.
 
-Builds the impact-point :class:`~fem_racket.impact.general.Receptance` of a frame, turns an
+Builds the impact-point :class:`~fem_racket.impact.receptance.Receptance` of a frame, turns an
 initial racket velocity field into modal velocities, runs the general integrator (or CVODE) and
 rebuilds the ball and frame histories at the output times. Every coordinate
-``x = [u_B, eta_rigid, eta_flex]`` obeys ``x'' + omega^2 x = b F(t)`` (``b = [-1/m_B, a]``), so
-with the integrator's piecewise-linear force each is propagated exactly over a step of length
-tau from (x0, v0) with F going linearly from F0 to F1::
+``x = [u_B, eta_rigid, eta_flex]`` obeys ``x'' + omega^2 x = b F(t)`` (``b = [-1/m_B, a]``) with
+the integrator's piecewise-cubic force (:mod:`fem_racket.impact.cubic_force`), so each is
+propagated exactly: with y = x' + i omega x, over step k (t = t_k + h s)::
 
-    x(tau) = cos(w tau) x0 + sin(w tau)/w v0 + b (F0 P0 + F1 P1)
-    P1 = (tau - sin(w tau)/w) / (w^2 tau),   P0 = (1 - cos(w tau))/w^2 - P1
-    v(tau) = -w sin(w tau) x0 + cos(w tau) v0 + b (F0 Q0 + F1 Q1)
-    Q1 = (1 - cos(w tau)) / (w^2 tau),       Q0 = sin(w tau)/w - Q1
+    y(t_k + h s) = e^{i theta s} (y_k + b h sum_r F_r sum_q c_rq conj(M_q(theta, s)))
+    (omega = 0)  x' = x'_k + b h sum_r F_r sum_q c_rq s^{q+1}/(q+1)
+                 x  = x_k + x'_k h s + b h^2 sum_r F_r sum_q c_rq s^{q+2}/((q+1)(q+2))
 
-(w = 0: P1 = tau^2/6, P0 = tau^2/3, Q1 = Q0 = tau/2).
+(theta = omega h, c_rq the step's Lagrange coefficients); the node states follow by a
+cumulative sum, y_k = e^{i theta k} (y_0 + b h sum_{j<k} e^{-i theta j} g_j). The states are then
+as accurate as the force (fourth order), which is what the energy balance of the tests checks.
 """
 
 from __future__ import annotations
@@ -24,14 +25,11 @@ import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.general import (
-    DEFAULT_BETA,
-    DEFAULT_STEPS,
-    GeneralOutcome,
-    solve_general,
-)
+from fem_racket.impact.cubic_force import ORDER, STENCILS, moments, step_stencil
+from fem_racket.impact.general import GeneralOutcome, solve_general
 from fem_racket.impact.law_cvode import solve_law_cvode
 from fem_racket.impact.receptance import Receptance
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.system import output_times
 from fem_racket.validation import InputError, check_choice, check_finite
 
@@ -40,7 +38,6 @@ __all__ = [
     "LawRun",
     "law_histories",
     "modal_velocity",
-    "propagate",
     "receptance",
     "solve_law_impact",
 ]
@@ -87,41 +84,20 @@ def modal_velocity(model: FrameModel, frame_velocity: Any, modes: int | None = N
     return arr
 
 
-def _ramp_weights(w: np.ndarray, tau: np.ndarray) -> tuple[np.ndarray, ...]:
-    """cos, sin/w, -w sin, P0, P1, Q0, Q1 of :func:`propagate` (broadcast of w and tau)."""
-    wt = w * tau
-    c, s = np.cos(wt), np.sin(wt)
-    safe_w = np.where(w > 0, w, 1.0)
-    sinc = np.where(w > 0, s / safe_w, tau)
-    small = wt < 1e-2
-    tau_s = np.where(tau > 0, tau, 1.0)
-    # (tau - sin(w tau)/w) / (w^2 tau) and (1 - cos)/w^2 with series where w tau is small
-    p1 = np.where(
-        small,
-        tau**2 / 6 - w**2 * tau**4 / 120 + w**4 * tau**6 / 5040,
-        (wt - s) / (safe_w**3 * tau_s),
-    )
-    one_minus_cos = np.where(
-        small, tau**2 / 2 - w**2 * tau**4 / 24 + w**4 * tau**6 / 720, (1 - c) / safe_w**2
-    )
-    q1 = one_minus_cos / tau_s
-    return c, sinc, -(w**2) * sinc, one_minus_cos - p1, p1, sinc - q1, q1
-
-
-def propagate(
-    omega: np.ndarray,
-    b: np.ndarray,
-    x0: np.ndarray,
-    v0: np.ndarray,
-    f0: Any,
-    f1: Any,
-    tau: Any,
-) -> tuple[np.ndarray, np.ndarray]:
-    """Exact states after ``tau`` [s] of x'' + omega^2 x = b F, F linear from f0 to f1 [N]."""
-    c, sinc, msin, p0, p1, q0, q1 = _ramp_weights(omega, tau)
-    x = c * x0 + sinc * v0 + b * (f0 * p0 + f1 * p1)
-    v = msin * x0 + c * v0 + b * (f0 * q0 + f1 * q1)
-    return x, v
+def _step_parts(omega: np.ndarray, h: float, k: np.ndarray, s: np.ndarray):
+    """Per (step k, fraction s) and coordinate: the forced parts of y (omega > 0) and of x', x
+    (omega = 0) per unit b h F_r, shape (4 nodes r, T, n), and the phase e^{i theta s}."""
+    theta = omega * h
+    M = np.conj(moments(theta[None, :], s[:, None]))  # (4, T, n)
+    q = np.arange(ORDER)[:, None, None]
+    rig_v = s[None, :, None] ** (q + 1) / (q + 1)
+    rig_x = h * s[None, :, None] ** (q + 2) / ((q + 1) * (q + 2))
+    kind = np.minimum(k, 2)  # the stencils: forward on steps 0 and 1, backward after
+    coef = STENCILS[np.array([1, 2, 0])[kind]]  # (T, 4 nodes, 4 powers)
+    py = np.einsum("trq,qtn->trn", coef, M)
+    pv = np.einsum("trq,qt->tr", coef, rig_v[:, :, 0])
+    px = np.einsum("trq,qt->tr", coef, rig_x[:, :, 0])
+    return py, pv, px, np.exp(1j * theta[None, :] * s[:, None])
 
 
 def law_histories(
@@ -136,32 +112,48 @@ def law_histories(
     """States [u_B, eta] and rates at times ``t_out`` (within contact) of case 0 of ``out``.
 
     ``omega`` and ``a``: every frame coordinate (rigid ones as 0) and its shape at the impact
-    point; the force is the integrator's piecewise-linear one, ending at the separation value.
+    point; the force is the integrator's piecewise cubic, up to the separation time.
     """
     h = float(out.step[0])
     last, frac = int(out.last[0]), float(out.fraction[0])
-    F = out.force[0, : last + 1].copy()
-    F[last] = F[last - 1] + frac * (F[last] - F[last - 1])
+    F = out.force[0, : last + 1]
     w = np.concatenate([[0.0], omega])
     b = np.concatenate([[-1.0 / ball_mass], a])
-    x = np.zeros((last + 1, w.size))
-    v = np.zeros_like(x)
-    v[0, 0] = speed
+    flex = w > 0
+    v0 = np.zeros(w.size)
+    v0[0] = speed
     if frame_velocity is not None:
-        v[0, 1:] = frame_velocity
-    taus = np.full(last, h)
-    taus[-1] = frac * h
-    for m in range(last):
-        x[m + 1], v[m + 1] = propagate(w, b, x[m], v[m], F[m], F[m + 1], taus[m])
-    grid = np.concatenate([np.arange(last) * h, [(last - 1 + frac) * h]])
-    k = np.clip(np.searchsorted(grid, t_out, side="right") - 1, 0, last - 1)
-    tau = (t_out - grid[k])[:, None]
-    span = (grid[k + 1] - grid[k])[:, None]
-    f_at = F[k][:, None] + (F[k + 1] - F[k])[:, None] * tau / span
-    xs, vs = propagate(w, b, x[k], v[k], F[k][:, None], f_at, tau)
-    exact = np.isclose(t_out, grid[-1], rtol=0.0, atol=1e-12 * h)
-    xs[exact], vs[exact] = x[-1], v[-1]
-    return xs, vs
+        v0[1:] = frame_velocity
+    # node states: one whole-step increment per step 0 .. last - 2
+    ks = np.arange(last - 1)
+    nodes = np.array([[k + o for o in step_stencil(int(k))] for k in ks]).reshape(-1, ORDER)
+    py, pv, px = _step_parts(w, h, ks, np.ones(ks.size))[:3]
+    g_y = h * np.einsum("kr,krn->kn", F[nodes], py)  # per unit b
+    g_v = h * np.einsum("kr,kr->k", F[nodes], pv)
+    g_x = h * np.einsum("kr,kr->k", F[nodes], px)
+    rot = np.exp(-1j * np.outer(np.arange(last), w * h))  # e^{-i theta j}
+    y0 = v0.astype(complex)
+    acc = np.concatenate([np.zeros((1, w.size)), np.cumsum(rot[:-1] * g_y, axis=0)])
+    y_nodes = np.conj(rot) * (y0 + b * acc)  # (last, n): nodes 0 .. last - 1
+    v_rig = v0 + b * np.concatenate([[0.0], np.cumsum(g_v)])[:, None]
+    x_rig = np.concatenate(
+        [np.zeros((1, w.size)), np.cumsum(h * v_rig[:-1] + b * g_x[:, None], axis=0)]
+    )
+    # outputs: from the node before each time, over the step's fraction
+    t_end = (last - 1 + frac) * h
+    k = np.clip(np.floor(t_out / h).astype(int), 0, last - 1)
+    s = np.clip(t_out / h - k, 0.0, 1.0)
+    py, pv, px, ph = _step_parts(w, h, k, s)
+    idx = np.array([[kk + o for o in step_stencil(int(kk))] for kk in k]).reshape(-1, ORDER)
+    Fk = F[idx]  # (T, 4)
+    y = ph * (y_nodes[k] + b * h * np.einsum("tr,trn->tn", Fk, py))
+    vr = v_rig[k] + b * h * np.sum(Fk * pv, axis=1)[:, None]
+    xr = x_rig[k] + v_rig[k] * (h * s)[:, None] + b * h * np.sum(Fk * px, axis=1)[:, None]
+    x = np.where(flex, y.imag / np.where(flex, w, 1.0), xr)
+    v = np.where(flex, y.real, vr)
+    if np.any(t_out > t_end * (1 + 1e-12)):
+        raise ValueError("output times beyond the contact")
+    return x, v
 
 
 def run_law(
@@ -172,14 +164,41 @@ def run_law(
     speed: float,
     *,
     frame_velocity: np.ndarray | None,
-    steps: int,
+    tolerance: float | None,
+    steps: int | None,
     beta: float | None,
     t_max: float | None,
 ) -> GeneralOutcome:
     """:func:`solve_general` for one impact on ``model`` (all its modes available)."""
     rec = receptance(model, position, ball_mass, None)
     fv = None if frame_velocity is None else frame_velocity[None, :]
-    return solve_general(law, rec, speed, frame_velocity=fv, steps=steps, beta=beta, t_max=t_max)
+    return solve_general(
+        law, rec, speed, frame_velocity=fv, tolerance=tolerance, steps=steps, beta=beta,
+        t_max=t_max,
+    )  # fmt: skip
+
+
+def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
+    """An ODE state at times ``t``: cubic Hermite through its nodal values and rates [m]."""
+    from fem_racket.impact.general_step import hermite_value
+
+    h, n = float(out.step[0]), int(out.last[0]) + 1
+    d, v, z = out.deflection[0, :n], out.rate[0, :n], out.state[0, :n]
+    g = h * np.asarray(law.rate(d, v, z))
+    k = np.clip(np.floor(t / h).astype(int), 0, n - 2)
+    return hermite_value(np.clip(t / h - k, 0.0, 1.0), z[k], g[k], z[k + 1], g[k + 1])
+
+
+def _memory_at(out: GeneralOutcome, t: np.ndarray, d: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """The largest deflection up to each time: the integrator's value at the node before it and
+    the maximum of the cubic Hermite interpolant of delta from that node to t [m]."""
+    from fem_racket.impact.general_step import turn_max
+
+    h, n = float(out.step[0]), int(out.last[0]) + 1
+    k = np.clip(np.floor(t / h).astype(int), 0, n - 2)
+    D, V, Z = out.deflection[0], out.rate[0], out.state[0]
+    tau = np.maximum(t - k * h, 1e-300)
+    return np.maximum.accumulate(np.maximum(Z[k], turn_max(D[k], V[k], d, v, tau)))
 
 
 @dataclass(frozen=True, eq=False)
@@ -222,13 +241,15 @@ def solve_law_impact(
     t_max: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
-    steps: int = DEFAULT_STEPS,
-    beta: float | None = DEFAULT_BETA,
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    steps: int | None = None,
+    beta: float | None = None,
 ) -> LawRun:
     """One impact of the ball at ``position`` (x/L) and ``speed`` [m/s] under ``law``.
 
     ``solver``: ``"general"`` (:func:`~fem_racket.impact.general.solve_general`, all modes
-    available, truncated by ``beta``) or ``"cvode"`` (:func:`solve_law_cvode`, all modes).
+    available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
+    given) or ``"cvode"`` (:func:`solve_law_cvode`, all modes, ``rtol``/``atol``).
     ``frame_velocity``: see :func:`modal_velocity`.
     """
     check_choice("solver", solver, LAW_SOLVERS)
@@ -250,12 +271,12 @@ def solve_law_impact(
         )
         n = tr.n
         t, y = tr.t, tr.y
-        if output_step is None:
-            t, y = t[[0, -1]], y[[0, -1]]
         d = y[:, :n] @ np.concatenate([[1.0], -a])
         v = y[:, n : 2 * n] @ np.concatenate([[1.0], -a])
         z = y[:, -1] if law.state == "ode" else np.maximum.accumulate(d)
-        peak = float(np.max(law.force(d, v, z)))
+        peak = float(np.max(law.force(d, v, z)))  # on CVODE's output grid (sampled)
+        if output_step is None:
+            t, y, z = t[[0, -1]], y[[0, -1]], z[[0, -1]]
         return LawRun(t, y[:, 0], y[:, n], y[:, 1:n], y[:, n + 1 : 2 * n], z, peak)
     out = run_law(
         law,
@@ -264,6 +285,7 @@ def solve_law_impact(
         ball_mass,
         speed,
         frame_velocity=fv,
+        tolerance=tolerance,
         steps=steps,
         beta=beta,
         t_max=t_max,
@@ -271,15 +293,9 @@ def solve_law_impact(
     tc = float(out.contact_time[0])
     t = output_times(output_step, tc)
     x, v = law_histories(out, fm.all_omega, a, ball_mass, speed, fv, t)
-    if out.coarse is not None:
-        # the end state extrapolated like the scalars (each run conserves momentum, so does this)
-        tcc = np.array([float(out.coarse.contact_time[0])])
-        xc, vc = law_histories(out.coarse, fm.all_omega, a, ball_mass, speed, fv, tcc)
-        tcf = np.array([float((out.last[0] - 1 + out.fraction[0]) * out.step[0])])
-        xf, vf = law_histories(out, fm.all_omega, a, ball_mass, speed, fv, tcf)
-        x[-1], v[-1] = (4.0 * xf[0] - xc[0]) / 3.0, (4.0 * vf[0] - vc[0]) / 3.0
-    grid = np.arange(out.state.shape[1]) * out.step[0]
-    z = np.interp(t, grid, out.state[0])
+    z = np.zeros_like(t)
     if law.state == "memory":
-        z = np.maximum(z, np.maximum.accumulate(x[:, 0] - x[:, 1:] @ a))
+        z = _memory_at(out, t, x[:, 0] - x[:, 1:] @ a, v[:, 0] - v[:, 1:] @ a)
+    elif law.state == "ode":
+        z = _state_at(law, out, t)
     return LawRun(t, x[:, 0], v[:, 0], x[:, 1:], v[:, 1:], z, float(out.peak_force[0]))

@@ -1,17 +1,28 @@
 """The frame seen from the impact point: modal receptance and the integrator's kernels.
 
-With the contact force F piecewise linear on a uniform grid of step h (first-order hold), the
-response of every free-free mode (and of the ball, a rigid "mode" of compliance 1/m_B) to a unit
-hat function centred on a grid point is a closed form. At lag l >= 1::
+The frame is linear, so with the contact force F(t) the only unknown, the deflection at the
+contact is a Volterra integral of F (free-free modal superposition)::
 
-    displacement  4 a^2 sin(omega l h) sin^2(omega h / 2) / (omega^3 h)      (rigid: l h^2)
-    velocity      4 a^2 cos(omega l h) sin^2(omega h / 2) / (omega^2 h)      (rigid: h)
+    delta(t)  = delta_free(t)  - int_0^t K(t - s) F(s) ds
+    K(tau)    = mu0 tau + sum_j a_j^2 sin(omega_j tau) / omega_j,   mu0 = 1/m_B + sum_rigid a_r^2
 
-at lag 0 only the hat's rising half has acted, (omega h - sin omega h)/(omega^3 h) and
-2 sin^2(omega h/2)/(omega^2 h) (rigid h^2/6 and h/2), and the first sample's half hat has its own
-response (angle addition below). Flexible modes above the cut-off are replaced by one residual
-pseudo-mode per case (DESIGN section 9): weight sum a^2 and static flexibility sum a^2/omega^2.
-Used by :mod:`fem_racket.impact.general`.
+(a_j: mass-normalised mode shapes at the impact point; delta_free: the ball's and the frame's
+motion without contact) and delta' likewise with K'. With F the piecewise cubic of
+:mod:`fem_racket.impact.cubic_force` on a grid of step h, the deflection at node m is a weighted
+sum of the nodal forces, exactly for every mode::
+
+    delta_m = delta_free(t_m) - sum_j W[m, j] F_j,   W[m, j] = T[m - j] + S[m, j]
+
+T is a Toeplitz table (the backward stencil everywhere, nodes before 0 taken as zero) and S the
+correction of the two starting steps (forward stencil), nonzero for j <= 3 only. The weight of
+node r of a step at lag L = m - k >= 1 (per unit a^2; rigid part per unit mu0)::
+
+    displacement   h/omega Im(e^{i theta L} G_r),   rigid h^2 sum_q c_rq (L/(q+1) - 1/(q+2))
+    velocity       h Re(e^{i theta L} G_r),         rigid h sum_q c_rq / (q+1)
+    G_r = sum_q c_rq conj(M_q(theta, 1)),           theta = omega h
+
+Modes above the cut-off of :mod:`fem_racket.impact.reduction` enter through one residual
+pseudo-mode per case. Used by :mod:`fem_racket.impact.general`.
 """
 
 from __future__ import annotations
@@ -20,7 +31,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Receptance", "free_motion", "kernels"]
+from fem_racket.impact.cubic_force import ORDER, STENCILS, lagrange, moments
+from fem_racket.impact.reduction import split_modes
+
+__all__ = ["Kernels", "Receptance", "free_motion", "kernels", "stencil_quadrature"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -55,64 +69,102 @@ class Receptance:
         return self.a.shape[1] == 0 and not np.any(self.rigid)
 
 
-def _pseudo_mode(rec: Receptance, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per-case frequency [rad/s] and weight a^2 of the pseudo-mode standing for dropped modes.
+@dataclass(frozen=True, eq=False)
+class Kernels:
+    """W[m, j] = T[m - j] + S[m, j] for displacement (d) and velocity (v), see module docstring.
 
-    Weight sum a^2 (the dropped modes' high-frequency mobility) and static flexibility
-    sum a^2 / omega^2, i.e. omega_r^2 = sum a^2 / sum (a^2 / omega^2) (DESIGN section 9).
+    Attributes
+    ----------
+    Td, Tv : ndarray, shape (C, N)
+        Toeplitz weights by lag m - j [m/N], [m/(N s)].
+    Sd, Sv : ndarray, shape (C, N, 4)
+        Starting corrections for nodes j = 0..3 at each node m.
+    kept : ndarray of int, shape (C,)
+        Flexible modes kept per case (the others: one pseudo-mode).
     """
-    dropped = rec.a[:, ~keep] ** 2
-    mob = dropped.sum(axis=1)
-    flex = np.sum(dropped / rec.omega[~keep] ** 2, axis=1)
-    wr = np.sqrt(mob / np.where(flex > 0, flex, 1.0))
-    return np.where(flex > 0, wr, rec.omega[~keep][0]), mob
+
+    Td: np.ndarray
+    Tv: np.ndarray
+    Sd: np.ndarray
+    Sv: np.ndarray
+    kept: np.ndarray
 
 
-def _hat_tables(w: np.ndarray, h: float, nsteps: int) -> tuple[np.ndarray, ...]:
-    """Per unit a^2, the kernels of modes ``w`` [rad/s], shape w.shape + (N,): Kd, Kv, Hd, Hv."""
-    lag = np.arange(nsteps) * h
-    wh = w[..., None] * h
-    half = 0.5 * wh
-    phase = w[..., None] * lag
-    sw, cw = np.sin(phase), np.cos(phase)
-    s2 = np.sin(half) ** 2
-    Kd = 4.0 * s2 / (wh * w[..., None] ** 2) * sw
-    Kv = 4.0 * s2 / (wh * w[..., None]) * cw
-    # lag 0: only the rising half of the hat has acted
-    small = wh[..., 0] < 1e-2
-    x = wh[..., 0]
-    x_minus_sin = np.where(small, x**3 / 6 - x**5 / 120 + x**7 / 5040, x - np.sin(x))
-    Kd[..., 0] = x_minus_sin / (x * w**2)
-    Kv[..., 0] = 2.0 * s2[..., 0] / (x * w)
-    # the first sample's half hat (1 - t/h on [0, h]): sin(w t - w h/2) by angle addition
-    ch, sh, sinc = np.cos(half), np.sin(half), np.sin(half) / half
-    Hd = (-cw + (cw * ch + sw * sh) * sinc) / w[..., None] ** 2
-    Hv = (sw - (sw * ch - cw * sh) * sinc) / w[..., None]
-    return Kd, Kv, Hd, Hv
+def stencil_quadrature(offsets: tuple[int, ...], s: float = 1.0) -> np.ndarray:
+    """Weights per unit h of int_0^s (step's cubic) d sigma for the nodes ``offsets``."""
+    return lagrange(offsets) @ (s ** np.arange(1, ORDER + 1) / np.arange(1, ORDER + 1))
 
 
-def kernels(
-    rec: Receptance, keep: np.ndarray, h: float, nsteps: int
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Hat-function kernels Kd, Kv (lag l) and half-hat (the t = 0 sample) Hd, Hv, shape (C, N)."""
-    cr = rec.compliance[:, None]
-    lag = np.arange(nsteps) * h
-    Kd = cr * lag * h
-    Kd[:, 0] = cr[:, 0] * h * h / 6.0
-    Kv = cr * h + 0.0 * lag
-    Kv[:, 0] = cr[:, 0] * h / 2.0
-    Hd = cr * (lag * h / 2.0 - h * h / 6.0)
-    Hv = cr * h / 2.0 + 0.0 * lag
-    out = [Kd, Kv, Hd, Hv]
-    if keep.any():
-        a2 = rec.a[:, keep] ** 2
-        for k, table in enumerate(_hat_tables(rec.omega[keep], h, nsteps)):
-            out[k] = out[k] + a2 @ table
-    if not keep.all():
-        wr, mob = _pseudo_mode(rec, keep)
-        for k, table in enumerate(_hat_tables(wr, h, nsteps)):
-            out[k] = out[k] + mob[:, None] * table
-    return out[0], out[1], out[2], out[3]
+def _tables(
+    rec: Receptance, kept: np.ndarray, w2p: np.ndarray, a2p: np.ndarray, h: float, nlag: int
+) -> tuple[np.ndarray, np.ndarray]:
+    """Weights (C, 12, nlag) of the 4 nodes of the backward and the two forward stencils
+    (in that order) at lags 0 .. nlag - 1, displacement and velocity."""
+    coef = STENCILS.reshape(3 * ORDER, ORDER)
+    lag = np.arange(nlag, dtype=float)
+    nk = int(kept.max(initial=0))
+    w = rec.omega[:nk]
+    a2 = rec.a[:, :nk] ** 2 * (np.arange(nk)[None, :] < kept[:, None])
+    # rigid part: h^2 sum_q c_q (L/(q+1) - 1/(q+2)) and h sum_q c_q/(q+1), times mu0
+    q = np.arange(ORDER)
+    c1, c2 = coef @ (1.0 / (q + 1)), coef @ (1.0 / (q + 2))
+    mu0 = rec.compliance[:, None, None]
+    Td = mu0 * (h * h * (c1[:, None] * lag - c2[:, None]))[None]
+    Tv = mu0 * np.broadcast_to(h * c1[:, None], (c1.size, nlag))[None]
+    if nk:
+        G = coef @ np.conj(moments(w * h))  # (12, nk)
+        phase = np.outer(w * h, lag)
+        cs, sn = np.cos(phase), np.sin(phase)
+        ad, av = (a2 / w)[:, None, :], a2[:, None, :]  # (C, 1, nk)
+        Td = Td + h * ((ad * G.imag) @ cs + (ad * G.real) @ sn)
+        Tv = Tv + h * ((av * G.real) @ cs - (av * G.imag) @ sn)
+    if np.any(a2p > 0):
+        wp = np.sqrt(np.where(a2p > 0, w2p, 1.0))
+        Gp = (coef @ np.conj(moments(wp * h))).T[:, :, None]  # (C, 12, 1)
+        phase = (wp * h)[:, None] * lag
+        cs, sn = np.cos(phase)[:, None, :], np.sin(phase)[:, None, :]
+        Td = Td + (h * a2p / wp)[:, None, None] * (Gp.imag * cs + Gp.real * sn)
+        Tv = Tv + (h * a2p)[:, None, None] * (Gp.real * cs - Gp.imag * sn)
+    return Td, Tv
+
+
+def kernels(rec: Receptance, omega_c: np.ndarray, beta: float, h: float, nsteps: int) -> Kernels:
+    """The weight tables of a grid of ``nsteps`` nodes of step ``h`` [s].
+
+    Flexible modes below ``beta`` x ``omega_c`` (per case [rad/s]) are kept, the others
+    replaced by one pseudo-mode (:func:`fem_racket.impact.reduction.split_modes`).
+    """
+    kept, w2p, a2p = split_modes(rec.omega, rec.a, omega_c, beta)
+    tab_d, tab_v = _tables(rec, kept, w2p, a2p, h, nsteps + 1)
+    (Td, Sd), (Tv, Sv) = _assemble(tab_d, nsteps), _assemble(tab_v, nsteps)
+    return Kernels(Td, Tv, Sd, Sv, kept)
+
+
+def _assemble(tab: np.ndarray, nsteps: int) -> tuple[np.ndarray, np.ndarray]:
+    """T (C, N) and S (C, N, 4) from the stencils' weights by lag (:func:`_tables`)."""
+    ncase = tab.shape[0]
+    D = tab[:, :ORDER].copy()  # the backward stencil's node r at lag L >= 1
+    D[:, :, 0] = 0.0
+    T = np.zeros((ncase, nsteps))
+    for r in range(ORDER):  # T[n] = sum_r D_r[n - 2 + r] (nodes before 0 count as zero)
+        shift = r - 2
+        if shift < 0:
+            T[:, -shift:] += D[:, r, : nsteps + shift]
+        else:
+            T += D[:, r, shift : nsteps + shift]
+    # starting corrections: node 0 is also the last node of a phantom step -1 (lag m + 1),
+    # and steps 0 and 1 use the forward stencil instead of the backward one
+    S = np.zeros((ncase, nsteps, ORDER))
+    S[:, :, 0] -= D[:, 3, 1:]
+    for k in (0, 1):
+        m = np.arange(k + 1, nsteps)
+        fwd = tab[:, ORDER * (k + 1) : ORDER * (k + 2)]
+        for j in range(ORDER):
+            S[:, m, j] += fwd[:, j, m - k]
+            r = j - k + 2
+            if r < ORDER:
+                S[:, m, j] -= D[:, r, m - k]
+    return T, S
 
 
 def free_motion(

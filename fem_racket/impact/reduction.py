@@ -32,8 +32,10 @@ __all__ = [
     "CALIBRATION",
     "DEFAULT_TOLERANCE",
     "check_tolerance",
+    "contact_frequency",
     "cutoff_factor",
     "pole_blocks",
+    "split_modes",
 ]
 
 #: COR tolerance used when none is given (at or below the 20-element model's own
@@ -126,14 +128,10 @@ def pole_blocks(
     n, m = omega.shape
     a2 = values * values
     w2 = omega * omega
-    kept = np.sum(omega < beta * omega_c[:, None], axis=1)
-    # Sums over the dropped tail j >= kept, from reversed cumulative sums (no cancellation).
-    tail_f = np.concatenate([np.cumsum((a2 / w2)[:, ::-1], axis=1)[:, ::-1], np.zeros((n, 1))], 1)
-    tail_m = np.concatenate([np.cumsum(a2[:, ::-1], axis=1)[:, ::-1], np.zeros((n, 1))], 1)
-    r = np.arange(n)
-    flex = tail_f[r, kept] + residual_flexibility
-    mass = tail_m[r, kept] + residual_mass
-    pseudo = (flex > 0.0) & (mass > 0.0)
+    kept, pseudo_w2, pseudo_a2 = split_modes(
+        omega, values, omega_c, beta, residual_flexibility, residual_mass
+    )
+    pseudo = pseudo_a2 > 0.0
     for size in np.unique(kept):
         for with_pseudo in (False, True):
             rows = np.flatnonzero((kept == size) & (pseudo == with_pseudo))
@@ -142,6 +140,68 @@ def pole_blocks(
             d_cols = [np.zeros((rows.size, 1)), w2[rows, :size]]
             v_cols = [mu0[rows, None], a2[rows, :size]]
             if with_pseudo:
-                d_cols.append((mass[rows] / flex[rows])[:, None])
-                v_cols.append(mass[rows, None])
+                d_cols.append(pseudo_w2[rows, None])
+                v_cols.append(pseudo_a2[rows, None])
             yield rows, np.concatenate(d_cols, axis=1), np.concatenate(v_cols, axis=1)
+
+
+def contact_frequency(contact_time: np.ndarray, exponent: np.ndarray | float = 1.0) -> np.ndarray:
+    """omega_c = sqrt(n) pi / t_c [rad/s], the frequency the cut-off beta multiplies.
+
+    For the linear spring (n = 1) this is eq 11's sqrt(K_CB mu0). For a contact law, t_c is its
+    estimated contact time on the impact point's rigid-body compliance
+    (:meth:`fem_racket.contact.law.ContactLaw.contact_time_estimate`) and n its power-law
+    exponent: near the peak a force k delta^n acts as a spring of tangent stiffness n F/delta,
+    n times its secant stiffness, so its pulse is sharper and excites modes up to sqrt(n)
+    higher (measured on the paper's racket: with pi / t_c alone a Hunt-Crossley law with
+    n = 9 needs ~3x the linear law's beta for the same COR error; ``scripts/bench_laws.py``).
+    """
+    return np.sqrt(exponent) * np.pi / np.asarray(contact_time, dtype=float)
+
+
+def split_modes(
+    omega: np.ndarray,
+    values: np.ndarray,
+    omega_c: np.ndarray,
+    beta: float,
+    residual_flexibility: np.ndarray | float = 0.0,
+    residual_mass: np.ndarray | float = 0.0,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The rule: per case, the flexible modes kept and the pseudo-mode standing for the rest.
+
+    Parameters
+    ----------
+    omega : ndarray, shape (m,) or (n, m)
+        Flexible angular frequencies, ascending [rad/s] (shared, or per case).
+    values : ndarray, shape (n, m)
+        Mass-normalised mode values at each case's impact point [1/sqrt(kg)].
+    omega_c : ndarray, shape (n,)
+        Contact angular frequency [rad/s] (:func:`contact_frequency`).
+    beta : float
+        Cut-off factor (inf: keep every mode given).
+    residual_flexibility, residual_mass : ndarray, shape (n,), or float
+        Sums of a^2/omega^2 [s^2/kg] and a^2 [1/kg] over modes not given.
+
+    Returns
+    -------
+    kept : ndarray of int, shape (n,)
+        The first ``kept`` modes of each case are kept (those below beta x omega_c).
+    pseudo_w2, pseudo_a2 : ndarray, shape (n,)
+        The pseudo-mode's omega_p^2 [rad^2/s^2] and a_p^2 [1/kg] (both 0 where nothing is
+        dropped).
+    """
+    n = values.shape[0]
+    omega = np.broadcast_to(omega, values.shape)
+    a2 = values * values
+    w2 = omega * omega
+    kept = np.sum(omega < beta * np.asarray(omega_c, dtype=float)[:, None], axis=1)
+    # Sums over the dropped tail j >= kept, from reversed cumulative sums (no cancellation).
+    zero = np.zeros((n, 1))
+    tail_f = np.concatenate([np.cumsum((a2 / w2)[:, ::-1], axis=1)[:, ::-1], zero], 1)
+    tail_m = np.concatenate([np.cumsum(a2[:, ::-1], axis=1)[:, ::-1], zero], 1)
+    r = np.arange(n)
+    flex = tail_f[r, kept] + residual_flexibility
+    mass = tail_m[r, kept] + residual_mass
+    pseudo = (flex > 0.0) & (mass > 0.0)
+    w2p = np.where(pseudo, mass / np.where(pseudo, flex, 1.0), 0.0)
+    return kept, w2p, np.where(pseudo, mass, 0.0)

@@ -247,7 +247,8 @@ class ImpactResult:
 
     def settings(self) -> dict[str, Any]:
         """What the run used, not what was asked: the solver that ran and its tolerances, the
-        flexible modes kept, K_CB and zeta (derived from the speed unless given), C_CB.
+        flexible modes kept, K_CB and zeta (derived from the speed unless given), C_CB, and the
+        racket's swing when it had one.
         JSON-ready, units in the keys; every provenance records it under ``"used"``."""
         return {
             "solver": self.solver,
@@ -262,6 +263,7 @@ class ImpactResult:
             "atol": self.atol,
             "tolerance": self.tolerance,
             **self.law_summary(),
+            **({} if self.swing is None else {"swing": self.swing.summary()}),
         }
 
     def law_summary(self) -> dict[str, Any]:

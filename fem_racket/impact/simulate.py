@@ -206,7 +206,9 @@ def simulate(
         with its default or preset parameters (:data:`fem_racket.contact.presets.LAW_NAMES`);
         None or ``"linear"``: the paper's spring-dashpot from ``kcb`` and ``zeta``. Under any
         other law (or ``solver="general"``, or a moving racket) every frame mode is available:
-        ``"general"`` keeps those below 50 x the contact frequency plus a residual pseudo-mode,
+        ``"general"`` keeps those the engine's rule keeps for the default COR tolerance (with the
+        law's contact frequency, :func:`fem_racket.impact.general.settings`) plus a residual
+        pseudo-mode,
         ``"cvode"`` all of them, so ``basis`` and ``modes`` do not apply; the law's own end
         condition replaces ``separation`` (which still applies to the linear law).
     frame_velocity : (v, omega) or array, optional

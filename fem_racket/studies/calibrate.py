@@ -251,7 +251,7 @@ def clamped_histories(
     rec = Receptance(
         np.zeros(0), np.zeros((v.size, 0)), np.zeros((v.size, 2)), np.full(v.size, ball_mass)
     )
-    out = solve_general(law, rec, v, beta=None, extrapolate=False)
+    out = solve_general(law, rec, v, beta=None)
     rows = []
     for i in range(v.size):
         n = int(out.last[i]) + 1

@@ -3,15 +3,9 @@
 import json
 
 import pytest
+from clirun import run
 
 from fem_racket import simulate
-from fem_racket.cli import main
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_simulate_json_contract(capsys):

@@ -3,16 +3,10 @@
 import json
 
 import pytest
+from clirun import run
 
 from fem_racket import simulate
-from fem_racket.cli import main
 from fem_racket.contact.presets import PRESETS, get_law
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_simulate_law_preset_json_records_the_law(capsys):

@@ -6,15 +6,10 @@ import csv
 import json
 
 import pytest
+from clirun import run
 
-from fem_racket.cli import build_parser, main
+from fem_racket.cli import build_parser
 from fem_racket.cli.common import significant
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def table(out: str) -> dict[str, str]:

@@ -5,15 +5,9 @@ import json
 import numpy as np
 import pytest
 import pyvista as pv
+from clirun import run
 
 from fem_racket import simulate
-from fem_racket.cli import main
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_export_vtk_writes_the_simulated_impact(capsys, tmp_path, standard_model):

@@ -5,18 +5,12 @@ from __future__ import annotations
 import json
 
 import pytest
+from clirun import run
 
-from fem_racket.cli import main
 from fem_racket.frame.specs import KG_CM2, racket_spec
 from fem_racket.io.mesh_files import read_mesh
 
 SPEC = ("--length", "0.685", "--mass", "0.318", "--balance", "0.32", "--swing-weight", "316")
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_fit_writes_a_mesh_with_the_specification(capsys, tmp_path):

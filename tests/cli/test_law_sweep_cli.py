@@ -5,24 +5,11 @@ from __future__ import annotations
 import json
 
 import numpy as np
-import pytest
+from clirun import run
 
-from fem_racket.cli import main
 from fem_racket.contact.presets import get_law
 from fem_racket.studies.racket_map import racket_map
 from fem_racket.studies.sweep import sweep
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
 
 
 def test_sweep_law_parameter_options_are_the_library_call(capsys, cwd):

@@ -6,26 +6,14 @@ import json
 
 import numpy as np
 import pytest
+from clirun import run
 
-from fem_racket.cli import main
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.segments import standard_frame
 from fem_racket.io.mesh_files import write_mesh
 from fem_racket.studies.racket_map import racket_map
 
 GRID = ("--positions", "0.5:1.0:21")
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
 
 
 def test_map_json_is_the_library_call_and_files_hold_the_spots(capsys, cwd):

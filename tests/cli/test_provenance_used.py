@@ -82,3 +82,16 @@ def test_cvode_run_records_its_tolerances(capsys, tmp_path):
     assert main(["simulate", "--out", str(out), *argv]) == 0
     meta = json.loads((tmp_path / "impact.csv.json").read_text())
     assert meta["used"] == used_keys(printed)
+
+
+def test_a_swing_is_recorded_as_used(capsys, tmp_path):
+    argv = [*OPTIONS, "--racket-speed", "15"]
+    printed = run_json(capsys, "simulate", "--json", *argv)
+    assert printed["swing"]["racket_angular_speed_rad_s"] == printed["racket_angular_speed_rad_s"]
+    out = tmp_path / "impact.json"
+    assert main(["simulate", "--out", str(out), *argv]) == 0
+    meta = json.loads(out.read_text())["provenance"]
+    assert meta["used"] == used_keys(printed)
+    assert meta["used"]["swing"]["racket_butt_speed_m_s"] == pytest.approx(
+        15.0
+    )  # no pivot: a translation

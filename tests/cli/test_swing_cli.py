@@ -5,16 +5,10 @@ from __future__ import annotations
 import json
 
 import pytest
+from clirun import run
 
 from fem_racket import simulate
-from fem_racket.cli import main
 from fem_racket.impact.swing import Swing
-
-
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_simulate_with_a_swing_is_the_library_call(capsys):

@@ -31,16 +31,16 @@ def rigid_support(n: int = 1, mass: float = 0.057) -> Receptance:
 @pytest.mark.parametrize(("speed", "position"), [(20.0, 0.6), (40.0, 0.9)])
 def test_linear_law_equals_exact_path(standard_model, speed, position):
     # issue 15: the linear law through the general integrator equals the exact eigen-solution
-    # to 1e-7 in COR (all modes kept, 400 + 800 steps extrapolated: measured <= 1.1e-7 ... 2e-10)
+    # to 1e-7 in COR (tolerance None: every mode, 800 steps per contact time of the fourth-order
+    # scheme; measured 5e-9, 1e-9; at 400 steps 1.3e-7: the dashpot's force rings with the modes
+    # above 1/h, which the cubic force aliases)
     ref = simulate(
         standard_model, position=position, speed=speed, output_step=None, modes=None,
         tolerance=None,
     )  # fmt: skip
     lc = LinearContact.for_speed(speed)
     law = SpringDashpot(lc.stiffness, lc.damping(0.057))
-    out = solve_general(
-        law, receptance(standard_model, position, 0.057), speed, steps=800, beta=None
-    )
+    out = solve_general(law, receptance(standard_model, position, 0.057), speed, tolerance=None)
     assert -out.ball_velocity[0] / speed == pytest.approx(ref.cor, abs=1e-7)
     assert out.contact_time[0] == pytest.approx(ref.contact_time, rel=1e-6)
 
@@ -118,12 +118,16 @@ def _energy_terms(model, law, run):
 @pytest.mark.parametrize("name", LAWS)
 @pytest.mark.parametrize("solver", ["cvode", "general"])
 def test_energy_balance_and_momentum(standard_model, name, solver):
-    # invariants (DESIGN section 6): the contact work int F delta' dt equals the loss of kinetic
-    # + strain energy, and the linear momentum of ball + frame is conserved. CVODE (rtol 1e-10,
-    # Simpson on 1 us outputs): 1e-6 relative (issue 15; measured 1e-11 ... 2e-10). The general
-    # integrator's histories are its fine run's, second order: measured 1e-4 at its defaults,
-    # 1e-5 at 1600 steps (series 7e-4 at the defaults), so 1e-3 here; its momentum is exact
-    # (one impulse drives ball and frame)
+    # invariants (DESIGN section 6): the contact work int F delta' dt (the law evaluated on the
+    # histories, Simpson on 1 us outputs) equals the loss of kinetic + strain energy to 1e-6
+    # relative (issue 15), and the linear momentum of ball + frame is conserved. CVODE (rtol
+    # 1e-10): measured 1e-11 ... 2e-10. The general integrator drives every mode exactly with
+    # its piecewise-cubic force, so the balance is the force's interpolation error, fourth order
+    # (measured on a rigid support 1e-6 at 100-200 steps). On the frame the force of a law with
+    # a jump (linear: C_CB v0 at t = 0) or a kink (hysteretic n = 1) at contact also rings with
+    # the modes above 1/h, which a cubic cannot follow: that part decays only as the step
+    # resolves them. Hence tolerance None (every mode, 800 steps).
+    # Its momentum is exact (one impulse drives ball and frame).
     law = LAWS[name]
     run = solve_law_impact(
         law,
@@ -135,27 +139,48 @@ def test_energy_balance_and_momentum(standard_model, name, solver):
         output_step=1e-6,
         rtol=1e-10,
         atol=1e-13,
+        tolerance=None,
     )
     work, loss = _energy_terms(standard_model, law, run)
-    assert work == pytest.approx(loss, rel=1e-6 if solver == "cvode" else 1e-3)
+    assert work == pytest.approx(loss, rel=1e-6)
     p = 0.057 * run.ball_velocity + run.modal_velocity[:, 0] * math.sqrt(standard_model.props.mass)
     assert p == pytest.approx(0.057 * 30.0, rel=1e-9 if solver == "cvode" else 1e-12)
 
 
 @pytest.mark.parametrize("name", LAWS)
 def test_converges_as_tolerance_tightens(standard_model, name):
-    # against CVODE (rtol 1e-11): tightening steps and the mode cut-off beta together, the COR
-    # error falls at every stage and ends below 2e-7 (measured 1e-11 ... 1.7e-7)
+    # issue 15: against CVODE (rtol 1e-11), the COR error falls as the tolerance (steps and the
+    # mode cut-off together) tightens, and each run is within its tolerance. Measured at 1e-4,
+    # 1e-5, 1e-6: Hunt-Crossley, hysteretic n = 8.9 and series fourth order, 6e-5 ... 2e-8. The
+    # hysteretic law with linear branches (n = 1) converges irregularly on the free frame
+    # (9.4e-5, 1.8e-5, 3.7e-7; 1.5e-6 at 1e-7): its force has a kink at contact and a jump in
+    # F'' at every turn of delta, which the frame's ringing repeats near the peak, and the
+    # cubic force is only second order across them; hence a factor 2 for that law
     law = LAWS[name]
     ref = _cvode_reference(standard_model, law)
     rec = receptance(standard_model, 0.75, 0.057)
+    tols = (1e-4, 1e-5, 1e-6)
     err = [
-        abs(solve_general(law, rec, 30.0, steps=s, beta=b).ball_velocity[0] - ref.ball_velocity[-1])
+        abs(solve_general(law, rec, 30.0, tolerance=t).ball_velocity[0] - ref.ball_velocity[-1])
         / 30.0
-        for s, b in ((50, 25.0), (100, 50.0), (200, 100.0), (400, None))
+        for t in tols
     ]
+    slack = 2.0 if name == "hysteretic-linear" else 1.0
     assert all(later < earlier for earlier, later in zip(err, err[1:], strict=False))
-    assert err[-1] <= 2e-7
+    assert all(e <= slack * t for e, t in zip(err, tols, strict=True))
+
+
+@pytest.mark.parametrize("name", ["hunt-crossley", "hysteretic", "hysteretic-linear"])
+def test_whole_trajectory_equals_march(standard_model, name):
+    # the same discrete equations solved node by node and all at once agree to round-off
+    from fem_racket.impact.general_march import march
+
+    law, rec = LAWS[name], receptance(standard_model, 0.75, 0.057)
+    t_est = float(np.min(law.contact_time_estimate(1.0 / rec.compliance, 30.0)))
+    args = (law, rec, np.array([30.0]), None, np.array([np.pi / t_est]), 32.0, 3 * t_est)
+    one, whole = march(*args, t_est / 80, False), march(*args, t_est / 80, True)
+    assert whole.ball_velocity[0] == pytest.approx(one.ball_velocity[0], rel=1e-11)
+    assert whole.contact_time[0] == pytest.approx(one.contact_time[0], rel=1e-11)
 
 
 def test_batch_equals_single_cases(standard_model):
@@ -189,3 +214,61 @@ def test_moving_racket_relative_speed(standard_model):
     e_a = still.cor
     assert -moving.rebound_velocity == pytest.approx(e_a * 20.0 + (1 + e_a) * v_r, rel=1e-6)
     assert still.contact_time == pytest.approx(moving.contact_time, rel=1e-6)
+
+
+@pytest.mark.parametrize("position", [0.6, 0.85])
+def test_swinging_racket_matches_cvode(standard_model, position):
+    # A swing about a hand 0.10 m from the butt, 25 m/s at 0.75 L, under the preset law: the
+    # integrator sizes its steps and modes by the closing speed (ball + racket), not the ball's
+    # (by the ball's alone: 3.7e-6 at 0.85 L; by the closing speed: 9e-8)
+    from fem_racket.impact.swing import Swing
+
+    swing = Swing.from_speed(25.0, standard_model.mesh.length, reference=0.75, pivot=0.1)
+    law = PRESETS["kawazoe-1997-nonlinear"]
+    runs = [
+        simulate(
+            standard_model, position=position, speed=20.0, law=law, swing=swing,
+            output_step=None, **options,
+        )
+        for options in ({"solver": "general"}, {"solver": "cvode", "rtol": 1e-11, "atol": 1e-13})
+    ]  # fmt: skip
+    assert runs[0].apparent_cor == pytest.approx(runs[1].apparent_cor, abs=1e-6)
+
+
+def test_kernel_weights_are_fourth_order():
+    # product integration with the piecewise-cubic force (Brunner 2004, ch. 2): the tables'
+    # weighted sum of nodal values of a smooth force equals int K(t - s) F(s) ds (scipy quad)
+    # with an error falling as h^4 (measured 1.5e-7, 9.7e-9, 6.3e-10: ratios 15.0, 15.5)
+    from scipy.integrate import quad
+
+    from fem_racket.impact.receptance import kernels
+
+    rec = Receptance(np.array([800.0, 5000.0]), np.array([[0.5, 0.8]]), np.array([[1.0, 0.3]]),
+                     np.array([0.057]))  # fmt: skip
+    c = rec.compliance[0]
+
+    def force(t):
+        return 1.0 + np.sin(700.0 * t) + 300.0 * t
+
+    def kd(tau):
+        return c * tau + np.sum(rec.a[0] ** 2 * np.sin(rec.omega * tau) / rec.omega)
+
+    def kv(tau):
+        return c + np.sum(rec.a[0] ** 2 * np.cos(rec.omega * tau))
+
+    errors = []
+    for n in (20, 40, 80):
+        h = 2e-3 / n
+        K = kernels(rec, np.array([700.0]), np.inf, h, n + 1)
+        f = force(np.arange(n + 1) * h)
+        row = []
+        for T, S, kernel in ((K.Td, K.Sd, kd), (K.Tv, K.Sv, kv)):
+            w = T[0, n::-1].copy()
+            w[:4] += S[0, n]
+            exact = quad(lambda s, k=kernel, t=n * h: k(t - s) * force(s), 0, n * h,
+                         epsabs=1e-16, epsrel=1e-13, limit=500)[0]  # fmt: skip
+            row.append(abs(w @ f / exact - 1.0))
+        errors.append(row)
+    errors = np.array(errors)
+    assert np.all(errors[:-1] / errors[1:] > 12.0)
+    assert np.all(errors[-1] < 2e-9)

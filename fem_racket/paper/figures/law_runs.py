@@ -22,6 +22,7 @@ drawn with that law instead, through the general integrator
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -31,7 +32,7 @@ from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.general import DEFAULT_BETA, solve_general
+from fem_racket.impact.general import solve_general
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.receptance import Receptance
 
@@ -82,10 +83,10 @@ def free_impacts(
         np.asarray(positions, dtype=float), np.asarray(speeds, dtype=float)
     )
     rec = receptance(model, pos.ravel(), ball_mass)
-    beta: float | None = DEFAULT_BETA
+    beta = None  # the tolerance's own cut-off; every mode kept of a truncated basis
     if flexible is not None:
         rec = replace(rec, omega=rec.omega[:flexible], a=rec.a[:, :flexible])
-        beta = None
+        beta = math.inf
     out = solve_general(law, rec, speed.ravel().copy(), beta=beta)
     cor = -out.ball_velocity / speed.ravel()
     return cor.reshape(pos.shape), out.contact_time.reshape(pos.shape)

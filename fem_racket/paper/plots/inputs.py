@@ -39,27 +39,9 @@ def ball_string(data: FigureData) -> Figure:
     h1, l1 = ax[0].get_legend_handles_labels()
     h2, l2 = tw.get_legend_handles_labels()
     ax[0].legend(h1 + h2, l1 + l2, loc="upper left", fontsize=8)
-    ax[1].plot(v, c["clamped COR [-]"], "C0-", label=f"eq 2, ζ = {data.values['zeta']:.4f}")
-    ax[1].axhline(0.83, color="k", ls=":", label="paper: 0.83 (eq 4)")
-    ax[1].set(
-        xlabel="impact speed V_B0 [m/s]",
-        ylabel="COR, clamped frame [-]",
-        ylim=(0, 1),
-        title="(b) clamped-frame COR (Fig. 3)",
-    )
-    ax[1].legend(fontsize=8)
+    _cor_panel(ax[1], v, c["clamped COR [-]"], f"eq 2, ζ = {data.values['zeta']:.4f}")
     ax[2].plot(v, c["clamped contact time [s]"] * 1e3, "k-", label="clamped frame, eq 1")
-    for i, k in enumerate(k for k in c if k.startswith("free frame")):
-        pos = k.split(" at ")[1].split(" [")[0]
-        ax[2].plot(v, c[k] * 1e3, f"C{i}--", label=f"free standard frame, {pos}")
-    ax[2].set(
-        xlabel="impact speed V_B0 [m/s]", ylabel="contact time [ms]", title="(c) contact time"
-    )
-    ax[2].legend(fontsize=8)
-    for a in ax:
-        a.grid(alpha=0.3)
-    fig.suptitle(data.title + f" (m_B = {DEFAULT_BALL_MASS} kg)")
-    return fig
+    return _finish(fig, ax, data, "free standard frame")
 
 
 def _ball_string_law(data: FigureData) -> Figure:
@@ -78,21 +60,32 @@ def _ball_string_law(data: FigureData) -> Figure:
         title="(a) equivalent ball/string stiffness (Fig. 2)",
     )
     ax[0].legend(loc="upper left", fontsize=8)
-    ax[1].plot(v, c["clamped COR [-]"], "C0-", label=data.law)
-    ax[1].axhline(0.83, color="k", ls=":", label="paper: 0.83 (eq 4)")
-    ax[1].set(
+    _cor_panel(ax[1], v, c["clamped COR [-]"], data.law)
+    ax[2].axhspan(3.0, 6.0, color="0.9", label="paper: 6-3 ms for real impacts")
+    ax[2].plot(v, c["paper clamped contact time [s]"] * 1e3, "k:", label="paper's K_CB, clamped")
+    ax[2].plot(v, c["clamped contact time [s]"] * 1e3, "k-", label=f"{data.law}, clamped")
+    return _finish(fig, ax, data, f"{data.law}, free standard frame")
+
+
+def _cor_panel(ax, v: np.ndarray, cor: np.ndarray, label: str) -> None:
+    """Panel (b): the clamped frame's COR against speed, with the paper's 0.83."""
+    ax.plot(v, cor, "C0-", label=label)
+    ax.axhline(0.83, color="k", ls=":", label="paper: 0.83 (eq 4)")
+    ax.set(
         xlabel="impact speed V_B0 [m/s]",
         ylabel="COR, clamped frame [-]",
         ylim=(0, 1),
         title="(b) clamped-frame COR (Fig. 3)",
     )
-    ax[1].legend(fontsize=8)
-    ax[2].axhspan(3.0, 6.0, color="0.9", label="paper: 6-3 ms for real impacts")
-    ax[2].plot(v, c["paper clamped contact time [s]"] * 1e3, "k:", label="paper's K_CB, clamped")
-    ax[2].plot(v, c["clamped contact time [s]"] * 1e3, "k-", label=f"{data.law}, clamped")
+    ax.legend(fontsize=8)
+
+
+def _finish(fig: Figure, ax, data: FigureData, free_label: str) -> Figure:
+    """Panel (c)'s free-frame contact times and labels, grids and the title."""
+    c = data.tables["curve"]
     for i, k in enumerate(k for k in c if k.startswith("free frame")):
         pos = k.split(" at ")[1].split(" [")[0]
-        ax[2].plot(v, c[k] * 1e3, f"C{i}--", label=f"{data.law}, free standard frame, {pos}")
+        ax[2].plot(c["speed [m/s]"], c[k] * 1e3, f"C{i}--", label=f"{free_label}, {pos}")
     ax[2].set(
         xlabel="impact speed V_B0 [m/s]", ylabel="contact time [ms]", title="(c) contact time"
     )

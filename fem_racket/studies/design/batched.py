@@ -24,7 +24,6 @@ Richardson extrapolation, |dCOR| ~ 1e-6) on the design's receptance at the impac
 
 from __future__ import annotations
 
-import logging
 from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Any
@@ -36,7 +35,7 @@ from fem_racket.contact.linear import kcb_from_speed
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.engine import modal_impacts
-from fem_racket.impact.general import DEFAULT_BETA, DEFAULT_STEPS, solve_general
+from fem_racket.impact.general import solve_general
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.swing import ball_speed_out
 from fem_racket.studies.design.problem import DesignProblem
@@ -48,16 +47,6 @@ __all__ = ["BATCHED", "evaluate_batch"]
 
 #: Objectives evaluated here (the others go design by design).
 BATCHED = frozenset({"cor", "ball_speed", "power_region"})
-#: (steps per contact time, beta) of the general integrator, tried in turn: on rare frames the
-#: law's per-step Newton iteration fails at the default step and succeeds at half of it or with
-#: every mode (measured on random designs of the paper's racket with the series law).
-RETRIES = (
-    (DEFAULT_STEPS, DEFAULT_BETA),
-    (2 * DEFAULT_STEPS, DEFAULT_BETA),
-    (2 * DEFAULT_STEPS, None),
-)
-
-log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True, eq=False)
@@ -154,14 +143,7 @@ def _law_cor(
 ) -> np.ndarray:
     """e_A of one design's cases under its (nonlinear) ``law``, by the general integrator."""
     rec = receptance(model, positions, problem.ball_mass, problem.modes)
-    for steps, beta in RETRIES[:-1]:
-        try:
-            out = solve_general(law, rec, speed, steps=steps, beta=beta)
-            return -out.ball_velocity / speed
-        except RuntimeError as err:  # a step's Newton iteration on the law failed
-            log.debug("general integrator (%d steps, beta %s): %s; retrying", steps, beta, err)
-    steps, beta = RETRIES[-1]
-    out = solve_general(law, rec, speed, steps=steps, beta=beta)
+    out = solve_general(law, rec, speed, tolerance=problem.tolerance)
     return -out.ball_velocity / speed
 
 
