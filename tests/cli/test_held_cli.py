@@ -7,8 +7,8 @@ import json
 
 import numpy as np
 import pytest
+from clirun import run as run_cli
 
-from fem_racket.cli import main
 from fem_racket.cli.text import significant
 from fem_racket.frame.hand import GRIPS, Hand
 from fem_racket.impact.held import simulate_held
@@ -19,8 +19,7 @@ from fem_racket.impact.swing import Swing
 
 
 def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
+    code, out, err = run_cli(capsys, *argv)
     assert code == 0, err
     return out
 
