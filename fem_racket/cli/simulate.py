@@ -46,6 +46,7 @@ from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held_run import HELD_RUN_SOLVERS, held_impact
 from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import simulate
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
@@ -177,10 +178,12 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
     _check_hand(args)
     model = build_model(args)
     window = DEFAULT_WINDOW if args.hand_shock_window is None else args.hand_shock_window
-    # Every mode unless --tolerance is given: the modes dropped by the COR tolerance still move
-    # the hand (the grip force), and the held racket has few DOFs.
-    given = set(getattr(args, "explicit_options", ()))
-    tolerance = (args.tolerance or None) if "tolerance" in given else None
+    # Every mode unless a --tolerance is asked: the modes dropped by the COR tolerance still
+    # move the hand (the grip force), and the held racket has few DOFs.
+    asked = args.tolerance != DEFAULT_TOLERANCE or "tolerance" in getattr(
+        args, "explicit_options", ()
+    )
+    tolerance = (args.tolerance or None) if asked else None
     result = held_impact(
         model,
         hand,
