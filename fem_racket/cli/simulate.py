@@ -8,6 +8,12 @@ the provenance (package version, every parameter, solver and tolerances, date) t
 ``--out result.csv`` writes the time histories as CSV (units in the column names) with the
 summary and the provenance in the sidecar ``result.csv.json``. Other suffixes are refused before
 the run.
+
+A hand on the grip (``--grip loose|firm`` or any hand parameter, :mod:`fem_racket.frame.hand`)
+runs the hand-held racket (:func:`fem_racket.impact.held_run.held_impact`): the exact held
+solution by default, ``--solver cvode|bdf`` the integrators; it also prints the grip force's
+peak and its vibration RMS over ``--shock-window``, and ``--out`` writes the contact and grip
+force histories over that window, the hand in the provenance's ``"used"``.
 """
 
 from __future__ import annotations
@@ -34,7 +40,13 @@ from fem_racket.cli.common import (
     swing_from_args,
     write_json,
 )
+from fem_racket.cli.impact_options import add_hand_options, hand_from_args
+from fem_racket.cli.laws import law_from_args
 from fem_racket.contact.presets import FILE_KEYS
+from fem_racket.frame.hand import Hand
+from fem_racket.impact.held_run import HELD_RUN_SOLVERS, held_impact
+from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import simulate
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
@@ -55,6 +67,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("simulate", help="simulate one ball impact on the racket")
     add_impact_options(p)
     add_swing_options(p)
+    add_hand_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON object")
     g = add_output_options(
         p,
@@ -90,9 +103,10 @@ def _histories(result) -> dict[str, Any]:
     }
 
 
-def _write(args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path]) -> None:
+def _write(
+    args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path], history
+) -> None:
     """Write --out: JSON, or CSV and its sidecar as one set (both or neither)."""
-    history = _histories(result)
     meta = impact_provenance(result, run_parameters(args))
     if len(files) == 1:
         data = {"provenance": meta, "summary": summary}
@@ -132,10 +146,120 @@ def _swing_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str,
     ]
 
 
+#: Options the hand-held racket does not take (it keeps its modes by --tolerance or all DOFs,
+#: and ends contact when the spring deflection falls to zero, the paper's criterion).
+NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
+
+
+def _check_hand(args: argparse.Namespace) -> None:
+    """Refuse, before the run, what the hand-held racket does not take."""
+    given = set(getattr(args, "explicit_options", ()))
+    for dest in NOT_WITH_HAND:
+        if dest in given:
+            raise InputError(
+                f"--{dest.replace('_', '-')} is not allowed with a hand: the held racket keeps "
+                "its modes by --tolerance (exact) or all its DOFs (cvode, bdf) and ends contact "
+                "by the spring deflection"
+            )
+    if args.solver not in HELD_RUN_SOLVERS:
+        raise InputError(
+            f"solver = {args.solver!r} is not allowed with a hand: must be one of "
+            f"{', '.join(HELD_RUN_SOLVERS)}"
+        )
+    if law_from_args(args) is not None:
+        raise InputError(
+            f"law = {args.law!r} is not allowed with a hand: the held racket takes the paper's "
+            "linear law (--kcb, --zeta)"
+        )
+
+
+def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
+    """The hand-held racket: simulate, print, write."""
+    _check_hand(args)
+    model = build_model(args)
+    window = DEFAULT_WINDOW if args.hand_shock_window is None else args.hand_shock_window
+    # Every mode unless a --tolerance is asked: the modes dropped by the COR tolerance still
+    # move the hand (the grip force), and the held racket has few DOFs.
+    asked = args.tolerance != DEFAULT_TOLERANCE or "tolerance" in getattr(
+        args, "explicit_options", ()
+    )
+    tolerance = (args.tolerance or None) if asked else None
+    result = held_impact(
+        model,
+        hand,
+        position=args.position,
+        speed=args.speed,
+        ball_mass=args.ball_mass,
+        kcb=args.kcb,
+        zeta=args.zeta,
+        solver=args.solver,
+        swing=swing_from_args(args, model.mesh.length),
+        window=window,
+        output_step=args.output_step,
+        histories=bool(args.out),
+        tolerance=tolerance,
+        rtol=args.rtol,
+        atol=args.atol,
+    )
+    summary = result.summary()
+    if args.out:
+        _write(args, result, summary, files, result.histories)
+    if args.json:
+        print_json(summary)
+        return 0
+    h = summary["hand"]
+    modes = f"{summary['modes']} modes" if args.solver == "exact" else f"{summary['modes']} DOFs"
+    rows = [
+        *_outcome_rows(summary, summary["racket_speed_at_impact_m_s"] != 0.0),
+        ("peak grip force", significant(summary["peak_grip_force_n"], 4), "N"),
+        (
+            "grip vibration RMS",
+            significant(summary["grip_vibration_rms_n"], 4),
+            f"N (over {significant(window * 1e3, 4)} ms)",
+        ),
+        ("hand", f"{h['grip']} grip", ""),
+        ("hand mass", significant(h["mass_kg"], 4), "kg"),
+        ("grip", f"{h['grip_start_m']:g}-{h['grip_end_m']:g}", "m from the butt"),
+        ("grip stiffness", significant(h["stiffness_n_m2"], 4), "N/m per m"),
+        ("grip damping", significant(h["damping_n_s_m2"], 4), "N s/m per m"),
+        ("K_CB", significant(summary["kcb_n_m"], 4), "N/m"),
+        ("zeta", significant(summary["zeta"], 3), "-"),
+        ("solver", f"{summary['solver']} (held, {summary['elements']} elements, {modes})", ""),
+    ]
+    _print(rows, files)
+    return 0
+
+
+def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str, str]]:
+    """COR, contact time, rebound speed, peak force, impact point, swing and speed."""
+    rebound = "m/s"
+    if summary["rebound_speed_m_s"] < 0:
+        rebound += " (negative: the ball keeps moving forward, COR < 0)"
+    return [
+        ("coefficient of restitution", significant(summary["cor"], 6), "-"),
+        ("contact time", significant(summary["contact_time_s"] * 1e3, 5), "ms"),
+        ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound),
+        ("peak force", significant(summary["peak_force_n"], 4), "N"),
+        ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+        *_swing_rows(summary, swinging),
+        ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),
+    ]
+
+
+def _print(rows: list[tuple[str, str, str]], files: list[Path]) -> None:
+    for name, value, unit in rows:
+        print(f"{name:<28} {value:>14} {unit}".rstrip())
+    for f in files:
+        print(f"{'written':<28} {f}")
+
+
 def run(args: argparse.Namespace) -> int:
     """Simulate and print the result (and write it with ``--out``)."""
     check_output_step(args.output_step)
+    hand = hand_from_args(args)
     files = _check_out(args) if args.out else []
+    if hand is not None:
+        return _run_held(args, hand, files)
     model = build_model(args)
     # Histories only when written: the printed summary needs t = 0 and t_c alone, which the
     # exact solver gets from the batched engine (to --tolerance in COR).
@@ -145,26 +269,14 @@ def run(args: argparse.Namespace) -> int:
     note_modes(args, model)
     summary = result.summary()
     if args.out:
-        _write(args, result, summary, files)
+        _write(args, result, summary, files, _histories(result))
     if args.json:
         print_json(summary)
         return 0
-    rebound = "m/s"
-    if summary["rebound_speed_m_s"] < 0:
-        rebound += " (negative: the ball keeps moving forward, COR < 0)"
     rows = [
-        ("coefficient of restitution", significant(summary["cor"], 6), "-"),
-        ("contact time", significant(summary["contact_time_s"] * 1e3, 5), "ms"),
-        ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound),
-        ("peak force", significant(summary["peak_force_n"], 4), "N"),
-        ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
-        *_swing_rows(summary, swing is not None),
-        ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),
+        *_outcome_rows(summary, swing is not None),
         *_law_rows(summary),
         ("solver", f"{summary['solver']} ({summary['basis']}, {summary['elements']} elements)", ""),
     ]
-    for name, value, unit in rows:
-        print(f"{name:<28} {value:>14} {unit}".rstrip())
-    for f in files:
-        print(f"{'written':<28} {f}")
+    _print(rows, files)
     return 0

@@ -24,6 +24,7 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.hand import Hand, HeldFrame, held_frame
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.integrators import get_solver
+from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.impact.system import CoupledSystem, physical_system
 from fem_racket.validation import InputError, check_choice, check_range
 
@@ -65,6 +66,10 @@ class HeldImpact:
         travel) and its rigid part [N] (module docstring).
     speed : float
         Incident ball speed [m/s].
+    racket_speed : float
+        v_r: speed of the impact point towards the ball before impact [m/s] (0 at rest).
+    state : ndarray
+        Frame + hand displacements then velocities at t_c (frame DOFs, u_h, theta_h).
     """
 
     t: np.ndarray
@@ -74,11 +79,15 @@ class HeldImpact:
     grip_force: np.ndarray
     grip_force_rigid: np.ndarray
     speed: float
+    racket_speed: float = 0.0
+    state: np.ndarray | None = None
 
     @property
     def cor(self) -> float:
-        """-v_B(t_c) / V_B0."""
-        return -float(self.ball_velocity[-1]) / self.speed
+        """The apparent COR e_A = (v_out - v_r) / (v_in + v_r), v_out = -v_B(t_c) (on a racket
+        at rest -v_B(t_c) / V_B0)."""
+        v_r = self.racket_speed
+        return (-float(self.ball_velocity[-1]) - v_r) / (self.speed + v_r)
 
     @property
     def contact_time(self) -> float:
@@ -122,8 +131,9 @@ def simulate_held(
     output_step: float = 1e-5,
     rtol: float = 1e-10,
     atol: float = 1e-12,
+    swing: Swing | None = None,
 ) -> HeldImpact:
-    """A ball striking the racket held by ``hand``, at rest before impact.
+    """A ball striking the racket held by ``hand``, at rest or swinging.
 
     Parameters
     ----------
@@ -135,6 +145,12 @@ def simulate_held(
         The integrator (the exact solver needs modal damping, which the grip is not).
     output_step : float
         Spacing of the output times [s].
+    swing : Swing, optional
+        The rigid motion of racket and hand before impact (:mod:`fem_racket.impact.swing`):
+        the integration starts from its velocity field (the hand moving with the handle), the
+        ball at ``speed``; K_CB follows the closing speed unless given. The grip layer is not
+        stretched by a rigid motion, so the grip force is that of the racket at rest struck at
+        the closing speed.
 
     Returns
     -------
@@ -143,13 +159,14 @@ def simulate_held(
     check_choice("solver", solver, HELD_SOLVERS)
     pos = check_range("position", position, 0.0, 1.0, unit="x/L")
     ball = Ball() if ball_mass is None else Ball(ball_mass)
-    law = LinearContact.for_speed(speed, kcb=kcb, zeta=zeta)
+    x_i = pos * model.mesh.length
+    v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
+    law = LinearContact.for_speed(closing_speed(speed, v_r), kcb=kcb, zeta=zeta)
     if not output_step > 0.0:
         raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
     import scipy.sparse as sp
 
     held = held_frame(model.fe, hand)
-    x_i = pos * model.mesh.length
     g = np.concatenate([model.fe.point_vector(x_i), [0.0, 0.0]])
     ccb = law.damping(ball.mass)
     props = model.props
@@ -158,6 +175,10 @@ def simulate_held(
         sp.csr_matrix(held.K), sp.csr_matrix(held.M), g, ball.mass, law.stiffness, ccb, speed, rc
     )
     fields = {f: getattr(base, f) for f in base.__dataclass_fields__}
+    if swing is not None:  # the swing's rigid field, the hand moving with the handle
+        hand_speed = float(swing.speed_at(hand.centre))
+        frame = model.fe.rigid_motion(-swing.velocity, -swing.omega)
+        fields["frame_velocity0"] = np.concatenate([frame, [-hand_speed, -swing.omega]])
     system = _HeldSystem(**fields, grip_damping=held.C)
     traj = get_solver(solver)(
         system, separation="displacement", output_step=output_step, rtol=rtol, atol=atol
@@ -168,4 +189,7 @@ def simulate_held(
     f_hand = -(hand.stiffness * (x @ row) + hand.damping * (v @ row))
     force = law.stiffness * (traj.x @ system.h) + ccb * (traj.v @ system.h)
     rigid = _rigid_factor(model, held, x_i) * force
-    return HeldImpact(traj.t, traj.v[:, 0], v[:, held.n_frame], force, f_hand, rigid, speed)
+    state = np.concatenate([x[-1], v[-1]])
+    return HeldImpact(
+        traj.t, traj.v[:, 0], v[:, held.n_frame], force, f_hand, rigid, speed, v_r, state
+    )

@@ -106,7 +106,7 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
     if not hand.stiffness > 0.0:
         raise InputError(
             f"grip stiffness = {hand.stiffness!r} N/m^2 is not allowed with the modal held "
-            "solver: must be > 0 (use fem_racket.simulate_held)"
+            "solver: must be > 0 (use solver 'cvode' or 'bdf': fem_racket.simulate_held)"
         )
     import scipy.linalg as sla  # here, not at import: the CLI's --help stays without scipy
 
@@ -117,7 +117,8 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
     if not abs(w2[1]) < RIGID * w2[2]:
         raise AccuracyError(
             "the held racket's rigid-body modes are not separated from its flexible ones "
-            f"(eigenvalues {w2[1]:.3g} and {w2[2]:.3g} rad^2/s^2); use fem_racket.simulate_held"
+            f"(eigenvalues {w2[1]:.3g} and {w2[2]:.3g} rad^2/s^2); use solver 'cvode' or 'bdf' "
+            "(fem_racket.simulate_held)"
         )
     shapes = phi[:, 2:]
     return HeldBasis(
@@ -163,6 +164,8 @@ class HeldContact:
         F = Re sum_j w_j exp(mu_j (t - t_c)).
     modes : int
         Flexible modes kept (plus the pseudo-mode when any is dropped).
+    force : ndarray
+        Weights [N] of the contact force on ``lam``, F = Re sum_j w_j exp(lambda_j t).
     """
 
     speed: float
@@ -174,11 +177,20 @@ class HeldContact:
     mu: np.ndarray
     free: np.ndarray
     modes: int
+    force: np.ndarray
 
     @property
     def cor(self) -> float:
         """-v_B(t_c) / V_B0."""
         return -self.rebound_velocity / self.speed
+
+    def contact_force(self, t: np.ndarray) -> np.ndarray:
+        """Contact force F [N] at times ``t`` >= 0 [s] (zero after separation)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        out = np.zeros_like(t)
+        on = t <= self.contact_time
+        out[on] = np.real(np.exp(np.multiply.outer(t[on], self.lam)) @ self.force)
+        return out
 
     def grip_force(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Grip force on the hand F_h and its rigid part [N] at times ``t`` >= 0 [s]."""
@@ -288,4 +300,4 @@ def _contact(
     Y = W[:kept] * (Winv @ y)
     free = m_h * (p[:kept] @ Y) * mu**2
     rebound = cf.v0 - cf.impulse(tc) / mb
-    return HeldContact(float(speed), tc, rebound, cf.lam, vib, rigid, mu, free, kept)
+    return HeldContact(float(speed), tc, rebound, cf.lam, vib, rigid, mu, free, kept, cf.fvec)

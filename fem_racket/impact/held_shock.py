@@ -30,7 +30,7 @@ import numpy as np
 from fem_racket.impact.held_modal import HeldContact
 from fem_racket.validation import InputError
 
-__all__ = ["DEFAULT_WINDOW", "grip_peak", "vibration_energy", "vibration_rms"]
+__all__ = ["DEFAULT_WINDOW", "contact_peak", "grip_peak", "vibration_energy", "vibration_rms"]
 
 #: Window of the shock measures from the start of contact [s] (assumption, module docstring).
 DEFAULT_WINDOW = 0.05
@@ -96,3 +96,8 @@ def grip_peak(c: HeldContact, window: float | None = DEFAULT_WINDOW) -> float:
         t = _check_window(c, window)
         peak = max(peak, _peak(c.mu, c.free, t - c.contact_time, step))
     return peak
+
+
+def contact_peak(c: HeldContact) -> float:
+    """Largest contact force |F| [N] during the contact."""
+    return _peak(c.lam, c.force, c.contact_time, c.contact_time / GRID)

@@ -51,6 +51,18 @@ reference_x_over_l = 0.75    # ... this point x/L (the string centre)
 # pivot_m = 0.08             # the racket turns about this point [m from the butt]
 #                            # (default: it translates); simulate, sweep and map
 
+# [hand]
+# Any key here holds the racket in a hand on its grip (simulate; fem_racket.frame.hand): a
+# rigid hand joined to the handle by a spring-dashpot layer. The values are assumptions.
+# grip = "loose"             # "loose" or "firm": illustrative presets the keys below change
+# mass_kg = 0.45             # hand mass m_h [kg] (anthropometric 0.4-0.5 kg)
+# grip_start_m = 0.02        # the grip from the butt [m] ...
+# grip_end_m = 0.12          # ... to here, within the frame
+# stiffness_n_m2 = 1e5       # grip layer stiffness k' [N/m per m of handle] (firm: 3e5)
+# damping_n_s_m2 = 100.0     # grip layer damping c' [N s/m per m of handle] (firm: 1000)
+# inertia_kg_m2 = 0.000375   # hand inertia about its centre (default: a rod over the grip)
+# shock_window_s = 0.05      # window of the grip force's peak and vibration RMS [s]
+
 [solver]
 name = "exact"               # "exact" (closed form), "cvode" or "bdf"
 separation = "displacement"  # end of contact: "displacement" (the paper's) or "force"

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS, LAW_NAMES
+from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.simulate import BASES
@@ -171,6 +172,20 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         ),
         "reference_x_over_l": Key(_interval(0.0, 1.0), "reference", "racket speed's point x/L"),
         "pivot_m": Key(_number("m", check_finite), "pivot", "pivot of the swing from the butt"),
+    },
+    "hand": {  # any key holds the racket in a hand (simulate)
+        "grip": Key(_choice(tuple(GRIPS)), "hand_grip", "loose or firm grip (illustrative)"),
+        "mass_kg": Key(_positive("kg"), "hand_mass", "hand mass m_h"),
+        "grip_start_m": Key(_interval(0.0, math.inf), "grip_start", "grip start from the butt"),
+        "grip_end_m": Key(_positive("m"), "grip_end", "grip end from the butt"),
+        "stiffness_n_m2": Key(
+            _interval(0.0, math.inf), "grip_stiffness", "grip layer stiffness [N/m per m]"
+        ),
+        "damping_n_s_m2": Key(
+            _interval(0.0, math.inf), "grip_damping", "grip layer damping [N s/m per m]"
+        ),
+        "inertia_kg_m2": Key(_positive("kg m^2"), "hand_inertia", "hand inertia about its centre"),
+        "shock_window_s": Key(_positive("s"), "hand_shock_window", "window of the shock measures"),
     },
     "solver": {
         "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),

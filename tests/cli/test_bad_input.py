@@ -127,6 +127,70 @@ CLI_CASES = [
     ),
     Case("output-step-zero", sim("--output-step", "0"), ("output_step = 0.0 s", "> 0")),
     Case("output-step-nan", sim("--output-step", "nan"), ("output_step = nan", "finite")),
+    # A hand on the grip (fem_racket.frame.hand; the standard frame is 0.68 m long).
+    Case("grip-unknown", sim("--grip", "tight"), ("--grip", "choose from", "loose", "firm")),
+    Case("grip-stiffness-negative", sim("--grip-stiffness", "-1"), ("grip stiffness = -1", ">= 0")),
+    Case(
+        "grip-damping-nan",
+        sim("--grip", "firm", "--grip-damping", "nan"),
+        ("grip damping", "finite"),
+    ),
+    Case("grip-end-beyond-frame", sim("--grip-end", "0.9"), ("grip_end = 0.9", "beyond the frame")),
+    Case(
+        "grip-start-after-end",
+        sim("--grip-start", "0.2", "--grip-end", "0.1"),
+        ("grip = (0.2, 0.1)", "grip_start < grip_end"),
+    ),
+    Case("hand-mass-zero", sim("--hand-mass", "0"), ("hand mass = 0", "> 0")),
+    Case("hand-inertia-negative", sim("--hand-inertia", "-0.0001"), ("hand inertia", "> 0")),
+    Case(
+        "shock-window-shorter-than-contact",
+        sim("--grip", "firm", "--shock-window", "0.001"),
+        ("window = 0.001", "exceed the contact time"),
+    ),
+    Case(
+        "shock-window-inf", sim("--grip", "firm", "--shock-window", "inf"), ("shock_window = inf",)
+    ),
+    Case(
+        "shock-window-long", sim("--grip", "firm", "--shock-window", "5"), ("shock_window = 5", "1")
+    ),
+    Case(
+        "shock-window-without-hand",
+        sim("--shock-window", "0.03"),
+        ("shock_window", "without a hand"),
+    ),
+    Case(
+        "grip-without-stiffness-exact",
+        sim("--grip-stiffness", "0"),
+        ("grip stiffness = 0", "> 0", "cvode"),
+    ),
+    Case(
+        "hand-elements-exact", sim("--grip", "firm", "--elements", "500"), ("elements = 500", "200")
+    ),
+    Case(
+        "hand-elements-cvode",
+        sim("--grip", "firm", "--elements", "60", "--solver", "cvode"),
+        ("elements = 60", "at most 40", "exact"),
+    ),
+    Case(
+        "hand-rtol-zero", sim("--grip", "firm", "--solver", "cvode", "--rtol", "0"), ("rtol = 0",)
+    ),
+    Case("hand-with-modes", sim("--grip", "firm", "--modes", "10"), ("--modes", "with a hand")),
+    Case(
+        "hand-with-separation",
+        sim("--grip", "firm", "--separation", "force"),
+        ("--separation", "with a hand"),
+    ),
+    Case(
+        "hand-with-general",
+        sim("--grip", "firm", "--solver", "general"),
+        ("solver = 'general'", "exact"),
+    ),
+    Case(
+        "hand-with-a-nonlinear-law",
+        sim("--grip", "firm", "--law", "hunt-crossley"),
+        ("law = 'hunt-crossley'", "linear"),
+    ),
     Case("modes-count-zero", ["modes", "--count", "0"], ("count = 0", ">= 1")),
     Case("modes-ei1-nan", ["modes", "--ei1", "nan"], ("ei1 = nan", "finite")),
     Case("unknown-command", ["nonsense"], ("COMMAND", "choose from")),
@@ -467,6 +531,13 @@ OUTPUT_CASES = [
 ]
 
 TOML_CASES = [
+    T("toml-hand-grip-unknown", toml('[hand]\ngrip = "tight"\n'), ("hand.grip", "loose", "firm")),
+    T(
+        "toml-hand-stiffness-negative",
+        toml("[hand]\nstiffness_n_m2 = -5\n"),
+        ("hand.stiffness_n_m2 = -5", "[0, inf]"),
+    ),
+    T("toml-hand-unknown-key", toml("[hand]\nmass = 0.4\n"), ("hand.mass", "mass_kg")),
     T(
         "toml-malformed",
         toml("[impact]\nspeed_m_s = = 30\n"),
