@@ -35,6 +35,9 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "impact.coupled": ("CoupledModes", "coupled_modes"),
     "impact.engine": ("ImpactBatch", "impacts", "modal_impacts"),
     "impact.held": ("simulate_held",),
+    "impact.held_modal": ("HeldContact", "held_contact"),
+    "impact.held_run": ("HeldRun", "held_impact"),
+    "impact.held_shock": ("grip_peak", "vibration_rms"),
     "impact.integrators": ("SOLVERS", "NoSeparationError"),
     "impact.result": ("ImpactResult",),
     "impact.rigid": (
