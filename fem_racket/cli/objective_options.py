@@ -36,19 +36,6 @@ def _bounds(text: str) -> tuple:
     return (lo, hi)
 
 
-def _bounds(text: str) -> tuple:
-    """argparse type: ``start`` or ``LOW,HIGH``."""
-    if str(text).strip() == "start":
-        return ("start",)
-    try:
-        lo, hi = (float(w) for w in str(text).split(","))
-    except ValueError:
-        raise argparse.ArgumentTypeError(
-            f"invalid range: {text!r} (give LOW,HIGH or 'start' for the starting racket's value)"
-        ) from None
-    return (lo, hi)
-
-
 def add_objective_options(parser: argparse.ArgumentParser) -> None:
     """The "objectives and constraints" option group."""
     o = parser.add_argument_group("objectives and constraints")
