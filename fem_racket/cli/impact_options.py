@@ -16,7 +16,7 @@ from fem_racket.impact.held_shock import DEFAULT_WINDOW
 from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.law_impact import LAW_SOLVERS
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.simulate import BASES
+from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import InputError, show

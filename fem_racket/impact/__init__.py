@@ -6,7 +6,8 @@ Where and how fast the ball strikes (:mod:`.setup`), the coupled ball + frame sy
 scipy BDF in :mod:`.integrators`; for any contact law the fast general integrator
 :mod:`.general` on the impact-point receptance :mod:`.receptance`, CVODE :mod:`.law_cvode`, and
 :mod:`.law_impact` for histories and an initially moving racket) and
-:func:`~fem_racket.impact.simulate.simulate` returning an
+:func:`~fem_racket.impact.simulate.simulate` (its paths: the paper's linear law in
+:mod:`.simulate_linear`, any law or a moving racket in :mod:`.simulate_law`) returning an
 :class:`~fem_racket.impact.simulate.ImpactResult`.
 
 Layer: above :mod:`fem_racket.frame` and :mod:`fem_racket.contact`; may import those two and the

@@ -4,11 +4,14 @@ The ball (point mass m_B, speed V_B0 towards the stationary frame) meets the fra
 the linear compound ball/string spring-dashpot; the coupled system (:mod:`.system`)
 is integrated until separation. The coefficient of restitution is COR = -v_B(t_c) / V_B0, the
 ratio of rebound to incident speed on a free racket (Kawazoe & Kanda 1997, section 3.2).
+
+``simulate`` checks its arguments and runs one of two paths: the paper's linear law on a racket
+at rest or swinging (:mod:`.simulate_linear`), or any other contact law, ``solver="general"`` or a
+racket moving as given (:mod:`.simulate_law`).
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import Any
 
 from fem_racket.contact.law import ContactLaw
@@ -18,125 +21,18 @@ from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.integrators import SOLVERS, check_solver_settings, get_solver
-from fem_racket.impact.law_impact import LAW_SOLVERS, solve_law_impact
-from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.law_impact import LAW_SOLVERS
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.setup import Impact
-from fem_racket.impact.single import engine_impact
-from fem_racket.impact.swing import (
-    Swing,
-    add_swing,
-    closing_speed,
-    swing_setup,
-)
-from fem_racket.impact.system import SEPARATION_EVENTS, CoupledSystem, modal_system, physical_system
+from fem_racket.impact.simulate_law import simulate_law
+from fem_racket.impact.simulate_linear import BASES, simulate_linear
+from fem_racket.impact.swing import Swing
+from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import InputError, check_choice, check_integer, check_positive, show
 
-__all__ = ["BASES", "ImpactResult", "build_system", "simulate"]
-
-BASES = ("modal", "physical")
-#: Rigid-body modes of the free frame (translation, rotation) in the modal basis.
-RIGID_MODES = 2
-#: Largest number of output times a simulation may be asked for.
-MAX_OUTPUT_TIMES = 1e6
-
-
-def _simulate_law(
-    model: FrameModel,
-    impact: Impact,
-    ball: Ball,
-    contact: LinearContact | None,
-    law: ContactLaw,
-    solver: str,
-    frame_velocity: Any,
-    output_step: float | None,
-    t_max: float | None,
-    rtol: float,
-    atol: float,
-) -> ImpactResult:
-    """An impact under ``law`` by the general integrator or CVODE (all frame modes)."""
-    if output_step is not None:
-        check_positive("output_step", output_step, "s")
-    run = solve_law_impact(
-        law,
-        model,
-        impact.position,
-        ball.mass,
-        impact.speed,
-        solver=solver,
-        frame_velocity=frame_velocity,
-        output_step=output_step,
-        t_max=t_max,
-        rtol=rtol,
-        atol=atol,
-    )
-    shapes = model.modes(None).all_shapes
-    return ImpactResult(
-        model=model,
-        impact=impact,
-        ball=ball,
-        contact=contact,
-        solver=solver,
-        separation=law.end,
-        basis="modal",
-        n_modes=shapes.shape[1] - RIGID_MODES,
-        t=run.t,
-        ball_displacement=run.ball_displacement,
-        ball_velocity=run.ball_velocity,
-        frame_displacement=run.modal_displacement @ shapes.T,
-        frame_velocity=run.modal_velocity @ shapes.T,
-        peak_force=run.peak_force,
-        law=law if contact is None else None,
-        law_state=run.state if contact is None else None,
-    )
-
-
-def build_system(
-    model: FrameModel,
-    impact: Impact,
-    ball: Ball,
-    contact: LinearContact,
-    *,
-    basis: str = "modal",
-    modes: int | None = DEFAULT_MODES,
-) -> CoupledSystem:
-    """The coupled ball + frame ODE for one impact."""
-    check_choice("basis", basis, BASES)
-    fe = model.fe
-    g = fe.point_vector(impact.position * fe.mesh.length)
-    ccb = contact.damping(ball.mass)
-    if basis == "modal":
-        fm = model.modes(modes)
-        return modal_system(
-            fm.all_omega, fm.all_shapes, g, ball.mass, contact.stiffness, ccb, impact.speed
-        )
-    props = model.props
-    d = impact.position * fe.mesh.length - props.cg
-    rc = 1.0 / props.mass + d * d / props.inertia
-    return physical_system(fe.K, fe.M, g, ball.mass, contact.stiffness, ccb, impact.speed, rc)
-
-
-def _check_output_count(
-    output_step: float, t_max: float | None, t_est: float, kcb: float | None, ball_mass: float
-) -> None:
-    """Refuse more than MAX_OUTPUT_TIMES output times, naming what makes them so many: the
-    user's t_max, else the contact itself (its eq 11 duration from K_CB and m_B)."""
-    span = 2.0 * t_est if t_max is None else t_max
-    if span / output_step <= MAX_OUTPUT_TIMES:
-        return
-    limit = f"at most {MAX_OUTPUT_TIMES:.0e} output times of output_step = {output_step!r} s"
-    if t_max is not None:
-        raise InputError(
-            f"t_max = {show(t_max)} s is not allowed: {limit}, so t_max <= "
-            f"{MAX_OUTPUT_TIMES * output_step:.3g} s (or a larger output_step)"
-        )
-    what = f"kcb = {kcb!r} N/m" if kcb is not None else f"ball_mass = {ball_mass!r} kg"
-    raise InputError(
-        f"{what} is not allowed with {limit}: the contact would last about {t_est:.3g} s "
-        "(eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none"
-    )
+__all__ = ["ImpactResult", "simulate"]
 
 
 def simulate(
@@ -252,34 +148,24 @@ def simulate(
             )
         if t_max is not None:
             check_positive("t_max", t_max, "s")
-        model = frame_model(frame, elements)
-        if swing is not None:  # the swing as the general integrator's moving racket
-            if frame_velocity is not None:
-                raise InputError("swing and frame_velocity cannot be combined: give one")
-            v_r = float(swing.speed_at(impact.position * model.mesh.length))
-            if contact_used is not None:  # the paper's K_CB at the closing speed
-                closing = closing_speed(impact.speed, v_r)
-                contact_used = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
-                law = SpringDashpot(
-                    contact_used.stiffness, contact_used.damping(ball.mass), separation
-                )
-            frame_velocity = swing.cg_motion(model.props.cg)
-        if solver == "cvode":  # the general integrator has no tolerances
-            check_solver_settings(solver, "modal", model.mesh.n_elements, rtol, atol)
-        result = _simulate_law(
-            model,
+        return simulate_law(
+            frame,
+            elements,
             impact,
             ball,
             contact_used,
             law,
-            solver,
-            frame_velocity,
-            output_step,
-            t_max,
-            rtol,
-            atol,
+            solver=solver,
+            separation=separation,
+            kcb=kcb,
+            zeta=zeta,
+            frame_velocity=frame_velocity,
+            swing=swing,
+            output_step=output_step,
+            t_max=t_max,
+            rtol=rtol,
+            atol=atol,
         )
-        return result if swing is None else replace(result, swing=swing)
     check_choice("separation", separation, SEPARATION_EVENTS)
     check_choice("basis", basis, BASES)
     if output_step is not None:
@@ -295,74 +181,21 @@ def simulate(
             f"basis = {show(basis)} is not allowed with solver 'exact': must be 'modal'"
         )
     tolerance = check_tolerance(tolerance)
-    model = frame_model(frame, elements)
-    check_solver_settings(solver, basis, model.mesh.n_elements, rtol, atol)
-    x_i = impact.position * model.mesh.length
-    v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
-    closing = closing_speed(impact.speed, v_r)
-    contact = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
-    if solver == "exact" and output_step is None:
-        traj, frame_map, kept = engine_impact(
-            model,
-            impact if swing is None else replace(impact, speed=closing),
-            ball,
-            contact,
-            separation=separation,
-            modes=modes,
-            tolerance=tolerance,
-            t_max=t_max,
-        )
-        if swing is not None:  # the stationary impact at the closing speed, plus the swing
-            traj = add_swing(traj, frame_map, model, swing, v_r)
-        return _result(
-            model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map,
-            swing=swing, tolerance=tolerance,
-        )  # fmt: skip
-    system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
-    to_lab = None
-    if swing is not None:
-        system, to_lab = swing_setup(system, model, swing, x_i, direct=solver != "exact")
-    if output_step is not None:
-        _check_output_count(output_step, t_max, system.contact_time_estimate(), kcb, ball.mass)
-    traj = get_solver(solver)(
-        system, separation=separation, output_step=output_step, t_max=t_max, rtol=rtol, atol=atol
-    )
-    if to_lab is not None:
-        traj = to_lab(traj)
-    n_modes = (system.size - 1 - RIGID_MODES) if basis == "modal" else None
-    return _result(
-        model, impact, ball, contact, solver, separation, basis, n_modes, traj, system.frame_map,
-        swing=swing, rtol=rtol, atol=atol,
-    )  # fmt: skip
-
-
-def _result(
-    model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map,
-    *, swing=None, rtol=None, atol=None, tolerance=None,
-):  # fmt: skip
-    """The :class:`ImpactResult` of a linear-law run from its trajectory in the solver's
-    coordinates (``frame_map`` takes them to the frame's Hermite DOFs, None: they are those)."""
-    if frame_map is None:
-        q, qd = traj.x[:, 1:], traj.v[:, 1:]
-    else:
-        q, qd = traj.x[:, 1:] @ frame_map.T, traj.v[:, 1:] @ frame_map.T
-    return ImpactResult(
-        model=model,
-        impact=impact,
-        ball=ball,
-        contact=contact,
+    return simulate_linear(
+        frame,
+        elements,
+        impact,
+        ball,
+        kcb=kcb,
+        zeta=zeta,
         solver=solver,
         separation=separation,
         basis=basis,
-        n_modes=n_modes,
-        t=traj.t,
-        ball_displacement=traj.x[:, 0],
-        ball_velocity=traj.v[:, 0],
-        frame_displacement=q,
-        frame_velocity=qd,
-        peak_force=traj.peak_force,
-        rtol=None if solver == "exact" else rtol,
-        atol=None if solver == "exact" else atol,
+        modes=modes,
+        output_step=output_step,
+        t_max=t_max,
+        rtol=rtol,
+        atol=atol,
         tolerance=tolerance,
         swing=swing,
     )

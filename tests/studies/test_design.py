@@ -4,9 +4,10 @@ Sobol indices of a known function, resumable history."""
 import numpy as np
 import pytest
 
-from fem_racket.studies.design.build import design_problem, paper_problem
+from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_rows, output_names
+from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.sensitivity import sobol_indices
 from fem_racket.studies.design.solvers import optimize

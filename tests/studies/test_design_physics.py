@@ -4,9 +4,10 @@ source beside the check."""
 import numpy as np
 import pytest
 
-from fem_racket.studies.design.build import design_problem, paper_problem
+from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_rows
+from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.report import racket_report
 from fem_racket.studies.design.solvers import SETTLED, optimize
 from fem_racket.studies.design.swing import SwingModel

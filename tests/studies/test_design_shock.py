@@ -8,9 +8,10 @@ from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.impact.held_modal import held_basis, held_contact
 from fem_racket.impact.held_shock import grip_peak, vibration_rms
-from fem_racket.studies.design.build import design_problem, paper_problem
+from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_design
+from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.swing import SwingModel, mass_quantities

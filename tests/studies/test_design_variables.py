@@ -15,9 +15,10 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.engine import impacts
 from fem_racket.studies.design.batched import evaluate_batch
-from fem_racket.studies.design.build import design_problem, paper_problem
+from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_design, output_names
+from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.report import design_maps
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.swing import mass_quantities

@@ -1,36 +1,20 @@
 """A racket design problem: variables with bounds, fixed quantities, impact zone, constraints.
 
-The racket is a stepped beam of fixed length L whose segments (between fixed boundaries x/L) each
-have a bending rigidity EI_k [N m^2] and mass per length rhoA_k [kg/m], plus optional masses added
-at chosen positions (strips, :mod:`fem_racket.frame.masses`). Its full parameter vector is::
-
-    p = [EI_1 .. EI_n, rhoA_1 .. rhoA_n, m_1 .. m_a, x_1 .. x_a]
-
-(x_k the added masses' centres x/L), followed by the contact law's string-bed parameters
-(:meth:`DesignProblem.law_names`): the factor on the paper's K_CB(v) for its linear law, k_s and
-k_3 for the series law. With ``ei_stations`` (``rhoa_stations``) the EI (rhoA)
-entries are instead the values of a smooth profile at those control points x/L, interpolated
-between them and averaged over each mesh cell (:mod:`.profiles`); their count is the stations'.
-
-Any subset of p is free (the design variables, each with bounds); the rest keeps the starting
-racket's values. With ``link_ei`` one variable "ei" is EI_1 and every EI_k keeps its starting ratio
-EI_k / EI_1 (the paper's Fig 13 varies EI1 with EI2 = 0.88 EI1 this way). EI variables are searched
-on a log scale. An added mass's position is a variable too (``pos_k``, bounded inside [0, 1]).
-The starting racket by default is the paper's (Kawazoe & Kanda 1997, section 2.2) sampled on the
-segments.
+The racket is a stepped beam of fixed length L split into segments, with optional added masses;
+its full parameter vector p, the design variables x (any subset of p, each with bounds) and their
+unit box are laid out in :mod:`.layout`. An added mass's position is a variable too (``pos_k``,
+bounded inside [0, 1]). The starting racket by default is the paper's (Kawazoe & Kanda 1997,
+section 2.2) sampled on the segments.
 
 Constraints bound derived quantities (:data:`QUANTITIES`): total mass, balance point, swing weight
 about 0.10 m, first free-free frequency. Objectives (:data:`OBJECTIVES`, maximised but for the
 handle shock's, minimised) average over the impact zone (:mod:`.zone`) and the ball speeds; see
-:mod:`.objectives`.
+:mod:`.objectives`. A problem's description and digest (provenance, history): :mod:`.description`.
 """
 
 from __future__ import annotations
 
-import hashlib
-import json
-from dataclasses import asdict, dataclass, field, replace
-from typing import Any
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -41,12 +25,13 @@ from fem_racket.contact.linear import (
     PAPER_CLAMPED_COR,
     zeta_from_cor,
 )
-from fem_racket.contact.series import SeriesBallString
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import Frame, Segment
 from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.studies.design.description import ProblemDescription
+from fem_racket.studies.design.layout import ParameterLayout
 from fem_racket.studies.design.profiles import INTERPOLATIONS, cell_means, check_stations
 from fem_racket.studies.design.swing import SwingModel, mass_quantities
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES, Constraint, Variable
@@ -64,7 +49,7 @@ __all__ = ["DesignProblem"]
 
 
 @dataclass(frozen=True, eq=False)
-class DesignProblem:
+class DesignProblem(ParameterLayout, ProblemDescription):
     """Everything a design study fixes, and its variables.
 
     Attributes
@@ -219,106 +204,6 @@ class DesignProblem:
         """Whether an objective needs the hand-held racket (:data:`MINIMISED`)."""
         return bool(MINIMISED & set(self.objectives))
 
-    # -- layout -----------------------------------------------------------------------------
-    @property
-    def n_segments(self) -> int:
-        """Number of design segments."""
-        return len(self.segment_lengths)
-
-    @property
-    def n_ei(self) -> int:
-        """Number of EI entries of p (control points or segments)."""
-        return len(self.ei_stations) or self.n_segments
-
-    @property
-    def n_rhoa(self) -> int:
-        """Number of rhoA entries of p (control points or segments)."""
-        return len(self.rhoa_stations) or self.n_segments
-
-    @property
-    def law_names(self) -> tuple[str, ...]:
-        """The contact law's entries at the end of p (see the module docstring)."""
-        if self.law is None:
-            return ("kcb_factor",)
-        if isinstance(self.law, SeriesBallString):
-            return ("string_stiffness", "string_cubic")
-        return ()
-
-    def law_values(self, x: np.ndarray) -> dict[str, np.ndarray]:
-        """The law entries of p for design variables ``x`` (shape (..., n_var)), by name."""
-        p = self.parameters(x)
-        k = len(self.law_names)
-        tail = p[..., p.shape[-1] - k :]
-        return {name: tail[..., j] for j, name in enumerate(self.law_names)}
-
-    def design_law(self, x: np.ndarray) -> ContactLaw | None:
-        """The contact law of one design ``x`` (1-D): the problem's law with the design's
-        string bed (series law), or None for the paper's linear law (its K_CB factor is
-        ``law_values(x)["kcb_factor"]``)."""
-        if not isinstance(self.law, SeriesBallString):
-            return self.law
-        values = self.law_values(np.asarray(x, dtype=float))
-        return replace(
-            self.law,
-            string_stiffness=float(values["string_stiffness"]),
-            string_cubic=float(values["string_cubic"]),
-        )
-
-    @property
-    def length(self) -> float:
-        """Frame length L [m]."""
-        return float(sum(self.segment_lengths))
-
-    @property
-    def names(self) -> list[str]:
-        """Variable names."""
-        return [v.name for v in self.variables]
-
-    @property
-    def n_var(self) -> int:
-        """Number of design variables."""
-        return len(self.variables)
-
-    @property
-    def lower(self) -> np.ndarray:
-        """Lower bounds [SI]."""
-        return np.array([v.low for v in self.variables])
-
-    @property
-    def upper(self) -> np.ndarray:
-        """Upper bounds [SI]."""
-        return np.array([v.high for v in self.variables])
-
-    @property
-    def x_start(self) -> np.ndarray:
-        """The starting racket's design variables, clipped into the bounds [SI]."""
-        x = self.start[[v.index for v in self.variables]]
-        return np.clip(x, self.lower, self.upper)
-
-    def to_unit(self, x: np.ndarray) -> np.ndarray:
-        """Design variables [SI], shape (..., n_var) -> unit box."""
-        x = np.asarray(x, dtype=float)
-        return np.stack([v.to_unit(x[..., k]) for k, v in enumerate(self.variables)], -1)
-
-    def from_unit(self, u: np.ndarray) -> np.ndarray:
-        """Unit box -> design variables [SI]."""
-        u = np.clip(np.asarray(u, dtype=float), 0.0, 1.0)
-        return np.stack([v.from_unit(u[..., k]) for k, v in enumerate(self.variables)], -1)
-
-    def parameters(self, x: np.ndarray) -> np.ndarray:
-        """Full parameter vector(s) p for design variables ``x`` (shape (..., n_var))."""
-        x = np.asarray(x, dtype=float)
-        p = np.broadcast_to(self.start, x.shape[:-1] + self.start.shape).copy()
-        n, r = self.n_ei, self.n_rhoa
-        for k, v in enumerate(self.variables):
-            if v.name == "ei":
-                p[..., :n] = x[..., k, None] * self.start[:n] / self.start[0]
-            elif v.name == "rhoa":
-                p[..., n : n + r] = x[..., k, None] * self.start[n : n + r] / self.start[n]
-            else:
-                p[..., v.index] = x[..., k]
-        return p
-
     def mesh(self, x: np.ndarray) -> FrameMesh:
         """The racket of design variables ``x`` (one design) as a mesh."""
         p = self.parameters(x)
@@ -340,69 +225,6 @@ class DesignProblem:
         ]
         return add_masses(FrameMesh(points, ei, ra), masses)
 
-    def stiffness(self, x: np.ndarray) -> np.ndarray:
-        """EI_1 of each design [N m^2] (priced by ``stiffness_cost``)."""
-        return self.parameters(x)[..., 0]
-
     def _i0(self) -> float:
         q = mass_quantities(self.mesh(self.x_start), self.swing.pivot)
         return float(q["inertia_pivot"])
-
-    def describe(self) -> dict[str, Any]:
-        """A JSON-able description (provenance, history files)."""
-        return {
-            "segment_lengths_m": list(self.segment_lengths),
-            "start": self.start.tolist(),
-            "variables": [
-                {"name": v.name, "low": v.low, "high": v.high, "unit": v.unit, "log": v.log}
-                for v in self.variables
-            ],
-            "mass_positions_x_over_l": list(self.mass_positions),
-            "mass_width_m": self.mass_width,
-            "zone": {
-                "description": self.zone.description,
-                "positions_x_over_l": self.zone.positions.tolist(),
-                "weights": self.zone.weights.tolist(),
-            },
-            "speeds_m_s": list(self.speeds),
-            "swing": None
-            if self.swing is None
-            else {
-                "head_speed_m_s": self.swing.head_speed,
-                "reference_x_over_l": self.swing.reference,
-                "pivot_m": self.swing.pivot,
-                "exponent": self.swing.exponent,
-                "reference_inertia_kg_m2": self.swing.reference_inertia,
-            },
-            "constraints": [
-                {"name": c.name, "low": c.low, "high": c.high, "tolerance": c.tolerance}
-                for c in self.constraints
-            ],
-            "objectives": list(self.objectives),
-            "link_ei": self.link_ei,
-            "link_rhoa": self.link_rhoa,
-            "stiffness_cost_per_n_m2": self.stiffness_cost,
-            "region_x_over_l": self.region.tolist(),
-            "power_fraction": self.power_fraction,
-            "ball_mass_kg": self.ball_mass,
-            "zeta": self.zeta,
-            "elements": self.elements,
-            "modes": "by tolerance" if self.modes is None else self.modes,
-            "tolerance": self.tolerance,
-            **(
-                {
-                    "ei_stations_x_over_l": list(self.ei_stations),
-                    "rhoa_stations_x_over_l": list(self.rhoa_stations),
-                    "interpolation": self.interpolation,
-                }
-                if self.ei_stations or self.rhoa_stations
-                else {}
-            ),
-            **({} if self.law is None else {"law": self.law.describe()}),
-        } | ({"hand": asdict(self.hand), "shock_window_s": self.shock_window} if self.shock else {})
-
-    @property
-    def digest(self) -> str:
-        """SHA-256 of :meth:`describe` (a history file belongs to one problem)."""
-        text = json.dumps(self.describe(), sort_keys=True, default=str)
-        return hashlib.sha256(text.encode()).hexdigest()

@@ -1,0 +1,54 @@
+"""Where a design study's designs run, on the command line (``optimize``, ``sensitivity``):
+--backend, --workers, --scheduler, --seed and --progress."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from fem_racket.cli.common import run_parameters
+from fem_racket.studies.executors import BACKENDS
+
+__all__ = ["add_progress_option", "add_run_options", "run_options"]
+
+
+def add_run_options(parser: argparse.ArgumentParser) -> None:
+    """Where designs run: --backend, --workers, --scheduler, --seed."""
+    g = parser.add_argument_group("execution")
+    g.add_argument(
+        "--backend",
+        choices=BACKENDS,
+        default=None,
+        help="serial, processes or dask (default: processes for batches of 8+ designs)",
+    )
+    g.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
+    g.add_argument(
+        "--scheduler",
+        default=None,
+        metavar="ADDRESS",
+        help="Dask scheduler tcp://HOST:PORT (default none)",
+    )
+    g.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
+
+
+def add_progress_option(group: argparse._ArgumentGroup) -> None:
+    """--progress / --no-progress, in the command's output group."""
+    group.add_argument(
+        "--progress",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="progress bar on stderr (default: when stderr is a terminal)",
+    )
+
+
+def run_options(args: argparse.Namespace) -> dict[str, Any]:
+    """Keywords of the design studies from the run and progress options: backend, workers,
+    scheduler, seed, progress and the run parameters (provenance)."""
+    return {
+        "backend": args.backend,
+        "workers": args.workers,
+        "scheduler": args.scheduler,
+        "seed": args.seed,
+        "progress": args.progress,
+        "parameters": run_parameters(args),
+    }

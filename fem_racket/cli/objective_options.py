@@ -1,0 +1,101 @@
+"""The objectives and constraints of a design study on the command line (``optimize``,
+``sensitivity``): what is maximised or minimised, the handle-shock settings, and the bounds on
+mass, balance, swing weight and first frequency."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from fem_racket.cli.lists import number_list
+from fem_racket.frame.hand import GRIPS
+from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
+
+__all__ = ["CONSTRAINTS", "add_objective_options", "objectives_from_args"]
+
+#: Constraint options: dest -> (quantity, help).
+CONSTRAINTS = {
+    "mass_range": ("mass_kg", "total mass [kg]"),
+    "balance_range": ("balance_m", "balance point from the butt [m]"),
+    "swing_weight_range": ("swing_weight_kg_cm2", "swing weight about 0.10 m [kg cm^2]"),
+    "f1_range": ("f1_hz", "first free-free frequency [Hz]"),
+}
+
+
+def _bounds(text: str) -> tuple:
+    """argparse type: ``start`` or ``LOW,HIGH``."""
+    if str(text).strip() == "start":
+        return ("start",)
+    try:
+        lo, hi = (float(w) for w in str(text).split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"invalid range: {text!r} (give LOW,HIGH or 'start' for the starting racket's value)"
+        ) from None
+    return (lo, hi)
+
+
+def add_objective_options(parser: argparse.ArgumentParser) -> None:
+    """The "objectives and constraints" option group."""
+    o = parser.add_argument_group("objectives and constraints")
+    o.add_argument(
+        "--objective",
+        **number_list(str),
+        default=["cor"],
+        metavar="LIST",
+        help="comma list of "
+        + ", ".join(OBJECTIVES)
+        + " (maximised; "
+        + ", ".join(sorted(MINIMISED))
+        + " minimised) (default cor; nsga2 takes 2-3)",
+    )
+    o.add_argument(
+        "--power-fraction",
+        type=float,
+        default=0.9,
+        metavar="F",
+        help="power region: where v_out >= F * its maximum (default 0.9)",
+    )
+    o.add_argument(
+        "--stiffness-cost",
+        type=float,
+        default=0.0,
+        metavar="PER_N_M2",
+        help="subtracted from the objectives per N m^2 of EI_1 (default 0)",
+    )
+    o.add_argument(
+        "--grip",
+        choices=tuple(GRIPS),
+        default="loose",
+        help="the hand of handle_shock and peak_grip_force: an illustrative loose or firm grip "
+        "(assumptions, fem_racket.frame.hand) (default loose)",
+    )
+    o.add_argument(
+        "--shock-window",
+        type=float,
+        default=DEFAULT_WINDOW,
+        metavar="S",
+        help=f"window of the handle-shock measures from the start of contact [s] "
+        f"(default {DEFAULT_WINDOW:g})",
+    )
+    for dest, (_, text) in CONSTRAINTS.items():
+        o.add_argument(
+            "--" + dest.replace("_", "-"),
+            type=_bounds,
+            default=None,
+            metavar="LOW,HIGH",
+            help=f"{text}: LOW,HIGH or 'start' (keep the starting racket's) (default: free)",
+        )
+
+
+def objectives_from_args(args: argparse.Namespace) -> dict[str, Any]:
+    """Keywords of :func:`fem_racket.studies.design.build.design_problem` from the options."""
+    return {
+        "objectives": args.objective,
+        "constraints": {q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()},
+        "stiffness_cost": args.stiffness_cost,
+        "power_fraction": args.power_fraction,
+        "grip": args.grip,
+        "shock_window": args.shock_window,
+    }

@@ -1,0 +1,111 @@
+"""The impact zone, the ball and the player's swing of a design study on the command line
+(``optimize``, ``sensitivity``)."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from fem_racket.cli.lists import number_list
+from fem_racket.studies.design.build import ZONES
+
+__all__ = ["add_zone_options", "zone_from_args"]
+
+
+def add_zone_options(parser: argparse.ArgumentParser) -> None:
+    """The "impact zone, ball and swing" option group."""
+    z = parser.add_argument_group("impact zone, ball and swing")
+    z.add_argument(
+        "--zone",
+        choices=ZONES,
+        default="uniform",
+        help="uniform over --zone-range, or a Gaussian about the starting racket's "
+        "mode-1 node (Hatze 1994) (default uniform)",
+    )
+    z.add_argument(
+        "--zone-range",
+        **number_list(),
+        default=[0.6, 0.9],
+        metavar="LOW,HIGH",
+        help="uniform zone x/L (default 0.6,0.9)",
+    )
+    z.add_argument(
+        "--zone-points",
+        type=int,
+        default=20,
+        metavar="N",
+        help="impact points in the zone (default 20)",
+    )
+    z.add_argument(
+        "--zone-sigma",
+        type=float,
+        default=0.05,
+        metavar="X",
+        help="standard deviation of the node zone x/L (default 0.05)",
+    )
+    z.add_argument(
+        "--speeds",
+        **number_list(),
+        default=[20.0, 30.0, 40.0],
+        metavar="M_S",
+        help="incoming ball speeds [m/s] (default 20 30 40)",
+    )
+    z.add_argument(
+        "--ball-mass",
+        type=float,
+        default=None,
+        metavar="KG",
+        help="ball mass m_B [kg] (default 0.057)",
+    )
+    z.add_argument(
+        "--zeta",
+        type=float,
+        default=None,
+        help="ball/string damping ratio (default from the clamped COR 0.83)",
+    )
+    z.add_argument(
+        "--racket-speed",
+        type=float,
+        default=None,
+        metavar="M_S",
+        help="swing: speed of the reference point towards the ball with the starting "
+        "racket [m/s]; slower for heavier swings, ~I^-0.27 (Cross & Bower 2006) "
+        "(default: a stationary racket)",
+    )
+    z.add_argument(
+        "--reference",
+        type=float,
+        default=0.75,
+        metavar="X",
+        help="reference point of --racket-speed x/L (default 0.75)",
+    )
+    z.add_argument(
+        "--pivot",
+        type=float,
+        default=0.10,
+        metavar="M",
+        help="swing pivot (hand) from the butt [m] (default 0.10)",
+    )
+    z.add_argument(
+        "--swing-exponent",
+        type=float,
+        default=-0.27,
+        help="swing speed ~ I^exponent (default -0.27; 0: same swing for any racket)",
+    )
+
+
+def zone_from_args(args: argparse.Namespace) -> dict[str, Any]:
+    """Keywords of :func:`fem_racket.studies.design.build.design_problem` from the options."""
+    return {
+        "zone": args.zone,
+        "zone_range": args.zone_range,
+        "zone_points": args.zone_points,
+        "zone_sigma": args.zone_sigma,
+        "speeds": args.speeds,
+        "racket_speed": args.racket_speed,
+        "reference": args.reference,
+        "pivot": args.pivot,
+        "swing_exponent": args.swing_exponent,
+        "ball_mass": args.ball_mass,
+        "zeta": args.zeta,
+    }
