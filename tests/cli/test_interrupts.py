@@ -16,7 +16,10 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-SWEEP = ["sweep", "--position", "0.55:0.95:20", "--ei1", "50:3000:40:log", "--quiet"]
+#: 800 cases through CVODE (~0.4 s each here): a sweep that is still running when the tests
+#: signal it (the exact engine now runs all 800 in ~0.1 s, done before a signal can land).
+SWEEP = ["sweep", "--position", "0.55:0.95:20", "--ei1", "50:3000:40:log", "--solver", "cvode",
+         "--quiet"]  # fmt: skip
 
 
 def _env() -> dict[str, str]:
@@ -73,10 +76,17 @@ def _chunks(folder: Path) -> list[Path]:
 pytestmark = pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux's /proc")
 
 
-def _interrupt_pool_sweep(tmp_path: Path, sig: int) -> subprocess.CompletedProcess:
+#: 40 of those cases: a sweep short enough to run whole, twice, in the resume test.
+SHORT_SWEEP = ["sweep", "--position", "0.6:0.9:4", "--ei1", "50:3000:10:log", "--solver",
+               "cvode", "--quiet"]  # fmt: skip
+
+
+def _interrupt_pool_sweep(
+    tmp_path: Path, sig: int, sweep: list[str] = SWEEP, total: int = 800
+) -> subprocess.CompletedProcess:
     """Start a pool sweep, interrupt it once two chunks are saved; check the one line, the
     workers gone and nothing but the checkpoint left."""
-    proc = _start([*SWEEP, "--workers", "2", "--chunk-size", "10", "--out", "s.nc"], tmp_path)
+    proc = _start([*sweep, "--workers", "2", "--chunk-size", "2", "--out", "s.nc"], tmp_path)
     ckpt = tmp_path / "s.nc.checkpoint"
     _wait_for(lambda: len(_chunks(ckpt)) >= 2 and len(_children(proc.pid)) >= 2, "workers")
     workers = _children(proc.pid)
@@ -87,10 +97,10 @@ def _interrupt_pool_sweep(tmp_path: Path, sig: int) -> subprocess.CompletedProce
     _, err = proc.communicate(timeout=60)
     assert proc.returncode == (130 if sig == signal.SIGINT else 143), err
     name = "SIGINT" if sig == signal.SIGINT else "SIGTERM"
-    held = len(_chunks(ckpt)) * 10
+    held = len(_chunks(ckpt)) * 2
     assert err == (
         f"fem-racket sweep: interrupted by {name}; no partial output is left; the checkpoint "
-        f"'s.nc.checkpoint' holds {held} of 800 cases: rerun the same command to resume\n"
+        f"'s.nc.checkpoint' holds {held} of {total} cases: rerun the same command to resume\n"
     )
     # Before: SIGTERM left both pool workers running for ever.
     _wait_for(lambda: not any(_alive(p) for p in workers), "the workers to end", 10)
@@ -106,9 +116,9 @@ def test_pool_sweep_interrupted_ends_its_workers_and_keeps_the_checkpoint(tmp_pa
 def test_interrupted_sweep_resumes_to_the_uninterrupted_result(tmp_path):
     import xarray as xr
 
-    _interrupt_pool_sweep(tmp_path, signal.SIGINT)
+    _interrupt_pool_sweep(tmp_path, signal.SIGINT, SHORT_SWEEP, 40)
     for out in ("s.nc", "whole.nc"):
-        proc = _start([*SWEEP, "--serial", "--out", out], tmp_path)
+        proc = _start([*SHORT_SWEEP, "--serial", "--out", out], tmp_path)
         _, err = proc.communicate(timeout=300)
         assert proc.returncode == 0, err
     with xr.open_dataset(tmp_path / "s.nc") as a, xr.open_dataset(tmp_path / "whole.nc") as b:
@@ -173,8 +183,8 @@ import threading, time
 import fem_racket as fr
 if __name__ == "__main__":
     threading.Thread(target=time.sleep, args=(600,), daemon=True).start()  # forkserver, not fork
-    fr.sweep(position="0.55:0.95:20", ei1="50:3000:40:log", backend="processes", workers=2,
-             chunk_size=10, progress=False)
+    fr.sweep(position="0.55:0.95:20", ei1="50:3000:40:log", solver="cvode",
+             backend="processes", workers=2, chunk_size=10, progress=False)
 """
 
 
@@ -192,7 +202,7 @@ def test_sigkill_of_a_threaded_caller_leaves_no_forkserver_worker(tmp_path):
 
 
 def test_a_second_sweep_on_the_same_output_is_refused_while_one_runs(tmp_path):
-    first = _start([*SWEEP, "--serial", "--chunk-size", "20", "--out", "s.nc"], tmp_path)
+    first = _start([*SWEEP, "--serial", "--chunk-size", "2", "--out", "s.nc"], tmp_path)
     _wait_for(lambda: len(_chunks(tmp_path / "s.nc.checkpoint")) >= 1, "a checkpoint")
     second = _start([*SWEEP, "--serial", "--out", "s.nc"], tmp_path)
     _, err = second.communicate(timeout=60)
