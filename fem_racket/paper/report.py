@@ -148,9 +148,9 @@ def render_report(
         f"- The same figures under the calibrated nonlinear ball/string law "
         f"`{NONLINEAR_PRESET}` (one parameter set for every speed instead of one K_CB per "
         f"speed), with which of conclusions (1)-(4) still hold and the contact times beside the "
-        f"paper's 6-3 ms: [{img}/{NONLINEAR_PRESET}/REPRODUCTION.md]"
-        f"({img}/{NONLINEAR_PRESET}/REPRODUCTION.md), written by `fem-racket reproduce --law "
-        f"{NONLINEAR_PRESET}`.",
+        f"paper's 6-3 ms: `fem-racket reproduce --law {NONLINEAR_PRESET}` writes them and "
+        f"their report into `{img}/{NONLINEAR_PRESET}/` (~20 s; summed up in the README, "
+        "section Ball and string models).",
         "",
     ]
     return "\n".join(lines)
