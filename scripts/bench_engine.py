@@ -7,7 +7,7 @@ Prints, on the 20-element standard racket (one BLAS thread):
   Fig 13 grid (7 impact points x 3 speeds x 60 EI1 = 1 260 impacts) and on a 126 000-impact
   grid (70 x 30 x 60; the per-case path on a random 1 % of it), with the speed-ups;
 - max |dCOR| and max relative dt_c of the engine against every mode (the engine with
-  tolerance None, itself checked against the per-case path in tests/impact/test_engine.py);
+  tolerance None, itself checked against the per-case path in tests/impact/exact/test_engine.py);
 - us per impact of the engine at 1e-6 on the Fig 13 grid at 20, 80, 320 and 1 280 elements
   (the one-off mode solve and static solves apart);
 - wall time of the command line: ``fem-racket --help``, ``fem-racket simulate --speed 20
@@ -35,7 +35,7 @@ import numpy as np  # noqa: E402
 from fem_racket import FrameModel, impacts, kcb_from_speed, standard_frame  # noqa: E402
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor  # noqa: E402
 from fem_racket.frame.segments import PAPER_EI1  # noqa: E402
-from fem_racket.impact.closed_form import exact_outcome  # noqa: E402
+from fem_racket.impact.exact.closed_form import exact_outcome  # noqa: E402
 from fem_racket.impact.system import modal_system  # noqa: E402
 
 FIG13 = (7, 3, 60)

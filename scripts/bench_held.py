@@ -1,5 +1,5 @@
 """Cost of one impact on the hand-held racket: CVODE in physical coordinates against the exact
-modal path (fem_racket.impact.held_modal), and how closely they agree.
+modal path (fem_racket.impact.held.modal), and how closely they agree.
 
 For each grip preset (loose, firm) and impact point (0.6-0.9 L at 30 m/s) on the paper's racket
 (20 elements): fem_racket.simulate_held (CVODE, rtol 1e-10, 44 DOFs + ball), then the exact
@@ -22,9 +22,9 @@ import numpy as np
 
 from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.held import simulate_held
-from fem_racket.impact.held_modal import held_basis, held_contact
-from fem_racket.impact.held_shock import grip_peak, vibration_rms
+from fem_racket.impact.held.grip import simulate_held
+from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.shock import grip_peak, vibration_rms
 
 SPEED = 30.0
 

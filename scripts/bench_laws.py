@@ -23,7 +23,7 @@ import numpy as np
 from fem_racket import FrameModel, LinearContact
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.contact.spring_dashpot import SpringDashpot
-from fem_racket.impact.general import solve_general
+from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance, solve_law_impact
 
 

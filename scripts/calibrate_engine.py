@@ -21,8 +21,8 @@ import numpy as np
 
 from fem_racket import Frame, FrameModel, Segment
 from fem_racket.contact.linear import kcb_from_speed
-from fem_racket.impact.batch import solve_cases
-from fem_racket.impact.structure import frame_modal_data
+from fem_racket.impact.exact.batch import solve_cases
+from fem_racket.impact.point import frame_modal_data
 
 BETAS = (4.0, 6.0, 8.0, 12.0, 16.0, 24.0, 32.0, 48.0, 64.0, 96.0, 128.0, 192.0, 256.0, 384.0, 512.0)
 TOLERANCES = (1e-3, 1e-4, 1e-5, 2e-6, 1e-6, 1e-7, 1e-8)

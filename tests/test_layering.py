@@ -110,6 +110,56 @@ def test_no_import_cycle():
             visit(m)
 
 
+#: The rooms of impact/, lowest first: the base modules (the problem, the coupled system, the mode
+#: reduction, the swing, the result) at the root; the methods (closed forms, the exact solution,
+#: the general integrator) independent of each other; the ODE integrators (which take the exact
+#: solution's modal form); the hand-held racket (built on both); and at the top the dispatch
+#: (solvers, simulate, the law path), which alone chooses a method.
+IMPACT_ROOMS = {
+    "base": 0,
+    "analytic": 1,
+    "exact": 1,
+    "general": 1,
+    "ode": 2,
+    "held": 3,
+    "top": 4,
+}
+IMPACT_TOP = {"law_impact", "simulate", "simulate_law", "simulate_linear", "solvers"}
+
+
+def room(module: str) -> str:
+    """The room of a module of fem_racket.impact."""
+    pieces = module.split(".")
+    if len(pieces) < 3:
+        return "top"  # the package itself: its public names
+    if pieces[2] in IMPACT_ROOMS:
+        return pieces[2]
+    return "top" if pieces[2] in IMPACT_TOP else "base"
+
+
+IMPACT = sorted(m for m in MODULES if part(m) == "impact")
+
+
+def test_every_impact_module_has_a_room():
+    names = {m.split(".")[2] for m in IMPACT if m.count(".") >= 2}
+    pkg_rooms = {n for n in names if (PACKAGE / "impact" / n).is_dir()}
+    assert pkg_rooms <= set(IMPACT_ROOMS), f"impact/ rooms without a rank: {pkg_rooms}"
+
+
+@pytest.mark.parametrize("module", IMPACT)
+def test_impact_rooms(module):
+    here = room(module)
+    for target in GRAPH[module]:
+        if part(target) != "impact" or target not in MODULES and target.rsplit(".", 1)[0] == module:
+            continue
+        there = room(target)
+        assert IMPACT_ROOMS[there] <= IMPACT_ROOMS[here], (
+            f"{module} ({here}) imports {target} ({there}) from a higher room of impact/"
+        )
+        if there != here and IMPACT_ROOMS[there] == IMPACT_ROOMS[here] > 0:
+            pytest.fail(f"{module} imports {target}: the rooms {here} and {there} are independent")
+
+
 def test_the_layering_test_sees_an_upward_import(tmp_path):
     # The checker itself: a frame module importing from impact is found.
     bad = tmp_path / "bad.py"

@@ -12,9 +12,9 @@ from fem_racket.cli.frame_options import add_frame_options
 from fem_racket.cli.laws import add_law_options, law_from_args
 from fem_racket.frame.hand import GRIPS, Hand
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.held_shock import DEFAULT_WINDOW
-from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.impact.law_impact import LAW_SOLVERS
+from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing

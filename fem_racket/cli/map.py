@@ -23,7 +23,7 @@ from fem_racket.cli.common import (
 from fem_racket.cli.laws import add_law_options, law_from_args
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import standard_frame
-from fem_racket.impact.engine import DEFAULT_TOLERANCE
+from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
 from fem_racket.io.map_files import check_map_output, write_map

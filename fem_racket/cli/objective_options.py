@@ -9,7 +9,7 @@ from typing import Any
 
 from fem_racket.cli.lists import number_list
 from fem_racket.frame.hand import GRIPS
-from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
 
 __all__ = ["CONSTRAINTS", "add_objective_options", "objectives_from_args"]

@@ -10,7 +10,7 @@ summary and the provenance in the sidecar ``result.csv.json``. Other suffixes ar
 the run.
 
 A hand on the grip (``--grip loose|firm`` or any hand parameter, :mod:`fem_racket.frame.hand`)
-runs the hand-held racket (:func:`fem_racket.impact.held_run.held_impact`): the exact held
+runs the hand-held racket (:func:`fem_racket.impact.held.run.held_impact`): the exact held
 solution by default, ``--solver cvode|bdf`` the integrators; it also prints the grip force's
 peak and its vibration RMS over ``--shock-window``, and ``--out`` writes the contact and grip
 force histories over that window, the hand in the provenance's ``"used"``.
@@ -44,8 +44,8 @@ from fem_racket.cli.impact_options import add_hand_options, hand_from_args
 from fem_racket.cli.laws import law_from_args
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
-from fem_racket.impact.held_run import HELD_RUN_SOLVERS, held_impact
-from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
+from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import simulate
 from fem_racket.io.impact_provenance import impact_provenance

@@ -1,10 +1,11 @@
 """One impact with any contact law: receptance, initial racket motion, histories.
 
-Builds the impact-point :class:`~fem_racket.impact.receptance.Receptance` of a frame, turns an
+Builds the impact-point :class:`~fem_racket.impact.general.receptance.Receptance` of a frame, turns
+an
 initial racket velocity field into modal velocities, runs the general integrator (or CVODE) and
 rebuilds the ball and frame histories at the output times. Every coordinate
 ``x = [u_B, eta_rigid, eta_flex]`` obeys ``x'' + omega^2 x = b F(t)`` (``b = [-1/m_B, a]``) with
-the integrator's piecewise-cubic force (:mod:`fem_racket.impact.cubic_force`), so each is
+the integrator's piecewise-cubic force (:mod:`fem_racket.impact.general.cubic_force`), so each is
 propagated exactly: with y = x' + i omega x, over step k (t = t_k + h s)::
 
     y(t_k + h s) = e^{i theta s} (y_k + b h sum_r F_r sum_q c_rq conj(M_q(theta, s)))
@@ -25,10 +26,10 @@ import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.cubic_force import ORDER, STENCILS, moments, step_stencil
-from fem_racket.impact.general import GeneralOutcome, solve_general
-from fem_racket.impact.law_cvode import solve_law_cvode
-from fem_racket.impact.receptance import Receptance
+from fem_racket.impact.general.cubic_force import ORDER, STENCILS, moments, step_stencil
+from fem_racket.impact.general.integrator import GeneralOutcome, solve_general
+from fem_racket.impact.general.receptance import Receptance
+from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.system import output_times
 from fem_racket.validation import InputError, check_choice, check_finite
@@ -180,7 +181,7 @@ def run_law(
 
 def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
     """An ODE state at times ``t``: cubic Hermite through its nodal values and rates [m]."""
-    from fem_racket.impact.general_step import hermite_value
+    from fem_racket.impact.general.step import hermite_value
 
     h, n = float(out.step[0]), int(out.last[0]) + 1
     d, v, z = out.deflection[0, :n], out.rate[0, :n], out.state[0, :n]
@@ -192,7 +193,7 @@ def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray
 def _memory_at(out: GeneralOutcome, t: np.ndarray, d: np.ndarray, v: np.ndarray) -> np.ndarray:
     """The largest deflection up to each time: the integrator's value at the node before it and
     the maximum of the cubic Hermite interpolant of delta from that node to t [m]."""
-    from fem_racket.impact.general_step import turn_max
+    from fem_racket.impact.general.step import turn_max
 
     h, n = float(out.step[0]), int(out.last[0]) + 1
     k = np.clip(np.floor(t / h).astype(int), 0, n - 2)
@@ -247,7 +248,8 @@ def solve_law_impact(
 ) -> LawRun:
     """One impact of the ball at ``position`` (x/L) and ``speed`` [m/s] under ``law``.
 
-    ``solver``: ``"general"`` (:func:`~fem_racket.impact.general.solve_general`, all modes
+    ``solver``: ``"general"`` (:func:`~fem_racket.impact.general.integrator.solve_general`, all
+    modes
     available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
     given) or ``"cvode"`` (:func:`solve_law_cvode`, all modes, ``rtol``/``atol``).
     ``frame_velocity``: see :func:`modal_velocity`.

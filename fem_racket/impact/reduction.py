@@ -16,7 +16,7 @@ and damping, with a safety factor). ``tolerance=None`` (or 0) keeps every mode g
 
 Modes not given at all (a fine mesh whose higher modes were never computed) enter through
 their totals: ``residual_flexibility`` = sum of a^2/omega^2 and ``residual_mass`` = sum of a^2
-over the missing modes, e.g. from static solves (see :mod:`fem_racket.impact.structure`).
+over the missing modes, e.g. from static solves (see :mod:`fem_racket.impact.point`).
 """
 
 from __future__ import annotations

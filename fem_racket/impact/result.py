@@ -16,7 +16,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.hermite import strain_energy
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.setup import Impact
+from fem_racket.impact.problem import Impact
 from fem_racket.impact.swing import (
     Swing,
     racket_velocity,

@@ -1,13 +1,14 @@
 """Ball striking the free frame: ``simulate(...) -> ImpactResult``.
 
 The ball (point mass m_B, speed V_B0 towards the stationary frame) meets the frame at x_i through
-the linear compound ball/string spring-dashpot; the coupled system (:mod:`.system`)
+the linear compound ball/string spring-dashpot; the coupled system (:mod:`fem_racket.impact.system`)
 is integrated until separation. The coefficient of restitution is COR = -v_B(t_c) / V_B0, the
 ratio of rebound to incident speed on a free racket (Kawazoe & Kanda 1997, section 3.2).
 
 ``simulate`` checks its arguments and runs one of two paths: the paper's linear law on a racket
-at rest or swinging (:mod:`.simulate_linear`), or any other contact law, ``solver="general"`` or a
-racket moving as given (:mod:`.simulate_law`).
+at rest or swinging (:mod:`fem_racket.impact.simulate_linear`), or any other contact law,
+``solver="general"`` or a
+racket moving as given (:mod:`fem_racket.impact.simulate_law`).
 """
 
 from __future__ import annotations
@@ -21,11 +22,11 @@ from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.integrators import SOLVERS
 from fem_racket.impact.law_impact import LAW_SOLVERS
+from fem_racket.impact.ode.integrators import SOLVERS
+from fem_racket.impact.problem import Impact
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.result import ImpactResult
-from fem_racket.impact.setup import Impact
 from fem_racket.impact.simulate_law import simulate_law
 from fem_racket.impact.simulate_linear import BASES, simulate_linear
 from fem_racket.impact.swing import Swing
@@ -64,7 +65,8 @@ def simulate(
     ----------
     frame : Frame, FrameMesh or FrameModel, optional
         The racket; the paper's standard racket (EI1 = 146 N m^2) when None. A Frame or
-        FrameMesh is assembled once per process (:mod:`.model_cache`) and its modes reused by
+        FrameMesh is assembled once per process (:mod:`fem_racket.impact.model_cache`) and its
+        modes reused by
         the next calls; a :class:`FrameModel` keeps its own.
     position : float
         Impact point x/L from the grip end, in [0, 1].
@@ -79,8 +81,9 @@ def simulate(
     elements : int
         Cells when meshing a :class:`Frame`.
     solver : {"exact", "cvode", "bdf", "general"}
-        Integrator (see :mod:`fem_racket.impact.integrators`); ``"general"`` is the fast
-        integrator for any contact law (:mod:`fem_racket.impact.general`). With a contact law
+        Integrator (see :mod:`fem_racket.impact.ode.integrators`); ``"general"`` is the fast
+        integrator for any contact law (:mod:`fem_racket.impact.general.integrator`). With a
+        contact law
         other than the paper's only ``"general"`` (chosen when ``solver`` is ``"exact"``) and
         ``"cvode"`` apply.
     separation : {"displacement", "force"}
@@ -91,7 +94,7 @@ def simulate(
         Flexible modes kept in the modal basis; None keeps all.
     output_step : float or None
         Spacing of the output times [s]; None keeps only t = 0 and t = t_c, and the exact
-        solver then runs the batched engine (:mod:`fem_racket.impact.engine`) on the ``modes``
+        solver then runs the batched engine (:mod:`fem_racket.impact.exact.engine`) on the ``modes``
         modes, dropping those ``tolerance`` does not need.
     t_max : float, optional
         Give up if the ball has not separated by then [s]; 20 x the eq 11 estimate by default.
@@ -103,7 +106,8 @@ def simulate(
         None or ``"linear"``: the paper's spring-dashpot from ``kcb`` and ``zeta``. Under any
         other law (or ``solver="general"``, or a moving racket) every frame mode is available:
         ``"general"`` keeps those the engine's rule keeps for the default COR tolerance (with the
-        law's contact frequency, :func:`fem_racket.impact.general.settings`) plus a residual
+        law's contact frequency, :func:`fem_racket.impact.general.integrator.settings`) plus a
+        residual
         pseudo-mode,
         ``"cvode"`` all of them, so ``basis`` and ``modes`` do not apply; the law's own end
         condition replaces ``separation`` (which still applies to the linear law).

@@ -1,6 +1,7 @@
 """An impact under any contact law, or on a racket moving as given: ``simulate_law``.
 
-The general integrator (:mod:`fem_racket.impact.general`) or CVODE runs the ball and every frame
+The general integrator (:mod:`fem_racket.impact.general.integrator`) or CVODE runs the ball and
+every frame
 mode (:func:`fem_racket.impact.law_impact.solve_law_impact`); a swing
 (:mod:`fem_racket.impact.swing`) enters as the racket's initial motion about its centre of gravity,
 and the paper's linear law then takes K_CB at the closing speed. The arguments are checked by
@@ -18,11 +19,11 @@ from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.integrators import check_solver_settings
 from fem_racket.impact.law_impact import solve_law_impact
 from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.ode.integrators import check_solver_settings
+from fem_racket.impact.problem import Impact
 from fem_racket.impact.result import ImpactResult
-from fem_racket.impact.setup import Impact
 from fem_racket.impact.simulate_linear import RIGID_MODES
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.validation import InputError, check_positive

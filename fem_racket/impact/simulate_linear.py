@@ -1,9 +1,13 @@
 """An impact under the paper's linear law on a racket at rest or swinging: ``simulate_linear``.
 
-The exact solver without output times runs the batched engine (:mod:`fem_racket.impact.engine`,
-through :func:`fem_racket.impact.single.engine_impact`) at the closing speed and superposes the
-swing; otherwise the coupled ball + frame ODE (:func:`build_system`, :mod:`.system`) in modal or
-physical coordinates goes to the solver (:mod:`.integrators`), a swing entering as its initial
+The exact solver without output times runs the batched engine
+(:mod:`fem_racket.impact.exact.engine`,
+through :func:`fem_racket.impact.exact.single.engine_impact`) at the closing speed and superposes
+the
+swing; otherwise the coupled ball + frame ODE (:func:`build_system`,
+:mod:`fem_racket.impact.system`) in modal or
+physical coordinates goes to the solver (:mod:`fem_racket.impact.ode.integrators`), a swing
+entering as its initial
 velocity field. The arguments are checked by :func:`fem_racket.impact.simulate.simulate`, which
 calls this.
 """
@@ -16,11 +20,11 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.integrators import check_solver_settings, get_solver
+from fem_racket.impact.exact.single import engine_impact
 from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.ode.integrators import check_solver_settings, get_solver
+from fem_racket.impact.problem import Impact
 from fem_racket.impact.result import ImpactResult
-from fem_racket.impact.setup import Impact
-from fem_racket.impact.single import engine_impact
 from fem_racket.impact.swing import Swing, add_swing, closing_speed, swing_setup
 from fem_racket.impact.system import CoupledSystem, modal_system, physical_system
 from fem_racket.validation import InputError, check_choice, show

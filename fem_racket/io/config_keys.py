@@ -15,7 +15,7 @@ from typing import Any
 from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS, LAW_NAMES
 from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
-from fem_racket.impact.integrators import SOLVERS
+from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import (

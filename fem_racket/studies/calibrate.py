@@ -32,8 +32,8 @@ from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.contact.spring_dashpot import SpringDashpot
-from fem_racket.impact.general import solve_general
-from fem_racket.impact.receptance import Receptance
+from fem_racket.impact.general.integrator import solve_general
+from fem_racket.impact.general.receptance import Receptance
 from fem_racket.validation import InputError, check_choice, check_positive
 
 __all__ = [

@@ -4,7 +4,7 @@ Each process (the caller, a pool worker or a Dask worker) keeps the assembled fr
 free-free modes per mesh (``FrameModel``); EI changes that scale every segment reuse them
 (omega ~ sqrt(factor), no eigen-solve).
 
-Exact solver: the batched engine (:func:`fem_racket.impact.engine.impacts`) on all the chunk's
+Exact solver: the batched engine (:func:`fem_racket.impact.exact.engine.impacts`) on all the chunk's
 cases of one frame at once, to the sweep's COR tolerance; every case is solved at
 V_B0 = 1 m/s (the system is linear), so results do not depend on how cases are chunked.
 Another contact law: the chunk's cases batched per frame, the law's parameters per case
@@ -30,7 +30,7 @@ import numpy as np
 from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
-from fem_racket.impact.engine import impacts
+from fem_racket.impact.exact.engine import impacts
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import ball_speed_out, closing_speed
 from fem_racket.impact.system import NoSeparationError

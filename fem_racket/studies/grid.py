@@ -32,7 +32,7 @@ from fem_racket.frame.segments import (
     standard_ei1_range,
     standard_frame,
 )
-from fem_racket.impact.integrators import SOLVERS, check_solver_settings
+from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS

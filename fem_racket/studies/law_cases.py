@@ -1,7 +1,8 @@
 """Sweep cases under a contact law, batched per frame through the general integrator.
 
 The cases of a chunk that share a frame (mesh, EI scaling) run as one batch of
-:func:`fem_racket.impact.general.solve_general`: positions, speeds, ball masses and the law's
+:func:`fem_racket.impact.general.integrator.solve_general`: positions, speeds, ball masses and the
+law's
 parameters (:mod:`fem_racket.studies.law_axes`) as arrays of one value per case, which is what
 makes the general integrator cheap per impact (``scripts/bench_laws.py``). Inside the batch the
 integrator groups cases by their estimated contact time, each group with its own step.
@@ -36,7 +37,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.general import solve_general
+from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import NoSeparationError

@@ -8,9 +8,11 @@ v_out(x) = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11; exact 
 law, :mod:`fem_racket.impact.swing`). Sweet spots: :mod:`fem_racket.studies.sweetspots`.
 
 :func:`apparent_cor_along` is the one place the impacts are solved: one call of the batched
-engine (:func:`fem_racket.impact.engine.impacts`) for the whole grid, frame modes computed once;
+engine (:func:`fem_racket.impact.exact.engine.impacts`) for the whole grid, frame modes computed
+once;
 under a contact law other than the paper's, one batch of the general integrator
-(:func:`fem_racket.impact.general.solve_general`, every mode available, those far above the
+(:func:`fem_racket.impact.general.integrator.solve_general`, every mode available, those far above
+the
 contact frequency as one residual mode). The identity for v_out holds for any law: the impact
 of a swinging free racket is the stationary one at the closing speed
 (:mod:`fem_racket.studies.law_cases` derives it), e_A depending on that speed.
@@ -28,8 +30,8 @@ from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.engine import DEFAULT_TOLERANCE, impacts
-from fem_racket.impact.general import solve_general
+from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, impacts
+from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS

@@ -5,7 +5,7 @@ the parameter the user gave."""
 import pytest
 
 from fem_racket import simulate
-from fem_racket.impact.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
+from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
 from fem_racket.validation import InputError
 
 
@@ -47,7 +47,7 @@ def test_output_count_refusal_names_the_parameter_given():
 def test_ill_conditioned_exact_path_is_a_one_line_refusal(standard_model):
     # Modes scaled 1e16 (EI / rhoA ~ 2e18, far beyond EI_RANGE, reachable only by scaling the
     # modes directly): the closed form's self-check fails. It was a RuntimeError traceback.
-    from fem_racket.impact.closed_form import solve_exact
+    from fem_racket.impact.exact.closed_form import solve_exact
     from fem_racket.impact.system import modal_system
     from fem_racket.validation import AccuracyError
 

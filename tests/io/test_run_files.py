@@ -68,7 +68,7 @@ def test_core_tables_reach_sweep_but_output_out_does_not(capsys, cwd):
         assert ds.position.values.tolist() == [0.6, 0.7]
         # Same COR as simulate with the same file at 0.7 L: simulate --out computes histories
         # with every mode, the sweep's engine its default COR tolerance, 1e-6
-        # (tests/impact/test_engine.py).
+        # (tests/impact/exact/test_engine.py).
         sim = json.loads(
             run(capsys, "simulate", "--config", "run.toml", "--json", "--out", "s.json")
         )

@@ -13,7 +13,7 @@ from fem_racket.frame.masses import MIN_GAP, AddedMass, add_masses
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import standard_frame
-from fem_racket.impact.engine import impacts
+from fem_racket.impact.exact.engine import impacts
 from fem_racket.studies.design.batched import evaluate_batch
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator

@@ -16,7 +16,8 @@ from fem_racket.validation import InputError
 #: The calibrated hysteretic law (k1, k2 [N/m^n], n).
 KAWAZOE = PRESETS["kawazoe-1997-nonlinear"]
 #: The general integrator's COR error at its default tolerance 1e-6: <= 1.2e-6 against CVODE on
-#: the paper's racket (fem_racket.impact.general.settings, scripts/bench_laws.py). A batch
+#: the paper's racket (fem_racket.impact.general.integrator.settings, scripts/bench_laws.py). A
+#: batch
 #: shares the step of its shortest contact within a group, so a case in a sweep and the same
 #: case alone differ by up to about twice that.
 GENERAL_COR = 2e-6

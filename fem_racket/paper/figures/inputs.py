@@ -21,7 +21,7 @@ from fem_racket.contact.linear import PAPER_KCB_POINTS, Ball, LinearContact, kcb
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import standard_frame
-from fem_racket.impact.rigid import clamped_impact
+from fem_racket.impact.analytic.rigid import clamped_impact
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (

@@ -3,7 +3,7 @@
 The paper replaces the nonlinear ball/string restoring force by a linear spring K_CB fitted per
 impact speed (section 2.1.1). Under a contact law (:mod:`fem_racket.contact`) the figures are
 drawn with that law instead, through the general integrator
-(:func:`fem_racket.impact.general.solve_general`), many impacts per call:
+(:func:`fem_racket.impact.general.integrator.solve_general`), many impacts per call:
 
 - the paper's "no damping" curves (zeta = 0) become the law's *elastic counterpart*, the same
   law with its losses removed (:func:`elastic_counterpart`): Hunt-Crossley with alpha = 0, a
@@ -32,9 +32,9 @@ from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.general import solve_general
+from fem_racket.impact.general.integrator import solve_general
+from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.law_impact import receptance
-from fem_racket.impact.receptance import Receptance
 
 __all__ = [
     "clamped_impacts",

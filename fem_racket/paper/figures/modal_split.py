@@ -1,7 +1,8 @@
 """Figs 11-12 of Kawazoe & Kanda (1997): the modal split of the ball velocity (eqs 13-16).
 
 Without damping the ball velocity is V_T + V_R + sum_i V_i cos Omega_i t over the natural modes of
-the coupled ball + frame system (:mod:`~fem_racket.impact.coupled`). Fig 11 draws the terms against
+the coupled ball + frame system (:mod:`~fem_racket.impact.analytic.coupled`). Fig 11 draws the
+terms against
 time at 0.60 L and at the node of frame mode 1; Fig 12 the system's frequencies and mode shapes
 there. The paper's node is 0.769 L; ours (20 elements) is 0.7697 L, used for the figures so that
 V_1 vanishes exactly; the values at 0.769 L itself are reported too.
@@ -17,8 +18,8 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
-from fem_racket.impact.coupled import CoupledModes, coupled_modes
-from fem_racket.impact.rigid import rigid_impact_at
+from fem_racket.impact.analytic.coupled import CoupledModes, coupled_modes
+from fem_racket.impact.analytic.rigid import rigid_impact_at
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.validation import InputError

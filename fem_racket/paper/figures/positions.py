@@ -19,7 +19,7 @@ from fem_racket.contact.linear import Ball
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
-from fem_racket.impact.rigid import rigid_impact_at
+from fem_racket.impact.analytic.rigid import rigid_impact_at
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (

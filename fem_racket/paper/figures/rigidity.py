@@ -24,7 +24,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, Ball, kcb_from_speed, zeta_from_cor
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
-from fem_racket.impact.engine import impacts
+from fem_racket.impact.exact.engine import impacts
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (
     clamped_impacts,

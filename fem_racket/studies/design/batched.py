@@ -9,7 +9,8 @@ Here a batch of designs is evaluated in two passes:
    eigenproblem, no static solves for the modes left out), mass properties and the mode values
    at the zone's (and the power region's) points (their Hermite point vectors are shared by
    the designs on one mesh);
-2. all the designs' cases together through :func:`fem_racket.impact.engine.modal_impacts`, each
+2. all the designs' cases together through :func:`fem_racket.impact.exact.engine.modal_impacts`,
+each
    case with its own structure's frequencies (designs with equal mode counts share a call).
 
 The physics is that of :func:`.objectives.evaluate_design` (the same reduction of the modes
@@ -17,7 +18,8 @@ above the COR tolerance's cut-off to one pseudo-mode per case); the two agree to
 the engine's tolerance. With the paper's linear law K_CB is the closing speed's K_CB(v) times the
 design's ``kcb_factor``. Any other contact law (:attr:`.problem.DesignProblem.law`, with the
 design's string-bed k_s and k_3 for the series law) runs each design's cases through the general
-integrator (:func:`fem_racket.impact.general.solve_general`: 100 steps per contact time and
+integrator (:func:`fem_racket.impact.general.integrator.solve_general`: 100 steps per contact time
+and
 Richardson extrapolation, |dCOR| ~ 1e-6) on the design's receptance at the impact points; e_A is
 -v_B(t_c) / v_closing as for the linear law.
 """
@@ -34,8 +36,8 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import kcb_from_speed
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.engine import modal_impacts
-from fem_racket.impact.general import solve_general
+from fem_racket.impact.exact.engine import modal_impacts
+from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.swing import ball_speed_out
 from fem_racket.studies.design.problem import DesignProblem

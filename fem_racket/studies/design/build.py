@@ -25,7 +25,7 @@ from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
-from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.swing import (

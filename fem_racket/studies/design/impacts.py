@@ -1,9 +1,10 @@
 """Impacts of one racket at many (position, speed) cases: the design studies' only impact calls.
 
 Every objective goes through :func:`apparent_cor` or :func:`handle_shock`, so the impact engines
-behind them are chosen in one place: the batched engine (:func:`fem_racket.impact.engine.impacts`),
+behind them are chosen in one place: the batched engine
+(:func:`fem_racket.impact.exact.engine.impacts`),
 all of a design's cases in one call, its modes computed once per design; and for the hand-held
-racket the exact modal path (:mod:`fem_racket.impact.held_modal`), the modes of frame + hand
+racket the exact modal path (:mod:`fem_racket.impact.held.modal`), the modes of frame + hand
 computed once per design.
 """
 
@@ -13,9 +14,9 @@ import numpy as np
 
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.engine import impacts
-from fem_racket.impact.held_modal import held_basis, held_contacts
-from fem_racket.impact.held_shock import grip_peak, vibration_rms
+from fem_racket.impact.exact.engine import impacts
+from fem_racket.impact.held.modal import held_basis, held_contacts
+from fem_racket.impact.held.shock import grip_peak, vibration_rms
 
 __all__ = ["apparent_cor", "handle_shock"]
 
@@ -87,7 +88,7 @@ def handle_shock(
         hand superposed on the stationary impact at the closing speed), broadcast together.
     hand : Hand
     window : float
-        Window of the shock measures [s] (:mod:`fem_racket.impact.held_shock`).
+        Window of the shock measures [s] (:mod:`fem_racket.impact.held.shock`).
     ball_mass, zeta, tolerance
         As for :func:`apparent_cor`.
     peak : bool

@@ -15,11 +15,11 @@ Objectives (maximised), weights w_k of the zone, n_v speeds:
   measures the same idea as an area on the string face (> 100 cm^2 on quality rackets).
 
 Objectives minimised, of the racket held by the problem's hand (:mod:`fem_racket.frame.hand`,
-exact path :mod:`fem_racket.impact.held_modal`) struck at rest at the closing speed v_in + v_r
+exact path :mod:`fem_racket.impact.held.modal`) struck at rest at the closing speed v_in + v_r
 (the swing being a rigid motion of racket and hand):
 
 - ``handle_shock``: (1/n_v) sum_v sum_k w_k RMS of the grip force's vibration part over the
-  shock window [N] (:mod:`fem_racket.impact.held_shock`);
+  shock window [N] (:mod:`fem_racket.impact.held.shock`);
 - ``peak_grip_force``: the same mean of the largest grip force over the window [N].
 
 A stiffness price ``stiffness_cost`` [1/(N m^2)] times EI_1 is subtracted from each maximised

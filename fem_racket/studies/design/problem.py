@@ -29,7 +29,7 @@ from fem_racket.frame.hand import Hand
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import Frame, Segment
-from fem_racket.impact.held_shock import DEFAULT_WINDOW
+from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.studies.design.description import ProblemDescription
 from fem_racket.studies.design.layout import ParameterLayout
 from fem_racket.studies.design.profiles import INTERPOLATIONS, cell_means, check_stations
@@ -88,12 +88,13 @@ class DesignProblem(ParameterLayout, ProblemDescription):
     modes : int or None
         Flexible modes kept per impact (None: the engine's choice by ``tolerance``).
     tolerance : float or None
-        COR tolerance of the impact engine (:mod:`fem_racket.impact.engine`; None: every mode).
+        COR tolerance of the impact engine (:mod:`fem_racket.impact.exact.engine`; None: every
+        mode).
     hand : Hand
         The hand on the grip for the handle-shock objectives (:mod:`fem_racket.frame.hand`).
     shock_window : float
         Window of the handle-shock measures from the start of contact [s]
-        (:mod:`fem_racket.impact.held_shock`).
+        (:mod:`fem_racket.impact.held.shock`).
     ei_stations, rhoa_stations : tuple of float
         Control points x/L of a smooth EI (rhoA) profile (:mod:`.profiles`); empty: one value
         per segment.
@@ -102,7 +103,7 @@ class DesignProblem(ParameterLayout, ProblemDescription):
     law : ContactLaw or None
         The ball/string law (None: the paper's linear law, K_CB from the closing speed times the
         ``kcb_factor`` entry of p, and ``zeta``); another law's impacts run through the general
-        integrator (:func:`fem_racket.impact.general.solve_general`).
+        integrator (:func:`fem_racket.impact.general.integrator.solve_general`).
     """
 
     segment_lengths: tuple[float, ...]
@@ -177,7 +178,7 @@ class DesignProblem(ParameterLayout, ProblemDescription):
         self.mesh(self.x_start)  # checks the added masses' positions and widths
         if self.shock:
             check_positive("shock window", self.shock_window, "s")
-            # The held racket's exact path (fem_racket.impact.held_modal) is the paper's linear
+            # The held racket's exact path (fem_racket.impact.held.modal) is the paper's linear
             # law at K_CB(v); the string bed's variables would reach only the other objectives.
             if self.law is not None:
                 raise InputError(

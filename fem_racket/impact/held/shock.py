@@ -1,6 +1,6 @@
 """Handle shock: what the hand feels of an impact, from the held racket's exact grip force.
 
-The grip force on the hand F_h(t) (:mod:`fem_racket.impact.held_modal`: during contact and in
+The grip force on the hand F_h(t) (:mod:`fem_racket.impact.held.modal`: during contact and in
 the free vibration after it) is split into its rigid part, the push that carries the hand along
 with a rigid racket (ending at separation), and its vibration part F_v = F_h - rigid (the
 frame's bending and the hand's own motion on the grip layer). Two measures over a window
@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem_racket.impact.held_modal import HeldContact
+from fem_racket.impact.held.modal import HeldContact
 from fem_racket.validation import InputError
 
 __all__ = ["DEFAULT_WINDOW", "contact_peak", "grip_peak", "vibration_energy", "vibration_rms"]

@@ -3,7 +3,7 @@
 ``solver(system, *, separation, output_step, t_max, rtol, atol) -> Trajectory``
 
 - ``exact``: the closed-form eigen-solution of the linear system in modal coordinates
-  (:mod:`fem_racket.impact.closed_form`), the default.
+  (:mod:`fem_racket.impact.exact.closed_form`), the default.
 - ``cvode``: SUNDIALS CVODE (BDF, scikit-sundae) with a dense Jacobian and a root-finding event.
 - ``bdf``: scipy ``solve_ivp`` BDF with a terminal event, the fallback of ``cvode``.
 
@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.closed_form import solve_exact
+from fem_racket.impact.exact.closed_form import solve_exact
 from fem_racket.impact.system import (
     SEPARATION_EVENTS,
     CoupledSystem,

@@ -5,7 +5,7 @@ spring-dashpot, so the whole system is linear. Its undamped modes (K_held, M_hel
 normalised, are two rigid-body modes of frame + hand (the grip layer is not stretched) and
 flexible modes omega_f; the grip damping becomes a full matrix D = Phi_f^T C_held Phi_f (not
 modal: no mode is a damped mode), which acts on no rigid mode. Eliminating the rigid modes
-through the spring deflection delta as :mod:`fem_racket.impact.closed_form` does::
+through the spring deflection delta as :mod:`fem_racket.impact.exact.closed_form` does::
 
     delta'' = -mu F + sum_f a_f (omega_f^2 eta_f + (D eta_f')_f),   mu = 1/m_B + sum_k a_k^2
     eta_f'' = -omega_f^2 eta_f - (D eta_f')_f + a_f F,              F = K_CB delta + C_CB delta'
@@ -19,10 +19,11 @@ static flexibility and mass at the impact point (and no share in the hand's moti
 
 The grip force on the hand is F_h = m_h u_h'' (nothing else acts on it), u_h = sum p eta with p
 the modes' values at the hand's translation. Its rigid part m_h F sum_r p_r a_r is the
-``_rigid_factor`` of :mod:`fem_racket.impact.held`; the vibration part is m_h sum_f p_f eta_f''.
+``_rigid_factor`` of :mod:`fem_racket.impact.held.grip`; the vibration part is m_h sum_f p_f
+eta_f''.
 After separation the racket and hand vibrate freely (ball gone): y = [eta_f, eta_f'] obeys
 y' = B y, B = [[0, I], [-Omega^2, -D]], again a sum of exponentials from the state at t_c.
-Shock measures: :mod:`fem_racket.impact.held_shock`.
+Shock measures: :mod:`fem_racket.impact.held.shock`.
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ import numpy as np
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.fe import FrameFE
 from fem_racket.frame.hand import Hand, held_frame
-from fem_racket.impact.closed_form import (
+from fem_racket.impact.exact.closed_form import (
     ModalClosedForm,
     reduced_matrix,
     separation_time,
@@ -132,7 +133,7 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
 
 
 class _HeldClosedForm(ModalClosedForm):
-    """The closed form of :mod:`fem_racket.impact.closed_form` on the held racket's reduced
+    """The closed form of :mod:`fem_racket.impact.exact.closed_form` on the held racket's reduced
     state matrix (with the grip damping); amplitudes from the eigenvectors."""
 
     def __init__(self, A: np.ndarray, n: int, mb: float, v0: float, k: float, c: float):
@@ -222,7 +223,7 @@ def held_contact(
     basis : HeldBasis
         From :func:`held_basis`.
     position, speed, ball_mass, kcb, zeta
-        As for :func:`fem_racket.impact.held.simulate_held`.
+        As for :func:`fem_racket.impact.held.grip.simulate_held`.
     tolerance : float or None
         COR tolerance choosing the modes kept (:func:`fem_racket.impact.reduction.
         cutoff_factor`); None keeps every mode.

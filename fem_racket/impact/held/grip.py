@@ -23,7 +23,7 @@ import numpy as np
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.hand import Hand, HeldFrame, held_frame
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.integrators import get_solver
+from fem_racket.impact.ode.integrators import get_solver
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.impact.system import CoupledSystem, physical_system
 from fem_racket.validation import InputError, check_choice, check_range

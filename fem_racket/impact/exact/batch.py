@@ -1,8 +1,10 @@
 """The batch solve behind :func:`fem_racket.impacts`: poles -> roots -> COR, t_c, peak force.
 
 Cases are grouped by the size of their reduced problem (:func:`.reduction.pole_blocks`) and
-solved :data:`BLOCK` at a time: roots and residues (:mod:`.roots`), separation time, impulse
-and peak force (:mod:`.separation`), all per unit impact speed. A case whose event function
+solved :data:`BLOCK` at a time: roots and residues (:mod:`fem_racket.impact.exact.roots`),
+separation time, impulse
+and peak force (:mod:`fem_racket.impact.exact.separation`), all per unit impact speed. A case whose
+event function
 nearly touches zero before it separates (an ill-conditioned criterion: the reduced model may
 cross there or not, the COR jumping with it) is solved again with every mode given.
 """
@@ -13,9 +15,9 @@ import math
 
 import numpy as np
 
+from fem_racket.impact.exact.roots import RootSet, coupled_roots
+from fem_racket.impact.exact.separation import impulse, peak_force, separation_time
 from fem_racket.impact.reduction import pole_blocks
-from fem_racket.impact.roots import RootSet, coupled_roots
-from fem_racket.impact.separation import impulse, peak_force, separation_time
 
 __all__ = ["BLOCK", "T_MAX_FACTOR", "solve_cases"]
 

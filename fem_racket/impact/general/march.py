@@ -1,7 +1,8 @@
 """The general integrator's time march over a uniform grid, for a batch of cases at once.
 
-Node by node (:func:`fem_racket.impact.general_step.solve_step`), the history of the nodal
-forces enters through the kernel tables of :mod:`fem_racket.impact.receptance`. The first three
+Node by node (:func:`fem_racket.impact.general.step.solve_step`), the history of the nodal
+forces enters through the kernel tables of :mod:`fem_racket.impact.general.receptance`. The first
+three
 nodes use the forward (starting) stencil, which reaches nodes 1-3 at once: they are solved by
 Gauss-Seidel sweeps over the three (the coupling through the later nodes is O((omega h)^2), so
 a few sweeps converge to round-off). Separation is found per case on the law's own end
@@ -16,15 +17,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.impact.cubic_force import BACKWARD, ORDER, lagrange, step_stencil
-from fem_racket.impact.general_step import (
+from fem_racket.impact.general.cubic_force import BACKWARD, ORDER, lagrange, step_stencil
+from fem_racket.impact.general.receptance import (
+    Receptance,
+    free_motion,
+    kernels,
+    stencil_quadrature,
+)
+from fem_racket.impact.general.step import (
     cubic_root,
     hermite_root,
     per_case,
     solve_step,
     turn_max,
 )
-from fem_racket.impact.receptance import Receptance, free_motion, kernels, stencil_quadrature
 
 __all__ = ["GeneralOutcome", "march"]
 
@@ -51,7 +57,7 @@ class GeneralOutcome:
     force, deflection, rate, state : ndarray, shape (C, N)
         F [N], delta [m], delta' [m/s] and the law's state [m] at t = m h (valid up to each
         case's separation step ``last``); F between nodes is the piecewise cubic of
-        :mod:`fem_racket.impact.cubic_force`.
+        :mod:`fem_racket.impact.general.cubic_force`.
     last : ndarray of int
         Index of the step in which each case separated.
     fraction : ndarray
@@ -93,7 +99,7 @@ def march(
 ) -> GeneralOutcome | None:
     """One run with step ``h`` [s] up to ``span`` [s] (None: some case is still in contact).
 
-    ``whole``: solve every node at once (:func:`fem_racket.impact.general_global.solve_all`,
+    ``whole``: solve every node at once (:func:`fem_racket.impact.general.nodes.solve_all`,
     laws without an ODE state), marching only if that does not converge.
     """
     ncase = rec.a.shape[0]
@@ -174,7 +180,7 @@ def march(
 
 def _whole(law, K, dfree, vfree, F0, h, scale, momentum, span, G):
     """Every node at once from a half-sine guess (impulse 1.5 m_eff v0 over span / 2)."""
-    from fem_racket.impact.general_global import solve_all
+    from fem_racket.impact.general.nodes import solve_all
 
     t = np.arange(dfree.shape[1]) * h
     dur = 0.5 * span

@@ -20,11 +20,14 @@ values ``rigid`` (n,) [1/kg] (1/m_R + d^2/I_R for a free frame; any number of ri
 including none).
 
 Physics: the linear ball/string spring-dashpot (K_CB, C_CB = 2 zeta sqrt(m_B K_CB)) between the
-ball (point mass m_B, speed V_B0) and the structure, as :mod:`fem_racket.impact.closed_form`,
-solved per case from the roots of its characteristic function (:mod:`.roots`) with the modes
-below beta x omega_c kept and one residual pseudo-mode for the others (:mod:`.reduction`;
+ball (point mass m_B, speed V_B0) and the structure, as :mod:`fem_racket.impact.exact.closed_form`,
+solved per case from the roots of its characteristic function
+(:mod:`fem_racket.impact.exact.roots`) with the modes
+below beta x omega_c kept and one residual pseudo-mode for the others
+(:mod:`fem_racket.impact.reduction`;
 ``tolerance`` on the COR picks beta, None or 0 keeps every mode given); separation, impulse and
-peak force in :mod:`.separation`; the batch loop in :mod:`.batch`. Linear, so everything is
+peak force in :mod:`fem_racket.impact.exact.separation`; the batch loop in
+:mod:`fem_racket.impact.exact.batch`. Linear, so everything is
 solved at V_B0 = 1 m/s: COR and t_c do not depend on the speed except through K_CB, and the
 force scales with it.
 COR = -v_B(t_c)/V_B0 = J(t_c)/(m_B V_B0) - 1.
@@ -47,7 +50,7 @@ from fem_racket.contact.linear import (
     kcb_from_speed,
     zeta_from_cor,
 )
-from fem_racket.impact.batch import solve_cases
+from fem_racket.impact.exact.batch import solve_cases
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance, cutoff_factor
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import InputError, check_choice, check_integer
@@ -313,7 +316,7 @@ def impacts(
     ImpactBatch
     """
     from fem_racket.impact.model_cache import frame_model
-    from fem_racket.impact.structure import frame_modal_data
+    from fem_racket.impact.point import frame_modal_data
 
     _check_common(speed, kcb, zeta, ball_mass, ei_factor, separation, tolerance)
     pos = _check_array("position", position, "x/L", 0.0, 1.0)

@@ -2,10 +2,10 @@
 
 The entry of ``fem-racket simulate`` with a hand. Two ways to the same answer:
 
-- ``exact`` (default): the eigen-solution of :mod:`fem_racket.impact.held_modal` and the exact
-  shock measures of :mod:`fem_racket.impact.held_shock` (peak of the grip force, RMS of its
+- ``exact`` (default): the eigen-solution of :mod:`fem_racket.impact.held.modal` and the exact
+  shock measures of :mod:`fem_racket.impact.held.shock` (peak of the grip force, RMS of its
   vibration part over the window [0, T]);
-- ``cvode`` / ``bdf``: the integrators of :func:`fem_racket.impact.held.simulate_held` during
+- ``cvode`` / ``bdf``: the integrators of :func:`fem_racket.impact.held.grip.simulate_held` during
   contact; after separation the frame and hand vibrate freely (ball gone), a linear system
   y' = A_s y of the held structure, y = [x, x'], A_s = [[0, I], [-M^-1 K, -M^-1 C]], stepped
   from the integrator's state at t_c by its propagator exp(A_s dt) (exact for a linear system).
@@ -29,15 +29,15 @@ import numpy as np
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.hand import GRIPS, Hand, held_frame
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.held import HELD_SOLVERS, HeldImpact, simulate_held
-from fem_racket.impact.held_modal import held_basis, held_contact
-from fem_racket.impact.held_shock import (
+from fem_racket.impact.held.grip import HELD_SOLVERS, HeldImpact, simulate_held
+from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.shock import (
     DEFAULT_WINDOW,
     contact_peak,
     grip_peak,
     vibration_rms,
 )
-from fem_racket.impact.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
+from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.validation import InputError, check_choice, check_range

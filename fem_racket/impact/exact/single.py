@@ -2,7 +2,7 @@
 
 ``simulate(..., output_step=None)`` needs only t = 0 and t = t_c. From the engine's roots
 lambda_j and contact-force residues f_j = (K_CB + C_CB lambda_j) r_j (per unit speed, see
-:mod:`fem_racket.impact.roots`), with F(t) = Re sum m f_j exp(lambda_j t)::
+:mod:`fem_racket.impact.exact.roots`), with F(t) = Re sum m f_j exp(lambda_j t)::
 
     J(t) = Re sum m f_j (e^{lambda t} - 1) / lambda
     P(t) = Re sum m f_j (e^{lambda t} - 1 - lambda t) / lambda^2
@@ -24,11 +24,11 @@ import numpy as np
 
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.exact.roots import RootSet, coupled_roots
+from fem_racket.impact.exact.separation import impulse, peak_force, separation_time
+from fem_racket.impact.point import frame_modal_data
+from fem_racket.impact.problem import Impact
 from fem_racket.impact.reduction import cutoff_factor, pole_blocks
-from fem_racket.impact.roots import RootSet, coupled_roots
-from fem_racket.impact.separation import impulse, peak_force, separation_time
-from fem_racket.impact.setup import Impact
-from fem_racket.impact.structure import frame_modal_data
 from fem_racket.impact.system import Trajectory, no_separation
 
 __all__ = ["engine_impact"]

@@ -1,7 +1,7 @@
 """Separation time, impulse and peak force of many impacts from their roots and residues.
 
 Every signal is a sum of exponentials, x(t) = Re sum_j m w_j exp(lambda_j t) (see
-:mod:`fem_racket.impact.roots`): the deflection delta (w = r), the contact force
+:mod:`fem_racket.impact.exact.roots`): the deflection delta (w = r), the contact force
 F = K_CB delta + C_CB delta' (w = (k + c lambda) r) and its integral, the impulse
 J(t) = Re sum_j m w_j (exp(lambda_j t) - 1) / lambda_j, all per unit impact speed.
 
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fem_racket.impact.roots import RootSet
+from fem_racket.impact.exact.roots import RootSet
 
 __all__ = ["SIGNIFICANT", "impulse", "peak_force", "separation_time"]
 
@@ -188,7 +188,7 @@ def peak_force(roots: RootSet, fw: np.ndarray, tc: np.ndarray) -> tuple[np.ndarr
 
     Every term on a grid over [0, t_c] of at least 257 points resolving all terms of weight
     >= :data:`SIGNIFICANT`, then 257 points over the four steps around the largest value (as
-    :func:`fem_racket.impact.closed_form.exact_outcome`: steps finer than the high modes'
+    :func:`fem_racket.impact.exact.closed_form.exact_outcome`: steps finer than the high modes'
     ripple), then Newton on dF/dt = 0 within the neighbours of the best of those (kept only if
     it improves on it).
     """

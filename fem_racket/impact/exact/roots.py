@@ -1,7 +1,7 @@
 """Roots and residues of the linear ball + structure impact, many cases at once.
 
 With the rigid-body modes eliminated through the spring deflection delta (see
-:mod:`fem_racket.impact.closed_form`), the Laplace transform of delta for an impact at unit
+:mod:`fem_racket.impact.exact.closed_form`), the Laplace transform of delta for an impact at unit
 speed is delta(s) = 1 / P(s) with::
 
     P(s) = s^2 + (k + c s) G(s),   G(s) = mu0 + sum_f a_f^2 s^2 / (s^2 + omega_f^2)
@@ -26,7 +26,7 @@ so that delta(t) = 2 Re sum_j r_j exp(lambda_j t). They are checked by the initi
 delta(0) = 0 and delta'(0) = 1, i.e. the sum rules 2 Re sum r = 0 and 2 Re sum lambda r = 1.
 A case whose iteration does not converge or whose sum rules fail (e.g. a heavily damped pair of
 roots that has become real) is solved again by a general eigen-decomposition of its small
-reduced state matrix, as :mod:`fem_racket.impact.closed_form` does.
+reduced state matrix, as :mod:`fem_racket.impact.exact.closed_form` does.
 """
 
 from __future__ import annotations

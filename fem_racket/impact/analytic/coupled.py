@@ -35,7 +35,7 @@ import numpy as np
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.display import number, short_repr
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.impact.setup import Impact
+from fem_racket.impact.problem import Impact
 
 __all__ = ["CoupledModes", "coupled_modes"]
 

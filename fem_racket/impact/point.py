@@ -1,6 +1,6 @@
 """A frame's modes at impact points, in the form the batched engine takes, cached per process.
 
-The engine (:mod:`fem_racket.impact.engine`) needs, per impact point x_i, only the structure's
+The engine (:mod:`fem_racket.impact.exact.engine`) needs, per impact point x_i, only the structure's
 flexible angular frequencies omega_f, the mass-normalised mode values a_f = phi_f(x_i), the sum
 of the rigid modes' squared values (1/m_R + d^2/I_R for a free frame, d = x_i - x_CG) and, when
 not every mode was computed, the totals of the missing modes' a^2/omega^2 and a^2. For a frame

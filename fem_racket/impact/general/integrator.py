@@ -2,10 +2,10 @@
 
 The frame is linear, so the contact force F(t) is the only unknown: the deflection at the
 contact is a Volterra integral of F over the frame's receptance
-(:mod:`fem_racket.impact.receptance`). F is a piecewise cubic on a uniform grid
-(:mod:`fem_racket.impact.cubic_force`, fourth order), every mode responds to it exactly, and
+(:mod:`fem_racket.impact.general.receptance`). F is a piecewise cubic on a uniform grid
+(:mod:`fem_racket.impact.general.cubic_force`, fourth order), every mode responds to it exactly, and
 each node solves only the contact equation ``F_m = law(delta_m(F_m), delta'_m(F_m), z)``
-(:mod:`fem_racket.impact.general_step`; the march: :mod:`fem_racket.impact.general_march`).
+(:mod:`fem_racket.impact.general.step`; the march: :mod:`fem_racket.impact.general.march`).
 Flexible modes above ``beta`` times the contact frequency pi / t_c (t_c the law's estimate) are
 replaced by one residual pseudo-mode per case, by the engine's rule
 (:func:`fem_racket.impact.reduction.split_modes`). Many cases (positions, speeds, law
@@ -14,9 +14,9 @@ condition (deflection falling through its end value, or the force or the law sta
 zero) inside its step.
 
 A COR tolerance sets the step count and the mode cut-off (:func:`settings`). Single impacts
-solve every node at once (:mod:`fem_racket.impact.general_global`), batches march node by node
+solve every node at once (:mod:`fem_racket.impact.general.nodes`), batches march node by node
 vectorised across cases. Accuracy (``scripts/bench_laws.py`` and
-``tests/impact/test_general.py``, against CVODE, :mod:`fem_racket.impact.law_cvode`): fourth
+``tests/impact/general/test_general.py``, against CVODE, :mod:`fem_racket.impact.ode.law_cvode`): fourth
 order in the step where the force is smooth (Hunt-Crossley, hysteretic n = 8.9, series). Two
 things limit it: a force with a jump or kink at contact (the linear spring-dashpot's C v0, the
 hysteretic law with n = 1) rings with the frame modes above 1/h, which the cubic force aliases,
@@ -33,9 +33,9 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.impact.general_march import GeneralOutcome, march
-from fem_racket.impact.general_step import per_case
-from fem_racket.impact.receptance import Receptance, free_motion
+from fem_racket.impact.general.march import GeneralOutcome, march
+from fem_racket.impact.general.receptance import Receptance, free_motion
+from fem_racket.impact.general.step import per_case
 from fem_racket.impact.reduction import (
     DEFAULT_TOLERANCE,
     check_tolerance,
@@ -62,7 +62,7 @@ GROUP_RATIO = 1.3
 #: Default t_max as a multiple of the estimated contact time.
 LIMIT = 16.0
 #: Batches up to this size (laws without an ODE state) solve all nodes at once
-#: (:mod:`fem_racket.impact.general_global`); larger ones march, vectorised across cases.
+#: (:mod:`fem_racket.impact.general.nodes`); larger ones march, vectorised across cases.
 WHOLE = 2
 
 

@@ -1,7 +1,7 @@
 """One step of the general integrator: the contact equation at a new node, and in-step roots.
 
 At node m every case solves ``F_m = law(delta_m, delta'_m, z_m)`` with delta_m, delta'_m affine in
-F_m (:mod:`fem_racket.impact.receptance`): Newton on F alone, or on (F, z) for an ODE state
+F_m (:mod:`fem_racket.impact.general.receptance`): Newton on F alone, or on (F, z) for an ODE state
 advanced by the same cubic quadrature (``z_m = z_base + c g(delta_m, delta'_m, z_m)``, Adams-Moulton
 4 on the backward stencil). A memory state (hysteresis) is the largest deflection reached,
 including a maximum inside the step, found on the cubic Hermite interpolant of delta through
@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.impact.cubic_force import lagrange
+from fem_racket.impact.general.cubic_force import lagrange
 
 __all__ = ["cubic_root", "hermite_root", "hermite_value", "solve_step", "turn_max"]
 

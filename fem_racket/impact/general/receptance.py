@@ -8,7 +8,8 @@ contact is a Volterra integral of F (free-free modal superposition)::
 
 (a_j: mass-normalised mode shapes at the impact point; delta_free: the ball's and the frame's
 motion without contact) and delta' likewise with K'. With F the piecewise cubic of
-:mod:`fem_racket.impact.cubic_force` on a grid of step h, the deflection at node m is a weighted
+:mod:`fem_racket.impact.general.cubic_force` on a grid of step h, the deflection at node m is a
+weighted
 sum of the nodal forces, exactly for every mode::
 
     delta_m = delta_free(t_m) - sum_j W[m, j] F_j,   W[m, j] = T[m - j] + S[m, j]
@@ -22,7 +23,7 @@ node r of a step at lag L = m - k >= 1 (per unit a^2; rigid part per unit mu0)::
     G_r = sum_q c_rq conj(M_q(theta, 1)),           theta = omega h
 
 Modes above the cut-off of :mod:`fem_racket.impact.reduction` enter through one residual
-pseudo-mode per case. Used by :mod:`fem_racket.impact.general`.
+pseudo-mode per case. Used by :mod:`fem_racket.impact.general.integrator`.
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.impact.cubic_force import ORDER, STENCILS, lagrange, moments
+from fem_racket.impact.general.cubic_force import ORDER, STENCILS, lagrange, moments
 from fem_racket.impact.reduction import split_modes
 
 __all__ = ["Kernels", "Receptance", "free_motion", "kernels", "stencil_quadrature"]

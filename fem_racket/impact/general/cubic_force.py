@@ -1,6 +1,6 @@
 """The contact force as a piecewise cubic on a uniform grid, and its exact modal response.
 
-The general integrator (:mod:`fem_racket.impact.general`) represents F(t) on step k,
+The general integrator (:mod:`fem_racket.impact.general.integrator`) represents F(t) on step k,
 t = t_k + h sigma with sigma in [0, 1], by the cubic through four grid values (Lagrange)::
 
     F(t_k + h sigma) = sum_r L_r(sigma) F_{k + o_r}

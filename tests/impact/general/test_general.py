@@ -11,9 +11,9 @@ from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.presets import PRESETS
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.contact.spring_dashpot import SpringDashpot
-from fem_racket.impact.general import solve_general
+from fem_racket.impact.general.integrator import solve_general
+from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.law_impact import receptance, solve_law_impact
-from fem_racket.impact.receptance import Receptance
 
 LAWS = {
     "hunt-crossley": HuntCrossley.from_cor(8e16, 9.0, 0.83, 30.0),
@@ -173,7 +173,7 @@ def test_converges_as_tolerance_tightens(standard_model, name):
 @pytest.mark.parametrize("name", ["hunt-crossley", "hysteretic", "hysteretic-linear"])
 def test_whole_trajectory_equals_march(standard_model, name):
     # the same discrete equations solved node by node and all at once agree to round-off
-    from fem_racket.impact.general_march import march
+    from fem_racket.impact.general.march import march
 
     law, rec = LAWS[name], receptance(standard_model, 0.75, 0.057)
     t_est = float(np.min(law.contact_time_estimate(1.0 / rec.compliance, 30.0)))
@@ -241,7 +241,7 @@ def test_kernel_weights_are_fourth_order():
     # with an error falling as h^4 (measured 1.5e-7, 9.7e-9, 6.3e-10: ratios 15.0, 15.5)
     from scipy.integrate import quad
 
-    from fem_racket.impact.receptance import kernels
+    from fem_racket.impact.general.receptance import kernels
 
     rec = Receptance(np.array([800.0, 5000.0]), np.array([[0.5, 0.8]]), np.array([[1.0, 0.3]]),
                      np.array([0.057]))  # fmt: skip

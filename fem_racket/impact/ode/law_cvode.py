@@ -77,7 +77,7 @@ def solve_law_cvode(
     output_step : float, optional
         Spacing of stored times [s]; by default 400 points per estimated contact time.
     """
-    from fem_racket.impact.integrators import cvode_bdf
+    from fem_racket.impact.ode.integrators import cvode_bdf
     from fem_racket.impact.system import no_separation
 
     n = omega.size + 1

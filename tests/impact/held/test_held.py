@@ -7,7 +7,7 @@ import pytest
 
 from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP, Hand, held_frame, held_modes
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.held import simulate_held
+from fem_racket.impact.held.grip import simulate_held
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import InputError
 

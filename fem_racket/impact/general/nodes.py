@@ -1,6 +1,6 @@
 """The general integrator's equations solved at every node at once (few cases, no ODE state).
 
-The march (:mod:`fem_racket.impact.general_march`) solves the nodes one after another, which
+The march (:mod:`fem_racket.impact.general.march`) solves the nodes one after another, which
 costs ~40 small numpy calls per node and Newton iteration: ~10 ms for one impact in Python. The
 same discrete equations, all nodes together::
 
@@ -22,9 +22,9 @@ from __future__ import annotations
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.impact.cubic_force import ORDER
-from fem_racket.impact.general_step import turn_max
-from fem_racket.impact.receptance import Kernels
+from fem_racket.impact.general.cubic_force import ORDER
+from fem_racket.impact.general.receptance import Kernels
+from fem_racket.impact.general.step import turn_max
 
 __all__ = ["full_weights", "solve_all"]
 
