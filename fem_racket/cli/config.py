@@ -89,6 +89,8 @@ def _check(path: str) -> str:
 def _show(value: Any) -> str:
     if isinstance(value, tuple) and value and hasattr(value[0], "EI"):
         return f"{len(value)} segments"
+    if isinstance(value, list) and value and hasattr(value[0], "place"):
+        return "[" + ", ".join(f'"{lead.label()}"' for lead in value) + "]"
     if isinstance(value, PurePath):
         value = str(value)
     return toml_value(value)

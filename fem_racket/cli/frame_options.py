@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from fem_racket.cli.lead_options import add_lead_option, with_lead
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
@@ -56,7 +57,7 @@ def add_ei_options(group: argparse._ArgumentGroup) -> None:
 
 
 def add_frame_options(parser: argparse.ArgumentParser) -> None:
-    """Frame options: --ei1, --ei2, --elements, --mesh."""
+    """Frame options: --ei1, --ei2, --elements, --mesh, --add-mass."""
     g = parser.add_argument_group("frame")
     add_ei_options(g)
     g.add_argument(
@@ -67,6 +68,7 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         help="number of beam elements (default 20, as in the paper)",
     )
     add_mesh_option(g)
+    add_lead_option(g)
 
 
 def frame_from_args(
@@ -79,7 +81,13 @@ def frame_from_args(
     --mesh together with an explicit --ei1, --ei2 or --elements is an error: the file fixes the
     cells and their EI and rhoA. ``exclusive`` names the options a mesh file replaces (refine's
     --elements is a list of counts to refine the file's profile with, so not one of them there).
+    Lead (--add-mass, a run file's ``[[frame.lead]]``) is added last: the frame becomes a mesh
+    (``--elements`` cells for a Frame) with the strips on it.
     """
+    return with_lead(_bare_frame(args, exclusive), args, getattr(args, "elements", 20))
+
+
+def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame | FrameMesh:
     path = getattr(args, "mesh", None)
     if path is None:
         segments = getattr(args, "segments", None)

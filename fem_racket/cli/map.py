@@ -21,6 +21,7 @@ from fem_racket.cli.common import (
     significant,
 )
 from fem_racket.cli.laws import add_law_options, law_from_args
+from fem_racket.cli.lead_options import add_lead_option, with_lead
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
@@ -80,6 +81,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="N",
         help="beam elements of a preset (default 20)",
     )
+    add_lead_option(r)
     g = p.add_argument_group("impact")
     g.add_argument(
         "--speed",
@@ -159,13 +161,15 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
-    """(name, frame) of every racket the options name, presets first."""
+    """(name, frame) of every racket the options name, presets first, each with the lead of
+    --add-mass."""
     out: list[tuple[str, Any]] = []
     for name in args.preset or []:
         out.append((name, standard_frame(PRESETS[name])))
     for path in args.mesh or []:
         out.append((Path(path).stem, read_mesh(path)))
-    return out or [("standard", standard_frame())]
+    out = out or [("standard", standard_frame())]
+    return [(name, with_lead(frame, args, args.elements)) for name, frame in out]
 
 
 def run(args: argparse.Namespace) -> int:

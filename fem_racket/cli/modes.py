@@ -12,6 +12,7 @@ from fem_racket.cli.common import (
     print_json,
 )
 from fem_racket.cli.drawing import add_quiet_option, progress_of
+from fem_racket.frame.catalogue import catalogue
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.progress import progress_bar
 
@@ -51,10 +52,13 @@ def run(args: argparse.Namespace) -> int:
     props = fm.props
     modes = progress_bar(range(fm.omega.size), desc="nodes", unit="mode", enabled=progress_of(args))
     nodes = [mode_nodes(model.fe, fm.shapes[:, k]).tolist() for k in modes]
+    specs = catalogue(model.mesh, f1=False).as_dict()
     data = {
         "mass_kg": props.mass,
         "cg_x_over_l": props.cg_over_length,
         "cg_m": props.cg,
+        "swing_weight_kg_cm2": specs["swing_weight_kg_cm2"],
+        "twist_weight_kg_cm2": specs["twist_weight_kg_cm2"],
         "inertia_cg_kg_m2": props.inertia,
         "length_m": props.length,
         "elements": model.mesh.n_elements,

@@ -32,6 +32,12 @@ elements = 20                # cubic Hermite beam elements (20 in the paper)
 # ]
 # or a mesh file with cell data EI [N m^2] and rhoA [kg/m], relative to this file:
 # mesh = "meshes/standard.vtu"
+# Lead tape (as --add-mass PLACE:GRAMS): a place 12, 2/10, 3/9, 4/8, throat, handle, butt
+# (3/9, 2/10, 4/8: half on each side) or a distance from the butt in m, and its mass in g:
+# lead = [
+#     {{ place = "3/9", mass_g = 10.0 }},
+#     {{ place = "0.32", mass_g = 5.0 }},
+# ]
 
 [ball]
 mass_kg = 0.057              # m_B [kg]; the paper does not state it (rules: 0.056-0.0594)

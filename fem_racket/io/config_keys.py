@@ -14,6 +14,7 @@ from typing import Any
 
 from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS, LAW_NAMES
 from fem_racket.frame.hand import GRIPS
+from fem_racket.frame.lead import Lead
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.simulate_linear import BASES
@@ -125,6 +126,39 @@ def _segments(name: str, value: Any) -> tuple[Segment, ...]:
     return tuple(out)
 
 
+_LEAD_KEYS = {"place": "", "mass_g": "g"}
+
+
+def _leads(name: str, value: Any) -> list[Lead]:
+    """``[[frame.lead]]`` tables (place, mass_g) as leads, as --add-mass PLACE:GRAMS gives."""
+    if not isinstance(value, list) or not value:
+        raise InputError(
+            f"{name} is not allowed: must be a non-empty array of tables with place and mass_g"
+        )
+    out = []
+    for i, item in enumerate(value):
+        where = f"{name}[{i}]"
+        if not isinstance(item, dict):
+            raise InputError(
+                f"{where} = {show(item)} is not allowed: must be a table with place and mass_g"
+            )
+        reject_unknown(item, _LEAD_KEYS, where)
+        missing = [k for k in _LEAD_KEYS if k not in item]
+        if missing:
+            raise InputError(f"{where} is missing {', '.join(missing)} (each lead needs both)")
+        place = item["place"]
+        if isinstance(place, bool) or not isinstance(place, (str, int, float)):
+            raise InputError(
+                f"{where}.place = {show(place)} is not allowed: must be a clock place such as "
+                '"3/9" or a distance from the butt in m'
+            )
+        grams = _number("g", check_finite)(f"{where}.mass_g", item["mass_g"])
+        if grams < 0.0:
+            raise InputError(f"{where}.mass_g = {show(grams)} is not allowed: must be >= 0 g")
+        out.append(Lead(str(place), grams * 1e-3))
+    return out
+
+
 @dataclass(frozen=True)
 class Key:
     """One key of a core table: how to check it and which CLI option (argparse dest) it sets."""
@@ -143,6 +177,7 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         "segments": Key(_segments, "segments", "uniform segments from the grip end"),
         "mesh": Key(_string, "mesh", "mesh file with cell data EI and rhoA"),
         "elements": Key(_integer(1), "elements", "number of beam elements"),
+        "lead": Key(_leads, "add_mass", "lead tape: [[frame.lead]] tables of place and mass_g"),
     },
     "ball": {"mass_kg": Key(_positive("kg"), "ball_mass", "ball mass m_B")},
     "contact": {
