@@ -54,6 +54,7 @@ COMMANDS = {
     "sweep": "sweep",
     "map": "map",
     "fit": "fit",
+    "customise": "customise",
     "export-vtk": "vtk",
     "animate": "vtk",
     "refine": "refine",

@@ -39,6 +39,7 @@ COMMAND_TABLES = {
     "sweep": "sweep",
     "map": "map",
     "fit": "fit",
+    "customise": "customise",
     "refine": "refine",
     "export-vtk": "vtk",
     "animate": "animate",

@@ -1,0 +1,188 @@
+"""``fem-racket customise``: the least lead tape that brings a racket to catalogue targets.
+
+``fem-racket customise --mesh racket.vtu --swing-weight 330 --balance 0.32 --places 12,3/9,handle
+--out custom.vtu`` solves for the least total added mass at the allowed places meeting every
+target (each a value or a range LOW:HIGH; :mod:`fem_racket.studies.customise`), writes the
+customised racket as a mesh file (with a ``.json`` sidecar), maps e_A and v_out before and after
+(``--maps``: .png, .nc or .csv) and prints the placement; unreachable targets are refused with
+the range the places can reach.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from fem_racket.cli.common import (
+    add_config_option,
+    add_frame_options,
+    add_swing_options,
+    frame_from_args,
+    print_json,
+    run_parameters,
+    significant,
+)
+from fem_racket.frame.clock import PLACES
+from fem_racket.frame.mesh import FrameMesh, frame_mesh
+from fem_racket.frame.specs import KG_CM2
+from fem_racket.studies.customise import Target
+from fem_racket.validation import InputError
+
+#: Where the mesh and the maps go unless --out / --maps are given.
+DEFAULT_OUTPUT = Path("output") / "customised.vtu"
+DEFAULT_MAPS = Path("output") / "customised_map.png"
+#: Target options: dest -> (metavar, help, factor to SI, JSON key).
+TARGETS = {
+    "swing_weight": (
+        "KG_CM2",
+        "swing weight about 0.10 m from the butt [kg cm^2]",
+        KG_CM2,
+        "swing_weight_kg_cm2",
+    ),
+    "balance": ("M", "balance point from the butt [m]", 1.0, "balance_m"),
+    "twist_weight": (
+        "KG_CM2",
+        "twistweight, polar moment about the long axis [kg cm^2]",
+        KG_CM2,
+        "twist_weight_kg_cm2",
+    ),
+    "mass": ("KG", "mass [kg]", 1.0, "mass_kg"),
+}
+
+
+def _range(text: str) -> tuple[float, float]:
+    """``VALUE`` or ``LOW:HIGH`` -> (low, high)."""
+    words = str(text).split(":")
+    try:
+        values = [float(w) for w in words]
+    except ValueError:
+        values = []
+    if len(values) not in (1, 2):
+        raise argparse.ArgumentTypeError(f"{text!r} must be a value or a range LOW:HIGH")
+    return values[0], values[-1]
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``customise`` command."""
+    p = sub.add_parser(
+        "customise",
+        help="least lead tape reaching swing weight, balance, twistweight, mass targets",
+        description="Find the least added mass (lead tape) at the allowed places that gives "
+        "the racket the target specs (each a value or LOW:HIGH), write the customised racket "
+        "as a mesh file and map it before and after. Example: fem-racket customise "
+        "--swing-weight 310 --balance 0.3079 --places 12,handle --out custom.vtu",
+    )
+    add_frame_options(p)
+    g = p.add_argument_group("targets (at least one)")
+    for dest, (metavar, text, _, _) in TARGETS.items():
+        g.add_argument(
+            "--" + dest.replace("_", "-"),
+            type=_range,
+            default=None,
+            metavar=metavar,
+            help=f"{text}: a value or LOW:HIGH (default: free)",
+        )
+    g.add_argument(
+        "--places",
+        default=",".join(PLACES),
+        metavar="LIST",
+        help="comma list of places the lead may go: " + ", ".join(PLACES) + " or distances "
+        f"from the butt in m (default {','.join(PLACES)})",
+    )
+    m = p.add_argument_group("maps before and after")
+    m.add_argument(
+        "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
+    )
+    add_swing_options(p)
+    o = p.add_argument_group("output")
+    o.add_argument(
+        "--out",
+        default=str(DEFAULT_OUTPUT),
+        metavar="FILE",
+        help=f"customised racket's mesh file (default {DEFAULT_OUTPUT}); summary in FILE.json",
+    )
+    o.add_argument(
+        "--maps",
+        default=str(DEFAULT_MAPS),
+        metavar="FILE",
+        help=f"maps before and after: .png, .nc or .csv (default {DEFAULT_MAPS})",
+    )
+    o.add_argument(
+        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
+    )
+    o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
+    add_config_option(p, private=("out",))
+    p.set_defaults(func=run)
+
+
+def _targets(args: argparse.Namespace) -> dict[str, Target]:
+    out = {}
+    for dest, (_, _, factor, _) in TARGETS.items():
+        value = getattr(args, dest)
+        if value is not None:
+            try:
+                out[dest] = Target(value[0] * factor, value[1] * factor)
+            except InputError:
+                raise InputError(
+                    f"{dest.replace('_', '-')} = {value[0]:g}:{value[1]:g} is not allowed: "
+                    "need 0 < LOW <= HIGH"
+                ) from None
+    if not out:
+        raise InputError(
+            "targets = none is not allowed: give at least one of --swing-weight, --balance, "
+            "--twist-weight, --mass"
+        )
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    """Solve, write the mesh, its sidecar and the maps, print the placement."""
+    from fem_racket.io.map_files import check_map_output, write_map
+    from fem_racket.io.mesh_files import write_mesh
+    from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
+    from fem_racket.studies.customise import customise
+    from fem_racket.studies.racket_map import racket_map
+
+    targets = _targets(args)
+    places = [p.strip() for p in args.places.split(",") if p.strip()]
+    out, maps_path = Path(args.out), Path(args.maps)
+    for f in (out, sidecar_path(out)):
+        check_output_path(f, overwrite=args.overwrite)
+    check_map_output(maps_path, overwrite=args.overwrite)
+    frame = frame_from_args(args)
+    mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
+    result = customise(mesh, targets, places)
+    swing = {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
+    maps = [
+        racket_map(m, name=name, speed=args.speed, **swing)
+        for name, m in (("before", mesh), ("customised", result.mesh))
+    ]
+    summary = result.summary()
+    summary["targets"] = {
+        TARGETS[k][3]: [t.low / TARGETS[k][2], t.high / TARGETS[k][2]] for k, t in targets.items()
+    }
+    summary["maps"] = {m.name: m.summary(curves=False) for m in maps}
+    summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
+    meta = provenance(run_parameters(args))
+    with atomic_outputs([out, sidecar_path(out)], overwrite=args.overwrite) as (tmp, side):
+        write_mesh(result.mesh, tmp, overwrite=True)
+        side.write_text(json.dumps({**meta, **summary}, indent=2, default=str) + "\n")
+    write_map(maps, maps_path, overwrite=args.overwrite, parameters=run_parameters(args))
+    if args.json:
+        print_json(summary)
+        return 0
+    print(f"{'added mass':<24} {significant(summary['added_mass_g'], 5):>10} g")
+    for place, grams in summary["placement_g"].items():
+        print(f"  at {place:<20} {significant(grams, 5):>10} g")
+    print(f"{'':<24} {'before':>12} {'after':>12}")
+    for key, value in summary["before"].items():
+        after = summary["after"][key]
+        text = [("-" if v is None else significant(v, 6)) for v in (value, after)]
+        print(f"{key:<24} {text[0]:>12} {text[1]:>12}")
+    for name in ("before", "customised"):
+        spots = summary["maps"][name]
+        best = significant(spots["max_apparent_cor_x_over_l"], 4)
+        print(f"{'max e_A ' + name:<24} {best:>12} x/L")
+    print(f"{'written':<24} {out}, {maps_path}")
+    return 0

@@ -1,0 +1,86 @@
+"""``fem-racket customise``: the written racket has the reported specs; planted lead recovered."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from clirun import run
+
+from fem_racket import frame_mesh, standard_frame
+from fem_racket.frame.catalogue import catalogue
+from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.lead import Lead, add_lead
+from fem_racket.frame.specs import KG_CM2
+from fem_racket.io.mesh_files import read_mesh
+
+
+def test_customise_recovers_planted_lead_and_the_mesh_has_the_reported_specs(capsys, tmp_path):
+    planted = {"12": 0.006, "handle": 0.004}
+    mesh = frame_mesh(standard_frame(), 20)
+    want = catalogue(add_lead(mesh, [Lead(p, m) for p, m in planted.items()], HeadEllipse(0.68)))
+    out, maps = tmp_path / "c.vtu", tmp_path / "c.nc"
+    code, text, err = run(
+        capsys,
+        "customise",
+        "--swing-weight",
+        repr(want.swing_weight / KG_CM2),
+        "--balance",
+        repr(want.balance),
+        "--places",
+        "12,handle",
+        "--out",
+        out,
+        "--maps",
+        maps,
+        "--json",
+    )
+    assert code == 0, err
+    data = json.loads(text)
+    assert data["placement_g"] == pytest.approx({p: m * 1e3 for p, m in planted.items()}, rel=1e-8)
+    assert data["added_mass_g"] == pytest.approx(10.0, rel=1e-8)
+    # every spec recomputed from the written mesh equals the reported one (issue 28: 1e-9)
+    again = catalogue(read_mesh(out)).as_dict()
+    for key, value in data["after"].items():
+        assert again[key] == (None if value is None else pytest.approx(value, rel=1e-9)), key
+    assert data["after"]["swing_weight_kg_cm2"] == pytest.approx(
+        want.swing_weight / KG_CM2, rel=1e-12
+    )
+    assert set(data["maps"]) == {"before", "customised"}
+    assert maps.is_file() and (tmp_path / "c.vtu.json").is_file()
+
+
+def test_customise_range_target_and_table(capsys, tmp_path):
+    code, text, err = run(
+        capsys,
+        "customise",
+        "--swing-weight",
+        "305:320",
+        "--mass",
+        "0.3:0.4",
+        "--places",
+        "3/9",
+        "--out",
+        tmp_path / "c.vtu",
+        "--maps",
+        tmp_path / "c.png",
+    )
+    assert code == 0, err
+    assert "at 3/9" in text and "swing_weight_kg_cm2" in text
+
+
+@pytest.mark.parametrize(
+    ("args", "says"),
+    [
+        (["--swing-weight", "290", "--places", "12"], "can reach [301.083, inf] kg cm^2"),
+        ([], "give at least one of --swing-weight"),
+        (["--mass", "0.4:0.3"], "need 0 < LOW <= HIGH"),
+        (["--mass", "0.4", "--places", "13"], "place = '13' is not allowed"),
+        (["--twist-weight", "15", "--places", "3/9"], "rhoIp"),
+    ],
+)
+def test_customise_refuses_in_one_line_and_writes_nothing(capsys, tmp_path, args, says):
+    out = tmp_path / "c.vtu"
+    code, _, err = run(capsys, "customise", *args, "--out", out, "--maps", tmp_path / "m.png")
+    assert code == 2 and says in err and len(err.splitlines()) == 1, err
+    assert not out.exists()
