@@ -55,6 +55,7 @@ COMMANDS = {
     "map": "map",
     "fit": "fit",
     "customise": "customise",
+    "closest": "closest",
     "export-vtk": "vtk",
     "animate": "vtk",
     "refine": "refine",

@@ -23,44 +23,17 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
-from fem_racket.frame.clock import PLACES
+from fem_racket.cli.target_options import (
+    add_target_options,
+    places_of,
+    target_summary,
+    targets_from_args,
+)
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
-from fem_racket.frame.specs import KG_CM2
-from fem_racket.studies.customise import Target
-from fem_racket.validation import InputError
 
 #: Where the mesh and the maps go unless --out / --maps are given.
 DEFAULT_OUTPUT = Path("output") / "customised.vtu"
 DEFAULT_MAPS = Path("output") / "customised_map.png"
-#: Target options: dest -> (metavar, help, factor to SI, JSON key).
-TARGETS = {
-    "swing_weight": (
-        "KG_CM2",
-        "swing weight about 0.10 m from the butt [kg cm^2]",
-        KG_CM2,
-        "swing_weight_kg_cm2",
-    ),
-    "balance": ("M", "balance point from the butt [m]", 1.0, "balance_m"),
-    "twist_weight": (
-        "KG_CM2",
-        "twistweight, polar moment about the long axis [kg cm^2]",
-        KG_CM2,
-        "twist_weight_kg_cm2",
-    ),
-    "mass": ("KG", "mass [kg]", 1.0, "mass_kg"),
-}
-
-
-def _range(text: str) -> tuple[float, float]:
-    """``VALUE`` or ``LOW:HIGH`` -> (low, high)."""
-    words = str(text).split(":")
-    try:
-        values = [float(w) for w in words]
-    except ValueError:
-        values = []
-    if len(values) not in (1, 2):
-        raise argparse.ArgumentTypeError(f"{text!r} must be a value or a range LOW:HIGH")
-    return values[0], values[-1]
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -74,22 +47,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--swing-weight 310 --balance 0.3079 --places 12,handle --out custom.vtu",
     )
     add_frame_options(p)
-    g = p.add_argument_group("targets (at least one)")
-    for dest, (metavar, text, _, _) in TARGETS.items():
-        g.add_argument(
-            "--" + dest.replace("_", "-"),
-            type=_range,
-            default=None,
-            metavar=metavar,
-            help=f"{text}: a value or LOW:HIGH (default: free)",
-        )
-    g.add_argument(
-        "--places",
-        default=",".join(PLACES),
-        metavar="LIST",
-        help="comma list of places the lead may go: " + ", ".join(PLACES) + " or distances "
-        f"from the butt in m (default {','.join(PLACES)})",
-    )
+    add_target_options(p)
     m = p.add_argument_group("maps before and after")
     m.add_argument(
         "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
@@ -116,26 +74,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def _targets(args: argparse.Namespace) -> dict[str, Target]:
-    out = {}
-    for dest, (_, _, factor, _) in TARGETS.items():
-        value = getattr(args, dest)
-        if value is not None:
-            try:
-                out[dest] = Target(value[0] * factor, value[1] * factor)
-            except InputError:
-                raise InputError(
-                    f"{dest.replace('_', '-')} = {value[0]:g}:{value[1]:g} is not allowed: "
-                    "need 0 < LOW <= HIGH"
-                ) from None
-    if not out:
-        raise InputError(
-            "targets = none is not allowed: give at least one of --swing-weight, --balance, "
-            "--twist-weight, --mass"
-        )
-    return out
-
-
 def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.io.map_files import check_map_output, write_map
@@ -144,8 +82,8 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.studies.customise import customise
     from fem_racket.studies.racket_map import racket_map
 
-    targets = _targets(args)
-    places = [p.strip() for p in args.places.split(",") if p.strip()]
+    targets = targets_from_args(args)
+    places = places_of(args)
     out, maps_path = Path(args.out), Path(args.maps)
     for f in (out, sidecar_path(out)):
         check_output_path(f, overwrite=args.overwrite)
@@ -159,9 +97,7 @@ def run(args: argparse.Namespace) -> int:
         for name, m in (("before", mesh), ("customised", result.mesh))
     ]
     summary = result.summary()
-    summary["targets"] = {
-        TARGETS[k][3]: [t.low / TARGETS[k][2], t.high / TARGETS[k][2]] for k, t in targets.items()
-    }
+    summary["targets"] = target_summary(targets)
     summary["maps"] = {m.name: m.summary(curves=False) for m in maps}
     summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
     meta = provenance(run_parameters(args))

@@ -40,6 +40,7 @@ COMMAND_TABLES = {
     "map": "map",
     "fit": "fit",
     "customise": "customise",
+    "closest": "closest",
     "refine": "refine",
     "export-vtk": "vtk",
     "animate": "animate",

@@ -25,7 +25,7 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.specs import KG_CM2
 from fem_racket.validation import InputError, show
 
-__all__ = ["SPECS", "Customisation", "Target", "customise"]
+__all__ = ["SPECS", "Customisation", "Target", "customise", "plan_lead"]
 
 #: Targets a customisation can meet -> (unit shown, factor from SI to it).
 SPECS = {
@@ -149,65 +149,48 @@ def _reachable(
                 ends.append(_value(base, coef, name, res.x) if res.status == 0 else np.nan)
         return ends[0], ends[1]
     zero = np.zeros(coef.shape[0])
-    if _solve(coef, base, others, zero).status != 0:
+    res = _solve(coef, base, others, zero)
+    if res.status != 0:
         return np.nan, np.nan
-    lo_x, hi_x = float(coef[:, 1].min()), float(coef[:, 1].max())
+    # the balances reachable form an interval: bisect on "B >= b feasible" and "B <= b feasible"
+    top = max(float(coef[:, 1].max()), base.balance) * 2.0
     ends = []
-    for edge in (min(lo_x, base.balance), max(hi_x, base.balance)):
-        inside, outside = base.balance, edge
-        if _solve(coef, base, {**others, name: _window(base.balance, edge)}, zero).status != 0:
-            inside = _feasible_point(base, coef, others)
+    for below in (True, False):
+        good = bad = _value(base, coef, "balance", res.x)
+        bad = 1e-12 if below else top
         for _ in range(60):
-            mid = 0.5 * (inside + outside)
-            ok = _solve(coef, base, {**others, name: _window(inside, mid)}, zero).status == 0
-            inside, outside = (mid, outside) if ok else (inside, mid)
-        ends.append(inside)
+            mid = 0.5 * (good + bad)
+            window = Target(1e-12, mid) if below else Target(mid, top)
+            ok = _solve(coef, base, {**others, name: window}, zero).status == 0
+            good, bad = (mid, bad) if ok else (good, mid)
+        ends.append(good)
     return ends[0], ends[1]
 
 
-def _window(a: float, b: float) -> Target:
-    return Target(min(a, b), max(a, b))
-
-
-def _feasible_point(base: Catalogue, coef: np.ndarray, others: Mapping[str, Target]) -> float:
-    res = _solve(coef, base, others, np.zeros(coef.shape[0]))
-    return _value(base, coef, "balance", res.x)
-
-
 def _refuse(base: Catalogue, coef: np.ndarray, targets: Mapping[str, Target]) -> InputError:
-    for name, t in targets.items():
-        others = {k: v for k, v in targets.items() if k != name}
-        lo, hi = _reachable(base, coef, name, others)
-        if np.isnan(lo) or (lo <= t.high and t.low <= hi):
-            continue
-        unit, f = SPECS[name]
-        with_others = " with the other targets" if others else ""
-        return InputError(
-            f"{name.replace('_', '-')} = {t.low * f:.6g}..{t.high * f:.6g} {unit} is not "
-            f"reachable: with lead at the allowed places{with_others} it can reach "
-            f"[{lo * f:.6g}, {hi * f:.6g}] {unit}"
-        )
+    """The first target outside its reachable range while the others hold, else the first
+    outside its range alone."""
+    for together in (True, False):
+        for name, t in targets.items():
+            others = {k: v for k, v in targets.items() if k != name} if together else {}
+            lo, hi = _reachable(base, coef, name, others)
+            if np.isnan(lo) or (lo <= t.high and t.low <= hi):
+                continue
+            unit, f = SPECS[name]
+            with_others = " with the other targets" if others else ""
+            return InputError(
+                f"{name.replace('_', '-')} = {t.low * f:.6g}..{t.high * f:.6g} {unit} is not "
+                f"reachable: with lead at the allowed places{with_others} it can reach "
+                f"[{lo * f:.6g}, {hi * f:.6g}] {unit}"
+            )
     return InputError("targets are not reachable together with lead at the allowed places")
 
 
-def customise(
-    mesh: FrameMesh,
-    targets: Mapping[str, Target],
-    places: Sequence[str],
-    head: HeadEllipse | None = None,
-) -> Customisation:
-    """The least total lead at ``places`` meeting ``targets`` (module docstring).
-
-    Parameters
-    ----------
-    mesh : FrameMesh
-        The racket.
-    targets : mapping
-        Keys of :data:`SPECS` -> :class:`Target` (SI).
-    places : sequence of str
-        Allowed places (:data:`fem_racket.frame.clock.PLACES` or distances from the butt [m]).
-    head : HeadEllipse, optional
-        The head (the default head on a racket of this length when None).
+def plan_lead(
+    base: Catalogue, targets: Mapping[str, Target], places: Sequence[str], head: HeadEllipse
+) -> dict[str, float]:
+    """Place -> least lead [kg] bringing a racket with catalogue numbers ``base`` to
+    ``targets`` (module docstring); no mesh needed (the numbers are linear in the masses).
 
     Raises
     ------
@@ -221,13 +204,40 @@ def customise(
     places = list(dict.fromkeys(str(p).strip() for p in places))
     if not places:
         raise InputError("places = [] is not allowed: give at least one place for the lead")
-    head = head or HeadEllipse(mesh.length)
     coef = np.array([lead_moments(p, head) for p in places])
-    before = catalogue(mesh)
-    res = _solve(coef, before, targets, np.ones(len(places)))
+    res = _solve(coef, base, targets, np.ones(len(places)))
     if res.status != 0:
-        raise _refuse(before, coef, targets)
+        raise _refuse(base, coef, targets)
     grams = np.where(res.x > 1e-9, res.x, 0.0)
-    added = {p: float(g / _G) for p, g in zip(places, grams, strict=True)}
+    return {p: float(g / _G) for p, g in zip(places, grams, strict=True)}
+
+
+def customise(
+    mesh: FrameMesh,
+    targets: Mapping[str, Target],
+    places: Sequence[str],
+    head: HeadEllipse | None = None,
+) -> Customisation:
+    """The least total lead at ``places`` meeting ``targets``, on the mesh (:func:`plan_lead`).
+
+    Parameters
+    ----------
+    mesh : FrameMesh
+        The racket.
+    targets : mapping
+        Keys of :data:`SPECS` -> :class:`Target` (SI).
+    places : sequence of str
+        Allowed places (:data:`fem_racket.frame.clock.PLACES` or distances from the butt [m]).
+    head : HeadEllipse, optional
+        The head (the default head on a racket of this length when None).
+
+    Returns
+    -------
+    Customisation
+        Its ``after`` numbers recomputed from the customised mesh.
+    """
+    head = head or HeadEllipse(mesh.length)
+    before = catalogue(mesh)
+    added = plan_lead(before, targets, places, head)
     custom = add_lead(mesh, [Lead(p, m) for p, m in added.items()], head)
     return Customisation(added, custom, before, catalogue(custom))
