@@ -61,4 +61,4 @@ def with_lead(frame: Frame | FrameMesh, args: argparse.Namespace, elements: int)
     if not leads:
         return frame
     mesh = frame_mesh(frame, elements) if isinstance(frame, Frame) else frame
-    return add_lead(mesh, leads, HeadEllipse(mesh.length))
+    return add_lead(mesh, leads, HeadEllipse().on_frame(mesh.length))

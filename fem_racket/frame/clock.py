@@ -7,30 +7,32 @@ axis [m] (in the string plane); a pair such as 3/9 is two equal halves at +r and
 adds to the mass and to the moments about axes across the frame as one mass at x does, and
 m r^2 to the polar moment about the long axis (the twistweight).
 
-Head geometry (an assumption, not a measured frame): the frame's centre line around the head is
-an ellipse of length ``length_m`` and width ``width_m`` whose far end is the tip (x = L). The
-default is a "midplus" head of about 100 in^2 = 645 cm^2 (string bed about 33 x 25 cm:
-pi/4 x 0.33 x 0.25 = 0.0648 m^2), giving r = 0.125 m at 3/9 (DESIGN.md section 10: r is about
-0.11-0.13 m on rackets). Clock hour h sits at the angle theta = 30 deg x h from the tip::
+Head geometry (an assumption, not a measured frame): the string bed is an ellipse of length
+``length_m`` and width ``width_m`` centred on the long axis at ``centre`` x/L; the lead sits on
+the frame around it. The default is the 100 in^2 (645 cm^2) head of
+:mod:`fem_racket.frame.head`'s ``DEFAULT_HEAD`` (0.326 m x 0.252 m centred at 0.74 L), so r at
+3/9 is 0.126 m (DESIGN.md section 10: r is about 0.11-0.13 m on rackets). Clock hour h sits at
+the angle theta = 30 deg x h from the tip::
 
     x = x_c + a cos(theta),   r = b |sin(theta)|      (a, b: half the length and width)
 
-so 12 is the tip (x = L, r = 0), 3/9 the widest point (x = x_c, r = b) and 2/10, 4/8 lie at
-x_c +- a/2, r = b sqrt(3)/2. The throat is the head's butt end (6 o'clock: x = x_c - a, r = 0);
-the handle is the middle of the grip, :data:`HANDLE_X` = 0.10 m from the butt (the swing-weight
-axis, so lead there changes the swing weight only by its own tiny strip inertia); the butt is
-x = 0.
+so 3/9 is the widest point (x = x_c, r = b) and 2/10, 4/8 lie at x_c +- a/2, r = b sqrt(3)/2;
+12 is the tip of the frame (x = L, r = 0; the frame closes the head beyond the bed). The throat
+is the bed's butt end (6 o'clock: x = x_c - a, r = 0); the handle is the middle of the grip,
+:data:`HANDLE_X` = 0.10 m from the butt (the swing-weight axis, so lead there changes the swing
+weight only by its own tiny strip inertia); the butt is x = 0.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from fem_racket.validation import InputError, check_positive, show
 
 __all__ = [
     "CLOCK_PLACES",
+    "DEFAULT_HEAD_CENTRE",
     "DEFAULT_HEAD_LENGTH",
     "DEFAULT_HEAD_WIDTH",
     "HANDLE_X",
@@ -40,8 +42,8 @@ __all__ = [
     "place_at",
 ]
 
-#: Length and width of the default head's centre line [m] (about 645 cm^2, a 100 in^2 head).
-DEFAULT_HEAD_LENGTH, DEFAULT_HEAD_WIDTH = 0.33, 0.25
+#: Length and width of the default string bed [m] and its centre [x/L] (100 in^2 = 645 cm^2).
+DEFAULT_HEAD_LENGTH, DEFAULT_HEAD_WIDTH, DEFAULT_HEAD_CENTRE = 0.326, 0.252, 0.74
 #: The "handle" place: middle of the grip, from the butt [m].
 HANDLE_X = 0.10
 #: Clock places -> the hour whose angle from the tip they sit at.
@@ -52,38 +54,47 @@ PLACES = (*CLOCK_PLACES, "throat", "handle", "butt")
 
 @dataclass(frozen=True)
 class HeadEllipse:
-    """The head's centre line: an ellipse ending at the tip of a racket of length ``racket_m``.
+    """The string bed: an ellipse on the long axis (the fields of ``frame.head.HeadOutline``).
 
     Parameters
     ----------
-    racket_m : float
-        Racket length L [m].
     length_m, width_m : float
-        Head length (along the axis) and width [m]; the head must fit on the racket.
+        Bed length (along the axis) and width [m].
+    centre : float
+        Centre of the ellipse as x/L from the butt.
+    frame_length_m : float
+        Frame length L [m]; the bed must lie on the frame.
     """
 
-    racket_m: float
     length_m: float = DEFAULT_HEAD_LENGTH
     width_m: float = DEFAULT_HEAD_WIDTH
+    centre: float = DEFAULT_HEAD_CENTRE
+    frame_length_m: float = 0.680
 
     def __post_init__(self) -> None:
-        check_positive("racket length", self.racket_m, "m")
         check_positive("head length", self.length_m, "m")
         check_positive("head width", self.width_m, "m")
-        if self.length_m >= self.racket_m:
+        check_positive("frame length", self.frame_length_m, "m")
+        lo, hi = self.centre_m - self.length_m / 2.0, self.centre_m + self.length_m / 2.0
+        if not 0.0 <= lo < hi <= self.frame_length_m:
             raise InputError(
-                f"head length = {show(self.length_m)} m is not allowed: must be shorter than "
-                f"the racket ({self.racket_m:g} m)"
+                f"head length = {show(self.length_m)} m is not allowed with centre "
+                f"{show(self.centre)} x/L: the head ({lo:.4g} to {hi:.4g} m) must lie on the "
+                f"frame (0 to {self.frame_length_m:.4g} m)"
             )
+
+    def on_frame(self, frame_length_m: float) -> HeadEllipse:
+        """The same head (size and centre x/L) on a frame of length ``frame_length_m`` [m]."""
+        return replace(self, frame_length_m=frame_length_m)
 
     @property
     def centre_m(self) -> float:
-        """x of the head's centre (the widest point) from the butt [m]."""
-        return self.racket_m - self.length_m / 2.0
+        """x of the bed's centre (the widest point) from the butt [m]."""
+        return self.centre * self.frame_length_m
 
     @property
     def area_m2(self) -> float:
-        """Area inside the centre line [m^2]."""
+        """Area of the bed [m^2]."""
         return math.pi * self.length_m * self.width_m / 4.0
 
 
@@ -119,9 +130,9 @@ def place_at(name: str, head: HeadEllipse) -> Place:
         theta = math.radians(30.0 * CLOCK_PLACES[key])
         a, b = head.length_m / 2.0, head.width_m / 2.0
         x = head.centre_m + a * math.cos(theta)
-        return Place(key, head.racket_m if key == "12" else x, b * abs(math.sin(theta)))
+        return Place(key, head.frame_length_m if key == "12" else x, b * abs(math.sin(theta)))
     if key == "throat":
-        return Place(key, head.racket_m - head.length_m, 0.0)
+        return Place(key, head.centre_m - head.length_m / 2.0, 0.0)
     if key == "handle":
         return Place(key, HANDLE_X, 0.0)
     if key == "butt":
@@ -130,9 +141,9 @@ def place_at(name: str, head: HeadEllipse) -> Place:
         x = float(key)
     except ValueError:
         x = math.nan
-    if not 0.0 <= x <= head.racket_m:  # also NaN
+    if not 0.0 <= x <= head.frame_length_m:  # also NaN
         raise InputError(
             f"place = {show(name)} is not allowed: must be one of {', '.join(PLACES)} or a "
-            f"distance from the butt in m within [0, {head.racket_m:g}]"
+            f"distance from the butt in m within [0, {head.frame_length_m:g}]"
         )
     return Place(key, x, 0.0)

@@ -85,7 +85,7 @@ def lead_moments(
     :data:`~.masses.MIN_GAP` x L shift these by at most ~1e-6 relative).
     """
     p = place_at(place, head)
-    a, b = _strip(p, head.racket_m, width)
+    a, b = _strip(p, head.frame_length_m, width)
     xs = 0.5 * (a + b)
     sw = ((b - axis) ** 3 - (a - axis) ** 3) / (3.0 * (b - a))
     return np.array([1.0, xs, sw, p.r**2])
@@ -95,10 +95,10 @@ def add_lead(
     mesh: FrameMesh, leads: Sequence[Lead], head: HeadEllipse, *, width: float = DEFAULT_WIDTH
 ) -> FrameMesh:
     """``mesh`` with every lead added as a strip (module docstring); massless leads are skipped."""
-    if abs(head.racket_m - mesh.length) > 1e-9 * mesh.length:
+    if abs(head.frame_length_m - mesh.length) > 1e-9 * mesh.length:
         raise InputError(
-            f"head racket length = {show(head.racket_m)} m is not allowed: must be the frame's "
-            f"length {mesh.length:g} m"
+            f"head frame length = {show(head.frame_length_m)} m is not allowed: must be the "
+            f"frame's length {mesh.length:g} m"
         )
     places = [(lead, place_at(lead.place, head)) for lead in leads if lead.mass > 0.0]
     if not places:

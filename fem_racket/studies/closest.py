@@ -135,7 +135,7 @@ def closest(
     lead_targets = {k: t for k, t in targets.items() if k in SPECS}
     out = []
     for (d, missing), _, r in ranked[:count]:
-        head = HeadEllipse(r.specs.length)
+        head = HeadEllipse().on_frame(r.specs.length)
         for p in places:  # a bad place is the user's error, not this racket's limit
             lead_moments(p, head)
         try:

@@ -236,7 +236,7 @@ def customise(
     Customisation
         Its ``after`` numbers recomputed from the customised mesh.
     """
-    head = head or HeadEllipse(mesh.length)
+    head = head or HeadEllipse().on_frame(mesh.length)
     before = catalogue(mesh)
     added = plan_lead(before, targets, places, head)
     custom = add_lead(mesh, [Lead(p, m) for p, m in added.items()], head)

@@ -18,7 +18,7 @@ from fem_racket.io.mesh_files import read_mesh
 def test_customise_recovers_planted_lead_and_the_mesh_has_the_reported_specs(capsys, tmp_path):
     planted = {"12": 0.006, "handle": 0.004}
     mesh = frame_mesh(standard_frame(), 20)
-    want = catalogue(add_lead(mesh, [Lead(p, m) for p, m in planted.items()], HeadEllipse(0.68)))
+    want = catalogue(add_lead(mesh, [Lead(p, m) for p, m in planted.items()], HeadEllipse()))
     out, maps = tmp_path / "c.vtu", tmp_path / "c.nc"
     code, text, err = run(
         capsys,

@@ -27,7 +27,7 @@ def test_modes_reports_swing_weight_and_the_lead(capsys):
     assert base["twist_weight_kg_cm2"] is None  # the paper's frame has no polar mass data
     got = modes_json(capsys, "--add-mass", "3/9:10", "--add-mass", "0.32:5")
     mesh = frame_mesh(standard_frame(), 20)
-    want = catalogue(add_lead(mesh, [Lead("3/9", 0.01), Lead("0.32", 0.005)], HeadEllipse(0.68)))
+    want = catalogue(add_lead(mesh, [Lead("3/9", 0.01), Lead("0.32", 0.005)], HeadEllipse()))
     assert got["mass_kg"] == pytest.approx(base["mass_kg"] + 0.015, rel=1e-13)
     assert got["swing_weight_kg_cm2"] == pytest.approx(want.swing_weight / KG_CM2, rel=1e-13)
     assert got["cg_m"] == pytest.approx(want.balance, rel=1e-13)

@@ -23,7 +23,7 @@ def mesh():
 
 @pytest.fixture(scope="module")
 def head(mesh):
-    return HeadEllipse(mesh.length)
+    return HeadEllipse().on_frame(mesh.length)
 
 
 def specs(mesh):
@@ -44,8 +44,8 @@ def test_clock_places_on_the_ellipse(head):
         p = place_at(name, head)
         # on the ellipse ((x - xc)/a)^2 + (r/b)^2 = 1
         assert ((p.x - xc) / a) ** 2 + (p.r / b) ** 2 == pytest.approx(1.0, abs=1e-14)
-    assert place_at("12", head).x == head.racket_m
-    assert place_at("throat", head).x == pytest.approx(head.racket_m - head.length_m, abs=1e-15)
+    assert place_at("12", head).x == head.frame_length_m
+    assert place_at("throat", head).x == pytest.approx(xc - a, abs=1e-15)
     assert place_at("0.32", head).x == 0.32
 
 
@@ -110,7 +110,7 @@ def test_unknown_place(head, bad):
 
 def test_head_must_fit(mesh):
     with pytest.raises(InputError, match="head length"):
-        HeadEllipse(0.3)
-    with pytest.raises(InputError, match="racket length"):
-        add_lead(mesh, [Lead("12", 0.01)], HeadEllipse(0.7))
-    assert math.isclose(HeadEllipse(0.7).centre_m, 0.7 - 0.165)
+        HeadEllipse(frame_length_m=0.3)
+    with pytest.raises(InputError, match="frame length"):
+        add_lead(mesh, [Lead("12", 0.01)], HeadEllipse().on_frame(0.7))
+    assert math.isclose(HeadEllipse().on_frame(0.7).centre_m, 0.74 * 0.7)

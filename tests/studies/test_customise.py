@@ -30,7 +30,7 @@ def exact(value):
     ],
 )
 def test_recovers_a_planted_solution(mesh, planted):
-    head = HeadEllipse(mesh.length)
+    head = HeadEllipse().on_frame(mesh.length)
     target = catalogue(add_lead(mesh, [Lead(p, m) for p, m in planted.items()], head), f1=False)
     # two places, two value targets: the planted masses are the only solution
     out = customise(
