@@ -56,6 +56,7 @@ COMMANDS = {
     "fit": "fit",
     "customise": "customise",
     "closest": "closest",
+    "compare": "compare",
     "export-vtk": "vtk",
     "animate": "vtk",
     "refine": "refine",

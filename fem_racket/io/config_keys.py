@@ -41,6 +41,7 @@ COMMAND_TABLES = {
     "fit": "fit",
     "customise": "customise",
     "closest": "closest",
+    "compare": "compare",
     "refine": "refine",
     "export-vtk": "vtk",
     "animate": "animate",

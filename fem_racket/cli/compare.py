@@ -1,0 +1,142 @@
+"""``fem-racket compare A B [C ...]``: set-ups side by side, and each minus the first.
+
+Each of A, B, ... is a preset, a mesh file or a run file (its racket, strings and ball), with
+optional lead: ``standard+12:10`` (:mod:`fem_racket.io.setups`); ``--add-mass`` adds lead to
+every one. All are played alike (ball speed, swing, impact point). Prints a table (or
+``--json``: ``rackets`` with each one's values, ``differences`` with each later one minus the
+first) and writes the one-page figure (.png, .svg, .pdf) and/or netCDF of the maps (.nc).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from fem_racket.cli.common import add_config_option, add_swing_options, print_json, run_parameters
+from fem_racket.cli.lead_options import add_lead_option, leads_of
+
+#: Where the figure goes unless --out is given.
+DEFAULT_OUTPUT = Path("output") / "compare.png"
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``compare`` command."""
+    p = sub.add_parser(
+        "compare",
+        help="rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
+        description="Compare set-ups (presets, mesh files or run files with their own strings "
+        "and ball; SOURCE+LOCATION:GRAMS adds lead) played alike: specs, e_A and v_out maps "
+        "with their differences, sweet spots, power region, handle shock and contact time. "
+        "Example: fem-racket compare standard standard+12:10 --out cmp.png cmp.nc",
+    )
+    p.add_argument(
+        "rackets",
+        nargs="+",
+        metavar="RACKET",
+        help="preset (standard, rigid), mesh file or .toml run file, each optionally "
+        "+LOCATION:GRAMS (lead); at least two",
+    )
+    r = p.add_argument_group("rackets")
+    r.add_argument(
+        "--elements",
+        type=int,
+        default=20,
+        metavar="N",
+        help="beam elements of presets and segment frames (default 20)",
+    )
+    add_lead_option(r)
+    g = p.add_argument_group("play (the same for every racket)")
+    g.add_argument(
+        "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
+    )
+    g.add_argument(
+        "--position",
+        type=float,
+        default=0.75,
+        metavar="X_OVER_L",
+        help="impact point of the contact time and handle shock [x/L] (default 0.75)",
+    )
+    g.add_argument(
+        "--positions",
+        default="0.5:1.0:200",
+        metavar="VALUES",
+        help="impact points of the maps x/L: start:stop:num or a comma list (default 0.5:1.0:200)",
+    )
+    g.add_argument(
+        "--grip",
+        choices=("firm", "loose"),
+        default="firm",
+        help="the hand holding the racket for the handle shock (default firm)",
+    )
+    add_swing_options(p)
+    o = p.add_argument_group("output")
+    o.add_argument(
+        "--out",
+        nargs="+",
+        default=None,
+        metavar="FILE",
+        help=f"file(s): a figure .png/.svg/.pdf and/or maps .nc (default {DEFAULT_OUTPUT})",
+    )
+    o.add_argument(
+        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
+    )
+    o.add_argument("--json", action="store_true", help="print a JSON object (default: a table)")
+    add_config_option(p, private=("out",))
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Read the set-ups, compare, write the files and print."""
+    from fem_racket.io.compare_files import check_compare_output, table_rows, write_compare
+    from fem_racket.io.setups import read_setup
+    from fem_racket.studies.compare import Play, Setup, compare, differences, unique_names
+    from fem_racket.studies.grid import as_values
+    from fem_racket.validation import InputError
+
+    if len(args.rackets) < 2:
+        raise InputError(f"rackets = {len(args.rackets)} given is not allowed: need at least 2")
+    outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
+    for path in outs:
+        check_compare_output(path, overwrite=args.overwrite)
+    setups = [read_setup(s, elements=args.elements, leads=leads_of(args)) for s in args.rackets]
+    names = unique_names([s.name for s in setups])
+    setups = [
+        Setup(n, s.frame, s.ball_mass, s.kcb, s.zeta, s.law, s.elements)
+        for n, s in zip(names, setups, strict=True)
+    ]
+    play = Play(
+        speed=args.speed,
+        racket_speed=args.racket_speed,
+        reference=args.reference,
+        pivot=args.pivot,
+        positions=as_values("position", args.positions),
+        position=args.position,
+        grip=args.grip,
+    )
+    reports = compare(setups, play)
+    diffs = differences(reports)
+    for path in outs:
+        write_compare(
+            reports, diffs, path, overwrite=args.overwrite, parameters=run_parameters(args)
+        )
+    if args.json:
+        scalar = {n: {k: v for k, v in d.items() if "curve" not in k} for n, d in diffs.items()}
+        print_json(
+            {
+                "rackets": [{"name": r.map.name, **r.values()} for r in reports],
+                "differences": scalar,
+                "files": [str(p) for p in outs],
+            }
+        )
+        return 0
+    head = ["", *names, *(f"{n} - {names[0]}" for n in diffs)]
+    rows = [head, *table_rows(reports, diffs)]
+    width = [max(len(str(row[k])) for row in rows) for k in range(len(head))]
+    for row in rows:
+        cells = [f"{row[0]:<{width[0]}}"] + [
+            f"{c:>{w}}" for c, w in zip(row[1:], width[1:], strict=True)
+        ]
+        print("  ".join(cells))
+    for path in outs:
+        print(f"written {path}")
+    return 0

@@ -1,0 +1,179 @@
+"""Files of ``compare``: a one-page figure (PNG, SVG or PDF) and netCDF of the maps.
+
+The figure: a table of every racket's numbers (and B - A), e_A and v_out along the frame with
+the power regions shaded and the best points marked, and the difference curves of each racket
+minus the first. The netCDF: the maps of :func:`fem_racket.io.map_files.map_dataset` (dims
+racket, position) plus ``apparent_cor_difference`` and ``ball_speed_out_difference_m_s`` (dims
+difference, position: each racket after the first minus the first) and every scalar of the
+report as a variable over racket (NaN where undefined).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from fem_racket.io.figure_files import FIGURE_FORMATS, save_figure
+from fem_racket.io.map_files import map_dataset
+from fem_racket.outputs import atomic_output, check_output_path, provenance
+from fem_racket.studies.compare import Report
+from fem_racket.validation import InputError
+
+__all__ = ["COMPARE_SUFFIXES", "ROWS", "check_compare_output", "plot_compare", "write_compare"]
+
+#: Suffixes compare writes: a figure or netCDF.
+COMPARE_SUFFIXES = tuple(f".{f}" for f in FIGURE_FORMATS) + (".nc",)
+#: Rows of the table: value key -> (label, factor, digits).
+ROWS = {
+    "mass_kg": ("mass [g]", 1e3, 1),
+    "balance_m": ("balance [cm]", 1e2, 2),
+    "swing_weight_kg_cm2": ("swing weight [kg cm^2]", 1.0, 1),
+    "twist_weight_kg_cm2": ("twistweight [kg cm^2]", 1.0, 2),
+    "f1_hz": ("f1 [Hz]", 1.0, 1),
+    "ball_mass_kg": ("ball [g]", 1e3, 1),
+    "node_x_over_l": ("mode-1 node [x/L]", 1.0, 3),
+    "max_apparent_cor_x_over_l": ("max e_A at [x/L]", 1.0, 3),
+    "max_apparent_cor": ("max e_A [-]", 1.0, 3),
+    "max_ball_speed_out_m_s": ("max v_out [m/s]", 1.0, 2),
+    "power_region_length_m": ("power region [cm]", 1e2, 1),
+    "contact_time_s": ("contact time [ms]", 1e3, 3),
+    "handle_shock_rms_n": ("handle shock RMS [N]", 1.0, 1),
+    "peak_grip_force_n": ("peak grip force [N]", 1.0, 1),
+}
+
+
+def check_compare_output(path: str | os.PathLike, *, overwrite: bool = False) -> Path:
+    """``path`` if compare can write it (suffix and destination checked before the work)."""
+    path = Path(path)
+    if path.suffix.lower() not in COMPARE_SUFFIXES:
+        raise InputError(
+            f"output = '{path}' is not allowed: must end in {', '.join(COMPARE_SUFFIXES)}"
+        )
+    return check_output_path(path, overwrite=overwrite)
+
+
+def _cell(value: float | None, factor: float, digits: int, signed: bool = False) -> str:
+    if value is None:
+        return "-"
+    return f"{value * factor:{'+' if signed else ''}.{digits}f}"
+
+
+def table_rows(reports: Sequence[Report], diffs: Mapping[str, Mapping[str, Any]]) -> list[list]:
+    """The table: a row per :data:`ROWS` key, a column per racket and per difference."""
+    values = [r.values() for r in reports]
+    rows = []
+    for key, (label, factor, digits) in ROWS.items():
+        row = [label] + [_cell(v[key], factor, digits) for v in values]
+        row += [_cell(d[key], factor, digits, signed=True) for d in diffs.values()]
+        rows.append(row)
+    return rows
+
+
+def plot_compare(
+    reports: Sequence[Report],
+    diffs: Mapping[str, Mapping[str, Any]],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
+) -> Path:
+    """The one-page figure (module docstring), PNG, SVG or PDF by suffix."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8.27, 11.69))
+    grid = fig.add_gridspec(4, 2, height_ratios=[1.6, 1.0, 1.0, 1.0])
+    ax_t = fig.add_subplot(grid[0, :])
+    ax_t.axis("off")
+    names = [r.map.name for r in reports]
+    cols = ["", *names, *(f"{n}\n- {names[0]}" for n in diffs)]
+    n = len(cols) - 1
+    tab = ax_t.table(
+        cellText=table_rows(reports, diffs),
+        colLabels=cols,
+        colWidths=[0.26] + [0.74 / n] * n,
+        loc="center",
+    )
+    tab.auto_set_font_size(False)
+    tab.set_fontsize(7)
+    for (row, _), cell in tab.get_celld().items():
+        cell.set_height(0.085 if row == 0 else 0.058)
+    ax_e, ax_v = fig.add_subplot(grid[1, :]), fig.add_subplot(grid[2, :], sharex=None)
+    ax_de, ax_dv = fig.add_subplot(grid[3, 0]), fig.add_subplot(grid[3, 1])
+    for k, r in enumerate(reports):
+        c, m = f"C{k}", r.map
+        ax_e.plot(m.positions, m.apparent_cor, color=c, label=m.name)
+        ax_v.plot(m.positions, m.ball_speed_out, color=c, label=m.name)
+        ax_v.axvspan(*m.spots.power_region, color=c, alpha=0.12)
+        best = m.spots.max_apparent_cor
+        ax_e.plot([best], [np.interp(best, m.positions, m.apparent_cor)], "o", color=c)
+        if np.isfinite(m.spots.node):
+            for ax in (ax_e, ax_v):
+                ax.axvline(m.spots.node, color=c, ls=":", lw=1)
+    x = reports[0].map.positions
+    for k, (name, d) in enumerate(diffs.items(), start=1):
+        label = f"{name} - {names[0]}"
+        ax_de.plot(x, d["apparent_cor_curve"], color=f"C{k}", label=label)
+        ax_dv.plot(x, d["ball_speed_out_curve_m_s"], color=f"C{k}", label=label)
+    for ax in (ax_de, ax_dv):
+        ax.axhline(0.0, color="k", lw=0.6)
+        ax.set_xlabel("impact point x/L [-]")
+    ax_e.set_ylabel("apparent COR e_A [-]")
+    ax_v.set_ylabel("ball speed out v_out [m/s]")
+    ax_v.set_xlabel("impact point x/L from the butt [-] (dotted: mode-1 nodes; dots: max e_A)")
+    ax_de.set_ylabel("difference in e_A [-]")
+    ax_dv.set_ylabel("difference in v_out [m/s]")
+    m0 = reports[0].map
+    ax_e.set_title(
+        f"ball at {m0.speed:g} m/s; shaded: power region (v_out >= "
+        f"{round(100 * m0.spots.power_fraction)} % of its max)",
+        fontsize=9,
+    )
+    for ax in (ax_e, ax_v, ax_de, ax_dv):
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, loc="best")
+    fig.tight_layout()
+    return save_figure(fig, path, provenance(parameters), overwrite=overwrite)
+
+
+def _dataset(
+    reports: Sequence[Report],
+    diffs: Mapping[str, Mapping[str, Any]],
+    parameters: Mapping[str, Any] | None,
+) -> Any:
+    ds = map_dataset([r.map for r in reports], parameters)
+    ds = ds.assign_coords(
+        difference=("difference", [f"{n} - {reports[0].map.name}" for n in diffs])
+    )
+    for var, key, unit in (
+        ("apparent_cor_difference", "apparent_cor_curve", "1"),
+        ("ball_speed_out_difference_m_s", "ball_speed_out_curve_m_s", "m/s"),
+    ):
+        data = np.array([d[key] for d in diffs.values()], dtype=float)
+        ds[var] = (("difference", "position"), data, {"units": unit})
+    values = [r.values() for r in reports]
+    for key in values[0]:
+        column = [np.nan if v[key] is None else v[key] for v in values]
+        ds[key] = ("racket", np.array(column, dtype=float))
+    return ds
+
+
+def write_compare(
+    reports: Sequence[Report],
+    diffs: Mapping[str, Mapping[str, Any]],
+    path: str | os.PathLike,
+    *,
+    overwrite: bool = False,
+    parameters: Mapping[str, Any] | None = None,
+) -> Path:
+    """Write the figure (.png, .svg, .pdf) or the netCDF (.nc) to ``path``."""
+    path = check_compare_output(path, overwrite=overwrite)
+    if path.suffix.lower() != ".nc":
+        return plot_compare(reports, diffs, path, overwrite=overwrite, parameters=parameters)
+    ds = _dataset(reports, diffs, parameters)
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        ds.to_netcdf(tmp)
+    return path

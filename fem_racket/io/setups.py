@@ -1,0 +1,67 @@
+"""Set-ups named on the command line: a preset, a mesh file or a run file, with optional lead.
+
+``SOURCE[+LOCATION:GRAMS...]``: SOURCE is a preset (``standard``, ``rigid``), a run file
+(``.toml``: its ``[frame]`` with any ``[[frame.lead]]``, ``[ball]`` and ``[contact]``, i.e. the
+racket with its own strings and ball) or a mesh file (any other suffix); each ``+LOCATION:GRAMS``
+adds lead (``standard+12:10+3/9:6``). How the set-ups are played (speed, swing, impact point) is
+the command's, the same for all, so a run file may not set ``[impact]``, ``[hand]``,
+``[solver]`` or ``[output]`` here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.lead import Lead, add_lead, parse_lead
+from fem_racket.frame.mesh import FrameMesh, frame_mesh
+from fem_racket.frame.segments import standard_frame
+from fem_racket.io.config import load_config
+from fem_racket.io.config_keys import PRESETS
+from fem_racket.io.mesh_files import read_mesh
+from fem_racket.studies.compare import Setup
+from fem_racket.validation import InputError
+
+__all__ = ["read_setup"]
+
+#: Run-file tables a set-up may hold (the racket, its strings and its ball).
+SETUP_TABLES = ("frame", "ball", "contact")
+
+
+def _from_run_file(path: Path, elements: int) -> tuple[Setup, list[Lead]]:
+    cfg = load_config(path)
+    extra = sorted(set(cfg.values) - set(SETUP_TABLES)) + sorted(cfg.tables)
+    if extra:
+        raise InputError(
+            f"{path}: [{extra[0]}] is not allowed in a compared set-up: it may hold only "
+            f"{', '.join(f'[{t}]' for t in SETUP_TABLES)} (the command plays every set-up alike)"
+        )
+    d = cfg.defaults()
+    frame = cfg.frame() or standard_frame()
+    kwargs = {k: d[k] for k in ("ball_mass", "kcb", "zeta") if k in d}
+    law = cfg.simulate_kwargs().get("law")
+    return (
+        Setup(path.stem, frame, law=law, elements=d.get("elements", elements), **kwargs),
+        list(d.get("add_mass", [])),
+    )
+
+
+def read_setup(text: str, *, elements: int = 20, leads: Sequence[Lead] = ()) -> Setup:
+    """The set-up ``text`` names (module docstring), with ``leads`` added to every one."""
+    source, *extra = str(text).split("+")
+    more = [parse_lead(e) for e in extra]
+    if source in PRESETS:
+        setup, own = Setup(source, standard_frame(PRESETS[source]), elements=elements), []
+    elif Path(source).suffix.lower() == ".toml":
+        setup, own = _from_run_file(Path(source), elements)
+    else:
+        setup, own = Setup(Path(source).stem, read_mesh(source), elements=elements), []
+    all_leads = [*own, *leads, *more]
+    if not all_leads:
+        return setup
+    mesh = setup.frame
+    mesh = mesh if isinstance(mesh, FrameMesh) else frame_mesh(mesh, setup.elements)
+    mesh = add_lead(mesh, all_leads, HeadEllipse().on_frame(mesh.length))
+    name = setup.name + "".join(f"+{lead.label()}" for lead in [*leads, *more])
+    return Setup(name, mesh, setup.ball_mass, setup.kcb, setup.zeta, setup.law, setup.elements)
