@@ -24,6 +24,7 @@ def _examples() -> list[tuple[str, list[str]]]:
 @pytest.mark.parametrize(("command", "printed"), _examples(), ids=lambda v: str(v)[:40])
 def test_readme_example_output(capsys, monkeypatch, tmp_path, command, printed):
     monkeypatch.chdir(tmp_path)  # an example that writes a file writes it here
+    (tmp_path / "examples").symlink_to(README.parent / "examples")  # the files examples read
     argv = command.split()
     assert argv[0] == "fem-racket"
     code = main(argv[1:])

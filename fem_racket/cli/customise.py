@@ -76,13 +76,13 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
+    from fem_racket.frame.catalogue import catalogue
     from fem_racket.io.map_files import check_map_output, write_map
     from fem_racket.io.mesh_files import write_mesh
     from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
     from fem_racket.studies.customise import customise
     from fem_racket.studies.racket_map import racket_map
 
-    targets = targets_from_args(args)
     places = places_of(args)
     out, maps_path = Path(args.out), Path(args.maps)
     for f in (out, sidecar_path(out)):
@@ -90,6 +90,7 @@ def run(args: argparse.Namespace) -> int:
     check_map_output(maps_path, overwrite=args.overwrite)
     frame = frame_from_args(args)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
+    targets = targets_from_args(args, catalogue(mesh, f1=False))
     result = customise(mesh, targets, places)
     swing = {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
     maps = [

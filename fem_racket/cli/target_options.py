@@ -5,6 +5,7 @@ or a range ``--swing-weight 320:335``, likewise ``--balance``, ``--twist-weight`
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
 from fem_racket.frame.clock import PLACES
 from fem_racket.frame.specs import KG_CM2
@@ -44,8 +45,14 @@ RANKED = {
 }
 
 
-def _range(text: str) -> tuple[float, float]:
-    """``VALUE`` or ``LOW:HIGH`` -> (low, high)."""
+#: The target value meaning "as the racket is now".
+KEEP = "keep"
+
+
+def _range(text: str) -> tuple[float, float] | str:
+    """``VALUE``, ``LOW:HIGH`` -> (low, high), or ``keep``."""
+    if str(text).strip() == KEEP:
+        return KEEP
     try:
         values = [float(w) for w in str(text).split(":")]
     except ValueError:
@@ -64,7 +71,9 @@ def add_target_options(parser: argparse.ArgumentParser, *, ranked: bool = False)
             type=_range,
             default=None,
             metavar=metavar,
-            help=f"{text}: a value or LOW:HIGH (default: free)",
+            help=f"{text}: a value, LOW:HIGH"
+            + ("" if ranked else " or keep (as it is)")
+            + " (default: free)",
         )
     g.add_argument(
         "--places",
@@ -75,12 +84,20 @@ def add_target_options(parser: argparse.ArgumentParser, *, ranked: bool = False)
     )
 
 
-def targets_from_args(args: argparse.Namespace) -> dict[str, Target]:
-    """dest -> :class:`Target` (SI) of every target option given."""
+def targets_from_args(args: argparse.Namespace, now: Any = None) -> dict[str, Target]:
+    """dest -> :class:`Target` (SI) of every target option given; ``keep`` is the value of
+    ``now`` (the racket's :class:`~fem_racket.frame.catalogue.Catalogue`)."""
     out = {}
     for dest, (_, _, factor, _) in {**TARGETS, **RANKED}.items():
         value = getattr(args, dest, None)
         if value is None:
+            continue
+        if value == KEEP:
+            held = None if now is None else getattr(now, dest)
+            if held is None:
+                why = "this racket has no value for it" if now is not None else "give a value"
+                raise InputError(f"{dest.replace('_', '-')} = keep is not allowed here: {why}")
+            out[dest] = Target(held, held)
             continue
         try:
             out[dest] = Target(value[0] * factor, value[1] * factor)

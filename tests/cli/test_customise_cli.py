@@ -84,3 +84,28 @@ def test_customise_refuses_in_one_line_and_writes_nothing(capsys, tmp_path, args
     code, _, err = run(capsys, "customise", *args, "--out", out, "--maps", tmp_path / "m.png")
     assert code == 2 and says in err and len(err.splitlines()) == 1, err
     assert not out.exists()
+
+
+def test_keep_holds_the_racket_value(capsys, tmp_path):
+    code, text, err = run(
+        capsys,
+        "customise",
+        "--swing-weight",
+        "320",
+        "--balance",
+        "keep",
+        "--places",
+        "12,3/9,handle",
+        "--out",
+        tmp_path / "c.vtu",
+        "--maps",
+        tmp_path / "c.nc",
+        "--json",
+    )
+    assert code == 0, err
+    data = json.loads(text)
+    assert data["after"]["balance_m"] == pytest.approx(data["before"]["balance_m"], rel=1e-12)
+    assert data["targets"]["balance_m"] == [data["before"]["balance_m"]] * 2
+    # the tip and the handle: cheaper than 3/9 for swing weight at a fixed balance
+    assert data["placement_g"]["3/9"] == 0.0
+    assert data["added_mass_g"] == pytest.approx(15.958, abs=1e-3)
