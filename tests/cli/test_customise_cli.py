@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import json
 
+import numpy as np
 import pytest
 from clirun import run
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import catalogue
 from fem_racket.frame.clock import HeadEllipse
-from fem_racket.frame.lead import Lead, add_lead
+from fem_racket.frame.lead import Lead, add_lead, lead_moments
 from fem_racket.frame.specs import KG_CM2
 from fem_racket.io.mesh_files import read_mesh
 
@@ -108,4 +109,11 @@ def test_keep_holds_the_racket_value(capsys, tmp_path):
     assert data["targets"]["balance_m"] == [data["before"]["balance_m"]] * 2
     # the tip and the handle: cheaper than 3/9 for swing weight at a fixed balance
     assert data["placement_g"]["3/9"] == 0.0
-    assert data["added_mass_g"] == pytest.approx(15.958, abs=1e-3)
+    # independent path: the 2 x 2 system of the two places used (swing weight up, balance kept)
+    head, b = HeadEllipse(), data["before"]["balance_m"]
+    k12, kh = lead_moments("12", head), lead_moments("handle", head)
+    a = [[k12[2], kh[2]], [k12[1] - b, kh[1] - b]]
+    dsw = (320.0 - data["before"]["swing_weight_kg_cm2"]) * KG_CM2
+    m12, mh = np.linalg.solve(a, [dsw, 0.0])
+    assert data["placement_g"]["12"] == pytest.approx(m12 * 1e3, rel=1e-8)
+    assert data["placement_g"]["handle"] == pytest.approx(mh * 1e3, rel=1e-8)
