@@ -103,5 +103,5 @@ def add_lead(
     places = [(lead, place_at(lead.place, head)) for lead in leads if lead.mass > 0.0]
     if not places:
         return mesh
-    masses = [AddedMass(min(p.x / mesh.length, 1.0), lead.mass, width) for lead, p in places]
+    masses = [AddedMass(min(p.x / mesh.length, 1.0), lead.mass, width, p.r) for lead, p in places]
     return add_masses(mesh, masses)

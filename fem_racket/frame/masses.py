@@ -21,7 +21,7 @@ racket's I_CG).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -49,11 +49,16 @@ class AddedMass:
         Added mass [kg], >= 0.
     width : float
         Strip width [m], > 0.
+    radius : float
+        Distance [m] of the mass (or of each half of a pair on both sides) from the long axis:
+        on a frame with torsion data the strip's polar mass per length rhoIp rises by
+        m radius^2 / width (0: on the axis).
     """
 
     position: float
     mass: float
     width: float = DEFAULT_WIDTH
+    radius: float = 0.0
 
     def __post_init__(self) -> None:
         object.__setattr__(
@@ -64,6 +69,10 @@ class AddedMass:
             raise InputError(f"added mass = {self.mass!r} kg is not allowed: must be >= 0")
         object.__setattr__(self, "mass", m)
         object.__setattr__(self, "width", check_positive("mass width", self.width, "m"))
+        r = float(self.radius)
+        if not np.isfinite(r) or r < 0.0:
+            raise InputError(f"mass radius = {self.radius!r} m is not allowed: must be >= 0")
+        object.__setattr__(self, "radius", r)
 
 
 def strip_ends(position: float, width: float, length: float) -> tuple[float, float]:
@@ -77,7 +86,8 @@ def strip_ends(position: float, width: float, length: float) -> tuple[float, flo
 def add_masses(mesh: FrameMesh, masses: Sequence[AddedMass]) -> FrameMesh:
     """``mesh`` with each added mass spread over its strip (nodes inserted at the strip ends).
 
-    The total mass rises by exactly the sum of the added masses.
+    The total mass rises by exactly the sum of the added masses; on a frame with torsion data
+    (rhoIp) its polar moment by the sum of m radius^2. Other cell data are kept.
     """
     length = mesh.length
     nodes = mesh.points
@@ -94,7 +104,14 @@ def add_masses(mesh: FrameMesh, masses: Sequence[AddedMass]) -> FrameMesh:
         nodes = np.union1d(nodes, [a, b])
     out = insert_nodes(mesh, [e / length for ab in ends for e in ab])
     rho = out.rhoA.copy()
+    polar = getattr(out, "rhoIp", None)
+    polar = None if polar is None else np.array(polar, dtype=float)
     mid = 0.5 * (out.points[:-1] + out.points[1:])
     for m, (a, b) in zip(masses, ends, strict=True):
-        rho[(mid > a) & (mid < b)] += m.mass / (b - a)
-    return FrameMesh(out.points, out.EI, rho)
+        cells = (mid > a) & (mid < b)
+        rho[cells] += m.mass / (b - a)
+        if polar is not None:
+            polar[cells] += m.mass * m.radius**2 / (b - a)
+    if polar is None:
+        return replace(out, rhoA=rho)
+    return replace(out, rhoA=rho, rhoIp=polar)
