@@ -439,6 +439,20 @@ FIT_CASES = [
     Case("fit-no-mass", ["fit", "--length", "0.68"], ("mass is required", "--mass")),
 ]
 
+LEAD_CASES = [
+    Case("lead-no-grams", ["modes", "--add-mass", "3/9"], ("add-mass = '3/9'", "LOCATION:GRAMS")),
+    Case("lead-unknown-place", ["modes", "--add-mass", "13:5"], ("place = '13'", "3/9")),
+    Case(
+        "customise-unreachable",
+        ["customise", "--swing-weight", "290", "--places", "12"],
+        ("swing-weight = 290..290", "can reach"),
+    ),
+    Case("customise-no-target", ["customise"], ("targets = none", "--swing-weight")),
+    Case("closest-no-file", ["closest", "none.csv", "--mass", "0.3"], ("none.csv", "no such file")),
+    Case("compare-one", ["compare", "standard"], ("need at least 2",)),
+    Case("compare-bad-suffix", ["compare", "standard", "rigid", "--out", "c.txt"], ("c.txt",)),
+]
+
 DESIGN_CASES = [
     Case("optimize-speed-high", opt("--speeds", "200"), ("speed = 200", "[1, 100]")),
     Case("optimize-ei-bounds", opt("--ei-bounds", "0,100"), ("ei_1 bounds", "0 < low < high")),
@@ -819,6 +833,7 @@ MESH_ENTRIES = {
     "map": mapc("--mesh", "bad.vtu"),
     "optimize": opt("--mesh", "bad.vtu"),
     "sensitivity": sens("--mesh", "bad.vtu"),
+    "customise": ["customise", "--mesh", "bad.vtu", "--mass", "0.4"],
 }
 
 
@@ -845,6 +860,7 @@ ALL_CASES = (
     + MAP_CASES
     + FIT_CASES
     + DESIGN_CASES
+    + LEAD_CASES
 )
 MESH_CASES = {c[0]: c[1] for c in BAD_MESHES}
 
