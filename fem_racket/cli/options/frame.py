@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.lead_options import add_lead_option, with_lead
+from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame

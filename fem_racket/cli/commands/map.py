@@ -20,8 +20,8 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
-from fem_racket.cli.laws import add_law_options, law_from_args
-from fem_racket.cli.lead_options import add_lead_option, with_lead
+from fem_racket.cli.options.laws import add_law_options, law_from_args
+from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE

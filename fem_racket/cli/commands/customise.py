@@ -23,7 +23,7 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
-from fem_racket.cli.target_options import (
+from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
     target_summary,

@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import add_config_option, print_json, significant
-from fem_racket.cli.target_options import (
+from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
     target_summary,

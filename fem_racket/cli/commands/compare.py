@@ -13,7 +13,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import add_config_option, add_swing_options, print_json, run_parameters
-from fem_racket.cli.lead_options import add_lead_option, leads_of
+from fem_racket.cli.options.lead import add_lead_option, leads_of
 
 #: Where the figure goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "compare.png"
