@@ -3,8 +3,7 @@
 ``F = K_CB delta + C_CB delta'`` (Kawazoe & Kanda 1997, section 2.1), with
 ``C_CB = 2 zeta sqrt(m_B K_CB)`` fixed by the clamped COR (eqs 1-4). The exact eigen-solution
 (:mod:`fem_racket.impact.exact.closed_form`) stays this law's default path; this form lets the
-general
-integrators run it too, so every path can be checked against the exact one.
+general integrators run it too, so every path can be checked against the exact one.
 """
 
 from __future__ import annotations
