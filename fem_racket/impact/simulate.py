@@ -17,8 +17,7 @@ from typing import Any
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.contact.presets import get_law
-from fem_racket.contact.spring_dashpot import SpringDashpot
+from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
@@ -133,13 +132,16 @@ def simulate(
     """
     impact = Impact(position, speed)
     ball = Ball() if ball_mass is None else Ball(ball_mass)
-    contact = LinearContact.for_speed(impact.speed, kcb=kcb, zeta=zeta)
+    check_linear_options(law, kcb=kcb, zeta=zeta)
+    contact = LinearContact.for_speed(
+        impact.speed, kcb=kcb, zeta=zeta, ball_mass=ball.mass, separation=separation
+    )
     check_choice("solver", solver, (*SOLVERS, *LAW_SOLVERS))
     law = get_law(law) if isinstance(law, str) else law
     if law is not None or solver == "general" or frame_velocity is not None:
         # any contact law, or a racket moving as given: the general integrator (or CVODE)
         if law is None:
-            law = SpringDashpot(contact.stiffness, contact.damping(ball.mass), separation)
+            law = contact
             contact_used: LinearContact | None = contact
         else:
             contact_used = None

@@ -15,7 +15,6 @@ from typing import Any
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
@@ -60,8 +59,10 @@ def simulate_law(
         v_r = float(swing.speed_at(impact.position * model.mesh.length))
         if contact_used is not None:  # the paper's K_CB at the closing speed
             closing = closing_speed(impact.speed, v_r)
-            contact_used = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
-            law = SpringDashpot(contact_used.stiffness, contact_used.damping(ball.mass), separation)
+            contact_used = LinearContact.for_speed(
+                closing, kcb=kcb, zeta=zeta, ball_mass=ball.mass, separation=separation
+            )
+            law = contact_used
         frame_velocity = swing.cg_motion(model.props.cg)
     if solver == "cvode":  # the general integrator has no tolerances
         check_solver_settings(solver, "modal", model.mesh.n_elements, rtol, atol)

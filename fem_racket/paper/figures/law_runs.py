@@ -3,7 +3,8 @@
 The paper replaces the nonlinear ball/string restoring force by a linear spring K_CB fitted per
 impact speed (section 2.1.1). Under a contact law (:mod:`fem_racket.contact`) the figures are
 drawn with that law instead, through the general integrator
-(:func:`fem_racket.impact.general.integrator.solve_general`), many impacts per call:
+(:func:`fem_racket.impact.general.integrator.solve_general`), many impacts per call (on the
+clamped frame: :func:`fem_racket.studies.calibrate.clamped_impacts`):
 
 - the paper's "no damping" curves (zeta = 0) become the law's *elastic counterpart*, the same
   law with its losses removed (:func:`elastic_counterpart`): Hunt-Crossley with alpha = 0, a
@@ -30,14 +31,12 @@ import numpy as np
 from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.spring_dashpot import SpringDashpot
+from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.law_impact import receptance
 
 __all__ = [
-    "clamped_impacts",
     "elastic_counterpart",
     "equivalent_kcb",
     "free_impacts",
@@ -59,8 +58,8 @@ def elastic_counterpart(law: ContactLaw) -> ContactLaw | None:
         return replace(law, k2=law.k1)
     if isinstance(law, HuntCrossley):
         return replace(law, alpha=0.0)
-    if isinstance(law, SpringDashpot):
-        return replace(law, damping=0.0)
+    if isinstance(law, LinearContact):
+        return replace(law, zeta=0.0)
     return None
 
 
@@ -90,17 +89,6 @@ def free_impacts(
     out = solve_general(law, rec, speed.ravel().copy(), beta=beta)
     cor = -out.ball_velocity / speed.ravel()
     return cor.reshape(pos.shape), out.contact_time.reshape(pos.shape)
-
-
-def clamped_impacts(
-    law: ContactLaw, speeds: np.ndarray, ball_mass: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """COR [-] and contact time [s] of the ball on the clamped frame (a rigid support)."""
-    v = np.asarray(speeds, dtype=float)
-    n = v.size
-    rec = Receptance(np.zeros(0), np.zeros((n, 0)), np.zeros((n, 2)), np.full(n, ball_mass))
-    out = solve_general(law, rec, v.copy())
-    return -out.ball_velocity / v, out.contact_time
 
 
 def equivalent_kcb(contact_time: np.ndarray, ball_mass: float) -> np.ndarray:
