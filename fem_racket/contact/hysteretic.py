@@ -97,8 +97,8 @@ class Hysteretic(ContactLaw):
         LawCondition(
             f"rigid COR (k1/k2)^(1/(2n)) >= {MIN_RIGID_COR:g}",
             lambda v: (v["k1"] / v["k2"]) ** (0.5 / v["hyst_exponent"]) >= MIN_RIGID_COR,
-            "a ball returning under 5 % of its speed from a rigid support is putty, not a ball "
-            "(the calibration's bound; tennis balls 0.73-0.76, ITF)",
+            "a ball returning under 5 % of its speed from a rigid support is putty, not a ball; "
+            "tennis balls return 73-76 %, ITF",
         ),
         deflection_condition(lambda v, f: (f / v["k1"]) ** (1.0 / v["hyst_exponent"])),
     )

@@ -151,6 +151,13 @@ class ContactLaw:
         """Parameters by their run-file and JSON keys, with units in the keys."""
         return {p.key: getattr(self, p.field) for p in self.declared}
 
+    def label(self) -> str:
+        """``'name' (key = value, ...)`` for one-line messages (batches: the first case)."""
+        values = ", ".join(
+            f"{p.name} = {float(np.ravel(getattr(self, p.field))[0]):.6g}" for p in self.declared
+        )
+        return f"'{self.name}' ({values})" if values else f"'{self.name}'"
+
     def describe(self) -> dict[str, Any]:
         """``{"law": name, **parameters}`` for JSON and VTK outputs."""
         out: dict[str, Any] = {"law": self.name}

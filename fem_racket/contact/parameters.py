@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.validation import InputError, check_range, show
+from fem_racket.validation import InputError, check_finite, check_range, show
 
 __all__ = ["LawCondition", "LawFit", "LawParameter", "check_values"]
 
@@ -76,9 +76,17 @@ class LawParameter:
     def check(self, value: Any, label: str | None = None) -> float:
         """``value`` as a float, or a one-line :class:`InputError` naming ``label`` (the
         parameter's name by default) unless it lies within the bounds."""
+        name = label or self.name
+        number = check_finite(name, value, self.si_unit)
+        if self.low >= 0.0 and number <= 0.0 and (self.low > 0.0 or self.open_low):
+            unit = f" {self.si_unit}" if self.si_unit else ""
+            raise InputError(
+                f"{name} = {show(value)}{unit} is not allowed: must be a finite number > 0, "
+                f"in {self.interval()}"
+            )
         return check_range(
-            label or self.name,
-            value,
+            name,
+            number,
             self.low,
             self.high,
             unit=self.si_unit,
@@ -138,7 +146,7 @@ class LawFit:
 
 
 def _case(names: tuple[str, ...], values: Mapping[str, np.ndarray], i: int) -> str:
-    return ", ".join(f"{n} = {show(float(values[n].ravel()[i]))}" for n in names)
+    return ", ".join(f"{n} = {float(values[n].ravel()[i]):.6g}" for n in names)
 
 
 def check_values(

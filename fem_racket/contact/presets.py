@@ -108,7 +108,7 @@ def check_linear_options(law: Any, **options: Any) -> None:
         return
     own = [p.name for p in LinearContact.declared]
     raise InputError(
-        f"{', '.join(given)} {'is' if len(given) == 1 else 'are'} not allowed with law "
-        f"{show(name)}: {', '.join(own)} set the paper's linear law only; {show(name)} has "
-        "its own parameters"
+        f"{', '.join(given)} {'is' if len(given) == 1 else 'are'} not allowed with contact law "
+        f"{show(name)}: {', '.join(own)} set the paper's linear law only ({show(name)} has its "
+        "own parameters)"
     )
