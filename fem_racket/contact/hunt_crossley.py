@@ -22,7 +22,7 @@ Typical tennis values: n = 1.5 (Hertz) to ~2 for a ball on a rigid surface; k of
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -126,6 +126,10 @@ class HuntCrossley(ContactLaw):
     ) -> HuntCrossley:
         """The law whose damping gives ``cor`` at ``speed`` [m/s] (see :func:`damping_from_cor`)."""
         return cls(stiffness, exponent, damping_from_cor(cor, speed, relation))
+
+    def elastic(self) -> HuntCrossley:
+        """alpha = 0."""
+        return replace(self, alpha=0.0)
 
     def force(self, d: Any, v: Any, z: Any) -> Any:
         dp = np.maximum(d, 0.0)

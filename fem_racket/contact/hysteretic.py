@@ -21,7 +21,7 @@ alone (Cross 1999); the calibrated preset ``kawazoe-1997-nonlinear`` uses n near
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -130,6 +130,10 @@ class Hysteretic(ContactLaw):
     def end_deflection(self, z: Any) -> Any:
         """Permanent set delta_0 = z (1 - (k1/k2)^(1/n)) [m]."""
         return np.asarray(z) * (1.0 - self._ratio())
+
+    def elastic(self) -> Hysteretic:
+        """k2 = k1: the loading branch both ways."""
+        return replace(self, k2=self.k1)
 
     def force(self, d: Any, v: Any, z: Any) -> Any:
         d = np.asarray(d, dtype=float)

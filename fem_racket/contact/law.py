@@ -135,6 +135,11 @@ class ContactLaw:
         """Contact time [s] of a mass [kg] striking a rigid support at ``speed`` [m/s]."""
         raise NotImplementedError
 
+    def elastic(self) -> ContactLaw | None:
+        """The same law with its losses removed (the paper's "no damping" curves), or None
+        when the family has no lossless member."""
+        return None
+
     def static_deflection(self, load: float) -> float:
         """Deflection [m] under a static ``load`` [N] on the loading branch (Brent's method)."""
         from scipy.optimize import brentq

@@ -18,7 +18,7 @@ extremely low impact speed range"; give K_CB explicitly outside it).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -257,6 +257,10 @@ class LinearContact(ContactLaw):
         if np.ndim(self.stiffness) == 0 and np.ndim(self.zeta) == 0:
             return 2.0 * self.zeta * math.sqrt(m * self.stiffness)
         return 2.0 * np.asarray(self.zeta) * np.sqrt(m * np.asarray(self.stiffness))
+
+    def elastic(self) -> LinearContact:
+        """zeta = 0: the spring without its dashpot."""
+        return replace(self, zeta=0.0)
 
     def force(self, d: Any, v: Any, z: Any) -> Any:
         return self.stiffness * d + self.damping() * v

@@ -144,6 +144,12 @@ class LawFit:
     high: tuple[float, ...]
     starts: dict[str, tuple[float, ...]]
 
+    def __post_init__(self) -> None:
+        for target, start in self.starts.items():
+            inside = [lo <= x <= hi for lo, x, hi in zip(self.low, start, self.high, strict=True)]
+            if not all(inside):
+                raise ValueError(f"fit start {start} for {target!r} is outside its bounds")
+
 
 def _case(names: tuple[str, ...], values: Mapping[str, np.ndarray], i: int) -> str:
     return ", ".join(f"{n} = {float(values[n].ravel()[i]):.6g}" for n in names)

@@ -122,7 +122,8 @@ class SeriesBallString(ContactLaw):
         build=lambda p: SeriesBallString(p[0], p[1], p[2], p[3]),
         low=(1e3, 1e-2, 1e3, 1e-3),
         high=(1e8, 1e3, 1e7, 1e14),
-        starts={"kawazoe-1997": (2e5, 10.0, 2e4, 3e8), "itf": (2e4, 3.0, 1e9, 1.0)},
+        # itf: a ball on a rigid surface, the bed at the top of its range
+        starts={"kawazoe-1997": (2e5, 10.0, 2e4, 3e8), "itf": (2e4, 3.0, 1e7, 1.0)},
     )
     ball_stiffness: Any
     ball_damping: Any

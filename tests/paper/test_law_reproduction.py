@@ -17,7 +17,6 @@ from fem_racket.impact.simulate import simulate
 from fem_racket.paper.claims import AGREES, DIFFERS
 from fem_racket.paper.claims.conclusions import conclusion_claims, contact_time_claim
 from fem_racket.paper.figures.law_runs import (
-    elastic_counterpart,
     equivalent_kcb,
     free_impacts,
 )
@@ -72,7 +71,7 @@ def test_equivalent_kcb_inverts_eq_11():
 def test_elastic_counterpart_returns_the_ball_at_its_speed(name):
     # Without losses a ball leaves a rigid support at its incoming speed: e = 1 (energy
     # conservation), to the integrator's accuracy.
-    elastic = elastic_counterpart(get_law(name))
+    elastic = get_law(name).elastic()
     cor, _ = clamped_impacts(elastic, np.array([20.0, 40.0]), M_B)
     assert cor == pytest.approx(1.0, abs=1e-5)
 
@@ -84,7 +83,7 @@ def test_series_law_has_no_elastic_counterpart_and_its_curves_are_left_out():
     from fem_racket.paper.plots.common import pyplot
 
     law = get_law("series")
-    assert elastic_counterpart(law) is None
+    assert law.elastic() is None
     d8, d9 = cor_position(True, law), contact_time_position(True, law)
     assert "COR standard undamped [-]" not in d8.tables["cor"]
     assert math.isnan(d8.values["eq16_max_excess"])

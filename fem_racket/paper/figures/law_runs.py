@@ -7,10 +7,10 @@ drawn with that law instead, through the general integrator
 clamped frame: :func:`fem_racket.studies.calibrate.clamped_impacts`):
 
 - the paper's "no damping" curves (zeta = 0) become the law's *elastic counterpart*, the same
-  law with its losses removed (:func:`elastic_counterpart`): Hunt-Crossley with alpha = 0, a
-  hysteretic law with k2 = k1 (its loading branch both ways), a spring-dashpot without its
-  dashpot. A Kelvin-Voigt ball in series with a string bed has none (its state equation needs
-  C_b > 0), so those curves are left out for it;
+  law with its losses removed (:meth:`~fem_racket.contact.law.ContactLaw.elastic`):
+  Hunt-Crossley with alpha = 0, a hysteretic law with k2 = k1 (its loading branch both ways), a
+  spring-dashpot without its dashpot. A Kelvin-Voigt ball in series with a string bed has none
+  (its state equation needs C_b > 0), so those curves are left out for it;
 - the rigid-frame closed forms become: the COR of eq 12 (momentum and energy conservation on a
   rigid free frame: the same for every elastic law) and, for eq 11, the elastic counterpart's
   contact time of a mass striking a rigid support (its ``contact_time_estimate``, exact for a
@@ -28,16 +28,12 @@ from dataclasses import replace
 
 import numpy as np
 
-from fem_racket.contact.hunt_crossley import HuntCrossley
-from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
 
 __all__ = [
-    "elastic_counterpart",
     "equivalent_kcb",
     "free_impacts",
     "law_title",
@@ -50,17 +46,6 @@ def law_title(law: ContactLaw) -> str:
     from fem_racket.contact.presets import PRESETS
 
     return next((name for name, p in PRESETS.items() if p is law), law.name)
-
-
-def elastic_counterpart(law: ContactLaw) -> ContactLaw | None:
-    """``law`` with its losses removed, or None when the family has no lossless member."""
-    if isinstance(law, Hysteretic):
-        return replace(law, k2=law.k1)
-    if isinstance(law, HuntCrossley):
-        return replace(law, alpha=0.0)
-    if isinstance(law, LinearContact):
-        return replace(law, zeta=0.0)
-    return None
 
 
 def free_impacts(
