@@ -9,7 +9,8 @@ Defaults and presets come from ``fem-racket calibrate`` (:mod:`fem_racket.studie
 
 - ``kawazoe-1997-nonlinear``: the hysteretic power law fitted, with one parameter set, to the
   paper's clamped contact times (4.53, 3.35, 2.60 ms at 20, 30, 40 m/s, m_B = 0.057 kg) and
-  clamped COR 0.83 at 20-40 m/s; it meets every target (within 1.3 % and 0.001).
+  clamped COR 0.83 at 20-40 m/s; it meets every target (contact times within 1.7 %, COR within
+  1e-5).
 - ``itf-ball``: a Hunt-Crossley ball on a rigid surface fitted to the ITF rules (e = 0.745 at
   7.06 m/s, 0.65 cm under 80.1 N); its COR falls with speed, as measured by Haake, Carre &
   Goodwill (2003). A ball alone, not ball + strings: use it for ball-on-surface studies.

@@ -44,12 +44,18 @@ FREQUENCY_RANGE = (1.0, 5e4)
 _BETA1_L = 4.730040744862704
 
 
-def _slip(value: float, high: float, what: str, units: tuple[str, str]) -> str:
-    """The likely unit slip of a value above ``high``: 1 000 times a plausible one, in
-    ``units`` (the slipped unit, the intended one)."""
-    if high < value <= high * 1e3:
-        return f" ({what}? {value:.4g} {units[0]} = {value / 1e3:.4g} {units[1]})"
-    return ""
+def _check(where: str, what: str, value: float, rng: tuple[float, float], slip: tuple) -> None:
+    """Raise unless ``value`` lies in ``rng``; ``slip`` = (what it would be, slipped unit,
+    intended unit, its SI unit): named when the value is 1 to 1 000 times too big."""
+    low, high = rng
+    if low <= value <= high:
+        return
+    cause, small, big, unit = slip
+    hint = f" ({cause}? {value:.4g} {small} = {value / 1e3:.4g} {big})"
+    raise InputError(
+        f"{where} {what} = {value:.4g} {unit} is not allowed: must lie in [{low:g}, {high:g}] "
+        f"{unit} for a struck implement{hint if high < value <= high * 1e3 else ''}"
+    )
 
 
 def _cells(frame: Frame | FrameMesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -67,20 +73,8 @@ def check_implement(frame: Frame | FrameMesh, where: str = "frame") -> Frame | F
     h, ei_cells, rhoa = _cells(frame)
     length = float(np.sum(h))
     mass = float(np.sum(rhoa * h))
-    low, high = LENGTH_RANGE
-    if not low <= length <= high:
-        slip = _slip(length, high, "a mesh in millimetres", ("mm", "m"))
-        raise InputError(
-            f"{where} length = {length:.4g} m is not allowed: must lie in [{low:g}, {high:g}] m "
-            f"for a struck implement{slip}"
-        )
-    low, high = MASS_RANGE
-    if not low <= mass <= high:
-        slip = _slip(mass, high, "rhoA in g/m", ("g", "kg"))
-        raise InputError(
-            f"{where} mass = {mass:.4g} kg is not allowed: must lie in [{low:g}, {high:g}] kg "
-            f"for a struck implement{slip}"
-        )
+    _check(where, "length", length, LENGTH_RANGE, ("a mesh in millimetres", "mm", "m", "m"))
+    _check(where, "mass", mass, MASS_RANGE, ("rhoA in g/m", "g", "kg", "kg"))
     ei = float(np.sum(ei_cells * h) / length)
     f1 = _BETA1_L**2 / (2.0 * math.pi * length**2) * math.sqrt(ei * length / mass)
     low, high = FREQUENCY_RANGE
