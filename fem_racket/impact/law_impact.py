@@ -31,7 +31,7 @@ from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.system import output_times
-from fem_racket.validation import InputError, check_choice, check_finite
+from fem_racket.validation import AccuracyError, InputError, check_choice, check_finite
 
 __all__ = [
     "LAW_SOLVERS",
@@ -172,10 +172,16 @@ def run_law(
     """:func:`solve_general` for one impact on ``model`` (all its modes available)."""
     rec = receptance(model, position, ball_mass, None)
     fv = None if frame_velocity is None else frame_velocity[None, :]
-    return solve_general(
-        law, rec, speed, frame_velocity=fv, tolerance=tolerance, steps=steps, beta=beta,
-        t_max=t_max,
-    )  # fmt: skip
+    try:
+        return solve_general(
+            law, rec, speed, frame_velocity=fv, tolerance=tolerance, steps=steps, beta=beta,
+            t_max=t_max,
+        )  # fmt: skip
+    except RuntimeError as err:  # a step's Newton iteration diverged: one line naming the case
+        raise AccuracyError(
+            f"law {law.label()} at {speed:g} m/s, x/L = {position:g}: the general integrator "
+            f"failed ({err}); solver 'cvode' may succeed"
+        ) from None
 
 
 def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:

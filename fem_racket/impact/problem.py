@@ -24,7 +24,7 @@ from typing import Any
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.contact.presets import get_law
+from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.model_cache import frame_model
@@ -143,7 +143,9 @@ class ImpactProblem:
         if self.law is not None:
             self._check_law()
         else:  # the paper's K_CB and zeta, checked once
-            LinearContact.for_speed(self.impact.speed, kcb=self.kcb, zeta=self.zeta)
+            LinearContact.for_speed(
+                self.impact.speed, kcb=self.kcb, zeta=self.zeta, ball_mass=self.ball.mass
+            )
         if self.swing is not None and self.frame_velocity is not None:
             raise InputError("swing and frame_velocity cannot be combined: give one")
         if self.held:
@@ -152,13 +154,7 @@ class ImpactProblem:
     def _check_law(self) -> None:
         if not isinstance(self.law, ContactLaw):
             raise InputError(f"law = {self.law!r} is not allowed: must be a ContactLaw or None")
-        for key in ("kcb", "zeta"):
-            value = getattr(self, key)
-            if value is not None:
-                raise InputError(
-                    f"{key} = {show(value)} is not allowed with contact law "
-                    f"{show(self.law.name)}: it belongs to the paper's linear law (law 'linear')"
-                )
+        check_linear_options(self.law, kcb=self.kcb, zeta=self.zeta)
         if self.separation is not None:
             raise InputError(
                 f"separation = {show(self.separation)} is not allowed with contact law "
@@ -244,7 +240,13 @@ class ImpactProblem:
 
     def contact(self) -> LinearContact:
         """The paper's law at the closing speed (K_CB [N/m], zeta)."""
-        return LinearContact.for_speed(self.closing_speed, kcb=self.kcb, zeta=self.zeta)
+        return LinearContact.for_speed(
+            self.closing_speed,
+            kcb=self.kcb,
+            zeta=self.zeta,
+            ball_mass=self.ball.mass,
+            separation=self.separation or "displacement",
+        )
 
     def replace(self, **changes: Any) -> ImpactProblem:
         """A copy with ``changes`` (validated again)."""

@@ -9,7 +9,6 @@ gravity, and the paper's linear law then takes K_CB at the closing speed. The so
 
 from __future__ import annotations
 
-from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.impact.law_impact import solve_law_impact
 from fem_racket.impact.ode.integrators import check_solver_settings
 from fem_racket.impact.problem import ImpactProblem
@@ -23,16 +22,11 @@ __all__ = ["simulate_law"]
 def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> ImpactResult:
     """An impact of ``problem`` (any contact law, a racket at rest, swinging or moving as given)
     by ``solver`` ("general" or "cvode") with ``settings``, checked by the solver. The paper's
-    linear law runs as a :class:`SpringDashpot` at the closing speed."""
+    linear law runs at the closing speed."""
     model = problem.model
     law, contact = problem.law, None
     if law is None:  # the paper's K_CB at the closing speed
-        contact = problem.contact()
-        law = SpringDashpot(
-            contact.stiffness,
-            contact.damping(problem.ball.mass),
-            problem.separation or "displacement",
-        )
+        law = contact = problem.contact()
     frame_velocity = problem.frame_velocity
     if problem.swing is not None:  # the swing as the general integrator's moving racket
         frame_velocity = problem.swing.cg_motion(model.props.cg)

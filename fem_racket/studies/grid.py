@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import (
@@ -45,7 +46,7 @@ from fem_racket.studies.grid_values import (
     parameter,
     parse_values,
 )
-from fem_racket.studies.law_axes import case_law, sweep_law_values
+from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
 from fem_racket.validation import (
     InputError,
@@ -125,10 +126,12 @@ class SweepSpec:
         :func:`fem_racket.sweep` for the keywords (the law's parameters by their names in
         :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
+        check_linear_options(kwargs.get("law"), kcb=raw["kcb"], zeta=raw["zeta"])
         values = {name: as_values(name, value) for name, value in raw.items()}
         law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
         for name, value in sweep_law_values(kwargs.get("law"), law_given).items():
             values[name] = as_values(name, value)
+        check_law_grid(kwargs.get("law"), values)  # every combination, before any work
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
         defaults.update(racket_speed=0.0, reference=DEFAULT_REFERENCE)
         defaults["ball_mass"] = DEFAULT_BALL_MASS

@@ -199,7 +199,6 @@ CLI_CASES = [
     ),
     # A nonlinear law with the paper's K_CB or zeta, or with the exact solver: refused, not
     # ignored or switched (the library's ImpactProblem and solvers).
-    Case("law-with-kcb", sim("--law", "hunt-crossley", "--kcb", "3e4"), ("kcb = 30000",)),
     Case(
         "law-with-exact",
         sim("--law", "hunt-crossley", "--solver", "exact"),

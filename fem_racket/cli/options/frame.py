@@ -6,6 +6,7 @@ import argparse
 
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
+from fem_racket.frame.plausible import check_implement
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.validation import InputError
@@ -100,7 +101,7 @@ def frame_from_args(
     if path is None:
         segments = getattr(args, "segments", None)
         if segments:
-            return Frame(tuple(segments))
+            return check_implement(Frame(tuple(segments)), "frame.segments")
         return standard_frame(args.ei1, args.ei2)
     clash = sorted(set(getattr(args, "explicit_options", ())) & set(exclusive))
     if clash:
