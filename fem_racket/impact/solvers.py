@@ -27,8 +27,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any, ClassVar
 
-from fem_racket.impact.held.run import held_impact
-from fem_racket.impact.held.shock import DEFAULT_WINDOW
+from fem_racket.impact.held.run import HeldSettings, held_impact
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.settings import DEFAULTS, SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
@@ -134,30 +133,21 @@ class Solver:
             )
 
     def _held(self, problem: ImpactProblem) -> Any:
-        """The hand-held racket by this solver (:func:`fem_racket.impact.held.run.held_impact`)."""
+        """The hand-held racket by this solver (:func:`fem_racket.impact.held.run.held_impact`):
+        every mode unless a tolerance is asked (the modes the COR tolerance drops still move
+        the hand, and the held racket has few DOFs); histories when output times are asked."""
         given = self.options.given()
         s = self.options.settings()
-        # every mode unless a tolerance is asked: the modes the COR tolerance drops still move
-        # the hand (the grip force), and the held racket has few DOFs
         step = given.get("output_step", s.output_step)
-        held = problem.structure
-        return held_impact(
-            held.model,
-            held.hand,
-            position=problem.impact.position,
-            speed=problem.impact.speed,
-            ball_mass=problem.ball.mass,
-            kcb=problem.kcb,
-            zeta=problem.zeta,
+        settings = HeldSettings(
             solver=self.name,
-            swing=problem.swing,
-            window=held.shock_window if held.shock_window is not None else DEFAULT_WINDOW,
             output_step=1e-5 if step is None else step,
             histories=step is not None,
             tolerance=given.get("tolerance"),
             rtol=s.rtol,
             atol=s.atol,
         )
+        return held_impact(problem, settings)
 
 
 class ExactSolver(Solver):

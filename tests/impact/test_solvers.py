@@ -100,7 +100,7 @@ def test_the_shim_equals_the_solver():
 def test_held_racket_through_the_solver_equals_the_held_path():
     hand = fr.Hand()
     run = fr.simulate(MODEL, hand=hand, position=0.7, speed=25.0, output_step=None)
-    ref = held_impact(MODEL, hand, position=0.7, speed=25.0, tolerance=None)
+    ref = held_impact(ImpactProblem.build(MODEL, hand=hand, position=0.7, speed=25.0))
     assert run.apparent_cor == ref.apparent_cor and run.contact_time == ref.contact_time
     assert run.peak_grip_force == ref.peak_grip_force
     with pytest.raises(InputError, match="modes = 10 is not allowed with solver 'exact' with a"):
