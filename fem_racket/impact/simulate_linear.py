@@ -110,7 +110,7 @@ def simulate_linear(
     x_i = impact.position * model.mesh.length
     v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
     closing = closing_speed(impact.speed, v_r)
-    contact = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
+    contact = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta, ball_mass=ball.mass)
     if solver == "exact" and output_step is None:
         traj, frame_map, kept = engine_impact(
             model,
