@@ -11,7 +11,6 @@ a log scale.
 from __future__ import annotations
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.parameters import LawParameter
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.studies.design.variables import Variable
 from fem_racket.validation import InputError
@@ -90,10 +89,6 @@ def _strip_bounds(bounds: tuple[float, float], width: float) -> tuple[float, flo
     return max(lo, 0.5 * width), min(hi, 1.0 - 0.5 * width)
 
 
-def _declared(name: str) -> LawParameter:
-    return next(p for p in SeriesBallString.declared if p.name == name)
-
-
 def _law_variables(
     vary: tuple[str, ...],
     law: ContactLaw | None,
@@ -113,8 +108,6 @@ def _law_variables(
             )
         lo, hi = (0.5 * start[0], 2.0 * start[0]) if string_bounds is None else string_bounds
         if series:
-            for bound in (lo, hi):  # the law's declared bounds, before any work
-                _declared("string_stiffness").check(bound, "string_bounds")
             out.append(Variable("k_s", index, lo, hi, "N/m", log=True))
         else:
             out.append(Variable("kcb_factor", index, lo, hi, "-", log=True))
@@ -126,7 +119,5 @@ def _law_variables(
             )
         default = (0.0, 2.0 * start[1] if start[1] > 0.0 else 1e9)
         lo, hi = default if cubic_bounds is None else cubic_bounds
-        for bound in (lo, hi):
-            _declared("string_cubic").check(bound, "cubic_bounds")
         out.append(Variable("k_3", index + 1, lo, hi, "N/m^3"))
     return out
