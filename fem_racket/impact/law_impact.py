@@ -1,8 +1,7 @@
 """One impact with any contact law: receptance, initial racket motion, histories.
 
 Builds the impact-point :class:`~fem_racket.impact.general.receptance.Receptance` of a frame, turns
-an
-initial racket velocity field into modal velocities, runs the general integrator (or CVODE) and
+an initial racket velocity field into modal velocities, runs the general integrator (or CVODE) and
 rebuilds the ball and frame histories at the output times. Every coordinate
 ``x = [u_B, eta_rigid, eta_flex]`` obeys ``x'' + omega^2 x = b F(t)`` (``b = [-1/m_B, a]``) with
 the integrator's piecewise-cubic force (:mod:`fem_racket.impact.general.cubic_force`), so each is
@@ -255,8 +254,7 @@ def solve_law_impact(
     """One impact of the ball at ``position`` (x/L) and ``speed`` [m/s] under ``law``.
 
     ``solver``: ``"general"`` (:func:`~fem_racket.impact.general.integrator.solve_general`, all
-    modes
-    available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
+    modes available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
     given) or ``"cvode"`` (:func:`solve_law_cvode`, all modes, ``rtol``/``atol``).
     ``frame_velocity``: see :func:`modal_velocity`.
     """

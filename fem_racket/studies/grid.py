@@ -35,6 +35,7 @@ from fem_racket.frame.segments import (
 )
 from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
+from fem_racket.impact.solvers import auto_method
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.grid_values import (
@@ -109,7 +110,7 @@ class SweepSpec:
     values: dict[str, Any]
     frame: Frame | FrameMesh | None = None
     ei2: float | None = None
-    solver: str = "exact"
+    solver: str = "auto"
     separation: str = "displacement"
     basis: str = "modal"
     modes: int | None = DEFAULT_MODES
@@ -156,11 +157,11 @@ class SweepSpec:
                         f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
-        if kwargs.get("law") is not None and kwargs.get("solver", "exact") == "exact":
-            kwargs["solver"] = "general"  # the exact path is the linear law's only
+        if kwargs.get("solver", "auto") == "auto":
+            kwargs["solver"] = auto_method(kwargs.get("law") is None)
         spec = cls(values=values, frame=frame, ei2=ei2, **kwargs)
         if spec.law is not None:
-            check_choice("solver", spec.solver, ("exact", "general", "cvode"))
+            check_choice("solver", spec.solver, ("general", "cvode"))
         else:
             check_choice("solver", spec.solver, SOLVERS)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)
