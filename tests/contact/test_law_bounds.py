@@ -175,3 +175,11 @@ def test_design_bounds_outside_the_law_are_refused_before_any_work():
         design_problem(vary=("string",), law=get_law("series"), string_bounds=(1e3, 1e9))
     with pytest.raises(InputError, match=r"k_3 bound = 1e\+16 N/m\^3"):
         design_problem(vary=("string_cubic",), law=get_law("series"), cubic_bounds=(0.0, 1e16))
+
+
+def test_the_batched_engine_refuses_a_ball_in_grams():
+    from fem_racket import FrameModel, impacts
+
+    model = FrameModel.build(None, 20)
+    with pytest.raises(InputError, match=r"ball_mass = 57.0 kg .*57.0 g = 0.057 kg"):
+        impacts(model, position=0.7, speed=20.0, ball_mass=[0.057, 57.0])
