@@ -3,7 +3,7 @@
 ``get_law(name, **params)`` builds a law from a family name (``hunt-crossley``, ``hysteretic``,
 ``series``) with any parameter overridden, or returns a named preset (which takes no
 parameters). ``linear`` is the paper's spring-dashpot, built by
-:func:`~fem_racket.impact.simulate.simulate` from K_CB and zeta, so it maps to None here.
+:func:`fem_racket.simulate` from K_CB and zeta, so it maps to None here.
 
 Defaults and presets come from ``fem-racket calibrate`` (:mod:`fem_racket.studies.calibrate`):
 

@@ -6,9 +6,9 @@ its parameters, :mod:`fem_racket.contact.parameters`) plus one line here::
     register(HuntCrossley)
 
 Everything else derives from the registry: ``--law`` and each parameter's option
-(:mod:`fem_racket.cli.laws`), the run file's ``[contact]`` keys (:mod:`fem_racket.io.config_keys`),
-the sweep axes (:mod:`fem_racket.studies.grid_values`), the JSON keys and the calibration
-(:mod:`fem_racket.studies.calibrate`). The views below (:data:`FAMILIES`, :data:`PRESETS`,
+(:mod:`fem_racket.cli.options.laws`), the run file's ``[contact]`` keys
+(:mod:`fem_racket.io.config_keys`), the sweep axes (:mod:`fem_racket.studies.grid_values`), the
+JSON keys and the calibration (:mod:`fem_racket.studies.calibrate`). The views below (:data:`FAMILIES`, :data:`PRESETS`,
 :data:`LAW_NAMES`, :data:`LAW_PARAMETERS`) read the registry whenever they are used, so a law
 registered later (a script's own, or a test's) appears in all of them.
 
