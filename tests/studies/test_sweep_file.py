@@ -26,8 +26,12 @@ CASES = {
         ei1=[60.0, 146.0, 2000.0],
         parameters={"command": "sweep", "out": "s.nc", "speed": "20,40"},
     ),
-    "law axis": dict(
-        law="hunt-crossley", hc_exponent="1.3:1.7:3", position=[0.6, 0.8], peak_force=True
+    "law axis": dict(  # k fixed where every swept n is a ball (1-4 mm under 1 kN)
+        law="hunt-crossley",
+        hc_stiffness=1e7,
+        hc_exponent="1.3:1.7:3",
+        position=[0.6, 0.8],
+        peak_force=True,
     ),
     "one case": dict(racket_speed=10.0, pivot=0.1),
 }
