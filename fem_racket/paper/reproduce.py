@@ -1,6 +1,6 @@
 """Reproduce every analysis of Kawazoe & Kanda (1997): all figures, their data and a report.
 
-:func:`reproduce` computes each figure of :data:`fem_racket.figures.FIGURES`, writes its CSV
+:func:`reproduce` computes each figure of :data:`fem_racket.paper.figures.FIGURES`, writes its CSV
 tables and figure (PNG by default, or SVG, PDF) into an output folder, writes ``values.json``
 (every scalar and the list of files, with provenance) there, and writes a Markdown report
 (``REPRODUCTION.md``) setting each statement of the paper beside our value and a verdict
@@ -142,7 +142,8 @@ def reproduce(
         are computed, as one set: all of them or, on any failure or interruption, none (old
         files kept); every destination is checked before the work.
     figures : list of str, optional
-        Subset of :data:`fem_racket.figures.FIGURES` keys; all by default (a report needs all).
+        Subset of :data:`fem_racket.paper.figures.FIGURES` keys; all by default (a report needs
+        all).
     parameters : dict, optional
         Extra provenance (e.g. the command's options), in ``values.json``, every figure's
         metadata and a comment at the end of the report. Every provenance also records what

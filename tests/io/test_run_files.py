@@ -1,6 +1,6 @@
 """Run files drive every command: sweep, export-vtk, animate, refine and reproduce read their own
 table (``[sweep]``, ``[vtk]`` ...) and the core tables, the command line wins, and what they
-write records the run (provenance). simulate and modes: tests/test_config.py."""
+write records the run (provenance). simulate and modes: tests/io/test_config.py."""
 
 import json
 import re

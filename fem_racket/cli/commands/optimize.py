@@ -13,6 +13,7 @@ from fem_racket.cli.options.drawing import add_quiet_option
 from fem_racket.cli.options.execution import add_run_options, run_options
 from fem_racket.cli.options.output import print_written_folder
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.extras import require
 
 #: Where the study goes unless --out is given.
 DEFAULT_OUTPUT = "output/design"
@@ -70,6 +71,8 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.cli.common import print_json
     from fem_racket.io.design_study import run_optimization
 
+    if args.method == "nsga2":
+        require("pymoo", "fem-racket optimize --method nsga2")
     problem = problem_from_args(args)
     r = run_optimization(
         problem,

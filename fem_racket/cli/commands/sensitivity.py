@@ -8,6 +8,7 @@ from fem_racket.cli.common import add_config_option
 from fem_racket.cli.options.design import add_design_options, problem_from_args
 from fem_racket.cli.options.drawing import add_quiet_option
 from fem_racket.cli.options.execution import add_run_options, run_options
+from fem_racket.extras import require
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -46,6 +47,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.cli.common import print_json, print_written
     from fem_racket.io.design_study import run_sensitivity, sobol_json
 
+    require("SALib", "fem-racket sensitivity")
     s = run_sensitivity(
         problem_from_args(args),
         output=args.output,

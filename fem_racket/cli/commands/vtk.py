@@ -18,6 +18,7 @@ from fem_racket.cli.common import (
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.extras import require
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import InputError
 
@@ -135,6 +136,9 @@ def _check_early(args: argparse.Namespace) -> bool:
     from fem_racket.io.vtk_series import check_scale, field_name
     from fem_racket.outputs import check_output_folder, check_targets
 
+    require("pyvista", f"fem-racket {args.command}")  # before the simulation
+    if args.command == "animate":
+        require("imageio", "fem-racket animate")
     field_name(args.field)
     check_scale(args.scale)
     if args.frames is not None and args.frames < 2:
