@@ -11,8 +11,9 @@ from clirun import run as run_cli
 
 from fem_racket.cli.text import significant
 from fem_racket.frame.hand import GRIPS, Hand
+from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.grip import simulate_held
-from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.modal import held_contact
 from fem_racket.impact.held.run import hand_summary
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, contact_peak, grip_peak, vibration_rms
 from fem_racket.impact.swing import Swing
