@@ -31,7 +31,8 @@ from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.held.modal import held_basis, held_contacts
+from fem_racket.impact.held.basis import held_basis
+from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, grip_peak, vibration_rms
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
