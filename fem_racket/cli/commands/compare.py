@@ -12,7 +12,13 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from fem_racket.cli.common import add_config_option, add_swing_options, print_json, run_parameters
+from fem_racket.cli.common import (
+    add_config_option,
+    add_swing_options,
+    print_json,
+    print_written,
+    run_parameters,
+)
 from fem_racket.cli.options.lead import add_lead_option, leads_of
 
 #: Where the figure goes unless --out is given.
@@ -137,6 +143,5 @@ def run(args: argparse.Namespace) -> int:
             f"{c:>{w}}" for c, w in zip(row[1:], width[1:], strict=True)
         ]
         print("  ".join(cells))
-    for path in outs:
-        print(f"written {path}")
+    print_written(outs)
     return 0

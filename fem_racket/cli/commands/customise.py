@@ -20,6 +20,7 @@ from fem_racket.cli.common import (
     add_swing_options,
     frame_from_args,
     print_json,
+    print_written,
     run_parameters,
     significant,
 )
@@ -87,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
     out, maps_path = Path(args.out), Path(args.maps)
     for f in (out, sidecar_path(out)):
         check_output_path(f, overwrite=args.overwrite)
-    check_map_output(maps_path, overwrite=args.overwrite)
+    map_files = check_map_output(maps_path, overwrite=args.overwrite)
     frame = frame_from_args(args)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
@@ -121,5 +122,5 @@ def run(args: argparse.Namespace) -> int:
         spots = summary["maps"][name]
         best = significant(spots["max_apparent_cor_x_over_l"], 4)
         print(f"{'max e_A ' + name:<24} {best:>12} x/L")
-    print(f"{'written':<24} {out}, {maps_path}")
+    print_written([out, sidecar_path(out), *map_files])
     return 0
