@@ -235,14 +235,16 @@ def find_end(law, F, D, V, Z, G, h, first=1, stop=None, where=True):
 
 
 def _outcome(F, D, V, Z, last, frac, h, speed, rec, kept) -> GeneralOutcome:
-    """Scalars from the histories: the impulse of the piecewise cubic up to separation."""
+    """Scalars from the histories: the impulse of the piecewise cubic up to separation (``h``:
+    the step, one for all cases or one per case)."""
     ncase, nsteps = F.shape
+    h = np.broadcast_to(np.asarray(h, dtype=float), (ncase,))
     steps = np.zeros((ncase, nsteps - 1))  # int over each whole step
     for k in (0, 1):
         vals, off = _stencil_values(F, k)
         steps[:, k] = h * (vals @ stencil_quadrature(off))
-    qb = h * stencil_quadrature(BACKWARD)
-    steps[:, 2:] = sum(qb[r] * F[:, r : nsteps - 3 + r] for r in range(ORDER))
+    qb = stencil_quadrature(BACKWARD)
+    steps[:, 2:] = h[:, None] * sum(qb[r] * F[:, r : nsteps - 3 + r] for r in range(ORDER))
     done = np.concatenate([np.zeros((ncase, 1)), np.cumsum(steps, axis=1)], axis=1)
     idx = np.arange(ncase)
     k = last - 1  # the step of separation, integrated up to its fraction
@@ -253,7 +255,7 @@ def _outcome(F, D, V, Z, last, frac, h, speed, rec, kept) -> GeneralOutcome:
     impulse += np.where(k >= 2, h * np.sum(F[idx[:, None], ks] * q.T, axis=1), 0.0)
     for i in np.flatnonzero(k < 2):  # separation in a starting step (forward stencil)
         off = step_stencil(int(k[i]))
-        impulse[i] += h * F[i, [k[i] + o for o in off]] @ stencil_quadrature(off, frac[i])
+        impulse[i] += h[i] * F[i, [k[i] + o for o in off]] @ stencil_quadrature(off, frac[i])
     # peak: the parabola through the largest node before separation and its neighbours
     masked = np.where(np.arange(nsteps)[None, :] <= last[:, None], F, -np.inf)
     i = np.clip(np.argmax(masked, axis=1), 1, nsteps - 2)
@@ -266,7 +268,7 @@ def _outcome(F, D, V, Z, last, frac, h, speed, rec, kept) -> GeneralOutcome:
         ball_velocity=speed - impulse / rec.ball_mass,
         impulse=impulse,
         peak_force=peak,
-        step=np.full(ncase, h),
+        step=h.copy(),
         force=F[:, : last.max() + 1],
         deflection=D[:, : last.max() + 1],
         rate=V[:, : last.max() + 1],
