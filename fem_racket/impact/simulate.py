@@ -122,6 +122,9 @@ def simulate(
         COR tolerance of the engine (output_step None, solver "exact"; default 1e-6): the
         modes far above the contact frequency are replaced by one residual pseudo-mode, and the
         frame state at t_c treats them quasi-statically. None or 0: every mode of ``modes``.
+        Under a contact law (solver "general") the general integrator's: it sets the mode
+        cut-off and the steps, and the answer is vouched for against it
+        (:mod:`fem_racket.impact.general.vouch`) or refused.
     swing : Swing, optional
         The racket's rigid motion before impact (:mod:`fem_racket.impact.swing`); at rest when
         None. K_CB then follows the closing speed ``speed + v_r``; the exact solver superposes
@@ -169,6 +172,7 @@ def simulate(
             t_max=t_max,
             rtol=rtol,
             atol=atol,
+            tolerance=check_tolerance(tolerance),
         )
     check_choice("separation", separation, SEPARATION_EVENTS)
     check_choice("basis", basis, BASES)

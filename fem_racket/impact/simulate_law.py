@@ -23,6 +23,7 @@ from fem_racket.impact.law_impact import solve_law_impact
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.ode.integrators import check_solver_settings
 from fem_racket.impact.problem import Impact
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.simulate_linear import RIGID_MODES
 from fem_racket.impact.swing import Swing, closing_speed
@@ -49,10 +50,12 @@ def simulate_law(
     t_max: float | None,
     rtol: float,
     atol: float,
+    tolerance: float | None = DEFAULT_TOLERANCE,
 ) -> ImpactResult:
     """An impact under ``law`` (``contact_used``: the paper's linear law it stands for, or None)
     by ``solver`` ("general" or "cvode"); the other arguments as
-    :func:`fem_racket.impact.simulate.simulate`'s."""
+    :func:`fem_racket.impact.simulate.simulate`'s (``tolerance``: the general integrator's COR
+    tolerance, which its answer is vouched for against)."""
     model = frame_model(frame, elements)
     if swing is not None:  # the swing as the general integrator's moving racket
         if frame_velocity is not None:
@@ -77,6 +80,7 @@ def simulate_law(
         t_max,
         rtol,
         atol,
+        tolerance,
     )
     return result if swing is None else replace(result, swing=swing)
 
@@ -93,6 +97,7 @@ def _law_result(
     t_max: float | None,
     rtol: float,
     atol: float,
+    tolerance: float | None,
 ) -> ImpactResult:
     """An impact under ``law`` by the general integrator or CVODE (all frame modes)."""
     if output_step is not None:
@@ -109,6 +114,7 @@ def _law_result(
         t_max=t_max,
         rtol=rtol,
         atol=atol,
+        tolerance=tolerance,
     )
     shapes = model.modes(None).all_shapes
     return ImpactResult(

@@ -48,6 +48,10 @@ class KernelLaw:
     end: int
     params: np.ndarray
 
+    def take(self, idx: np.ndarray) -> KernelLaw:
+        """The law of the cases ``idx``."""
+        return KernelLaw(self.law, self.state, self.end, self.params[idx])
+
 
 @dataclass(frozen=True, eq=False)
 class Checks:

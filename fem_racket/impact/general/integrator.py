@@ -15,8 +15,8 @@ numba): every case with its own modes and its own step h = t_c / N, so a batch m
 and a case's answer does not depend on the batch it is in. A COR tolerance sets N and the mode
 cut-off (:func:`settings`), and each answer is vouched for against it
 (:mod:`fem_racket.impact.general.vouch`: step halving, state resolution, energy balance; N
-doubled where it fails, refused where it still fails). Where the law's estimate of t_c is far
-too long, a coarse run shortens it first (:func:`_contact_times`). A law without a kernel (a
+doubled where it fails, refused where it still fails; where the law's estimate of t_c is far
+too long, the contact time found replaces it). A law without a kernel (a
 user's subclass) marches in numpy (:mod:`fem_racket.impact.general.march`; few cases: every
 node at once, :mod:`fem_racket.impact.general.nodes`), grouped by contact time, each group
 with one step, at the tolerance's N without vouching.
@@ -41,7 +41,7 @@ from fem_racket.impact.general.compiled import kernel_law, march_compiled
 from fem_racket.impact.general.march import GeneralOutcome, march
 from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
-from fem_racket.impact.general.vouch import vouched
+from fem_racket.impact.general.vouch import STEP_SHARE, vouched
 from fem_racket.impact.reduction import (
     DEFAULT_TOLERANCE,
     check_tolerance,
@@ -69,9 +69,6 @@ GROUP_RATIO = 1.3
 LIMIT = 16.0
 #: The COR tolerance answers are vouched for at when the tolerance is None (every mode).
 NONE_TOLERANCE = 1e-6
-#: Steps per estimated contact time of the run checking the estimate, and its passes at most.
-PROBE_STEPS = 32
-PROBE_PASSES = 8
 #: Batches up to this size (laws without an ODE state) solve all nodes at once
 #: (:mod:`fem_racket.impact.general.nodes`); larger ones march, vectorised across cases.
 WHOLE = 2
@@ -122,7 +119,7 @@ def solve_general(
     -------
     GeneralOutcome
     """
-    given = steps is not None
+    given, beta_given = steps is not None, beta
     tol = check_tolerance(tolerance)
     steps, beta = settings(tolerance, steps, beta)
     ncase = rec.a.shape[0]
@@ -139,8 +136,6 @@ def solve_general(
         return _solve_numpy(law, rec, speed, frame_velocity, t_case, steps, beta, t_max)
     exponent = getattr(law, "exponent", 1.0)
     limit = LIMIT * t_case if t_max is None else np.full(ncase, check_positive("t_max", t_max, "s"))
-    if not given:
-        t_case = _contact_times(kernel, rec, speed, frame_velocity, exponent, t_case, limit)
     omega_c = contact_frequency(t_case, exponent) + 0.0 * t_case
     limits = (np.minimum(SPAN * t_case, limit), limit)
     if given:
@@ -149,10 +144,12 @@ def solve_general(
         )
         _check_status(status, limit)
         return out
+    target = NONE_TOLERANCE if tol is None else tol
+    if beta_given is None and tol is not None:  # the cut-off's share of the tolerance
+        beta = cutoff_factor(tol * (1.0 - STEP_SHARE))
     parts, where, run = vouched(
-        kernel, rec, speed, frame_velocity, omega_c, beta, t_case, steps,
-        NONE_TOLERANCE if tol is None else tol, limits,
-    )  # fmt: skip
+        kernel, rec, speed, frame_velocity, omega_c, beta, t_case, steps, target, limits
+    )
     out = _merge(parts, where, ncase)
     if refused == "raise":
         _check_status(np.where(run.no_separation, 1, 0), limit)
@@ -162,33 +159,6 @@ def solve_general(
             what = f"case {i} (law {law.name}, {show(float(speed[i]))} m/s)"
             raise InputError(run.refusal(i, tol or NONE_TOLERANCE, what))
     return out
-
-
-def _contact_times(kernel, rec, speed, frame_velocity, exponent, t_case, limit) -> np.ndarray:
-    """The law's contact-time estimates, shortened where a coarse run (:data:`PROBE_STEPS` per
-    estimate, every mode) ends the contact in less than a quarter of it (or cannot solve a
-    step: the estimate then shrinks 8 times): the steps are set per contact time, so a law
-    whose estimate is far too long (a ball much softer than its string bed) would otherwise
-    be stepped too coarsely to be resolved."""
-    t_case = t_case.copy()
-    todo = np.arange(t_case.size)
-    for _ in range(PROBE_PASSES):
-        sub = per_case(rec, t_case.size, todo)
-        fv = None if frame_velocity is None else frame_velocity[todo]
-        omega_c = contact_frequency(t_case[todo], exponent) + 0.0 * t_case[todo]
-        span = np.minimum(SPAN * t_case[todo], limit[todo])
-        out, _, status = march_compiled(
-            kernel, sub, speed[todo], fv, omega_c, math.inf, t_case[todo] / PROBE_STEPS, span,
-            limit[todo],
-        )  # fmt: skip
-        short = (status == 0) & (out.contact_time < 0.25 * t_case[todo])
-        failed = status == 2  # Newton lost at so coarse a step: try a shorter one
-        if not np.any(short | failed):
-            break
-        t_case[todo[short]] = out.contact_time[short]
-        t_case[todo[failed]] /= 8.0
-        todo = todo[short | failed]
-    return t_case
 
 
 def _check_status(status: np.ndarray, limit: np.ndarray) -> None:
