@@ -48,7 +48,7 @@ from fem_racket.impact.reduction import (
     contact_frequency,
     cutoff_factor,
 )
-from fem_racket.validation import InputError, check_integer, check_positive, show
+from fem_racket.validation import AccuracyError, check_integer, check_positive, show
 
 __all__ = ["NONE_TOLERANCE", "STEP_ERROR", "GeneralOutcome", "settings", "solve_general"]
 
@@ -113,7 +113,8 @@ def solve_general(
     t_max : float, optional
         Give up at this time [s]; 16 x the estimated contact time by default.
     refused : {"raise", "nan"}
-        A case the integrator cannot vouch for: InputError (one line), or NaN in its results.
+        A case the integrator cannot vouch for: :class:`~fem_racket.validation.AccuracyError`
+        (an InputError, one line), or NaN in its results.
 
     Returns
     -------
@@ -157,7 +158,7 @@ def solve_general(
         if bad.size:
             i = int(bad[0])
             what = f"case {i} (law {law.name}, {show(float(speed[i]))} m/s)"
-            raise InputError(run.refusal(i, tol or NONE_TOLERANCE, what))
+            raise AccuracyError(run.refusal(i, tol or NONE_TOLERANCE, what))
     return out
 
 

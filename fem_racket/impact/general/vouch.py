@@ -63,7 +63,7 @@ class Run:
         if not np.isfinite(self.estimate[i]):
             why = "its contact-law iteration did not converge"
         elif self.stiffness[i] > 1.0:
-            why = f"its state needs a {show(float(self.stiffness[i]))} times finer step"
+            why = f"its state needs a {float(self.stiffness[i]):.3g} times finer step"
         else:
             why = (
                 f"the COR error estimate is {show(float(self.estimate[i]))} and the energy "
