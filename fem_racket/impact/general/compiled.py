@@ -78,6 +78,8 @@ def kernel_law(law: ContactLaw, ncase: int) -> KernelLaw | None:
     if names is None:
         return None
     cols = [np.broadcast_to(np.asarray(getattr(law, k), dtype=float), (ncase,)) for k in names]
+    if isinstance(law, Hysteretic):  # its unloading ratio (k1/k2)^(1/n), as the law has it
+        cols.append((cols[0] / cols[1]) ** (1.0 / cols[2]))
     return KernelLaw(
         LAW_IDS[law.name],
         _STATES[law.state],

@@ -133,6 +133,8 @@ def solve_general(
     ).astype(float)
     kernel = kernel_law(law, ncase)
     if kernel is None:
+        if np.ndim(rec.omega) > 1:
+            raise ValueError("a batch spanning frames needs a law with a compiled kernel")
         log.info("law %s has no compiled kernel: the numpy march runs", type(law).__name__)
         return _solve_numpy(law, rec, speed, frame_velocity, t_case, steps, beta, t_max)
     exponent = getattr(law, "exponent", 1.0)

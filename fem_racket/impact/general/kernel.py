@@ -38,9 +38,9 @@ def _newton(law, state, p, A, B, kd0, kv0, guess, zp, zb, zc, h, scale, d0, v0):
         d, v = A - kd0 * F, B - kv0 * F
         if state == 1:
             z = max(zp, kl.turn_max(d0, v0, d, v, h))
-        r1 = F - kl.force(law, p, d, v, z)
+        f, fd, fv, fz = kl.force_partials(law, p, d, v, z)
+        r1 = F - f
         tol = 1e-12 * (abs(F) + scale)
-        fd, fv, fz = kl.partials(law, p, d, v, z)
         if state == 2:
             r2 = z - zb - zc * kl.rate(law, p, d, v, z)
             if abs(r1) <= tol and abs(r2) <= 1e-12 * (abs(z) + 1e-9):

@@ -15,26 +15,30 @@ from __future__ import annotations
 
 from numba import njit
 
-__all__ = ["LAW_IDS", "cubic_root", "force", "hermite_root", "partials", "rate", "turn_max"]
+__all__ = [
+    "LAW_IDS",
+    "cubic_root",
+    "end_value",
+    "force",
+    "force_partials",
+    "hermite_root",
+    "rate",
+    "rate_partials",
+    "turn_max",
+]
 
 #: Law number per family name: linear (k, c), hunt-crossley (k, n, alpha), hysteretic
-#: (k1, k2, n), series (K_b, C_b, k_s, k_3).
+#: (k1, k2, n, (k1/k2)^(1/n)), series (K_b, C_b, k_s, k_3).
 LAW_IDS = {"linear": 0, "hunt-crossley": 1, "hysteretic": 2, "series": 3}
 
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 
 
 @njit(**_JIT)
-def _ratio(p):
-    """(k1/k2)^(1/n) of the hysteretic law."""
-    return (p[0] / p[1]) ** (1.0 / p[2])
-
-
-@njit(**_JIT)
 def end_value(law, p, z):
     """The deflection whose downward crossing ends a "displacement" contact [m]."""
     if law == 2:
-        return z * (1.0 - _ratio(p))
+        return z * (1.0 - p[3])
     return 0.0 * z
 
 
@@ -53,21 +57,26 @@ def force(law, p, d, v, z):
 
 
 @njit(**_JIT)
-def partials(law, p, d, v, z):
-    """(dF/d delta, dF/d delta', dF/dz)."""
+def force_partials(law, p, d, v, z):
+    """(F, dF/d delta, dF/d delta', dF/dz), one power per call (x^n = x^(n-1) x)."""
     if law == 0:
-        return p[0], p[1], 0.0
+        return p[0] * d + p[1] * v, p[0], p[1], 0.0
     if law == 1:
         dp = max(d, 0.0)
-        slope = p[1] * p[0] * dp ** (p[1] - 1.0)
-        return slope * (1.0 + p[2] * v), p[2] * (p[0] * dp ** p[1]), 0.0
+        s = dp ** (p[1] - 1.0)
+        spring = p[0] * (s * dp)
+        return spring * (1.0 + p[2] * v), p[1] * p[0] * s * (1.0 + p[2] * v), p[2] * spring, 0.0
     if law == 2:
         n = p[2]
         if d >= z:
-            return n * p[0] * max(d, 0.0) ** (n - 1.0), 0.0, 0.0
-        unload = n * p[1] * max(d - end_value(law, p, z), 0.0) ** (n - 1.0)
-        return unload, 0.0, -unload * (1.0 - _ratio(p))
-    return 0.0, 0.0, p[2] + 3.0 * p[3] * z**2
+            base = max(d, 0.0)
+            s = base ** (n - 1.0)
+            return p[0] * (s * base), n * p[0] * s, 0.0, 0.0
+        base = max(d - end_value(law, p, z), 0.0)
+        s = base ** (n - 1.0)
+        unload = n * p[1] * s
+        return p[1] * (s * base), unload, 0.0, -unload * (1.0 - p[3])
+    return p[2] * z + p[3] * z**3, 0.0, 0.0, p[2] + 3.0 * p[3] * z**2
 
 
 @njit(**_JIT)
