@@ -60,10 +60,12 @@ class Run:
 
     def refusal(self, i: int, tol: float, what: str) -> str:
         """One line: why case ``i`` (described by ``what``) was refused at ``tol``."""
+        advice = "loosen the tolerance or use solver cvode"
         if not np.isfinite(self.estimate[i]):
             why = "its contact-law iteration did not converge"
         elif self.stiffness[i] > 1.0:
             why = f"its state needs a {float(self.stiffness[i]):.3g} times finer step"
+            advice = "use solver cvode"
         else:
             why = (
                 f"the COR error estimate is {show(float(self.estimate[i]))} and the energy "
@@ -71,8 +73,7 @@ class Run:
             )
         return (
             f"tolerance = {show(tol)} could not be met for {what} by the general integrator "
-            f"({why} at {2**MAX_DOUBLINGS} times its first step count): loosen the tolerance "
-            "or use solver cvode"
+            f"({why} at {2**MAX_DOUBLINGS} times its first step count): {advice}"
         )
 
 
