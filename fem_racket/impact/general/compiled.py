@@ -18,8 +18,8 @@ import numpy as np
 from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.series import SeriesBallString
-from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.impact.general.cubic_force import ORDER, STENCILS
 from fem_racket.impact.general.march import GeneralOutcome, _outcome
 from fem_racket.impact.general.receptance import Receptance, free_motion
@@ -28,12 +28,14 @@ from fem_racket.impact.reduction import split_modes
 
 __all__ = ["KernelLaw", "Checks", "kernel_law", "march_compiled"]
 
-#: Parameters of each law with a kernel, in the kernel's order.
+#: Parameters of each law with a kernel, in the kernel's order (the kernel_laws.LAW_IDS list).
 _PARAMETERS = {
-    SpringDashpot: ("stiffness", "damping"),
-    HuntCrossley: ("stiffness", "exponent", "alpha"),
-    Hysteretic: ("k1", "k2", "exponent"),
-    SeriesBallString: ("ball_stiffness", "ball_damping", "string_stiffness", "string_cubic"),
+    LinearContact: lambda law: (law.stiffness, law.damping()),
+    HuntCrossley: lambda law: (law.stiffness, law.exponent, law.alpha),
+    Hysteretic: lambda law: (law.k1, law.k2, law.exponent),
+    SeriesBallString: lambda law: (
+        law.ball_stiffness, law.ball_damping, law.string_stiffness, law.string_cubic
+    ),
 }
 _STATES = {None: 0, "memory": 1, "ode": 2}
 _ENDS = {"displacement": 0, "force": 1, "state": 2}
@@ -74,10 +76,10 @@ def kernel_law(law: ContactLaw, ncase: int) -> KernelLaw | None:
     class has no kernel."""
     from fem_racket.impact.general.kernel_laws import LAW_IDS
 
-    names = _PARAMETERS.get(type(law))
-    if names is None:
+    values = _PARAMETERS.get(type(law))
+    if values is None:
         return None
-    cols = [np.broadcast_to(np.asarray(getattr(law, k), dtype=float), (ncase,)) for k in names]
+    cols = [np.broadcast_to(np.asarray(x, dtype=float), (ncase,)) for x in values(law)]
     if isinstance(law, Hysteretic):  # its unloading ratio (k1/k2)^(1/n), as the law has it
         cols.append((cols[0] / cols[1]) ** (1.0 / cols[2]))
     return KernelLaw(

@@ -23,7 +23,7 @@ from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.contact.series import SeriesBallString
-from fem_racket.contact.spring_dashpot import SpringDashpot
+from fem_racket.contact.linear import LinearContact
 from fem_racket.impact.general.batches import stack_laws, stack_receptances
 from fem_racket.impact.general.compiled import kernel_law, march_compiled
 from fem_racket.impact.general.integrator import solve_general
@@ -57,8 +57,8 @@ def _cvode_cor(law, model, position, speed):
         PRESETS["kawazoe-1997-nonlinear"],
         Hysteretic.from_cor(5e4, 0.83, 1.0),
         SeriesBallString(1.5e5, 10.0, 4e4, 1e9),
-        SpringDashpot(5e4, 6.0),
-        SpringDashpot(5e4, 6.0, "force"),
+        LinearContact(5e4, 0.0592),
+        LinearContact(5e4, 0.0592, separation="force"),
     ],
     ids=["hunt-crossley", "hysteretic", "hysteretic-n1", "series", "linear", "linear-force"],
 )
