@@ -21,9 +21,9 @@ from strategies import contact_laws
 from fem_racket import FrameModel
 from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.hysteretic import Hysteretic
+from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.contact.series import SeriesBallString
-from fem_racket.contact.linear import LinearContact
 from fem_racket.impact.general.batches import stack_laws, stack_receptances
 from fem_racket.impact.general.compiled import kernel_law, march_compiled
 from fem_racket.impact.general.integrator import solve_general
