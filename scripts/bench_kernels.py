@@ -104,12 +104,10 @@ def stiffness_for(t_c: float, n: float) -> float:
 def random_law(family: str, rng: np.random.Generator):
     """A law in the ranges of tests/strategies.py contact_laws."""
     if family == "series":
-        return SeriesBallString(
-            10 ** rng.uniform(4, 6),
-            10 ** rng.uniform(math.log10(0.5), math.log10(50.0)),
-            10 ** rng.uniform(3, 5),
-            float(rng.choice([0.0, 1e8, 1e9, 1e10])),
-        )
+        k_b, c_b, cubic = 10 ** rng.uniform(4, 6), 10 ** rng.uniform(math.log10(0.5), 1.7), 0.0
+        k_s = 10 ** rng.uniform(3, 5)
+        cubic = float(rng.choice([0.0, 1e8, 1e9, 1e10]))
+        return SeriesBallString(k_b, c_b, max(k_s, 1e4) if cubic == 0.0 else k_s, cubic)
     n = 1.0 if rng.random() < 0.3 else rng.uniform(1.0, 10.0)
     k = stiffness_for(10 ** rng.uniform(math.log10(2e-3), math.log10(8e-3)), n)
     e = rng.uniform(0.5, 0.95)

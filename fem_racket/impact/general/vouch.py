@@ -18,8 +18,8 @@ itself. A case is accepted when
   halving alone).
 
 A case that fails runs again with N doubled (its runs at N and N/2 becoming the coarse ones), up
-to :data:`MAX_DOUBLINGS` times; a case still not accepted is NaN, never a number, and the
-caller refuses it.
+to :data:`MAX_DOUBLINGS` times and :data:`MAX_NODES` nodes; a case still not accepted is NaN,
+never a number, and the caller refuses it.
 """
 
 from __future__ import annotations
@@ -44,6 +44,10 @@ STEP_SHARE = 0.75
 STIFF_LIMIT = 2.0
 #: Times the step count of a case may be doubled.
 MAX_DOUBLINGS = 6
+#: Times a case may start again on a shorter contact-time estimate (an eighth each time the
+#: contact equation cannot be solved), and the most nodes of one run.
+MAX_RESTARTS = 2
+MAX_NODES = 2**18
 
 
 @dataclass(frozen=True, eq=False)
@@ -63,6 +67,7 @@ class Run:
         advice = "loosen the tolerance or use solver cvode"
         if not np.isfinite(self.estimate[i]):
             why = "its contact-law iteration did not converge"
+            advice = "use solver cvode"
         elif self.stiffness[i] > 1.0:
             why = f"its state needs a {float(self.stiffness[i]):.3g} times finer step"
             advice = "use solver cvode"
@@ -73,7 +78,7 @@ class Run:
             )
         return (
             f"tolerance = {show(tol)} could not be met for {what} by the general integrator "
-            f"({why} at {2**MAX_DOUBLINGS} times its first step count): {advice}"
+            f"({why} at its finest step): {advice}"
         )
 
 
@@ -144,6 +149,7 @@ def vouched(
     n_case = np.full(ncase, int(steps))
     est, res, stiff = np.full(ncase, np.inf), np.full(ncase, np.inf), np.zeros(ncase)
     stuck = np.zeros(ncase, dtype=bool)
+    restarts = np.zeros(ncase, dtype=int)
     cors = np.full((ncase, 3), np.nan)
     moving = frame_velocity is not None
 
@@ -173,7 +179,9 @@ def vouched(
         ok = (e <= STEP_SHARE * tol) & (chk.stiffness <= STIFF_LIMIT) & (np.abs(r) <= tol)
         ok &= ~short & np.isfinite(cors[todo, 2])
         stuck[todo] = status == 1
-        done = ok | (status == 1) | (doubling == MAX_DOUBLINGS)
+        over = restarts[todo] + short > MAX_RESTARTS  # the contact time keeps shrinking
+        over |= span[todo] * n_case[todo] / t_case[todo] > MAX_NODES / 2  # no finer step
+        done = ok | (status == 1) | over | (doubling == MAX_DOUBLINGS)
         if not np.all(ok[done]):
             out = _refuse(out, ~ok)
         parts.append(per_case(out, todo.size, np.flatnonzero(done)))
@@ -182,6 +190,7 @@ def vouched(
         if np.all(done):
             break
         again = todo[~done & short]  # the contact-time estimate was far too long
+        restarts[again] += 1
         found = np.where(status == 2, t_case[todo] / 8.0, out.contact_time)[~done & short]
         omega_c[again] *= t_case[again] / found
         span[again] = np.minimum(span[again] * found / t_case[again], t_max[again])
