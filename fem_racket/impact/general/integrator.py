@@ -48,7 +48,13 @@ from fem_racket.impact.reduction import (
     contact_frequency,
     cutoff_factor,
 )
-from fem_racket.validation import AccuracyError, check_integer, check_positive, show
+from fem_racket.validation import (
+    AccuracyError,
+    check_choice,
+    check_integer,
+    check_positive,
+    show,
+)
 
 __all__ = ["NONE_TOLERANCE", "STEP_ERROR", "GeneralOutcome", "settings", "solve_general"]
 
@@ -121,6 +127,7 @@ def solve_general(
     GeneralOutcome
     """
     given, beta_given = steps is not None, beta
+    check_choice("refused", refused, ("raise", "nan"))
     tol = check_tolerance(tolerance)
     steps, beta = settings(tolerance, steps, beta)
     ncase = rec.a.shape[0]
