@@ -22,8 +22,9 @@ import numpy as np
 
 from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.grip import simulate_held
-from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.modal import held_contact
 from fem_racket.impact.held.shock import grip_peak, vibration_rms
 
 SPEED = 30.0

@@ -7,8 +7,9 @@ import numpy as np
 import pytest
 
 from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP, Hand
+from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.grip import simulate_held
-from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.modal import held_contact
 from fem_racket.impact.held.shock import grip_peak, vibration_energy, vibration_rms
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import AccuracyError, InputError
