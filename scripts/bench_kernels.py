@@ -192,7 +192,9 @@ def linear_engine(model: FrameModel, shape: tuple[int, int, int]) -> tuple[int, 
     return P.size, 1e6 * (time.process_time() - c0) / P.size
 
 
-def main(argv: list[str] | None = None) -> None:
+def main(argv: list[str] | None = None) -> list[tuple[str, float, str]]:
+    """Run the benchmark and print its tables; returns the accuracy rows (family, worst
+    |dCOR|, its case)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small batches, no 4 200-impact sweep")
     ap.add_argument("--accuracy", type=int, default=12, help="random cases per law family")
@@ -226,8 +228,10 @@ def main(argv: list[str] | None = None) -> None:
         except ImportError:
             print("openseespy: not installed (optional peer, DESIGN section 9: ~10 ms/impact)")
     print(f"\nworst |dCOR| vs CVODE over {args.accuracy} random laws per family (tolerance 1e-6)")
-    for family, worst, where in accuracy(model, args.accuracy):
+    rows = accuracy(model, args.accuracy)
+    for family, worst, where in rows:
         print(f"  {family:14s} {worst:9.1e}   {where}")
+    return rows
 
 
 if __name__ == "__main__":

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import logging
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -53,7 +54,6 @@ from fem_racket.validation import (
     check_choice,
     check_integer,
     check_positive,
-    show,
 )
 
 __all__ = ["NONE_TOLERANCE", "STEP_ERROR", "GeneralOutcome", "settings", "solve_general"]
@@ -140,10 +140,21 @@ def solve_general(
     ).astype(float)
     kernel = kernel_law(law, ncase)
     if kernel is None:
-        if np.ndim(rec.omega) > 1:
-            raise ValueError("a batch spanning frames needs a law with a compiled kernel")
         log.info("law %s has no compiled kernel: the numpy march runs", type(law).__name__)
-        return _solve_numpy(law, rec, speed, frame_velocity, t_case, steps, beta, t_max)
+        if np.ndim(rec.omega) == 1:
+            return _solve_numpy(law, rec, speed, frame_velocity, t_case, steps, beta, t_max)
+        # a batch spanning frames: the numpy march takes one frame at a time
+        frames = np.unique(rec.omega, axis=0, return_inverse=True)[1].ravel()
+        groups = [np.flatnonzero(frames == f) for f in range(frames.max() + 1)]
+        parts = []
+        for idx in groups:
+            sub = per_case(rec, ncase, idx)
+            n = int(np.sum(np.isfinite(sub.omega[0])))
+            sub = replace(sub, omega=sub.omega[0, :n], a=sub.a[:, :n])
+            fv = None if frame_velocity is None else frame_velocity[idx]
+            one = per_case(law, ncase, idx)
+            parts.append(_solve_numpy(one, sub, speed[idx], fv, t_case[idx], steps, beta, t_max))
+        return _merge(parts, groups, ncase)
     exponent = getattr(law, "exponent", 1.0)
     limit = LIMIT * t_case if t_max is None else np.full(ncase, check_positive("t_max", t_max, "s"))
     omega_c = contact_frequency(t_case, exponent) + 0.0 * t_case
@@ -166,7 +177,9 @@ def solve_general(
         bad = np.flatnonzero(run.steps == 0)
         if bad.size:
             i = int(bad[0])
-            what = f"case {i} (law {law.name}, {show(float(speed[i]))} m/s)"
+            one = per_case(law, ncase, np.array([i]))
+            what = f"law {one.label()} at {float(speed[i]):g} m/s"
+            what += f" (case {i} of {ncase})" if ncase > 1 else ""
             raise AccuracyError(run.refusal(i, tol or NONE_TOLERANCE, what))
     return out
 
