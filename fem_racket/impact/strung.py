@@ -1,0 +1,139 @@
+"""The strung racket seen from the ball: the frame and the string bed in series at the impact point.
+
+The ball's own law acts between the ball and the bed at the impact point (x_i, y_i); the bed's
+edge moves with the frame. The coupling used (an assumption, stated here and in the README):
+
+1. **The head ring moves with the frame's impact point.** The bed's edge is displaced uniformly
+   by the frame's deflection w(x_i) (the bed's static edge transmission to the point is then
+   exactly 1: a uniformly displaced membrane translates rigidly). The frame's bending along the
+   hoop and its twist are not passed to the edge.
+2. **The bed passes the contact force to the frame.** The force of the bed's edge on the frame is
+   the contact force F; the inertia of the bed's motion relative to its edge (its fixed-edge
+   modes) is not fed back to the frame, and the bed's mass moving with its edge is already part
+   of the frame's measured mass distribution (the paper's 0.360 kg racket is strung).
+
+With these, the ball sees the sum of two receptances, the frame's at x_i (free-free modes,
+rigid modes included) and the bed's at the point (fixed-edge modes, edge at rest)::
+
+    u_p(s) = [ sum_frame a_k^2 / (s^2 + omega_k^2) + sum_bed psi_j^2 / (s^2 + omega_j^2) ] (-F)
+
+so the strung racket is one linear structure in modal form whose flexible modes are the frame's
+and the bed's together: every impact path (the exact engine for a linear ball, the general
+integrator and CVODE for any law) takes it unchanged. The bed's modes above those computed enter
+through one pseudo-mode with their static flexibility and mass at the point
+(:mod:`fem_racket.strings.point`), as the engine's reduction does for a frame. A very stiff bed
+(tension -> infinity: omega_j -> infinity, compliance -> 0) leaves the frame alone: the paper's
+model.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from fem_racket.frame.model import FrameModel
+from fem_racket.strings.bed import StringBed
+from fem_racket.strings.point import DEFAULT_BED_MODES, DEFAULT_REFINE, bed_point_data
+from fem_racket.validation import InputError, show
+
+__all__ = ["DEFAULT_HEAD_CENTRE", "StrungPoint", "strung_point"]
+
+#: Centre of the head's ellipse as x/L (the default of :mod:`fem_racket.frame.head`: a typical
+#: 645 cm^2 head on the paper's 0.680 m frame; an assumption, the paper gives no head geometry).
+DEFAULT_HEAD_CENTRE = 0.74
+
+
+@dataclass(frozen=True, eq=False)
+class StrungPoint:
+    """Frame + bed at one impact point, in the modal form of the impact paths.
+
+    Attributes
+    ----------
+    omega : ndarray, shape (n,)
+        Every coordinate's angular frequency: the frame's two rigid modes (0) first, then the
+        frame's and the bed's flexible modes (and the bed's pseudo-mode), ascending [rad/s].
+    a : ndarray, shape (n,)
+        Mass-normalised values at the impact point [1/sqrt(kg)].
+    bed : ndarray of bool, shape (n,)
+        True for the bed's coordinates.
+    bed_stiffness : float
+        The bed's static stiffness at the point [N/m].
+    bed_frequencies_hz : ndarray
+        The bed's lowest fixed-edge frequencies [Hz].
+    """
+
+    omega: np.ndarray
+    a: np.ndarray
+    bed: np.ndarray
+    bed_stiffness: float
+    bed_frequencies_hz: np.ndarray
+
+    @property
+    def rigid(self) -> np.ndarray:
+        """Values of the two rigid modes at the point [1/sqrt(kg)]."""
+        return self.a[:2]
+
+    @property
+    def flexible(self) -> tuple[np.ndarray, np.ndarray]:
+        """(omega, a) of the flexible coordinates, frame and bed."""
+        return self.omega[2:], self.a[2:]
+
+
+#: Bed modes whose value at the point is below this fraction of the largest are left out: in
+#: series with the frame they are never excited (antisymmetric modes at a point on an axis).
+SILENT = 1e-9
+
+
+def bed_coordinates(
+    bed: StringBed, position: float, lateral_m: float, frame_length_m: float, centre: float
+) -> np.ndarray:
+    """The impact point on the bed [m, from the head's centre], checked to lie on the head."""
+    x, y = (position - centre) * frame_length_m, lateral_m
+    ax, ay = 0.5 * bed.head_length_m, 0.5 * bed.head_width_m
+    if (x / ax) ** 2 + (y / ay) ** 2 >= 1.0:
+        lo, hi = centre - ax / frame_length_m, centre + ax / frame_length_m
+        raise InputError(
+            f"position = {show(position)} x/L, lateral {show(lateral_m)} m is not allowed with "
+            f"the string bed: must lie on the head ({lo:.3f} to {hi:.3f} x/L on the axis)"
+        )
+    return np.array([x, y])
+
+
+def strung_point(
+    model: FrameModel,
+    bed: StringBed,
+    position: float,
+    lateral_m: float = 0.0,
+    *,
+    centre: float = DEFAULT_HEAD_CENTRE,
+    bed_modes: int = DEFAULT_BED_MODES,
+    refine: int = DEFAULT_REFINE,
+) -> StrungPoint:
+    """The strung racket at the impact point ``position`` (x/L), ``lateral_m`` off the axis.
+
+    Every frame mode of ``model`` is used (rigid modes first).
+    """
+    L = model.mesh.length
+    point = bed_coordinates(bed, position, lateral_m, L, centre)
+    fm = model.modes(None)
+    a_frame = fm.all_shapes.T @ model.fe.point_vector(position * L)
+    data = bed_point_data(bed, point[None], bed_modes, refine)
+    heard = np.abs(data.values[0]) > SILENT * np.max(np.abs(data.values[0]))
+    w_bed, a_bed = data.omega[heard], data.values[0][heard]
+    flex, mass = float(data.residual_flexibility[0]), float(data.residual_mass[0])
+    if flex > 0.0 and mass > 0.0:  # the bed's pseudo-mode
+        w_bed = np.append(w_bed, math.sqrt(mass / flex))
+        a_bed = np.append(a_bed, math.sqrt(mass))
+    w = np.concatenate([fm.omega, w_bed])
+    a = np.concatenate([a_frame[2:], a_bed])
+    is_bed = np.concatenate([np.zeros(fm.omega.size, bool), np.ones(w_bed.size, bool)])
+    order = np.argsort(w, kind="stable")
+    return StrungPoint(
+        np.concatenate([[0.0, 0.0], w[order]]),
+        np.concatenate([a_frame[:2], a[order]]),
+        np.concatenate([[False, False], is_bed[order]]),
+        float(data.stiffness[0]),
+        data.frequencies_hz,
+    )
