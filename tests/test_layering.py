@@ -1,4 +1,4 @@
-"""The layering: data flows one way, frame/contact/strings -> impact -> studies -> io -> cli.
+"""The layering, one way: frame/contact/strings -> impact -> studies -> io -> paper -> cli.
 
 Reads the imports of every module with :mod:`ast` (module level, inside functions and under
 ``TYPE_CHECKING`` alike) and fails on an import from a higher layer into a lower one, on an import
