@@ -1,0 +1,107 @@
+"""The ball on the strung racket: reduction to the paper's model, independent paths, energy and
+momentum."""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import simpson
+
+from fem_racket.contact.hunt_crossley import HuntCrossley
+from fem_racket.contact.linear import kcb_from_speed, zeta_from_cor
+from fem_racket.contact.spring_dashpot import SpringDashpot
+from fem_racket.impact.exact.engine import modal_impacts
+from fem_racket.impact.strung import strung_point
+from fem_racket.impact.strung_impact import strung_engine, strung_impact
+from fem_racket.strings.bed import StringBed
+from fem_racket.validation import InputError
+
+MB = 0.057
+V = 30.0
+POS = 0.76
+K = kcb_from_speed(V)
+ZETA = zeta_from_cor(0.83)
+C = 2 * ZETA * math.sqrt(MB * K)
+
+
+@pytest.fixture(scope="module")
+def point(standard_model):
+    return strung_point(standard_model, StringBed(), POS)
+
+
+def test_very_stiff_bed_is_the_papers_model(standard_model):
+    # Tension x f: the bed's compliance and its modes' weight fall as 1/f, so the strung racket
+    # tends to the frame alone with the paper's spring; measured |dCOR| = 2.52e-5 / (f / 1e4),
+    # i.e. 2.5e-13 at f = 1e12 (the exact engine, every mode).
+    fm = standard_model.modes(None)
+    a = fm.all_shapes.T @ standard_model.fe.point_vector(POS * standard_model.mesh.length)
+    ref = modal_impacts(fm.omega, a[2:], np.sum(a[:2] ** 2), speed=V, ball_mass=MB, tolerance=None)
+    errs = []
+    for f in (1e8, 1e12):
+        p = strung_point(standard_model, StringBed(tension_n=246.0 * f), POS)
+        out = strung_engine(p, K, ZETA, MB, V, tolerance=None)
+        errs.append(abs(float(out.cor) - float(ref.cor)))
+        assert abs(float(out.contact_time) - float(ref.contact_time)) < 1e-12 * 1e12 / f
+    assert errs[1] < 1e-12
+    assert errs[0] / errs[1] == pytest.approx(1e4, rel=0.05)  # error ~ 1/T
+
+
+def test_exact_cvode_and_general_agree(point):
+    # The same linear ball on the same structure: exact roots vs CVODE (rtol 1e-10) agree to
+    # ~1e-12 in COR (measured 3e-13); the general integrator to its COR tolerance 1e-6.
+    law = SpringDashpot(K, C)
+    exact = strung_engine(point, K, ZETA, MB, V, tolerance=None)
+    cv = strung_impact(point, law, MB, V, solver="cvode")
+    gen = strung_impact(point, law, MB, V)
+    assert cv.cor == pytest.approx(float(exact.cor), abs=1e-9)
+    assert cv.contact_time == pytest.approx(float(exact.contact_time), abs=1e-10)
+    assert gen.cor == pytest.approx(float(exact.cor), abs=2e-6)
+    assert gen.peak_force == pytest.approx(float(exact.peak_force), rel=1e-4)
+
+
+def test_nonlinear_ball_general_against_cvode(point):
+    # A Hunt-Crossley ball (the itf-ball preset's parameters) on the bed: two integrators.
+    law = HuntCrossley(3.978e5, 1.690, 0.07212)
+    gen = strung_impact(point, law, MB, V, tolerance=1e-7)
+    cv = strung_impact(point, law, MB, V, solver="cvode")
+    assert gen.cor == pytest.approx(cv.cor, abs=1e-6)
+    assert gen.contact_time == pytest.approx(cv.contact_time, rel=1e-5)
+
+
+def test_energy_and_momentum(point):
+    # The work of the contact force on the ball is its loss of kinetic energy; the racket (frame
+    # and bed) holds the work done on it; the dashpot dissipates int C delta'^2 dt; the frame's
+    # momentum is the ball's impulse (the bed passes the contact force to the frame).
+    law = SpringDashpot(K, C)
+    out = strung_impact(point, law, MB, V, tolerance=1e-8)
+    t = out.t
+    d = out.ball_deflection
+    rate = np.gradient(d, t, edge_order=2)
+    dissipated = simpson(C * rate**2, x=t)
+    assert out.ball_loss - out.racket_energy == pytest.approx(dissipated, rel=1e-3)
+    assert MB * V * (1 + out.cor) == pytest.approx(out.frame_momentum, rel=1e-12)
+    impulse = simpson(out.force, x=t)
+    assert impulse == pytest.approx(out.frame_momentum, rel=1e-5)
+    # no damping: everything the ball lost is in the racket
+    elastic = strung_impact(point, SpringDashpot(K, 0.0), MB, V, tolerance=1e-8)
+    assert elastic.racket_energy == pytest.approx(elastic.ball_loss, rel=1e-7)
+    s = out.summary()
+    assert s["peak_bed_deflection_m"] > 0 and s["peak_ball_deflection_m"] > 0
+    assert 0 < s["bed_energy_returned_j"] < s["ball_energy_loss_j"]
+
+
+def test_tension_changes_the_impact(standard_model):
+    # Higher tension: a stiffer bed, a shorter contact (Yang, Fafitis & Wiezel 2012: tension
+    # changes dwell time and rebound clearly).
+    res = {}
+    for T in (220.0, 270.0):
+        p = strung_point(standard_model, StringBed(tension_n=T), POS)
+        res[T] = (strung_engine(p, K, ZETA, MB, V), p.bed_stiffness)
+    assert res[270.0][1] / res[220.0][1] == pytest.approx(270 / 220, rel=1e-12)
+    assert float(res[270.0][0].contact_time) < float(res[220.0][0].contact_time)
+    assert float(res[270.0][0].cor) != pytest.approx(float(res[220.0][0].cor), abs=1e-4)
+
+
+def test_point_off_the_head(standard_model):
+    with pytest.raises(InputError, match="must lie on the head"):
+        strung_point(standard_model, StringBed(), 0.3)
