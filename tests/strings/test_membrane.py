@@ -116,3 +116,19 @@ def test_bad_input():
         StringBed(string="gut")
     with pytest.raises(InputError, match="load radius"):
         StringBed(load_radius_m=0.07)
+
+
+def test_geometric_stiffening():
+    # The strings' stretch raises the tension by EA eps with eps ~ w^2: at small deflection the
+    # stiffening k(w)/k(0) - 1 grows as w^2 and in proportion to EA (nylon vs polyester).
+    # Measured at the centre, 246 N, 16x19: nylon +2.4 % at 10 mm, +9.7 % at 20 mm; polyester
+    # +4.5 % and +17.8 % (DESIGN.md section 10: modest, 5-30 % at 10-20 mm, typical).
+    from fem_racket.strings.stiffening import stiffening, stiffening_ratio
+
+    nylon, poly = StringBed(string="nylon"), StringBed(string="polyester")
+    assert stiffening(nylon, 0.0)[0] == pytest.approx(bed_point_data(nylon, [0, 0]).stiffness[0])
+    small = [stiffening_ratio(nylon, w) - 1 for w in (0.001, 0.002)]
+    assert small[1] / small[0] == pytest.approx(4.0, rel=1e-2)
+    ea = poly.material.axial_rigidity_n / nylon.material.axial_rigidity_n
+    assert (stiffening_ratio(poly, 0.001) - 1) / small[0] == pytest.approx(ea, rel=1e-2)
+    assert 0.05 < stiffening_ratio(nylon, 0.02) - 1 < 0.3
