@@ -38,7 +38,14 @@ from fem_racket.strings.bed import StringBed
 from fem_racket.strings.point import DEFAULT_BED_MODES, DEFAULT_REFINE, bed_point_data
 from fem_racket.validation import InputError, show
 
-__all__ = ["DEFAULT_HEAD_CENTRE", "StrungPoint", "strung_point"]
+__all__ = [
+    "BALL_STIFFNESS",
+    "BALL_ZETA",
+    "DEFAULT_HEAD_CENTRE",
+    "StrungPoint",
+    "clamped_point",
+    "strung_point",
+]
 
 #: Centre of the head's ellipse as x/L (the default of :mod:`fem_racket.frame.head`: a typical
 #: 645 cm^2 head on the paper's 0.680 m frame; an assumption, the paper gives no head geometry).
@@ -81,6 +88,13 @@ class StrungPoint:
         return self.omega[2:], self.a[2:]
 
 
+#: The ``kawazoe-1997-ball``: a linear ball, spring k_b [N/m] and damping ratio zeta_b [-], whose
+#: series with the paper's racket as strung (246 N, 16x19, nylon, clamped, centre) gives the
+#: paper's clamped contact time 4.53 ms at 20 m/s and COR 0.83 (fitted and tabulated by
+#: :mod:`fem_racket.studies.bed_ball`, where its limits are stated).
+BALL_STIFFNESS = 137357.7927
+BALL_ZETA = 0.400824089
+
 #: Bed modes whose value at the point is below this fraction of the largest are left out: in
 #: series with the frame they are never excited (antisymmetric modes at a point on an axis).
 SILENT = 1e-9
@@ -101,6 +115,33 @@ def bed_coordinates(
     return np.array([x, y])
 
 
+def _bed_modes(bed: StringBed, point: np.ndarray, bed_modes: int, refine: int):
+    """The bed's heard modes at ``point`` [m] with its pseudo-mode: (omega, values, data)."""
+    data = bed_point_data(bed, point[None], bed_modes, refine)
+    heard = np.abs(data.values[0]) > SILENT * np.max(np.abs(data.values[0]))
+    w_bed, a_bed = data.omega[heard], data.values[0][heard]
+    flex, mass = float(data.residual_flexibility[0]), float(data.residual_mass[0])
+    if flex > 0.0 and mass > 0.0:  # the bed's pseudo-mode
+        w_bed = np.append(w_bed, math.sqrt(mass / flex))
+        a_bed = np.append(a_bed, math.sqrt(mass))
+    return w_bed, a_bed, data
+
+
+def _assemble(w_frame, a_frame, w_bed, a_bed, data) -> StrungPoint:
+    """Frame (rigid values first) and bed coordinates in one ascending list."""
+    w = np.concatenate([w_frame, w_bed])
+    a = np.concatenate([a_frame[2:], a_bed])
+    is_bed = np.concatenate([np.zeros(w_frame.size, bool), np.ones(w_bed.size, bool)])
+    order = np.argsort(w, kind="stable")
+    return StrungPoint(
+        np.concatenate([[0.0, 0.0], w[order]]),
+        np.concatenate([a_frame[:2], a[order]]),
+        np.concatenate([[False, False], is_bed[order]]),
+        float(data.stiffness[0]),
+        data.frequencies_hz,
+    )
+
+
 def strung_point(
     model: FrameModel,
     bed: StringBed,
@@ -119,21 +160,18 @@ def strung_point(
     point = bed_coordinates(bed, position, lateral_m, L, centre)
     fm = model.modes(None)
     a_frame = fm.all_shapes.T @ model.fe.point_vector(position * L)
-    data = bed_point_data(bed, point[None], bed_modes, refine)
-    heard = np.abs(data.values[0]) > SILENT * np.max(np.abs(data.values[0]))
-    w_bed, a_bed = data.omega[heard], data.values[0][heard]
-    flex, mass = float(data.residual_flexibility[0]), float(data.residual_mass[0])
-    if flex > 0.0 and mass > 0.0:  # the bed's pseudo-mode
-        w_bed = np.append(w_bed, math.sqrt(mass / flex))
-        a_bed = np.append(a_bed, math.sqrt(mass))
-    w = np.concatenate([fm.omega, w_bed])
-    a = np.concatenate([a_frame[2:], a_bed])
-    is_bed = np.concatenate([np.zeros(fm.omega.size, bool), np.ones(w_bed.size, bool)])
-    order = np.argsort(w, kind="stable")
-    return StrungPoint(
-        np.concatenate([[0.0, 0.0], w[order]]),
-        np.concatenate([a_frame[:2], a[order]]),
-        np.concatenate([[False, False], is_bed[order]]),
-        float(data.stiffness[0]),
-        data.frequencies_hz,
-    )
+    return _assemble(fm.omega, a_frame, *_bed_modes(bed, point, bed_modes, refine))
+
+
+def clamped_point(
+    bed: StringBed,
+    point: tuple[float, float] = (0.0, 0.0),
+    *,
+    bed_modes: int = DEFAULT_BED_MODES,
+    refine: int = DEFAULT_REFINE,
+) -> StrungPoint:
+    """The bed on a clamped frame (its edge fixed) at ``point`` [m from the head's centre]: the
+    structure of the paper's clamped-frame targets (eqs 1-4), rigid values 0."""
+    p = np.asarray(point, dtype=float)
+    bed_coordinates(bed, DEFAULT_HEAD_CENTRE + p[0], p[1], 1.0, DEFAULT_HEAD_CENTRE)  # on it
+    return _assemble(np.zeros(0), np.zeros(2), *_bed_modes(bed, p, bed_modes, refine))
