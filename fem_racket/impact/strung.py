@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -69,6 +70,12 @@ class StrungPoint:
         The bed's static stiffness at the point [N/m].
     bed_frequencies_hz : ndarray
         The bed's lowest fixed-edge frequencies [Hz].
+    strings : StringBed
+        The bed.
+    position : float or None
+        Impact point x/L on the frame (None: the clamped bed alone).
+    lateral_m : float
+        Offset of the impact point from the racket's axis [m].
     """
 
     omega: np.ndarray
@@ -76,6 +83,18 @@ class StrungPoint:
     bed: np.ndarray
     bed_stiffness: float
     bed_frequencies_hz: np.ndarray
+    strings: StringBed
+    position: float | None
+    lateral_m: float
+
+    def describe(self) -> dict[str, Any]:
+        """The bed and the impact point on it, JSON-ready, units in the keys."""
+        return {
+            **self.strings.describe(),
+            "stringbed_stiffness_n_m": self.bed_stiffness,
+            "stringbed_frequencies_hz": [float(f) for f in self.bed_frequencies_hz[:3]],
+            "offset_m": self.lateral_m,
+        }
 
     @property
     def rigid(self) -> np.ndarray:
@@ -127,7 +146,7 @@ def _bed_modes(bed: StringBed, point: np.ndarray, bed_modes: int, refine: int):
     return w_bed, a_bed, data
 
 
-def _assemble(w_frame, a_frame, w_bed, a_bed, data) -> StrungPoint:
+def _assemble(w_frame, a_frame, w_bed, a_bed, data, where) -> StrungPoint:
     """Frame (rigid values first) and bed coordinates in one ascending list."""
     w = np.concatenate([w_frame, w_bed])
     a = np.concatenate([a_frame[2:], a_bed])
@@ -139,6 +158,7 @@ def _assemble(w_frame, a_frame, w_bed, a_bed, data) -> StrungPoint:
         np.concatenate([[False, False], is_bed[order]]),
         float(data.stiffness[0]),
         data.frequencies_hz,
+        *where,
     )
 
 
@@ -160,7 +180,8 @@ def strung_point(
     point = bed_coordinates(bed, position, lateral_m, L, centre)
     fm = model.modes(None)
     a_frame = fm.all_shapes.T @ model.fe.point_vector(position * L)
-    return _assemble(fm.omega, a_frame, *_bed_modes(bed, point, bed_modes, refine))
+    where = (bed, float(position), float(lateral_m))
+    return _assemble(fm.omega, a_frame, *_bed_modes(bed, point, bed_modes, refine), where)
 
 
 def clamped_point(
@@ -174,4 +195,5 @@ def clamped_point(
     structure of the paper's clamped-frame targets (eqs 1-4), rigid values 0."""
     p = np.asarray(point, dtype=float)
     bed_coordinates(bed, DEFAULT_HEAD_CENTRE + p[0], p[1], 1.0, DEFAULT_HEAD_CENTRE)  # on it
-    return _assemble(np.zeros(0), np.zeros(2), *_bed_modes(bed, p, bed_modes, refine))
+    where = (bed, None, float(p[1]))
+    return _assemble(np.zeros(0), np.zeros(2), *_bed_modes(bed, p, bed_modes, refine), where)

@@ -59,6 +59,12 @@ class StrungImpact:
         Linear momentum of the frame at t_c [kg m/s] (its rigid translation).
     point : StrungPoint
         The structure used.
+    law : ContactLaw
+        The ball's law.
+    speed, ball_mass : float
+        V_B0 [m/s] and m_B [kg].
+    solver : str
+        The integrator that ran.
     """
 
     cor: float
@@ -74,15 +80,24 @@ class StrungImpact:
     bed_peak_energy: float
     frame_momentum: float
     point: StrungPoint
+    law: ContactLaw
+    speed: float
+    ball_mass: float
+    solver: str
 
     def summary(self) -> dict[str, Any]:
-        """The results as JSON-ready numbers, units in the keys."""
+        """The results, the bed and what the run used, JSON-ready, units in the keys."""
         return {
             "cor": self.cor,
             "contact_time_s": self.contact_time,
+            "rebound_speed_m_s": self.cor * self.speed,
             "peak_force_n": self.peak_force,
-            "stringbed_stiffness_n_m": self.point.bed_stiffness,
-            "stringbed_frequencies_hz": [float(f) for f in self.point.bed_frequencies_hz[:3]],
+            "position_x_over_l": self.point.position,
+            "speed_m_s": self.speed,
+            "ball_mass_kg": self.ball_mass,
+            "solver": self.solver,
+            **self.law.describe(),
+            **self.point.describe(),
             "peak_bed_deflection_m": float(np.max(self.bed_deflection)),
             "peak_ball_deflection_m": float(np.max(self.ball_deflection)),
             "ball_energy_loss_j": self.ball_loss,
@@ -155,6 +170,10 @@ def strung_impact(
         bed_peak_energy=float(np.max(e_bed)),
         frame_momentum=float(v[-1, 1] / a[0]) if a[0] else math.nan,
         point=point,
+        law=law,
+        speed=float(speed),
+        ball_mass=float(ball_mass),
+        solver=solver,
     )
 
 
