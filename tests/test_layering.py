@@ -133,6 +133,7 @@ IMPACT_TOP = {
     "simulate_law",
     "simulate_linear",
     "solvers",
+    "strung_exact",
     "strung_impact",
 }
 

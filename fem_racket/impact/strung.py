@@ -34,10 +34,12 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.model import FrameModel
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.point import DEFAULT_BED_MODES, DEFAULT_REFINE, bed_point_data
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError, check_positive, show
 
 __all__ = [
     "BALL_STIFFNESS",
@@ -45,6 +47,7 @@ __all__ = [
     "DEFAULT_HEAD_CENTRE",
     "StrungPoint",
     "clamped_point",
+    "kawazoe_ball",
     "strung_point",
 ]
 
@@ -113,6 +116,14 @@ class StrungPoint:
 #: :mod:`fem_racket.studies.bed_ball`, where its limits are stated).
 BALL_STIFFNESS = 137357.7927
 BALL_ZETA = 0.400824089
+
+
+def kawazoe_ball(ball_mass: float, separation: str = "displacement") -> ContactLaw:
+    """The ``kawazoe-1997-ball`` as a contact law for a ball of ``ball_mass`` [kg]: spring
+    k_b and dashpot 2 zeta_b sqrt(m_B k_b)."""
+    c = 2.0 * BALL_ZETA * math.sqrt(check_positive("ball_mass", ball_mass, "kg") * BALL_STIFFNESS)
+    return SpringDashpot(BALL_STIFFNESS, c, separation)
+
 
 #: Bed modes whose value at the point is below this fraction of the largest are left out: in
 #: series with the frame they are never excited (antisymmetric modes at a point on an axis).

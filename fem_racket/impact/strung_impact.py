@@ -22,18 +22,22 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
+from fem_racket.frame.model import FrameModel
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.law_impact import law_histories, ode_state_at
 from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.strung import StrungPoint
-from fem_racket.validation import check_choice
+from fem_racket.impact.strung import StrungPoint, kawazoe_ball, strung_point
+from fem_racket.impact.strung_exact import strung_exact_states
+from fem_racket.strings.bed import StringBed
+from fem_racket.validation import check_choice, check_positive, check_range
 
-__all__ = ["STRUNG_SOLVERS", "StrungImpact", "strung_engine", "strung_impact"]
+__all__ = ["STRUNG_SOLVERS", "StrungImpact", "simulate_strung", "strung_engine", "strung_impact"]
 
-#: Integrators of an impact on the strung racket (any ball law).
-STRUNG_SOLVERS = ("general", "cvode")
+#: Integrators of an impact on the strung racket: the exact solution (the linear ball), the
+#: general integrator and CVODE (any ball law).
+STRUNG_SOLVERS = ("exact", "general", "cvode")
 #: Output times per contact for the peaks and the energy histories.
 SAMPLES = 801
 
@@ -125,12 +129,17 @@ def strung_impact(
 ) -> StrungImpact:
     """The ball (``ball_mass`` [kg], ``speed`` [m/s]) under ``law`` on the strung racket at rest.
 
-    ``solver``: ``"general"`` (COR ``tolerance``) or ``"cvode"`` (``rtol``, ``atol``, every
-    mode).
+    ``solver``: ``"exact"`` (the linear ball, every mode:
+    :mod:`fem_racket.impact.strung_exact`), ``"general"`` (COR ``tolerance``) or ``"cvode"``
+    (``rtol``, ``atol``, every mode).
     """
     check_choice("solver", solver, STRUNG_SOLVERS)
     w, a = point.omega, point.a
-    if solver == "cvode":
+    z = None
+    if solver == "exact":
+        t, x, v = strung_exact_states(point, law, ball_mass, speed, SAMPLES)
+        tc = float(t[-1])
+    elif solver == "cvode":
         tr = solve_law_cvode(law, w, a, ball_mass, speed, rtol=rtol, atol=atol)
         n = tr.n
         tc = tr.contact_time
@@ -144,7 +153,6 @@ def strung_impact(
         tc = float(out.contact_time[0])
         t = np.linspace(0.0, tc, SAMPLES)
         x, v = law_histories(out, w, a, ball_mass, speed, None, t)
-        z = None
         if law.state == "ode":
             z = ode_state_at(law, out, t)
     d = x[:, 0] - x[:, 1:] @ a
@@ -204,4 +212,43 @@ def strung_engine(
         separation=separation,
         tolerance=tolerance,
         peak_force=True,
+    )
+
+
+def simulate_strung(
+    model: FrameModel,
+    strings: StringBed,
+    *,
+    position: float = 0.75,
+    offset: float = 0.0,
+    speed: float = 20.0,
+    ball_mass: float = 0.057,
+    law: ContactLaw | None = None,
+    solver: str = "exact",
+    tolerance: float | None = DEFAULT_TOLERANCE,
+    rtol: float = 1e-10,
+    atol: float = 1e-13,
+) -> StrungImpact:
+    """The ball striking the strung racket ``model`` + ``strings`` at rest.
+
+    Parameters
+    ----------
+    model : FrameModel
+        The frame (every mode used).
+    strings : StringBed
+        The bed (:mod:`fem_racket.strings.bed`).
+    position, offset : float
+        Impact point: x/L along the frame and its offset from the axis [m].
+    speed, ball_mass : float
+        V_B0 [m/s] and m_B [kg].
+    law : ContactLaw, optional
+        The ball's own law; the ``kawazoe-1997-ball`` when None.
+    solver, tolerance, rtol, atol
+        As :func:`strung_impact`.
+    """
+    check_positive("speed", speed, "m/s")
+    point = strung_point(model, strings, check_range("position", position, 0.0, 1.0), offset)
+    ball = kawazoe_ball(ball_mass) if law is None else law
+    return strung_impact(
+        point, ball, ball_mass, speed, solver=solver, tolerance=tolerance, rtol=rtol, atol=atol
     )

@@ -105,3 +105,31 @@ def test_tension_changes_the_impact(standard_model):
 def test_point_off_the_head(standard_model):
     with pytest.raises(InputError, match="must lie on the head"):
         strung_point(standard_model, StringBed(), 0.3)
+
+
+def test_kawazoe_ball_exact_histories_against_cvode(standard_model):
+    # The calibrated, heavily damped linear ball (zeta_b = 0.40) on the free strung racket: the
+    # closed-form histories (roots and residues, every mode) against CVODE (rtol 1e-10) and the
+    # batched engine; COR and t_c to ~1e-10 (measured 3e-12 / 1e-13 s), the energies at t_c to
+    # 1e-7; the peaks (801 samples, CVODE's interpolated linearly from its own grid) to 1e-4.
+    from fem_racket.impact.strung import BALL_STIFFNESS, BALL_ZETA, kawazoe_ball
+
+    point = strung_point(standard_model, StringBed(tension_n=220.0), 0.75)
+    law = kawazoe_ball(MB)
+    exact = strung_impact(point, law, MB, 20.0, solver="exact")
+    cv = strung_impact(point, law, MB, 20.0, solver="cvode")
+    engine = strung_engine(point, BALL_STIFFNESS, BALL_ZETA, MB, 20.0, tolerance=None)
+    assert exact.cor == pytest.approx(float(engine.cor), abs=1e-10)
+    assert exact.contact_time == pytest.approx(float(engine.contact_time), abs=1e-12)
+    assert exact.cor == pytest.approx(cv.cor, abs=1e-8)
+    s, c = exact.summary(), cv.summary()
+    for key in ("energy_lost_in_ball_j", "bed_energy_left_j", "ball_energy_loss_j"):
+        assert s[key] == pytest.approx(c[key], rel=1e-7), key
+    for key in ("bed_energy_returned_j", "peak_bed_deflection_m", "peak_ball_deflection_m"):
+        assert s[key] == pytest.approx(c[key], rel=1e-4), key
+    assert MB * 20.0 * (1 + exact.cor) == pytest.approx(exact.frame_momentum, rel=1e-12)
+
+
+def test_exact_refuses_a_nonlinear_ball(point):
+    with pytest.raises(InputError, match="exact strung solver"):
+        strung_impact(point, HuntCrossley(3.978e5, 1.690, 0.07212), MB, V, solver="exact")
