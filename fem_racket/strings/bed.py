@@ -32,16 +32,14 @@ __all__ = ["StringBed", "parse_pattern"]
 PATTERN_RANGE = (4, 40)
 
 
-def parse_pattern(text: str) -> tuple[int, int]:
-    """``"16x19"`` -> (16, 19): mains x crosses."""
+def parse_pattern(text: str, name: str = "pattern") -> tuple[int, int]:
+    """``"16x19"`` -> (16, 19): mains x crosses (``name``: the parameter named in errors)."""
     match = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", str(text))
     if match is None:
-        raise InputError(
-            f"pattern = {show(text)} is not allowed: must be MAINSxCROSSES, e.g. 16x19"
-        )
+        raise InputError(f"{name} = {show(text)} is not allowed: must be MAINSxCROSSES, e.g. 16x19")
     lo, hi = PATTERN_RANGE
-    mains = check_integer("pattern mains", int(match.group(1)), lo, hi)
-    crosses = check_integer("pattern crosses", int(match.group(2)), lo, hi)
+    mains = check_integer(f"{name} mains", int(match.group(1)), lo, hi)
+    crosses = check_integer(f"{name} crosses", int(match.group(2)), lo, hi)
     return mains, crosses
 
 

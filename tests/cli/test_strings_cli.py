@@ -65,3 +65,17 @@ def test_bad_input(capsys, argv, message):
     code, out, err = run(capsys, "simulate", *argv)
     assert code == 2 and out == ""
     assert message in err and len(err.strip().splitlines()) == 1
+
+
+def test_run_file_strings_table(capsys, tmp_path):
+    # a [strings] table replaces K_CB as the options do; the command line wins over the file
+    cfg = tmp_path / "run.toml"
+    cfg.write_text('[strings]\ntension_n = 230\npattern = "18x20"\nstring = "polyester"\n')
+    code, out, _ = run(capsys, "simulate", "--config", cfg, "--json")
+    s = json.loads(out)
+    assert code == 0 and s["pattern"] == "18x20" and s["string_tension_n"] == 230.0
+    code, out, _ = run(capsys, "simulate", "--config", cfg, "--string-tension", "260", "--json")
+    assert json.loads(out)["string_tension_n"] == 260.0
+    cfg.write_text('[strings]\npattern = "18"\n')
+    code, out, err = run(capsys, "simulate", "--config", cfg)
+    assert code == 2 and "strings.pattern = '18' is not allowed" in err
