@@ -79,6 +79,11 @@ class StrungPoint:
         Impact point x/L on the frame (None: the clamped bed alone).
     lateral_m : float
         Offset of the impact point from the racket's axis [m].
+    refine : int
+        Refinements of the bed's mesh (:func:`fem_racket.strings.membrane.bed_mesh`).
+    bed_shapes : ndarray, shape (n_interior, n_bed)
+        The bed coordinates' shapes on the mesh's interior DOFs, in the order they are listed
+        (for pictures) [1/sqrt(kg)].
     """
 
     omega: np.ndarray
@@ -89,6 +94,8 @@ class StrungPoint:
     strings: StringBed
     position: float | None
     lateral_m: float
+    refine: int
+    bed_shapes: np.ndarray
 
     def describe(self) -> dict[str, Any]:
         """The bed and the impact point on it, JSON-ready, units in the keys."""
@@ -146,23 +153,28 @@ def bed_coordinates(
 
 
 def _bed_modes(bed: StringBed, point: np.ndarray, bed_modes: int, refine: int):
-    """The bed's heard modes at ``point`` [m] with its pseudo-mode: (omega, values, data)."""
+    """The bed's heard modes at ``point`` [m] with its pseudo-mode: (omega, values, shapes on
+    the interior DOFs, data); the pseudo-mode's shape is the residual static shape per unit
+    pseudo-coordinate (its value at the point a_p)."""
     data = bed_point_data(bed, point[None], bed_modes, refine)
     heard = np.abs(data.values[0]) > SILENT * np.max(np.abs(data.values[0]))
     w_bed, a_bed = data.omega[heard], data.values[0][heard]
+    shapes = data.shapes[:, heard]
     flex, mass = float(data.residual_flexibility[0]), float(data.residual_mass[0])
     if flex > 0.0 and mass > 0.0:  # the bed's pseudo-mode
         w_bed = np.append(w_bed, math.sqrt(mass / flex))
         a_bed = np.append(a_bed, math.sqrt(mass))
-    return w_bed, a_bed, data
+        shapes = np.column_stack([shapes, data.residual_shapes[:, 0] * math.sqrt(mass) / flex])
+    return w_bed, a_bed, shapes, data
 
 
-def _assemble(w_frame, a_frame, w_bed, a_bed, data, where) -> StrungPoint:
+def _assemble(w_frame, a_frame, w_bed, a_bed, shapes, data, where) -> StrungPoint:
     """Frame (rigid values first) and bed coordinates in one ascending list."""
     w = np.concatenate([w_frame, w_bed])
     a = np.concatenate([a_frame[2:], a_bed])
     is_bed = np.concatenate([np.zeros(w_frame.size, bool), np.ones(w_bed.size, bool)])
     order = np.argsort(w, kind="stable")
+    bed_order = order[is_bed[order]] - w_frame.size  # the bed's coordinates as they are listed
     return StrungPoint(
         np.concatenate([[0.0, 0.0], w[order]]),
         np.concatenate([a_frame[:2], a[order]]),
@@ -170,6 +182,7 @@ def _assemble(w_frame, a_frame, w_bed, a_bed, data, where) -> StrungPoint:
         float(data.stiffness[0]),
         data.frequencies_hz,
         *where,
+        shapes[:, bed_order],
     )
 
 
@@ -191,7 +204,7 @@ def strung_point(
     point = bed_coordinates(bed, position, lateral_m, L, centre)
     fm = model.modes(None)
     a_frame = fm.all_shapes.T @ model.fe.point_vector(position * L)
-    where = (bed, float(position), float(lateral_m))
+    where = (bed, float(position), float(lateral_m), refine)
     return _assemble(fm.omega, a_frame, *_bed_modes(bed, point, bed_modes, refine), where)
 
 
@@ -206,5 +219,5 @@ def clamped_point(
     structure of the paper's clamped-frame targets (eqs 1-4), rigid values 0."""
     p = np.asarray(point, dtype=float)
     bed_coordinates(bed, DEFAULT_HEAD_CENTRE + p[0], p[1], 1.0, DEFAULT_HEAD_CENTRE)  # on it
-    where = (bed, None, float(p[1]))
+    where = (bed, None, float(p[1]), refine)
     return _assemble(np.zeros(0), np.zeros(2), *_bed_modes(bed, p, bed_modes, refine), where)

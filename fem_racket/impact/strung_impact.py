@@ -69,6 +69,8 @@ class StrungImpact:
         V_B0 [m/s] and m_B [kg].
     solver : str
         The integrator that ran.
+    coordinates : ndarray, shape (nt, 1 + n)
+        u_B [m] and the structure's coordinates (:attr:`StrungPoint.omega` order) at ``t``.
     """
 
     cor: float
@@ -88,6 +90,7 @@ class StrungImpact:
     speed: float
     ball_mass: float
     solver: str
+    coordinates: np.ndarray
 
     def summary(self) -> dict[str, Any]:
         """The results, the bed and what the run used, JSON-ready, units in the keys."""
@@ -182,6 +185,7 @@ def strung_impact(
         speed=float(speed),
         ball_mass=float(ball_mass),
         solver=solver,
+        coordinates=x,
     )
 
 

@@ -45,6 +45,11 @@ class BedPointData:
         Static compliance c at each point [m/N].
     residual_flexibility, residual_mass : ndarray, shape (p,)
         Sums of psi^2/omega^2 [s^2/kg] and psi^2 [1/kg] over the modes not in ``omega``.
+    shapes : ndarray, shape (n, m)
+        Mass-normalised mode shapes on the interior DOFs [1/sqrt(kg)] (for pictures).
+    residual_shapes : ndarray, shape (n, p)
+        Static displacement of the modes not in ``omega`` under a unit load at each point
+        [m/N]: K^-1 q - sum_kept phi psi / omega^2.
     """
 
     omega: np.ndarray
@@ -52,6 +57,8 @@ class BedPointData:
     compliance: np.ndarray
     residual_flexibility: np.ndarray
     residual_mass: np.ndarray
+    shapes: np.ndarray
+    residual_shapes: np.ndarray
 
     @property
     def stiffness(self) -> np.ndarray:
@@ -91,11 +98,21 @@ def bed_point_data(
     mesh = bed_mesh(L, W, refine)
     q = disk_load(mesh, pts, bed.load_radius_m)
     K = (ratio * mesh.Kxx + mesh.Kyy).tocsc()
-    c_unit = np.einsum("ij,ij->j", q, splu(K).solve(q))
+    u_unit = splu(K).solve(q)
+    c_unit = np.einsum("ij,ij->j", q, u_unit)
     m_unit = np.einsum("ij,ij->j", q, splu(mesh.M1.tocsc()).solve(q))
     w_u, phi = unit_modes(L, W, ratio, refine, int(modes))
     v_u = q.T @ phi  # (p, m)
     scale_w = math.sqrt(bed.n_y / bed.rho_s)
     flex = np.maximum(c_unit - (v_u**2 / w_u**2).sum(axis=1), 0.0) / bed.n_y
     mass = np.maximum(m_unit - (v_u**2).sum(axis=1), 0.0) / bed.rho_s
-    return BedPointData(w_u * scale_w, v_u / math.sqrt(bed.rho_s), c_unit / bed.n_y, flex, mass)
+    residual = (u_unit - phi @ (v_u / w_u**2).T) / bed.n_y
+    return BedPointData(
+        w_u * scale_w,
+        v_u / math.sqrt(bed.rho_s),
+        c_unit / bed.n_y,
+        flex,
+        mass,
+        phi / math.sqrt(bed.rho_s),
+        residual,
+    )
