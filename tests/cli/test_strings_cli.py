@@ -79,3 +79,16 @@ def test_run_file_strings_table(capsys, tmp_path):
     cfg.write_text('[strings]\npattern = "18"\n')
     code, out, err = run(capsys, "simulate", "--config", cfg)
     assert code == 2 and "strings.pattern = '18' is not allowed" in err
+
+
+def test_export_vtk_draws_the_bed(capsys, tmp_path):
+    code, out, err = run(
+        capsys, "export-vtk", "--string-tension", "250", "--frames", "4", "--out", tmp_path / "v"
+    )
+    assert code == 0 and err == ""
+    pvd = tmp_path / "v" / "impact.pvd"
+    assert out.strip() == str(pvd)
+    text = pvd.read_text()
+    assert text.count('name="strings"') == 4 and text.count('name="frame"') == 4
+    code, _, err = run(capsys, "export-vtk", "--pattern", "16x19", "--field", "slope [rad]")
+    assert code == 2 and "--field is not allowed with a string bed" in err

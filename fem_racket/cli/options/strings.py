@@ -34,7 +34,13 @@ from fem_racket.strings.bed import StringBed, parse_pattern
 from fem_racket.strings.materials import STRINGS
 from fem_racket.validation import InputError, check_positive, show
 
-__all__ = ["STRING_DESTS", "add_strings_options", "run_strung", "strings_from_args"]
+__all__ = [
+    "STRING_DESTS",
+    "add_strings_options",
+    "run_strung",
+    "strings_from_args",
+    "strung_from_args",
+]
 
 #: The argparse destinations of the string-bed options.
 STRING_DESTS = (
@@ -218,12 +224,13 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
     ]
 
 
-def run_strung(args: argparse.Namespace, strings: StringBed, model, files: list[Path]) -> int:
-    """Simulate the ball on ``strings`` and the frame ``model``; print, write."""
+def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> StrungImpact:
+    """The impact the options ask for on ``strings`` and the frame ``model`` (refusing the
+    options the strung racket does not take)."""
     _check(args)
     law = law_from_args(args)
     solver = "general" if args.solver == "exact" and law is not None else args.solver
-    result = simulate_strung(
+    return simulate_strung(
         model,
         strings,
         position=args.position,
@@ -235,9 +242,14 @@ def run_strung(args: argparse.Namespace, strings: StringBed, model, files: list[
         rtol=args.rtol,
         atol=args.atol,
     )
+
+
+def run_strung(args: argparse.Namespace, strings: StringBed, model, files: list[Path]) -> int:
+    """Simulate the ball on ``strings`` and the frame ``model``; print, write."""
+    result = strung_from_args(args, strings, model)
     summary = {
         **result.summary(),
-        "ball_law": "kawazoe-1997-ball" if law is None else args.law,
+        "ball_law": "kawazoe-1997-ball" if args.law == "linear" else args.law,
         "elements": model.mesh.n_elements,
     }
     if args.out:
