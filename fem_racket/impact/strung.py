@@ -3,10 +3,16 @@
 The ball's own law acts between the ball and the bed at the impact point (x_i, y_i); the bed's
 edge moves with the frame. The coupling used (an assumption, stated here and in the README):
 
-1. **The head ring moves with the frame's impact point.** The bed's edge is displaced uniformly
-   by the frame's deflection w(x_i) (the bed's static edge transmission to the point is then
-   exactly 1: a uniformly displaced membrane translates rigidly). The frame's bending along the
-   hoop and its twist are not passed to the edge.
+1. **The head ring moves with the frame** (``edge``). ``"point"`` (default): the bed's edge is
+   displaced uniformly by the frame's deflection w(x_i) at the impact point (the static edge
+   transmission to the point is then exactly 1: a uniformly displaced membrane translates
+   rigidly); this is the paper's point contact when the bed is very stiff. ``"hoop"``: each edge
+   point moves with the frame's deflection at its own x (the beam's bending along the hoop), and
+   the bed's static edge transmission T (:func:`fem_racket.strings.point.edge_transmission`)
+   averages them: the frame is seen through a_k = sum_e T_e phi_k(x_e) and, by reciprocity,
+   receives the contact force spread over the edge as T F. T reproduces linear functions, so
+   the rigid modes are the same either way; only the frame's bending differs. The frame's twist
+   is not passed to the edge in either.
 2. **The bed passes the contact force to the frame.** The force of the bed's edge on the frame is
    the contact force F; the inertia of the bed's motion relative to its edge (its fixed-edge
    modes) is not fed back to the frame, and the bed's mass moving with its edge is already part
@@ -38,22 +44,22 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.model import FrameModel
 from fem_racket.strings.bed import StringBed
-from fem_racket.strings.point import DEFAULT_BED_MODES, DEFAULT_REFINE, bed_point_data
+from fem_racket.strings.point import (
+    DEFAULT_BED_MODES,
+    DEFAULT_REFINE,
+    bed_point_data,
+    edge_transmission,
+)
 from fem_racket.validation import InputError, check_positive, show
 
 __all__ = [
     "BALL_STIFFNESS",
     "BALL_ZETA",
-    "DEFAULT_HEAD_CENTRE",
     "StrungPoint",
     "clamped_point",
     "kawazoe_ball",
     "strung_point",
 ]
-
-#: Centre of the head's ellipse as x/L (the default of :mod:`fem_racket.frame.head`: a typical
-#: 645 cm^2 head on the paper's 0.680 m frame; an assumption, the paper gives no head geometry).
-DEFAULT_HEAD_CENTRE = 0.74
 
 
 @dataclass(frozen=True, eq=False)
@@ -192,18 +198,25 @@ def strung_point(
     position: float,
     lateral_m: float = 0.0,
     *,
-    centre: float = DEFAULT_HEAD_CENTRE,
     bed_modes: int = DEFAULT_BED_MODES,
     refine: int = DEFAULT_REFINE,
 ) -> StrungPoint:
-    """The strung racket at the impact point ``position`` (x/L), ``lateral_m`` off the axis.
+    """The strung racket at the impact point ``position`` (x/L), ``lateral_m`` off the axis,
+    the bed centred at ``bed.head_centre``, its ring moving with the frame as ``bed.edge``
+    says (module docstring).
 
     Every frame mode of ``model`` is used (rigid modes first).
     """
+    edge, centre = bed.edge, bed.head_centre
     L = model.mesh.length
     point = bed_coordinates(bed, position, lateral_m, L, centre)
     fm = model.modes(None)
-    a_frame = fm.all_shapes.T @ model.fe.point_vector(position * L)
+    if edge == "point":
+        a_frame = fm.all_shapes.T @ model.fe.point_vector(position * L)
+    else:
+        xy, T = edge_transmission(bed, point[None], refine)
+        R = model.fe.field_matrix(centre * L + xy[:, 0], 0)  # frame deflection at the edge
+        a_frame = (T[0] @ (R @ fm.all_shapes)).ravel()
     where = (bed, float(position), float(lateral_m), refine)
     return _assemble(fm.omega, a_frame, *_bed_modes(bed, point, bed_modes, refine), where)
 
@@ -218,6 +231,6 @@ def clamped_point(
     """The bed on a clamped frame (its edge fixed) at ``point`` [m from the head's centre]: the
     structure of the paper's clamped-frame targets (eqs 1-4), rigid values 0."""
     p = np.asarray(point, dtype=float)
-    bed_coordinates(bed, DEFAULT_HEAD_CENTRE + p[0], p[1], 1.0, DEFAULT_HEAD_CENTRE)  # on it
+    bed_coordinates(bed, bed.head_centre + p[0], p[1], 1.0, bed.head_centre)  # on it
     where = (bed, None, float(p[1]), refine)
     return _assemble(np.zeros(0), np.zeros(2), *_bed_modes(bed, p, bed_modes, refine), where)

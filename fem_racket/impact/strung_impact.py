@@ -229,9 +229,7 @@ def simulate_strung(
     ball_mass: float = 0.057,
     law: ContactLaw | None = None,
     solver: str = "exact",
-    tolerance: float | None = DEFAULT_TOLERANCE,
-    rtol: float = 1e-10,
-    atol: float = 1e-13,
+    **options: Any,
 ) -> StrungImpact:
     """The ball striking the strung racket ``model`` + ``strings`` at rest.
 
@@ -247,12 +245,12 @@ def simulate_strung(
         V_B0 [m/s] and m_B [kg].
     law : ContactLaw, optional
         The ball's own law; the ``kawazoe-1997-ball`` when None.
-    solver, tolerance, rtol, atol
+    solver : {"exact", "general", "cvode"}
         As :func:`strung_impact`.
+    **options
+        ``tolerance``, ``rtol``, ``atol``: as :func:`strung_impact`.
     """
     check_positive("speed", speed, "m/s")
     point = strung_point(model, strings, check_range("position", position, 0.0, 1.0), offset)
     ball = kawazoe_ball(ball_mass) if law is None else law
-    return strung_impact(
-        point, ball, ball_mass, speed, solver=solver, tolerance=tolerance, rtol=rtol, atol=atol
-    )
+    return strung_impact(point, ball, ball_mass, speed, solver=solver, **options)

@@ -18,7 +18,7 @@ from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.strings.bed import parse_pattern
+from fem_racket.strings.bed import EDGES, parse_pattern
 from fem_racket.strings.materials import STRINGS
 from fem_racket.validation import (
     InputError,
@@ -203,6 +203,7 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         "head_length_m": Key(_positive("m"), "head_length", "string-bed length along the racket"),
         "head_width_m": Key(_positive("m"), "head_width", "string-bed width across the racket"),
         "string": Key(_choice(tuple(STRINGS)), "string_material", "string material"),
+        "edge": Key(_choice(EDGES), "bed_edge", "head ring follows the frame: point or hoop"),
     },
     "solver": {
         "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),

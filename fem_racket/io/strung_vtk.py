@@ -7,10 +7,11 @@ Three parts in ``impact.pvd`` (ParaView opens it; each step at its physical time
 - ``ball`` (part 1): a sphere of radius R_B = 0.033 m touching the bed at the impact point at
   t = 0, its centre moving with u_B; point field ``displacement [m]``;
 - ``strings`` (part 2): the bed as a deforming surface (the membrane mesh's triangles on the
-  head's ellipse, centred on the frame at the head's centre), z = its deflection: the frame's
-  deflection at the impact point (the edge moves with it, the coupling's assumption,
-  :mod:`fem_racket.impact.strung`) plus the bed's modes (and its pseudo-mode's static shape);
-  point field ``deflection [m]``.
+  head's ellipse, centred on the frame at the head's centre), z = its deflection: its edge's
+  motion (edge ``"point"``: the frame's deflection at the impact point everywhere; ``"hoop"``:
+  the frame's deflection at each edge point's x, extended statically inside, as the coupling
+  assumes, :mod:`fem_racket.impact.strung`) plus the bed's modes (and its pseudo-mode's static
+  shape); point field ``deflection [m]``.
 
 Written as :mod:`fem_racket.io.vtk` writes the frame's series (one ``.vtu`` per step and part,
 XML by VTK, files by Python, the folder all-or-nothing), with a ``provenance.json``.
@@ -26,7 +27,6 @@ from typing import Any
 import numpy as np
 
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.strung import DEFAULT_HEAD_CENTRE
 from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.io.vtk import PROVENANCE_NAME, PVD_NAME, write_pvd, write_vtu
 from fem_racket.io.vtk_series import BALL_RADIUS, check_scale, sample_steps
@@ -44,10 +44,21 @@ def strung_fields(result: StrungImpact, model: FrameModel) -> tuple[np.ndarray, 
     frame = ~p.bed
     q = eta[:, frame] @ model.modes(None).all_shapes.T  # Hermite DOFs (nt, ndof)
     nodes = q[:, model.fe.deflection_dofs]
-    x_i = p.position * model.mesh.length
-    edge = q @ model.fe.point_vector(x_i)  # the head ring moves with the impact point
+    L = model.mesh.length
     mesh = bed_mesh(float(p.strings.head_length_m), float(p.strings.head_width_m), p.refine)
-    full = np.repeat(edge[:, None], mesh.basis.N, axis=1)
+    if p.strings.edge == "point":  # the head ring moves with the impact point
+        edge = q @ model.fe.point_vector(p.position * L)
+        full = np.repeat(edge[:, None], mesh.basis.N, axis=1)
+    else:  # each edge point with the frame at its x, extended statically inside
+        from scipy.sparse.linalg import splu
+
+        R = model.fe.field_matrix(p.strings.head_centre * L + mesh.edge_points[:, 0], 0)
+        w_e = np.asarray(R @ q.T)  # (n_edge, nt)
+        r = float(p.strings.n_x / p.strings.n_y)
+        K_ii = (r * mesh.Kxx + mesh.Kyy).tocsc()
+        full = np.zeros((q.shape[0], mesh.basis.N))
+        full[:, mesh.edge] = w_e.T
+        full[:, mesh.interior] = -splu(K_ii).solve((r * mesh.Kxx_ib + mesh.Kyy_ib) @ w_e).T
     full[:, mesh.interior] += eta[:, p.bed] @ p.bed_shapes.T
     return nodes, full[:, mesh.basis.nodal_dofs[0]]
 
@@ -59,7 +70,6 @@ def write_strung_vtk(
     *,
     frames: int | None = 60,
     scale: float = 1.0,
-    centre: float = DEFAULT_HEAD_CENTRE,
     overwrite: bool = False,
     parameters: dict[str, Any] | None = None,
 ) -> Path:
@@ -77,8 +87,6 @@ def write_strung_vtk(
         Steps written, evenly chosen over the output times (None: every one).
     scale : float
         Factor on the deflections drawn (the fields keep their true values).
-    centre : float
-        The head's centre x/L (where the bed is drawn).
     overwrite : bool
     parameters : dict, optional
         Extra provenance entries.
@@ -93,7 +101,7 @@ def write_strung_vtk(
     mesh = bed_mesh(float(p.strings.head_length_m), float(p.strings.head_width_m), p.refine)
     tri = mesh.basis.mesh.t.T
     bed_cells = np.column_stack([np.full(len(tri), 3), tri]).ravel()
-    bed_xy = mesh.basis.mesh.p.T + np.array([centre * L, 0.0])
+    bed_xy = mesh.basis.mesh.p.T + np.array([p.strings.head_centre * L, 0.0])
     x_nodes = np.asarray(model.mesh.points, dtype=float).ravel()
     line = np.concatenate([[nodes.shape[1]], np.arange(nodes.shape[1])])
     x_i, y_i = p.position * L, p.lateral_m

@@ -24,9 +24,20 @@ import re
 from dataclasses import dataclass
 
 from fem_racket.strings.materials import StringMaterial, get_string
-from fem_racket.validation import InputError, check_integer, check_positive, check_range, show
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_integer,
+    check_positive,
+    check_range,
+    show,
+)
 
-__all__ = ["StringBed", "parse_pattern"]
+__all__ = ["EDGES", "StringBed", "parse_pattern"]
+
+#: How the head ring follows the frame (:mod:`fem_racket.impact.strung`): uniformly with the
+#: impact point, or each edge point with the frame at its own x (bending along the hoop).
+EDGES = ("point", "hoop")
 
 #: Most and fewest strings in either direction a pattern may have.
 PATTERN_RANGE = (4, 40)
@@ -59,6 +70,11 @@ class StringBed:
         String preset (:data:`fem_racket.strings.materials.STRINGS`).
     load_radius_m : float
         Radius a of the ball's contact disk [m].
+    head_centre : float
+        The head's centre on the frame, x/L (0.74: the typical head of
+        :mod:`fem_racket.frame.head` on the paper's frame; an assumption).
+    edge : {"point", "hoop"}
+        How the head ring follows the frame (:data:`EDGES`).
     """
 
     tension_n: float = 246.0
@@ -68,6 +84,8 @@ class StringBed:
     head_width_m: float = 0.252
     string: str = "nylon"
     load_radius_m: float = 0.02
+    head_centre: float = 0.74
+    edge: str = "point"
 
     def __post_init__(self) -> None:
         check_range("string tension", self.tension_n, 1.0, 1e16, unit="N")
@@ -78,6 +96,8 @@ class StringBed:
         check_range("head width", self.head_width_m, 0.05, 1.0, unit="m")
         get_string(self.string)
         check_positive("load radius", self.load_radius_m, "m")
+        check_range("head centre", self.head_centre, 0.0, 1.0, unit="x/L")
+        check_choice("edge", self.edge, EDGES)
         half = 0.5 * min(self.head_length_m, self.head_width_m)
         if self.load_radius_m >= 0.5 * half:
             raise InputError(
@@ -125,6 +145,8 @@ class StringBed:
             "head_area_cm2": self.area_m2 * 1e4,
             "string": self.string,
             "load_radius_m": self.load_radius_m,
+            "head_centre_x_over_l": self.head_centre,
+            "stringbed_edge": self.edge,
             "tension_per_width_x_n_m": self.n_x,
             "tension_per_width_y_n_m": self.n_y,
             "mass_per_area_kg_m2": self.rho_s,

@@ -50,6 +50,10 @@ class BedMesh:
         The DOFs off the fixed edge.
     semi_axes : (float, float)
         L_h/2 and W/2 [m].
+    Kxx_ib, Kyy_ib : scipy.sparse.csr_matrix
+        The same forms between the interior and the edge DOFs (the edge's static transmission).
+    edge : ndarray
+        The edge DOFs.
     """
 
     basis: object
@@ -58,6 +62,14 @@ class BedMesh:
     M1: object
     interior: np.ndarray
     semi_axes: tuple[float, float]
+    Kxx_ib: object
+    Kyy_ib: object
+    edge: np.ndarray
+
+    @property
+    def edge_points(self) -> np.ndarray:
+        """(x, y) of the edge DOFs from the head's centre [m], shape (n_edge, 2)."""
+        return np.asarray(self.basis.doflocs[:, self.edge]).T
 
     def contains(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """True where (x, y) [m] lies inside the ellipse (1e-12 inside its edge)."""
@@ -88,14 +100,17 @@ def bed_mesh(length_m: float, width_m: float, refine: int) -> BedMesh:
     def mass(u, v, _):
         return u * v
 
-    interior = basis.complement_dofs(basis.get_dofs())
-    sub = [asm(f, basis)[interior][:, interior].tocsr() for f in (xx, yy, mass)]
-    return BedMesh(basis, *sub, interior, (ax, ay))
+    edge = basis.get_dofs().all()
+    interior = basis.complement_dofs(edge)
+    full = [asm(f, basis) for f in (xx, yy, mass)]
+    sub = [m[interior][:, interior].tocsr() for m in full]
+    ib = [m[interior][:, edge].tocsr() for m in full[:2]]
+    return BedMesh(basis, *sub, interior, (ax, ay), *ib, edge)
 
 
-def disk_load(mesh: BedMesh, points: np.ndarray, radius: float) -> np.ndarray:
-    """Load vectors q (interior DOFs, one column per point) of a unit mean over the disk of
-    ``radius`` [m] around each point (x, y) [m], shape (n_interior, p)."""
+def disk_load(mesh: BedMesh, points: np.ndarray, radius: float, full: bool = False) -> np.ndarray:
+    """Load vectors q (interior DOFs, or every DOF when ``full``; one column per point) of a
+    unit mean over the disk of ``radius`` [m] around each point (x, y) [m]."""
     r, wr = np.polynomial.legendre.leggauss(RADIAL_POINTS)
     r = 0.5 * radius * (r + 1.0)
     wr = 0.5 * radius * wr * r  # r dr
@@ -111,7 +126,7 @@ def disk_load(mesh: BedMesh, points: np.ndarray, radius: float) -> np.ndarray:
             raise ValueError(f"impact point ({x0}, {y0}) m lies outside the head")
         P = mesh.basis.probes(np.array([x[inside], y[inside]]))
         q = np.asarray(P.T @ w[inside]).ravel() / w[inside].sum()
-        cols.append(q[mesh.interior])
+        cols.append(q if full else q[mesh.interior])
     return np.column_stack(cols)
 
 

@@ -23,7 +23,13 @@ import numpy as np
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.membrane import bed_mesh, disk_load, unit_modes
 
-__all__ = ["DEFAULT_BED_MODES", "DEFAULT_REFINE", "BedPointData", "bed_point_data"]
+__all__ = [
+    "DEFAULT_BED_MODES",
+    "DEFAULT_REFINE",
+    "BedPointData",
+    "bed_point_data",
+    "edge_transmission",
+]
 
 #: Fixed-edge modes computed by default (the rest enter through the residuals).
 DEFAULT_BED_MODES = 40
@@ -116,3 +122,27 @@ def bed_point_data(
         phi / math.sqrt(bed.rho_s),
         residual,
     )
+
+
+def edge_transmission(
+    bed: StringBed, points: np.ndarray, refine: int = DEFAULT_REFINE
+) -> tuple[np.ndarray, np.ndarray]:
+    """The bed's static edge transmission to ``points``: the edge DOFs' positions (n_e, 2) [m,
+    from the head's centre] and weights T (p, n_e) [-] such that a static edge displacement
+    u_e moves the bed's mean over the ball's disk by ``T @ u_e``::
+
+        T = q_e - K_ei K_ii^-1 q_i      (sum of T = 1: a uniform edge displacement translates)
+
+    By reciprocity T also spreads the contact force over the edge (the reactions on the frame).
+    """
+    from scipy.sparse.linalg import splu
+
+    pts = np.atleast_2d(np.asarray(points, dtype=float))
+    mesh = bed_mesh(float(bed.head_length_m), float(bed.head_width_m), refine)
+    q = disk_load(mesh, pts, bed.load_radius_m, full=True)
+    ratio = float(bed.n_x / bed.n_y)
+    K_ii = (ratio * mesh.Kxx + mesh.Kyy).tocsc()
+    K_ie = ratio * mesh.Kxx_ib + mesh.Kyy_ib
+    z = splu(K_ii).solve(np.ascontiguousarray(q[mesh.interior]))
+    T = q[mesh.edge] - K_ie.T @ z
+    return mesh.edge_points, np.asarray(T).T

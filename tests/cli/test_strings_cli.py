@@ -92,3 +92,8 @@ def test_export_vtk_draws_the_bed(capsys, tmp_path):
     assert text.count('name="strings"') == 4 and text.count('name="frame"') == 4
     code, _, err = run(capsys, "export-vtk", "--pattern", "16x19", "--field", "slope [rad]")
     assert code == 2 and "--field is not allowed with a string bed" in err
+
+
+def test_bed_edge_option(capsys):
+    code, out, _ = run(capsys, "simulate", "--bed-edge", "hoop", "--position", "0.6", "--json")
+    assert code == 0 and json.loads(out)["stringbed_edge"] == "hoop"

@@ -52,3 +52,22 @@ def test_series_opens_in_pyvista(strung, standard_model, tmp_path):
     assert 'name="strings"' in path.read_text()
     meta = json.loads((path.parent / "provenance.json").read_text())
     assert meta["parameters"]["stringbed_stiffness_n_m"] == strung.point.bed_stiffness
+
+
+def test_hoop_edge_follows_the_frame_along_the_head(standard_model):
+    # edge "hoop": each edge point of the drawn bed moves with the frame's deflection at its x
+    r = simulate_strung(standard_model, StringBed(edge="hoop"), position=0.8, speed=25.0)
+    p = r.point
+    mesh = bed_mesh(p.strings.head_length_m, p.strings.head_width_m, p.refine)
+    nodes, bed = strung_fields(r, standard_model)
+    frame = r.coordinates[:, 1:][:, ~p.bed] @ standard_model.modes(None).all_shapes.T
+    L = standard_model.mesh.length
+    vertices = mesh.basis.mesh.p
+    edge = mesh.basis.mesh.boundary_nodes()
+    w_edge = (
+        frame
+        @ standard_model.fe.field_matrix(
+            p.strings.head_centre * L + vertices[0, edge], 0
+        ).T.toarray()
+    )
+    assert np.allclose(bed[:, edge], w_edge, rtol=0, atol=1e-14)

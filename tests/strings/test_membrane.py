@@ -132,3 +132,30 @@ def test_geometric_stiffening():
     ea = poly.material.axial_rigidity_n / nylon.material.axial_rigidity_n
     assert (stiffening_ratio(poly, 0.001) - 1) / small[0] == pytest.approx(ea, rel=1e-2)
     assert 0.05 < stiffening_ratio(nylon, 0.02) - 1 < 0.3
+
+
+def test_edge_transmission_closed_forms():
+    # T: the bed's mean over the ball's disk under a static edge displacement. Constants and
+    # linear functions solve N_x w_xx + N_y w_yy = 0, so T reproduces them (to round-off); for
+    # the edge data x^2 the solution is alpha x^2 + beta y^2 + gamma with N_x alpha + N_y beta
+    # = 0 and alpha - beta b^2/a^2 = 1, gamma = -beta b^2 (a, b the semi-axes), and the disk
+    # mean adds rho^2/4 to x0^2 and y0^2. Discretisation error (the P2 edge DOFs on the
+    # polygon's chords): measured -7.0e-5, -1.7e-5, -4.3e-6 at refine 3, 4, 5 (second order).
+    from fem_racket.strings.point import edge_transmission
+
+    bed = StringBed(tension_n=250.0, mains=16, crosses=19)
+    pts = np.array([[0.0, 0.0], [0.09, -0.04], [-0.05, 0.07]])
+    xy, T = edge_transmission(bed, pts)
+    assert np.allclose(T.sum(axis=1), 1.0, atol=1e-12) and np.all(T > -1e-12)
+    assert np.allclose(T @ xy, pts, atol=1e-12)
+    a, b = bed.head_length_m / 2, bed.head_width_m / 2
+    r = bed.n_x / bed.n_y
+    alpha = 1.0 / (1.0 + r * b * b / (a * a))
+    beta = -r * alpha
+    rho2 = bed.load_radius_m**2 / 4
+    exact = alpha * (pts[:, 0] ** 2 + rho2) + beta * (pts[:, 1] ** 2 + rho2) - beta * b * b
+    errs = [T @ xy[:, 0] ** 2 - exact]  # refine 4, the default
+    xy3, T3 = edge_transmission(bed, pts, 3)
+    errs.insert(0, T3 @ xy3[:, 0] ** 2 - exact)
+    assert np.all(np.abs(errs[1]) < 2e-5)
+    assert np.all((errs[0] / errs[1] > 3.5) & (errs[0] / errs[1] < 4.6))

@@ -30,7 +30,7 @@ from fem_racket.cli.options.output import print_json, run_parameters, write_json
 from fem_racket.cli.text import significant
 from fem_racket.impact.strung_impact import StrungImpact, simulate_strung
 from fem_racket.outputs import Target, atomic_outputs, provenance
-from fem_racket.strings.bed import StringBed, parse_pattern
+from fem_racket.strings.bed import EDGES, StringBed, parse_pattern
 from fem_racket.strings.materials import STRINGS
 from fem_racket.validation import InputError, check_positive, show
 
@@ -50,6 +50,7 @@ STRING_DESTS = (
     "head_length",
     "head_width",
     "string_material",
+    "bed_edge",
 )
 
 
@@ -99,6 +100,14 @@ def add_strings_options(parser: argparse.ArgumentParser) -> None:
         choices=tuple(STRINGS),
         help=f"string material (default {d.string})",
     )
+    g.add_argument(
+        "--bed-edge",
+        default=None,
+        choices=EDGES,
+        help="how the head ring follows the frame: point (with the impact point; default, the "
+        "paper's point contact when the bed is stiff) or hoop (each edge point with the frame's "
+        "bending at its x)",
+    )
 
 
 def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
@@ -140,6 +149,7 @@ def strings_from_args(args: argparse.Namespace) -> StringBed | None:
         head_length_m=length,
         head_width_m=width,
         string=d.string if values["string_material"] is None else values["string_material"],
+        edge=d.edge if values["bed_edge"] is None else values["bed_edge"],
     )
 
 
