@@ -135,6 +135,7 @@ IMPACT_TOP = {
     "solvers",
     "strung_exact",
     "strung_impact",
+    "strung_solve",
 }
 
 

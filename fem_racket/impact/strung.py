@@ -41,7 +41,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.spring_dashpot import SpringDashpot
+from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.point import (
@@ -56,6 +56,7 @@ __all__ = [
     "BALL_STIFFNESS",
     "BALL_ZETA",
     "StrungPoint",
+    "check_strung_problem",
     "clamped_point",
     "kawazoe_ball",
     "strung_point",
@@ -134,8 +135,8 @@ BALL_ZETA = 0.400824089
 def kawazoe_ball(ball_mass: float, separation: str = "displacement") -> ContactLaw:
     """The ``kawazoe-1997-ball`` as a contact law for a ball of ``ball_mass`` [kg]: spring
     k_b and dashpot 2 zeta_b sqrt(m_B k_b)."""
-    c = 2.0 * BALL_ZETA * math.sqrt(check_positive("ball_mass", ball_mass, "kg") * BALL_STIFFNESS)
-    return SpringDashpot(BALL_STIFFNESS, c, separation)
+    mass = check_positive("ball_mass", ball_mass, "kg")
+    return LinearContact(BALL_STIFFNESS, BALL_ZETA, mass, separation)
 
 
 #: Bed modes whose value at the point is below this fraction of the largest are left out: in
@@ -190,6 +191,27 @@ def _assemble(w_frame, a_frame, w_bed, a_bed, shapes, data, where) -> StrungPoin
         *where,
         shapes[:, bed_order],
     )
+
+
+def check_strung_problem(problem: Any) -> None:
+    """Refuse, in one line, what an impact problem with a string bed cannot take: a hand, a
+    racket moving before impact, the lumped K_CB's kcb and zeta, a point off the head."""
+    if not isinstance(problem.strings, StringBed):
+        raise InputError(f"strings = {problem.strings!r} is not allowed: must be a StringBed")
+    at_rest = "the strung racket is free and at rest"
+    lumped = "the bed replaces the lumped K_CB (give the ball's own law as law)"
+    refused = {
+        "hand": (problem.held, at_rest),
+        "swing": (problem.swing is not None, at_rest),
+        "frame_velocity": (problem.frame_velocity is not None, at_rest),
+        "kcb": (problem.kcb is not None, lumped),
+        "zeta": (problem.zeta is not None, lumped),
+    }
+    for key, (given, why) in refused.items():
+        if given:
+            raise InputError(f"{key} is not allowed with a string bed: {why}")
+    bed = problem.strings
+    bed_coordinates(bed, problem.impact.position, 0.0, problem.model.mesh.length, bed.head_centre)
 
 
 def strung_point(

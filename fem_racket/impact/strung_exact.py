@@ -44,7 +44,7 @@ def _linear(law: ContactLaw) -> tuple[float, float, str]:
             f"law = {show(law.name)} is not allowed with the exact strung solver: it takes the "
             "linear ball (use the general integrator or CVODE)"
         )
-    return float(law.stiffness), float(law.damping), law.end
+    return float(law.stiffness), float(law.damping()), law.end
 
 
 def strung_exact_states(

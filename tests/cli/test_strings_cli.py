@@ -46,7 +46,7 @@ def test_json_and_options(capsys, tmp_path):
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
-        (["--string-tension", "250", "--kcb", "5e4"], "--kcb is not allowed with a string bed"),
+        (["--string-tension", "250", "--kcb", "5e4"], "kcb is not allowed with a string bed"),
         (
             [
                 "--pattern",

@@ -8,8 +8,7 @@ import pytest
 from scipy.integrate import simpson
 
 from fem_racket.contact.hunt_crossley import HuntCrossley
-from fem_racket.contact.linear import kcb_from_speed, zeta_from_cor
-from fem_racket.contact.spring_dashpot import SpringDashpot
+from fem_racket.contact.linear import LinearContact, kcb_from_speed, zeta_from_cor
 from fem_racket.impact.exact.engine import modal_impacts
 from fem_racket.impact.strung import strung_point
 from fem_racket.impact.strung_impact import strung_engine, strung_impact
@@ -49,7 +48,7 @@ def test_very_stiff_bed_is_the_papers_model(standard_model):
 def test_exact_cvode_and_general_agree(point):
     # The same linear ball on the same structure: exact roots vs CVODE (rtol 1e-10) agree to
     # ~1e-12 in COR (measured 3e-13); the general integrator to its COR tolerance 1e-6.
-    law = SpringDashpot(K, C)
+    law = LinearContact(K, ZETA, MB)
     exact = strung_engine(point, K, ZETA, MB, V, tolerance=None)
     cv = strung_impact(point, law, MB, V, solver="cvode")
     gen = strung_impact(point, law, MB, V)
@@ -72,7 +71,7 @@ def test_energy_and_momentum(point):
     # The work of the contact force on the ball is its loss of kinetic energy; the racket (frame
     # and bed) holds the work done on it; the dashpot dissipates int C delta'^2 dt; the frame's
     # momentum is the ball's impulse (the bed passes the contact force to the frame).
-    law = SpringDashpot(K, C)
+    law = LinearContact(K, ZETA, MB)
     out = strung_impact(point, law, MB, V, tolerance=1e-8)
     t = out.t
     d = out.ball_deflection
@@ -83,7 +82,7 @@ def test_energy_and_momentum(point):
     impulse = simpson(out.force, x=t)
     assert impulse == pytest.approx(out.frame_momentum, rel=1e-5)
     # no damping: everything the ball lost is in the racket
-    elastic = strung_impact(point, SpringDashpot(K, 0.0), MB, V, tolerance=1e-8)
+    elastic = strung_impact(point, LinearContact(K, 0.0, MB), MB, V, tolerance=1e-8)
     assert elastic.racket_energy == pytest.approx(elastic.ball_loss, rel=1e-7)
     s = out.summary()
     assert s["peak_bed_deflection_m"] > 0 and s["peak_ball_deflection_m"] > 0
@@ -151,5 +150,34 @@ def test_hoop_edge(standard_model):
     assert np.allclose(p.rigid, rigid, rtol=1e-12, atol=0)
     assert cors["point"] == pytest.approx(0.3524, abs=2e-4)
     assert cors["hoop"] == pytest.approx(0.3929, abs=2e-4)
-    out = strung_impact(p, SpringDashpot(K, C), MB, V, solver="exact")
+    out = strung_impact(p, LinearContact(K, ZETA, MB), MB, V, solver="exact")
     assert MB * V * (1 + out.cor) == pytest.approx(out.frame_momentum, rel=1e-12)
+
+
+def test_impact_problem_with_strings(standard_model):
+    # The bed as a field of ImpactProblem: simulate(strings=...) and the solvers give what the
+    # strung path gives; auto picks exact for the linear ball, general for another law; what
+    # the strung racket cannot take is refused in one line.
+    from fem_racket.impact.problem import ImpactProblem
+    from fem_racket.impact.simulate import simulate
+    from fem_racket.impact.solvers import make_solver
+    from fem_racket.impact.strung_impact import simulate_strung
+
+    bed = StringBed(tension_n=230.0)
+    direct = simulate_strung(standard_model, bed, position=0.8, speed=25.0)
+    via = simulate(standard_model, strings=bed, position=0.8, speed=25.0)
+    assert via.solver == "exact" and via.cor == direct.cor
+    problem = ImpactProblem.build(standard_model, strings=bed, position=0.8, speed=25.0)
+    assert make_solver("cvode").solve(problem).cor == pytest.approx(direct.cor, abs=1e-8)
+    hc = simulate(standard_model, strings=bed, law="itf-ball", position=0.8, speed=25.0)
+    assert hc.solver == "general" and hc.law.name == "hunt-crossley"
+    bad = [
+        ({"kcb": 3e4}, "kcb is not allowed with a string bed"),
+        ({"solver": "bdf"}, "solver = 'bdf' is not allowed with a string bed"),
+        ({"solver": "exact", "modes": 10}, "modes = 10 is not allowed with a string bed"),
+        ({"position": 0.3}, "must lie on the head"),
+    ]
+    for kwargs, message in bad:
+        with pytest.raises(InputError, match=message):
+            simulate(standard_model, strings=bed, **kwargs)
+    assert simulate(standard_model).cor != via.cor  # None: the paper's K_CB, unchanged

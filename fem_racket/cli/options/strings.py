@@ -10,10 +10,11 @@ The head: ``--head-length`` and ``--head-width`` set the ellipse's axes; ``--hea
 the default head (0.326 m x 0.252 m, 645 cm^2) keeping its shape, or, with one axis given, sets
 the other; all three together are refused.
 
-:func:`run_strung` runs :func:`fem_racket.impact.strung_impact.simulate_strung` and prints the
+:func:`run_strung` runs :func:`fem_racket.simulate` with the bed and prints the
 outcome with the bed's stiffness and first frequencies, the peak deflections of the bed and the
 ball and the energy the bed returns and the ball loses. Options that belong to the paper's lumped
-spring or to paths the strung racket does not take are refused in one line.
+spring or to paths the strung racket does not take are refused in one line (by the problem and
+its solver).
 """
 
 from __future__ import annotations
@@ -25,10 +26,11 @@ import math
 from pathlib import Path
 from typing import Any
 
-from fem_racket.cli.options.laws import law_from_args
+from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
 from fem_racket.cli.options.output import print_json, run_parameters, write_json
 from fem_racket.cli.text import significant
-from fem_racket.impact.strung_impact import StrungImpact, simulate_strung
+from fem_racket.impact.simulate import simulate
+from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.outputs import Target, atomic_outputs, provenance
 from fem_racket.strings.bed import EDGES, StringBed, parse_pattern
 from fem_racket.strings.materials import STRINGS
@@ -153,36 +155,6 @@ def strings_from_args(args: argparse.Namespace) -> StringBed | None:
     )
 
 
-#: Options of the lumped spring or of other paths, refused with a string bed (dest -> why).
-REFUSED = {
-    "kcb": "the string bed replaces the lumped K_CB (the ball's law acts on the bed)",
-    "zeta": "the string bed replaces the lumped K_CB's damping (the ball's law has its own)",
-    "separation": "the ball's law ends contact by its own condition",
-    "basis": "the strung racket runs in modal coordinates",
-    "modes": "the strung racket uses every frame mode",
-    "t_max": "the strung racket's integrators set their own span",
-    "output_step": "the strung racket's histories have 801 points over the contact",
-    "racket_speed": "the strung racket is struck at rest",
-    "reference": "the strung racket is struck at rest",
-    "pivot": "the strung racket is struck at rest",
-}
-#: --solver values the strung racket takes (exact: the general integrator under a law other
-#: than the linear kawazoe-1997-ball, as ``simulate`` does).
-STRUNG_CLI_SOLVERS = ("exact", "general", "cvode")
-
-
-def _check(args: argparse.Namespace) -> None:
-    given = set(getattr(args, "explicit_options", ()))
-    for dest, why in REFUSED.items():
-        if dest in given:
-            raise InputError(f"--{dest.replace('_', '-')} is not allowed with a string bed: {why}")
-    if args.solver not in STRUNG_CLI_SOLVERS:
-        raise InputError(
-            f"solver = {args.solver!r} is not allowed with a string bed: must be one of "
-            f"{', '.join(STRUNG_CLI_SOLVERS)}"
-        )
-
-
 def _histories(result: StrungImpact) -> dict[str, Any]:
     return {
         "time [s]": result.t,
@@ -235,23 +207,15 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
 
 
 def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> StrungImpact:
-    """The impact the options ask for on ``strings`` and the frame ``model`` (refusing the
-    options the strung racket does not take)."""
-    _check(args)
-    law = law_from_args(args)
-    solver = "general" if args.solver == "exact" and law is not None else args.solver
-    return simulate_strung(
-        model,
-        strings,
-        position=args.position,
-        speed=args.speed,
-        ball_mass=args.ball_mass,
-        law=law,
-        solver=solver,
-        tolerance=args.tolerance or None,
-        rtol=args.rtol,
-        atol=args.atol,
-    )
+    """The impact the options ask for on ``strings`` and the frame ``model``, through
+    :func:`fem_racket.simulate` (which refuses, in one line, what the strung racket does not
+    take: K_CB, zeta, a swing, the options of other solvers)."""
+    kwargs = impact_kwargs(args)
+    if "output_step" in getattr(args, "explicit_options", ()):
+        kwargs["output_step"] = args.output_step  # refused there, not ignored here
+    if hasattr(args, "racket_speed"):  # commands with the swing options
+        kwargs["swing"] = swing_from_args(args, model.mesh.length)
+    return simulate(model, strings=strings, **kwargs)
 
 
 def run_strung(args: argparse.Namespace, strings: StringBed, model, files: list[Path]) -> int:
