@@ -263,7 +263,10 @@ class AutoSolver(Solver):
 
     def pick(self, problem: ImpactProblem) -> Solver:
         """The solver this one stands for on ``problem``."""
-        name = auto_method(problem.linear and problem.frame_velocity is None)
+        linear = problem.linear
+        if problem.strings is not None:  # the ball's own law on the bed
+            linear = problem.ball_law().name == "linear"
+        name = auto_method(linear and problem.frame_velocity is None)
         try:
             return SOLVERS[name](**self.options.given())
         except InputError as err:
