@@ -87,7 +87,7 @@ def test_export_vtk_draws_the_bed(capsys, tmp_path):
     )
     assert code == 0 and err == ""
     pvd = tmp_path / "v" / "impact.pvd"
-    assert out.strip() == str(pvd)
+    assert out.strip().startswith(f"wrote {pvd.parent}/") and pvd.is_file()
     text = pvd.read_text()
     assert text.count('name="strings"') == 4 and text.count('name="frame"') == 4
     code, _, err = run(capsys, "export-vtk", "--pattern", "16x19", "--field", "slope [rad]")

@@ -41,6 +41,7 @@ from fem_racket.cli.common import (
     write_json,
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
+from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
@@ -52,6 +53,7 @@ from fem_racket.outputs import (
     atomic_outputs,
     check_output_path,
     check_targets,
+    json_ready,
     sidecar_path,
 )
 from fem_racket.validation import InputError, show_path
@@ -118,7 +120,7 @@ def _write(
             w.writerow(history)
             for row in zip(*history.values(), strict=True):
                 w.writerow([repr(float(v)) for v in row])
-        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
+        text = json.dumps(json_ready({**meta, "summary": summary}), indent=2, default=str)
         side.write_text(text + "\n", encoding="utf-8")
 
 
@@ -225,8 +227,7 @@ def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, st
 def _print(rows: list[tuple[str, str, str]], files: list[Path]) -> None:
     for name, value, unit in rows:
         print(f"{name:<28} {value:>14} {unit}".rstrip())
-    for f in files:
-        print(f"{'written':<28} {f}")
+    print_written(files)
 
 
 def run(args: argparse.Namespace) -> int:

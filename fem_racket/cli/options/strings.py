@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
-from fem_racket.cli.options.output import print_json, run_parameters, write_json
+from fem_racket.cli.options.output import print_json, print_written, run_parameters, write_json
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.strung_impact import StrungImpact
@@ -233,6 +233,5 @@ def run_strung(args: argparse.Namespace, strings: StringBed, model, files: list[
         return 0
     for name, value, unit in _rows(summary):
         print(f"{name:<28} {value:>14} {unit}".rstrip())
-    for f in files:
-        print(f"{'written':<28} {f}")
+    print_written(files)
     return 0
