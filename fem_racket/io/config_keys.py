@@ -16,11 +16,13 @@ from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.parameters import LawParameter
 from fem_racket.contact.registry import LAW_NAMES, LiveView, family_parameters
 from fem_racket.frame.hand import GRIPS
-from fem_racket.frame.lead import Lead
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.io.config_lead import lead_tables
+from fem_racket.strings.bed import EDGES, parse_pattern
+from fem_racket.strings.materials import STRINGS
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -132,37 +134,11 @@ def _segments(name: str, value: Any) -> tuple[Segment, ...]:
     return tuple(out)
 
 
-_LEAD_KEYS = {"place": "", "mass_g": "g"}
-
-
-def _leads(name: str, value: Any) -> list[Lead]:
-    """``[[frame.lead]]`` tables (place, mass_g) as leads, as --add-mass PLACE:GRAMS gives."""
-    if not isinstance(value, list) or not value:
-        raise InputError(
-            f"{name} is not allowed: must be a non-empty array of tables with place and mass_g"
-        )
-    out = []
-    for i, item in enumerate(value):
-        where = f"{name}[{i}]"
-        if not isinstance(item, dict):
-            raise InputError(
-                f"{where} = {show(item)} is not allowed: must be a table with place and mass_g"
-            )
-        reject_unknown(item, _LEAD_KEYS, where)
-        missing = [k for k in _LEAD_KEYS if k not in item]
-        if missing:
-            raise InputError(f"{where} is missing {', '.join(missing)} (each lead needs both)")
-        place = item["place"]
-        if isinstance(place, bool) or not isinstance(place, (str, int, float)):
-            raise InputError(
-                f"{where}.place = {show(place)} is not allowed: must be a clock place such as "
-                '"3/9" or a distance from the butt in m'
-            )
-        grams = _number("g", check_finite)(f"{where}.mass_g", item["mass_g"])
-        if grams < 0.0:
-            raise InputError(f"{where}.mass_g = {show(grams)} is not allowed: must be >= 0 g")
-        out.append(Lead(str(place), grams * 1e-3))
-    return out
+def _pattern(name: str, value: Any) -> str:
+    if not isinstance(value, str):
+        raise InputError(f'{name} = {show(value)} is not allowed: must be a string like "16x19"')
+    parse_pattern(value, name)  # raises, naming the key
+    return value
 
 
 def _declared(p: LawParameter) -> Callable[[str, Any], float]:
@@ -188,7 +164,9 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         "segments": Key(_segments, "segments", "uniform segments from the grip end"),
         "mesh": Key(_string, "mesh", "mesh file with cell data EI and rhoA"),
         "elements": Key(_integer(1), "elements", "number of beam elements"),
-        "lead": Key(_leads, "add_mass", "lead tape: [[frame.lead]] tables of place and mass_g"),
+        "lead": Key(
+            lead_tables, "add_mass", "lead tape: [[frame.lead]] tables of place and mass_g"
+        ),
     },
     "ball": {"mass_kg": Key(_positive("kg"), "ball_mass", "ball mass m_B")},
     "contact": LiveView(lambda: _contact_keys()),
@@ -214,6 +192,15 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         ),
         "inertia_kg_m2": Key(_positive("kg m^2"), "hand_inertia", "hand inertia about its centre"),
         "shock_window_s": Key(_positive("s"), "hand_shock_window", "window of the shock measures"),
+    },
+    "strings": {  # any key replaces the lumped K_CB by the string bed (simulate)
+        "tension_n": Key(_positive("N"), "string_tension", "tension per string"),
+        "pattern": Key(_pattern, "pattern", "string pattern MAINSxCROSSES, e.g. 16x19"),
+        "head_area_cm2": Key(_positive("cm^2"), "head_area", "string-bed area"),
+        "head_length_m": Key(_positive("m"), "head_length", "string-bed length along the racket"),
+        "head_width_m": Key(_positive("m"), "head_width", "string-bed width across the racket"),
+        "string": Key(_choice(tuple(STRINGS)), "string_material", "string material"),
+        "edge": Key(_choice(EDGES), "bed_edge", "head ring follows the frame: point or hoop"),
     },
     "solver": {
         "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),
