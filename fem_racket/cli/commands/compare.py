@@ -56,7 +56,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
     )
     g.add_argument(
-        "--position",
+        "--point",
         type=float,
         default=0.75,
         metavar="X_OVER_L",
@@ -64,9 +64,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     g.add_argument(
         "--positions",
+        "--position",
+        dest="positions",
         default="0.5:1.0:200",
         metavar="VALUES",
-        help="impact points of the maps x/L: start:stop:num or a comma list (default 0.5:1.0:200)",
+        help="impact points of the maps [x/L]: start:stop:num or a comma list "
+        "(default 0.5:1.0:200)",
     )
     g.add_argument(
         "--grip",
@@ -116,7 +119,7 @@ def run(args: argparse.Namespace) -> int:
         reference=args.reference,
         pivot=args.pivot,
         positions=as_values("position", args.positions),
-        position=args.position,
+        position=args.point,
         grip=args.grip,
     )
     reports = compare(setups, play)
