@@ -17,7 +17,7 @@ from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2, fit_racket, racket_spec
 from fem_racket.io.mesh_files import write_mesh
 from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
-from fem_racket.validation import InputError, check_integer
+from fem_racket.validation import InputError, check_integer, work_begins
 
 #: Where the mesh goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "racket.vtu"
@@ -85,7 +85,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--overwrite", action="store_true", help="replace existing files (default: refuse)"
     )
     o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
-    add_config_option(p, private=("out", "elements"))
+    add_config_option(
+        p, private=("out", "elements"), requires=("length", "mass", "balance", "swing_weight")
+    )
     p.set_defaults(func=run)
 
 
@@ -99,6 +101,7 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
     for f in (out, sidecar_path(out)):
         check_output_path(f, overwrite=args.overwrite)
+    work_begins()
     frame = fit_racket(
         args.length,
         args.mass,

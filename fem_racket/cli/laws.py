@@ -9,8 +9,10 @@ from __future__ import annotations
 
 import argparse
 
+from fem_racket.cli.runfile import option_name
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.presets import FAMILY_PARAMETERS, LAW_NAMES, get_law, law_parameters
+from fem_racket.validation import InputError, show
 
 __all__ = ["add_law_options", "law_from_args"]
 
@@ -40,5 +42,18 @@ def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> 
 
 
 def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
-    """The law the options describe (None: the paper's linear law from --kcb and --zeta)."""
-    return get_law(getattr(args, "law", "linear"), **law_parameters(vars(args)))
+    """The law the options describe (None: the paper's linear law from --kcb and --zeta).
+
+    --kcb and --zeta (or a run file's ``contact.kcb_n_m``, ``zeta``, ``clamped_cor``) are
+    refused with another law: they set the linear law only.
+    """
+    law = get_law(getattr(args, "law", "linear"), **law_parameters(vars(args)))
+    if law is not None:
+        for dest in ("kcb", "zeta"):
+            value = getattr(args, dest, None)
+            if value is not None and not isinstance(value, str):
+                raise InputError(
+                    f"{option_name(args, dest)} is not allowed with contact law "
+                    f"{show(args.law)}: it sets the paper's linear law's K_CB and zeta only"
+                )
+    return law

@@ -20,7 +20,7 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.figure_files import check_dpi, figure_format
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError, show, work_begins
 
 FAMILY_CHOICES = (*FAMILIES, "both")
 
@@ -188,6 +188,7 @@ def run(args: argparse.Namespace) -> int:
         "zeta": args.zeta,
         "separation": args.separation,
     }
+    work_begins()
     studies = {
         fam: refinement_study(
             frame,

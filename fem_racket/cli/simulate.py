@@ -42,8 +42,9 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.impact_options import add_hand_options, hand_from_args
 from fem_racket.cli.laws import law_from_args
+from fem_racket.cli.runfile import given_options, option_name
 from fem_racket.contact.presets import FILE_KEYS
-from fem_racket.frame.hand import Hand
+from fem_racket.frame.hand import Hand, check_grip
 from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
@@ -56,7 +57,7 @@ from fem_racket.outputs import (
     check_targets,
     sidecar_path,
 )
-from fem_racket.validation import InputError, show_path
+from fem_racket.validation import InputError, show_path, work_begins
 
 #: Suffixes --out takes (case-insensitive) and what each writes.
 OUT_SUFFIXES = (".json", ".csv")
@@ -153,11 +154,11 @@ NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
 
 def _check_hand(args: argparse.Namespace) -> None:
     """Refuse, before the run, what the hand-held racket does not take."""
-    given = set(getattr(args, "explicit_options", ()))
+    given = given_options(args)
     for dest in NOT_WITH_HAND:
         if dest in given:
             raise InputError(
-                f"--{dest.replace('_', '-')} is not allowed with a hand: the held racket keeps "
+                f"{option_name(args, dest)} is not allowed with a hand: the held racket keeps "
                 "its modes by --tolerance (exact) or all its DOFs (cvode, bdf) and ends contact "
                 "by the spring deflection"
             )
@@ -177,13 +178,14 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
     """The hand-held racket: simulate, print, write."""
     _check_hand(args)
     model = build_model(args)
+    check_grip(hand, model.mesh.length)
     window = DEFAULT_WINDOW if args.hand_shock_window is None else args.hand_shock_window
     # Every mode unless a --tolerance is asked: the modes dropped by the COR tolerance still
     # move the hand (the grip force), and the held racket has few DOFs.
-    asked = args.tolerance != DEFAULT_TOLERANCE or "tolerance" in getattr(
-        args, "explicit_options", ()
-    )
+    asked = args.tolerance != DEFAULT_TOLERANCE or "tolerance" in given_options(args)
     tolerance = (args.tolerance or None) if asked else None
+    swing = swing_from_args(args, model.mesh.length)
+    work_begins()
     result = held_impact(
         model,
         hand,
@@ -193,7 +195,7 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
         kcb=args.kcb,
         zeta=args.zeta,
         solver=args.solver,
-        swing=swing_from_args(args, model.mesh.length),
+        swing=swing,
         window=window,
         output_step=args.output_step,
         histories=bool(args.out),
@@ -265,7 +267,9 @@ def run(args: argparse.Namespace) -> int:
     # exact solver gets from the batched engine (to --tolerance in COR).
     step = args.output_step if args.out else None
     swing = swing_from_args(args, model.mesh.length)
-    result = simulate(model, output_step=step, swing=swing, **impact_kwargs(args))
+    kwargs = impact_kwargs(args)
+    work_begins()
+    result = simulate(model, output_step=step, swing=swing, **kwargs)
     note_modes(args, model)
     summary = result.summary()
     if args.out:

@@ -15,12 +15,14 @@ from typing import Any
 from fem_racket.io.design_files import check_study_folder, write_study
 from fem_racket.outputs import add_png_provenance, atomic_output, check_output_path, provenance
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.limits import check_sobol_size, check_study_size
+from fem_racket.studies.design.objectives import output_names
 from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.sensitivity import SobolIndices, sobol_indices
 from fem_racket.studies.design.solvers import optimize
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import check_choice, work_begins
 
 __all__ = ["METHODS", "history_path", "run_optimization", "run_sensitivity"]
 
@@ -71,12 +73,11 @@ def run_optimization(
     See :func:`.solvers.optimize`, :func:`.solvers.pareto_front` and :func:`.output.write_study`.
     """
     check_choice("method", method, METHODS)
-    if method == "nsga2" and len(problem.objectives) < 2:
-        raise InputError(
-            f"objectives = {list(problem.objectives)} is not allowed with nsga2: give 2 or 3"
-        )
+    sizes = {"maxiter": maxiter, "popsize": popsize, "pop_size": pop_size}
+    check_study_size(problem, method, generations=generations, **sizes)
     if out is not None:
         check_study_folder(out, overwrite=overwrite)
+    work_begins()
     ev = _evaluator(problem, out, restart, backend, workers, scheduler)
     if method == "nsga2":
         result = pareto_front(
@@ -121,9 +122,13 @@ def run_sensitivity(
     chart there and the indices as JSON beside it (``<out>.json``, with the provenance)."""
     from fem_racket.io.design_plots import plot_sobol
 
+    names = output_names(problem)
+    check_choice("output", problem.objectives[0] if output is None else output, tuple(names))
+    check_sobol_size(problem, designs)
     if out is not None:
         out = check_output_path(out, overwrite=overwrite)
         check_output_path(Path(str(out) + ".json"), overwrite=overwrite)
+    work_begins()
     ev = Evaluator(problem, backend=backend, workers=workers, scheduler=scheduler)
     s = sobol_indices(
         problem, output=output, designs=designs, seed=seed, evaluator=ev, progress=progress

@@ -43,6 +43,7 @@ from fem_racket.studies.grid_values import (
     as_values,
     parameter,
     parse_values,
+    value_count,
 )
 from fem_racket.studies.law_axes import case_law, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
@@ -124,8 +125,12 @@ class SweepSpec:
         :func:`fem_racket.sweep` for the keywords (the law's parameters by their names in
         :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
-        values = {name: as_values(name, value) for name, value in raw.items()}
         law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
+        # the grid's size from the counts alone, before any value is made (20:40:10000000)
+        counts = {n: value_count(v) for n, v in {**raw, **law_given}.items()}
+        swept = {n: c for n, c in counts.items() if c > 1}
+        check_grid_size(list(swept.values()), list(swept))
+        values = {name: as_values(name, value) for name, value in raw.items()}
         for name, value in sweep_law_values(kwargs.get("law"), law_given).items():
             values[name] = as_values(name, value)
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
