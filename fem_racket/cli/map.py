@@ -26,7 +26,7 @@ from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
-from fem_racket.io.map_files import check_map_output, write_map
+from fem_racket.io.map_files import check_map_outputs, write_maps
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.studies.grid import as_values
 from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
@@ -171,8 +171,7 @@ def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
 def run(args: argparse.Namespace) -> int:
     """Map every racket, write the files and print the sweet spots."""
     outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
-    for path in outs:
-        check_map_output(path, overwrite=args.overwrite)
+    check_map_outputs(outs, overwrite=args.overwrite)  # also: no path given twice
     positions = as_values("position", args.positions)
     law = law_from_args(args)
     maps = [
@@ -195,8 +194,7 @@ def run(args: argparse.Namespace) -> int:
         )
         for name, frame in _rackets(args)
     ]
-    for path in outs:
-        write_map(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
+    write_maps(maps, outs, overwrite=args.overwrite, parameters=run_parameters(args))
     if args.json:
         objs = [m.summary() for m in maps]
         print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
