@@ -347,3 +347,12 @@ def test_the_same_output_twice_is_refused_before_any_work(capsys, tmp_path, monk
     assert code == 2 and err.count("\n") == 1, err
     assert "the same path is given for two outputs of this command" in err
     assert listing(tmp_path) == []
+
+
+def test_sensitivity_writes_its_chart_and_json_as_one_set(capsys, small_tmpfs):
+    _fill(small_tmpfs, 20_000)
+    out = small_tmpfs / "s.png"
+    code, _, err = run(capsys, "sensitivity", "--designs", "40", "--zone-points", "3", "--out", out)
+    assert code == 1 and err.count("\n") == 1, err
+    assert f"cannot write '{out}': No space left on device" in err
+    assert listing(small_tmpfs) == ["fill"]
