@@ -40,9 +40,9 @@ from fem_racket.cli.common import (
     swing_from_args,
     write_json,
 )
-from fem_racket.cli.impact_options import add_hand_options, hand_from_args
-from fem_racket.cli.laws import law_from_args
-from fem_racket.cli.runfile import given_options, option_name
+from fem_racket.cli.options.impact import add_hand_options, hand_from_args
+from fem_racket.cli.options.laws import law_from_args
+from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand, check_grip
 from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.runfile import option_name
+from fem_racket.cli.options.runfile import option_name
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.presets import FAMILY_PARAMETERS, LAW_NAMES, get_law, law_parameters
 from fem_racket.validation import InputError, show
