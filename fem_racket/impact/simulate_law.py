@@ -26,6 +26,7 @@ from fem_racket.impact.problem import Impact
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.simulate_linear import RIGID_MODES
 from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.impact.system import check_output_count
 from fem_racket.validation import InputError, check_positive
 
 __all__ = ["simulate_law"]
@@ -58,8 +59,8 @@ def simulate_law(
         if frame_velocity is not None:
             raise InputError("swing and frame_velocity cannot be combined: give one")
         v_r = float(swing.speed_at(impact.position * model.mesh.length))
+        closing = closing_speed(impact.speed, v_r)  # ball and strings must close, any law
         if contact_used is not None:  # the paper's K_CB at the closing speed
-            closing = closing_speed(impact.speed, v_r)
             contact_used = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
             law = SpringDashpot(contact_used.stiffness, contact_used.damping(ball.mass), separation)
         frame_velocity = swing.cg_motion(model.props.cg)
@@ -97,6 +98,9 @@ def _law_result(
     """An impact under ``law`` by the general integrator or CVODE (all frame modes)."""
     if output_step is not None:
         check_positive("output_step", output_step, "s")
+        t_est = float(law.contact_time_estimate(ball.mass, impact.speed))
+        span, what = (t_max, "t_max") if t_max is not None else (2.0 * t_est, "twice the law's")
+        check_output_count(output_step, span, f"{what} {span:.3g} s of contact")
     run = solve_law_impact(
         law,
         model,

@@ -152,7 +152,7 @@ FAMILIES: dict[str, Family] = {
         _series,
         (1e3, 1e-2, 1e3, 1e-3),
         (1e8, 1e3, 1e7, 1e14),
-        {"kawazoe-1997": (2e5, 10.0, 2e4, 3e8), "itf": (2e4, 3.0, 1e9, 1.0)},
+        {"kawazoe-1997": (2e5, 10.0, 2e4, 3e8), "itf": (2e4, 3.0, 1e7, 1.0)},
     ),
 }
 
@@ -240,7 +240,14 @@ def calibrate(
     bounds = (np.log(fam.low), np.log(fam.high))
     fit = least_squares(residuals, x0, bounds=bounds, diff_step=1e-4, max_nfev=200)
     law = fam.build(np.exp(fit.x))
-    return Calibration(family, target_set, law, targets, _model_values(law, targets, ball_mass))
+    try:
+        model = _model_values(law, targets, ball_mass)
+    except RuntimeError as err:  # the integrator fails at the fitted point itself
+        raise InputError(
+            f"family = {family!r} cannot be fitted to targets = {target_set!r}: the fitted law "
+            f"({', '.join(f'{v:.4g}' for v in np.exp(fit.x))}) cannot be integrated ({err})"
+        ) from None
+    return Calibration(family, target_set, law, targets, model)
 
 
 def clamped_histories(

@@ -171,6 +171,12 @@ def run(args: argparse.Namespace) -> int:
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
+    most = 2 * max([n for n in args.elements if isinstance(n, int)] or [1])
+    if args.count > most:  # the finest mesh's flexible modes
+        raise InputError(
+            f"count = {args.count} is not allowed: must be an integer from 1 to {most} (the "
+            f"flexible modes of the finest mesh, {most // 2} elements)"
+        )
     if not args.grading >= 1.0 or args.grading == float("inf"):  # also NaN
         raise InputError(
             f"grading = {show(args.grading)} is not allowed: must be a finite number >= 1"

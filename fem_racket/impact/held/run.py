@@ -40,6 +40,7 @@ from fem_racket.impact.held.shock import (
 from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
+from fem_racket.impact.system import check_output_count
 from fem_racket.validation import InputError, check_choice, check_range
 
 __all__ = ["HELD_RUN_SOLVERS", "HeldRun", "hand_summary", "held_impact"]
@@ -283,6 +284,8 @@ def held_impact(
     window = check_range("shock_window", window, 0.0, MAX_WINDOW, unit="s", include_low=False)
     if not output_step > 0.0:
         raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
+    if histories or solver != "exact":  # the integrators sample at output_step
+        check_output_count(output_step, window, f"the shock window's {window:g} s")
     x = check_range("position", position, 0.0, 1.0, unit="x/L")
     ball = Ball() if ball_mass is None else Ball(ball_mass)
     v_r = 0.0 if swing is None else float(swing.speed_at(x * model.mesh.length))
