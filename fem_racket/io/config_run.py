@@ -1,0 +1,176 @@
+"""A run file's impact in Python: :meth:`RunConfig.simulate` = ``fem-racket simulate --config``.
+
+:func:`simulate_file` runs what the command runs on the same file, with the same checks: every
+table of the file applies (frame, ball, contact law, impact and swing, hand, solver, the
+``[simulate]`` table's ``output_step``), and a key the run cannot use is refused as the command
+refuses it (a hand with ``solver.modes``, ``contact.kcb_n_m`` under another law ...). Histories
+are computed as the command computes them: when the file names an output (``output.out`` or
+``[simulate] out``), unless ``histories`` says otherwise. The command-line defaults are the
+library's (``tests/io/test_config_run.py`` checks both ways).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import TYPE_CHECKING, Any
+
+from fem_racket.io.config_keys import CORE_KEYS
+from fem_racket.validation import InputError, show
+
+if TYPE_CHECKING:
+    from fem_racket.io.config import RunConfig
+
+__all__ = ["HAND_KEYS", "NOT_WITH_HAND", "simulate_file"]
+
+#: ``[hand]`` keys -> :class:`~fem_racket.frame.hand.Hand` fields (``grip`` picks the preset).
+HAND_KEYS = {
+    "mass_kg": "mass",
+    "grip_start_m": "grip_start",
+    "grip_end_m": "grip_end",
+    "stiffness_n_m2": "stiffness",
+    "damping_n_s_m2": "damping",
+    "inertia_kg_m2": "inertia",
+}
+#: Options (argparse dests) the hand-held racket does not take: it keeps its modes by the
+#: tolerance or all its DOFs and ends contact when the spring deflection falls to zero.
+NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
+#: argparse dest -> the core key that sets it (for messages).
+CORE_DEST_KEYS = {k.dest: f"{t}.{name}" for t, ks in CORE_KEYS.items() for name, k in ks.items()}
+
+
+def _law(cfg: RunConfig) -> Any:
+    from fem_racket.contact.presets import get_law, law_parameters
+
+    d = cfg.defaults()
+    law = get_law(d.get("law", "linear"), **law_parameters(d))
+    if law is not None:
+        for key in ("kcb_n_m", "zeta", "clamped_cor"):
+            if key in cfg.values.get("contact", {}):
+                value = cfg.values["contact"][key]
+                raise InputError(
+                    f"contact.{key} = {show(value)} ({cfg.source}) is not allowed with contact "
+                    f"law {show(d['law'])}: it sets the paper's linear law's K_CB and zeta only"
+                )
+    return law
+
+
+def _hand(cfg: RunConfig) -> Any:
+    from fem_racket.frame.hand import GRIPS
+
+    table = cfg.values.get("hand", {})
+    if "grip" not in table and not set(table) & set(HAND_KEYS):  # a window alone is no hand
+        return None
+    fields = {HAND_KEYS[k]: v for k, v in table.items() if k in HAND_KEYS}
+    return dataclasses.replace(GRIPS[table.get("grip", "loose")], **fields)
+
+
+def _output_step(cfg: RunConfig) -> float:
+    from fem_racket.impact.simulate import simulate
+
+    step = cfg.table("simulate").get("output_step")
+    if step is None:
+        return simulate.__kwdefaults__["output_step"]
+    if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step < math.inf:
+        raise InputError(
+            f"simulate.output_step = {show(step)} s is not allowed: must be a finite number > 0"
+        )
+    return float(step)
+
+
+def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
+    from fem_racket.frame.model import FrameModel
+    from fem_racket.frame.segments import PAPER_EI1, standard_frame
+    from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+
+    d = cfg.defaults()
+    frame = cfg.frame()
+    if frame is None:
+        frame = standard_frame(d.get("ei1", PAPER_EI1), d.get("ei2"))
+    model = FrameModel.build(frame, d.get("elements", 20))
+    length = model.mesh.length
+    speed = d.get("racket_speed", 0.0)
+    reference, pivot = d.get("reference", DEFAULT_REFERENCE), d.get("pivot")
+    swing = Swing.from_speed(speed, length, reference=reference, pivot=pivot)  # checks
+    return model, (None if speed == 0.0 else swing)
+
+
+def _held(cfg: RunConfig, hand: Any, model: Any, swing: Any, histories: bool) -> Any:
+    from fem_racket.frame.hand import check_grip
+    from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
+    from fem_racket.impact.held.shock import DEFAULT_WINDOW
+
+    d = cfg.defaults()
+    for dest in NOT_WITH_HAND:
+        if dest in d:
+            raise InputError(
+                f"{CORE_DEST_KEYS[dest]} = {show(d[dest])} ({cfg.source}) is not allowed with a "
+                "hand: the held racket keeps its modes by --tolerance (exact) or all its DOFs "
+                "(cvode, bdf) and ends contact by the spring deflection"
+            )
+    solver = d.get("solver", "exact")
+    if solver not in HELD_RUN_SOLVERS:
+        raise InputError(
+            f"solver = {solver!r} is not allowed with a hand: must be one of "
+            f"{', '.join(HELD_RUN_SOLVERS)}"
+        )
+    if _law(cfg) is not None:
+        raise InputError(
+            f"law = {d['law']!r} is not allowed with a hand: the held racket takes the paper's "
+            "linear law (--kcb, --zeta)"
+        )
+    check_grip(hand, model.mesh.length)
+    # every mode unless the file asks a tolerance (the command: unless --tolerance is given)
+    asked = "tolerance" in d and d["tolerance"] is not None
+    return held_impact(
+        model,
+        hand,
+        position=d.get("position", 0.75),
+        speed=d.get("speed", 20.0),
+        ball_mass=d.get("ball_mass", 0.057),
+        kcb=d.get("kcb"),
+        zeta=d.get("zeta"),
+        solver=solver,
+        swing=swing,
+        window=d.get("hand_shock_window", DEFAULT_WINDOW),
+        output_step=_output_step(cfg),
+        histories=histories,
+        tolerance=(d["tolerance"] or None) if asked else None,
+        rtol=d.get("rtol", 1e-10),
+        atol=d.get("atol", 1e-12),
+    )
+
+
+def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
+    """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it.
+
+    Parameters
+    ----------
+    cfg : RunConfig
+    histories : bool, optional
+        Compute the time histories (at ``[simulate] output_step``, 1e-5 s by default); by
+        default when the file names an output, as the command does.
+
+    Returns
+    -------
+    ImpactResult, or HeldRun with a ``[hand]`` table
+    """
+    from fem_racket.impact.simulate import simulate
+
+    d = cfg.defaults()
+    if histories is None:
+        histories = bool(cfg.table("simulate").get("out") or d.get("out"))
+    hand = _hand(cfg)
+    model, swing = _model_and_swing(cfg)
+    if hand is not None:
+        return _held(cfg, hand, model, swing, histories)
+    if "hand_shock_window" in d:
+        raise InputError(
+            f"hand.shock_window_s = {show(d['hand_shock_window'])} s is not allowed without a "
+            "hand: give hand.grip or a hand parameter"
+        )
+    names = ("position", "speed", "ball_mass", "kcb", "zeta", "solver", "separation", "basis")
+    names += ("modes", "tolerance", "t_max", "rtol", "atol")
+    kwargs = {n: d[n] for n in names if n in d}
+    step = _output_step(cfg) if histories else None
+    return simulate(model, output_step=step, swing=swing, law=_law(cfg), **kwargs)
