@@ -49,6 +49,7 @@ from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import simulate
+from fem_racket.io.config_run import NOT_WITH_HAND
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
     Target,
@@ -145,11 +146,6 @@ def _swing_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str,
         ("ball speed out", significant(summary["ball_speed_out_m_s"], 5), "m/s"),
         ("racket speed at impact", significant(summary["racket_speed_at_impact_m_s"], 5), "m/s"),
     ]
-
-
-#: Options the hand-held racket does not take (it keeps its modes by --tolerance or all DOFs,
-#: and ends contact when the spring deflection falls to zero, the paper's criterion).
-NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
 
 
 def _check_hand(args: argparse.Namespace) -> None:
