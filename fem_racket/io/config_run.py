@@ -15,6 +15,8 @@ import dataclasses
 import math
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.io.config_keys import CORE_KEYS
 from fem_racket.validation import InputError, show
 
@@ -35,6 +37,21 @@ HAND_KEYS = {
 #: Options (argparse dests) the hand-held racket does not take: it keeps its modes by the
 #: tolerance or all its DOFs and ends contact when the spring deflection falls to zero.
 NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
+#: The options of :func:`fem_racket.simulate` a file may set, with the command's defaults
+#: (``SIMULATE_DEFAULTS`` of the command line; ``tests/io/test_config_run.py`` compares them).
+DEFAULTS: dict[str, Any] = {
+    "ball_mass": None,
+    "kcb": None,
+    "zeta": None,
+    "solver": "auto",
+    "separation": "displacement",
+    "basis": "modal",
+    "modes": DEFAULT_MODES,
+    "tolerance": DEFAULT_TOLERANCE,
+    "t_max": None,
+    "rtol": 1e-10,
+    "atol": 1e-12,
+}
 #: argparse dest -> the core key that sets it (for messages).
 CORE_DEST_KEYS = {k.dest: f"{t}.{name}" for t, ks in CORE_KEYS.items() for name, k in ks.items()}
 
@@ -95,50 +112,15 @@ def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
     return model, (None if speed == 0.0 else swing)
 
 
-def _held(cfg: RunConfig, hand: Any, model: Any, swing: Any, histories: bool) -> Any:
-    from fem_racket.frame.hand import check_grip
-    from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
-    from fem_racket.impact.held.shock import DEFAULT_WINDOW
-
-    d = cfg.defaults()
+def _check_hand(cfg: RunConfig, d: dict[str, Any]) -> None:
+    """As the command: a hand takes no basis, modes, t_max or separation of the file's."""
     for dest in NOT_WITH_HAND:
-        if dest in d:
+        if dest in d and d[dest] != DEFAULTS.get(dest):
             raise InputError(
                 f"{CORE_DEST_KEYS[dest]} = {show(d[dest])} ({cfg.source}) is not allowed with a "
                 "hand: the held racket keeps its modes by --tolerance (exact) or all its DOFs "
                 "(cvode, bdf) and ends contact by the spring deflection"
             )
-    solver = d.get("solver", "exact")
-    if solver not in HELD_RUN_SOLVERS:
-        raise InputError(
-            f"solver = {solver!r} is not allowed with a hand: must be one of "
-            f"{', '.join(HELD_RUN_SOLVERS)}"
-        )
-    if _law(cfg) is not None:
-        raise InputError(
-            f"law = {d['law']!r} is not allowed with a hand: the held racket takes the paper's "
-            "linear law (--kcb, --zeta)"
-        )
-    check_grip(hand, model.mesh.length)
-    # every mode unless the file asks a tolerance (the command: unless --tolerance is given)
-    asked = "tolerance" in d and d["tolerance"] is not None
-    return held_impact(
-        model,
-        hand,
-        position=d.get("position", 0.75),
-        speed=d.get("speed", 20.0),
-        ball_mass=d.get("ball_mass", 0.057),
-        kcb=d.get("kcb"),
-        zeta=d.get("zeta"),
-        solver=solver,
-        swing=swing,
-        window=d.get("hand_shock_window", DEFAULT_WINDOW),
-        output_step=_output_step(cfg),
-        histories=histories,
-        tolerance=(d["tolerance"] or None) if asked else None,
-        rtol=d.get("rtol", 1e-10),
-        atol=d.get("atol", 1e-12),
-    )
 
 
 def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
@@ -161,16 +143,25 @@ def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     if histories is None:
         histories = bool(cfg.table("simulate").get("out") or d.get("out"))
     hand = _hand(cfg)
-    model, swing = _model_and_swing(cfg)
-    if hand is not None:
-        return _held(cfg, hand, model, swing, histories)
-    if "hand_shock_window" in d:
+    if hand is None and "hand_shock_window" in d:
         raise InputError(
-            f"hand.shock_window_s = {show(d['hand_shock_window'])} s is not allowed without a "
-            "hand: give hand.grip or a hand parameter"
+            f"shock_window = {show(d['hand_shock_window'])} s is not allowed without a hand: "
+            "give --grip or a hand parameter"
         )
-    names = ("position", "speed", "ball_mass", "kcb", "zeta", "solver", "separation", "basis")
-    names += ("modes", "tolerance", "t_max", "rtol", "atol")
-    kwargs = {n: d[n] for n in names if n in d}
+    if hand is not None:
+        _check_hand(cfg, d)
+    model, swing = _model_and_swing(cfg)
+    # as the command: the impact point and speed, and every other option the file sets to
+    # other than its default (one at its default is left to the library)
+    kwargs: dict[str, Any] = {"position": d.get("position", 0.75), "speed": d.get("speed", 20.0)}
+    kwargs.update({k: d[k] for k, v in DEFAULTS.items() if k in d and d[k] != v})
+    law = _law(cfg)
+    if law is not None:
+        kwargs["law"] = law
     step = _output_step(cfg) if histories else None
-    return simulate(model, output_step=step, swing=swing, law=_law(cfg), **kwargs)
+    if hand is not None:
+        window = d.get("hand_shock_window")
+        return simulate(
+            model, hand=hand, shock_window=window, swing=swing, output_step=step, **kwargs
+        )
+    return simulate(model, output_step=step, swing=swing, **kwargs)

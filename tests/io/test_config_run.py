@@ -129,6 +129,13 @@ def test_python_refuses_what_the_command_refuses(capsys, cwd):
             load_config(path).simulate()
 
 
+def test_the_run_files_defaults_are_the_commands():
+    from fem_racket.cli.options.impact import SIMULATE_DEFAULTS
+    from fem_racket.io.config_run import DEFAULTS
+
+    assert DEFAULTS == SIMULATE_DEFAULTS
+
+
 def test_the_command_line_defaults_are_the_librarys():
     # simulate_file leaves unset keys to the library's defaults: they must be the command's.
     args = build_parser(["simulate"]).parse_args(["simulate"])

@@ -17,7 +17,7 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.impact.simulate import simulate
-from fem_racket.validation import InputError, work_begins
+from fem_racket.validation import InputError
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -115,9 +115,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 def _simulate(args: argparse.Namespace):
     check_output_step(args.output_step)
     model = build_model(args)
-    kwargs = impact_kwargs(args)
-    work_begins()
-    result = simulate(model, output_step=args.output_step, **kwargs)
+    result = simulate(model, output_step=args.output_step, **impact_kwargs(args))
     note_modes(args, model)
     return result
 

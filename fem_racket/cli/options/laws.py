@@ -11,15 +11,17 @@ import argparse
 
 from fem_racket.cli.options.runfile import option_name
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.presets import FAMILY_PARAMETERS, LAW_NAMES, get_law, law_parameters
+from fem_racket.contact.presets import LAW_NAMES, check_linear_options, get_law, law_parameters
+from fem_racket.contact.registry import family_parameters
 from fem_racket.validation import InputError, show
 
 __all__ = ["add_law_options", "law_from_args"]
 
 
 def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> None:
-    """--law and one option per family parameter (``--hc-alpha``, ``--k1`` ...); ``swept``:
-    each takes sweep values (a number, a comma list or start:stop:num[:log]) as text."""
+    """--law and one option per declared family parameter (``--hc-alpha``, ``--k1`` ...: the
+    registry's, :mod:`fem_racket.contact.registry`); ``swept``: each takes sweep values (a
+    number, a comma list or start:stop:num[:log]) as text."""
     g = parser.add_argument_group("contact law")
     g.add_argument(
         "--law",
@@ -28,32 +30,31 @@ def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> 
         help="ball/string law: linear (the paper's K_CB, zeta; default), a family with its "
         "options below, or a calibrated preset",
     )
-    for family, spec in FAMILY_PARAMETERS.items():
-        for name, (unit, default) in spec.items():
+    for family, declared in family_parameters().items():
+        for p in declared:
             g.add_argument(
-                f"--{name.replace('_', '-')}",
-                dest=name,
+                p.option,
+                dest=p.name,
                 type=str if swept else float,
                 default=None,
                 metavar="VALUES" if swept else "X",
-                help=f"{family}: {name} [{unit}]{', swept or fixed' if swept else ''} "
-                f"(default {default:.4g})",
+                help=f"{family}: {p.name} [{p.unit}]{', swept or fixed' if swept else ''} "
+                f"(default {p.default:.4g}; allowed {p.interval()})",
             )
 
 
 def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
-    """The law the options describe (None: the paper's linear law from --kcb and --zeta).
-
-    --kcb and --zeta (or a run file's ``contact.kcb_n_m``, ``zeta``, ``clamped_cor``) are
-    refused with another law: they set the linear law only.
-    """
-    law = get_law(getattr(args, "law", "linear"), **law_parameters(vars(args)))
-    if law is not None:
+    """The law the options describe (None: the paper's linear law from --kcb and --zeta);
+    --kcb or --zeta with another law is refused (that law would ignore them), named as the user
+    gave it (a run file's ``contact.kcb_n_m``, ``zeta`` or ``clamped_cor`` by its key)."""
+    name = getattr(args, "law", "linear")
+    kcb, zeta = getattr(args, "kcb", None), getattr(args, "zeta", None)
+    if name != "linear":
         for dest in ("kcb", "zeta"):
-            value = getattr(args, dest, None)
-            if value is not None and not isinstance(value, str):
+            if dest in getattr(args, "file_options", {}) and getattr(args, dest) is not None:
                 raise InputError(
-                    f"{option_name(args, dest)} is not allowed with contact law "
-                    f"{show(args.law)}: it sets the paper's linear law's K_CB and zeta only"
+                    f"{option_name(args, dest)} is not allowed with contact law {show(name)}: "
+                    "it sets the paper's linear law's K_CB and zeta only"
                 )
-    return law
+    check_linear_options(name, kcb=kcb, zeta=zeta)
+    return get_law(name, **law_parameters(vars(args)))

@@ -238,10 +238,12 @@ def apply_config(
         key = "frame." + next(iter(sorted(frame_file)))
         raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
     keys = _file_keys(sub, args.command, cfg)
+    defaults = {a.dest: a.default for a in sub._actions}
     for dest, value in values.items():
         if dest not in given:
             setattr(args, dest, value)
-            args.file_options[dest] = keys.get(dest, dest)
+            if dest not in defaults or value != defaults[dest]:  # a default changes nothing
+                args.file_options[dest] = keys.get(dest, dest)
     return args
 
 
@@ -265,7 +267,8 @@ def option_name(args: argparse.Namespace, dest: str) -> str:
 
 
 def given_options(args: argparse.Namespace) -> set[str]:
-    """The options the user set: on the command line or in the run file (argparse dests).
+    """The options the user set: on the command line, or in the run file to other than the
+    default (argparse dests; a file's key at its default changes nothing).
 
     A check of the form "X is not allowed with Y" asks this, so that a run file's key is refused
     where the same option on the command line would be (never silently ignored).
