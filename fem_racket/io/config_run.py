@@ -13,15 +13,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.io.config_keys import CORE_KEYS
 from fem_racket.validation import InputError, show
 
-if TYPE_CHECKING:
-    from fem_racket.io.config import RunConfig
+#: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
+RunConfig = Any
 
 __all__ = ["HAND_KEYS", "NOT_WITH_HAND", "simulate_file"]
 
@@ -83,11 +83,11 @@ def _hand(cfg: RunConfig) -> Any:
 
 
 def _output_step(cfg: RunConfig) -> float:
-    from fem_racket.impact.simulate import simulate
+    from fem_racket.impact.settings import Settings
 
     step = cfg.table("simulate").get("output_step")
     if step is None:
-        return simulate.__kwdefaults__["output_step"]
+        return Settings().output_step
     if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step < math.inf:
         raise InputError(
             f"simulate.output_step = {show(step)} s is not allowed: must be a finite number > 0"

@@ -117,7 +117,8 @@ _NSGA = ["--method", "nsga2", "--objective", "cor,ball_speed"]
             "output_step = 1e-11 s is not allowed: at most 1e+06 output times over the shock",
         ),
         (
-            ["simulate", "--grip", "firm", "--solver", "cvode", "--output-step", "1e-11"],
+            ["simulate", "--grip", "firm", "--solver", "cvode", "--output-step", "1e-11"]
+            + ["--out", "h.json"],
             "output_step = 1e-11 s is not allowed",
         ),
         (
