@@ -121,6 +121,14 @@ class RunConfig:
 
         return simulate_file(self, histories=histories)
 
+    def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
+        """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
+        ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_run.sweep_file`.
+        ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`)."""
+        from fem_racket.io.config_run import sweep_file
+
+        return sweep_file(self, backend=backend, workers=workers)
+
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None
         (the standard racket with ``ei1_n_m2``/``ei2_n_m2``/preset applied)."""

@@ -143,3 +143,40 @@ def test_the_command_line_defaults_are_the_librarys():
     assert (args.position, args.speed) == (p.impact.position, p.impact.speed)
     assert args.elements == p.model.mesh.n_elements
     assert args.output_step == Settings().output_step
+
+
+SWEEPS = {
+    "core-and-grids": (
+        "[frame]\nei1_n_m2 = 300.0\nelements = 16\n[ball]\nmass_kg = 0.058\n"
+        "[impact]\nspeed_m_s = 25.0\nracket_speed_m_s = 5.0\n[solver]\nmodes = 30\n"
+        "[sweep]\nposition = [0.6, 0.7, 0.8]\nkcb = '2e4:4e4:3'\npeak_force = true\n"
+        "serial = true\nquiet = true\nout = 's.nc'\n"
+    ),
+    "law-axis": (
+        '[contact]\nlaw = "hunt-crossley"\nhc_stiffness_n_m_n = 1e7\n'
+        "[sweep]\nhc_exponent = [1.5, 2.0]\nposition = '0.6,0.8'\nserial = true\nquiet = true\n"
+        "out = 's.nc'\n"
+    ),
+    "segments-ei-factor": (
+        "[frame]\nelements = 12\nsegments = [\n"
+        "  { length_m = 0.2, ei_n_m2 = 150.0, rhoa_kg_m = 0.7 },\n"
+        "  { length_m = 0.48, ei_n_m2 = 120.0, rhoa_kg_m = 0.46 },\n]\n"
+        "[sweep]\nei_factor = [0.5, 1.0]\nserial = true\nquiet = true\nout = 's.nc'\n"
+    ),
+}
+
+
+@pytest.mark.parametrize("name", list(SWEEPS))
+def test_python_sweep_gives_the_clis_dataset(capsys, cwd, name):
+    import xarray as xr
+
+    path = cwd / "run.toml"
+    path.write_text(SWEEPS[name])
+    assert main(["sweep", "--config", str(path)]) == 0, capsys.readouterr().err
+    python = load_config(path).sweep(backend="serial")
+    skip = {"created_utc", "run_parameters", "backend"}
+    with xr.open_dataset(cwd / "s.nc") as cli:
+        xr.testing.assert_identical(cli.drop_attrs(), python.drop_attrs())
+        assert {k: v for k, v in cli.attrs.items() if k not in skip} == {
+            k: v for k, v in python.attrs.items() if k not in skip
+        }
