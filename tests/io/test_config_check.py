@@ -207,3 +207,21 @@ def test_the_examples_mesh_exists_for_a_run_file_at_the_repository_root():
     assert (root / mesh).is_file()
     cfg = parse_config(f'[frame]\nmesh = "{mesh}"\n', root / "run.toml")
     assert cfg.frame().n_elements > 0
+
+
+def test_a_file_for_one_command_notes_what_another_would_refuse(capsys, cwd):
+    # A file with a [sweep] table is meant for sweep: that simulate would refuse its law at
+    # the default exponent (the sweep sweeps it) is a note, not a failure of the file.
+    (cwd / "run.toml").write_text(
+        '[contact]\nlaw = "hunt-crossley"\nhc_stiffness_n_m_n = 1e7\n'
+        "[sweep]\nhc_exponent = [1.5, 2.0]\n"
+    )
+    code, out, err = _run(capsys, "config", "--check", "run.toml")
+    assert code == 0, err
+    line = next(ln for ln in out.splitlines() if ln.startswith("[simulate]"))
+    assert line.startswith("[simulate] not for this command: fem-racket simulate would refuse it")
+    assert any(ln.startswith("[sweep] ") and "hc_exponent" in ln for ln in out.splitlines())
+    # the same file with a [sweep] the sweep refuses fails
+    (cwd / "run.toml").write_text('[contact]\nlaw = "series"\n[sweep]\nhc_exponent = [1.5, 2.0]\n')
+    code, _, err = _run(capsys, "config", "--check", "run.toml")
+    assert code == 2 and "fem-racket sweep would refuse it" in err

@@ -70,6 +70,7 @@ def command_tables() -> str:
 def _check(path: str) -> str:
     commands = _commands()
     cfg = load_config(path)
+    known_tables = {COMMAND_TABLES.get(n, n) for n in commands}
     out = [f"{path}: ok"]
     for name, sub in commands.items():
         table = COMMAND_TABLES.get(name, name)
@@ -82,15 +83,23 @@ def _check(path: str) -> str:
         if requires and table not in cfg.tables:
             out.append(f"{label} not checked: no [{table}] table ({', '.join(requires)} needed)")
             continue
-        _dry_run(name, path)
+        # A file with command tables is meant for those commands: another command's refusal
+        # is a note; a file without any is checked for every command.
+        strict = table in cfg.tables or not known_tables & set(cfg.tables)
+        try:
+            _dry_run(name, path)
+        except InputError as exc:
+            if strict:
+                raise
+            out.append(f"{label} not for this command: {str(exc).removeprefix(f'{path}: ')}")
+            continue
         used = file_options(sub).keys() | {a.dest for a in sub._actions}
         used |= {"segments", "mesh"}
         shown = {k: v for k, v in values.items() if k in used}
         listed = ", ".join(f"{k} = {_show(v)}" for k, v in shown.items())
         out.append(f"{label} {listed or '(all defaults)'}")
-    known = {COMMAND_TABLES.get(n, n) for n in commands}
     for table in cfg.tables:
-        if table not in known:
+        if table not in known_tables:
             out.append(f"[{table}] not checked: no command reads it in this version")
     return "\n".join(out) + "\n"
 
