@@ -24,6 +24,7 @@ import logging
 import os
 import re
 import shutil
+import weakref
 from pathlib import Path
 from typing import Any
 
@@ -120,6 +121,8 @@ class History:
             ) from None
         _lock(self.folder)
         self._locked = True
+        # released when the history is closed, or forgotten (an evaluator a script drops)
+        self._release = weakref.finalize(self, _unlock, self.folder)
         try:
             self._prepare(description, restart)
             self._load()
@@ -235,7 +238,7 @@ class History:
     def close(self) -> None:
         """Release the lock (the folder stays for a later run to resume)."""
         if self._locked:
-            _unlock(self.folder)
+            self._release()
             self._locked = False
 
     def remove(self) -> None:
