@@ -14,10 +14,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fem_racket.extras import require
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.limits import check_sobol_size
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.scaling import progress_bar
+from fem_racket.studies.views import SobolView
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["SobolIndices", "sobol_indices"]
@@ -26,8 +28,8 @@ __all__ = ["SobolIndices", "sobol_indices"]
 SLICES = 20
 
 
-@dataclass(frozen=True)
-class SobolIndices:
+@dataclass(frozen=True, repr=False)
+class SobolIndices(SobolView):
     """Sobol indices of one output.
 
     Attributes
@@ -90,6 +92,7 @@ def sobol_indices(
     progress : bool, optional
         Progress bar (designs) on stderr; None: only when stderr is a terminal.
     """
+    require("SALib", "Sobol indices (sensitivity)")
     from SALib.analyze import sobol as analyze
     from SALib.sample import sobol as sample
 
