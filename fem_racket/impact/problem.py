@@ -28,7 +28,7 @@ from typing import Any
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import check_linear_options, get_law
-from fem_racket.frame.hand import Hand
+from fem_racket.frame.hand import Hand, check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.strung import check_strung_problem, kawazoe_ball
@@ -157,6 +157,8 @@ class ImpactProblem:
             )
         if self.swing is not None and self.frame_velocity is not None:
             raise InputError("swing and frame_velocity cannot be combined: give one")
+        if self.swing is not None:
+            _ = self.closing_speed  # ball and strings must close, under any law
         if self.held:
             self._check_held()
         if self.strings is not None:
@@ -194,6 +196,7 @@ class ImpactProblem:
                 f"separation = {show(self.separation)} is not allowed with a hand: the held "
                 "racket ends contact by the spring deflection (the paper's criterion)"
             )
+        check_grip(self.structure.hand, self.model.mesh.length)
 
     @classmethod
     def build(cls, frame: Any = None, *, elements: int | None = None, **fields: Any):

@@ -15,6 +15,7 @@ from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.settings import Settings
 from fem_racket.impact.simulate_linear import RIGID_MODES
+from fem_racket.impact.system import check_output_count
 
 __all__ = ["simulate_law"]
 
@@ -33,6 +34,10 @@ def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> Imp
     s = settings
     if solver == "cvode":  # the general integrator has no tolerances
         check_solver_settings(solver, "modal", model.mesh.n_elements, s.rtol, s.atol)
+    if s.output_step is not None:  # the histories' size, from the law's contact estimate
+        t_est = float(law.contact_time_estimate(problem.ball.mass, problem.closing_speed))
+        span, what = (s.t_max, "t_max") if s.t_max is not None else (2 * t_est, "twice the law's")
+        check_output_count(s.output_step, span, f"{what} {span:.3g} s of contact")
     run = solve_law_impact(
         law,
         model,

@@ -21,15 +21,19 @@ from fem_racket.impact.problem import Impact, ImpactProblem
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.settings import BASES, Settings
 from fem_racket.impact.swing import add_swing, swing_setup
-from fem_racket.impact.system import CoupledSystem, modal_system, physical_system
+from fem_racket.impact.system import (
+    MAX_OUTPUT_TIMES,
+    CoupledSystem,
+    check_output_count,
+    modal_system,
+    physical_system,
+)
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BASES", "build_system", "simulate_linear"]
 
 #: Rigid-body modes of the free frame (translation, rotation) in the modal basis.
 RIGID_MODES = 2
-#: Largest number of output times a simulation may be asked for.
-MAX_OUTPUT_TIMES = 1e6
 
 
 def build_system(
@@ -71,11 +75,13 @@ def _check_output_count(
             f"t_max = {show(t_max)} s is not allowed: {limit}, so t_max <= "
             f"{MAX_OUTPUT_TIMES * output_step:.3g} s (or a larger output_step)"
         )
-    what = f"kcb = {kcb!r} N/m" if kcb is not None else f"ball_mass = {ball_mass!r} kg"
-    raise InputError(
-        f"{what} is not allowed with {limit}: the contact would last about {t_est:.3g} s "
-        "(eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none"
-    )
+    if kcb is not None:
+        raise InputError(
+            f"kcb = {kcb!r} N/m is not allowed with {limit}: the contact would last about "
+            f"{t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none"
+        )
+    what = f"twice the contact's {t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB), m_B = {ball_mass!r} kg)"
+    check_output_count(output_step, span, what)
 
 
 def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> ImpactResult:

@@ -186,6 +186,8 @@ def write_mesh(
     with atomic_output(path, overwrite=overwrite) as tmp:
         try:
             meshio.write(tmp, out, **kwargs)
+        except OSError:
+            raise  # a fault of the disk (full, ...): atomic_output names the file
         except Exception as exc:  # unknown suffix, unsupported cell data, ...
             msg = " ".join(str(exc).split()) or type(exc).__name__
             raise InputError(f"mesh output = '{path}' cannot be written: {msg}") from None

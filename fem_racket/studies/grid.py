@@ -45,6 +45,7 @@ from fem_racket.studies.grid_values import (
     as_values,
     parameter,
     parse_values,
+    value_count,
 )
 from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
@@ -127,8 +128,12 @@ class SweepSpec:
         :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
         check_linear_options(kwargs.get("law"), kcb=raw["kcb"], zeta=raw["zeta"])
-        values = {name: as_values(name, value) for name, value in raw.items()}
         law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
+        # the grid's size from the counts alone, before any value is made (20:40:10000000)
+        counts = {n: value_count(v) for n, v in {**raw, **law_given}.items()}
+        swept = {n: c for n, c in counts.items() if c > 1}
+        check_grid_size(list(swept.values()), list(swept))
+        values = {name: as_values(name, value) for name, value in raw.items()}
         for name, value in sweep_law_values(kwargs.get("law"), law_given).items():
             values[name] = as_values(name, value)
         check_law_grid(kwargs.get("law"), values)  # every combination, before any work

@@ -30,7 +30,15 @@ from fem_racket.validation import (
     show,
 )
 
-__all__ = ["LAW_PARAMETERS", "PARAMETERS", "Parameter", "as_values", "parameter", "parse_values"]
+__all__ = [
+    "LAW_PARAMETERS",
+    "PARAMETERS",
+    "Parameter",
+    "as_values",
+    "parameter",
+    "parse_values",
+    "value_count",
+]
 
 
 @dataclass(frozen=True)
@@ -133,6 +141,24 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
     if len(numbers) == 1:
         return as_values(name, numbers[0])
     return as_values(name, numbers)
+
+
+def value_count(value: Any) -> int:
+    """How many values ``value`` gives (as :func:`as_values` would), without making them: the
+    ``num`` of ``start:stop:num[:log]``, the items of a comma list or a sequence; 1 otherwise.
+    A malformed value, or one axis over :data:`MAX_CASES`, counts 1 (:func:`as_values` then
+    says what is wrong)."""
+    if isinstance(value, str):
+        if ":" in value:
+            parts = [p.strip() for p in value.split(":")]
+            parts = parts[:-1] if parts[-1].lower() == "log" else parts
+            try:
+                num = float(parts[2]) if len(parts) == 3 else 1.0
+            except ValueError:
+                return 1
+            return int(num) if 1 <= num <= MAX_CASES else 1
+        return value.count(",") + 1
+    return 1 if value is None or np.ndim(value) == 0 else int(np.size(value))
 
 
 def as_values(name: str, value: Any) -> float | int | None | np.ndarray:

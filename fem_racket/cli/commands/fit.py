@@ -25,7 +25,7 @@ from fem_racket.outputs import (
     provenance,
     sidecar_path,
 )
-from fem_racket.validation import InputError, check_integer
+from fem_racket.validation import InputError, check_integer, work_begins
 
 #: Where the mesh goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "racket.vtu"
@@ -93,7 +93,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--overwrite", action="store_true", help="replace existing files (default: refuse)"
     )
     o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
-    add_config_option(p, private=("out", "elements"))
+    add_config_option(
+        p, private=("out", "elements"), requires=("length", "mass", "balance", "swing_weight")
+    )
     p.set_defaults(func=run)
 
 
@@ -108,6 +110,7 @@ def run(args: argparse.Namespace) -> int:
     overwrite = replace_own(args, out == DEFAULT_OUTPUT, [out, sidecar_path(out)])
     for f in (out, sidecar_path(out)):
         check_output_path(f, overwrite=overwrite)
+    work_begins()
     frame = fit_racket(
         args.length,
         args.mass,

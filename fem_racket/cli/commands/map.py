@@ -30,7 +30,7 @@ from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
-from fem_racket.io.map_files import check_map_output, write_map
+from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.studies.grid import as_values
 from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
@@ -187,10 +187,9 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("no_files = True is not allowed with --out: give one of them")
     default = not (args.out or args.no_files or args.json)
     outs = [Path(p) for p in (args.out or [])] or ([DEFAULT_OUTPUT] if default else [])
-    files = [f for path in outs for f in check_map_output(path, overwrite=True)]
+    files = [t.path for t in map_targets(outs)]
     overwrite = replace_own(args, default, files)
-    for path in outs:
-        check_map_output(path, overwrite=overwrite)
+    check_map_outputs(outs, overwrite=overwrite)  # also: no path given twice
     positions = as_values("position", args.positions)
     law = law_from_args(args)
     maps = [
@@ -213,8 +212,8 @@ def run(args: argparse.Namespace) -> int:
         )
         for name, frame in _rackets(args)
     ]
-    for path in outs:
-        write_map(maps, path, overwrite=overwrite, parameters=run_parameters(args))
+    if outs:  # as one set: all of them or none
+        write_maps(maps, outs, overwrite=overwrite, parameters=run_parameters(args))
     if args.json:
         objs = [m.summary() for m in maps]
         print_json(objs[0] if len(objs) == 1 else {"rackets": objs})

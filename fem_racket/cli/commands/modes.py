@@ -35,11 +35,12 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the modal analysis."""
-    from fem_racket.validation import InputError
+    from fem_racket.validation import InputError, work_begins
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
     model = build_model(args)
+    work_begins()
     fm = model.modes(args.count)
     if fm.omega.size < args.count:
         n, shown = model.mesh.n_elements, fm.omega.size
