@@ -40,7 +40,7 @@ def test_frequencies_converge_at_the_elements_order(order):
         errors.append(np.abs(tm.modes(4).frequencies - exact) / exact)
     rates = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
     assert np.all(rates > 2 * order - 0.2) and np.all(rates[-1] > 2 * order - 0.1), rates
-    assert np.all(errors[-1] < (3e-3 if order == 1 else 1e-6))
+    assert np.all(errors[-1] < (5e-3 if order == 1 else 2e-5))
 
 
 def test_modes_are_mass_normalised_and_totals_match_the_modal_sums():
