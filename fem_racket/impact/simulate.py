@@ -57,6 +57,7 @@ def simulate(
     frame_velocity: Any = None,
     tolerance: float | None = DEFAULT_TOLERANCE,
     swing: Swing | None = None,
+    offset: float = 0.0,
 ) -> ImpactResult:
     """Simulate a ball striking the free frame, at rest or swinging (``swing``, or any initial
     motion ``frame_velocity``).
@@ -126,12 +127,16 @@ def simulate(
         The racket's rigid motion before impact (:mod:`fem_racket.impact.swing`); at rest when
         None. K_CB then follows the closing speed ``speed + v_r``; the exact solver superposes
         the swing on the stationary impact, the BDF solvers start from its velocity field.
+    offset : float
+        Lateral distance of the impact point from the long axis [m], on the head outline
+        (:mod:`fem_racket.impact.offaxis`); the frame then twists too (every solver, modal
+        basis). 0: on the axis.
 
     Returns
     -------
     ImpactResult
     """
-    impact = Impact(position, speed)
+    impact = Impact(position, speed, offset)
     ball = Ball() if ball_mass is None else Ball(ball_mass)
     contact = LinearContact.for_speed(impact.speed, kcb=kcb, zeta=zeta)
     check_choice("solver", solver, (*SOLVERS, *LAW_SOLVERS))

@@ -22,6 +22,7 @@ from fem_racket.frame.segments import Frame
 from fem_racket.impact.law_impact import solve_law_impact
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.ode.integrators import check_solver_settings
+from fem_racket.impact.offaxis import RIGID_OFFAXIS, check_offsets, combined_modes
 from fem_racket.impact.problem import Impact
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.simulate_linear import RIGID_MODES
@@ -54,6 +55,7 @@ def simulate_law(
     by ``solver`` ("general" or "cvode"); the other arguments as
     :func:`fem_racket.impact.simulate.simulate`'s."""
     model = frame_model(frame, elements)
+    check_offsets(model, impact.position, impact.offset)
     if swing is not None:  # the swing as the general integrator's moving racket
         if frame_velocity is not None:
             raise InputError("swing and frame_velocity cannot be combined: give one")
@@ -109,8 +111,14 @@ def _law_result(
         t_max=t_max,
         rtol=rtol,
         atol=atol,
+        offset=impact.offset,
     )
-    shapes = model.modes(None).all_shapes
+    n_rigid, shapes = RIGID_MODES, model.modes(None).all_shapes
+    if impact.offset != 0.0:
+        n_rigid, shapes = RIGID_OFFAXIS, combined_modes(model, None).all_shapes
+    q, qd = run.modal_displacement @ shapes.T, run.modal_velocity @ shapes.T
+    nb = model.fe.ndof
+    twist = {} if impact.offset == 0.0 else {"twist": q[:, nb:], "twist_rate": qd[:, nb:]}
     return ImpactResult(
         model=model,
         impact=impact,
@@ -119,13 +127,14 @@ def _law_result(
         solver=solver,
         separation=law.end,
         basis="modal",
-        n_modes=shapes.shape[1] - RIGID_MODES,
+        n_modes=shapes.shape[1] - n_rigid,
         t=run.t,
         ball_displacement=run.ball_displacement,
         ball_velocity=run.ball_velocity,
-        frame_displacement=run.modal_displacement @ shapes.T,
-        frame_velocity=run.modal_velocity @ shapes.T,
+        frame_displacement=q[:, :nb],
+        frame_velocity=qd[:, :nb],
         peak_force=run.peak_force,
         law=law if contact is None else None,
         law_state=run.state if contact is None else None,
+        **twist,
     )

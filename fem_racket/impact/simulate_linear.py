@@ -23,6 +23,12 @@ from fem_racket.frame.segments import Frame
 from fem_racket.impact.exact.single import engine_impact
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.ode.integrators import check_solver_settings, get_solver
+from fem_racket.impact.offaxis import (
+    RIGID_OFFAXIS,
+    check_offsets,
+    combined_modes,
+    combined_point_vector,
+)
 from fem_racket.impact.problem import Impact
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.swing import Swing, add_swing, closing_speed, swing_setup
@@ -52,6 +58,17 @@ def build_system(
     fe = model.fe
     g = fe.point_vector(impact.position * fe.mesh.length)
     ccb = contact.damping(ball.mass)
+    if impact.offset != 0.0:  # bending and torsion (fem_racket.impact.offaxis)
+        if basis != "modal":
+            raise InputError(
+                f"basis = {show(basis)} is not allowed with offset = {impact.offset!r} m: "
+                "must be 'modal'"
+            )
+        cm = combined_modes(model, modes)
+        g = combined_point_vector(model, impact.position * fe.mesh.length, impact.offset)
+        return modal_system(
+            cm.all_omega, cm.all_shapes, g, ball.mass, contact.stiffness, ccb, impact.speed
+        )
     if basis == "modal":
         fm = model.modes(modes)
         return modal_system(
@@ -106,6 +123,7 @@ def simulate_linear(
     """An impact under the paper's linear law (K_CB from ``kcb`` or the closing speed, ``zeta``)
     by ``solver``; the arguments as :func:`fem_racket.impact.simulate.simulate`'s, checked."""
     model = frame_model(frame, elements)
+    check_offsets(model, impact.position, impact.offset)
     check_solver_settings(solver, basis, model.mesh.n_elements, rtol, atol)
     x_i = impact.position * model.mesh.length
     v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
@@ -139,7 +157,8 @@ def simulate_linear(
     )
     if to_lab is not None:
         traj = to_lab(traj)
-    n_modes = (system.size - 1 - RIGID_MODES) if basis == "modal" else None
+    n_rigid = RIGID_MODES if impact.offset == 0.0 else RIGID_OFFAXIS
+    n_modes = (system.size - 1 - n_rigid) if basis == "modal" else None
     return _result(
         model, impact, ball, contact, solver, separation, basis, n_modes, traj, system.frame_map,
         swing=swing, rtol=rtol, atol=atol,
@@ -156,6 +175,9 @@ def _result(
         q, qd = traj.x[:, 1:], traj.v[:, 1:]
     else:
         q, qd = traj.x[:, 1:] @ frame_map.T, traj.v[:, 1:] @ frame_map.T
+    nb = model.fe.ndof
+    twist = {} if impact.offset == 0.0 else {"twist": q[:, nb:], "twist_rate": qd[:, nb:]}
+    q, qd = q[:, :nb], qd[:, :nb]
     return ImpactResult(
         model=model,
         impact=impact,
@@ -175,4 +197,5 @@ def _result(
         atol=None if solver == "exact" else atol,
         tolerance=tolerance,
         swing=swing,
+        **twist,
     )
