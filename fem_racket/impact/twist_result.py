@@ -7,10 +7,10 @@ DOFs of :class:`~fem_racket.frame.torsion.TorsionModel`) give, with its K_t and 
     energies        T_t = theta'^T M_t theta' / 2,  U_t = theta^T K_t theta / 2   [J]
     roll momentum   L_x = y m_B v_B + 1^T M_t theta'               [kg m^2/s]
 
-``result`` is an off-axis :class:`~fem_racket.impact.result.ImpactResult` (which imports
-this module where it needs it). L_x is the angular momentum of ball and frame about the long axis (positive twist moves the
-face point at +y along the ball's travel); the contact force exerts no net torque on the pair,
-so L_x stays at its initial value y m_B V_B0.
+``result`` is an off-axis :class:`~fem_racket.impact.result.ImpactResult` (which imports this
+module where it needs it). L_x is the angular momentum of ball and frame about the long axis
+(positive twist moves the face point at +y along the ball's travel); the contact force exerts
+no net torque on the pair, so L_x stays at its initial value y m_B V_B0.
 """
 
 from __future__ import annotations
