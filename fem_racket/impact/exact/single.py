@@ -79,9 +79,7 @@ def engine_impact(
     # As the batch: a near-touch of zero before separation is solved again with every mode.
     for beta in (cutoff_factor(tolerance, separation), math.inf):
         _, d, v = next(
-            pole_blocks(
-                omega[None], a[None], np.array([mu0]), np.array([wc]), beta, zero, zero
-            )
+            pole_blocks(omega[None], a[None], np.array([mu0]), np.array([wc]), beta, zero, zero)
         )
         kept = int(np.sum(omega < beta * wc))
         roots = next(r for p, r in coupled_roots(d, v, np.array([k]), np.array([c])) if p.size)
