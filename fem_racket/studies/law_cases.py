@@ -79,19 +79,23 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         swings = [case_swing(cases[r], length) for r in rows]
         v_r = np.array([sw.speed_at(x * length) for sw, x in zip(swings, pos, strict=True)])
         closing = np.array([closing_speed(v, w) for v, w in zip(speed, v_r, strict=True)])
-        named = {k: [cases[r][k] for r in rows] for k in LAW_PARAMETERS if k in spec.values}
-        law = spec.case_law(named, len(rows))
-        rec = receptance(model, pos, mass)
-        try:
-            o = solve_general(law, rec, closing)
-        except (NoSeparationError, RuntimeError) as exc:
-            log.warning("%d cases failed (NaN in the results): %s", len(rows), exc)
-            continue
-        e_a = -o.ball_velocity / closing
-        out[rows, 0] = e_a
-        out[rows, 1] = o.contact_time
-        out[rows, 2] = ball_speed_out(e_a, speed, v_r)
-        out[rows, 3] = o.peak_force
-        out[rows, 5] = v_r
-        out[rows, 6] = rec.omega.size
+        offset = np.array([cases[r]["offset"] for r in rows])
+        for y in np.unique(offset):  # off axis the frame twists too: one receptance per offset
+            sel = np.flatnonzero(offset == y)
+            at = [rows[i] for i in sel]
+            named = {k: [cases[r][k] for r in at] for k in LAW_PARAMETERS if k in spec.values}
+            law = spec.case_law(named, len(at))
+            rec = receptance(model, pos[sel], mass[sel], None, float(y))
+            try:
+                o = solve_general(law, rec, closing[sel])
+            except (NoSeparationError, RuntimeError) as exc:
+                log.warning("%d cases failed (NaN in the results): %s", len(at), exc)
+                continue
+            e_a = -o.ball_velocity / closing[sel]
+            out[at, 0] = e_a
+            out[at, 1] = o.contact_time
+            out[at, 2] = ball_speed_out(e_a, speed[sel], v_r[sel])
+            out[at, 3] = o.peak_force
+            out[at, 5] = v_r[sel]
+            out[at, 6] = rec.omega.size
     return out

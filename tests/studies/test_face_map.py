@@ -71,3 +71,19 @@ def test_refusals(standard_model):
         face_map(standard_model, positions=X, offsets=[0.0])
     with pytest.raises(InputError, match="unknown face-map options"):
         face_map(standard_model, positions=X, offsets=Y, options={"law": "x"})
+
+
+def test_sweep_with_an_offset_axis(capsys, tmp_path):
+    # the sweep's engine and general-integrator paths take the offset as an axis
+    for law in ([], ["--law", "hunt-crossley"]):
+        out = tmp_path / f"s{len(law)}.nc"
+        code, _, _ = run(capsys, "sweep", "--offset", "-0.05:0.05:3", "--position", "0.6,0.74",
+                         "--out", out, *law)  # fmt: skip
+        assert code == 0
+        ds = xr.open_dataset(out)
+        cor = ds.cor.transpose("position", "offset").values
+        ds.close()
+        np.testing.assert_allclose(cor[:, 0], cor[:, 2], rtol=0, atol=1e-12)  # mirror
+        assert np.all(cor[:, 1] > cor[:, 0])  # off axis the racket rolls: less rebound
+    code, _, err = run(capsys, "sweep", "--offset", "0.2", "--out", tmp_path / "x.nc")
+    assert code == 2 and "offset = 0.2 m is not allowed" in err
