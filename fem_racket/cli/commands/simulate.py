@@ -40,8 +40,8 @@ from fem_racket.cli.common import (
     swing_from_args,
     write_json,
 )
-from fem_racket.cli.impact_options import add_hand_options, hand_from_args
-from fem_racket.cli.laws import law_from_args
+from fem_racket.cli.options.impact import add_hand_options, hand_from_args
+from fem_racket.cli.options.laws import law_from_args
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
