@@ -55,6 +55,14 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         help="impact point x/L from the grip end, 0..1 (default 0.75)",
     )
     g.add_argument(
+        "--offset",
+        type=float,
+        default=0.0,
+        metavar="M",
+        help="lateral offset [m] of the impact point from the long axis, on the head outline "
+        "(100 in^2 ellipse, 0.326 x 0.252 m): the frame also twists (default 0: on the axis)",
+    )
+    g.add_argument(
         "--ball-mass",
         type=float,
         default=0.057,
@@ -288,6 +296,7 @@ def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """Keyword arguments of :func:`fem_racket.simulate` from the parsed options."""
     return {
         "position": args.position,
+        "offset": args.offset,
         "speed": args.speed,
         "ball_mass": args.ball_mass,
         "kcb": args.kcb,
