@@ -46,3 +46,21 @@ def test_export_vtk_writes_the_twist(capsys, tmp_path):
     ball = pv.read(sorted(out.glob("ball_*.vtu"))[-1])
     assert np.max(np.abs(frame.point_data["twist [rad]"])) > 0.0
     assert ball.center[1] == pytest.approx(0.05, abs=1e-12)  # the ball at its offset
+
+
+def test_fit_twist_weight_round_trips_through_modes(capsys, tmp_path):
+    out = tmp_path / "r.vtu"
+    spec = ["--length", "0.685", "--mass", "0.318", "--balance", "0.320", "--swing-weight", "316"]
+    code, _, _ = run(capsys, "fit", *spec, "--twist-weight", "16", "--torsion-frequency", "400",
+                     "--out", out)  # fmt: skip
+    assert code == 0
+    code, text, _ = run(capsys, "modes", "--mesh", out, "--json")
+    m = json.loads(text)
+    assert m["twist_weight_kg_cm2"] == pytest.approx(16.0, rel=1e-12)  # cells keep I_p exactly
+    # the exact stepped shaft has 400 Hz; P2 elements on the 40-cell mesh within 1e-5
+    assert m["torsion_frequencies_hz"][0] == pytest.approx(400.0, rel=1e-5)
+    code, _, err = run(capsys, "fit", *spec, "--twist-weight", "60", "--out", tmp_path / "x.vtu")
+    assert code == 2 and "must lie in (0, 50.49] kg cm^2" in err
+    code, _, err = run(capsys, "fit", *spec, "--torsion-frequency", "400", "--out",
+                       tmp_path / "y.vtu")  # fmt: skip
+    assert code == 2 and "without --twist-weight" in err
