@@ -149,7 +149,7 @@ def plot_face(
         fig.colorbar(cs, ax=list(axes[row]), label=label, shrink=0.9)
     pct = round(100 * maps[0].power_fraction)
     fig.suptitle(
-        f"ball at {maps[0].speed:g} m/s; white line: e_A = {pct} % of its max (power area); "
+        f"ball at {maps[0].speed:g} m/s; white line: e_A = {pct} % of its max (power area)\n"
         "star: maximum; dotted: mode-1 node; dashed: COP",
         fontsize=9,
     )
