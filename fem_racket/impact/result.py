@@ -103,8 +103,10 @@ class ImpactResult:
         return impact_dataset(self, x)
 
     swing: Swing | None = None
-    #: Off axis (``impact.offset`` != 0): twist histories on the torsion DOFs [rad], [rad/s]
-    #: (:mod:`fem_racket.impact.twist_result`); None on the axis.
+    #: Lateral offset of the impact point from the long axis [m]; off axis (!= 0) the twist
+    #: histories on the torsion DOFs [rad], [rad/s] (:mod:`fem_racket.impact.twist_result`),
+    #: None on the axis.
+    offset: float = 0.0
     twist: np.ndarray | None = None
     twist_rate: np.ndarray | None = None
 
@@ -174,7 +176,7 @@ class ImpactResult:
     def _twist_point(self) -> np.ndarray:
         """y g_t(x_i): the face point's displacement per torsion DOF [m/rad]."""
         g = self.model.torsion.point_matrix(np.array([self.x_impact]))[0]
-        return self.impact.offset * g
+        return self.offset * g
 
     @property
     def deflection(self) -> np.ndarray:

@@ -44,7 +44,7 @@ def roll_momentum(result: Any) -> np.ndarray:
     """Angular momentum of ball and frame about the long axis [kg m^2/s] per output time."""
     tors = result.model.torsion
     _, M = tors.matrices
-    ball = result.impact.offset * result.ball.mass * result.ball_velocity
+    ball = result.offset * result.ball.mass * result.ball_velocity
     return ball + result.twist_rate @ (M @ np.ones(tors.ndof))
 
 
@@ -59,7 +59,7 @@ def twist_summary(result: Any) -> dict[str, Any]:
     v0 = result.impact.speed
     lost = 0.5 * result.ball.mass * (v0 * v0 - result.ball_velocity[-1] ** 2)
     return {
-        "offset_m": result.impact.offset,
+        "offset_m": result.offset,
         "roll_rate_rad_s": float(qd @ (M @ np.ones(tors.ndof))) / tors.polar_moment,
         "torsion_energy_share": float(energy / lost) if lost > 0.0 else float("nan"),
     }

@@ -301,5 +301,5 @@ def impact_series(
         x_impact=result.x_impact,
         scale=scale,
         ball_radius=ball_radius,
-        ball_y=result.impact.offset,
+        ball_y=result.offset,
     )

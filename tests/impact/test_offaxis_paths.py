@@ -78,3 +78,18 @@ def test_refusals(standard_model):
         simulate(standard_model, position=X, offset=0.3)
     with pytest.raises(InputError, match="frame_velocity of shape"):
         simulate(standard_model, position=X, offset=Y, frame_velocity=np.zeros(42))
+
+
+def test_impact_problem_offset_field(standard_model):
+    from fem_racket.frame.hand import Hand
+    from fem_racket.impact.problem import ImpactProblem
+
+    p = ImpactProblem.build(standard_model, position=X, offset=Y)
+    assert p.offset == Y and "y = 0.05 m" in repr(p)
+    assert ImpactProblem.build(standard_model, position=X).offset == 0.0
+    with pytest.raises(InputError, match=r"^offset = 0.05 m is not allowed with a hand"):
+        ImpactProblem.build(standard_model, position=X, offset=Y, hand=Hand())
+    with pytest.raises(InputError, match=r"^offset = 0.13 m is not allowed: the point must lie"):
+        ImpactProblem.build(standard_model, position=X, offset=0.13)
+    with pytest.raises(InputError, match=r"^offset = nan m is not allowed"):
+        ImpactProblem.build(standard_model, position=X, offset=float("nan"))

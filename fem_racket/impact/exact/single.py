@@ -48,6 +48,7 @@ def engine_impact(
     modes: int | None,
     tolerance: float | None,
     t_max: float | None,
+    offset: float = 0.0,
 ) -> tuple[Trajectory, np.ndarray, int]:
     """Trajectory at t = 0 and t_c in the coordinates [u_B, rigid, flexible modes], the matrix
     taking the frame coordinates to Hermite DOFs (off axis: then the torsion DOFs, see
@@ -55,10 +56,11 @@ def engine_impact(
     model (those above the cut-off are represented by the residual pseudo-mode).
 
     ``modes`` bounds the frame modes used (a plain truncation, as the other paths);
-    ``tolerance`` then drops those not needed for it (None: keep them all).
+    ``tolerance`` then drops those not needed for it (None: keep them all). ``offset`` [m]: the
+    impact point's distance from the long axis (:mod:`fem_racket.impact.offaxis`).
     """
     x_i = impact.position * model.mesh.length
-    if impact.offset == 0.0:
+    if offset == 0.0:
         fm = model.modes(modes)
         data = frame_modal_data(model, np.array([impact.position]), None, limit=fm.omega.size)
         omega, a, shapes = data.omega, data.values[0], fm.all_shapes
@@ -66,7 +68,7 @@ def engine_impact(
         rigid = float(data.rigid[0])
     else:  # off axis: bending and torsion modes in one basis (fem_racket.impact.offaxis)
         cm = combined_modes(model, modes)
-        aa = cm.all_shapes.T @ combined_point_vector(model, x_i, impact.offset)
+        aa = cm.all_shapes.T @ combined_point_vector(model, x_i, offset)
         omega, a, shapes, rig = cm.omega, aa[RIGID_OFFAXIS:], cm.all_shapes, aa[:RIGID_OFFAXIS]
         rigid = float(rig @ rig)
     k = contact.stiffness
