@@ -46,6 +46,14 @@ def test_export_vtk_writes_the_twist(capsys, tmp_path):
     ball = pv.read(sorted(out.glob("ball_*.vtu"))[-1])
     assert np.max(np.abs(frame.point_data["twist [rad]"])) > 0.0
     assert ball.center[1] == pytest.approx(0.05, abs=1e-12)  # the ball at its offset
+    # the face as a surface: z = w(x) + y theta(x), so across the face z changes by y theta
+    face = pv.read(sorted(out.glob("face_*.vtu"))[-1])
+    pts, z, th = face.points, face.point_data["displacement [m]"], face.point_data["twist [rad]"]
+    x0 = pts[np.argmax(pts[:, 1]), 0]  # the widest station: its two rim points
+    row = np.isclose(pts[:, 0], x0)
+    hi, lo = np.argmax(np.where(row, pts[:, 1], -1)), np.argmin(np.where(row, pts[:, 1], 1))
+    assert z[hi] - z[lo] == pytest.approx((pts[hi, 1] - pts[lo, 1]) * th[hi], rel=1e-12)
+    assert "face_0000.vtu" in (out / "impact.pvd").read_text()
 
 
 def test_fit_twist_weight_round_trips_through_modes(capsys, tmp_path):
