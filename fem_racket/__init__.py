@@ -54,6 +54,8 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "impact.settings": ("SolverOptions",),
     "impact.simulate": ("simulate",),
     "impact.solvers": ("SOLVERS", "SOLVER_NAMES", "Solver", "make_solver"),
+    "impact.strung": ("StrungPoint", "strung_point"),
+    "impact.strung_impact": ("StrungImpact", "simulate_strung"),
     "impact.swing": ("Swing", "ball_speed_out"),
     "io.animate": ("render_animation",),
     "io.config": ("RunConfig", "example_config", "load_config", "parse_config"),
@@ -61,9 +63,15 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "io.mesh_files": ("read_mesh", "write_mesh"),
     "io.plotting": ("plot_impact", "plot_refinement", "plot_sweep"),
     "io.vtk": ("write_vtk_series",),
+    "io.strung_vtk": ("write_strung_vtk",),
     "io.vtk_series": ("ImpactSeries", "impact_series"),
     "studies.face_map": ("FaceMap", "face_map"),
+    "strings.bed": ("StringBed",),
+    "strings.materials": ("STRINGS", "StringMaterial"),
+    "strings.point": ("bed_point_data",),
+    "strings.stiffening": ("stiffening",),
     "studies.racket_map": ("RacketMap", "racket_map"),
+    "studies.strings_sweep": ("tension_sweep",),
     "studies.refine": ("RefinementStudy", "refinement_study"),
     "studies.sweep": ("sweep",),
     "studies.sweetspots": ("SweetSpots", "centre_of_percussion"),
@@ -86,4 +94,5 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return sorted({*globals(), *__all__})
+    """The public names and the module's dunders, not its helpers (``importlib``, ``Any``)."""
+    return sorted({*__all__, *(n for n in globals() if n.startswith("__") and n.endswith("__"))})

@@ -39,6 +39,7 @@ __all__ = [
     "LawRun",
     "law_histories",
     "modal_velocity",
+    "ode_state_at",
     "receptance",
     "solve_law_impact",
 ]
@@ -54,15 +55,14 @@ def receptance(
     (``offset`` [m]) bending and torsion, three rigid modes (:mod:`fem_racket.impact.offaxis`)."""
     pos = np.atleast_1d(np.asarray(positions, dtype=float))
     mb = np.broadcast_to(np.asarray(ball_mass, dtype=float), pos.shape).copy()
-    if offset != 0.0:
+    if offset != 0.0:  # point by point, as below
         cm = combined_modes(model, modes)
         L = model.mesh.length
-        G = np.column_stack([combined_point_vector(model, p * L, offset) for p in pos])
-        a = (cm.all_shapes.T @ G).T
+        a = np.array([cm.all_shapes.T @ combined_point_vector(model, p * L, offset) for p in pos])
         return Receptance(cm.omega, a[:, RIGID_OFFAXIS:], a[:, :RIGID_OFFAXIS], mb)
     fm = model.modes(modes)
-    G = np.column_stack([model.fe.point_vector(p * model.mesh.length) for p in pos])
-    a = (fm.all_shapes.T @ G).T
+    # point by point, so a point's values do not depend on the others asked with it
+    a = np.array([fm.all_shapes.T @ model.fe.point_vector(p * model.mesh.length) for p in pos])
     return Receptance(fm.omega, a[:, 2:], a[:, :2], mb)
 
 
@@ -204,7 +204,7 @@ def run_law(
         ) from None
 
 
-def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
+def ode_state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
     """An ODE state at times ``t``: cubic Hermite through its nodal values and rates [m]."""
     from fem_racket.impact.general.step import hermite_value
 
@@ -331,5 +331,5 @@ def solve_law_impact(
     if law.state == "memory":
         z = _memory_at(out, t, x[:, 0] - x[:, 1:] @ a, v[:, 0] - v[:, 1:] @ a)
     elif law.state == "ode":
-        z = _state_at(law, out, t)
+        z = ode_state_at(law, out, t)
     return LawRun(t, x[:, 0], v[:, 0], x[:, 1:], v[:, 1:], z, float(out.peak_force[0]))

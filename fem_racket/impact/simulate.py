@@ -37,6 +37,7 @@ PROBLEM_OPTIONS = (
     "offset",
     "hand",
     "shock_window",
+    "strings",
     "elements",
 )
 
@@ -60,7 +61,8 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
         ``offset`` (lateral offset of the impact point from the long axis [m], on the head; the
         frame then also twists; 0 by default), ``hand``
         (a Hand: the racket held on its grip; returns a HeldRun) and ``shock_window`` [s],
-        ``elements`` (cells when meshing a Frame; 20).
+        ``strings`` (a StringBed: the string bed replaces the lumped K_CB, ``law`` is the
+        ball's own; returns a StrungImpact), ``elements`` (cells when meshing a Frame; 20).
         The solver: ``solver`` ("auto" (default), "exact", "general", "cvode", "bdf") and its
         options ``tolerance`` (COR tolerance choosing modes and steps; 1e-6), ``modes``
         (flexible modes kept; 80), ``basis`` ("modal" or "physical", BDF only),
@@ -71,7 +73,8 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
     Returns
     -------
     ImpactResult
-        (a :class:`~fem_racket.impact.held.run.HeldRun` for a hand-held racket)
+        (a :class:`~fem_racket.impact.held.run.HeldRun` for a hand-held racket, a
+        :class:`~fem_racket.impact.strung_impact.StrungImpact` with a string bed)
     """
     known = (*PROBLEM_OPTIONS, "solver", *SolverOptions.names())
     for key in options:

@@ -25,7 +25,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         "provenance); any other existing file needs --overwrite. With --law NAME the figures "
         "are drawn with that contact law instead of the paper's linear K_CB and the report says "
         "which of the paper's conclusions (1)-(4) still hold and how the contact times compare "
-        "with the paper's 6-3 ms. About 15 s here (--law kawazoe-1997-nonlinear: about 20 s).",
+        "with the paper's 6-3 ms. About 15 s on a quiet 2-core machine (--law "
+        "kawazoe-1997-nonlinear: about 20 s), several times that under load.",
     )
     p.add_argument(
         "--out",
@@ -81,13 +82,13 @@ def run(args: argparse.Namespace) -> int:
     counts = result.counts()
     if law is None:
         print(
-            f"report: {report} ({len(result.claims)} statements: {counts['agrees']} agree, "
+            f"wrote {report} ({len(result.claims)} statements: {counts['agrees']} agree, "
             f"{counts['differs']} differ, {counts['not checkable']} not checkable)"
         )
     else:
         held = sum(c.verdict == "agrees" for c in result.claims[:4])
-        print(f"report: {report} ({held} of the paper's 4 conclusions hold under {args.law})")
-    print(f"total: {total:.1f} s, output in {out}/")
+        print(f"wrote {report} ({held} of the paper's 4 conclusions hold under {args.law})")
+    print(f"wrote {out}/ ({len(result.files)} files; {total:.1f} s in all)")
     return 0
 
 

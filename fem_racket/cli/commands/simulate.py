@@ -41,6 +41,8 @@ from fem_racket.cli.common import (
     write_json,
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
+from fem_racket.cli.options.output import print_written
+from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
@@ -51,6 +53,7 @@ from fem_racket.outputs import (
     atomic_outputs,
     check_output_path,
     check_targets,
+    json_ready,
     sidecar_path,
 )
 from fem_racket.validation import InputError, show_path
@@ -65,6 +68,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_impact_options(p)
     add_swing_options(p)
     add_hand_options(p)
+    add_strings_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON object")
     g = add_output_options(
         p,
@@ -116,7 +120,7 @@ def _write(
             w.writerow(history)
             for row in zip(*history.values(), strict=True):
                 w.writerow([repr(float(v)) for v in row])
-        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
+        text = json.dumps(json_ready({**meta, "summary": summary}), indent=2, default=str)
         side.write_text(text + "\n", encoding="utf-8")
 
 
@@ -239,8 +243,7 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
 def _print(rows: list[tuple[str, str, str]], files: list[Path]) -> None:
     for name, value, unit in rows:
         print(f"{name:<28} {value:>14} {unit}".rstrip())
-    for f in files:
-        print(f"{'written':<28} {f}")
+    print_written(files)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -248,6 +251,11 @@ def run(args: argparse.Namespace) -> int:
     check_output_step(args.output_step)
     hand = hand_from_args(args)
     files = _check_out(args) if args.out else []
+    strings = strings_from_args(args)
+    if strings is not None:
+        if hand is not None:
+            raise InputError("a hand is not allowed with a string bed: give one of them")
+        return run_strung(args, strings, build_model(args), files)
     if hand is not None:
         return _run_held(args, hand, files)
     model = build_model(args)
