@@ -53,6 +53,7 @@ class Parameter:
 #: Sweepable parameters in dimension order.
 PARAMETERS: dict[str, Parameter] = {
     "position": Parameter("x/L", "impact point from the grip end", "position_x_over_l"),
+    "offset": Parameter("m", "impact point's lateral offset from the long axis", "offset_m"),
     "speed": Parameter("m/s", "incident ball speed", "speed_m_s"),
     "racket_speed": Parameter(
         "m/s", "racket speed towards the ball at the reference point", "racket_speed_m_s"
@@ -89,7 +90,7 @@ def _check_value(name: str, value: object) -> float | int:
     unit = PARAMETERS[name].unit
     if name in ("position", "reference"):
         return check_range(name, value, 0.0, 1.0, unit=unit)
-    if name in ("racket_speed", "pivot"):  # any sign: towards/away, beyond the butt
+    if name in ("racket_speed", "pivot", "offset"):  # any sign: towards/away, either side
         return check_finite(name, value, unit)
     if name in ("kcb", "zeta"):  # the paper's law's declared bounds
         return next(p for p in LinearContact.declared if p.name == name).check(value)

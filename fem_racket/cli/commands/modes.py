@@ -62,6 +62,11 @@ def run(args: argparse.Namespace) -> int:
         "frequencies_hz": fm.frequencies.tolist(),
         "nodes_x_over_l": nodes,
     }
+    if model.mesh.has_torsion:  # the frame in torsion (fem_racket.frame.torsion)
+        tm = model.torsion.modes(args.count)
+        data["polar_moment_kg_m2"] = tm.polar_moment
+        data["twist_weight_kg_cm2"] = tm.polar_moment * 1e4
+        data["torsion_frequencies_hz"] = tm.frequencies.tolist()
     if args.json:
         print_json(data)
         return 0
@@ -71,4 +76,10 @@ def run(args: argparse.Namespace) -> int:
     print(f"{'mode':>4} {'frequency [Hz]':>16}  nodes [x/L]")
     for k, (f, nd) in enumerate(zip(fm.frequencies, nodes, strict=True), start=1):
         print(f"{k:>4} {f:>16.2f}  " + ", ".join(f"{x:.3f}" for x in nd))
+    if model.mesh.has_torsion:
+        ip = data["polar_moment_kg_m2"]
+        print(f"{'polar moment (twistweight)':<28} {ip:>12.6f} kg m^2 ({ip * 1e4:.2f} kg cm^2)")
+        print(f"{'torsion':>7} {'frequency [Hz]':>13}")
+        for k, f in enumerate(data["torsion_frequencies_hz"], start=1):
+            print(f"{k:>7} {f:>13.2f}")
     return 0

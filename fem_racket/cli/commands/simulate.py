@@ -217,8 +217,24 @@ def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, st
         ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound),
         ("peak force", significant(summary["peak_force_n"], 4), "N"),
         ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+        *_twist_rows(summary),
         *_swing_rows(summary, swinging),
         ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),
+    ]
+
+
+def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """Off axis: the offset, the racket's roll rate and the energy left in torsion."""
+    if "offset_m" not in summary:
+        return []
+    return [
+        ("offset from the axis", significant(summary["offset_m"], 4), "m"),
+        ("roll rate after impact", significant(summary["roll_rate_rad_s"], 4), "rad/s"),
+        (
+            "lost energy in torsion",
+            significant(100 * summary["torsion_energy_share"], 3),
+            "% (roll and torsion vibration)",
+        ),
     ]
 
 
