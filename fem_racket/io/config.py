@@ -185,13 +185,6 @@ def load_config(path: str | os.PathLike, *, command_tables: Any = None) -> RunCo
 
 def _check(data: dict[str, Any], source: Path | None, known: set[str]) -> RunConfig:
     allowed_tables = list(CORE_KEYS) + sorted(known)
-    for name in data:
-        table = COMMAND_TABLES.get(name, name)
-        if name not in allowed_tables and table in allowed_tables:  # [export-vtk] for [vtk]
-            raise InputError(
-                f"[{name}] is not a known table: did you mean '{table}'? (fem-racket {name} "
-                f"reads the table [{table}])"
-            )
     reject_unknown(data, allowed_tables, "")
     values: dict[str, dict[str, Any]] = {}
     tables: dict[str, dict[str, Any]] = {}
