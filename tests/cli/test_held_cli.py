@@ -16,6 +16,7 @@ from fem_racket.impact.held.grip import simulate_held
 from fem_racket.impact.held.modal import held_contact
 from fem_racket.impact.held.run import hand_summary
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, contact_peak, grip_peak, vibration_rms
+from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.swing import Swing
 from fem_racket.outputs import json_ready
 
@@ -69,7 +70,9 @@ def test_exact_output_is_the_library_call(capsys, exact, grip):
 
 def test_cvode_output_is_the_library_call(capsys, standard_model):
     hand = GRIPS["firm"]
-    ref = simulate_held(standard_model, hand, position=0.6, speed=30.0, solver="cvode")
+    ref = simulate_held(
+        ImpactProblem.build(standard_model, hand=hand, position=0.6, speed=30.0), solver="cvode"
+    )
     data = run_json(
         capsys, "--grip", "firm", "--solver", "cvode", "--position", "0.6", "--speed", "30"
     )
