@@ -53,8 +53,8 @@ def receptance(
     """The frame's modal shapes at impact points ``positions`` (x/L), one case each."""
     fm = model.modes(modes)
     pos = np.atleast_1d(np.asarray(positions, dtype=float))
-    G = np.column_stack([model.fe.point_vector(p * model.mesh.length) for p in pos])
-    a = (fm.all_shapes.T @ G).T
+    # point by point, so a point's values do not depend on the others asked with it
+    a = np.array([fm.all_shapes.T @ model.fe.point_vector(p * model.mesh.length) for p in pos])
     mb = np.broadcast_to(np.asarray(ball_mass, dtype=float), pos.shape).copy()
     return Receptance(fm.omega, a[:, 2:], a[:, :2], mb)
 
