@@ -9,11 +9,14 @@ shortened, so every message stays one readable line.
 
 from __future__ import annotations
 
+import contextvars
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
 
 __all__ = [
     "AccuracyError",
+    "ChecksPassed",
     "InputError",
     "check_choice",
     "check_elements",
@@ -21,8 +24,10 @@ __all__ = [
     "check_integer",
     "check_positive",
     "check_range",
+    "checks_only",
     "show",
     "show_path",
+    "work_begins",
 ]
 
 #: Longest value shown in a message [characters]; longer ones are shortened with "...".
@@ -180,3 +185,33 @@ def check_elements(
         shown = int(number) if whole else value  # "0", not "0.0", for a count read as a float
         return check_integer(name, shown, minimum, maximum)  # raises, in its words
     return int(number)
+
+
+class ChecksPassed(Exception):
+    """Raised by :func:`work_begins` inside :func:`checks_only`: every check has passed."""
+
+
+_CHECKS_ONLY: contextvars.ContextVar[bool] = contextvars.ContextVar("checks_only", default=False)
+
+
+@contextmanager
+def checks_only() -> Iterator[None]:
+    """Run a command's checks but not its work: :func:`work_begins` raises :class:`ChecksPassed`.
+
+    ``fem-racket config --check`` runs every command this way, so it fails where the command
+    would (everything short of the computation and of any file written or folder made).
+    """
+    token = _CHECKS_ONLY.set(True)
+    try:
+        yield
+    finally:
+        _CHECKS_ONLY.reset(token)
+
+
+def work_begins() -> None:
+    """Mark the point where a command's checks end and its work (computation, files) begins.
+
+    Does nothing, unless inside :func:`checks_only`: then raises :class:`ChecksPassed`.
+    """
+    if _CHECKS_ONLY.get():
+        raise ChecksPassed

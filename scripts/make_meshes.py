@@ -89,8 +89,11 @@ def build_meshes() -> dict[str, FrameMesh]:
 
 
 def same_mesh(a: FrameMesh, b: FrameMesh) -> bool:
-    """Bit-for-bit equal points, EI and rhoA."""
-    return all(np.array_equal(getattr(a, k), getattr(b, k)) for k in ("points", "EI", "rhoA"))
+    """Bit-for-bit equal points, EI and rhoA (and GJ, rhoIp, or both without them)."""
+    if a.has_torsion != b.has_torsion:
+        return False
+    keys = ("points", "EI", "rhoA") + (("GJ", "rhoIp") if a.has_torsion else ())
+    return all(np.array_equal(getattr(a, k), getattr(b, k)) for k in keys)
 
 
 def main(argv: list[str] | None = None) -> int:

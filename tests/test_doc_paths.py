@@ -25,11 +25,13 @@ DOTTED = re.compile(r"(?<![\w.])(fem_racket(?:\.\w+)+)")
 RELATIVE = re.compile(r":(?:mod|func|class|data|attr|meth|exc):`~?(\.[\w.]+)`")
 LINK = re.compile(r"\]\(((?!https?:|#|mailto:)[^)\s#]+)")
 MARKDOWN = ["README.md", "REPRODUCTION.md", "meshes/README.md"]
-#: Stale names in fem_racket/impact/, which the ImpactProblem/Solver change is rewriting (its
-#: owner fixes them there): skipped, not fixed from here.
-IMPACT_PENDING = {
+#: Names left to their owners, skipped here: stale ones in fem_racket/impact/ (the
+#: ImpactProblem/Solver change is rewriting it), and a module the string-bed work names before
+#: it lands (fem_racket/frame/head.py).
+PENDING = {
     ("fem_racket/impact/ode/integrators.py", "fem_racket.system.SEPARATION_EVENTS"),
     ("fem_racket/impact/exact/batch.py", ".reduction.pole_blocks"),
+    ("fem_racket/strings/bed.py", "fem_racket.frame.head"),
 }
 
 
@@ -106,7 +108,7 @@ def test_paths_and_modules_named_in_docstrings_exist():
         rel = str(path.relative_to(ROOT))
         package = _module(path) if rel.startswith("fem_racket/") else None
         found += [(rel, s) for s in stale(path, _docstrings(path), relative_to=package)]
-    assert sorted(set(found) - IMPACT_PENDING) == []
+    assert sorted(set(found) - PENDING) == []
 
 
 def test_the_check_finds_a_stale_name(tmp_path):

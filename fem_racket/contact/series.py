@@ -153,7 +153,12 @@ class SeriesBallString(ContactLaw):
         """Ball compression load / K_b plus the string bed's x with s(x) = load [m]."""
         from scipy.optimize import brentq
 
-        x = brentq(lambda x: float(self.string_force(x)) - load, 0.0, load / self.string_stiffness)
+        def excess(x: float) -> float:
+            return float(self.string_force(x)) - load
+
+        high = load / self.string_stiffness  # s(x) >= k_s x: the root lies below
+        # a cubic term too small to move the root leaves s(high) = load to rounding
+        x = high if excess(high) <= 0.0 else brentq(excess, 0.0, high)
         return float(x + load / self.ball_stiffness)
 
     def contact_time_estimate(self, mass: Any, speed: Any) -> Any:

@@ -27,7 +27,16 @@ import numpy as np
 from fem_racket.frame.fe import FrameFE
 from fem_racket.validation import InputError, check_finite, check_positive
 
-__all__ = ["FIRM_GRIP", "GRIPS", "LOOSE_GRIP", "Hand", "HeldFrame", "held_frame", "held_modes"]
+__all__ = [
+    "FIRM_GRIP",
+    "GRIPS",
+    "LOOSE_GRIP",
+    "Hand",
+    "HeldFrame",
+    "check_grip",
+    "held_frame",
+    "held_modes",
+]
 
 
 @dataclass(frozen=True)
@@ -104,11 +113,18 @@ class HeldFrame:
     n_frame: int
 
 
+def check_grip(hand: Hand, length: float) -> None:
+    """Refuse a grip that reaches beyond a frame ``length`` [m] long."""
+    if hand.grip_end > length:
+        raise InputError(
+            f"grip_end = {hand.grip_end!r} m is not allowed: beyond the frame ({length:g} m)"
+        )
+
+
 def _grip_matrix(fe: FrameFE, hand: Hand) -> np.ndarray:
     a, b = hand.grip_start, hand.grip_end
     p = fe.mesh.points
-    if b > p[-1]:
-        raise InputError(f"grip_end = {b!r} m is not allowed: beyond the frame ({p[-1]:g} m)")
+    check_grip(hand, p[-1])
     xg, wg = np.polynomial.legendre.leggauss(4)
     xs, ws = [], []
     for x0, x1 in zip(p[:-1], p[1:], strict=True):

@@ -13,7 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.display import number, short_repr, span
-from fem_racket.frame.segments import EI_RANGE, Frame, check_ei_factor
+from fem_racket.frame.segments import EI_RANGE, GJ_RANGE, Frame, check_ei_factor
+from fem_racket.frame.torsion_cells import torsion_cells
 from fem_racket.validation import InputError, check_integer, show
 
 __all__ = [
@@ -45,11 +46,16 @@ class FrameMesh:
         Bending rigidity of each cell [N m^2].
     rhoA : ndarray, shape (n,)
         Mass per unit length of each cell [kg/m].
+    GJ, rhoIp : ndarray, shape (n,), optional
+        Torsional rigidity [N m^2] and polar mass moment per length [kg m] of each cell; both
+        or neither (None: no torsion data, impacts on the long axis only).
     """
 
     points: np.ndarray
     EI: np.ndarray
     rhoA: np.ndarray
+    GJ: np.ndarray | None = None
+    rhoIp: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         p = np.asarray(self.points, dtype=float).ravel()
@@ -72,7 +78,16 @@ class FrameMesh:
                 f"mesh points: {kind} between x = {p[i]:g} m and x = {p[i + 1]:g} m; "
                 "nodes must be strictly increasing"
             )
-        for name, arr, unit in (("EI", ei, "N m^2"), ("rhoA", ra, "kg/m")):
+        cells = [("EI", ei, "N m^2"), ("rhoA", ra, "kg/m")]
+        if (self.GJ is None) != (self.rhoIp is None):
+            raise InputError(
+                "mesh cell data GJ and rhoIp: only one given; torsion needs both (or neither)"
+            )
+        if self.GJ is not None:
+            gj = np.asarray(self.GJ, dtype=float).ravel()
+            rip = np.asarray(self.rhoIp, dtype=float).ravel()
+            cells += [("GJ", gj, "N m^2"), ("rhoIp", rip, "kg m")]
+        for name, arr, unit in cells:
             if arr.size != h.size:
                 raise InputError(
                     f"mesh cell data {name}: {arr.size} values for {h.size} cells; "
@@ -85,19 +100,18 @@ class FrameMesh:
                     f"mesh cell data {name} = {float(arr[i])!r} {unit} in cell {i} "
                     f"(x = {p[i]:g}..{p[i + 1]:g} m) is not allowed: must be a finite number > 0"
                 )
-        ratio = ei / ra
-        bad = (ratio < EI_RANGE[0]) | (ratio > EI_RANGE[1])
-        if np.any(bad):
-            i = int(np.argmax(bad))
-            raise InputError(
-                f"mesh cell data EI / rhoA = {float(ratio[i]):.3g} m^4/s^2 in cell {i} "
-                f"(x = {p[i]:g}..{p[i + 1]:g} m) is not allowed: must lie in "
-                f"[{EI_RANGE[0]:g}, {EI_RANGE[1]:g}] m^4/s^2"
-            )
+        _check_ratio("EI / rhoA", ei / ra, EI_RANGE, "m^4/s^2", p)
+        if self.GJ is not None:
+            _check_ratio("GJ / rhoIp", gj / rip, GJ_RANGE, "m^2/s^2", p)
         p = p - p[0]
-        for name, arr in (("points", p), ("EI", ei), ("rhoA", ra)):
+        for name, arr, _ in [("points", p, ""), *cells]:
             arr.setflags(write=False)
             object.__setattr__(self, name, arr)
+
+    @property
+    def has_torsion(self) -> bool:
+        """True when the cells carry GJ and rhoIp."""
+        return self.GJ is not None
 
     @property
     def length(self) -> float:
@@ -123,7 +137,23 @@ class FrameMesh:
     def scaled(self, ei_factor: float = 1.0) -> FrameMesh:
         """The same mesh with every cell's EI multiplied by ``ei_factor``."""
         check_ei_factor(ei_factor, self.EI / self.rhoA)
-        return FrameMesh(self.points, self.EI * ei_factor, self.rhoA)
+        return FrameMesh(self.points, self.EI * ei_factor, self.rhoA, self.GJ, self.rhoIp)
+
+    def with_torsion(self, GJ: np.ndarray | None, rhoIp: np.ndarray | None) -> FrameMesh:
+        """The same mesh with cell data GJ [N m^2] and rhoIp [kg m] (None: without torsion)."""
+        return FrameMesh(self.points, self.EI, self.rhoA, GJ, rhoIp)
+
+
+def _check_ratio(name: str, ratio: np.ndarray, allowed: tuple, unit: str, p: np.ndarray) -> None:
+    """Refuse the first cell whose ``ratio`` lies outside ``allowed``."""
+    bad = (ratio < allowed[0]) | (ratio > allowed[1])
+    if np.any(bad):
+        i = int(np.argmax(bad))
+        raise InputError(
+            f"mesh cell data {name} = {float(ratio[i]):.3g} {unit} in cell {i} "
+            f"(x = {p[i]:g}..{p[i + 1]:g} m) is not allowed: must lie in "
+            f"[{allowed[0]:g}, {allowed[1]:g}] {unit}"
+        )
 
 
 def _check_elements(frame: Frame, elements: int) -> None:
@@ -146,7 +176,8 @@ def _mesh_segments(frame: Frame, elements: int, spacing) -> FrameMesh:
         ra.append(np.full(n, seg.rhoA))
     points = np.concatenate(pts)
     points[-1] = frame.length
-    return FrameMesh(points, np.concatenate(ei), np.concatenate(ra))
+    mesh = FrameMesh(points, np.concatenate(ei), np.concatenate(ra))
+    return mesh if frame.torsion is None else mesh.with_torsion(*torsion_cells(frame, points))
 
 
 def frame_mesh(frame: Frame, elements: int = 20, extra_points: Sequence[float] = ()) -> FrameMesh:
@@ -212,6 +243,7 @@ def graded_mesh(
 def insert_nodes(mesh: FrameMesh, positions: Sequence[float]) -> FrameMesh:
     """Add nodes at ``positions`` (x/L) by splitting cells; existing nodes are kept as they are."""
     points, ei, ra = mesh.points.copy(), mesh.EI.copy(), mesh.rhoA.copy()
+    torsion = None if mesh.GJ is None else [mesh.GJ.copy(), mesh.rhoIp.copy()]
     length = mesh.length
     for s in positions:
         if not 0.0 <= float(s) <= 1.0:
@@ -223,7 +255,9 @@ def insert_nodes(mesh: FrameMesh, positions: Sequence[float]) -> FrameMesh:
         points = np.insert(points, i + 1, x)
         ei = np.insert(ei, i, ei[i])
         ra = np.insert(ra, i, ra[i])
-    return FrameMesh(points, ei, ra)
+        if torsion is not None:
+            torsion = [np.insert(t, i, t[i]) for t in torsion]
+    return FrameMesh(points, ei, ra, *(torsion or (None, None)))
 
 
 def frame_from_mesh(mesh: FrameMesh) -> Frame:
@@ -231,20 +265,22 @@ def frame_from_mesh(mesh: FrameMesh) -> Frame:
 
     Consecutive cells with equal EI and rhoA merge into one
     :class:`~fem_racket.frame.segments.Segment`, so re-meshing the result with :func:`frame_mesh`
-    keeps every section step of ``mesh`` on a node.
+    keeps every section step of ``mesh`` on a node; GJ and rhoIp likewise into torsion segments.
     """
-    from fem_racket.frame.segments import Segment
+    from fem_racket.frame.segments import Segment, TorsionSegment
 
-    p, ei, ra = mesh.points, mesh.EI, mesh.rhoA
-    change = np.flatnonzero((ei[1:] != ei[:-1]) | (ra[1:] != ra[:-1])) + 1
-    starts = np.concatenate([[0], change])
-    ends = np.concatenate([change, [ei.size]])
-    return Frame(
-        tuple(
-            Segment(float(p[e] - p[s]), float(ei[s]), float(ra[s]))
+    def runs(kind, a: np.ndarray, b: np.ndarray) -> tuple:
+        p = mesh.points
+        change = np.flatnonzero((a[1:] != a[:-1]) | (b[1:] != b[:-1])) + 1
+        starts = np.concatenate([[0], change])
+        ends = np.concatenate([change, [a.size]])
+        return tuple(
+            kind(float(p[e] - p[s]), float(a[s]), float(b[s]))
             for s, e in zip(starts, ends, strict=True)
         )
-    )
+
+    torsion = None if mesh.GJ is None else runs(TorsionSegment, mesh.GJ, mesh.rhoIp)
+    return Frame(runs(Segment, mesh.EI, mesh.rhoA), torsion)
 
 
 def _share(total: int, lengths: np.ndarray) -> np.ndarray:

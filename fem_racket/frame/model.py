@@ -8,6 +8,7 @@ without re-assembling or re-solving the eigenproblem.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from fem_racket.display import number, short_repr, span
 from fem_racket.frame.fe import FrameFE
@@ -16,6 +17,9 @@ from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.modal import FreeModes, MassProperties, free_modes, mass_properties
 from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.validation import InputError, check_positive, show
+
+if TYPE_CHECKING:
+    from fem_racket.frame.torsion import TorsionModel
 
 __all__ = ["DEFAULT_MODES", "FrameModel"]
 
@@ -35,6 +39,7 @@ class FrameModel:
 
     fe: FrameFE
     _modes: dict[int, FreeModes] = field(default_factory=dict, repr=False)
+    _torsion: TorsionModel | None = field(default=None, repr=False)
 
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, elements: int = 20) -> FrameModel:
@@ -96,8 +101,19 @@ class FrameModel:
         self._modes[n] = m
         return m
 
+    @property
+    def torsion(self) -> TorsionModel:
+        """The frame in torsion (:mod:`fem_racket.frame.torsion`), built once; refuses a mesh
+        without cell data GJ and rhoIp."""
+        if self._torsion is None:
+            from fem_racket.frame.torsion import TorsionModel
+
+            self._torsion = TorsionModel(self.mesh)
+        return self._torsion
+
     def scaled(self, ei_factor: float) -> FrameModel:
-        """The same frame with every EI multiplied by ``ei_factor`` (modes reused)."""
+        """The same frame with every EI multiplied by ``ei_factor`` (modes reused; torsion
+        unchanged)."""
         f = check_positive("ei_factor", ei_factor)
         fe = FrameFE(self.fe.mesh.scaled(f), self.fe.K_bands * f, self.fe.M_bands)
-        return FrameModel(fe, {n: m.scaled(f) for n, m in self._modes.items()})
+        return FrameModel(fe, {n: m.scaled(f) for n, m in self._modes.items()}, self._torsion)

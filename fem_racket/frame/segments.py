@@ -16,6 +16,7 @@ from fem_racket.validation import InputError, check_positive, check_range, show
 
 __all__ = [
     "EI_RANGE",
+    "GJ_RANGE",
     "EI_RATIO",
     "PAPER_EI1",
     "RHOA1",
@@ -23,8 +24,11 @@ __all__ = [
     "RIGID_EI1",
     "Frame",
     "Segment",
+    "STANDARD_TORSION",
+    "TorsionSegment",
     "check_ei_factor",
     "check_stiffness",
+    "check_torsion",
     "standard_ei1_range",
     "rigid_frame",
     "standard_frame",
@@ -44,6 +48,10 @@ RIGID_EI1 = 9999.0
 #: 7e6 x the paper's EI, 4e-8 at 7e11 x, and at 7e17 x the closed form is ill-conditioned);
 #: 1e-6 is a frame limp as a string (COR -0.778, equal in every path).
 EI_RANGE = (1e-6, 1e9)
+#: Allowed GJ / rhoIp [m^2/s^2] of every torsion segment or cell (the square of the torsion wave
+#: speed; the standard racket's head has 6.6e4, its handle 7.9e5). 1e15 is rigid to ~1e-9 in
+#: e_A off axis; 1e-3 is limp.
+GJ_RANGE = (1e-3, 1e15)
 
 
 @dataclass(frozen=True)
@@ -72,6 +80,31 @@ class Segment:
 
 
 @dataclass(frozen=True)
+class TorsionSegment:
+    """A uniform piece of the frame in torsion about its long axis (St Venant).
+
+    Parameters
+    ----------
+    length : float
+        Segment length [m].
+    GJ : float
+        Torsional rigidity [N m^2].
+    rhoIp : float
+        Polar mass moment per unit length about the long axis [kg m].
+    """
+
+    length: float
+    GJ: float
+    rhoIp: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "length", check_positive("segment length", self.length, "m"))
+        object.__setattr__(self, "GJ", check_positive("GJ", self.GJ, "N m^2"))
+        object.__setattr__(self, "rhoIp", check_positive("rhoIp", self.rhoIp, "kg m"))
+        check_torsion("GJ", self.GJ, self.rhoIp)
+
+
+@dataclass(frozen=True)
 class Frame:
     """A free-free stepped beam: segments listed from the grip end to the tip.
 
@@ -79,9 +112,13 @@ class Frame:
     ----------
     segments : tuple of Segment
         At least one segment.
+    torsion : tuple of TorsionSegment, optional
+        The frame in torsion, grip end first, over the same length (its steps need not be the
+        bending steps); None: no torsion data (impacts on the long axis only).
     """
 
     segments: tuple[Segment, ...]
+    torsion: tuple[TorsionSegment, ...] | None = None
 
     def __post_init__(self) -> None:
         segments = tuple(self.segments)
@@ -91,6 +128,20 @@ class Frame:
             if not isinstance(seg, Segment):
                 raise InputError(f"segments item {show(seg)} is not allowed: must be a Segment")
         object.__setattr__(self, "segments", segments)
+        if self.torsion is not None:
+            torsion = tuple(self.torsion)
+            for seg in torsion:
+                if not isinstance(seg, TorsionSegment):
+                    raise InputError(
+                        f"torsion item {show(seg)} is not allowed: must be a TorsionSegment"
+                    )
+            total = float(sum(s.length for s in torsion))
+            if not torsion or abs(total - self.length) > 1e-9 * self.length:
+                raise InputError(
+                    f"torsion segments' length = {total:g} m is not allowed: must equal the "
+                    f"frame's {self.length:g} m"
+                )
+            object.__setattr__(self, "torsion", torsion)
 
     @property
     def length(self) -> float:
@@ -103,13 +154,25 @@ class Frame:
         return np.concatenate([[0.0], np.cumsum([s.length for s in self.segments])])
 
     def scaled(self, ei_factor: float = 1.0, rhoa_factor: float = 1.0) -> Frame:
-        """Return a frame with every segment's EI and rhoA multiplied by the given factors."""
+        """Return a frame with every segment's EI and rhoA (and rhoIp) multiplied by the given
+        factors."""
         check_positive("ei_factor", ei_factor)
         check_positive("rhoa_factor", rhoa_factor)
         check_ei_factor(ei_factor, [s.EI / s.rhoA for s in self.segments])
-        return Frame(
-            tuple(replace(s, EI=s.EI * ei_factor, rhoA=s.rhoA * rhoa_factor) for s in self.segments)
+        seg = tuple(
+            replace(s, EI=s.EI * ei_factor, rhoA=s.rhoA * rhoa_factor) for s in self.segments
         )
+        torsion = None
+        if self.torsion is not None:  # the same material, denser: rhoIp scales as rhoA
+            torsion = tuple(replace(s, rhoIp=s.rhoIp * rhoa_factor) for s in self.torsion)
+        return Frame(seg, torsion)
+
+    @property
+    def torsion_steps(self) -> np.ndarray:
+        """Coordinates of the torsion segments' boundaries including both ends [m]."""
+        if self.torsion is None:
+            raise InputError("torsion: this frame has none (no GJ, rhoIp)")
+        return np.concatenate([[0.0], np.cumsum([s.length for s in self.torsion])])
 
 
 def check_stiffness(name: str, ei: float, rhoa: float) -> float:
@@ -122,6 +185,18 @@ def check_stiffness(name: str, ei: float, rhoa: float) -> float:
             "m^4/s^2)"
         )
     return ei
+
+
+def check_torsion(name: str, gj: float, rhoip: float) -> float:
+    """Return ``gj`` [N m^2] if GJ / rhoIp lies in GJ_RANGE, else raise naming ``name``."""
+    low, high = GJ_RANGE[0] * rhoip, GJ_RANGE[1] * rhoip
+    if not low <= gj <= high:
+        raise InputError(
+            f"{name} = {show(gj)} N m^2 is not allowed with rhoIp = {rhoip:g} kg m: must lie in "
+            f"[{low:.3g}, {high:.3g}] N m^2 (GJ / rhoIp in [{GJ_RANGE[0]:g}, {GJ_RANGE[1]:g}] "
+            "m^2/s^2)"
+        )
+    return gj
 
 
 def check_ei_factor(ei_factor: float, ei_per_rhoa: Sequence[float] | np.ndarray) -> float:
@@ -145,6 +220,24 @@ def standard_ei1_range() -> tuple[float, float]:
     )
 
 
+#: The standard racket in torsion: grip (handle), throat, head ring. The paper gives no torsion
+#: data; these are assumptions chosen so that the polar moment is 17.5 kg cm^2 (measured
+#: twistweights 15.2 and 19.7 kg cm^2: Rogowski et al. 2014, PLoS ONE 9(8) e104785) and the first
+#: free-free torsion frequency 380 Hz (rackets: typically 300-450 Hz, DESIGN section 10), with
+#: the polar mass in the head: rhoIp = rhoA r^2 with r = 14 mm for the handle (0.696 kg/m); the
+#: throat's arms spread from the shaft to the head (mean rhoIp 1.0e-3 kg m); the head ring (the
+#: 0.34 m from 0.5 L to the tip) carries the rest, 4.66e-3 kg m, about its mass (0.458 kg/m,
+#: 0.156 kg) at r ~ 0.1 m, i.e. a ring ~0.25 m wide. GJ of the handle: a carbon tube with
+#: G/E = 0.385 (quasi-isotropic, nu = 0.3) has GJ = 2 (G/E) EI = 0.77 x 146 N m^2. Throat and
+#: head: an equivalent GJ of 390 N m^2 (the ring's sides bending out of plane, joined by the
+#: strings), which puts the first free-free torsion mode at 380 Hz (exact: 380.3 Hz).
+STANDARD_TORSION = (
+    TorsionSegment(0.204, 112.0, 1.4e-4),
+    TorsionSegment(0.136, 390.0, 1.0e-3),
+    TorsionSegment(0.340, 390.0, 4.66e-3),
+)
+
+
 def standard_frame(ei1: float = PAPER_EI1, ei2: float | None = None) -> Frame:
     """The paper's stepped beam (section 2.2): L = 680 mm, step at 204 mm from the grip.
 
@@ -158,7 +251,8 @@ def standard_frame(ei1: float = PAPER_EI1, ei2: float | None = None) -> Frame:
     Returns
     -------
     Frame
-        Grip side 0.204 m with rhoA1 = 0.696 kg/m, top side 0.476 m with rhoA2 = 0.458 kg/m.
+        Grip side 0.204 m with rhoA1 = 0.696 kg/m, top side 0.476 m with rhoA2 = 0.458 kg/m;
+        in torsion :data:`STANDARD_TORSION` (assumptions, see there).
     """
     if ei2 is None:
         ei1 = check_range("ei1", ei1, *standard_ei1_range(), unit="N m^2")
@@ -166,7 +260,7 @@ def standard_frame(ei1: float = PAPER_EI1, ei2: float | None = None) -> Frame:
     else:
         ei1 = check_stiffness("ei1", check_positive("ei1", ei1, "N m^2"), RHOA1)
         ei2 = check_stiffness("ei2", check_positive("ei2", ei2, "N m^2"), RHOA2)
-    return Frame((Segment(0.204, ei1, RHOA1), Segment(0.476, ei2, RHOA2)))
+    return Frame((Segment(0.204, ei1, RHOA1), Segment(0.476, ei2, RHOA2)), STANDARD_TORSION)
 
 
 def rigid_frame() -> Frame:

@@ -29,6 +29,7 @@ from fem_racket.impact.general.cubic_force import ORDER, STENCILS, moments, step
 from fem_racket.impact.general.integrator import GeneralOutcome, solve_general
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.ode.law_cvode import solve_law_cvode
+from fem_racket.impact.offaxis import RIGID_OFFAXIS, combined_modes, combined_point_vector
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.system import output_times
 from fem_racket.validation import AccuracyError, InputError, check_choice, check_finite
@@ -48,18 +49,26 @@ LAW_SOLVERS = ("general", "cvode")
 
 
 def receptance(
-    model: FrameModel, positions: Any, ball_mass: Any, modes: int | None = None
+    model: FrameModel, positions: Any, ball_mass: Any, modes: int | None = None, offset: float = 0.0
 ) -> Receptance:
-    """The frame's modal shapes at impact points ``positions`` (x/L), one case each."""
-    fm = model.modes(modes)
+    """The frame's modal shapes at impact points ``positions`` (x/L), one case each; off axis
+    (``offset`` [m]) bending and torsion, three rigid modes (:mod:`fem_racket.impact.offaxis`)."""
     pos = np.atleast_1d(np.asarray(positions, dtype=float))
+    mb = np.broadcast_to(np.asarray(ball_mass, dtype=float), pos.shape).copy()
+    if offset != 0.0:  # point by point, as below
+        cm = combined_modes(model, modes)
+        L = model.mesh.length
+        a = np.array([cm.all_shapes.T @ combined_point_vector(model, p * L, offset) for p in pos])
+        return Receptance(cm.omega, a[:, RIGID_OFFAXIS:], a[:, :RIGID_OFFAXIS], mb)
+    fm = model.modes(modes)
     # point by point, so a point's values do not depend on the others asked with it
     a = np.array([fm.all_shapes.T @ model.fe.point_vector(p * model.mesh.length) for p in pos])
-    mb = np.broadcast_to(np.asarray(ball_mass, dtype=float), pos.shape).copy()
     return Receptance(fm.omega, a[:, 2:], a[:, :2], mb)
 
 
-def modal_velocity(model: FrameModel, frame_velocity: Any, modes: int | None = None) -> np.ndarray:
+def modal_velocity(
+    model: FrameModel, frame_velocity: Any, modes: int | None = None, offset: float = 0.0
+) -> np.ndarray:
     """Initial modal velocities [sqrt(kg) m/s] of the frame, rigid modes first.
 
     Parameters
@@ -68,6 +77,7 @@ def modal_velocity(model: FrameModel, frame_velocity: Any, modes: int | None = N
         ``(v, omega)``: the racket moving rigidly, its centre of gravity at v [m/s] and turning at
         omega [rad/s] about it (positive v along the ball's travel, positive omega turning the tip
         that way); or the modal velocities themselves, 2 rigid + the flexible modes kept.
+        Off axis (``offset`` != 0) only ``(v, omega)``: the modes are bending and torsion.
     """
     fm = model.modes(modes)
     n = 2 + fm.omega.size
@@ -76,7 +86,15 @@ def modal_velocity(model: FrameModel, frame_velocity: Any, modes: int | None = N
         v = check_finite("frame_velocity v", arr[0], "m/s")
         w = check_finite("frame_velocity omega", arr[1], "rad/s")
         qd = model.fe.rigid_motion(v, w, about=fm.props.cg)
+        if offset != 0.0:  # the rigid field lies in the bending rows of the combined modes
+            shapes = combined_modes(model, modes).all_shapes[: model.fe.ndof]
+            return shapes.T @ (model.fe.M @ qd)
         return fm.all_shapes.T @ (model.fe.M @ qd)
+    if offset != 0.0:
+        raise InputError(
+            f"frame_velocity of shape {arr.shape} is not allowed with offset = {offset!r} m: "
+            "must be (v [m/s], omega [rad/s])"
+        )
     if arr.shape != (n,) or not np.all(np.isfinite(arr)):
         raise InputError(
             f"frame_velocity of shape {arr.shape} is not allowed: must be (v [m/s], omega "
@@ -169,9 +187,10 @@ def run_law(
     steps: int | None,
     beta: float | None,
     t_max: float | None,
+    offset: float = 0.0,
 ) -> GeneralOutcome:
     """:func:`solve_general` for one impact on ``model`` (all its modes available)."""
-    rec = receptance(model, position, ball_mass, None)
+    rec = receptance(model, position, ball_mass, None, offset)
     fv = None if frame_velocity is None else frame_velocity[None, :]
     try:
         return solve_general(
@@ -251,22 +270,29 @@ def solve_law_impact(
     tolerance: float | None = DEFAULT_TOLERANCE,
     steps: int | None = None,
     beta: float | None = None,
+    offset: float = 0.0,
 ) -> LawRun:
     """One impact of the ball at ``position`` (x/L) and ``speed`` [m/s] under ``law``.
 
     ``solver``: ``"general"`` (:func:`~fem_racket.impact.general.integrator.solve_general`, all
     modes available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
     given) or ``"cvode"`` (:func:`solve_law_cvode`, all modes, ``rtol``/``atol``).
-    ``frame_velocity``: see :func:`modal_velocity`.
+    ``frame_velocity``: see :func:`modal_velocity`. ``offset`` [m]: off the long axis the frame
+    also twists (:mod:`fem_racket.impact.offaxis`).
     """
     check_choice("solver", solver, LAW_SOLVERS)
-    fm = model.modes(None)
-    a = fm.all_shapes.T @ model.fe.point_vector(position * model.mesh.length)
-    fv = None if frame_velocity is None else modal_velocity(model, frame_velocity)
+    x_i = position * model.mesh.length
+    if offset != 0.0:
+        cm = combined_modes(model, None)
+        all_omega, a = cm.all_omega, cm.all_shapes.T @ combined_point_vector(model, x_i, offset)
+    else:
+        fm = model.modes(None)
+        all_omega, a = fm.all_omega, fm.all_shapes.T @ model.fe.point_vector(x_i)
+    fv = None if frame_velocity is None else modal_velocity(model, frame_velocity, None, offset)
     if solver == "cvode":
         tr = solve_law_cvode(
             law,
-            fm.all_omega,
+            all_omega,
             a,
             ball_mass,
             speed,
@@ -296,10 +322,11 @@ def solve_law_impact(
         steps=steps,
         beta=beta,
         t_max=t_max,
+        offset=offset,
     )
     tc = float(out.contact_time[0])
     t = output_times(output_step, tc)
-    x, v = law_histories(out, fm.all_omega, a, ball_mass, speed, fv, t)
+    x, v = law_histories(out, all_omega, a, ball_mass, speed, fv, t)
     z = np.zeros_like(t)
     if law.state == "memory":
         z = _memory_at(out, t, x[:, 0] - x[:, 1:] @ a, v[:, 0] - v[:, 1:] @ a)

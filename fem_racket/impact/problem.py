@@ -4,7 +4,9 @@ An impact problem states everything about one impact that does not depend on how
 
 - the structure: a free frame (:class:`~fem_racket.frame.model.FrameModel`) or a frame held in a
   hand (:class:`HeldRacket`);
-- the impact point x/L and the ball's speed V_B0 [m/s] towards the racket (:class:`Impact`);
+- the impact point x/L and the ball's speed V_B0 [m/s] towards the racket (:class:`Impact`),
+  and the point's lateral offset from the long axis [m] (off axis the frame also twists,
+  :mod:`fem_racket.impact.offaxis`; checked against the head outline);
 - the ball (:class:`~fem_racket.contact.linear.Ball`) and the contact law: the paper's linear
   compound ball/string spring (``law=None``; K_CB from ``kcb`` or the closing speed, ζ from
   ``zeta`` or the clamped COR 0.83, eqs 1-4) or any :class:`~fem_racket.contact.law.ContactLaw`;
@@ -28,15 +30,17 @@ from typing import Any
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import check_linear_options, get_law
-from fem_racket.frame.hand import Hand
+from fem_racket.frame.hand import Hand, check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.offaxis import check_offsets
 from fem_racket.impact.strung import check_strung_problem, kawazoe_ball
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import (
     InputError,
     check_choice,
+    check_finite,
     check_positive,
     check_range,
     show,
@@ -128,6 +132,10 @@ class ImpactProblem:
     strings : StringBed or None
         The string bed; None: the paper's lumped K_CB (unchanged). With a bed the racket is
         free and at rest, K_CB and zeta do not apply, and ``law`` is the ball's own law.
+    offset : float
+        Lateral offset of the impact point from the long axis [m] (0: on it, the paper's). The
+        point must lie on the head outline (:class:`~fem_racket.frame.head.HeadOutline`) and
+        the frame needs torsion data (cell data GJ and rhoIp); not with a hand.
     """
 
     structure: FrameModel | HeldRacket
@@ -140,6 +148,7 @@ class ImpactProblem:
     swing: Swing | None = None
     frame_velocity: Any = None
     strings: StringBed | None = None
+    offset: float = 0.0
 
     def __post_init__(self) -> None:
         if not isinstance(self.structure, FrameModel | HeldRacket):
@@ -157,10 +166,25 @@ class ImpactProblem:
             )
         if self.swing is not None and self.frame_velocity is not None:
             raise InputError("swing and frame_velocity cannot be combined: give one")
+        if self.swing is not None:
+            _ = self.closing_speed  # ball and strings must close, under any law
         if self.held:
             self._check_held()
         if self.strings is not None:
             check_strung_problem(self)
+        object.__setattr__(self, "offset", check_finite("offset", self.offset, "m"))
+        if self.offset != 0.0:
+            if self.held:
+                raise InputError(
+                    f"offset = {show(self.offset)} m is not allowed with a hand: the held racket "
+                    "is struck on its long axis (it does not twist)"
+                )
+            if self.strings is not None:
+                raise InputError(
+                    f"offset = {show(self.offset)} m is not allowed with a string bed: the "
+                    "strung racket is struck on its long axis"
+                )
+            check_offsets(self.model, self.impact.position, self.offset)
 
     def ball_law(self) -> ContactLaw:
         """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""
@@ -194,6 +218,7 @@ class ImpactProblem:
                 f"separation = {show(self.separation)} is not allowed with a hand: the held "
                 "racket ends contact by the spring deflection (the paper's criterion)"
             )
+        check_grip(self.structure.hand, self.model.mesh.length)
 
     @classmethod
     def build(cls, frame: Any = None, *, elements: int | None = None, **fields: Any):
@@ -286,6 +311,8 @@ class ImpactProblem:
         )
         return (
             f"ImpactProblem({where} frame, {self.model.mesh.n_elements} elements; "
-            f"x = {self.impact.position:.4g} L, {self.impact.speed:.4g} m/s; "
+            f"x = {self.impact.position:.4g} L, "
+            + (f"y = {self.offset:.4g} m, " if self.offset else "")
+            + f"{self.impact.speed:.4g} m/s; "
             f"ball {self.ball.mass:.4g} kg; law {law}; {motion}{bed})"
         )

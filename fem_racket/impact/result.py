@@ -103,6 +103,12 @@ class ImpactResult:
         return impact_dataset(self, x)
 
     swing: Swing | None = None
+    #: Lateral offset of the impact point from the long axis [m]; off axis (!= 0) the twist
+    #: histories on the torsion DOFs [rad], [rad/s] (:mod:`fem_racket.impact.twist_result`),
+    #: None on the axis.
+    offset: float = 0.0
+    twist: np.ndarray | None = None
+    twist_rate: np.ndarray | None = None
 
     # -- scalar outcomes -------------------------------------------------------------------
     @property
@@ -156,13 +162,21 @@ class ImpactResult:
 
     @property
     def impact_point_displacement(self) -> np.ndarray:
-        """Frame deflection at the impact point w(x_i, t) [m]."""
-        return self.frame_displacement @ self.model.fe.point_vector(self.x_impact)
+        """Frame displacement at the impact point w(x_i, t) (+ y theta(x_i, t) off axis) [m]."""
+        w = self.frame_displacement @ self.model.fe.point_vector(self.x_impact)
+        return w if self.twist is None else w + self.twist @ self._twist_point
 
     @property
     def impact_point_velocity(self) -> np.ndarray:
         """Frame velocity at the impact point [m/s]."""
-        return self.frame_velocity @ self.model.fe.point_vector(self.x_impact)
+        w = self.frame_velocity @ self.model.fe.point_vector(self.x_impact)
+        return w if self.twist is None else w + self.twist_rate @ self._twist_point
+
+    @property
+    def _twist_point(self) -> np.ndarray:
+        """y g_t(x_i): the face point's displacement per torsion DOF [m/rad]."""
+        g = self.model.torsion.point_matrix(np.array([self.x_impact]))[0]
+        return self.offset * g
 
     @property
     def deflection(self) -> np.ndarray:
@@ -190,7 +204,8 @@ class ImpactResult:
         return np.asarray((R @ q.T).T)
 
     def energies(self) -> dict[str, np.ndarray]:
-        """Energy histories [J]: ball kinetic, frame kinetic, frame strain, spring, dissipated.
+        """Energy histories [J]: ball kinetic, frame kinetic, frame strain, spring, dissipated
+        (off axis also torsion kinetic and torsion strain).
 
         ``dissipated`` is the dashpot's work int C_CB delta'^2 dt (cumulative Simpson on the
         output times, so its accuracy follows ``output_step``); their sum ``total`` stays at
@@ -215,6 +230,10 @@ class ImpactResult:
             # (3e-3 of the strain energy at 5000 elements).
             "frame_strain": 0.5 * strain_energy(fe, q.T),
         }
+        if self.twist is not None:
+            from fem_racket.impact.twist_result import torsion_energies
+
+            out.update(torsion_energies(self))
         if self.law is not None:
             out["contact"] = cumulative_simpson(self.force * rate, x=self.t, initial=0.0)
         else:
@@ -243,7 +262,15 @@ class ImpactResult:
             "peak_force_n": self.peak_force,
             **self.settings(),
             **swing_summary(self.model, self.swing, self.racket_motion_after()),
+            **self._twist_summary(),
         }
+
+    def _twist_summary(self) -> dict[str, Any]:
+        if self.twist is None:
+            return {}
+        from fem_racket.impact.twist_result import twist_summary
+
+        return twist_summary(self)
 
     def settings(self) -> dict[str, Any]:
         """What the run used, not what was asked: the solver that ran and its tolerances, the

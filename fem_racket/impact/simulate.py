@@ -34,6 +34,7 @@ PROBLEM_OPTIONS = (
     "separation",
     "swing",
     "frame_velocity",
+    "offset",
     "hand",
     "shock_window",
     "strings",
@@ -56,7 +57,9 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
         spring-dashpot when None), ``kcb`` [N/m] and ``zeta`` (the paper's law only; K_CB from
         the closing speed and zeta 0.0592 by default), ``separation`` ("displacement", the
         paper's, or "force"; the paper's law only), ``swing`` (a Swing) or ``frame_velocity``
-        ((v [m/s], omega [rad/s]) of the centre of gravity, or the modes' velocities), ``hand``
+        ((v [m/s], omega [rad/s]) of the centre of gravity, or the modes' velocities),
+        ``offset`` (lateral offset of the impact point from the long axis [m], on the head; the
+        frame then also twists; 0 by default), ``hand``
         (a Hand: the racket held on its grip; returns a HeldRun) and ``shock_window`` [s],
         ``strings`` (a StringBed: the string bed replaces the lumped K_CB, ``law`` is the
         ball's own; returns a StrungImpact), ``elements`` (cells when meshing a Frame; 20).

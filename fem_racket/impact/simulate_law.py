@@ -11,10 +11,12 @@ from __future__ import annotations
 
 from fem_racket.impact.law_impact import solve_law_impact
 from fem_racket.impact.ode.integrators import check_solver_settings
+from fem_racket.impact.offaxis import RIGID_OFFAXIS, combined_modes
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.settings import Settings
 from fem_racket.impact.simulate_linear import RIGID_MODES
+from fem_racket.impact.system import check_output_count
 
 __all__ = ["simulate_law"]
 
@@ -33,6 +35,10 @@ def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> Imp
     s = settings
     if solver == "cvode":  # the general integrator has no tolerances
         check_solver_settings(solver, "modal", model.mesh.n_elements, s.rtol, s.atol)
+    if s.output_step is not None:  # the histories' size, from the law's contact estimate
+        t_est = float(law.contact_time_estimate(problem.ball.mass, problem.closing_speed))
+        span, what = (s.t_max, "t_max") if s.t_max is not None else (2 * t_est, "twice the law's")
+        check_output_count(s.output_step, span, f"{what} {span:.3g} s of contact")
     run = solve_law_impact(
         law,
         model,
@@ -46,8 +52,16 @@ def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> Imp
         rtol=s.rtol,
         atol=s.atol,
         tolerance=s.tolerance,
+        offset=problem.offset,
     )
-    shapes = model.modes(None).all_shapes
+    n_rigid, shapes = RIGID_MODES, model.modes(None).all_shapes
+    if problem.offset != 0.0:  # bending then torsion DOFs (fem_racket.impact.offaxis)
+        n_rigid, shapes = RIGID_OFFAXIS, combined_modes(model, None).all_shapes
+    q, qd = run.modal_displacement @ shapes.T, run.modal_velocity @ shapes.T
+    nb = model.fe.ndof
+    twist = {}
+    if problem.offset != 0.0:
+        twist = {"offset": problem.offset, "twist": q[:, nb:], "twist_rate": qd[:, nb:]}
     return ImpactResult(
         model=model,
         impact=problem.impact,
@@ -56,12 +70,12 @@ def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> Imp
         solver=solver,
         separation=law.end,
         basis="modal",
-        n_modes=shapes.shape[1] - RIGID_MODES,
+        n_modes=shapes.shape[1] - n_rigid,
         t=run.t,
         ball_displacement=run.ball_displacement,
         ball_velocity=run.ball_velocity,
-        frame_displacement=run.modal_displacement @ shapes.T,
-        frame_velocity=run.modal_velocity @ shapes.T,
+        frame_displacement=q[:, :nb],
+        frame_velocity=qd[:, :nb],
         peak_force=run.peak_force,
         law=law if contact is None else None,
         law_state=run.state if contact is None else None,
@@ -69,4 +83,5 @@ def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> Imp
         rtol=s.rtol if solver == "cvode" else None,
         atol=s.atol if solver == "cvode" else None,
         tolerance=s.tolerance if solver == "general" else None,
+        **twist,
     )

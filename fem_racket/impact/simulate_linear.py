@@ -17,19 +17,24 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.exact.single import engine_impact
 from fem_racket.impact.ode.integrators import check_solver_settings, get_solver
+from fem_racket.impact.offaxis import RIGID_OFFAXIS, combined_modes, combined_point_vector
 from fem_racket.impact.problem import Impact, ImpactProblem
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.settings import BASES, Settings
 from fem_racket.impact.swing import add_swing, swing_setup
-from fem_racket.impact.system import CoupledSystem, modal_system, physical_system
+from fem_racket.impact.system import (
+    MAX_OUTPUT_TIMES,
+    CoupledSystem,
+    check_output_count,
+    modal_system,
+    physical_system,
+)
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BASES", "build_system", "simulate_linear"]
 
 #: Rigid-body modes of the free frame (translation, rotation) in the modal basis.
 RIGID_MODES = 2
-#: Largest number of output times a simulation may be asked for.
-MAX_OUTPUT_TIMES = 1e6
 
 
 def build_system(
@@ -40,12 +45,24 @@ def build_system(
     *,
     basis: str = "modal",
     modes: int | None = DEFAULT_MODES,
+    offset: float = 0.0,
 ) -> CoupledSystem:
-    """The coupled ball + frame ODE for one impact."""
+    """The coupled ball + frame ODE for one impact (``offset`` [m] off the long axis: bending
+    and torsion modes, :mod:`fem_racket.impact.offaxis`)."""
     check_choice("basis", basis, BASES)
     fe = model.fe
     g = fe.point_vector(impact.position * fe.mesh.length)
     ccb = contact.damping(ball.mass)
+    if offset != 0.0:
+        if basis != "modal":
+            raise InputError(
+                f"basis = {show(basis)} is not allowed with offset = {offset!r} m: must be 'modal'"
+            )
+        cm = combined_modes(model, modes)
+        g = combined_point_vector(model, impact.position * fe.mesh.length, offset)
+        return modal_system(
+            cm.all_omega, cm.all_shapes, g, ball.mass, contact.stiffness, ccb, impact.speed
+        )
     if basis == "modal":
         fm = model.modes(modes)
         return modal_system(
@@ -71,11 +88,13 @@ def _check_output_count(
             f"t_max = {show(t_max)} s is not allowed: {limit}, so t_max <= "
             f"{MAX_OUTPUT_TIMES * output_step:.3g} s (or a larger output_step)"
         )
-    what = f"kcb = {kcb!r} N/m" if kcb is not None else f"ball_mass = {ball_mass!r} kg"
-    raise InputError(
-        f"{what} is not allowed with {limit}: the contact would last about {t_est:.3g} s "
-        "(eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none"
-    )
+    if kcb is not None:
+        raise InputError(
+            f"kcb = {kcb!r} N/m is not allowed with {limit}: the contact would last about "
+            f"{t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none"
+        )
+    what = f"twice the contact's {t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB), m_B = {ball_mass!r} kg)"
+    check_output_count(output_step, span, what)
 
 
 def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> ImpactResult:
@@ -99,12 +118,15 @@ def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> 
             modes=s.modes,
             tolerance=s.tolerance,
             t_max=s.t_max,
+            offset=problem.offset,
         )
         if swing is not None:  # the stationary impact at the closing speed, plus the swing
             traj = add_swing(traj, frame_map, model, swing, v_r)
         run = _Run(solver, separation, s.basis, kept, traj, frame_map)
         return _result(problem, contact, run, tolerance=s.tolerance)
-    system = build_system(model, impact, ball, contact, basis=s.basis, modes=s.modes)
+    system = build_system(
+        model, impact, ball, contact, basis=s.basis, modes=s.modes, offset=problem.offset
+    )
     to_lab = None
     if swing is not None:
         system, to_lab = swing_setup(system, model, swing, x_i, direct=solver != "exact")
@@ -122,7 +144,8 @@ def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> 
     )
     if to_lab is not None:
         traj = to_lab(traj)
-    n_modes = (system.size - 1 - RIGID_MODES) if s.basis == "modal" else None
+    n_rigid = RIGID_MODES if problem.offset == 0.0 else RIGID_OFFAXIS
+    n_modes = (system.size - 1 - n_rigid) if s.basis == "modal" else None
     run = _Run(solver, separation, s.basis, n_modes, traj, system.frame_map)
     tols = {} if solver == "exact" else {"rtol": s.rtol, "atol": s.atol}
     return _result(problem, contact, run, **tols)
@@ -156,6 +179,11 @@ def _result(
         q, qd = traj.x[:, 1:], traj.v[:, 1:]
     else:
         q, qd = traj.x[:, 1:] @ frame_map.T, traj.v[:, 1:] @ frame_map.T
+    nb = problem.model.fe.ndof  # off axis the torsion DOFs follow the Hermite ones
+    twist = {}
+    if problem.offset != 0.0:
+        twist = {"offset": problem.offset, "twist": q[:, nb:], "twist_rate": qd[:, nb:]}
+    q, qd = q[:, :nb], qd[:, :nb]
     return ImpactResult(
         model=problem.model,
         impact=problem.impact,
@@ -175,4 +203,5 @@ def _result(
         atol=atol,
         tolerance=tolerance,
         swing=problem.swing,
+        **twist,
     )

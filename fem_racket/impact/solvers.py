@@ -33,7 +33,7 @@ from fem_racket.impact.settings import DEFAULTS, SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
 from fem_racket.impact.simulate_linear import simulate_linear
 from fem_racket.impact.strung_solve import check_strung, solve_strung
-from fem_racket.validation import InputError, check_choice, show
+from fem_racket.validation import InputError, check_choice, show, work_begins
 
 __all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "make_solver"]
 
@@ -103,6 +103,7 @@ class Solver:
         """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
         StrungImpact with a string bed)."""
         self.check(problem)
+        work_begins()  # fem-racket config --check stops here: every check has passed
         return self._solve(problem)
 
     def solve_many(self, problems: Iterable[ImpactProblem]) -> list[Any]:
@@ -110,6 +111,7 @@ class Solver:
         problems = list(problems)
         for p in problems:
             self.check(p)
+        work_begins()
         return [self._solve(p) for p in problems]
 
     # -- helpers ------------------------------------------------------------------------------

@@ -179,8 +179,9 @@ def _frame_velocity(frame_map: np.ndarray | None, model: FrameModel, swing: Swin
     qd = fe.rigid_motion(-swing.velocity, -swing.omega)
     if frame_map is None:
         return qd
-    # Mass-normalised modes: eta' = Phi^T M q' (the rigid field lies in the rigid modes).
-    return frame_map.T @ fe.mass_product(qd)
+    # Mass-normalised modes: eta' = Phi^T M q' (the rigid field lies in the rigid modes; off
+    # axis the torsion DOFs follow the Hermite ones and the swing does not twist).
+    return frame_map[: fe.ndof].T @ fe.mass_product(qd)
 
 
 def add_swing(

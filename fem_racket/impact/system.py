@@ -29,17 +29,21 @@ if TYPE_CHECKING:
     import scipy.sparse as sp
 
 __all__ = [
+    "MAX_OUTPUT_TIMES",
     "SEPARATION_EVENTS",
     "CoupledSystem",
     "NoSeparationError",
     "Trajectory",
     "modal_system",
     "no_separation",
+    "check_output_count",
     "output_times",
     "physical_system",
 ]
 
 SEPARATION_EVENTS = ("displacement", "force")
+#: Largest number of output times a simulation may be asked for.
+MAX_OUTPUT_TIMES = 1e6
 
 
 class NoSeparationError(InputError):
@@ -54,13 +58,25 @@ def no_separation(t_max: float) -> NoSeparationError:
     )
 
 
+def check_output_count(step: float | None, span: float, what: str) -> None:
+    """Refuse ``step`` [s] giving more than :data:`MAX_OUTPUT_TIMES` output times over ``span``
+    [s] (``what`` says what the span is), before anything that size is allocated."""
+    if step is not None and span / step > MAX_OUTPUT_TIMES:
+        raise InputError(
+            f"output_step = {step!r} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} output "
+            f"times over {what}, so output_step >= {span / MAX_OUTPUT_TIMES:.3g} s"
+        )
+
+
 def output_times(step: float | None, t_end: float) -> np.ndarray:
     """Uniform times 0, step, 2 step, ... below ``t_end``, then ``t_end`` itself [s].
 
-    With ``step`` None only the two end points are returned.
+    With ``step`` None only the two end points are returned; more than
+    :data:`MAX_OUTPUT_TIMES` are refused (:func:`check_output_count`).
     """
     if step is None:
         return np.array([0.0, t_end])
+    check_output_count(step, t_end, f"the contact's {t_end:.3g} s")
     t = np.arange(0.0, t_end, step)
     if t_end - t[-1] < 1e-9 * step:
         t = t[:-1]

@@ -103,7 +103,8 @@ class RunConfig:
         return self.source.parent / p
 
     def simulate_kwargs(self) -> dict[str, Any]:
-        """Keyword arguments of :func:`fem_racket.simulate` that the file sets."""
+        """Keyword arguments of :func:`fem_racket.simulate` that the core tables set (no frame,
+        swing or hand: :meth:`simulate` runs the whole file)."""
         d = self.defaults()
         names = ("position", "speed", "ball_mass", "kcb", "zeta", "elements", "solver")
         names += ("separation", "basis", "modes", "rtol", "atol", "t_max")
@@ -113,6 +114,22 @@ class RunConfig:
 
             out["law"] = get_law(d["law"], **law_parameters(d))
         return out
+
+    def simulate(self, *, histories: bool | None = None) -> Any:
+        """The impact the file describes, every table applied: the result of
+        ``fem-racket simulate --config FILE`` (an ImpactResult, or a HeldRun with a ``[hand]``);
+        see :func:`fem_racket.io.config_run.simulate_file`."""
+        from fem_racket.io.config_run import simulate_file
+
+        return simulate_file(self, histories=histories)
+
+    def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
+        """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
+        ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_run.sweep_file`.
+        ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`)."""
+        from fem_racket.io.config_run import sweep_file
+
+        return sweep_file(self, backend=backend, workers=workers)
 
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None

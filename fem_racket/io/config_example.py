@@ -30,8 +30,9 @@ elements = 20                # cubic Hermite beam elements (20 in the paper)
 #     {{ length_m = 0.204, ei_n_m2 = 146.0, rhoa_kg_m = 0.696 }},
 #     {{ length_m = 0.476, ei_n_m2 = 128.48, rhoa_kg_m = 0.458 }},
 # ]
-# or a mesh file with cell data EI [N m^2] and rhoA [kg/m], relative to this file:
-# mesh = "meshes/standard.vtu"
+# or a mesh file with cell data EI [N m^2] and rhoA [kg/m], relative to this file (this one is
+# in the repository's meshes/ folder, for a run file at its root):
+# mesh = "meshes/standard_racket.vtu"
 # Lead tape (as --add-mass PLACE:GRAMS): a place 12, 2/10, 3/9, 4/8, throat, handle, butt
 # (3/9, 2/10, 4/8: half on each side) or a distance from the butt in m, and its mass in g:
 # lead = [

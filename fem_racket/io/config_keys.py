@@ -172,6 +172,9 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
     "contact": LiveView(lambda: _contact_keys()),
     "impact": {
         "position_x_over_l": Key(_interval(0.0, 1.0), "position", "impact point x/L"),
+        "offset_m": Key(
+            _number("m", check_finite), "offset", "impact point's offset from the long axis"
+        ),
         "speed_m_s": Key(_positive("m/s"), "speed", "incident ball speed V_B0"),
         "racket_speed_m_s": Key(
             _number("m/s", check_finite), "racket_speed", "racket speed towards the ball"

@@ -14,14 +14,16 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.io.design_files import check_study_folder, write_study
-from fem_racket.outputs import add_png_provenance, atomic_output, check_output_path, provenance
+from fem_racket.outputs import add_png_provenance, atomic_outputs, check_targets, provenance
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.limits import check_sobol_size, check_study_size
+from fem_racket.studies.design.objectives import output_names
 from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.sensitivity import SobolIndices, sobol_indices
 from fem_racket.studies.design.solvers import optimize
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import check_choice, work_begins
 
 __all__ = ["METHODS", "history_path", "run_optimization", "run_sensitivity"]
 
@@ -36,15 +38,14 @@ def history_path(out: str | os.PathLike) -> Path:
 
 
 def _evaluator(problem, out, restart, backend, workers, scheduler) -> Evaluator:
-    history = None
-    if out is not None:
-        history = history_path(out)
-        if restart and history.exists():
-            import shutil
-
-            shutil.rmtree(history)
+    history = None if out is None else history_path(out)
     return Evaluator(
-        problem, history=history, backend=backend, workers=workers, scheduler=scheduler
+        problem,
+        history=history,
+        backend=backend,
+        workers=workers,
+        scheduler=scheduler,
+        restart=restart,
     )
 
 
@@ -74,35 +75,45 @@ def run_optimization(
     :func:`fem_racket.io.design_files.write_study`.
     """
     check_choice("method", method, METHODS)
-    if method == "nsga2" and len(problem.objectives) < 2:
-        raise InputError(
-            f"objectives = {list(problem.objectives)} is not allowed with nsga2: give 2 or 3"
-        )
+    sizes = {"maxiter": maxiter, "popsize": popsize, "pop_size": pop_size}
+    check_study_size(problem, method, generations=generations, **sizes)
     if out is not None:
         check_study_folder(out, overwrite=overwrite)
+    work_begins()
     ev = _evaluator(problem, out, restart, backend, workers, scheduler)
-    if method == "nsga2":
-        result = pareto_front(
-            problem,
-            evaluator=ev,
-            pop_size=pop_size,
-            generations=generations,
-            seed=seed,
-            progress=progress,
-        )
-    else:
-        result = optimize(
-            problem,
-            method=method,
-            evaluator=ev,
-            maxiter=maxiter,
-            popsize=popsize,
-            seed=seed,
-            progress=progress,
-        )
-    if out is not None:
-        write_study(result, out, overwrite=overwrite, parameters=parameters)
-        ev.history.remove()
+    try:
+        if method == "nsga2":
+            result = pareto_front(
+                problem,
+                evaluator=ev,
+                pop_size=pop_size,
+                generations=generations,
+                seed=seed,
+                progress=progress,
+            )
+        else:
+            result = optimize(
+                problem,
+                method=method,
+                evaluator=ev,
+                maxiter=maxiter,
+                popsize=popsize,
+                seed=seed,
+                progress=progress,
+            )
+        if out is not None:
+            write_study(result, out, overwrite=overwrite, parameters=parameters)
+            ev.history.remove()
+    except BaseException as exc:
+        kept = len(ev.history.rows)
+        if ev.history.folder is not None and kept and ev.history.folder.exists():
+            exc.add_note(
+                f"the history '{ev.history.folder}' holds {kept} designs: rerun the same "
+                "command to resume"
+            )
+        raise
+    finally:
+        ev.history.close()
     return result
 
 
@@ -125,21 +136,23 @@ def run_sensitivity(
     the provenance)."""
     from fem_racket.io.design_plots import plot_sobol
 
+    names = output_names(problem)
+    check_choice("output", problem.objectives[0] if output is None else output, tuple(names))
+    check_sobol_size(problem, designs)
     if out is not None:
-        out = check_output_path(out, overwrite=overwrite)
-        check_output_path(Path(str(out) + ".json"), overwrite=overwrite)
+        check_targets([Path(out), Path(str(out) + ".json")], overwrite=overwrite)
+    work_begins()
     ev = Evaluator(problem, backend=backend, workers=workers, scheduler=scheduler)
     s = sobol_indices(
         problem, output=output, designs=designs, seed=seed, evaluator=ev, progress=progress
     )
-    if out is not None:
+    if out is not None:  # the chart and its JSON as one set: both or neither
         meta = provenance(parameters)
-        with atomic_output(out, overwrite=overwrite) as tmp:
-            plot_sobol(s, tmp)
-            add_png_provenance(tmp, meta)
-        data = sobol_json(s)
-        with atomic_output(Path(str(out) + ".json"), overwrite=overwrite) as tmp:
-            tmp.write_text(json.dumps({**data, "provenance": meta}, indent=2) + "\n")
+        targets = [Path(out), Path(str(out) + ".json")]
+        with atomic_outputs(targets, overwrite=overwrite) as (png, side):
+            plot_sobol(s, png)
+            add_png_provenance(png, meta)
+            side.write_text(json.dumps({**sobol_json(s), "provenance": meta}, indent=2) + "\n")
     return s
 
 

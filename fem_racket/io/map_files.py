@@ -1,12 +1,13 @@
 """Power-map outputs: netCDF (xarray), CSV (+ JSON sidecar) and a PNG plot with sweet spots.
 
-One file per call, the format from the suffix (:data:`MAP_SUFFIXES`); every file is written
-atomically and carries the provenance (:mod:`fem_racket.outputs`): netCDF global attributes, the
-CSV's sidecar ``<file>.json``, PNG text chunks. Several rackets share the position grid when
-they were mapped on the same one; the dataset's dimensions are (racket, position) and each
-sweet spot is an attribute holding one value per racket (NaN where undefined). The contact law
-(shared by the rackets of one call) is recorded as ``contact_law`` and ``contact_<parameter>``
-attributes, in the CSV's sidecar and in the plot's title.
+Each file's format from its suffix (:data:`MAP_SUFFIXES`); the files of one call are written
+as one set (all or none, :func:`write_maps`) and each carries the provenance
+(:mod:`fem_racket.outputs`): netCDF global attributes, the CSV's sidecar ``<file>.json``, PNG
+text chunks. Several rackets share the position grid when they were mapped on the same one; the
+dataset's dimensions are (racket, position) and each sweet spot is an attribute holding one
+value per racket (NaN where undefined). The contact law (shared by the rackets of one call) is
+recorded as ``contact_law`` and ``contact_<parameter>`` attributes, in the CSV's sidecar and in
+the plot's title.
 """
 
 from __future__ import annotations
@@ -21,17 +22,23 @@ from typing import Any
 import numpy as np
 
 from fem_racket.outputs import (
+    Target,
     add_png_provenance,
-    atomic_output,
     atomic_outputs,
-    check_output_path,
+    check_targets,
     provenance,
     sidecar_path,
 )
 from fem_racket.studies.racket_map import RacketMap
 from fem_racket.validation import InputError
 
-__all__ = ["MAP_SUFFIXES", "check_map_output", "map_dataset", "plot_map", "write_map"]
+__all__ = [
+    "MAP_SUFFIXES",
+    "check_map_outputs",
+    "map_dataset",
+    "map_targets",
+    "write_maps",
+]
 
 #: Suffixes a map can be written to.
 MAP_SUFFIXES = (".nc", ".csv", ".png")
@@ -52,15 +59,6 @@ SPOTS = {
     "max_apparent_cor": "max_apparent_cor_x_over_l",
     "max_ball_speed": "max_ball_speed_x_over_l",
 }
-
-
-def check_map_output(path: str | os.PathLike, *, overwrite: bool = False) -> list[Path]:
-    """The files writing ``path`` makes (the CSV's sidecar too), checked before the work."""
-    path = Path(path)
-    if path.suffix.lower() not in MAP_SUFFIXES:
-        raise InputError(f"output = '{path}' is not allowed: must end in {', '.join(MAP_SUFFIXES)}")
-    files = [path, sidecar_path(path)] if path.suffix.lower() == ".csv" else [path]
-    return [check_output_path(f, overwrite=overwrite) for f in files]
 
 
 def _same_grid(maps: Sequence[RacketMap]) -> np.ndarray:
@@ -125,13 +123,7 @@ def _mark_maximum(
     )
 
 
-def plot_map(
-    maps: Sequence[RacketMap],
-    path: str | os.PathLike,
-    *,
-    overwrite: bool = False,
-    parameters: Mapping[str, Any] | None = None,
-) -> Path:
+def _figure(maps: Sequence[RacketMap]) -> Any:
     """PNG: e_A (top) and v_out (bottom) along the frame, sweet spots marked and labelled."""
     from matplotlib.figure import Figure  # no pyplot: no global state, ~0.2 s less to import
 
@@ -186,15 +178,16 @@ def plot_map(
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
     fig.tight_layout()
-    path = Path(path)
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        fig.savefig(tmp, dpi=96, format="png")
-        add_png_provenance(tmp, provenance(parameters))
-    return path
+    return fig
+
+
+def _save_png(fig: Any, tmp: Path, parameters: Mapping[str, Any] | None) -> None:
+    fig.savefig(tmp, dpi=96, format="png")
+    add_png_provenance(tmp, provenance(parameters))
 
 
 def _write_csv(
-    maps: Sequence[RacketMap], path: Path, overwrite: bool, parameters: Mapping[str, Any] | None
+    maps: Sequence[RacketMap], tmp: Path, side: Path, parameters: Mapping[str, Any] | None
 ) -> None:
     cols = [
         "racket",
@@ -205,36 +198,54 @@ def _write_csv(
     ]
     meta = provenance(parameters)
     meta["sweet_spots"] = {m.name: m.summary(curves=False) for m in maps}
-    # the CSV and its provenance sidecar as one set: both or neither
-    with atomic_outputs([path, sidecar_path(path)], overwrite=overwrite) as (tmp, side):
-        with open(tmp, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(cols)
-            for m in maps:
-                for row in zip(
-                    m.positions, m.apparent_cor, m.ball_speed_out, m.racket_speed, strict=True
-                ):
-                    w.writerow([m.name, *(repr(float(v)) for v in row)])
-        side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
+    with open(tmp, "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerow(cols)
+        for m in maps:
+            for row in zip(
+                m.positions, m.apparent_cor, m.ball_speed_out, m.racket_speed, strict=True
+            ):
+                w.writerow([m.name, *(repr(float(v)) for v in row)])
+    side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
 
 
-def write_map(
+def map_targets(paths: Sequence[str | os.PathLike]) -> list[Target]:
+    """Every file writing ``paths`` makes (a CSV's sidecar too), suffixes checked."""
+    targets = []
+    for path in map(Path, paths):
+        if path.suffix.lower() not in MAP_SUFFIXES:
+            raise InputError(
+                f"output = '{path}' is not allowed: must end in {', '.join(MAP_SUFFIXES)}"
+            )
+        targets.append(Target(path))
+        if path.suffix.lower() == ".csv":
+            targets.append(Target(sidecar_path(path)))
+    return targets
+
+
+def check_map_outputs(paths: Sequence[str | os.PathLike], *, overwrite: bool = False) -> None:
+    """Check every output before the work: suffixes, destinations, no path given twice."""
+    check_targets(map_targets(paths), overwrite=overwrite)
+
+
+def write_maps(
     maps: Sequence[RacketMap],
-    path: str | os.PathLike,
+    paths: Sequence[str | os.PathLike],
     *,
     overwrite: bool = False,
     parameters: Mapping[str, Any] | None = None,
-) -> Path:
-    """Write the maps to ``path``: .nc (netCDF), .csv (+ ``<file>.json``) or .png."""
-    check_map_output(path, overwrite=overwrite)
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix == ".png":
-        return plot_map(maps, path, overwrite=overwrite, parameters=parameters)
-    if suffix == ".csv":
-        _write_csv(maps, path, overwrite, parameters)
-        return path
-    ds = map_dataset(maps, parameters)
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        ds.to_netcdf(tmp)
-    return path
+) -> list[Path]:
+    """Write the maps to every one of ``paths`` (.nc, .csv + ``<file>.json``, .png) as one set:
+    all of them or, on any fault, none (:func:`fem_racket.outputs.atomic_outputs`)."""
+    targets = map_targets(paths)
+    with atomic_outputs(targets, overwrite=overwrite) as temps:
+        pending = iter(zip(targets, temps, strict=True))
+        for t, tmp in pending:
+            suffix = t.path.suffix.lower()
+            if suffix == ".png":
+                _save_png(_figure(maps), tmp, parameters)
+            elif suffix == ".csv":
+                _write_csv(maps, tmp, next(pending)[1], parameters)
+            else:
+                map_dataset(maps, parameters).to_netcdf(tmp)
+    return [Path(p) for p in paths]

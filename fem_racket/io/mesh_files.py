@@ -1,8 +1,9 @@
 """Mesh files: read and write a frame's 1-D line mesh through meshio.
 
 A mesh file holds 2-node ``line`` cells along x with cell data ``EI`` [N m^2] and ``rhoA``
-[kg/m]; any format meshio reads works (``meshes/`` uses .vtu: one self-contained file that
-ParaView opens). :func:`read_mesh` validates what it reads and names what is wrong and where.
+[kg/m], and optionally ``GJ`` [N m^2] and ``rhoIp`` [kg m] (torsion, both or neither); any
+format meshio reads works (``meshes/`` uses .vtu: one self-contained file that ParaView opens).
+:func:`read_mesh` validates what it reads and names what is wrong and where.
 """
 
 from __future__ import annotations
@@ -26,7 +27,8 @@ JOIN_TOL = 1e-9
 
 
 def read_mesh(path: str | os.PathLike) -> FrameMesh:
-    """Read a 1-D line mesh with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] through meshio.
+    """Read a 1-D line mesh with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] (optionally
+    ``GJ`` [N m^2] and ``rhoIp`` [kg m]) through meshio.
 
     Any format meshio reads (.vtu, .vtk, .xdmf, .msh, ...). The cells must be 2-node ``line``
     cells along x (y and z constant); they may come in any order and are sorted by position, but
@@ -69,6 +71,14 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
     if pts.ndim != 2 or pts.shape[0] < 2 or not np.all(np.isfinite(pts)):
         raise InputError(f"{where} is not allowed: point coordinates must be finite numbers")
     conn, data = [], {"EI": [], "rhoA": []}
+    given = [n for n in ("GJ", "rhoIp") if n in m.cell_data]
+    if len(given) == 1:
+        raise InputError(
+            f"{where} is not allowed: cell data '{given[0]}' without "
+            f"'{({'GJ', 'rhoIp'} - set(given)).pop()}'; torsion needs both GJ [N m^2] and "
+            "rhoIp [kg m] (or neither)"
+        )
+    data.update({n: [] for n in given})
     for name, store in data.items():
         if name not in m.cell_data:
             have = ", ".join(sorted(m.cell_data)) or "none"
@@ -93,6 +103,7 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
         conn.append(np.asarray(block.data))
     conn = np.concatenate(conn)
     ei, ra = np.concatenate(data["EI"]), np.concatenate(data["rhoA"])
+    torsion = [np.concatenate(data[n]) for n in given]
     if conn.min() < 0 or conn.max() >= len(pts):
         raise InputError(f"{where} is not allowed: a line cell refers to a point that is not there")
     span = np.ptp(pts[:, 0])
@@ -106,6 +117,7 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
     left, right = np.minimum(xa, xb), np.maximum(xa, xb)
     order = np.argsort(left, kind="stable")
     left, right, ei, ra = left[order], right[order], ei[order], ra[order]
+    torsion = [t[order] for t in torsion]
     length = right.max() - left.min()
     if length <= 0.0:
         raise InputError(f"{where} is not allowed: the mesh has zero length")
@@ -135,7 +147,7 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
         )
     points = np.concatenate([left, right[-1:]]) - left[0]
     try:
-        mesh = FrameMesh(points, ei, ra)
+        mesh = FrameMesh(points, ei, ra, *(torsion or (None, None)))
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
     return check_implement(mesh, where)  # a mesh in millimetres is refused, not computed
@@ -148,7 +160,8 @@ def write_mesh(
     overwrite: bool = False,
     binary: bool = True,
 ) -> Path:
-    """Write ``mesh`` with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] in any meshio format.
+    """Write ``mesh`` with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] (and ``GJ`` [N m^2],
+    ``rhoIp`` [kg m] when it has them) in any meshio format.
 
     The format follows the suffix (.vtu recommended: one self-contained file that ParaView
     opens). The file is written under a temporary name in the same folder and renamed into place
@@ -172,9 +185,10 @@ def write_mesh(
     pts = np.zeros((mesh.points.size, 3))
     pts[:, 0] = mesh.points
     cells = np.column_stack([np.arange(mesh.n_elements), np.arange(1, mesh.n_elements + 1)])
-    out = meshio.Mesh(
-        pts, [("line", cells)], cell_data={"EI": [mesh.EI.copy()], "rhoA": [mesh.rhoA.copy()]}
-    )
+    cell_data = {"EI": [mesh.EI.copy()], "rhoA": [mesh.rhoA.copy()]}
+    if mesh.has_torsion:
+        cell_data.update(GJ=[mesh.GJ.copy()], rhoIp=[mesh.rhoIp.copy()])
+    out = meshio.Mesh(pts, [("line", cells)], cell_data=cell_data)
     suffix = path.suffix.lower()
     kwargs: dict = {}
     if suffix in (".vtu", ".vtk"):
@@ -186,6 +200,8 @@ def write_mesh(
     with atomic_output(path, overwrite=overwrite) as tmp:
         try:
             meshio.write(tmp, out, **kwargs)
+        except OSError:
+            raise  # a fault of the disk (full, ...): atomic_output names the file
         except Exception as exc:  # unknown suffix, unsupported cell data, ...
             msg = " ".join(str(exc).split()) or type(exc).__name__
             raise InputError(f"mesh output = '{path}' cannot be written: {msg}") from None

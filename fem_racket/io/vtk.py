@@ -81,7 +81,9 @@ def write_vtk_series(
     """Write an impact as a VTK time series into ``folder``; return the ``.pvd`` path.
 
     The folder holds ``impact.pvd`` (open it in ParaView: part 0 is the frame, part 1 the ball,
-    each step at its physical time in s), ``frame_NNNN.vtu`` and ``ball_NNNN.vtu`` per step, and
+    each step at its physical time in s; off axis part 2 the string face as a surface bent and
+    twisted, :mod:`fem_racket.io.vtk_face`), ``frame_NNNN.vtu`` and ``ball_NNNN.vtu`` (and
+    ``face_NNNN.vtu``) per step, and
     ``provenance.json`` (software, version, date, the impact's settings and results). It is
     written into a temporary folder and renamed into place when complete; an existing folder is
     replaced only with ``overwrite`` and only if it holds a ``provenance.json``.
@@ -114,6 +116,12 @@ def write_vtk_series(
         "ball_fields": list(BALL_FIELDS),
         "time_s": series.t.tolist(),
     }
+    face = None
+    if result.twist is not None:  # off axis: the face as a surface that bends and twists
+        from fem_racket.io.vtk_face import face_series
+
+        face = face_series(result, series.steps, series.scale)
+        settings["face_fields"] = ["displacement [m]", "twist [rad]"]
     meta = impact_provenance(result, {**settings, **(parameters or {})})
     with atomic_folder(folder, overwrite=overwrite, marker=PROVENANCE_NAME) as tmp:
         entries = []
@@ -131,6 +139,9 @@ def write_vtk_series(
                 (series.t[i], 0, "frame", f"frame_{i:04d}.vtu"),
                 (series.t[i], 1, "ball", f"ball_{i:04d}.vtu"),
             ]
+            if face is not None:
+                write_vtu(face.grid(i), tmp / f"face_{i:04d}.vtu")
+                entries.append((series.t[i], 2, "face", f"face_{i:04d}.vtu"))
         write_pvd(tmp / PVD_NAME, entries)
         (tmp / PROVENANCE_NAME).write_text(json.dumps(meta, indent=2) + "\n")
     log.info("wrote %d steps to %s", series.n_steps, folder)

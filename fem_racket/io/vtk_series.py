@@ -150,6 +150,9 @@ class ImpactSeries:
     x_impact: float
     scale: float
     ball_radius: float = BALL_RADIUS
+    #: Lateral offset y of the impact point [m]: the ball is drawn there (off axis the frame's
+    #: point field "twist [rad]" holds the twist about the long axis).
+    ball_y: float = 0.0
 
     def __repr__(self) -> str:
         return short_repr(
@@ -192,7 +195,7 @@ class ImpactSeries:
     def ball_grid(self, i: int, resolution: int = 24) -> pv.UnstructuredGrid:
         """The ball at step ``i``: a sphere of radius R_B centred at (x_i, 0, ball_z)."""
         grid = _sphere(resolution).copy()
-        grid.points = grid.points * self.ball_radius + (self.x_impact, 0.0, self.ball_z[i])
+        grid.points = grid.points * self.ball_radius + (self.x_impact, self.ball_y, self.ball_z[i])
         for name, values in self.ball_fields.items():
             grid.point_data[name] = np.full(grid.n_points, values[i])
         self._add_field_data(grid, i)
@@ -276,6 +279,9 @@ def impact_series(
         "slope [rad]": field(x, 1),
         "frame velocity [m/s]": field(x, 0, velocity=True),
     }
+    if result.twist is not None:  # off axis: the twist about the long axis on the same points
+        T = result.model.torsion.point_matrix(x)
+        point_fields["twist [rad]"] = (result.twist @ T.T)[steps]
     cell_fields = {"curvature [1/m]": curvature, "bending moment [N m]": curvature * EI}
     u_B = result.ball_displacement[steps]
     w_i = result.impact_point_displacement[steps]
@@ -296,4 +302,5 @@ def impact_series(
         x_impact=result.x_impact,
         scale=scale,
         ball_radius=ball_radius,
+        ball_y=result.offset,
     )

@@ -19,7 +19,9 @@ The conventions, the same for every command (README, "Outputs, --overwrite and p
    and the reason. Nothing is left by the check.
 3. Write inside ``with atomic_outputs([...], overwrite=...) as temporaries:``. An ``OSError``
    while writing becomes an :class:`OutputError` naming the target (not the temporary) and the
-   reason.
+   reason; a full disk is named as such even when a library says otherwise (netCDF's "HDF
+   error", :mod:`.faults`). A dangling symbolic link at a target is refused by the check
+   (replaced with ``overwrite``).
 4. Temporary names are ``.<name>.<pid>-<random>.part<suffix>``, never longer than the target's
    folder allows (a long name is cut and completed by a hash). Temporaries left by a run that
    was killed (its process is gone) are removed by the next run writing the same target.

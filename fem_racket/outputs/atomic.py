@@ -21,15 +21,8 @@ from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 
-from fem_racket.outputs.checks import (
-    OutputError,
-    Target,
-    check_targets,
-    name_max,
-    quoted,
-    reason,
-    refuse,
-)
+from fem_racket.outputs.checks import Target, check_targets, name_max, refuse
+from fem_racket.outputs.faults import as_output_error
 
 __all__ = [
     "atomic_folder",
@@ -142,26 +135,6 @@ def _make_temp(tmp: Path, folder: bool) -> None:
         os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
 
 
-def _as_output_error(exc: OSError, targets: Sequence[Target], temps: Sequence[Path]) -> OSError:
-    """``exc`` as an :class:`OutputError` naming the target it concerns; an OSError about a
-    file that is none of the outputs is returned unchanged."""
-    if isinstance(exc, OutputError):
-        return exc
-    target = targets[0].path
-    name = os.fsdecode(exc.filename) if isinstance(exc.filename, (str, bytes)) else None
-    if name is not None:
-        hit = [
-            t.path
-            for t, tmp in zip(targets, temps, strict=False)
-            if Path(name).absolute() in (tmp, t.path.absolute())
-            or Path(name).absolute().is_relative_to(tmp)
-        ]
-        if not hit:
-            return exc
-        target = hit[0]
-    return OutputError(exc.errno, f"cannot write {quoted(target)}: {reason(exc)}")
-
-
 def record_interrupt(kind: type[BaseException] | None) -> None:
     """Record an interruption raised by a signal handler (None clears it): every later
     :func:`atomic_outputs` raises ``kind`` instead of moving its outputs into place."""
@@ -255,8 +228,11 @@ def atomic_outputs(
         yield list(temps)
         _commit(items, temps, overwrite)
         ok = True
-    except OSError as exc:
-        raise _as_output_error(exc, items, temps) from None
+    except (OSError, RuntimeError) as exc:
+        fault = as_output_error(exc, items, temps)
+        if fault is exc:
+            raise
+        raise fault from None
     finally:
         for tmp in temps:
             if tmp.exists() or tmp.is_symlink():

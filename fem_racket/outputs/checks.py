@@ -132,6 +132,20 @@ def _check_writable(t: Target) -> None:
             os.unlink(probe)
 
 
+def _check_link(t: Target, overwrite: bool) -> None:
+    """Refuse a dangling symbolic link at ``t.path`` unless ``overwrite`` (which replaces the link
+    itself): nothing exists there, yet a new file cannot be put in its place without it."""
+    if t.path.is_symlink() and not t.path.exists() and not overwrite:
+        try:
+            to = os.readlink(t.path)
+        except OSError:
+            to = "?"
+        raise refuse(
+            t, f"it is a symbolic link to {show(to)}, which does not exist: remove the link, or "
+            "pass --overwrite to replace it",
+        )  # fmt: skip
+
+
 def check_output_path(
     path: str | os.PathLike, *, overwrite: bool = False, name: str = "out"
 ) -> Path:
@@ -147,6 +161,7 @@ def check_output_path(
         raise refuse(t, "it is a folder: must be a file path")
     if t.path.exists() and not overwrite:
         raise refuse(t, "it already exists: pass --overwrite to replace it")
+    _check_link(t, overwrite)
     _check_writable(t)
     return t.path
 
@@ -176,6 +191,7 @@ def check_output_folder(
                 t, f"it is a folder without '{marker}', so not one this program wrote: "
                 "refusing to replace it",
             )  # fmt: skip
+    _check_link(t, overwrite)
     _check_writable(t)
     return t.path
 

@@ -165,7 +165,7 @@ def reproduce(
     """
     from fem_racket.contact.presets import get_law
     from fem_racket.paper.figures.law_runs import law_title
-    from fem_racket.validation import check_choice
+    from fem_racket.validation import check_choice, work_begins
 
     if isinstance(law, str):
         law = get_law(law)
@@ -189,6 +189,7 @@ def reproduce(
     if report is not None:
         targets.append(Target(Path(report), name="report"))
     check_replaceable(targets, overwrite=overwrite)
+    work_begins()
     described = {"law": "linear"} if law is None else {**law.describe(), "name": law_title(law)}
     meta = provenance(
         {"quick": quick, "figures": keys, "format": fmt, "dpi": dpi, **(parameters or {})}

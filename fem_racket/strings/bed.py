@@ -10,11 +10,12 @@ deflection w of the bed obeys (small deflection, edge on the head's ellipse)::
     rho_s w'' = N_x w_xx + N_y w_yy + p(x, y, t)
 
 Defaults: the paper's racket was strung at 246 N (55 lb, issue 25), a 16 x 19 pattern (the most
-common) with nylon; the head is the "100 in^2" (645 cm^2) ellipse 0.326 m x 0.252 m of
-:mod:`fem_racket.frame.head` (ITF rules, appendix II: strung surface <= 39.4 cm x 29.2 cm; typical
-dimensions, an assumption). The ball meets the bed over a disk of radius a (``load_radius_m``,
-0.02 m: about the contact patch of a tennis ball at impact and the probe of a stringbed-stiffness
-meter; an assumption): the bed's deflection "at the impact point" is its mean over that disk.
+common) with nylon; the head is the "100 in^2" (645 cm^2) ellipse 0.326 m x 0.252 m centred at 0.74
+L, the head outline of the off-axis work (issue 24) with the same names (ITF rules, appendix II:
+strung surface <= 39.4 cm x 29.2 cm; typical dimensions, an assumption). The ball meets the bed
+over a disk of radius a (``load_radius_m``, 0.02 m: about the contact patch of a tennis ball at
+impact and the probe of a stringbed-stiffness meter; an assumption): the bed's deflection "at the
+impact point" is its mean over that disk.
 """
 
 from __future__ import annotations
@@ -71,8 +72,8 @@ class StringBed:
     load_radius_m : float
         Radius a of the ball's contact disk [m].
     head_centre : float
-        The head's centre on the frame, x/L (0.74: the typical head of
-        :mod:`fem_racket.frame.head` on the paper's frame; an assumption).
+        The head's centre on the frame, x/L (0.74: a typical head on the paper's frame, as the
+        off-axis work's head outline; an assumption).
     edge : {"point", "hoop"}
         How the head ring follows the frame (:data:`EDGES`).
     """

@@ -35,7 +35,7 @@ from fem_racket.contact.registry import LiveView
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.studies.views import CalibrationView
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, work_begins
 
 __all__ = [
     "FAMILIES",
@@ -190,9 +190,17 @@ def calibrate(
         return np.array([t.scaled_error(m) for t, m in zip(targets, model, strict=True)])
 
     bounds = (np.log(fam.low), np.log(fam.high))
+    work_begins()
     fit = least_squares(residuals, x0, bounds=bounds, diff_step=1e-4, max_nfev=200)
     law = fam.build(np.exp(fit.x))
-    return Calibration(family, target_set, law, targets, _model_values(law, targets, ball_mass))
+    try:
+        model = _model_values(law, targets, ball_mass)
+    except RuntimeError as err:  # the integrator fails at the fitted point itself
+        raise InputError(
+            f"family = {family!r} cannot be fitted to targets = {target_set!r}: the fitted law "
+            f"({', '.join(f'{v:.4g}' for v in np.exp(fit.x))}) cannot be integrated ({err})"
+        ) from None
+    return Calibration(family, target_set, law, targets, model)
 
 
 def clamped_histories(

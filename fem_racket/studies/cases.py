@@ -134,6 +134,7 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
         r = simulate(
             model,
             position=p["position"],
+            offset=p["offset"],
             speed=speed,
             ball_mass=mass,
             law=spec.case_law(p),
@@ -149,6 +150,7 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
     r = simulate(
         model,
         position=p["position"],
+        offset=p["offset"],
         speed=speed,
         ball_mass=mass,
         kcb=kcb,
@@ -232,6 +234,7 @@ def _engine_group(
     b = impacts(
         model,
         position=take(p["position"], rows),
+        offset=take(p["offset"], rows),
         speed=closing,
         kcb=take(p["kcb"], rows),
         zeta=take(p["zeta"], rows),

@@ -38,7 +38,7 @@ try:
 except ImportError:  # pragma: no cover - not POSIX: no lock
     fcntl = None  # type: ignore[assignment]
 
-__all__ = ["Checkpoint", "checkpoint_path"]
+__all__ = ["Checkpoint", "acquire_lock", "checkpoint_path", "checksum", "write_atomic"]
 
 log = logging.getLogger(__name__)
 
@@ -53,11 +53,36 @@ def checkpoint_path(output: str | os.PathLike) -> Path:
     return output.with_name(output.name + ".checkpoint")
 
 
-def _checksum(digest: str, data: bytes) -> str:
+def checksum(digest: str, data: bytes) -> str:
+    """16 hex digits of SHA-256 over a study's ``digest`` and a file's bytes: a file truncated,
+    emptied, altered or of another study fails it."""
     return hashlib.sha256(digest.encode() + b"\0" + data).hexdigest()[:16]
 
 
-def _write_atomic(path: Path, data: bytes) -> None:
+def acquire_lock(folder: Path, busy: str) -> Any:
+    """Take the ``lock`` file of ``folder`` (``flock``, released by the kernel when the process
+    ends, however it ends) and write this process's id in it; the open file holds the lock.
+
+    Raises :class:`InputError` ``busy.format(pid=<the holder's id>)`` when another holds it.
+    """
+    fh = open(folder / LOCK_NAME, "a+")  # noqa: SIM115 - held until closed
+    if fcntl is not None:
+        try:
+            fcntl.flock(fh.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            fh.seek(0)
+            other = fh.read().strip() or "unknown"
+            fh.close()
+            raise InputError(busy.format(pid=other)) from None
+    fh.seek(0)
+    fh.truncate()
+    fh.write(f"{os.getpid()}\n")
+    fh.flush()
+    return fh
+
+
+def write_atomic(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary (``.tmp-*``) renamed into place."""
     try:
         fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=path.suffix, dir=path.parent)
     except OSError as exc:
@@ -128,24 +153,13 @@ class Checkpoint:
             raise
 
     def _acquire(self) -> Any:
-        fh = open(self.folder / LOCK_NAME, "a+")  # noqa: SIM115 - held until close()
-        if fcntl is not None:
-            try:
-                fcntl.flock(fh.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
-            except BlockingIOError:
-                fh.seek(0)
-                other = fh.read().strip() or "unknown"
-                fh.close()
-                raise InputError(
-                    f"out = {show_path(self.output)} is not allowed now: another sweep "
-                    f"(process {other}) is writing it (lock {show_path(self.folder / LOCK_NAME)}); "
-                    "wait for it to finish or stop it"
-                ) from None
-        fh.seek(0)
-        fh.truncate()
-        fh.write(f"{os.getpid()}\n")
-        fh.flush()
-        return fh
+        lock = show_path(self.folder / LOCK_NAME).replace("{", "{{").replace("}", "}}")
+        out = show_path(self.output).replace("{", "{{").replace("}", "}}")
+        return acquire_lock(
+            self.folder,
+            f"out = {out} is not allowed now: another sweep (process {{pid}}) is writing it "
+            f"(lock {lock}); wait for it to finish or stop it",
+        )
 
     def _prepare(self, description: dict[str, Any], restart: bool) -> None:
         spec_file = self.folder / SPEC_NAME
@@ -175,7 +189,7 @@ class Checkpoint:
             )
         if stored is None:
             text = json.dumps({"digest": self.digest, "sweep": description}, indent=1)
-            _write_atomic(spec_file, text.encode())
+            write_atomic(spec_file, text.encode())
 
     def close(self) -> None:
         """Release the lock (the folder stays for a later run to resume)."""
@@ -191,7 +205,7 @@ class Checkpoint:
             why = "no checksum in its name: not written by this version of a sweep"
         else:
             data = path.read_bytes()
-            if _checksum(self.digest, data) != m.group(3):
+            if checksum(self.digest, data) != m.group(3):
                 why = "checksum mismatch: damaged, or from a different sweep"
             else:
                 rows = np.load(io.BytesIO(data), allow_pickle=False)
@@ -231,8 +245,8 @@ class Checkpoint:
         buf = io.BytesIO()
         np.save(buf, rows, allow_pickle=False)
         data = buf.getvalue()
-        name = f"chunk-{int(indices[0]):012d}-{len(indices)}-{_checksum(self.digest, data)}.npy"
-        _write_atomic(self.folder / name, data)
+        name = f"chunk-{int(indices[0]):012d}-{len(indices)}-{checksum(self.digest, data)}.npy"
+        write_atomic(self.folder / name, data)
         self.cases += len(indices)
 
     def remove(self) -> None:

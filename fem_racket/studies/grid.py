@@ -20,6 +20,7 @@ import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.contact.presets import check_linear_options
+from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import (
@@ -45,6 +46,7 @@ from fem_racket.studies.grid_values import (
     as_values,
     parameter,
     parse_values,
+    value_count,
 )
 from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
@@ -76,7 +78,8 @@ def _frame_description(frame: Frame | FrameMesh | None) -> dict[str, Any]:
         return {"frame": "segments [length m, EI N m^2, rhoA kg/m]: " + json.dumps(segs)}
     if isinstance(frame, FrameMesh):
         h = hashlib.sha256()
-        for arr in (frame.points, frame.EI, frame.rhoA):
+        torsion = (frame.GJ, frame.rhoIp) if frame.has_torsion else ()
+        for arr in (frame.points, frame.EI, frame.rhoA, *torsion):
             h.update(np.ascontiguousarray(arr, dtype=float).tobytes())
         return {"frame": f"mesh of {frame.n_elements} elements, sha256 {h.hexdigest()[:16]}"}
     raise InputError(f"frame = {show(frame)} is not allowed: must be a Frame, a FrameMesh or None")
@@ -127,12 +130,17 @@ class SweepSpec:
         :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
         check_linear_options(kwargs.get("law"), kcb=raw["kcb"], zeta=raw["zeta"])
-        values = {name: as_values(name, value) for name, value in raw.items()}
         law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
+        # the grid's size from the counts alone, before any value is made (20:40:10000000)
+        counts = {n: value_count(v) for n, v in {**raw, **law_given}.items()}
+        swept = {n: c for n, c in counts.items() if c > 1}
+        check_grid_size(list(swept.values()), list(swept))
+        values = {name: as_values(name, value) for name, value in raw.items()}
         for name, value in sweep_law_values(kwargs.get("law"), law_given).items():
             values[name] = as_values(name, value)
         check_law_grid(kwargs.get("law"), values)  # every combination, before any work
-        defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
+        defaults = {"position": 0.75, "offset": 0.0, "speed": 20.0, "ei_factor": 1.0}
+        defaults["elements"] = 20
         defaults.update(racket_speed=0.0, reference=DEFAULT_REFERENCE)
         defaults["ball_mass"] = DEFAULT_BALL_MASS
         for name, default in defaults.items():
@@ -185,6 +193,7 @@ class SweepSpec:
         )
         spec._check_rigidity()
         spec._check_swings()
+        spec._check_offsets()
         check_grid_size(spec.shape, spec.dims)
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         if not isinstance(spec.peak_force, bool):
@@ -212,6 +221,23 @@ class SweepSpec:
         factors = np.atleast_1d(self.values["ei_factor"])
         for f in (float(np.min(factors)), float(np.max(factors))):
             check_ei_factor(f, ratio)
+
+    def _check_offsets(self) -> None:
+        """Every (position, offset) of the grid on the head outline (or on the axis), and a
+        frame with torsion data when any offset is not 0, so that no case fails mid-sweep."""
+        y = np.atleast_1d(self.values["offset"])
+        if np.all(y == 0.0):
+            return
+        frame = self.frame if self.frame is not None else standard_frame()
+        if not (frame.torsion if isinstance(frame, Frame) else frame.has_torsion):
+            raise InputError(
+                "offset is not allowed with this frame: it has no torsion data (GJ, rhoIp) and "
+                "takes impacts on the long axis only"
+            )
+        head = DEFAULT_HEAD.on_frame(float(frame.length))
+        for x in np.atleast_1d(self.values["position"]):
+            for v in y:
+                head.check(float(x) * head.frame_length_m, float(v))
 
     def _check_swings(self) -> None:
         """Every swing of the grid valid (no pivot at its reference point) and closing on the

@@ -30,7 +30,15 @@ from fem_racket.validation import (
     show,
 )
 
-__all__ = ["LAW_PARAMETERS", "PARAMETERS", "Parameter", "as_values", "parameter", "parse_values"]
+__all__ = [
+    "LAW_PARAMETERS",
+    "PARAMETERS",
+    "Parameter",
+    "as_values",
+    "parameter",
+    "parse_values",
+    "value_count",
+]
 
 
 @dataclass(frozen=True)
@@ -45,6 +53,7 @@ class Parameter:
 #: Sweepable parameters in dimension order.
 PARAMETERS: dict[str, Parameter] = {
     "position": Parameter("x/L", "impact point from the grip end", "position_x_over_l"),
+    "offset": Parameter("m", "impact point's lateral offset from the long axis", "offset_m"),
     "speed": Parameter("m/s", "incident ball speed", "speed_m_s"),
     "racket_speed": Parameter(
         "m/s", "racket speed towards the ball at the reference point", "racket_speed_m_s"
@@ -81,7 +90,7 @@ def _check_value(name: str, value: object) -> float | int:
     unit = PARAMETERS[name].unit
     if name in ("position", "reference"):
         return check_range(name, value, 0.0, 1.0, unit=unit)
-    if name in ("racket_speed", "pivot"):  # any sign: towards/away, beyond the butt
+    if name in ("racket_speed", "pivot", "offset"):  # any sign: towards/away, either side
         return check_finite(name, value, unit)
     if name in ("kcb", "zeta"):  # the paper's law's declared bounds
         return next(p for p in LinearContact.declared if p.name == name).check(value)
@@ -133,6 +142,24 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
     if len(numbers) == 1:
         return as_values(name, numbers[0])
     return as_values(name, numbers)
+
+
+def value_count(value: Any) -> int:
+    """How many values ``value`` gives (as :func:`as_values` would), without making them: the
+    ``num`` of ``start:stop:num[:log]``, the items of a comma list or a sequence; 1 otherwise.
+    A malformed value, or one axis over :data:`MAX_CASES`, counts 1 (:func:`as_values` then
+    says what is wrong)."""
+    if isinstance(value, str):
+        if ":" in value:
+            parts = [p.strip() for p in value.split(":")]
+            parts = parts[:-1] if parts[-1].lower() == "log" else parts
+            try:
+                num = float(parts[2]) if len(parts) == 3 else 1.0
+            except ValueError:
+                return 1
+            return int(num) if 1 <= num <= MAX_CASES else 1
+        return value.count(",") + 1
+    return 1 if value is None or np.ndim(value) == 0 else int(np.size(value))
 
 
 def as_values(name: str, value: Any) -> float | int | None | np.ndarray:

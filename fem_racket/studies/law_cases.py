@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -72,6 +73,7 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
     models: dict[tuple, Any] = {}
     for row, p in enumerate(cases):
         key, model = model_of(spec, p["elements"], p["ei1"], p["ei_factor"])
+        key = (key, float(p["offset"]))  # off axis the frame twists too: its own receptance
         groups.setdefault(key, []).append(row)
         models[key] = model
     order = np.array([r for rows in groups.values() for r in rows])
@@ -79,8 +81,9 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
     parts = []
     for key, rows in groups.items():
         mass = np.array([cases[r]["ball_mass"] for r in rows])
-        parts.append(receptance(models[key], [cases[r]["position"] for r in rows], mass))
-    rec = stack_receptances(parts)
+        pos = [cases[r]["position"] for r in rows]
+        parts.append(receptance(models[key], pos, mass, None, key[1]))
+    rec = stack_receptances(_same_rigid(parts))
     length = np.array([m.mesh.length for m in frame])
     swings = [case_swing(cases[r], ln) for r, ln in zip(order, length, strict=True)]
     pos = np.array([cases[r]["position"] for r in order])
@@ -109,5 +112,12 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
     out[order, 2] = ball_speed_out(e_a, speed, v_r)
     out[order, 3] = o.peak_force
     out[order, 5] = v_r
-    out[order, 6] = [m.modes(None).omega.size for m in frame]
+    out[order, 6] = [p.a.shape[1] for p in parts for _ in range(p.a.shape[0])]
     return out
+
+
+def _same_rigid(parts: list) -> list:
+    """Receptances with as many rigid modes each: on-axis cases get the roll as a zero column
+    when off-axis ones (translation, rotation, roll) share their batch (it adds exactly 0)."""
+    n = max(p.rigid.shape[1] for p in parts)
+    return [replace(p, rigid=np.pad(p.rigid, ((0, 0), (0, n - p.rigid.shape[1])))) for p in parts]

@@ -48,6 +48,7 @@ from fem_racket.validation import (
     check_positive,
     check_range,
     show,
+    work_begins,
 )
 
 __all__ = ["DEFAULT_POSITIONS", "RacketMap", "apparent_cor_along", "racket_map"]
@@ -279,6 +280,7 @@ def racket_map(
     def v_out(s: float) -> float:
         return float(ball_speed_out(e_a(s), speed, swing.speed_at(s * length)))
 
+    work_begins()
     e = apparent_cor_along(model, x, closing, **kwargs)
     vo = ball_speed_out(e, speed, v_r)
     nodes = mode_node_positions(model, 2)

@@ -37,7 +37,7 @@ from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, SweepSpec, chunks
 from fem_racket.studies.sweep_result import SweepResult
-from fem_racket.validation import InputError, check_choice, check_integer, show
+from fem_racket.validation import InputError, check_choice, check_integer, show, work_begins
 
 __all__ = ["VARIABLES", "sweep", "sweep_result"]
 
@@ -223,12 +223,14 @@ def sweep_result(
             check_integer(name, value)
     if scheduler is not None:
         check_scheduler(scheduler)  # before any checkpoint folder is made
+    if output is not None:
+        output = check_output_path(output, overwrite=overwrite)
+    work_begins()
     n_vars = len(COLUMNS)
     values = np.full((spec.size, n_vars), np.nan)
     done = np.zeros(spec.size, dtype=bool)
     ckpt = None
     if output is not None:
-        output = check_output_path(output, overwrite=overwrite)
         ckpt = Checkpoint(output, spec.digest, spec.describe(), spec.size, n_vars, restart=restart)
     try:
         if ckpt is not None:

@@ -68,3 +68,89 @@ def test_cli_pins_blas_to_one_thread(capsys):
         assert main(["modes", "--json"]) == 0
         blas = [lib["num_threads"] for lib in threadpool_info() if lib["user_api"] == "blas"]
     assert blas and all(n == 1 for n in blas)
+
+
+# -- round 3 (issue 22.3): every count refused before anything is allocated ----------------------
+_NSGA = ["--method", "nsga2", "--objective", "cor,ball_speed"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        # before: 10-11.5 GB and SIGTERM at 30 s not honoured
+        (["optimize", *_NSGA, "--pop-size", "100000000"], "pop_size = 100000000 is not allowed"),
+        (["optimize", "--zone-points", "100000000"], "zone_points = 100000000 is not allowed"),
+        (["sensitivity", "--zone-points", "100000000"], "zone_points = 100000000 is not allowed"),
+        # before: a 1 TiB allocation and a traceback
+        (["sensitivity", "--designs", "100000000000"], "designs = 100000000000 is not allowed"),
+        (["optimize", *_NSGA, "--generations", "100000000"], "generations = 100000000"),
+        (["optimize", "--maxiter", "100000000"], "maxiter = 100000000 is not allowed"),
+        (
+            ["optimize", "--method", "differential-evolution", "--popsize", "10000000"],
+            "popsize = 10000000 is not allowed",
+        ),
+        # NSGA-II takes 2 or 3 objectives; the other methods one (before: cor alone, silently)
+        (
+            [
+                "optimize",
+                "--method",
+                "nsga2",
+                "--objective",
+                "cor,ball_speed,power_region,handle_shock",
+            ],
+            "is not allowed with nsga2: give 2 or 3",
+        ),
+        (
+            ["optimize", "--objective", "cor,ball_speed"],
+            "objectives = ['cor', 'ball_speed'] is not allowed with SLSQP: it maximises one",
+        ),
+        (
+            ["optimize", "--method", "trust-constr", "--objective", "cor,ball_speed"],
+            "is not allowed with trust-constr",
+        ),
+        # before: refused after 10 s and 734 MB (each of 1e7 values checked first)
+        (["sweep", "--speed", "20:40:10000000", "--ei1", "100,200"], "20000000 cases"),
+        (["refine", "--count", "100000000"], "count = 100000000 is not allowed"),
+        # output times: a hand's shock window, a law's contact (before: 34 GiB, 108 GiB)
+        (
+            ["simulate", "--grip", "firm", "--output-step", "1e-11", "--out", "h.json"],
+            "output_step = 1e-11 s is not allowed: at most 1e+06 output times over the shock",
+        ),
+        (
+            ["simulate", "--grip", "firm", "--solver", "cvode", "--output-step", "1e-11"]
+            + ["--out", "h.json"],
+            "output_step = 1e-11 s is not allowed",
+        ),
+        (
+            ["simulate", "--law", "series", "--output-step", "1e-11", "--out", "h.json"],
+            "output_step = 1e-11 s is not allowed: at most 1e+06 output times over twice the law",
+        ),
+        (
+            ["simulate", "--output-step", "1e-11", "--out", "h.json"],
+            "output_step = 1e-11 s is not allowed: at most 1e+06 output times",
+        ),
+        (["export-vtk", "--output-step", "1e-11"], "output_step = 1e-11 s is not allowed"),
+    ],
+    ids=lambda v: v if isinstance(v, str) and len(v) < 30 else None,
+)
+def test_counts_refused_before_allocating(capsys, tmp_path, monkeypatch, argv, message):
+    import resource
+
+    monkeypatch.chdir(tmp_path)
+    t0 = time.process_time()
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1 and "Traceback" not in err, err
+    assert time.process_time() - t0 < 3.0 and not list(tmp_path.iterdir())
+    # the test process's peak stays far below the sizes asked (GB)
+    assert resource.getrusage(resource.RUSAGE_SELF).ru_maxrss < 2_000_000  # kB
+
+
+def test_a_closing_speed_of_zero_or_less_is_refused_under_a_law(capsys):
+    # Before: a traceback (ZeroDivisionError) at 0 and COR -0.79 below it; the linear law
+    # refused both at once.
+    for racket in ("-20", "-30"):
+        argv = ["simulate", "--law", "series", "--speed", "20", "--racket-speed", racket]
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "the two must close (v_in + v_r > 0)" in err, err

@@ -246,3 +246,113 @@ def test_full_disk_without_mounting(capsys, tmp_path, monkeypatch):
         assert code == 1 and err.count("\n") == 1, err
         assert f"cannot write '{argv[-1 if argv[0] == 'animate' else 2]}': No space left" in err
     assert listing(tmp_path) == ["vtk", "vtk/provenance.json"]
+
+
+# -- round 3 (issue 22.5): every command's outputs as one set, faults named as what they are ---
+@pytest.fixture
+def small_tmpfs(tmp_path):
+    """A 128 KiB tmpfs, or skip where mounting is not permitted (see ``tiny_tmpfs``)."""
+    mnt = tmp_path / "mnt"
+    mnt.mkdir()
+    res = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=128k", "tmpfs", str(mnt)],
+                         capture_output=True, text=True)  # fmt: skip
+    if res.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs here: {res.stderr.strip() or res.returncode}")
+    try:
+        yield mnt
+    finally:
+        subprocess.run(["umount", str(mnt)], check=True)
+
+
+def _fill(folder: Path, leave: int) -> None:
+    """Fill ``folder``'s file system but about ``leave`` bytes."""
+    st = os.statvfs(folder)
+    (folder / "fill").write_bytes(b"\0" * max(0, st.f_bavail * st.f_frsize - leave))
+
+
+def test_map_writes_its_outputs_as_one_set_on_a_full_disk(capsys, small_tmpfs):
+    # Before: a.png stayed and the netCDF fault read "Permission denied".
+    _fill(small_tmpfs, 40_000)
+    outs = [small_tmpfs / "a.png", small_tmpfs / "b.nc", small_tmpfs / "c.csv"]
+    code, out, err = run(capsys, "map", "--out", *outs)
+    assert code == 1 and out == "" and err.count("\n") == 1, err
+    assert "No space left on device" in err and ".part" not in err
+    assert any(f"cannot write '{p}'" in err for p in outs), err
+    assert listing(small_tmpfs) == ["fill"]
+
+
+def test_optimize_on_a_full_disk_gives_one_line_not_a_netcdf_traceback(capsys, small_tmpfs):
+    # The history's batches fit, the study's folder does not (before: 52 lines ending in
+    # "RuntimeError: NetCDF: HDF error" when history.nc met the full disk). The history stays
+    # for a rerun to resume.
+    _fill(small_tmpfs, 28_000)
+    out = small_tmpfs / "d"
+    code, _, err = run(capsys, "optimize", "--maxiter", "1", "--zone-points", "3", "--out", out)
+    assert code == 1 and err.count("\n") == 1 and "Traceback" not in err, err
+    assert f"cannot write '{out}': No space left on device" in err
+    assert not out.exists() and not [n for n in listing(small_tmpfs) if ".part" in n]
+
+
+def test_fit_on_a_full_disk_names_the_mesh_not_its_temporary(capsys, small_tmpfs):
+    # Before: exit 2 (bad input) naming '.r.vtu.<pid>-<hex>.part.vtu'.
+    _fill(small_tmpfs, 1_000)
+    out = small_tmpfs / "r.vtu"
+    argv = ["--length", "0.685", "--mass", "0.318", "--balance", "0.32", "--swing-weight", "316"]
+    code, _, err = run(capsys, "fit", *argv, "--out", out)
+    assert code == 1 and err.count("\n") == 1, err
+    assert f"cannot write '{out}': No space left on device" in err and ".part" not in err
+    assert listing(small_tmpfs) == ["fill"]
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["simulate", "--out", "link.json"],
+        ["sweep", "--serial", "--quiet", "--out", "link.nc"],
+        ["map", "--out", "link.png"],
+        ["export-vtk", "--out", "link"],
+        ["optimize", "--maxiter", "1", "--out", "link"],
+        ["sensitivity", "--designs", "40", "--out", "link.png"],
+    ],
+    ids=lambda a: a[0],
+)
+def test_a_dangling_link_at_out_is_refused_before_any_work(capsys, tmp_path, monkeypatch, argv):
+    # Before: accepted by the check, then "it was created during the run" after all the work.
+    monkeypatch.chdir(tmp_path)
+    os.symlink(tmp_path / "gone" / "x", tmp_path / argv[-1])
+    t0 = time.perf_counter()
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("\n") == 1, err
+    assert f"out = '{argv[-1]}' is not allowed: it is a symbolic link to" in err
+    assert "which does not exist" in err and time.perf_counter() - t0 < 10
+    assert listing(tmp_path) == [argv[-1]] and (tmp_path / argv[-1]).is_symlink()
+
+
+def test_overwrite_replaces_a_dangling_link(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    os.symlink("nowhere.json", "r.json")
+    assert run(capsys, "simulate", "--out", "r.json", "--overwrite")[0] == 0
+    assert not Path("r.json").is_symlink() and Path("r.json").stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [["map", "--out", "m.png", "m.png"], ["map", "--out", "m.csv", "./m.csv"]],
+    ids=["same", "same-spelled-otherwise"],
+)
+def test_the_same_output_twice_is_refused_before_any_work(capsys, tmp_path, monkeypatch, argv):
+    # Before: the second write refused the first one's file after the work.
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("\n") == 1, err
+    assert "the same path is given for two outputs of this command" in err
+    assert listing(tmp_path) == []
+
+
+def test_sensitivity_writes_its_chart_and_json_as_one_set(capsys, small_tmpfs):
+    _fill(small_tmpfs, 20_000)
+    out = small_tmpfs / "s.png"
+    code, _, err = run(capsys, "sensitivity", "--designs", "40", "--zone-points", "3", "--out", out)
+    assert code == 1 and err.count("\n") == 1, err
+    assert f"cannot write '{out}': No space left on device" in err
+    assert listing(small_tmpfs) == ["fill"]

@@ -150,10 +150,18 @@ def test_example_has_every_command_table_and_they_parse(capsys, cwd):
     text = run(capsys, "config", "--example")
     for table in ("simulate", "modes", "sweep", "vtk", "animate", "refine", "reproduce"):
         assert f"# [{table}]" in text, table
+    # fit needs its targets (no defaults): the check fails where `fit` would, until given.
     (cwd / "all.toml").write_text(_uncommented_example(text))
+    code = main(["config", "--check", "all.toml"])
+    err = capsys.readouterr().err
+    assert code == 2 and "fem-racket fit would refuse it: length is required" in err
+    targets = "[fit]\nlength = 0.685\nmass = 0.318\nbalance = 0.32\nswing_weight = 316.0\n"
+    (cwd / "all.toml").write_text(_uncommented_example(text).replace("[fit]\n", targets))
     out = run(capsys, "config", "--check", "all.toml")
-    for name in ("sweep", "export-vtk", "animate", "refine", "reproduce"):
-        assert f"[{name}]" in out
+    # each line names the table the file uses, and the command when it differs
+    for name in ("[sweep]", "[vtk] (fem-racket export-vtk)", "[animate]", "[refine]"):
+        assert f"\n{name} " in out
+    assert "\n[reproduce] " in out and "\n[design] (fem-racket optimize) " in out
     # Every uncommented default is the built-in one: the sweep is the default single impact
     # (its fast path agrees with simulate to 1e-9, tests/test_sweep.py).
     run(capsys, "sweep", "--config", "all.toml", "--serial", "--quiet", "--json")

@@ -8,14 +8,16 @@ checks every table and prints the settings each command would take from it.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import io
 from pathlib import PurePath
 from typing import Any
 
 from fem_racket.cli.common import add_output_options
-from fem_racket.cli.options.runfile import config_values, file_options
+from fem_racket.cli.options.runfile import apply_config, config_values, file_options
 from fem_racket.io.config import example_config, load_config, toml_value
 from fem_racket.io.config_keys import COMMAND_TABLES
-from fem_racket.validation import InputError
+from fem_racket.validation import ChecksPassed, InputError, checks_only
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -68,22 +70,61 @@ def command_tables() -> str:
 def _check(path: str) -> str:
     commands = _commands()
     cfg = load_config(path)
+    known_tables = {COMMAND_TABLES.get(n, n) for n in commands}
     out = [f"{path}: ok"]
     for name, sub in commands.items():
+        table = COMMAND_TABLES.get(name, name)
+        label = f"[{table}]" if table == name else f"[{table}] (fem-racket {name})"
         try:
             values = config_values(sub, name, cfg)
         except InputError as exc:
             raise InputError(f"{path}: {exc}") from None
+        requires = getattr(sub, "config_requires", ())
+        if requires and table not in cfg.tables:
+            out.append(f"{label} not checked: no [{table}] table ({', '.join(requires)} needed)")
+            continue
+        # A file with command tables is meant for those commands: another command's refusal
+        # is a note; a file without any is checked for every command.
+        strict = table in cfg.tables or not known_tables & set(cfg.tables)
+        try:
+            _dry_run(name, path)
+        except InputError as exc:
+            if strict:
+                raise
+            out.append(f"{label} not for this command: {str(exc).removeprefix(f'{path}: ')}")
+            continue
         used = file_options(sub).keys() | {a.dest for a in sub._actions}
         used |= {"segments", "mesh"}
         shown = {k: v for k, v in values.items() if k in used}
         listed = ", ".join(f"{k} = {_show(v)}" for k, v in shown.items())
-        out.append(f"[{name}] {listed or '(all defaults)'}")
-    known = {COMMAND_TABLES.get(n, n) for n in commands}
+        out.append(f"{label} {listed or '(all defaults)'}")
     for table in cfg.tables:
-        if table not in known:
+        if table not in known_tables:
             out.append(f"[{table}] not checked: no command reads it in this version")
     return "\n".join(out) + "\n"
+
+
+def _dry_run(name: str, path: str) -> None:
+    """Run command ``name`` on the run file up to where its work would begin: every check it
+    makes (values, combinations, files it would read or write) without the computation.
+
+    An output that exists already is not refused here (it is the folder's state, not the file's:
+    the command refuses it without --overwrite)."""
+    from fem_racket.cli import build_parser
+
+    argv = [name, "--config", path]
+    parser = build_parser(argv)
+    args = apply_config(parser, argv, parser.parse_args(argv))
+    if hasattr(args, "overwrite"):
+        args.overwrite = True
+    with checks_only(), contextlib.redirect_stdout(io.StringIO()):
+        try:
+            args.func(args)
+        except ChecksPassed:
+            return
+        except InputError as exc:
+            raise InputError(f"{path}: fem-racket {name} would refuse it: {exc}") from None
+    raise RuntimeError(f"fem-racket {name} has no end of checks (validation.work_begins)")
 
 
 def _show(value: Any) -> str:

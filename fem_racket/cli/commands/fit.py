@@ -17,6 +17,8 @@ from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2, fit_racket, racket_spec
+from fem_racket.frame.torsion import TorsionModel
+from fem_racket.frame.twist_fit import fit_torsion
 from fem_racket.io.mesh_files import write_mesh
 from fem_racket.outputs import (
     atomic_outputs,
@@ -25,7 +27,7 @@ from fem_racket.outputs import (
     provenance,
     sidecar_path,
 )
-from fem_racket.validation import InputError, check_integer
+from fem_racket.validation import InputError, check_integer, work_begins
 
 #: Where the mesh goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "racket.vtu"
@@ -75,6 +77,23 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="first free-free bending frequency [Hz] (default: none, EI1 = 146 N m^2 kept)",
     )
     g.add_argument(
+        "--twist-weight",
+        type=float,
+        default=None,
+        metavar="KG_CM2",
+        help="polar moment about the long axis [kg cm^2]: writes cell data GJ and rhoIp (the "
+        "standard racket's torsion profile scaled) so the frame takes off-axis impacts "
+        "(default: none, no torsion data)",
+    )
+    g.add_argument(
+        "--torsion-frequency",
+        type=float,
+        default=None,
+        metavar="HZ",
+        help="first free-free torsion frequency [Hz], with --twist-weight (default: the "
+        "profile's own, 380 Hz on a 0.68 m frame)",
+    )
+    g.add_argument(
         "--elements",
         type=int,
         default=DEFAULT_ELEMENTS,
@@ -93,7 +112,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--overwrite", action="store_true", help="replace existing files (default: refuse)"
     )
     o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
-    add_config_option(p, private=("out", "elements"))
+    add_config_option(
+        p, private=("out", "elements"), requires=("length", "mass", "balance", "swing_weight")
+    )
     p.set_defaults(func=run)
 
 
@@ -108,6 +129,7 @@ def run(args: argparse.Namespace) -> int:
     overwrite = replace_own(args, out == DEFAULT_OUTPUT, [out, sidecar_path(out)])
     for f in (out, sidecar_path(out)):
         check_output_path(f, overwrite=overwrite)
+    work_begins()
     frame = fit_racket(
         args.length,
         args.mass,
@@ -116,6 +138,13 @@ def run(args: argparse.Namespace) -> int:
         args.f1,
         elements=elements,
     )
+    if args.torsion_frequency is not None and args.twist_weight is None:
+        raise InputError(
+            f"torsion_frequency = {args.torsion_frequency!r} Hz is not allowed without "
+            "--twist-weight: the torsion profile is scaled to a twistweight"
+        )
+    if args.twist_weight is not None:
+        frame = fit_torsion(frame, args.twist_weight * KG_CM2, args.torsion_frequency)
     mesh = frame_mesh(frame, elements)
     got = racket_spec(mesh).as_dict()
     target = {
@@ -125,6 +154,12 @@ def run(args: argparse.Namespace) -> int:
         "swing_weight_kg_cm2": args.swing_weight,
         "f1_hz": args.f1,
     }
+    if args.twist_weight is not None:  # the torsion of the mesh written
+        tors = TorsionModel(mesh)
+        target["twist_weight_kg_cm2"] = args.twist_weight
+        target["torsion_f1_hz"] = args.torsion_frequency
+        got["twist_weight_kg_cm2"] = tors.polar_moment / KG_CM2
+        got["torsion_f1_hz"] = float(tors.modes(1).frequencies[0])
     segments = [
         {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
     ]

@@ -31,7 +31,7 @@ from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
-from fem_racket.io.map_files import check_map_output, write_map
+from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.studies.grid import as_values
 from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
@@ -105,6 +105,15 @@ def register(sub: argparse._SubParsersAction) -> None:
         f"(default {start}:{stop}:{num})",
     )
     g.add_argument(
+        "--offsets",
+        default=None,
+        metavar="VALUES",
+        help="lateral offsets y [m] from the long axis (start:stop:num or a comma list): map "
+        "the whole string face over (x, y), the frame bending and twisting; points off the "
+        "head outline (100 in^2 ellipse, 0.326 x 0.252 m) are left blank; prints the power "
+        "area (default: along the axis only)",
+    )
+    g.add_argument(
         "--ball-mass", type=float, default=0.057, metavar="KG", help="m_B [kg] (default 0.057)"
     )
     g.add_argument(
@@ -148,9 +157,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     o.add_argument(
         "--power-fraction",
         type=float,
-        default=DEFAULT_POWER_FRACTION,
         metavar="F",
-        help="power region: v_out >= F [-] x its maximum, 0 < F <= 1 (default 0.95)",
+        default=None,
+        help="power region: v_out >= F [-] x its maximum, 0 < F <= 1 (default 0.95); with "
+        "--offsets the power area, where e_A >= F x its maximum (default 0.9)",
     )
     o.add_argument(
         "--out",
@@ -191,12 +201,15 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("no_files = True is not allowed with --out: give one of them")
     default = not (args.out or args.no_files or args.json)
     outs = [Path(p) for p in (args.out or [])] or ([DEFAULT_OUTPUT] if default else [])
-    files = [f for path in outs for f in check_map_output(path, overwrite=True)]
+    files = [t.path for t in map_targets(outs)]
     overwrite = replace_own(args, default, files)
-    for path in outs:
-        check_map_output(path, overwrite=overwrite)
+    check_map_outputs(outs, overwrite=overwrite)  # also: no path given twice
     positions = as_values("position", args.positions)
     law = law_from_args(args)
+    if args.offsets is not None:
+        return _run_face(args, outs, positions, law)
+    if args.power_fraction is None:
+        args.power_fraction = DEFAULT_POWER_FRACTION
     maps = [
         racket_map(
             FrameModel.build(frame, args.elements),
@@ -217,8 +230,8 @@ def run(args: argparse.Namespace) -> int:
         )
         for name, frame in _rackets(args)
     ]
-    for path in outs:
-        write_map(maps, path, overwrite=overwrite, parameters=run_parameters(args))
+    if outs:  # as one set: all of them or none
+        write_maps(maps, outs, overwrite=overwrite, parameters=run_parameters(args))
     if args.json:
         objs = [m.summary() for m in maps]
         print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
@@ -238,4 +251,61 @@ def run(args: argparse.Namespace) -> int:
             text = "-" if value != value else significant(value, 4)
             print(f"  {label:<26} {text:>10} x/L")
     print_written(files)
+    return 0
+
+
+def _run_face(args: argparse.Namespace, outs: list[Path], positions: Any, law: Any) -> int:
+    """``--offsets``: the power map of the whole face (:mod:`fem_racket.studies.face_map`)."""
+    from fem_racket.io.face_files import write_face
+    from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
+    from fem_racket.validation import InputError
+
+    if law is not None:
+        raise InputError(
+            f"law = {law.name!r} is not allowed with --offsets: the face map runs the paper's "
+            "linear law (the batched engine)"
+        )
+    offsets = as_values("offset", args.offsets)
+    if args.power_fraction is None:
+        args.power_fraction = DEFAULT_AREA_FRACTION
+    options = dict(
+        ball_mass=args.ball_mass,
+        kcb=args.kcb,
+        zeta=args.zeta,
+        separation=args.separation,
+        modes=args.modes,
+        tolerance=args.tolerance,
+        power_fraction=args.power_fraction,
+    )
+    maps = [
+        face_map(
+            FrameModel.build(frame, args.elements),
+            positions=positions,
+            offsets=offsets,
+            name=name,
+            speed=args.speed,
+            racket_speed=args.racket_speed,
+            reference=args.reference,
+            pivot=args.pivot,
+            options=options,
+        )
+        for name, frame in _rackets(args)
+    ]
+    for path in outs:
+        write_face(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
+    if args.json:
+        objs = [m.summary() for m in maps]
+        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+        return 0
+    for m in maps:
+        x, y, e = m.max_apparent_cor
+        print(m.name)
+        print(f"  {'power area':<26} {significant(m.power_area_cm2, 4):>10} cm^2")
+        print(f"  {'max apparent COR':<26} {significant(e, 4):>10}")
+        print(f"  {'  at':<26} {significant(x, 4):>10} x/L, y = {y:g} m")
+        print(f"  {'mode-1 node':<26} {significant(m.node, 4):>10} x/L")
+        cop = "-" if m.cop != m.cop else significant(m.cop, 4)
+        print(f"  {'centre of percussion':<26} {cop:>10} x/L")
+    for path in outs:
+        print(f"{'written':<28} {path}")
     return 0

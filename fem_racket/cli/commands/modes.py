@@ -36,11 +36,12 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the modal analysis."""
-    from fem_racket.validation import InputError
+    from fem_racket.validation import InputError, work_begins
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
     model = build_model(args)
+    work_begins()
     fm = model.modes(args.count)
     if fm.omega.size < args.count:
         n, shown = model.mesh.n_elements, fm.omega.size
@@ -65,6 +66,11 @@ def run(args: argparse.Namespace) -> int:
         "frequencies_hz": fm.frequencies.tolist(),
         "nodes_x_over_l": nodes,
     }
+    if model.mesh.has_torsion:  # the frame in torsion (fem_racket.frame.torsion)
+        tm = model.torsion.modes(args.count)
+        data["polar_moment_kg_m2"] = tm.polar_moment
+        data["twist_weight_kg_cm2"] = tm.polar_moment * 1e4
+        data["torsion_frequencies_hz"] = tm.frequencies.tolist()
     if args.json:
         print_json(data)
         return 0
@@ -74,4 +80,10 @@ def run(args: argparse.Namespace) -> int:
     print(f"{'mode':>4} {'frequency [Hz]':>16}  nodes [x/L]")
     for k, (f, nd) in enumerate(zip(fm.frequencies, nodes, strict=True), start=1):
         print(f"{k:>4} {f:>16.2f}  " + ", ".join(f"{x:.3f}" for x in nd))
+    if model.mesh.has_torsion:
+        ip = data["polar_moment_kg_m2"]
+        print(f"{'polar moment (twistweight)':<28} {ip:>12.6f} kg m^2 ({ip * 1e4:.2f} kg cm^2)")
+        print(f"{'torsion':>7} {'frequency [Hz]':>13}")
+        for k, f in enumerate(data["torsion_frequencies_hz"], start=1):
+            print(f"{k:>7} {f:>13.2f}")
     return 0

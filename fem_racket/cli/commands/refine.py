@@ -22,7 +22,7 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.figure_files import check_dpi, figure_format
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError, show, work_begins
 
 FAMILY_CHOICES = (*FAMILIES, "both")
 
@@ -179,6 +179,12 @@ def run(args: argparse.Namespace) -> int:
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
+    most = 2 * max([n for n in args.elements if isinstance(n, int)] or [1])
+    if args.count > most:  # the finest mesh's flexible modes
+        raise InputError(
+            f"count = {args.count} is not allowed: must be an integer from 1 to {most} (the "
+            f"flexible modes of the finest mesh, {most // 2} elements)"
+        )
     if not args.grading >= 1.0 or args.grading == float("inf"):  # also NaN
         raise InputError(
             f"grading = {show(args.grading)} is not allowed: must be a finite number >= 1"
@@ -198,6 +204,7 @@ def run(args: argparse.Namespace) -> int:
         "zeta": args.zeta,
         "separation": args.separation,
     }
+    work_begins()
     studies = {
         fam: refinement_study(
             frame,

@@ -42,11 +42,13 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
 from fem_racket.cli.options.output import print_written
+from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.impact.simulate import simulate
+from fem_racket.io.config_run import NOT_WITH_HAND
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
     Target,
@@ -147,19 +149,15 @@ def _swing_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str,
     ]
 
 
-#: Options the hand-held racket does not take (it keeps its modes by --tolerance or all DOFs,
-#: and ends contact when the spring deflection falls to zero, the paper's criterion).
-NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
-
-
 def _check_hand(args: argparse.Namespace) -> None:
     """Refuse, before the run, the options the hand-held racket does not take, named as the
-    command line spells them (the library refuses the rest: a law, the general solver)."""
-    given = set(getattr(args, "explicit_options", ()))
+    user gave them - on the command line or in the run file (the library refuses the rest: a
+    law, the general solver)."""
+    given = given_options(args)
     for dest in NOT_WITH_HAND:
         if dest in given:
             raise InputError(
-                f"--{dest.replace('_', '-')} is not allowed with a hand: the held racket keeps "
+                f"{option_name(args, dest)} is not allowed with a hand: the held racket keeps "
                 "its modes by --tolerance (exact) or all its DOFs (cvode, bdf) and ends contact "
                 "by the spring deflection"
             )
@@ -219,8 +217,24 @@ def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, st
         ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound),
         ("peak force", significant(summary["peak_force_n"], 4), "N"),
         ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+        *_twist_rows(summary),
         *_swing_rows(summary, swinging),
         ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),
+    ]
+
+
+def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """Off axis: the offset, the racket's roll rate and the energy left in torsion."""
+    if "offset_m" not in summary:
+        return []
+    return [
+        ("offset from the axis", significant(summary["offset_m"], 4), "m"),
+        ("roll rate after impact", significant(summary["roll_rate_rad_s"], 4), "rad/s"),
+        (
+            "lost energy in torsion",
+            significant(100 * summary["torsion_energy_share"], 3),
+            "% (roll and torsion vibration)",
+        ),
     ]
 
 

@@ -37,6 +37,7 @@ DEFAULT_OUTPUT = Path("output") / "sweep.nc"
 
 _HELP = {
     "position": "impact point x/L [-] from the grip end (default 0.75)",
+    "offset": "lateral offset [m] of the impact point from the long axis, on the head (default 0)",
     "speed": "incident ball speed [m/s] (default 20)",
     "racket_speed": "racket speed towards the ball at --reference [m/s] (default 0)",
     "reference": "point x/L [-] whose speed --racket-speed gives (default 0.75)",

@@ -54,6 +54,14 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         help="impact point x/L [-] from the grip end, 0..1 (default 0.75)",
     )
     g.add_argument(
+        "--offset",
+        type=float,
+        default=0.0,
+        metavar="M",
+        help="lateral offset [m] of the impact point from the long axis, on the head outline "
+        "(100 in^2 ellipse, 0.326 x 0.252 m): the frame also twists (default 0: on the axis)",
+    )
+    g.add_argument(
         "--ball-mass",
         type=float,
         default=0.057,
@@ -288,6 +296,7 @@ def check_output_step(value: float) -> float:
 #: option at its default that the command line did not give is left to the library (so that one
 #: a solver or law does not use is refused only when it was asked for).
 SIMULATE_DEFAULTS: dict[str, Any] = {
+    "offset": 0.0,
     "ball_mass": None,
     "kcb": None,
     "zeta": None,

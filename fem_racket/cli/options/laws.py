@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import argparse
 
+from fem_racket.cli.options.runfile import option_name
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.presets import LAW_NAMES, check_linear_options, get_law, law_parameters
 from fem_racket.contact.registry import family_parameters
+from fem_racket.validation import InputError, show
 
 __all__ = ["add_law_options", "law_from_args"]
 
@@ -43,7 +45,16 @@ def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> 
 
 def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
     """The law the options describe (None: the paper's linear law from --kcb and --zeta);
-    --kcb or --zeta with another law is refused (that law would ignore them)."""
+    --kcb or --zeta with another law is refused (that law would ignore them), named as the user
+    gave it (a run file's ``contact.kcb_n_m``, ``zeta`` or ``clamped_cor`` by its key)."""
     name = getattr(args, "law", "linear")
-    check_linear_options(name, kcb=getattr(args, "kcb", None), zeta=getattr(args, "zeta", None))
+    kcb, zeta = getattr(args, "kcb", None), getattr(args, "zeta", None)
+    if name != "linear":
+        for dest in ("kcb", "zeta"):
+            if dest in getattr(args, "file_options", {}) and getattr(args, dest) is not None:
+                raise InputError(
+                    f"{option_name(args, dest)} is not allowed with contact law {show(name)}: "
+                    "it sets the paper's linear law's K_CB and zeta only"
+                )
+    check_linear_options(name, kcb=kcb, zeta=zeta)
     return get_law(name, **law_parameters(vars(args)))

@@ -25,7 +25,14 @@ from fem_racket.io.config import RunConfig, load_config
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
 from fem_racket.validation import InputError, show
 
-__all__ = ["add_config_option", "apply_config", "config_values", "file_options"]
+__all__ = [
+    "add_config_option",
+    "apply_config",
+    "config_values",
+    "file_options",
+    "given_options",
+    "option_name",
+]
 
 #: Options that never come from a run file.
 _NOT_FROM_FILE = frozenset({"help", "config", "version"})
@@ -39,6 +46,7 @@ def add_config_option(
     own: Iterable[str] = (),
     private: Iterable[str] = (),
     convert: Mapping[str, Callable[[str, Any], Any]] | None = None,
+    requires: Iterable[str] = (),
 ) -> None:
     """Give a command ``--config run.toml``; :func:`apply_config` does the rest.
 
@@ -55,6 +63,9 @@ def add_config_option(
     convert : mapping, optional
         dest -> ``f(dotted_key, value)`` checking and converting a table value instead of the
         option's own conversion (e.g. arrays for sweep grids); raise :class:`InputError`.
+    requires : iterable of str
+        Options (dests) the command cannot run without (``fit``'s targets): ``config --check``
+        checks the command only when the file's table for it is there.
     """
     parser.add_argument(
         "--config",
@@ -67,6 +78,7 @@ def add_config_option(
     parser.config_own = frozenset(own) | private  # type: ignore[attr-defined]
     parser.config_private = private  # type: ignore[attr-defined]
     parser.config_convert = dict(convert or {})  # type: ignore[attr-defined]
+    parser.config_requires = tuple(requires)  # type: ignore[attr-defined]
 
 
 def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.ArgumentParser:
@@ -208,10 +220,13 @@ def apply_config(
     sub = _subparser(parser, args.command)
     given = _explicit(sub, argv, args.command)
     args.explicit_options = given
+    args.file_options = {}
     path = getattr(args, "config", None)
     if not path:
         return args
     cfg = load_config(path)
+    args.config_raw = {f"{t}.{k}": v for t, ks in cfg.values.items() for k, v in ks.items()}
+    args.config_raw.update({f"{t}.{k}": v for t, ks in cfg.tables.items() for k, v in ks.items()})
     try:
         values = config_values(sub, args.command, cfg, given)
     except InputError as exc:
@@ -222,7 +237,40 @@ def apply_config(
         opts = ", ".join(f"--{d}" for d in sorted(clash))
         key = "frame." + next(iter(sorted(frame_file)))
         raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
+    keys = _file_keys(sub, args.command, cfg)
+    defaults = {a.dest: a.default for a in sub._actions}
     for dest, value in values.items():
         if dest not in given:
             setattr(args, dest, value)
+            if dest not in defaults or value != defaults[dest]:  # a default changes nothing
+                args.file_options[dest] = keys.get(dest, dest)
     return args
+
+
+def _file_keys(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, str]:
+    """dest -> the dotted run-file key that sets it (the command's table wins)."""
+    keys = {CORE_KEYS[t][k].dest: f"{t}.{k}" for t, ks in cfg.values.items() for k in ks}
+    table = COMMAND_TABLES.get(command, command)
+    keys.update({k.replace("-", "_"): f"{table}.{k}" for k in cfg.table(table)})
+    return keys
+
+
+def option_name(args: argparse.Namespace, dest: str) -> str:
+    """How the user set option ``dest``, for a message: ``--kcb 30000`` on the command line, or
+    ``contact.kcb_n_m = 30000 (run.toml)`` from a run file."""
+    value = show(getattr(args, dest, None))
+    key = getattr(args, "file_options", {}).get(dest)
+    if key is not None:
+        raw = getattr(args, "config_raw", {}).get(key)
+        return f"{key} = {show(raw if raw is not None else value)} ({args.config})"
+    return f"--{dest.replace('_', '-')} {value}"
+
+
+def given_options(args: argparse.Namespace) -> set[str]:
+    """The options the user set: on the command line, or in the run file to other than the
+    default (argparse dests; a file's key at its default changes nothing).
+
+    A check of the form "X is not allowed with Y" asks this, so that a run file's key is refused
+    where the same option on the command line would be (never silently ignored).
+    """
+    return set(getattr(args, "explicit_options", ())) | set(getattr(args, "file_options", ()))

@@ -282,6 +282,7 @@ def impacts(
     tolerance: float | None = DEFAULT_TOLERANCE,
     peak_force: bool = False,
     modes: int | None = None,
+    offset: Any = 0.0,
 ) -> ImpactBatch:
     """Impacts of the ball on a free frame: COR, contact time (and peak force) per case.
 
@@ -314,6 +315,9 @@ def impacts(
         Use only the lowest ``modes`` flexible modes (a plain truncation, as
         ``simulate(modes=...)``), then drop those the tolerance does not need. None: the modes
         below the cut-off are computed and the others enter through static solves.
+    offset : array_like
+        Lateral offsets of the impact points from the long axis [m] (0: on it); off axis the
+        frame also twists (:mod:`fem_racket.impact.offaxis`).
 
     Returns
     -------
@@ -332,9 +336,31 @@ def impacts(
         np.shape(zeta),
         np.shape(ball_mass),
         np.shape(ei_factor),
+        np.shape(offset),
     )
     laws = _laws(speed, kcb, zeta, ball_mass, shape)
     scale = np.broadcast_to(np.asarray(ei_factor, dtype=float), shape).ravel()
+    if modes is not None:
+        check_integer("modes", modes)
+    if np.any(np.asarray(offset) != 0.0):
+        from fem_racket.impact.offaxis import check_offsets, engine_data
+
+        off = np.broadcast_to(check_offsets(model, pos, offset), shape).ravel()
+        _, k, _, _, mb = laws
+        data, index = engine_data(
+            model,
+            np.broadcast_to(pos, shape).ravel(),
+            off,
+            scale,
+            lambda rig: np.sqrt(k * (1.0 / mb + rig)),
+            cutoff_factor(tolerance, separation),
+            modes,
+        )
+        return _run(
+            data.omega, data.values, index, data.rigid, data.residual_flexibility,
+            data.residual_mass, np.ones_like(scale), laws, separation, tolerance, peak_force,
+            shape,
+        )  # fmt: skip
     uniq, index = np.unique(np.broadcast_to(pos, shape).ravel(), return_inverse=True)
     beta = cutoff_factor(tolerance, separation)
     cutoff = None
@@ -345,8 +371,6 @@ def impacts(
         rig = 1.0 / props.mass + d * d / props.inertia
         wc = np.sqrt(k * (1.0 / mb + rig[index]))
         cutoff = float(np.max(beta * wc / np.sqrt(scale)))
-    if modes is not None:
-        check_integer("modes", modes)
     data = frame_modal_data(model, uniq, cutoff, limit=modes)
     return _run(
         data.omega,

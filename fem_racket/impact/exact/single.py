@@ -26,6 +26,7 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.exact.roots import RootSet, coupled_roots
 from fem_racket.impact.exact.separation import impulse, peak_force, separation_time
+from fem_racket.impact.offaxis import RIGID_OFFAXIS, combined_modes, combined_point_vector
 from fem_racket.impact.point import frame_modal_data
 from fem_racket.impact.problem import Impact
 from fem_racket.impact.reduction import cutoff_factor, pole_blocks
@@ -47,20 +48,32 @@ def engine_impact(
     modes: int | None,
     tolerance: float | None,
     t_max: float | None,
+    offset: float = 0.0,
 ) -> tuple[Trajectory, np.ndarray, int]:
     """Trajectory at t = 0 and t_c in the coordinates [u_B, rigid, flexible modes], the matrix
-    taking the frame coordinates to Hermite DOFs, and the number of flexible modes in the model
-    (those above the cut-off are represented by the residual pseudo-mode).
+    taking the frame coordinates to Hermite DOFs (off axis: then the torsion DOFs, see
+    :func:`fem_racket.impact.offaxis.combined_modes`), and the number of flexible modes in the
+    model (those above the cut-off are represented by the residual pseudo-mode).
 
     ``modes`` bounds the frame modes used (a plain truncation, as the other paths);
-    ``tolerance`` then drops those not needed for it (None: keep them all).
+    ``tolerance`` then drops those not needed for it (None: keep them all). ``offset`` [m]: the
+    impact point's distance from the long axis (:mod:`fem_racket.impact.offaxis`).
     """
-    fm = model.modes(modes)
-    data = frame_modal_data(model, np.array([impact.position]), None, limit=fm.omega.size)
-    a = data.values[0]
+    x_i = impact.position * model.mesh.length
+    if offset == 0.0:
+        fm = model.modes(modes)
+        data = frame_modal_data(model, np.array([impact.position]), None, limit=fm.omega.size)
+        omega, a, shapes = data.omega, data.values[0], fm.all_shapes
+        rig = model.fe.point_vector(x_i) @ fm.rigid
+        rigid = float(data.rigid[0])
+    else:  # off axis: bending and torsion modes in one basis (fem_racket.impact.offaxis)
+        cm = combined_modes(model, modes)
+        aa = cm.all_shapes.T @ combined_point_vector(model, x_i, offset)
+        omega, a, shapes, rig = cm.omega, aa[RIGID_OFFAXIS:], cm.all_shapes, aa[:RIGID_OFFAXIS]
+        rigid = float(rig @ rig)
     k = contact.stiffness
     c = contact.damping(ball.mass)
-    mu0 = 1.0 / ball.mass + float(data.rigid[0])
+    mu0 = 1.0 / ball.mass + rigid
     wc = math.sqrt(k * mu0)
     t_est = math.pi / wc
     limit = T_MAX_FACTOR * t_est if t_max is None else t_max
@@ -68,11 +81,9 @@ def engine_impact(
     # As the batch: a near-touch of zero before separation is solved again with every mode.
     for beta in (cutoff_factor(tolerance, separation), math.inf):
         _, d, v = next(
-            pole_blocks(
-                data.omega[None], a[None], np.array([mu0]), np.array([wc]), beta, zero, zero
-            )
+            pole_blocks(omega[None], a[None], np.array([mu0]), np.array([wc]), beta, zero, zero)
         )
-        kept = int(np.sum(data.omega < beta * wc))
+        kept = int(np.sum(omega < beta * wc))
         roots = next(r for p, r in coupled_roots(d, v, np.array([k]), np.array([c])) if p.size)
         lam = roots.lam[0]
         fw = (k + c * lam) * roots.res[0]
@@ -91,13 +102,12 @@ def engine_impact(
     F = m * float((fw * e).real.sum())
     dF = m * float((fw * lam * e).real.sum())
     V = impact.speed
-    n_rigid = fm.rigid.shape[1]
+    n_rigid = rig.size
     x = np.zeros((2, 1 + n_rigid + a.size))
     xv = np.zeros_like(x)
     x[1, 0], xv[0, 0], xv[1, 0] = tc - P / ball.mass, 1.0, 1.0 - J / ball.mass
-    rig = model.fe.point_vector(impact.position * model.mesh.length) @ fm.rigid
     x[1, 1 : 1 + n_rigid], xv[1, 1 : 1 + n_rigid] = rig * P, rig * J
-    w2 = data.omega**2
+    w2 = omega**2
     den = lam[None, :] ** 2 + w2[:, None]  # (modes, roots)
     x[1, 1 + n_rigid :] = a * np.where(
         np.arange(a.size) < kept, m * ((fw * e)[None, :] / den).real.sum(axis=1), F / w2
@@ -107,4 +117,4 @@ def engine_impact(
     )
     peak = float(peak_force(one, fw[None], np.array([tc]))[0][0]) * V
     traj = Trajectory(np.array([0.0, tc]), x * V, xv * V, peak)
-    return traj, fm.all_shapes, int(data.omega.size)
+    return traj, shapes, int(omega.size)

@@ -34,7 +34,10 @@ _PARAMETERS = {
     HuntCrossley: lambda law: (law.stiffness, law.exponent, law.alpha),
     Hysteretic: lambda law: (law.k1, law.k2, law.exponent),
     SeriesBallString: lambda law: (
-        law.ball_stiffness, law.ball_damping, law.string_stiffness, law.string_cubic
+        law.ball_stiffness,
+        law.ball_damping,
+        law.string_stiffness,
+        law.string_cubic,
     ),
 }
 _STATES = {None: 0, "memory": 1, "ode": 2}

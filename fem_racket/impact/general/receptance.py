@@ -48,8 +48,9 @@ class Receptance:
         spanning frames, :mod:`fem_racket.impact.general.batches`; the compiled march only).
     a : ndarray, shape (C, n)
         Mass-normalised flexible mode shapes at each case's impact point [1/sqrt(kg)].
-    rigid : ndarray, shape (C, 2)
-        Rigid-mode shapes (translation, rotation about the CG) at the impact point [1/sqrt(kg)].
+    rigid : ndarray, shape (C, 2) or (C, 3)
+        Rigid-mode shapes (translation, rotation about the CG; off axis the roll) at the impact
+        point [1/sqrt(kg)].
     ball_mass : ndarray, shape (C,)
         m_B [kg].
     """
@@ -175,7 +176,8 @@ def free_motion(
     d = speed[:, None] * t[None, :]
     v = np.broadcast_to(speed[:, None], d.shape).copy()
     if frame_velocity is not None:
-        rig, flex = frame_velocity[:, :2], frame_velocity[:, 2:]
+        n_rigid = rec.rigid.shape[1]  # 2, or 3 off axis (the roll)
+        rig, flex = frame_velocity[:, :n_rigid], frame_velocity[:, n_rigid:]
         wr = np.sum(rec.rigid * rig, axis=1)
         d -= wr[:, None] * t
         v -= wr[:, None]

@@ -36,6 +36,7 @@ from fem_racket.impact.held.shock import (
 from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
 from fem_racket.impact.problem import HeldRacket, ImpactProblem
 from fem_racket.impact.swing import Swing, ball_speed_out
+from fem_racket.impact.system import check_output_count
 from fem_racket.validation import InputError, check_choice, check_range
 
 __all__ = ["HELD_RUN_SOLVERS", "HeldRun", "HeldSettings", "hand_summary", "held_impact"]
@@ -204,6 +205,8 @@ def held_impact(problem: ImpactProblem, settings: HeldSettings | None = None) ->
     window = check_range("shock_window", window, 0.0, MAX_WINDOW, unit="s", include_low=False)
     if not s.output_step > 0.0:
         raise InputError(f"output_step = {s.output_step!r} s is not allowed: must be > 0")
+    if s.histories or s.solver != "exact":  # the integrators sample at output_step
+        check_output_count(s.output_step, window, f"the shock window's {window:g} s")
     if s.solver == "exact":
         step = s.output_step if s.histories else None
         out, hist, used = _exact(problem, s.tolerance, window, step)

@@ -62,6 +62,8 @@ class Evaluator:
         What a design's outputs are (:data:`Function`): the racket physics
         (:func:`.objectives.evaluate_rows`) by default; another function gives the same columns
         from a model of the user's (e.g. a synthetic objective with a known optimum).
+    restart : bool
+        Discard the designs an earlier run left in ``history``.
     """
 
     def __init__(
@@ -73,6 +75,7 @@ class Evaluator:
         workers: int | None = None,
         scheduler: str | None = None,
         function: Function = evaluate_rows,
+        restart: bool = False,
     ) -> None:
         if backend is not None:
             check_choice("backend", backend, BACKENDS)
@@ -83,7 +86,12 @@ class Evaluator:
         self.names = output_names(problem)
         self.backend, self.workers, self.scheduler = backend, workers, scheduler
         self.history = History(
-            problem.n_var, len(self.names), history, problem.digest, problem.describe()
+            problem.n_var,
+            len(self.names),
+            history,
+            problem.digest,
+            problem.describe(),
+            restart=restart,
         )
         self.computed = 0
 

@@ -16,10 +16,11 @@ import numpy as np
 
 from fem_racket.extras import require
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.limits import check_sobol_size
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.scaling import progress_bar
 from fem_racket.studies.views import SobolView
-from fem_racket.validation import InputError, check_choice, check_integer
+from fem_racket.validation import InputError, check_choice
 
 __all__ = ["SobolIndices", "sobol_indices"]
 
@@ -99,8 +100,7 @@ def sobol_indices(
     output = problem.objectives[0] if output is None else output
     check_choice("output", output, tuple(evaluator.names))
     d = problem.n_var
-    total = check_integer("designs", designs, minimum=d + 2)
-    n = 1 << int(np.ceil(np.log2(max(total / (d + 2), 2))))
+    n = check_sobol_size(problem, designs)
     spec = {"num_vars": d, "names": problem.names, "bounds": [[0.0, 1.0]] * d}
     u = sample.sample(spec, n, calc_second_order=False, seed=seed)
     x = problem.from_unit(u)

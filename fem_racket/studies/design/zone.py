@@ -18,7 +18,7 @@ import numpy as np
 
 from fem_racket.validation import InputError, check_integer, check_positive, check_range
 
-__all__ = ["ImpactZone", "gaussian_zone", "uniform_zone"]
+__all__ = ["MAX_ZONE_POINTS", "ImpactZone", "gaussian_zone", "uniform_zone"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -58,11 +58,16 @@ class ImpactZone:
         return np.asarray(values) @ self.weights
 
 
+#: Most impact points of a zone: each is one impact per design and speed, and a batch of designs
+#: holds them all at once (a smooth mean over x/L needs tens; the paper's 20, Hatze's 20-40).
+MAX_ZONE_POINTS = 1000
+
+
 def uniform_zone(low: float = 0.6, high: float = 0.9, points: int = 20) -> ImpactZone:
     """Evenly spaced points over [low, high] x/L with equal weights."""
     lo = check_range("zone low", low, 0.0, 1.0, unit="x/L")
     hi = check_range("zone high", high, 0.0, 1.0, unit="x/L")
-    n = check_integer("zone points", points, minimum=1)
+    n = check_integer("zone_points", points, minimum=1, maximum=MAX_ZONE_POINTS)
     if n > 1 and hi <= lo:
         raise InputError(f"zone high = {high!r} x/L is not allowed: must exceed low = {low!r}")
     x = np.linspace(lo, hi, n) if n > 1 else np.array([0.5 * (lo + hi)])
@@ -73,7 +78,7 @@ def gaussian_zone(centre: float, sigma: float = 0.05, points: int = 20) -> Impac
     """Points over centre +- 2.5 sigma (x/L, clipped to [0, 1]) weighted by a normal density."""
     c = check_range("zone centre", centre, 0.0, 1.0, unit="x/L")
     s = check_positive("zone sigma", sigma, "x/L")
-    n = check_integer("zone points", points, minimum=2)
+    n = check_integer("zone_points", points, minimum=2, maximum=MAX_ZONE_POINTS)
     x = np.linspace(max(0.0, c - 2.5 * s), min(1.0, c + 2.5 * s), n)
     w = np.exp(-0.5 * ((x - c) / s) ** 2)
     return ImpactZone(x, w, f"Gaussian about {c:.4g} L, sigma {s:g} L, {n} points (Hatze 1994)")
