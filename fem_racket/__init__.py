@@ -23,7 +23,6 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "contact.presets": ("get_law",),
     "contact.series": ("SeriesBallString",),
     "frame.catalogue": ("Catalogue", "catalogue"),
-    "frame.clock": ("HeadEllipse",),
     "frame.continuous": ("free_free_frequencies",),
     "frame.fe": ("FrameFE",),
     "frame.forms": ("assemble",),

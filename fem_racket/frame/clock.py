@@ -9,8 +9,8 @@ m r^2 to the polar moment about the long axis (the twistweight).
 
 Head geometry (an assumption, not a measured frame): the string bed is an ellipse of length
 ``length_m`` and width ``width_m`` centred on the long axis at ``centre`` x/L; the lead sits on
-the frame around it. The default is the 100 in^2 (645 cm^2) head of
-:mod:`fem_racket.frame.head`'s ``DEFAULT_HEAD`` (0.326 m x 0.252 m centred at 0.74 L), so r at
+the frame around it (:class:`fem_racket.frame.head.HeadOutline`). The default is the 100 in^2
+(645 cm^2) head ``DEFAULT_HEAD`` (0.326 m x 0.252 m centred at 0.74 L), so r at
 3/9 is 0.126 m (DESIGN.md section 10: r is about 0.11-0.13 m on rackets). Clock hour h sits at
 the angle theta = 30 deg x h from the tip::
 
@@ -26,76 +26,25 @@ weight only by its own tiny strip inertia); the butt is x = 0.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
-from fem_racket.validation import InputError, check_positive, show
+from fem_racket.frame.head import HeadOutline
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "CLOCK_PLACES",
-    "DEFAULT_HEAD_CENTRE",
-    "DEFAULT_HEAD_LENGTH",
-    "DEFAULT_HEAD_WIDTH",
     "HANDLE_X",
     "PLACES",
-    "HeadEllipse",
     "Place",
     "place_at",
 ]
 
-#: Length and width of the default string bed [m] and its centre [x/L] (100 in^2 = 645 cm^2).
-DEFAULT_HEAD_LENGTH, DEFAULT_HEAD_WIDTH, DEFAULT_HEAD_CENTRE = 0.326, 0.252, 0.74
 #: The "handle" place: middle of the grip, from the butt [m].
 HANDLE_X = 0.10
 #: Clock places -> the hour whose angle from the tip they sit at.
 CLOCK_PLACES = {"12": 0, "2/10": 2, "3/9": 3, "4/8": 4}
 #: Every named place, tip first.
 PLACES = (*CLOCK_PLACES, "throat", "handle", "butt")
-
-
-@dataclass(frozen=True)
-class HeadEllipse:
-    """The string bed: an ellipse on the long axis (the fields of ``frame.head.HeadOutline``).
-
-    Parameters
-    ----------
-    length_m, width_m : float
-        Bed length (along the axis) and width [m].
-    centre : float
-        Centre of the ellipse as x/L from the butt.
-    frame_length_m : float
-        Frame length L [m]; the bed must lie on the frame.
-    """
-
-    length_m: float = DEFAULT_HEAD_LENGTH
-    width_m: float = DEFAULT_HEAD_WIDTH
-    centre: float = DEFAULT_HEAD_CENTRE
-    frame_length_m: float = 0.680
-
-    def __post_init__(self) -> None:
-        check_positive("head length", self.length_m, "m")
-        check_positive("head width", self.width_m, "m")
-        check_positive("frame length", self.frame_length_m, "m")
-        lo, hi = self.centre_m - self.length_m / 2.0, self.centre_m + self.length_m / 2.0
-        if not 0.0 <= lo < hi <= self.frame_length_m:
-            raise InputError(
-                f"head length = {show(self.length_m)} m is not allowed with centre "
-                f"{show(self.centre)} x/L: the head ({lo:.4g} to {hi:.4g} m) must lie on the "
-                f"frame (0 to {self.frame_length_m:.4g} m)"
-            )
-
-    def on_frame(self, frame_length_m: float) -> HeadEllipse:
-        """The same head (size and centre x/L) on a frame of length ``frame_length_m`` [m]."""
-        return replace(self, frame_length_m=frame_length_m)
-
-    @property
-    def centre_m(self) -> float:
-        """x of the bed's centre (the widest point) from the butt [m]."""
-        return self.centre * self.frame_length_m
-
-    @property
-    def area_m2(self) -> float:
-        """Area of the bed [m^2]."""
-        return math.pi * self.length_m * self.width_m / 4.0
 
 
 @dataclass(frozen=True)
@@ -117,7 +66,7 @@ class Place:
     r: float
 
 
-def place_at(name: str, head: HeadEllipse) -> Place:
+def place_at(name: str, head: HeadOutline) -> Place:
     """The place ``name``: one of :data:`PLACES` or a distance from the butt in metres.
 
     Raises

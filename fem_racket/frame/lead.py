@@ -20,7 +20,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.frame.clock import HeadEllipse, Place, place_at
+from fem_racket.frame.clock import Place, place_at
+from fem_racket.frame.head import HeadOutline
 from fem_racket.frame.masses import DEFAULT_WIDTH, AddedMass, add_masses, strip_ends
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.specs import SWING_AXIS
@@ -76,7 +77,7 @@ def _strip(place: Place, length: float, width: float) -> tuple[float, float]:
 
 
 def lead_moments(
-    place: str, head: HeadEllipse, *, width: float = DEFAULT_WIDTH, axis: float = SWING_AXIS
+    place: str, head: HeadOutline, *, width: float = DEFAULT_WIDTH, axis: float = SWING_AXIS
 ) -> np.ndarray:
     """What 1 kg at ``place`` adds: [mass, first moment about the butt, swing weight, twistweight].
 
@@ -92,7 +93,7 @@ def lead_moments(
 
 
 def add_lead(
-    mesh: FrameMesh, leads: Sequence[Lead], head: HeadEllipse, *, width: float = DEFAULT_WIDTH
+    mesh: FrameMesh, leads: Sequence[Lead], head: HeadOutline, *, width: float = DEFAULT_WIDTH
 ) -> FrameMesh:
     """``mesh`` with every lead added as a strip (module docstring); massless leads are skipped."""
     if abs(head.frame_length_m - mesh.length) > 1e-9 * mesh.length:

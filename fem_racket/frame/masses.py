@@ -104,8 +104,7 @@ def add_masses(mesh: FrameMesh, masses: Sequence[AddedMass]) -> FrameMesh:
         nodes = np.union1d(nodes, [a, b])
     out = insert_nodes(mesh, [e / length for ab in ends for e in ab])
     rho = out.rhoA.copy()
-    polar = getattr(out, "rhoIp", None)
-    polar = None if polar is None else np.array(polar, dtype=float)
+    polar = np.array(out.rhoIp, dtype=float) if out.has_torsion else None
     mid = 0.5 * (out.points[:-1] + out.points[1:])
     for m, (a, b) in zip(masses, ends, strict=True):
         cells = (mid > a) & (mid < b)

@@ -4,8 +4,10 @@ The figure: a table of every racket's numbers (and B - A), e_A and v_out along t
 the power regions shaded and the best points marked, and the difference curves of each racket
 minus the first. The netCDF: the maps of :func:`fem_racket.io.map_files.map_dataset` (dims
 racket, position) plus ``apparent_cor_difference`` and ``ball_speed_out_difference_m_s`` (dims
-difference, position: each racket after the first minus the first) and every scalar of the
-report as a variable over racket (NaN where undefined).
+difference, position: each racket after the first minus the first), every scalar of the report
+as a variable over racket (NaN where undefined) and, with face maps, ``apparent_cor_face`` and
+``ball_speed_out_face_m_s`` (racket, offset, position) with their ``_difference`` (difference,
+offset, position). With face maps the figure's bottom row shows the face maps' differences.
 """
 
 from __future__ import annotations
@@ -34,12 +36,14 @@ ROWS = {
     "swing_weight_kg_cm2": ("swing weight [kg cm^2]", 1.0, 1),
     "twist_weight_kg_cm2": ("twistweight [kg cm^2]", 1.0, 2),
     "f1_hz": ("f1 [Hz]", 1.0, 1),
+    "torsion_f1_hz": ("torsion f1 [Hz]", 1.0, 1),
     "ball_mass_kg": ("ball [g]", 1e3, 1),
     "node_x_over_l": ("mode-1 node [x/L]", 1.0, 3),
     "max_apparent_cor_x_over_l": ("max e_A at [x/L]", 1.0, 3),
     "max_apparent_cor": ("max e_A [-]", 1.0, 3),
     "max_ball_speed_out_m_s": ("max v_out [m/s]", 1.0, 2),
     "power_region_length_m": ("power region [cm]", 1e2, 1),
+    "power_area_cm2": ("power area [cm^2]", 1.0, 0),
     "contact_time_s": ("contact time [ms]", 1e3, 3),
     "handle_shock_rms_n": ("handle shock RMS [N]", 1.0, 1),
     "peak_grip_force_n": ("peak grip force [N]", 1.0, 1),
@@ -114,7 +118,8 @@ def plot_compare(
             for ax in (ax_e, ax_v):
                 ax.axvline(m.spots.node, color=c, ls=":", lw=1)
     x = reports[0].map.positions
-    for k, (name, d) in enumerate(diffs.items(), start=1):
+    faces = reports[0].face is not None
+    for k, (name, d) in enumerate([] if faces else diffs.items(), start=1):
         label = f"{name} - {names[0]}"
         ax_de.plot(x, d["apparent_cor_curve"], color=f"C{k}", label=label)
         ax_dv.plot(x, d["ball_speed_out_curve_m_s"], color=f"C{k}", label=label)
@@ -126,6 +131,8 @@ def plot_compare(
     ax_v.set_xlabel("impact point x/L from the butt [-] (dotted: mode-1 nodes; dots: max e_A)")
     ax_de.set_ylabel("difference in e_A [-]")
     ax_dv.set_ylabel("difference in v_out [m/s]")
+    if faces:  # the face maps' differences instead of the axis's
+        _face_differences(fig, ax_de, ax_dv, reports, diffs)
     m0 = reports[0].map
     ax_e.set_title(
         f"ball at {m0.speed:g} m/s; shaded: power region (v_out >= "
@@ -134,9 +141,29 @@ def plot_compare(
     )
     for ax in (ax_e, ax_v, ax_de, ax_dv):
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, loc="best")
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7, loc="best")
     fig.tight_layout()
     return save_figure(fig, path, provenance(parameters), overwrite=overwrite)
+
+
+def _face_differences(fig: Any, ax_e: Any, ax_v: Any, reports: Sequence[Report], diffs) -> None:
+    """Filled contours of the first difference's e_A and v_out over the face (y [m] against
+    x/L), the head outline drawn."""
+    face = reports[0].face
+    name, d = next(iter(diffs.items()))
+    for ax, key, text in (
+        (ax_e, "apparent_cor_face", "e_A"),
+        (ax_v, "ball_speed_out_face_m_s", "v_out [m/s]"),
+    ):
+        z = d[key]
+        top = float(np.nanmax(np.abs(z))) if np.any(np.isfinite(z)) else 0.0
+        top = top or 1.0
+        levels = np.linspace(-top, top, 17)
+        cs = ax.contourf(face.positions, face.offsets, z, levels=levels, cmap="RdBu_r")
+        fig.colorbar(cs, ax=ax, shrink=0.9)
+        ax.set_ylabel("offset y [m] (line: the long axis)")
+        ax.set_title(f"difference in {text}: {name} - {reports[0].map.name}", fontsize=8)
 
 
 def _dataset(
@@ -154,6 +181,17 @@ def _dataset(
     ):
         data = np.array([d[key] for d in diffs.values()], dtype=float)
         ds[var] = (("difference", "position"), data, {"units": unit})
+    if reports[0].face is not None:
+        faces = [r.face for r in reports]
+        ds = ds.assign_coords(offset=("offset", faces[0].offsets, {"units": "m"}))
+        dims = ("racket", "offset", "position")
+        for key, attr, unit in (
+            ("apparent_cor_face", "apparent_cor", "1"),
+            ("ball_speed_out_face_m_s", "ball_speed_out", "m/s"),
+        ):
+            ds[key] = (dims, np.stack([getattr(f, attr) for f in faces]), {"units": unit})
+            data = np.array([d[key] for d in diffs.values()], dtype=float)
+            ds[f"{key}_difference"] = (("difference", "offset", "position"), data)
     values = [r.values() for r in reports]
     for key in values[0]:
         column = [np.nan if v[key] is None else v[key] for v in values]

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import Lead, add_lead, parse_lead
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import standard_frame
@@ -62,6 +62,6 @@ def read_setup(text: str, *, elements: int = 20, leads: Sequence[Lead] = ()) -> 
         return setup
     mesh = setup.frame
     mesh = mesh if isinstance(mesh, FrameMesh) else frame_mesh(mesh, setup.elements)
-    mesh = add_lead(mesh, all_leads, HeadEllipse().on_frame(mesh.length))
+    mesh = add_lead(mesh, all_leads, DEFAULT_HEAD.on_frame(mesh.length))
     name = setup.name + "".join(f"+{lead.label()}" for lead in [*leads, *more])
     return Setup(name, mesh, setup.ball_mass, setup.kcb, setup.zeta, setup.law, setup.elements)

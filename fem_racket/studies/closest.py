@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.frame.catalogue import Catalogue
-from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.lead import lead_moments
 from fem_racket.frame.specs import KG_CM2
 from fem_racket.studies.customise import SPECS, Target, plan_lead
@@ -68,7 +68,7 @@ def distance(listed: Listed, targets: Mapping[str, Target]) -> tuple[float, list
     return float(np.sqrt(total)), missing
 
 
-def predicted(base: Catalogue, added: Mapping[str, float], head: HeadEllipse) -> Catalogue:
+def predicted(base: Catalogue, added: Mapping[str, float], head: HeadOutline) -> Catalogue:
     """Catalogue numbers after adding ``added`` (place -> kg) to a racket with ``base``."""
     d = sum((m * lead_moments(p, head) for p, m in added.items()), np.zeros(4))
     mass = base.mass + d[0]
@@ -135,7 +135,7 @@ def closest(
     lead_targets = {k: t for k, t in targets.items() if k in SPECS}
     out = []
     for (d, missing), _, r in ranked[:count]:
-        head = HeadEllipse().on_frame(r.specs.length)
+        head = DEFAULT_HEAD.on_frame(r.specs.length)
         for p in places:  # a bad place is the user's error, not this racket's limit
             lead_moments(p, head)
         try:

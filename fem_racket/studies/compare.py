@@ -5,13 +5,16 @@ ball/string law) under the same play (:class:`Play`: ball speed, swing, the impa
 single-impact measures and the hand), one :class:`Report`:
 
 - catalogue numbers (:mod:`fem_racket.frame.catalogue`): mass, balance, swing weight,
-  twistweight (frames with polar mass data), f1;
+  f1, and on frames with torsion data the twistweight and the first torsion frequency;
 - the maps of e_A and v_out along the frame and the sweet spots
   (:func:`fem_racket.studies.racket_map.racket_map`), the power region [x/L] and its length [m];
 - at the impact point ``Play.position``: contact time (:func:`fem_racket.simulate`, any law)
   and the handle shock of the racket held by ``Play.grip`` (vibration RMS and peak of the grip
   force, :mod:`fem_racket.impact.held.shock`; the paper's linear law only, None under another
-  law).
+  law);
+- with ``Play.offsets``, the face map of e_A and v_out over (x, y)
+  (:func:`fem_racket.studies.face_map.face_map`: the frame bends and twists; the paper's linear
+  law) and its power area [cm^2].
 
 :func:`differences` gives every scalar of each later report minus the first's (B - A); the
 maps' differences are taken on the shared x/L grid.
@@ -36,6 +39,7 @@ from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, grip_peak, vibration_rms
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
+from fem_racket.studies.face_map import FaceMap, face_map
 from fem_racket.studies.racket_map import RacketMap, racket_map
 from fem_racket.validation import InputError, check_choice, check_range
 
@@ -79,7 +83,8 @@ class Setup:
 class Play:
     """How every set-up is played: ball speed [m/s], swing (speed [m/s] of the point
     ``reference`` x/L, pivot [m from the butt] or None), the grid of the maps (x/L), the
-    impact point [x/L] of the single-impact measures and the grip holding the racket."""
+    impact point [x/L] of the single-impact measures, the grip holding the racket and, to map
+    the whole face, the lateral offsets [m] of its grid (None: along the axis only)."""
 
     speed: float = 20.0
     racket_speed: float = 0.0
@@ -88,6 +93,7 @@ class Play:
     positions: Any = None
     position: float = 0.75
     grip: str = "firm"
+    offsets: Any = None
 
     def __post_init__(self) -> None:
         check_range("position", self.position, 0.0, 1.0, unit="x/L")
@@ -104,6 +110,7 @@ class Report:
     contact_time: float
     shock_rms: float | None
     shock_peak: float | None
+    face: FaceMap | None = None
 
     def values(self) -> dict[str, float | None]:
         """Every scalar, JSON-ready, units in the keys."""
@@ -125,6 +132,7 @@ class Report:
                 "contact_time_s": self.contact_time,
                 "handle_shock_rms_n": self.shock_rms,
                 "peak_grip_force_n": self.shock_peak,
+                "power_area_cm2": None if self.face is None else self.face.power_area_cm2,
             }
         )
         return {k: (None if v is None or v != v else float(v)) for k, v in out.items()}
@@ -168,6 +176,23 @@ def report(setup: Setup, play: Play) -> Report:
     )
     closing = closing_speed(play.speed, sw.speed_at(play.position * model.mesh.length))
     shock = _shock(model, setup, play, closing)
+    face = None
+    if play.offsets is not None:
+        if setup.law is not None:
+            raise InputError(
+                f"offsets are not allowed with {setup.name}'s contact law {setup.law.name!r}: "
+                "the face map runs the paper's linear law"
+            )
+        opts = {"ball_mass": setup.ball_mass, "kcb": setup.kcb, "zeta": setup.zeta}
+        face = face_map(
+            model,
+            positions=rmap.positions,
+            offsets=play.offsets,
+            name=setup.name,
+            speed=play.speed,
+            options=opts,
+            **swing,
+        )
     return Report(
         setup,
         catalogue(model),
@@ -175,6 +200,7 @@ def report(setup: Setup, play: Play) -> Report:
         one.contact_time,
         None if shock is None else shock[0],
         None if shock is None else shock[1],
+        face,
     )
 
 
@@ -200,7 +226,7 @@ def compare(setups: Sequence[Setup], play: Play | None = None) -> list[Report]:
 
 def differences(reports: Sequence[Report]) -> dict[str, dict[str, Any]]:
     """Label of each later set-up -> its scalars minus the first's (None where either is None),
-    and its e_A and v_out curves minus the first's on the shared grid."""
+    and its e_A and v_out curves (and face maps) minus the first's on the shared grid."""
     first = reports[0]
     base = first.values()
     out: dict[str, dict[str, Any]] = {}
@@ -213,5 +239,8 @@ def differences(reports: Sequence[Report]) -> dict[str, dict[str, Any]]:
         }
         d["apparent_cor_curve"] = (r.map.apparent_cor - first.map.apparent_cor).tolist()
         d["ball_speed_out_curve_m_s"] = (r.map.ball_speed_out - first.map.ball_speed_out).tolist()
+        if r.face is not None and first.face is not None:
+            d["apparent_cor_face"] = r.face.apparent_cor - first.face.apparent_cor
+            d["ball_speed_out_face_m_s"] = r.face.ball_speed_out - first.face.ball_speed_out
         out[r.map.name] = d
     return out

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.frame.catalogue import Catalogue, catalogue
-from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.lead import Lead, add_lead, lead_moments
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.specs import KG_CM2
@@ -187,7 +187,7 @@ def _refuse(base: Catalogue, coef: np.ndarray, targets: Mapping[str, Target]) ->
 
 
 def plan_lead(
-    base: Catalogue, targets: Mapping[str, Target], places: Sequence[str], head: HeadEllipse
+    base: Catalogue, targets: Mapping[str, Target], places: Sequence[str], head: HeadOutline
 ) -> dict[str, float]:
     """Place -> least lead [kg] bringing a racket with catalogue numbers ``base`` to
     ``targets`` (module docstring); no mesh needed (the numbers are linear in the masses).
@@ -216,7 +216,7 @@ def customise(
     mesh: FrameMesh,
     targets: Mapping[str, Target],
     places: Sequence[str],
-    head: HeadEllipse | None = None,
+    head: HeadOutline | None = None,
 ) -> Customisation:
     """The least total lead at ``places`` meeting ``targets``, on the mesh (:func:`plan_lead`).
 
@@ -228,7 +228,7 @@ def customise(
         Keys of :data:`SPECS` -> :class:`Target` (SI).
     places : sequence of str
         Allowed places (:data:`fem_racket.frame.clock.PLACES` or distances from the butt [m]).
-    head : HeadEllipse, optional
+    head : HeadOutline, optional
         The head (the default head on a racket of this length when None).
 
     Returns
@@ -236,7 +236,7 @@ def customise(
     Customisation
         Its ``after`` numbers recomputed from the customised mesh.
     """
-    head = head or HeadEllipse().on_frame(mesh.length)
+    head = head or DEFAULT_HEAD.on_frame(mesh.length)
     before = catalogue(mesh)
     added = plan_lead(before, targets, places, head)
     custom = add_lead(mesh, [Lead(p, m) for p, m in added.items()], head)

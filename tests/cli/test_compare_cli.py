@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from clirun import run
 
-from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import lead_moments
 from fem_racket.frame.specs import KG_CM2
 
@@ -41,7 +41,7 @@ def test_lead_at_12_shows_as_its_own_difference(capsys, tmp_path):
     ((name, diff),) = data["differences"].items()
     assert name == "standard+12:10"
     assert diff["mass_kg"] == pytest.approx(0.010, rel=1e-12)
-    head = HeadEllipse()
+    head = DEFAULT_HEAD
     want = 0.010 * lead_moments("12", head)[2] / KG_CM2
     assert diff["swing_weight_kg_cm2"] == pytest.approx(want, rel=1e-9)
     # Cross 2001 (Sports Eng 4): lead at the tip of a swung racket raises the best ball speed
@@ -84,3 +84,22 @@ def test_bad_compare_input_is_one_line(capsys, tmp_path, monkeypatch, argv, says
     code, _, err = run(capsys, "compare", *argv, *FAST)
     assert code == 2 and says in err and len(err.splitlines()) == 1, err
     assert not list(tmp_path.glob("output/*"))
+
+
+def test_face_maps_compare_and_lead_at_3_9_lifts_the_sides(capsys, tmp_path):
+    face = ("--offsets", "-0.1:0.1:5", "--positions", "0.6:0.9:7")
+    nc = tmp_path / "f.nc"
+    code, text, err = run(
+        capsys, "compare", "standard", "standard", "standard+3/9:10", *face, "--out", nc, "--json"
+    )
+    assert code == 0, err
+    data = json.loads(text)
+    assert data["differences"]["standard (2)"]["power_area_cm2"] == 0.0
+    import xarray as xr
+
+    with xr.open_dataset(nc) as ds:
+        d = ds["apparent_cor_face_difference"].values
+        assert np.all(d[0][np.isfinite(d[0])] == 0.0)  # A - A: zero on the whole face
+        # Brody 2005: more twistweight, less energy in roll: e_A rises off the axis
+        assert np.nanmin(d[1][[0, -1]]) > 0.0
+        assert ds["apparent_cor_face"].dims == ("racket", "offset", "position")

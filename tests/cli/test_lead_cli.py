@@ -9,7 +9,7 @@ from clirun import run
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import catalogue
-from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import Lead, add_lead
 from fem_racket.frame.specs import KG_CM2
 
@@ -24,14 +24,19 @@ def test_modes_reports_swing_weight_and_the_lead(capsys):
     base = modes_json(capsys)
     # the paper's racket: about 301 kg cm^2 (DESIGN.md section 8)
     assert base["swing_weight_kg_cm2"] == pytest.approx(301.08, abs=0.01)
-    assert base["twist_weight_kg_cm2"] is None  # the paper's frame has no polar mass data
+    # the standard racket's torsion data: an assumption of fem_racket.frame.segments (17.49)
+    assert base["twist_weight_kg_cm2"] == pytest.approx(base["polar_moment_kg_m2"] / KG_CM2)
     got = modes_json(capsys, "--add-mass", "3/9:10", "--add-mass", "0.32:5")
     mesh = frame_mesh(standard_frame(), 20)
-    want = catalogue(add_lead(mesh, [Lead("3/9", 0.01), Lead("0.32", 0.005)], HeadEllipse()))
+    want = catalogue(add_lead(mesh, [Lead("3/9", 0.01), Lead("0.32", 0.005)], DEFAULT_HEAD))
     assert got["mass_kg"] == pytest.approx(base["mass_kg"] + 0.015, rel=1e-13)
     assert got["swing_weight_kg_cm2"] == pytest.approx(want.swing_weight / KG_CM2, rel=1e-13)
     assert got["cg_m"] == pytest.approx(want.balance, rel=1e-13)
     assert got["frequencies_hz"][0] == pytest.approx(want.f1, rel=1e-12)
+    # 10 g at 3/9: 5 g at r = 0.126 m on each side; 0.32 m is on the axis
+    r = DEFAULT_HEAD.width_m / 2
+    tw = base["twist_weight_kg_cm2"] + 0.010 * r**2 / KG_CM2
+    assert got["twist_weight_kg_cm2"] == pytest.approx(tw, rel=1e-12)
 
 
 def test_run_file_lead_is_the_command_line_lead(capsys, tmp_path):

@@ -7,9 +7,11 @@ import pytest
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import catalogue
-from fem_racket.frame.clock import PLACES, HeadEllipse, place_at
+from fem_racket.frame.clock import PLACES, place_at
+from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.lead import Lead, add_lead, lead_moments, parse_lead
 from fem_racket.frame.masses import DEFAULT_WIDTH
+from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.specs import SWING_AXIS
 from fem_racket.validation import InputError
 
@@ -23,12 +25,12 @@ def mesh():
 
 @pytest.fixture(scope="module")
 def head(mesh):
-    return HeadEllipse().on_frame(mesh.length)
+    return DEFAULT_HEAD.on_frame(mesh.length)
 
 
 def specs(mesh):
     c = catalogue(mesh, f1=False)
-    return np.array([c.mass, c.mass * c.balance, c.swing_weight])
+    return np.array([c.mass, c.mass * c.balance, c.swing_weight, c.twist_weight])
 
 
 def test_default_head_is_a_100_square_inch_head(head):
@@ -68,12 +70,16 @@ def test_lead_at_12_adds_m_x_squared_to_the_swing_weight(mesh, head):
     dt = specs(thin)[2] - specs(mesh)[2]
     assert dt == pytest.approx(m * (mesh.length - SWING_AXIS) ** 2, rel=1e-4)
     assert lead_moments("12", head)[3] == 0.0  # on the axis: no twistweight
+    assert d[3] == pytest.approx(0.0, abs=1e-15 * specs(mesh)[3])
 
 
 def test_lead_at_3_9_adds_m_r_squared_to_twistweight_and_less_swing_weight(mesh, head):
     m = 0.010
     k39 = lead_moments("3/9", head)
     assert m * k39[3] == pytest.approx(m * (head.width_m / 2) ** 2, rel=1e-15)
+    # on the mesh: two halves m/2 at r = width / 2 on either side add m r^2 to the polar moment
+    tw = specs(add_lead(mesh, [Lead("3/9", m)], head))[3] - specs(mesh)[3]
+    assert tw == pytest.approx(m * (head.width_m / 2) ** 2, rel=1e-12)
     sw39 = specs(add_lead(mesh, [Lead("3/9", m)], head))[2]
     sw12 = specs(add_lead(mesh, [Lead("12", m)], head))[2]
     assert sw39 < sw12
@@ -84,13 +90,13 @@ def test_lead_at_3_9_adds_m_r_squared_to_twistweight_and_less_swing_weight(mesh,
 def test_linear_coefficients_match_the_mesh(mesh, head, place):
     m = 0.007
     d = specs(add_lead(mesh, [Lead(place, m)], head)) - specs(mesh)
-    assert d == pytest.approx(m * lead_moments(place, head)[:3], rel=1e-11, abs=1e-16)
+    assert d == pytest.approx(m * lead_moments(place, head), rel=1e-11, abs=1e-16)
 
 
 def test_leads_add_up(mesh, head):
     leads = [Lead("3/9", 0.010), Lead("0.32", 0.005), Lead("12", 0.004)]
     d = specs(add_lead(mesh, leads, head)) - specs(mesh)
-    want = sum(lead.mass * lead_moments(lead.place, head)[:3] for lead in leads)
+    want = sum(lead.mass * lead_moments(lead.place, head) for lead in leads)
     assert d == pytest.approx(want, rel=1e-11)
 
 
@@ -110,7 +116,23 @@ def test_unknown_place(head, bad):
 
 def test_head_must_fit(mesh):
     with pytest.raises(InputError, match="head length"):
-        HeadEllipse(frame_length_m=0.3)
+        HeadOutline(frame_length_m=0.3)
     with pytest.raises(InputError, match="frame length"):
-        add_lead(mesh, [Lead("12", 0.01)], HeadEllipse().on_frame(0.7))
-    assert math.isclose(HeadEllipse().on_frame(0.7).centre_m, 0.74 * 0.7)
+        add_lead(mesh, [Lead("12", 0.01)], DEFAULT_HEAD.on_frame(0.7))
+    assert math.isclose(DEFAULT_HEAD.on_frame(0.7).centre_m, 0.74 * 0.7)
+
+
+def test_twistweight_is_the_torsion_model_polar_moment(mesh, head):
+    # independent path: the torsion FE model's mass matrix (fem_racket.frame.torsion)
+    from fem_racket import FrameModel
+
+    custom = add_lead(mesh, [Lead("3/9", 0.010), Lead("2/10", 0.004)], head)
+    for m in (mesh, custom):
+        tw = catalogue(m, f1=False).twist_weight
+        assert tw == pytest.approx(FrameModel.build(m).torsion.polar_moment, rel=1e-12)
+
+
+def test_no_torsion_data_no_twistweight(mesh, head):
+    bare = FrameMesh(mesh.points, mesh.EI, mesh.rhoA)
+    out = catalogue(add_lead(bare, [Lead("3/9", 0.010)], head), f1=False)
+    assert out.twist_weight is None

@@ -10,7 +10,7 @@ from clirun import run
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import Catalogue, catalogue
-from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import Lead, add_lead
 from fem_racket.frame.specs import KG_CM2
 from fem_racket.io.racket_table import read_rackets
@@ -36,7 +36,7 @@ def test_distance_is_zero_inside_the_ranges_and_scaled_outside():
 
 def test_predicted_numbers_are_the_mesh_numbers():
     mesh = frame_mesh(standard_frame(), 20)
-    head = HeadEllipse().on_frame(mesh.length)
+    head = DEFAULT_HEAD.on_frame(mesh.length)
     added = {"12": 0.004, "3/9": 0.006, "0.2": 0.003}
     want = catalogue(add_lead(mesh, [Lead(p, m) for p, m in added.items()], head), f1=False)
     got = predicted(catalogue(mesh, f1=False), added, head)

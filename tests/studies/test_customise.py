@@ -5,8 +5,9 @@ import pytest
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import catalogue
-from fem_racket.frame.clock import HeadEllipse
+from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import Lead, add_lead
+from fem_racket.frame.mesh import FrameMesh
 from fem_racket.io.mesh_files import read_mesh, write_mesh
 from fem_racket.studies.customise import Target, customise
 from fem_racket.validation import InputError
@@ -30,7 +31,7 @@ def exact(value):
     ],
 )
 def test_recovers_a_planted_solution(mesh, planted):
-    head = HeadEllipse().on_frame(mesh.length)
+    head = DEFAULT_HEAD.on_frame(mesh.length)
     target = catalogue(add_lead(mesh, [Lead(p, m) for p, m in planted.items()], head), f1=False)
     # two places, two value targets: the planted masses are the only solution
     out = customise(
@@ -41,6 +42,19 @@ def test_recovers_a_planted_solution(mesh, planted):
     assert out.added == pytest.approx(planted, rel=1e-8)
     assert out.after.swing_weight == pytest.approx(target.swing_weight, rel=1e-12)
     assert out.after.balance == pytest.approx(target.balance, rel=1e-12)
+
+
+def test_recovers_planted_lead_from_swing_weight_and_twistweight(mesh):
+    planted = {"12": 0.004, "3/9": 0.008}
+    head = DEFAULT_HEAD.on_frame(mesh.length)
+    target = catalogue(add_lead(mesh, [Lead(p, m) for p, m in planted.items()], head), f1=False)
+    out = customise(
+        mesh,
+        {"swing_weight": exact(target.swing_weight), "twist_weight": exact(target.twist_weight)},
+        ["12", "3/9"],
+    )
+    assert out.added == pytest.approx(planted, rel=1e-8)
+    assert out.after.twist_weight == pytest.approx(target.twist_weight, rel=1e-12)
 
 
 def test_least_mass_goes_where_it_counts(mesh):
@@ -91,8 +105,9 @@ def test_bad_targets(mesh):
         customise(mesh, {"stiffness": exact(1.0)}, ["12"])
     with pytest.raises(InputError, match="places"):
         customise(mesh, {"mass": exact(0.37)}, [])
+    bare = FrameMesh(mesh.points, mesh.EI, mesh.rhoA)  # no torsion data: no twistweight
     with pytest.raises(InputError, match="twist-weight"):
-        customise(mesh, {"twist_weight": exact(0.002)}, ["3/9"])
+        customise(bare, {"twist_weight": exact(0.002)}, ["3/9"])
     with pytest.raises(InputError, match="target"):
         Target(0.3, 0.2)
     assert np.isfinite(catalogue(mesh).f1)

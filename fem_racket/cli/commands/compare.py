@@ -72,6 +72,13 @@ def register(sub: argparse._SubParsersAction) -> None:
         "(default 0.5:1.0:200)",
     )
     g.add_argument(
+        "--offsets",
+        default=None,
+        metavar="VALUES",
+        help="lateral offsets y [m] (start:stop:num or a comma list): also map the whole face "
+        "over (x, y), with its power area and the difference maps (default: the axis only)",
+    )
+    g.add_argument(
         "--grip",
         choices=("firm", "loose"),
         default="firm",
@@ -121,6 +128,7 @@ def run(args: argparse.Namespace) -> int:
         positions=as_values("position", args.positions),
         position=args.point,
         grip=args.grip,
+        offsets=None if args.offsets is None else as_values("offset", args.offsets),
     )
     reports = compare(setups, play)
     diffs = differences(reports)
@@ -129,7 +137,11 @@ def run(args: argparse.Namespace) -> int:
             reports, diffs, path, overwrite=args.overwrite, parameters=run_parameters(args)
         )
     if args.json:
-        scalar = {n: {k: v for k, v in d.items() if "curve" not in k} for n, d in diffs.items()}
+        arrays = ("curve", "face")
+        scalar = {
+            n: {k: v for k, v in d.items() if not any(a in k for a in arrays)}
+            for n, d in diffs.items()
+        }
         print_json(
             {
                 "rackets": [{"name": r.map.name, **r.values()} for r in reports],

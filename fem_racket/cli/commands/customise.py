@@ -78,7 +78,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.frame.catalogue import catalogue
-    from fem_racket.io.map_files import check_map_output, write_map
+    from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
     from fem_racket.io.mesh_files import write_mesh
     from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
     from fem_racket.studies.customise import customise
@@ -88,7 +88,8 @@ def run(args: argparse.Namespace) -> int:
     out, maps_path = Path(args.out), Path(args.maps)
     for f in (out, sidecar_path(out)):
         check_output_path(f, overwrite=args.overwrite)
-    map_files = check_map_output(maps_path, overwrite=args.overwrite)
+    check_map_outputs([maps_path], overwrite=args.overwrite)
+    map_files = [t.path for t in map_targets([maps_path])]
     frame = frame_from_args(args)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
@@ -106,7 +107,7 @@ def run(args: argparse.Namespace) -> int:
     with atomic_outputs([out, sidecar_path(out)], overwrite=args.overwrite) as (tmp, side):
         write_mesh(result.mesh, tmp, overwrite=True)
         side.write_text(json.dumps({**meta, **summary}, indent=2, default=str) + "\n")
-    write_map(maps, maps_path, overwrite=args.overwrite, parameters=run_parameters(args))
+    write_maps(maps, [maps_path], overwrite=args.overwrite, parameters=run_parameters(args))
     if args.json:
         print_json(summary)
         return 0

@@ -10,7 +10,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from fem_racket.frame.clock import PLACES, HeadEllipse
+from fem_racket.frame.clock import PLACES
+from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import Lead, add_lead, parse_lead
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import Frame
@@ -61,4 +62,4 @@ def with_lead(frame: Frame | FrameMesh, args: argparse.Namespace, elements: int)
     if not leads:
         return frame
     mesh = frame_mesh(frame, elements) if isinstance(frame, Frame) else frame
-    return add_lead(mesh, leads, HeadEllipse().on_frame(mesh.length))
+    return add_lead(mesh, leads, DEFAULT_HEAD.on_frame(mesh.length))
