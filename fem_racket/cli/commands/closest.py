@@ -34,7 +34,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_target_options(p, ranked=True)
     p.add_argument("--count", type=int, default=3, metavar="N", help="rackets to show (default 3)")
     p.add_argument("--json", action="store_true", help="print a JSON object (default: a table)")
-    add_config_option(p)
+    add_config_option(p, requires=("rackets",))
     p.set_defaults(func=run)
 
 
@@ -42,9 +42,12 @@ def run(args: argparse.Namespace) -> int:
     """Rank, customise and print."""
     from fem_racket.io.racket_table import read_rackets
     from fem_racket.studies.closest import closest
+    from fem_racket.validation import work_begins
 
     targets = targets_from_args(args)
-    matches = closest(read_rackets(args.rackets), targets, places_of(args), args.count)
+    rackets = read_rackets(args.rackets)
+    work_begins()
+    matches = closest(rackets, targets, places_of(args), args.count)
     if args.json:
         print_json({"targets": target_summary(targets), "rackets": [m.summary() for m in matches]})
         return 0

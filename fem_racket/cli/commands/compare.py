@@ -97,7 +97,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--overwrite", action="store_true", help="replace existing files (default: refuse)"
     )
     o.add_argument("--json", action="store_true", help="print a JSON object (default: a table)")
-    add_config_option(p, private=("out",))
+    add_config_option(p, private=("out",), requires=("rackets",))
     p.set_defaults(func=run)
 
 
@@ -107,7 +107,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.io.setups import read_setup
     from fem_racket.studies.compare import Play, Setup, compare, differences, unique_names
     from fem_racket.studies.grid import as_values
-    from fem_racket.validation import InputError
+    from fem_racket.validation import InputError, work_begins
 
     if len(args.rackets) < 2:
         raise InputError(f"rackets = {len(args.rackets)} given is not allowed: need at least 2")
@@ -130,6 +130,7 @@ def run(args: argparse.Namespace) -> int:
         grip=args.grip,
         offsets=None if args.offsets is None else as_values("offset", args.offsets),
     )
+    work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)
     for path in outs:

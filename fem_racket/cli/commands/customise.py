@@ -71,7 +71,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--overwrite", action="store_true", help="replace existing files (default: refuse)"
     )
     o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
-    add_config_option(p, private=("out",))
+    add_config_option(p, private=("out",), requires=("a target: swing_weight, balance, mass",))
     p.set_defaults(func=run)
 
 
@@ -83,6 +83,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
     from fem_racket.studies.customise import customise
     from fem_racket.studies.racket_map import racket_map
+    from fem_racket.validation import work_begins
 
     places = places_of(args)
     out, maps_path = Path(args.out), Path(args.maps)
@@ -93,6 +94,7 @@ def run(args: argparse.Namespace) -> int:
     frame = frame_from_args(args)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
+    work_begins()
     result = customise(mesh, targets, places)
     swing = {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
     maps = [
