@@ -31,7 +31,6 @@ MARKDOWN = ["README.md", "REPRODUCTION.md", "meshes/README.md"]
 PENDING = {
     ("fem_racket/impact/ode/integrators.py", "fem_racket.system.SEPARATION_EVENTS"),
     ("fem_racket/impact/exact/batch.py", ".reduction.pole_blocks"),
-    ("fem_racket/strings/bed.py", "fem_racket.frame.head"),
 }
 
 

@@ -19,7 +19,9 @@ __all__ = ["impact_dataset", "impact_html", "impact_repr"]
 #: Label and unit of each summary key, in the order of the HTML table.
 LABELS = {
     "cor": ("coefficient of restitution", "-"),
-    "contact_time_s": ("contact time", "s"),
+    "apparent_cor": ("apparent COR e_A", "-"),
+    "tolerance": ("COR tolerance", "-"),
+    "contact_time_s": ("contact time", "ms"),
     "rebound_speed_m_s": ("rebound speed", "m/s"),
     "peak_force_n": ("peak force", "N"),
     "position_x_over_l": ("impact point", "x/L"),
@@ -36,6 +38,34 @@ LABELS = {
     "rtol": ("rtol", "-"),
     "atol": ("atol", "-"),
 }
+
+
+#: Unit suffixes of summary keys (JSON style) and the unit they stand for, longest first.
+SUFFIXES = (
+    ("_rad_s", "rad/s"),
+    ("_kg_m2", "kg m²"),
+    ("_n_s_m", "N s/m"),
+    ("_m_s", "m/s"),
+    ("_n_m", "N/m"),
+    ("_x_over_l", "x/L"),
+    ("_kg", "kg"),
+    ("_hz", "Hz"),
+    ("_s", "s"),
+    ("_m", "m"),
+    ("_n", "N"),
+)
+#: Keys shown in another unit than their JSON one: (factor, unit).
+SHOWN_IN = {"contact_time_s": 1e3}
+
+
+def _label(key: str) -> tuple[str, str]:
+    """(label, unit) of a summary key: :data:`LABELS`, else the key without its unit suffix."""
+    if key in LABELS:
+        return LABELS[key]
+    for suffix, unit in SUFFIXES:
+        if key.endswith(suffix):
+            return key[: -len(suffix)].replace("_", " "), unit
+    return key.replace("_", " "), ""
 
 
 def _solver(result: Any) -> str:
@@ -63,8 +93,11 @@ def impact_html(result: Any) -> str:
     """The summary as an HTML table (quantity, value, unit)."""
     rows = []
     for key, value in result.summary().items():
-        label, unit = LABELS.get(key, (key, ""))
-        text = number(value, 6) if isinstance(value, float) else str(value)
+        label, unit = _label(key)
+        if isinstance(value, float):
+            text = number(value * SHOWN_IN.get(key, 1.0), 6)
+        else:
+            text = "" if value is None else str(value)
         rows.append((label, text, unit))
     return html_table("ImpactResult", rows, ("quantity", "value", "unit"))
 

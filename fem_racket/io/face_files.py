@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.io.map_files import check_map_output
+from fem_racket.io.map_files import check_map_outputs
 from fem_racket.outputs import (
     add_png_provenance,
     atomic_output,
@@ -187,7 +187,7 @@ def write_face(
     parameters: Mapping[str, Any] | None = None,
 ) -> Path:
     """Write the face maps to ``path``: .nc (netCDF), .csv (+ ``<file>.json``) or .png."""
-    check_map_output(path, overwrite=overwrite)
+    check_map_outputs([path], overwrite=overwrite)
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix == ".png":
