@@ -30,7 +30,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         "each of the nearest to the mass, balance, swing-weight and twistweight targets. "
         "Example: fem-racket closest examples/rackets.csv --swing-weight 330 --balance 0.32",
     )
-    p.add_argument("rackets", metavar="CSV", help="the racket list (a CSV file)")
+    p.add_argument(
+        "rackets", nargs="?", default=None, metavar="CSV", help="the racket list (a CSV file)"
+    )
     add_target_options(p, ranked=True)
     p.add_argument("--count", type=int, default=3, metavar="N", help="rackets to show (default 3)")
     p.add_argument("--json", action="store_true", help="print a JSON object (default: a table)")
@@ -42,8 +44,11 @@ def run(args: argparse.Namespace) -> int:
     """Rank, customise and print."""
     from fem_racket.io.racket_table import read_rackets
     from fem_racket.studies.closest import closest
-    from fem_racket.validation import work_begins
+    from fem_racket.validation import InputError, work_begins
 
+    if args.rackets is None:
+        work_begins()  # a run file cannot name the list: its checks end here
+        raise InputError("rackets = none is not allowed: give the racket list, a CSV file")
     targets = targets_from_args(args)
     rackets = read_rackets(args.rackets)
     work_begins()

@@ -37,7 +37,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument(
         "rackets",
-        nargs="+",
+        nargs="*",
         metavar="RACKET",
         help="preset (standard, rigid), mesh file or .toml run file, each optionally "
         "+LOCATION:GRAMS (lead); at least two",
@@ -110,6 +110,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.validation import InputError, work_begins
 
     if len(args.rackets) < 2:
+        work_begins()  # a run file cannot name the rackets: its checks end here
         raise InputError(f"rackets = {len(args.rackets)} given is not allowed: need at least 2")
     outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
     for path in outs:

@@ -10,7 +10,7 @@ from typing import Any
 from fem_racket.frame.clock import PLACES
 from fem_racket.frame.specs import KG_CM2
 from fem_racket.studies.customise import Target
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, work_begins
 
 __all__ = [
     "RANKED",
@@ -107,6 +107,7 @@ def targets_from_args(args: argparse.Namespace, now: Any = None) -> dict[str, Ta
                 "need 0 < LOW <= HIGH"
             ) from None
     if not out:
+        work_begins()  # targets may come with the command line; a run file's checks end here
         names = [d for d in {**TARGETS, **RANKED} if hasattr(args, d)]
         raise InputError(
             "targets = none is not allowed: give at least one of "
