@@ -51,6 +51,7 @@ DEFAULTS: dict[str, Any] = {
     "t_max": None,
     "rtol": 1e-10,
     "atol": 1e-12,
+    "offset": 0.0,
 }
 #: argparse dest -> the core key that sets it (for messages).
 CORE_DEST_KEYS = {k.dest: f"{t}.{name}" for t, ks in CORE_KEYS.items() for name, k in ks.items()}
