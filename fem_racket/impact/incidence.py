@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from fem_racket.validation import check_finite, check_positive, check_range
+from fem_racket.validation import InputError, check_finite, check_positive, check_range, show
 
 __all__ = [
     "DEFAULT_BALL_INERTIA",
@@ -50,6 +50,13 @@ DEFAULT_FRICTION = 0.4
 DEFAULT_COMPLIANCE_RATIO = 1.5
 #: rad/s per rpm.
 RPM = 2.0 * math.pi / 60.0
+
+
+def _non_negative(name: str, value: object) -> float:
+    number = check_finite(name, value)
+    if number < 0.0:
+        raise InputError(f"{name} = {show(value)} is not allowed: must be a finite number >= 0")
+    return number
 
 
 @dataclass(frozen=True)
@@ -83,14 +90,12 @@ class Incidence:
         checks = {
             "angle": check_range("angle", self.angle, 0.0, 90.0, unit="deg", include_high=False),
             "spin": check_finite("spin", self.spin, "rpm"),
-            "friction": check_range("friction", self.friction, 0.0, math.inf),
+            "friction": _non_negative("friction", self.friction),
             "ball_inertia": check_range(
                 "ball_inertia", self.ball_inertia, 0.0, 2.0 / 3.0, include_low=False
             ),
             "radius": check_positive("radius", self.radius, "m"),
-            "compliance_ratio": check_range(
-                "compliance_ratio", self.compliance_ratio, 0.0, math.inf
-            ),
+            "compliance_ratio": _non_negative("compliance_ratio", self.compliance_ratio),
         }
         for name, value in checks.items():
             object.__setattr__(self, name, value)
