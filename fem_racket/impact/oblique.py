@@ -1,0 +1,198 @@
+"""An oblique, spinning ball on the racket: :func:`simulate_oblique` -> :class:`ObliqueResult`.
+
+The normal impact is today's, at the normal speed V cos(angle): any contact law, any solver, on
+the free racket (:func:`fem_racket.impact.simulate.simulate`) or on a clamped head (eqs 1-3 in
+closed form, the paper's linear law). The tangential contact
+(:mod:`fem_racket.impact.tangential`) is then marched over its normal force history, with the
+racket's tangential effective mass: the free racket recoils along its long axis as a rigid body,
+M_t = M (the string plane lies on the beam's axis, so the tangential force neither bends nor
+turns it, and the beam is rigid along itself); a clamped head does not move (M_t infinite).
+
+Assumed (stated in the README): the tangential force does not change the normal impact (so with
+mu = 0, or head-on without spin, the normal outcome is exactly the head-on impact's at the
+normal speed); the contact point stays at the impact point (the ball travels a few cm along
+the face during contact); the frame's tangential compliance and the strings' lateral motion are
+neglected; K_CB follows the normal speed.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import Ball, LinearContact
+from fem_racket.impact.analytic.rigid import ClampedImpact, clamped_impact
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.result import ImpactResult
+from fem_racket.impact.simulate import simulate
+from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, SampledNormal
+from fem_racket.impact.tangential.oblique import BallMotion, ObliqueOutcome, tangential_impact
+from fem_racket.validation import InputError, check_choice, check_positive
+
+__all__ = ["ObliqueResult", "normal_history", "simulate_oblique"]
+
+#: Output step of the normal impact whose force history drives the tangential contact [s].
+OBLIQUE_OUTPUT_STEP = 1e-5
+
+
+@dataclass(frozen=True, eq=False)
+class ObliqueResult:
+    """The normal impact and the tangential contact of one oblique impact.
+
+    Attributes
+    ----------
+    normal : ImpactResult or ClampedImpact
+        The normal impact at the normal speed (ClampedImpact: a clamped head, eqs 1-3).
+    tangential : ObliqueOutcome
+        Outgoing speed, angle and spin, the regime, histories.
+    speed : float
+        Incident ball speed [m/s].
+    contact : LinearContact or None
+        The clamped head's K_CB and zeta (None on the free racket: in ``normal``).
+    """
+
+    normal: ImpactResult | ClampedImpact
+    tangential: ObliqueOutcome
+    speed: float
+    contact: LinearContact | None = None
+
+    @property
+    def clamped(self) -> bool:
+        return isinstance(self.normal, ClampedImpact)
+
+    def histories(self) -> dict[str, np.ndarray]:
+        """Time histories of the tangential contact at the normal impact's output times (over
+        the force's contact for a clamped head), units in the names."""
+        if self.clamped:
+            t = self.tangential.solution.normal.grid
+            return {"time [s]": t, **self.tangential.histories(t)}
+        return {"time [s]": self.normal.t, **self.tangential.histories(self.normal.t)}
+
+    def summary(self) -> dict[str, Any]:
+        """The normal impact's summary (its ``rebound_speed_m_s`` the normal component) with the
+        oblique outcome: ``ball_speed_out_m_s`` the full outgoing speed, ``angle_out_deg``,
+        ``spin_out_rpm``, ``contact_regime``...; units in the keys."""
+        if self.clamped:
+            n, c = self.normal, self.contact
+            base = {
+                "cor": n.cor,
+                "contact_time_s": n.contact_time,
+                "rebound_speed_m_s": -n.rebound_velocity,
+                "peak_force_n": _clamped_peak(self.tangential.solution.normal),
+                "structure": "clamped head",
+                "ball_mass_kg": self.tangential.ball.mass,
+                "law": "linear",
+                "kcb_n_m": c.stiffness,
+                "zeta": c.zeta,
+            }
+        else:
+            base = {**self.normal.summary(), "structure": "free racket"}
+        normal_speed = self.tangential.incidence.components(self.speed)[0]
+        return {
+            **base,
+            "speed_m_s": self.speed,
+            "normal_speed_m_s": normal_speed,
+            **self.tangential.summary(),
+        }
+
+
+def _clamped_peak(normal: NormalHistory) -> float:
+    from scipy.optimize import minimize_scalar
+
+    res = minimize_scalar(lambda t: -normal.force(t), bounds=(0.0, normal.end), method="bounded")
+    return float(-res.fun)
+
+
+def normal_history(result: ImpactResult) -> SampledNormal:
+    """The normal force history of a computed impact (needs its output times).
+
+    The stiffness k_n is K_CB for the paper's linear law, else the secant F / delta at the
+    output time of maximum compression.
+    """
+    if result.t.size < 5:
+        raise InputError(
+            f"an oblique impact needs the normal impact's histories: {result.t.size} output "
+            "times given; simulate with an output_step"
+        )
+    v = result.ball_velocity
+    impulse = result.ball.mass * (v[0] - v)
+    force = result.force
+    if result.contact is not None:
+        k_n = result.contact.stiffness
+    else:
+        i = int(np.argmax(result.deflection))
+        k_n = float(force[i] / result.deflection[i])
+    return SampledNormal(result.t, impulse, force, k_n)
+
+
+def simulate_oblique(
+    frame: Any = None,
+    *,
+    incidence: Incidence,
+    speed: float = 20.0,
+    clamped: bool = False,
+    **kwargs: Any,
+) -> ObliqueResult:
+    """Simulate an oblique, spinning ball striking the free racket or a clamped head.
+
+    Parameters
+    ----------
+    frame : Frame, FrameMesh or FrameModel, optional
+        The racket (as :func:`fem_racket.impact.simulate.simulate`); not with ``clamped``.
+    incidence : Incidence
+        Angle from the face normal, spin, friction, ball inertia and radius, eta^2.
+    speed : float
+        Incident ball speed V [m/s]; the normal impact runs at V cos(angle).
+    clamped : bool
+        A rigid, immovable head (eqs 1-3): takes only ``ball_mass``, ``kcb``, ``zeta`` and
+        ``separation``.
+    **kwargs
+        The other arguments of :func:`~fem_racket.impact.simulate.simulate` (``output_step``
+        defaults to 1e-5 s: the tangential contact needs the normal force history).
+
+    Returns
+    -------
+    ObliqueResult
+    """
+    if not isinstance(incidence, Incidence):
+        raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence")
+    v = check_positive("speed", speed, "m/s")
+    v_n, v_t = incidence.components(v)
+    if clamped:
+        return _clamped(frame, incidence, v, kwargs)
+    if kwargs.get("output_step", OBLIQUE_OUTPUT_STEP) is None:
+        raise InputError("output_step = None is not allowed with an oblique impact: must be > 0")
+    kwargs.setdefault("output_step", OBLIQUE_OUTPUT_STEP)
+    result = simulate(frame, speed=v_n, **kwargs)
+    motion = BallMotion(result.ball.mass, v_t, result.ball_speed_out, result.model.props.mass)
+    return ObliqueResult(result, tangential_impact(incidence, normal_history(result), motion), v)
+
+
+#: What a clamped head takes besides the incidence and the speed.
+CLAMPED_ARGS = ("ball_mass", "kcb", "zeta", "separation")
+
+
+def _clamped(frame: Any, incidence: Incidence, speed: float, kwargs: dict) -> ObliqueResult:
+    """A clamped head: the paper's spring-dashpot in closed form."""
+    extra = sorted(set(kwargs) - set(CLAMPED_ARGS))
+    if frame is not None or extra:
+        name = "frame" if frame is not None else extra[0]
+        raise InputError(
+            f"{name} is not allowed with a clamped head: it takes only {', '.join(CLAMPED_ARGS)}"
+        )
+    separation = check_choice(
+        "separation", kwargs.get("separation", "displacement"), ("displacement", "force")
+    )
+    ball = Ball() if kwargs.get("ball_mass") is None else Ball(kwargs["ball_mass"])
+    v_n, v_t = incidence.components(speed)
+    contact = LinearContact.for_speed(v_n, kcb=kwargs.get("kcb"), zeta=kwargs.get("zeta"))
+    normal = ClampedNormal(ball.mass, contact.stiffness, contact.zeta, v_n)
+    eqs = clamped_impact(ball.mass, contact.stiffness, contact.zeta, v_n)
+    if separation == "force":  # contact ends as the force returns to zero (DESIGN.md section 1)
+        out = normal.rebound_speed()
+        eqs = ClampedImpact(eqs.omega_n, eqs.omega_d, normal.end, -out, out / v_n)
+    motion = BallMotion(ball.mass, v_t, -eqs.rebound_velocity, math.inf)
+    return ObliqueResult(eqs, tangential_impact(incidence, normal, motion), speed, contact)
