@@ -42,6 +42,7 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.impact_options import add_hand_options, hand_from_args
 from fem_racket.cli.laws import law_from_args
+from fem_racket.cli.oblique import add_oblique_options, incidence_from_args, run_oblique
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
@@ -68,6 +69,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_impact_options(p)
     add_swing_options(p)
     add_hand_options(p)
+    add_oblique_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON object")
     g = add_output_options(
         p,
@@ -258,6 +260,9 @@ def run(args: argparse.Namespace) -> int:
     check_output_step(args.output_step)
     hand = hand_from_args(args)
     files = _check_out(args) if args.out else []
+    incidence = incidence_from_args(args)
+    if incidence is not None:
+        return run_oblique(args, incidence, hand, files)
     if hand is not None:
         return _run_held(args, hand, files)
     model = build_model(args)

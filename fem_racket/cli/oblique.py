@@ -1,0 +1,192 @@
+"""``fem-racket simulate`` with an oblique, spinning ball (``--angle``, ``--spin``,
+``--friction``, ...) or on a clamped head (``--clamped``): :func:`fem_racket.impact.oblique.
+simulate_oblique`, printed as outgoing speed, angle and spin, the contact regime and the normal
+impact's outcome.
+
+Without any of these options ``simulate`` runs today's head-on impact, unchanged.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+from pathlib import Path
+from typing import Any
+
+from fem_racket.cli.common import (
+    build_model,
+    impact_kwargs,
+    print_json,
+    run_parameters,
+    significant,
+    swing_from_args,
+    write_json,
+)
+from fem_racket.impact.incidence import (
+    DEFAULT_BALL_INERTIA,
+    DEFAULT_BALL_RADIUS,
+    DEFAULT_COMPLIANCE_RATIO,
+    DEFAULT_FRICTION,
+    Incidence,
+)
+from fem_racket.outputs import Target, atomic_outputs, provenance
+from fem_racket.validation import InputError
+
+__all__ = ["add_oblique_options", "incidence_from_args", "run_oblique"]
+
+#: argparse dest -> (option, Incidence field, metavar, help).
+OBLIQUE_OPTIONS = {
+    "angle": ("--angle", "angle", "DEG", "angle of the ball's path from the face normal, in the "
+              "plane of the racket's long axis [deg], 0..90 (default 0)"),
+    "spin": ("--spin", "spin", "RPM", "incoming spin [rpm]: positive = topspin (the ball's "
+             "surface on the strings' side moving backward, the sense of rolling along them), "
+             "negative = backspin (default 0)"),
+    "friction": ("--friction", "friction", "MU", "sliding friction ball/strings, >= 0 "
+                 f"(default {DEFAULT_FRICTION:g}, Cross 2003)"),
+    "ball_inertia": ("--ball-inertia", "ball_inertia", "I_OVER_MR2", "ball's moment of inertia "
+                     f"I/(m R^2), 0..2/3 (default {DEFAULT_BALL_INERTIA:g}: a thick shell)"),
+    "ball_radius": ("--ball-radius", "radius", "M", "ball radius R [m] (default "
+                    f"{DEFAULT_BALL_RADIUS:g})"),
+    "compliance_ratio": ("--compliance-ratio", "compliance_ratio", "ETA2", "normal over "
+                         "tangential contact stiffness eta^2 = k_n/k_t, >= 0 (default "
+                         f"{DEFAULT_COMPLIANCE_RATIO:g}, an assumption; 0: rigid)"),
+}  # fmt: skip
+
+#: Options a clamped head takes (besides the oblique ones and the output options).
+CLAMPED_TAKES = {"speed", "ball_mass", "kcb", "zeta", "separation", "json", "out", "overwrite",
+                 "output_step", "config", "clamped", *OBLIQUE_OPTIONS}  # fmt: skip
+
+
+def add_oblique_options(parser: argparse.ArgumentParser) -> None:
+    """The oblique impact's options and ``--clamped``; read them with
+    :func:`incidence_from_args`."""
+    g = parser.add_argument_group(
+        "oblique impact and spin (any of these runs the oblique impact; see the README)"
+    )
+    for dest, (option, _, metavar, text) in OBLIQUE_OPTIONS.items():
+        g.add_argument(option, dest=dest, type=float, default=None, metavar=metavar, help=text)
+    g.add_argument(
+        "--clamped",
+        action="store_true",
+        default=None,
+        help="a rigid, immovable head (eqs 1-3, the paper's linear law) instead of the free racket",
+    )
+
+
+def incidence_from_args(args: argparse.Namespace) -> Incidence | None:
+    """The incidence the options give; None when no oblique option (nor ``--clamped``) is
+    given: the head-on impact, unchanged."""
+    given = {
+        field: getattr(args, dest)
+        for dest, (_, field, _, _) in OBLIQUE_OPTIONS.items()
+        if getattr(args, dest, None) is not None
+    }
+    if not given and not getattr(args, "clamped", None):
+        return None
+    return Incidence(**given)
+
+
+def _check(args: argparse.Namespace, hand: Any) -> None:
+    if hand is not None:
+        raise InputError("a hand is not allowed with an oblique impact: the racket is free")
+    if args.clamped:
+        given = set(getattr(args, "explicit_options", ())) - CLAMPED_TAKES
+        if given:
+            name = sorted(given)[0].replace("_", "-")
+            raise InputError(
+                f"--{name} is not allowed with --clamped: a clamped head takes --speed, "
+                "--ball-mass, --kcb, --zeta, --separation and the oblique options"
+            )
+
+
+def _histories(result) -> dict[str, Any]:
+    out = result.histories()
+    if not result.clamped:
+        n = result.normal
+        out["ball normal velocity [m/s]"] = n.ball_velocity
+        out["contact force [N]"] = n.force
+    return out
+
+
+def _write(args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path]) -> None:
+    meta = provenance(run_parameters(args))
+    meta["results"] = summary
+    history = _histories(result)
+    if len(files) == 1:
+        data = {"provenance": meta, "summary": summary}
+        history = {k: v.tolist() for k, v in history.items()}
+        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
+        return
+    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            w = csv.writer(f)
+            w.writerow(history)
+            for row in zip(*history.values(), strict=True):
+                w.writerow([repr(float(v)) for v in row])
+        side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
+
+
+def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
+    grips = ", ".join(f"{a * 1e3:.4g}-{b * 1e3:.4g}" for a, b in s["grip_times_s"]) or "none"
+    flips = ", ".join(f"{t * 1e3:.4g}" for t in s["friction_reversal_times_s"]) or "none"
+    where = (
+        "clamped head"
+        if s["structure"] == "clamped head"
+        else (f"free racket at {significant(s['position_x_over_l'], 4)} x/L")
+    )
+    return [
+        ("ball speed out", significant(s["ball_speed_out_m_s"], 5), "m/s"),
+        ("angle out", significant(s["angle_out_deg"], 5), "deg from the face normal"),
+        ("spin out", significant(s["spin_out_rpm"], 5), "rpm (positive: topspin)"),
+        ("contact regime", s["contact_regime"], ""),
+        ("grip", grips, "ms" if s["grip_times_s"] else ""),
+        ("friction reversal", flips, "ms" if s["friction_reversal_times_s"] else ""),
+        ("tangential COR", significant(s["tangential_cor"], 5), "-"),
+        ("normal COR", significant(s["cor"], 6), "-"),
+        ("contact time", significant(s["contact_time_s"] * 1e3, 5), "ms"),
+        ("normal rebound speed", significant(s["rebound_speed_m_s"], 5), "m/s"),
+        ("peak force", significant(s["peak_force_n"], 4), "N"),
+        ("impact speed", significant(s["speed_m_s"], 5), "m/s"),
+        ("angle in", significant(s["angle_deg"], 5), "deg"),
+        ("spin in", significant(s["spin_rpm"], 5), "rpm"),
+        ("friction", significant(s["friction"], 4), "-"),
+        ("ball inertia", significant(s["ball_inertia_i_over_mr2"], 4), "I/(m R^2)"),
+        ("compliance ratio", significant(s["compliance_ratio_eta2"], 4), "eta^2 = k_n/k_t"),
+        ("structure", where, ""),
+    ]
+
+
+def run_oblique(
+    args: argparse.Namespace, incidence: Incidence, hand: Any, files: list[Path]
+) -> int:
+    """Simulate the oblique impact, print it (and write it with ``--out``)."""
+    from fem_racket.impact.oblique import simulate_oblique
+
+    _check(args, hand)
+    if args.clamped:
+        kw = {k: getattr(args, k) for k in ("ball_mass", "kcb", "zeta", "separation")}
+        result = simulate_oblique(incidence=incidence, speed=args.speed, clamped=True, **kw)
+    else:
+        model = build_model(args)
+        kw = impact_kwargs(args)
+        speed = kw.pop("speed")
+        result = simulate_oblique(
+            model,
+            incidence=incidence,
+            speed=speed,
+            output_step=args.output_step,
+            swing=swing_from_args(args, model.mesh.length),
+            **kw,
+        )
+    summary = result.summary()
+    if args.out:
+        _write(args, result, summary, files)
+    if args.json:
+        print_json(summary)
+        return 0
+    for name, value, unit in _rows(summary):
+        print(f"{name:<28} {value:>14} {unit}".rstrip())
+    for f in files:
+        print(f"{'written':<28} {f}")
+    return 0
