@@ -32,7 +32,14 @@ from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, Sa
 from fem_racket.impact.tangential.oblique import BallMotion, ObliqueOutcome, tangential_impact
 from fem_racket.validation import InputError, check_choice, check_positive
 
-__all__ = ["ObliqueResult", "normal_history", "simulate_oblique"]
+__all__ = [
+    "NormalImpact",
+    "ObliqueResult",
+    "normal_history",
+    "normal_impact",
+    "oblique_on",
+    "simulate_oblique",
+]
 
 #: Output step of the normal impact whose force history drives the tangential contact [s].
 OBLIQUE_OUTPUT_STEP = 1e-5
@@ -160,22 +167,72 @@ def simulate_oblique(
     if not isinstance(incidence, Incidence):
         raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence")
     v = check_positive("speed", speed, "m/s")
-    v_n, v_t = incidence.components(v)
+    normal = normal_impact(frame, incidence.components(v)[0], clamped=clamped, **kwargs)
+    return oblique_on(normal, incidence, v)
+
+
+@dataclass(frozen=True, eq=False)
+class NormalImpact:
+    """The normal impact an oblique one builds on (shared by every spin and friction at one
+    normal speed).
+
+    Attributes
+    ----------
+    result : ImpactResult or ClampedImpact
+    history : NormalHistory
+        Its force history.
+    ball_mass : float
+        m [kg].
+    racket_mass : float
+        M_t [kg], the tangential effective mass (``math.inf``: clamped head).
+    contact : LinearContact or None
+        A clamped head's K_CB and zeta.
+    """
+
+    result: ImpactResult | ClampedImpact
+    history: NormalHistory
+    ball_mass: float
+    racket_mass: float
+    contact: LinearContact | None = None
+
+    @property
+    def rebound_speed(self) -> float:
+        """Normal speed of the ball away from the strings after impact [m/s]."""
+        if isinstance(self.result, ClampedImpact):
+            return -self.result.rebound_velocity
+        return self.result.ball_speed_out
+
+
+def oblique_on(normal: NormalImpact, incidence: Incidence, speed: float) -> ObliqueResult:
+    """The oblique impact of ``incidence`` at ``speed`` [m/s] over its computed normal impact
+    (at the normal speed ``speed cos(angle)``)."""
+    v_t = incidence.components(speed)[1]
+    motion = BallMotion(normal.ball_mass, v_t, normal.rebound_speed, normal.racket_mass)
+    out = tangential_impact(incidence, normal.history, motion)
+    return ObliqueResult(normal.result, out, speed, normal.contact)
+
+
+def normal_impact(
+    frame: Any = None, normal_speed: float = 20.0, *, clamped: bool = False, **kwargs: Any
+) -> NormalImpact:
+    """The normal impact at ``normal_speed`` [m/s] with its force history: the free racket by
+    :func:`~fem_racket.impact.simulate.simulate` (``kwargs``; ``output_step`` 1e-5 s by
+    default), or a clamped head by eqs 1-3 (``kwargs``: only ``ball_mass``, ``kcb``, ``zeta``,
+    ``separation``)."""
     if clamped:
-        return _clamped(frame, incidence, v, kwargs)
+        return _clamped(frame, normal_speed, kwargs)
     if kwargs.get("output_step", OBLIQUE_OUTPUT_STEP) is None:
         raise InputError("output_step = None is not allowed with an oblique impact: must be > 0")
     kwargs.setdefault("output_step", OBLIQUE_OUTPUT_STEP)
-    result = simulate(frame, speed=v_n, **kwargs)
-    motion = BallMotion(result.ball.mass, v_t, result.ball_speed_out, result.model.props.mass)
-    return ObliqueResult(result, tangential_impact(incidence, normal_history(result), motion), v)
+    result = simulate(frame, speed=normal_speed, **kwargs)
+    return NormalImpact(result, normal_history(result), result.ball.mass, result.model.props.mass)
 
 
 #: What a clamped head takes besides the incidence and the speed.
 CLAMPED_ARGS = ("ball_mass", "kcb", "zeta", "separation")
 
 
-def _clamped(frame: Any, incidence: Incidence, speed: float, kwargs: dict) -> ObliqueResult:
+def _clamped(frame: Any, v_n: float, kwargs: dict) -> NormalImpact:
     """A clamped head: the paper's spring-dashpot in closed form."""
     extra = sorted(set(kwargs) - set(CLAMPED_ARGS))
     if frame is not None or extra:
@@ -187,12 +244,10 @@ def _clamped(frame: Any, incidence: Incidence, speed: float, kwargs: dict) -> Ob
         "separation", kwargs.get("separation", "displacement"), ("displacement", "force")
     )
     ball = Ball() if kwargs.get("ball_mass") is None else Ball(kwargs["ball_mass"])
-    v_n, v_t = incidence.components(speed)
     contact = LinearContact.for_speed(v_n, kcb=kwargs.get("kcb"), zeta=kwargs.get("zeta"))
-    normal = ClampedNormal(ball.mass, contact.stiffness, contact.zeta, v_n)
+    history = ClampedNormal(ball.mass, contact.stiffness, contact.zeta, v_n)
     eqs = clamped_impact(ball.mass, contact.stiffness, contact.zeta, v_n)
     if separation == "force":  # contact ends as the force returns to zero (DESIGN.md section 1)
-        out = normal.rebound_speed()
-        eqs = ClampedImpact(eqs.omega_n, eqs.omega_d, normal.end, -out, out / v_n)
-    motion = BallMotion(ball.mass, v_t, -eqs.rebound_velocity, math.inf)
-    return ObliqueResult(eqs, tangential_impact(incidence, normal, motion), speed, contact)
+        out = history.rebound_speed()
+        eqs = ClampedImpact(eqs.omega_n, eqs.omega_d, history.end, -out, out / v_n)
+    return NormalImpact(eqs, history, ball.mass, math.inf, contact)
