@@ -136,7 +136,9 @@ class ObliqueOutcome:
         return {
             "ball_speed_out_m_s": self.ball_speed_out,
             "angle_out_deg": self.angle_out,
-            "spin_out_rpm": self.spin_out / RPM,
+            # in rpm from the rpm given, so that no impulse leaves the number as it was
+            "spin_out_rpm": self.incidence.spin
+            - self.incidence.radius * self.impulse / self.inertia / RPM,
             "contact_regime": sol.regime,
             "grip_times_s": [list(g) for g in sol.grip_intervals],
             "friction_reversal_times_s": sol.reversal_times,
