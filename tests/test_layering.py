@@ -126,7 +126,15 @@ IMPACT_ROOMS = {
     "held": 3,
     "top": 4,
 }
-IMPACT_TOP = {"law_impact", "oblique", "simulate", "simulate_law", "simulate_linear", "solvers"}
+IMPACT_TOP = {
+    "law_impact",
+    "oblique",
+    "oblique_stroke",
+    "simulate",
+    "simulate_law",
+    "simulate_linear",
+    "solvers",
+}
 
 
 def room(module: str) -> str:

@@ -30,10 +30,11 @@ from fem_racket.impact.incidence import (
     DEFAULT_FRICTION,
     Incidence,
 )
+from fem_racket.impact.stroke import Stroke
 from fem_racket.outputs import Target, atomic_outputs, provenance
 from fem_racket.validation import InputError
 
-__all__ = ["add_oblique_options", "incidence_from_args", "run_oblique"]
+__all__ = ["add_oblique_options", "incidence_from_args", "run_oblique", "stroke_from_args"]
 
 #: argparse dest -> (option, Incidence field, metavar, help).
 OBLIQUE_OPTIONS = {
@@ -53,9 +54,17 @@ OBLIQUE_OPTIONS = {
                          f"{DEFAULT_COMPLIANCE_RATIO:g}, an assumption; 0: rigid)"),
 }  # fmt: skip
 
+#: argparse dest -> (option, Stroke field, help): a stroke's geometry.
+STROKE_OPTIONS = {
+    "face_angle": ("--face-angle", "face_angle", "string plane to the horizontal [deg] with the "
+                   "ball arriving horizontally (90: vertical; a forehand ~80, Kwon et al. 2017)"),
+    "path_angle": ("--path-angle", "path_angle", "the racket's path above the horizontal [deg] "
+                   "(needs --racket-speed, the speed along it; a forehand ~19)"),
+}  # fmt: skip
+
 #: Options a clamped head takes (besides the oblique ones and the output options).
 CLAMPED_TAKES = {"speed", "ball_mass", "kcb", "zeta", "separation", "json", "out", "overwrite",
-                 "output_step", "config", "clamped", *OBLIQUE_OPTIONS}  # fmt: skip
+                 "output_step", "config", "clamped", "face_angle", *OBLIQUE_OPTIONS}  # fmt: skip
 
 
 def add_oblique_options(parser: argparse.ArgumentParser) -> None:
@@ -66,6 +75,8 @@ def add_oblique_options(parser: argparse.ArgumentParser) -> None:
     )
     for dest, (option, _, metavar, text) in OBLIQUE_OPTIONS.items():
         g.add_argument(option, dest=dest, type=float, default=None, metavar=metavar, help=text)
+    for dest, (option, _, text) in STROKE_OPTIONS.items():
+        g.add_argument(option, dest=dest, type=float, default=None, metavar="DEG", help=text)
     g.add_argument(
         "--clamped",
         action="store_true",
@@ -82,9 +93,27 @@ def incidence_from_args(args: argparse.Namespace) -> Incidence | None:
         for dest, (_, field, _, _) in OBLIQUE_OPTIONS.items()
         if getattr(args, dest, None) is not None
     }
-    if not given and not getattr(args, "clamped", None):
+    stroke = any(getattr(args, d, None) is not None for d in STROKE_OPTIONS)
+    if not given and not stroke and not getattr(args, "clamped", None):
         return None
     return Incidence(**given)
+
+
+def stroke_from_args(args: argparse.Namespace) -> Stroke | None:
+    """The stroke ``--face-angle`` and ``--path-angle`` give (None without them)."""
+    given = {
+        field: getattr(args, dest)
+        for dest, (_, field, _) in STROKE_OPTIONS.items()
+        if getattr(args, dest, None) is not None
+    }
+    if not given:
+        return None
+    if "path_angle" in given and args.racket_speed == 0.0:
+        raise InputError(
+            f"path_angle = {given['path_angle']!r} deg is not allowed without a swing: give "
+            "--racket-speed"
+        )
+    return Stroke(**given)
 
 
 def _check(args: argparse.Namespace, hand: Any) -> None:
@@ -154,6 +183,18 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("ball inertia", significant(s["ball_inertia_i_over_mr2"], 4), "I/(m R^2)"),
         ("compliance ratio", significant(s["compliance_ratio_eta2"], 4), "eta^2 = k_n/k_t"),
         ("structure", where, ""),
+        *_stroke_rows(s),
+    ]
+
+
+def _stroke_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
+    if "face_angle_deg" not in s:
+        return []
+    return [
+        ("launch angle", significant(s["launch_angle_deg"], 4), "deg above the horizontal"),
+        ("face angle", significant(s["face_angle_deg"], 4), "deg to the horizontal"),
+        ("path angle", significant(s["path_angle_deg"], 4), "deg above the horizontal"),
+        ("racket speed on its path", significant(s["racket_path_speed_m_s"], 5), "m/s"),
     ]
 
 
@@ -162,23 +203,23 @@ def run_oblique(
 ) -> int:
     """Simulate the oblique impact, print it (and write it with ``--out``)."""
     from fem_racket.impact.oblique import simulate_oblique
+    from fem_racket.impact.oblique_stroke import simulate_stroke
 
     _check(args, hand)
+    stroke = stroke_from_args(args)
     if args.clamped:
         kw = {k: getattr(args, k) for k in ("ball_mass", "kcb", "zeta", "separation")}
-        result = simulate_oblique(incidence=incidence, speed=args.speed, clamped=True, **kw)
+        kw.update(incidence=incidence, speed=args.speed, clamped=True)
+        result = simulate_stroke(stroke=stroke, **kw) if stroke else simulate_oblique(**kw)
     else:
         model = build_model(args)
         kw = impact_kwargs(args)
-        speed = kw.pop("speed")
-        result = simulate_oblique(
-            model,
-            incidence=incidence,
-            speed=speed,
-            output_step=args.output_step,
-            swing=swing_from_args(args, model.mesh.length),
-            **kw,
-        )
+        kw.update(incidence=incidence, output_step=args.output_step)
+        swing = swing_from_args(args, model.mesh.length)
+        if stroke:
+            result = simulate_stroke(model, stroke=stroke, swing=swing, **kw)
+        else:
+            result = simulate_oblique(model, swing=swing, **kw)
     summary = result.summary()
     if args.out:
         _write(args, result, summary, files)

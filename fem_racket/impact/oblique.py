@@ -59,12 +59,16 @@ class ObliqueResult:
         Incident ball speed [m/s].
     contact : LinearContact or None
         The clamped head's K_CB and zeta (None on the free racket: in ``normal``).
+    stroke : dict or None
+        A stroke's face and path angles, the incidence they give and the launch angle
+        (:mod:`fem_racket.impact.oblique_stroke`), units in the keys.
     """
 
     normal: ImpactResult | ClampedImpact
     tangential: ObliqueOutcome
     speed: float
     contact: LinearContact | None = None
+    stroke: dict[str, Any] | None = None
 
     @property
     def clamped(self) -> bool:
@@ -103,6 +107,7 @@ class ObliqueResult:
             "speed_m_s": self.speed,
             "normal_speed_m_s": normal_speed,
             **self.tangential.summary(),
+            **(self.stroke or {}),
         }
 
 

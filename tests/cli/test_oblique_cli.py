@@ -7,6 +7,9 @@ import pytest
 
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.oblique import simulate_oblique
+from fem_racket.impact.oblique_stroke import simulate_stroke
+from fem_racket.impact.stroke import Stroke
+from fem_racket.impact.swing import Swing
 from tests.clirun import run
 
 
@@ -37,6 +40,20 @@ def test_json_is_the_library_call(capsys):
     assert data["normal_speed_m_s"] == pytest.approx(20 * math.cos(math.radians(30)), rel=1e-15)
 
 
+def test_a_stroke_is_the_library_call(capsys):
+    argv = ("simulate", "--face-angle", "80", "--path-angle", "19", "--racket-speed", "15",
+            "--pivot", "0.1", "--spin", "-1000", "--json")  # fmt: skip
+    code, out, _ = run(capsys, *argv)
+    assert code == 0
+    data = json.loads(out)
+    ref = simulate_stroke(
+        incidence=Incidence(spin=-1000.0), stroke=Stroke(80.0, 19.0), speed=20.0,
+        swing=Swing.from_speed(15.0, 0.68, pivot=0.1),
+    ).summary()  # fmt: skip
+    for key in ("launch_angle_deg", "spin_out_rpm", "ball_speed_out_m_s", "angle_deg"):
+        assert data[key] == ref[key]
+
+
 def test_out_writes_the_tangential_histories(capsys, tmp_path):
     f = tmp_path / "oblique.json"
     code, _, _ = run(capsys, "simulate", "--angle", "50", "--out", f)
@@ -60,6 +77,9 @@ def test_out_writes_the_tangential_histories(capsys, tmp_path):
         (("--clamped", "--position", "0.6"), "--position is not allowed with --clamped"),
         (("--angle", "30", "--grip", "firm"), "a hand is not allowed with an oblique impact"),
         (("--ball-inertia", "0.9"), "ball_inertia = 0.9 is not allowed"),
+        (("--path-angle", "19"), "path_angle = 19.0 deg is not allowed without a swing"),
+        (("--face-angle", "80", "--angle", "5"), "angle = 5.0 deg is not allowed with a stroke"),
+        (("--face-angle", "80", "--clamped", "--racket-speed", "5"), "--racket-speed is not"),
     ],
 )
 def test_bad_oblique_input_is_one_line_exit_2(capsys, argv, message):
