@@ -70,8 +70,11 @@ class SampledNormal:
         from scipy.interpolate import CubicHermiteSpline
 
         t = np.asarray(self.t, dtype=float)
-        f = np.asarray(self.force_samples, dtype=float)
-        spline = CubicHermiteSpline(t, np.asarray(self.impulse_samples, dtype=float), f)
+        # an output time repeated (the contact time on the output grid) is one sample
+        keep = np.concatenate(([True], np.diff(t) > 0.0))
+        t, f = t[keep], np.asarray(self.force_samples, dtype=float)[keep]
+        p = np.asarray(self.impulse_samples, dtype=float)[keep]
+        spline = CubicHermiteSpline(t, p, f)
         object.__setattr__(self, "_spline", spline)
         grid = t
         for i in range(1, len(t)):
