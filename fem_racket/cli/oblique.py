@@ -57,9 +57,10 @@ OBLIQUE_OPTIONS = {
 #: argparse dest -> (option, Stroke field, help): a stroke's geometry.
 STROKE_OPTIONS = {
     "face_angle": ("--face-angle", "face_angle", "string plane to the horizontal [deg] with the "
-                   "ball arriving horizontally (90: vertical; a forehand ~80, Kwon et al. 2017)"),
+                   "ball arriving horizontally (90: vertical; a forehand ~80, Kwon et al. 2017; "
+                   "default 90 with --path-angle, else no stroke)"),
     "path_angle": ("--path-angle", "path_angle", "the racket's path above the horizontal [deg] "
-                   "(needs --racket-speed, the speed along it; a forehand ~19)"),
+                   "(needs --racket-speed, the speed along it; a forehand ~19; default 0)"),
 }  # fmt: skip
 
 #: Options a clamped head takes (besides the oblique ones and the output options).
