@@ -177,3 +177,51 @@ def test_the_layering_test_sees_an_upward_import(tmp_path):
     found = imports(bad)
     assert "fem_racket.impact.simulate" in found
     assert all(LAYERS[part(t)] > LAYERS[part("fem_racket.frame.mesh")] for t in found)
+
+
+#: The rooms of cli/, lowest first: the parser, signals and notes; the option groups (and
+#: ``common``, which re-exports them); the commands, one module each, independent of each other;
+#: the package itself (``main``), which alone knows every command.
+CLI_ROOMS = {"base": 0, "options": 1, "commands": 2, "top": 3}
+CLI_BASE = {"parser", "signals", "text"}
+#: ``config --check`` prints what each command would take from a run file: it asks the top-level
+#: parser (inside a function), the one import of the package from below.
+CLI_UPWARD = {("fem_racket.cli.commands.config", "fem_racket.cli")}
+
+
+def cli_room(module: str) -> str:
+    """The room of a module of fem_racket.cli."""
+    pieces = module.split(".")
+    if len(pieces) < 3:
+        return "top"
+    if pieces[2] in ("options", "commands"):
+        return pieces[2]
+    return "base" if pieces[2] in CLI_BASE else "options"
+
+
+CLI = sorted(m for m in MODULES if part(m) == "cli")
+
+
+def test_every_cli_module_has_a_room():
+    folders = {
+        p.name for p in (PACKAGE / "cli").iterdir() if p.is_dir() and p.name != "__pycache__"
+    }
+    assert folders <= set(CLI_ROOMS), f"cli/ folders without a rank: {folders}"
+
+
+@pytest.mark.parametrize("module", CLI)
+def test_cli_rooms(module):
+    here = cli_room(module)
+    for target in GRAPH[module]:
+        if part(target) != "cli" or target not in MODULES and target.rsplit(".", 1)[0] == module:
+            continue
+        if (module, target) in CLI_UPWARD or (module, target.rsplit(".", 1)[0]) in CLI_UPWARD:
+            continue
+        there = cli_room(target)
+        assert CLI_ROOMS[there] <= CLI_ROOMS[here], (
+            f"{module} ({here}) imports {target} ({there}) from a higher room of cli/"
+        )
+        if here == there == "commands" and target.count(".") >= 3:
+            assert target.split(".")[3] == module.split(".")[3], (
+                f"{module} imports {target}: commands are independent of each other"
+            )

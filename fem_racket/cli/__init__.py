@@ -30,8 +30,8 @@ import sys
 from collections.abc import Sequence
 from typing import Any
 
+from fem_racket.cli.options.runfile import apply_config
 from fem_racket.cli.parser import OneLineErrorParser
-from fem_racket.cli.runfile import apply_config
 from fem_racket.cli.signals import (
     GuardedStdout,
     StdoutFault,
@@ -46,7 +46,7 @@ from fem_racket.validation import InputError, show
 
 __all__ = ["main"]
 
-#: Sub-command -> the module of :mod:`fem_racket.cli` that registers it (``register(sub)``), in
+#: Sub-command -> its module of :mod:`fem_racket.cli.commands` (which has ``register(sub)``), in
 #: the order ``--help`` lists them.
 COMMANDS = {
     "simulate": "simulate",
@@ -108,7 +108,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     named = None if argv is None else _command_named(argv)
     modules = [COMMANDS[named]] if named else list(dict.fromkeys(COMMANDS.values()))
     for module in modules:
-        importlib.import_module(f"fem_racket.cli.{module}").register(sub)
+        importlib.import_module(f"fem_racket.cli.commands.{module}").register(sub)
     for command in sub.choices.values():  # -v also after the command name
         command.add_argument(
             "-v",

@@ -1,8 +1,8 @@
 """What the commands share, in one place to import from: options, run files, output and notes.
 
-The options live by concept in :mod:`.frame_options` (the frame), :mod:`.impact_options` (ball,
-law, swing, solver), :mod:`.laws`, :mod:`.output` (``--out``, JSON), :mod:`.runfile`
-(``--config``), :mod:`.text` (notes, digits) and :mod:`.parser`.
+The options live by concept in :mod:`fem_racket.cli.options`: ``frame`` (the frame), ``impact``
+(ball, swing, solver), ``laws``, ``output`` (``--out``, JSON), ``runfile`` (``--config``); the
+notes and digits in :mod:`fem_racket.cli.text`, the parser in :mod:`fem_racket.cli.parser`.
 
 Conventions every command follows (so a new command plugs in with a few lines):
 
@@ -19,7 +19,7 @@ Conventions every command follows (so a new command plugs in with a few lines):
 
 from __future__ import annotations
 
-from fem_racket.cli.frame_options import (
+from fem_racket.cli.options.frame import (
     MESH_EXCLUSIVE,
     add_ei_options,
     add_frame_options,
@@ -27,7 +27,7 @@ from fem_racket.cli.frame_options import (
     build_model,
     frame_from_args,
 )
-from fem_racket.cli.impact_options import (
+from fem_racket.cli.options.impact import (
     DEFAULT_OUTPUT_STEP,
     add_impact_options,
     add_output_step_option,
@@ -37,16 +37,16 @@ from fem_racket.cli.impact_options import (
     impact_kwargs,
     swing_from_args,
 )
-from fem_racket.cli.lists import number_list
-from fem_racket.cli.output import (
+from fem_racket.cli.options.lists import number_list
+from fem_racket.cli.options.output import (
     add_output_options,
     print_json,
     run_parameters,
     write_json,
     write_text,
 )
+from fem_racket.cli.options.runfile import add_config_option, apply_config
 from fem_racket.cli.parser import OneLineErrorParser
-from fem_racket.cli.runfile import add_config_option, apply_config
 from fem_racket.cli.text import note, note_modes, significant
 
 __all__ = [

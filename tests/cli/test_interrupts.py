@@ -238,7 +238,8 @@ def test_sigterm_and_sigint_leave_no_temporary(tmp_path, command):
 def test_a_signal_turned_into_another_exception_still_ends_as_the_signal(monkeypatch, capsys):
     # A SIGINT arriving during `import pyvista` reached the command as VTK's ImportError
     # ("Failed to load vtkCommonMath"): a traceback and exit 1 where Ctrl-C means exit 130.
-    from fem_racket.cli import modes, signals
+    from fem_racket.cli import signals
+    from fem_racket.cli.commands import modes
 
     def interrupted_import(args):
         signals.received.append(KeyboardInterrupt)  # what the handler records

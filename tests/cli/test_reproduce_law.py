@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from fem_racket.cli import build_parser, main
-from fem_racket.cli.reproduce import _destinations
+from fem_racket.cli.commands.reproduce import _destinations
 from fem_racket.paper.claims.conclusions import CONCLUSIONS
 from fem_racket.paper.figures import FIGURES, expected_files
 

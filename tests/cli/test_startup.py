@@ -84,7 +84,11 @@ def test_simulate_imports_only_the_engine(swing, tmp_path):
     assert "fem_racket.impact.exact.single" in modules  # the engine path did run
     assert not loaded(modules, ("scipy", *SOLVERS, *FILES, *PLOTTING, *OTHERS))
     # nor the other commands, nor the library's drawing and study modules
-    others = ("fem_racket.cli.sweep", "fem_racket.cli.vtk", "fem_racket.cli.reproduce")
+    others = (
+        "fem_racket.cli.commands.sweep",
+        "fem_racket.cli.commands.vtk",
+        "fem_racket.cli.commands.reproduce",
+    )
     assert not loaded(modules, (*others, "fem_racket.io.plotting", "fem_racket.paper"))
 
 

@@ -7,8 +7,8 @@ import argparse
 import time
 
 from fem_racket.cli.common import add_config_option, run_parameters
-from fem_racket.cli.drawing import add_figure_options, add_quiet_option, progress_of
-from fem_racket.cli.laws import add_law_options, law_from_args
+from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
+from fem_racket.cli.options.laws import add_law_options, law_from_args
 
 DEFAULT_OUT = "output/paper"
 DEFAULT_REPORT = "REPRODUCTION.md"

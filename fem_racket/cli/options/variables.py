@@ -7,7 +7,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from fem_racket.cli.lists import number_list
+from fem_racket.cli.options.lists import number_list
 
 __all__ = ["add_variable_options", "variables_from_args"]
 

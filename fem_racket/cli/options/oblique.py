@@ -1,7 +1,7 @@
-"""``fem-racket simulate`` with an oblique, spinning ball (``--angle``, ``--spin``,
-``--friction``, ...) or on a clamped head (``--clamped``): :func:`fem_racket.impact.oblique.
-simulate_oblique`, printed as outgoing speed, angle and spin, the contact regime and the normal
-impact's outcome.
+"""The oblique impact's options of ``fem-racket simulate`` (``--angle``, ``--spin``,
+``--friction``, ..., ``--clamped``, ``--face-angle``, ``--path-angle``): the run they ask for
+(:func:`fem_racket.impact.oblique.simulate_oblique` or
+:func:`fem_racket.impact.oblique_stroke.simulate_stroke`), its histories and its printed rows.
 
 Without any of these options ``simulate`` runs today's head-on impact, unchanged.
 """
@@ -9,9 +9,6 @@ Without any of these options ``simulate`` runs today's head-on impact, unchanged
 from __future__ import annotations
 
 import argparse
-import csv
-import json
-from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
@@ -21,8 +18,8 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
     swing_from_args,
-    write_json,
 )
+from fem_racket.cli.options.output import write_result_files
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
@@ -31,10 +28,18 @@ from fem_racket.impact.incidence import (
     Incidence,
 )
 from fem_racket.impact.stroke import Stroke
-from fem_racket.outputs import Target, atomic_outputs, provenance
+from fem_racket.outputs import provenance
 from fem_racket.validation import InputError
 
-__all__ = ["add_oblique_options", "incidence_from_args", "run_oblique", "stroke_from_args"]
+__all__ = [
+    "add_oblique_options",
+    "incidence_from_args",
+    "oblique_from_args",
+    "oblique_histories",
+    "oblique_rows",
+    "run_oblique",
+    "stroke_from_args",
+]
 
 #: argparse dest -> (option, Incidence field, metavar, help).
 OBLIQUE_OPTIONS = {
@@ -130,7 +135,9 @@ def _check(args: argparse.Namespace, hand: Any) -> None:
             )
 
 
-def _histories(result) -> dict[str, Any]:
+def oblique_histories(result) -> dict[str, Any]:
+    """The tangential contact's histories (and the normal ones on the free racket), units in
+    the names."""
     out = result.histories()
     if not result.clamped:
         n = result.normal
@@ -139,25 +146,7 @@ def _histories(result) -> dict[str, Any]:
     return out
 
 
-def _write(args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path]) -> None:
-    meta = provenance(run_parameters(args))
-    meta["results"] = summary
-    history = _histories(result)
-    if len(files) == 1:
-        data = {"provenance": meta, "summary": summary}
-        history = {k: v.tolist() for k, v in history.items()}
-        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
-        return
-    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
-        with open(tmp, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(history)
-            for row in zip(*history.values(), strict=True):
-                w.writerow([repr(float(v)) for v in row])
-        side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
-
-
-def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
+def oblique_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
     grips = ", ".join(f"{a * 1e3:.4g}-{b * 1e3:.4g}" for a, b in s["grip_times_s"]) or "none"
     flips = ", ".join(f"{t * 1e3:.4g}" for t in s["friction_reversal_times_s"]) or "none"
     where = (
@@ -199,10 +188,8 @@ def _stroke_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
     ]
 
 
-def run_oblique(
-    args: argparse.Namespace, incidence: Incidence, hand: Any, files: list[Path]
-) -> int:
-    """Simulate the oblique impact, print it (and write it with ``--out``)."""
+def oblique_from_args(args: argparse.Namespace, incidence: Incidence, hand: Any):
+    """Check the options against the oblique impact and run it: an ``ObliqueResult``."""
     from fem_racket.impact.oblique import simulate_oblique
     from fem_racket.impact.oblique_stroke import simulate_stroke
 
@@ -211,23 +198,27 @@ def run_oblique(
     if args.clamped:
         kw = {k: getattr(args, k) for k in ("ball_mass", "kcb", "zeta", "separation")}
         kw.update(incidence=incidence, speed=args.speed, clamped=True)
-        result = simulate_stroke(stroke=stroke, **kw) if stroke else simulate_oblique(**kw)
-    else:
-        model = build_model(args)
-        kw = impact_kwargs(args)
-        kw.update(incidence=incidence, output_step=args.output_step)
-        swing = swing_from_args(args, model.mesh.length)
-        if stroke:
-            result = simulate_stroke(model, stroke=stroke, swing=swing, **kw)
-        else:
-            result = simulate_oblique(model, swing=swing, **kw)
+        return simulate_stroke(stroke=stroke, **kw) if stroke else simulate_oblique(**kw)
+    model = build_model(args)
+    kw = impact_kwargs(args)
+    kw.update(incidence=incidence, output_step=args.output_step)
+    swing = swing_from_args(args, model.mesh.length)
+    if stroke:
+        return simulate_stroke(model, stroke=stroke, swing=swing, **kw)
+    return simulate_oblique(model, swing=swing, **kw)
+
+
+def run_oblique(args: argparse.Namespace, incidence: Incidence, hand: Any, files: list) -> int:
+    """``simulate``'s oblique impact: run, write ``--out`` (``files``), print."""
+    result = oblique_from_args(args, incidence, hand)
     summary = result.summary()
     if args.out:
-        _write(args, result, summary, files)
+        meta = {**provenance(run_parameters(args)), "results": summary}
+        write_result_files(args, meta, summary, files, oblique_histories(result))
     if args.json:
         print_json(summary)
         return 0
-    for name, value, unit in _rows(summary):
+    for name, value, unit in oblique_rows(summary):
         print(f"{name:<28} {value:>14} {unit}".rstrip())
     for f in files:
         print(f"{'written':<28} {f}")

@@ -7,7 +7,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from fem_racket.cli.lists import number_list
+from fem_racket.cli.options.lists import number_list
 from fem_racket.frame.hand import GRIPS
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES

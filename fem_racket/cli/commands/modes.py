@@ -11,7 +11,7 @@ from fem_racket.cli.common import (
     note,
     print_json,
 )
-from fem_racket.cli.drawing import add_quiet_option, progress_of
+from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.progress import progress_bar
 

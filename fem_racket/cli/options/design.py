@@ -1,8 +1,8 @@
 """Options of the design commands (``optimize``, ``sensitivity``): the design problem. A run
 file's ``[design]`` (optimize) or ``[sensitivity]`` table takes the same keys (``--ei-bounds`` ->
 ``ei_bounds``); the starting racket comes from the frame options or the ``[frame]`` table. The
-option groups: :mod:`.variable_options`, :mod:`.zone_options`, :mod:`.objective_options`; where
-the designs run: :mod:`.execution_options`."""
+option groups: :mod:`.variables`, :mod:`.zones`, :mod:`.objectives`; where the designs run:
+:mod:`.execution`."""
 
 from __future__ import annotations
 
@@ -10,10 +10,10 @@ import argparse
 from typing import Any
 
 from fem_racket.cli.common import add_frame_options, frame_from_args
-from fem_racket.cli.laws import add_law_options, law_from_args
-from fem_racket.cli.objective_options import add_objective_options, objectives_from_args
-from fem_racket.cli.variable_options import add_variable_options, variables_from_args
-from fem_racket.cli.zone_options import add_zone_options, zone_from_args
+from fem_racket.cli.options.laws import add_law_options, law_from_args
+from fem_racket.cli.options.objectives import add_objective_options, objectives_from_args
+from fem_racket.cli.options.variables import add_variable_options, variables_from_args
+from fem_racket.cli.options.zones import add_zone_options, zone_from_args
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.problem import DesignProblem
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import add_config_option
-from fem_racket.cli.design_options import add_design_options, problem_from_args
-from fem_racket.cli.execution_options import add_progress_option, add_run_options, run_options
+from fem_racket.cli.options.design import add_design_options, problem_from_args
+from fem_racket.cli.options.execution import add_progress_option, add_run_options, run_options
 
 
 def register(sub: argparse._SubParsersAction) -> None:

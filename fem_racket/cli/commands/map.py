@@ -20,7 +20,7 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
-from fem_racket.cli.laws import add_law_options, law_from_args
+from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE

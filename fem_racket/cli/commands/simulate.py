@@ -19,8 +19,6 @@ force histories over that window, the hand in the provenance's ``"used"``.
 from __future__ import annotations
 
 import argparse
-import csv
-import json
 from pathlib import Path
 from typing import Any
 
@@ -38,11 +36,11 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
     swing_from_args,
-    write_json,
 )
-from fem_racket.cli.impact_options import add_hand_options, hand_from_args
-from fem_racket.cli.laws import law_from_args
-from fem_racket.cli.oblique import add_oblique_options, incidence_from_args, run_oblique
+from fem_racket.cli.options.impact import add_hand_options, hand_from_args
+from fem_racket.cli.options.laws import law_from_args
+from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
+from fem_racket.cli.options.output import write_result_files
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
@@ -52,7 +50,6 @@ from fem_racket.impact.simulate import simulate
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
     Target,
-    atomic_outputs,
     check_output_path,
     check_targets,
     sidecar_path,
@@ -110,19 +107,7 @@ def _write(
 ) -> None:
     """Write --out: JSON, or CSV and its sidecar as one set (both or neither)."""
     meta = impact_provenance(result, run_parameters(args))
-    if len(files) == 1:
-        data = {"provenance": meta, "summary": summary}
-        history = {k: v.tolist() for k, v in history.items()}
-        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
-        return
-    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
-        with open(tmp, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(history)
-            for row in zip(*history.values(), strict=True):
-                w.writerow([repr(float(v)) for v in row])
-        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
-        side.write_text(text + "\n", encoding="utf-8")
+    write_result_files(args, meta, summary, files, history)
 
 
 def _law_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
@@ -261,7 +246,7 @@ def run(args: argparse.Namespace) -> int:
     hand = hand_from_args(args)
     files = _check_out(args) if args.out else []
     incidence = incidence_from_args(args)
-    if incidence is not None:
+    if incidence is not None:  # an oblique impact (fem_racket.cli.options.oblique)
         return run_oblique(args, incidence, hand, files)
     if hand is not None:
         return _run_held(args, hand, files)

@@ -15,7 +15,7 @@ from fem_racket.cli.common import (
     note_modes,
     run_parameters,
 )
-from fem_racket.cli.drawing import add_quiet_option, progress_of
+from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import InputError
 

@@ -18,7 +18,7 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
-from fem_racket.cli.output import json_ready
+from fem_racket.cli.options.output import json_ready
 from fem_racket.outputs import Target, atomic_outputs, check_targets, provenance
 from fem_racket.studies.calibrate import (
     FAMILIES,

@@ -8,8 +8,8 @@ import dataclasses
 import math
 from typing import Any
 
-from fem_racket.cli.frame_options import add_frame_options
-from fem_racket.cli.laws import add_law_options, law_from_args
+from fem_racket.cli.options.frame import add_frame_options
+from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.frame.hand import GRIPS, Hand
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.held.shock import DEFAULT_WINDOW

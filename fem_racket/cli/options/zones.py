@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from fem_racket.cli.lists import number_list
+from fem_racket.cli.options.lists import number_list
 from fem_racket.studies.design.build import ZONES
 
 __all__ = ["add_zone_options", "zone_from_args"]

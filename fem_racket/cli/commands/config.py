@@ -12,7 +12,7 @@ from pathlib import PurePath
 from typing import Any
 
 from fem_racket.cli.common import add_output_options
-from fem_racket.cli.runfile import config_values, file_options
+from fem_racket.cli.options.runfile import config_values, file_options
 from fem_racket.io.config import example_config, load_config, toml_value
 from fem_racket.io.config_keys import COMMAND_TABLES
 from fem_racket.validation import InputError

@@ -14,7 +14,7 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
 )
-from fem_racket.cli.drawing import add_figure_options, add_quiet_option, progress_of
+from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.system import SEPARATION_EVENTS

@@ -21,7 +21,7 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
 )
-from fem_racket.cli.laws import add_law_options
+from fem_racket.cli.options.laws import add_law_options
 from fem_racket.contact.presets import law_parameters
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import DEFAULT_MODES
