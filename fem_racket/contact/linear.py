@@ -18,19 +18,31 @@ extremely low impact speed range"; give K_CB explicitly outside it).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import Any, ClassVar
 
 import numpy as np
 
-from fem_racket.validation import check_positive, check_range
+from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.parameters import LawFit, LawParameter
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_finite,
+    check_positive,
+    check_range,
+    show,
+)
 
 __all__ = [
+    "BALL_MASS_RANGE",
     "DEFAULT_BALL_MASS",
     "KCB_SPEED_RANGE",
     "PAPER_CLAMPED_COR",
     "PAPER_KCB_POINTS",
     "Ball",
     "LinearContact",
+    "check_ball_mass",
     "cor_from_zeta",
     "kcb_from_speed",
     "zeta_from_cor",
@@ -42,6 +54,10 @@ DEFAULT_BALL_MASS = 0.057
 PAPER_CLAMPED_COR = 0.83
 #: (impact speed [m/s], K_CB [N/m]) stated in section 2.1.1 of the paper.
 PAPER_KCB_POINTS = ((20.0, 2.74e4), (30.0, 5.0e4), (40.0, 8.33e4))
+#: Plausible ball masses [kg]: a table-tennis ball is 2.7 g, a tennis ball 56-59.4 g, a baseball
+#: 145 g, a cricket ball 156-163 g, a softball ~190 g (the sports' rules); 1 kg leaves room for
+#: training balls.
+BALL_MASS_RANGE = (1e-3, 1.0)
 #: Impact speeds [m/s] over which :func:`kcb_from_speed` extrapolates the paper's K_CB law.
 KCB_SPEED_RANGE = (1.0, 100.0)
 
@@ -59,7 +75,23 @@ class Ball:
     mass: float = DEFAULT_BALL_MASS
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mass", check_positive("ball mass", self.mass, "kg"))
+        object.__setattr__(self, "mass", check_ball_mass(self.mass))
+
+
+def check_ball_mass(value: object, name: str = "ball mass") -> float:
+    """``value`` [kg] as a float, or a one-line :class:`InputError` unless it lies in
+    :data:`BALL_MASS_RANGE`, naming the likely unit slip (grams typed as kilograms)."""
+    m = check_positive(name, value, "kg")
+    low, high = BALL_MASS_RANGE
+    if low <= m <= high:
+        return m
+    slip = ""
+    if high < m <= high * 1e3:
+        slip = f" (grams typed as kg? {show(m)} g = {show(m / 1e3)} kg)"
+    raise InputError(
+        f"{name} = {show(m)} kg is not allowed: must lie in [{low:g}, {high:g}] kg, from a "
+        f"table-tennis ball to a softball{slip}"
+    )
 
 
 def zeta_from_cor(cor: float) -> float:
@@ -102,26 +134,83 @@ def kcb_from_speed(speed: float) -> float:
     return float(math.exp(logk[i] + slope * (x - logv[i])))
 
 
-@dataclass(frozen=True)
-class LinearContact:
-    """Linear compound ball/string spring-dashpot.
+def _zeta_from_fit(stiffness: float, damping: float, ball_mass: float) -> float:
+    return damping / (2.0 * math.sqrt(ball_mass * stiffness))
+
+
+@dataclass(frozen=True, eq=False)
+class LinearContact(ContactLaw):
+    """The paper's linear compound ball/string spring-dashpot, F = K_CB delta + C_CB delta'.
+
+    One class for the exact eigen-solution (which reads ``stiffness`` and ``zeta``) and the
+    general integrators (which call :meth:`force`). ``C_CB = 2 zeta sqrt(m_B K_CB)``: the damping
+    ratio refers to the ball's mass ``ball_mass``, so the law carries it.
 
     Parameters
     ----------
-    stiffness : float
-        K_CB [N/m].
-    zeta : float
-        Damping ratio C_CB / (2 sqrt(m_B K_CB)), in [0, 1).
+    stiffness : float or ndarray
+        K_CB [N/m] (the paper: 2.74e4, 5.0e4, 8.33e4 at 20, 30, 40 m/s).
+    zeta : float or ndarray
+        Damping ratio C_CB / (2 sqrt(m_B K_CB)), in [0, 1) (the paper: 0.0592).
+    ball_mass : float
+        m_B [kg] the damping ratio refers to.
+    separation : {"displacement", "force"}
+        End of contact: delta back to 0 (the paper's) or F back to 0.
     """
 
-    stiffness: float
-    zeta: float = field(default_factory=lambda: zeta_from_cor(PAPER_CLAMPED_COR))
+    name: ClassVar[str] = "linear"
+    declared: ClassVar[tuple[LawParameter, ...]] = (
+        LawParameter(
+            name="kcb",
+            field="stiffness",
+            unit="N/m",
+            default=PAPER_KCB_POINTS[0][1],
+            low=0.0,
+            high=1e12,
+            key="kcb_n_m",
+            help="ball/string stiffness K_CB",
+            why="the paper's 2.74e4-8.33e4 N/m at 20-40 m/s; the linear law is solved exactly "
+            "for any K_CB > 0 (1e-6 N/m: a 100 s contact; tests use it to stress the output "
+            "limits); 1e12: a contact of 0.75 us for a tennis ball, far beyond steel on steel",
+            open_low=True,
+        ),
+        LawParameter(
+            name="zeta",
+            field="zeta",
+            unit="-",
+            default=0.0592,
+            low=0.0,
+            high=1.0,
+            key="zeta",
+            help="ball/string damping ratio",
+            why="0: elastic; 1: critically damped, no rebound (eqs 1-4)",
+            open_high=True,
+        ),
+    )
+    fit = LawFit(
+        names=("kcb [N/m]", "ccb [N s/m]"),
+        build=lambda p: LinearContact.from_damping(p[0], p[1]),
+        low=(1e3, 1e-3),
+        high=(1e7, 1e3),
+        starts={"kawazoe-1997": (5e4, 6.3), "itf": (2e4, 3.0)},
+    )
+    stiffness: Any
+    zeta: Any = field(default_factory=lambda: zeta_from_cor(PAPER_CLAMPED_COR))
+    ball_mass: float = DEFAULT_BALL_MASS
+    separation: str = "displacement"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "stiffness", check_positive("kcb", self.stiffness, "N/m"))
-        object.__setattr__(
-            self, "zeta", check_range("zeta", self.zeta, 0.0, 1.0, include_high=False)
-        )
+        if np.ndim(self.stiffness) == 0 and np.ndim(self.zeta) == 0:
+            object.__setattr__(self, "stiffness", check_positive("kcb", self.stiffness, "N/m"))
+            object.__setattr__(self, "zeta", check_finite("zeta", self.zeta))
+        super().__post_init__()
+        check_positive("ball mass", self.ball_mass, "kg")
+        check_choice("separation", self.separation, ("displacement", "force"))
+
+    @property
+    def end(self) -> str:  # type: ignore[override]
+        """The end condition chosen by ``separation``."""
+        return self.separation
 
     @classmethod
     def for_speed(
@@ -131,6 +220,8 @@ class LinearContact:
         kcb: float | None = None,
         zeta: float | None = None,
         clamped_cor: float = PAPER_CLAMPED_COR,
+        ball_mass: float = DEFAULT_BALL_MASS,
+        separation: str = "displacement",
     ) -> LinearContact:
         """The ball/string law of an impact at ``speed`` [m/s].
 
@@ -144,10 +235,44 @@ class LinearContact:
             Damping ratio; from ``clamped_cor`` (eqs 1-4) when None.
         clamped_cor : float
             Clamped-frame coefficient of restitution (0.83 in the paper).
+        ball_mass : float
+            m_B [kg] the damping ratio refers to.
+        separation : {"displacement", "force"}
+            End of contact.
         """
         z = zeta_from_cor(clamped_cor) if zeta is None else zeta
-        return cls(kcb_from_speed(speed) if kcb is None else kcb, z)
+        k = kcb_from_speed(speed) if kcb is None else kcb
+        return cls(k, z, ball_mass, separation)
 
-    def damping(self, ball_mass: float) -> float:
-        """C_CB = 2 zeta sqrt(m_B K_CB) [N s/m]."""
-        return 2.0 * self.zeta * math.sqrt(ball_mass * self.stiffness)
+    @classmethod
+    def from_damping(
+        cls, stiffness: float, damping: float, ball_mass: float = DEFAULT_BALL_MASS
+    ) -> LinearContact:
+        """The law with K_CB = ``stiffness`` [N/m] and C_CB = ``damping`` [N s/m]."""
+        return cls(stiffness, _zeta_from_fit(stiffness, damping, ball_mass), ball_mass)
+
+    def damping(self, ball_mass: float | None = None) -> Any:
+        """C_CB = 2 zeta sqrt(m_B K_CB) [N s/m], m_B the law's own unless ``ball_mass`` [kg]."""
+        m = self.ball_mass if ball_mass is None else ball_mass
+        if np.ndim(self.stiffness) == 0 and np.ndim(self.zeta) == 0:
+            return 2.0 * self.zeta * math.sqrt(m * self.stiffness)
+        return 2.0 * np.asarray(self.zeta) * np.sqrt(m * np.asarray(self.stiffness))
+
+    def elastic(self) -> LinearContact:
+        """zeta = 0: the spring without its dashpot."""
+        return replace(self, zeta=0.0)
+
+    def force(self, d: Any, v: Any, z: Any) -> Any:
+        return self.stiffness * d + self.damping() * v
+
+    def partials(self, d: Any, v: Any, z: Any) -> tuple[Any, Any, Any]:
+        zero = 0.0 * np.asarray(d)
+        return self.stiffness + zero, self.damping() + zero, zero
+
+    def contact_time_estimate(self, mass: Any, speed: Any) -> Any:
+        """pi sqrt(m / K_CB) [s] (eq 11)."""
+        return math.pi * np.sqrt(np.asarray(mass) / self.stiffness) + 0.0 * np.asarray(speed)
+
+    def parameters(self) -> dict[str, Any]:
+        """K_CB and zeta (the run file's keys), and C_CB [N s/m]."""
+        return {**super().parameters(), "ccb_n_s_m": self.damping()}

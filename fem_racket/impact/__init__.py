@@ -1,20 +1,25 @@
-"""One impact of the ball on the frame.
+"""One impact of the ball on the racket.
 
-Where and how fast the ball strikes (:mod:`fem_racket.impact.problem`), the coupled ball + frame
-system
-(:mod:`fem_racket.impact.system`), the closed forms of the paper's eqs 1-16
-(:mod:`fem_racket.impact.analytic.rigid`), the coupled modes
-(:mod:`fem_racket.impact.analytic.coupled`), the solvers (the closed-form eigen-solution
-:mod:`fem_racket.impact.exact.closed_form`, CVODE and
-scipy BDF in :mod:`fem_racket.impact.ode.integrators`; for any contact law the fast general
-integrator
-:mod:`fem_racket.impact.general.integrator` on the impact-point receptance
-:mod:`fem_racket.impact.general.receptance`, CVODE :mod:`fem_racket.impact.ode.law_cvode`, and
-:mod:`fem_racket.impact.law_impact` for histories and an initially moving racket) and
-:func:`~fem_racket.impact.simulate.simulate` (its paths: the paper's linear law in
-:mod:`fem_racket.impact.simulate_linear`, any law or a moving racket in
-:mod:`fem_racket.impact.simulate_law`) returning an
-:class:`~fem_racket.impact.simulate.ImpactResult`.
+Stating it: :mod:`fem_racket.impact.problem` (:class:`ImpactProblem`: the structure, free or
+held in a hand, the impact point, the ball and its speed, the contact law, the racket's motion).
+Solving it: :mod:`fem_racket.impact.solvers` (one protocol and one registry: ``exact``,
+``general``, ``cvode``, ``bdf``, ``auto``; options bound when a solver is made,
+:mod:`fem_racket.impact.settings`); :func:`fem_racket.impact.simulate.simulate` is the one-call
+shim over both, returning an :class:`~fem_racket.impact.result.ImpactResult`.
+
+The rooms, lowest first (``tests/test_layering.py`` keeps them in order):
+
+- the root's base modules: the coupled ball + frame ODE (:mod:`fem_racket.impact.system`), the
+  mode reduction (:mod:`fem_racket.impact.reduction`), modal data at impact points
+  (:mod:`fem_racket.impact.point`), the swing (:mod:`fem_racket.impact.swing`), the result;
+- ``analytic/``: the paper's closed forms, eqs 1-16;
+- ``exact/``: the exact solution of the linear law (eigen-solution, batched engine);
+- ``general/``: the general integrator for any contact law;
+- ``ode/``: CVODE and scipy BDF on the coupled ODE;
+- ``held/``: the hand-held racket;
+- the root's dispatch: the solvers, ``simulate`` and its two paths
+  (:mod:`fem_racket.impact.simulate_linear`, :mod:`fem_racket.impact.simulate_law`) and the law
+  path's histories (:mod:`fem_racket.impact.law_impact`).
 
 Layer: above :mod:`fem_racket.frame` and :mod:`fem_racket.contact`; may import those two and the
 base modules (:mod:`fem_racket.validation`, :mod:`fem_racket.outputs`, :mod:`fem_racket.version`).

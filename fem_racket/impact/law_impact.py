@@ -1,8 +1,7 @@
 """One impact with any contact law: receptance, initial racket motion, histories.
 
 Builds the impact-point :class:`~fem_racket.impact.general.receptance.Receptance` of a frame, turns
-an
-initial racket velocity field into modal velocities, runs the general integrator (or CVODE) and
+an initial racket velocity field into modal velocities, runs the general integrator (or CVODE) and
 rebuilds the ball and frame histories at the output times. Every coordinate
 ``x = [u_B, eta_rigid, eta_flex]`` obeys ``x'' + omega^2 x = b F(t)`` (``b = [-1/m_B, a]``) with
 the integrator's piecewise-cubic force (:mod:`fem_racket.impact.general.cubic_force`), so each is
@@ -32,7 +31,7 @@ from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.system import output_times
-from fem_racket.validation import InputError, check_choice, check_finite
+from fem_racket.validation import AccuracyError, InputError, check_choice, check_finite
 
 __all__ = [
     "LAW_SOLVERS",
@@ -173,10 +172,16 @@ def run_law(
     """:func:`solve_general` for one impact on ``model`` (all its modes available)."""
     rec = receptance(model, position, ball_mass, None)
     fv = None if frame_velocity is None else frame_velocity[None, :]
-    return solve_general(
-        law, rec, speed, frame_velocity=fv, tolerance=tolerance, steps=steps, beta=beta,
-        t_max=t_max,
-    )  # fmt: skip
+    try:
+        return solve_general(
+            law, rec, speed, frame_velocity=fv, tolerance=tolerance, steps=steps, beta=beta,
+            t_max=t_max,
+        )  # fmt: skip
+    except RuntimeError as err:  # a step's Newton iteration diverged: one line naming the case
+        raise AccuracyError(
+            f"law {law.label()} at {speed:g} m/s, x/L = {position:g}: the general integrator "
+            f"failed ({err}); solver 'cvode' may succeed"
+        ) from None
 
 
 def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
@@ -249,8 +254,7 @@ def solve_law_impact(
     """One impact of the ball at ``position`` (x/L) and ``speed`` [m/s] under ``law``.
 
     ``solver``: ``"general"`` (:func:`~fem_racket.impact.general.integrator.solve_general`, all
-    modes
-    available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
+    modes available, truncated and stepped for the COR ``tolerance`` unless ``steps``/``beta`` are
     given) or ``"cvode"`` (:func:`solve_law_cvode`, all modes, ``rtol``/``atol``).
     ``frame_velocity``: see :func:`modal_velocity`.
     """

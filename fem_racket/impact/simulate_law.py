@@ -1,120 +1,57 @@
 """An impact under any contact law, or on a racket moving as given: ``simulate_law``.
 
-The general integrator (:mod:`fem_racket.impact.general.integrator`) or CVODE runs the ball and
-every frame
+The general integrator (:mod:`fem_racket.impact.general`) or CVODE runs the ball and every frame
 mode (:func:`fem_racket.impact.law_impact.solve_law_impact`); a swing
-(:mod:`fem_racket.impact.swing`) enters as the racket's initial motion about its centre of gravity,
-and the paper's linear law then takes K_CB at the closing speed. The arguments are checked by
-:func:`fem_racket.impact.simulate.simulate`, which calls this.
+(:mod:`fem_racket.impact.swing`) enters as the racket's initial motion about its centre of
+gravity, and the paper's linear law then takes K_CB at the closing speed. The solvers of
+:mod:`fem_racket.impact.solvers` check the problem and the options and call this.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
-from typing import Any
-
-from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.contact.spring_dashpot import SpringDashpot
-from fem_racket.frame.mesh import FrameMesh
-from fem_racket.frame.model import FrameModel
-from fem_racket.frame.segments import Frame
 from fem_racket.impact.law_impact import solve_law_impact
-from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.ode.integrators import check_solver_settings
-from fem_racket.impact.problem import Impact
+from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
+from fem_racket.impact.settings import Settings
 from fem_racket.impact.simulate_linear import RIGID_MODES
-from fem_racket.impact.swing import Swing, closing_speed
-from fem_racket.validation import InputError, check_positive
 
 __all__ = ["simulate_law"]
 
 
-def simulate_law(
-    frame: Frame | FrameMesh | FrameModel | None,
-    elements: int,
-    impact: Impact,
-    ball: Ball,
-    contact_used: LinearContact | None,
-    law: ContactLaw,
-    *,
-    solver: str,
-    separation: str,
-    kcb: float | None,
-    zeta: float | None,
-    frame_velocity: Any,
-    swing: Swing | None,
-    output_step: float | None,
-    t_max: float | None,
-    rtol: float,
-    atol: float,
-) -> ImpactResult:
-    """An impact under ``law`` (``contact_used``: the paper's linear law it stands for, or None)
-    by ``solver`` ("general" or "cvode"); the other arguments as
-    :func:`fem_racket.impact.simulate.simulate`'s."""
-    model = frame_model(frame, elements)
-    if swing is not None:  # the swing as the general integrator's moving racket
-        if frame_velocity is not None:
-            raise InputError("swing and frame_velocity cannot be combined: give one")
-        v_r = float(swing.speed_at(impact.position * model.mesh.length))
-        if contact_used is not None:  # the paper's K_CB at the closing speed
-            closing = closing_speed(impact.speed, v_r)
-            contact_used = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
-            law = SpringDashpot(contact_used.stiffness, contact_used.damping(ball.mass), separation)
-        frame_velocity = swing.cg_motion(model.props.cg)
+def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> ImpactResult:
+    """An impact of ``problem`` (any contact law, a racket at rest, swinging or moving as given)
+    by ``solver`` ("general" or "cvode") with ``settings``, checked by the solver. The paper's
+    linear law runs at the closing speed."""
+    model = problem.model
+    law, contact = problem.law, None
+    if law is None:  # the paper's K_CB at the closing speed
+        law = contact = problem.contact()
+    frame_velocity = problem.frame_velocity
+    if problem.swing is not None:  # the swing as the general integrator's moving racket
+        frame_velocity = problem.swing.cg_motion(model.props.cg)
+    s = settings
     if solver == "cvode":  # the general integrator has no tolerances
-        check_solver_settings(solver, "modal", model.mesh.n_elements, rtol, atol)
-    result = _law_result(
-        model,
-        impact,
-        ball,
-        contact_used,
-        law,
-        solver,
-        frame_velocity,
-        output_step,
-        t_max,
-        rtol,
-        atol,
-    )
-    return result if swing is None else replace(result, swing=swing)
-
-
-def _law_result(
-    model: FrameModel,
-    impact: Impact,
-    ball: Ball,
-    contact: LinearContact | None,
-    law: ContactLaw,
-    solver: str,
-    frame_velocity: Any,
-    output_step: float | None,
-    t_max: float | None,
-    rtol: float,
-    atol: float,
-) -> ImpactResult:
-    """An impact under ``law`` by the general integrator or CVODE (all frame modes)."""
-    if output_step is not None:
-        check_positive("output_step", output_step, "s")
+        check_solver_settings(solver, "modal", model.mesh.n_elements, s.rtol, s.atol)
     run = solve_law_impact(
         law,
         model,
-        impact.position,
-        ball.mass,
-        impact.speed,
+        problem.impact.position,
+        problem.ball.mass,
+        problem.impact.speed,
         solver=solver,
         frame_velocity=frame_velocity,
-        output_step=output_step,
-        t_max=t_max,
-        rtol=rtol,
-        atol=atol,
+        output_step=s.output_step,
+        t_max=s.t_max,
+        rtol=s.rtol,
+        atol=s.atol,
+        tolerance=s.tolerance,
     )
     shapes = model.modes(None).all_shapes
     return ImpactResult(
         model=model,
-        impact=impact,
-        ball=ball,
+        impact=problem.impact,
+        ball=problem.ball,
         contact=contact,
         solver=solver,
         separation=law.end,
@@ -128,4 +65,8 @@ def _law_result(
         peak_force=run.peak_force,
         law=law if contact is None else None,
         law_state=run.state if contact is None else None,
+        swing=problem.swing,
+        rtol=s.rtol if solver == "cvode" else None,
+        atol=s.atol if solver == "cvode" else None,
+        tolerance=s.tolerance if solver == "general" else None,
     )

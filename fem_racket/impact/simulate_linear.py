@@ -1,37 +1,31 @@
 """An impact under the paper's linear law on a racket at rest or swinging: ``simulate_linear``.
 
-The exact solver without output times runs the batched engine
-(:mod:`fem_racket.impact.exact.engine`,
+The exact solver without output times runs the batched engine (:mod:`fem_racket.impact.exact`,
 through :func:`fem_racket.impact.exact.single.engine_impact`) at the closing speed and superposes
-the
-swing; otherwise the coupled ball + frame ODE (:func:`build_system`,
-:mod:`fem_racket.impact.system`) in modal or
-physical coordinates goes to the solver (:mod:`fem_racket.impact.ode.integrators`), a swing
-entering as its initial
-velocity field. The arguments are checked by :func:`fem_racket.impact.simulate.simulate`, which
-calls this.
+the swing; otherwise the coupled ball + frame ODE (:func:`build_system`,
+:mod:`fem_racket.impact.system`) in modal or physical coordinates goes to the solver
+(:mod:`fem_racket.impact.ode.integrators`), a swing entering as its initial velocity field.
+The solvers of :mod:`fem_racket.impact.solvers` check the problem and the options and call this.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
+from typing import Any
 
 from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.frame.segments import Frame
 from fem_racket.impact.exact.single import engine_impact
-from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.ode.integrators import check_solver_settings, get_solver
-from fem_racket.impact.problem import Impact
+from fem_racket.impact.problem import Impact, ImpactProblem
 from fem_racket.impact.result import ImpactResult
-from fem_racket.impact.swing import Swing, add_swing, closing_speed, swing_setup
+from fem_racket.impact.settings import BASES, Settings
+from fem_racket.impact.swing import add_swing, swing_setup
 from fem_racket.impact.system import CoupledSystem, modal_system, physical_system
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BASES", "build_system", "simulate_linear"]
 
-BASES = ("modal", "physical")
 #: Rigid-body modes of the free frame (translation, rotation) in the modal basis.
 RIGID_MODES = 2
 #: Largest number of output times a simulation may be asked for.
@@ -84,95 +78,101 @@ def _check_output_count(
     )
 
 
-def simulate_linear(
-    frame: Frame | FrameMesh | FrameModel | None,
-    elements: int,
-    impact: Impact,
-    ball: Ball,
-    *,
-    kcb: float | None,
-    zeta: float | None,
-    solver: str,
-    separation: str,
-    basis: str,
-    modes: int | None,
-    output_step: float | None,
-    t_max: float | None,
-    rtol: float,
-    atol: float,
-    tolerance: float | None,
-    swing: Swing | None,
-) -> ImpactResult:
-    """An impact under the paper's linear law (K_CB from ``kcb`` or the closing speed, ``zeta``)
-    by ``solver``; the arguments as :func:`fem_racket.impact.simulate.simulate`'s, checked."""
-    model = frame_model(frame, elements)
-    check_solver_settings(solver, basis, model.mesh.n_elements, rtol, atol)
+def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> ImpactResult:
+    """An impact of ``problem`` (the paper's linear law on a free racket, at rest or swinging)
+    by ``solver`` ("exact", "cvode" or "bdf") with ``settings``, checked by the solver."""
+    model = problem.model
+    impact, ball, swing = problem.impact, problem.ball, problem.swing
+    separation = problem.separation or "displacement"
+    s = settings
+    check_solver_settings(solver, s.basis, model.mesh.n_elements, s.rtol, s.atol)
     x_i = impact.position * model.mesh.length
-    v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
-    closing = closing_speed(impact.speed, v_r)
-    contact = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
-    if solver == "exact" and output_step is None:
+    v_r = problem.racket_speed
+    contact = problem.contact()
+    if solver == "exact" and s.output_step is None:
         traj, frame_map, kept = engine_impact(
             model,
-            impact if swing is None else replace(impact, speed=closing),
+            impact if swing is None else replace(impact, speed=problem.closing_speed),
             ball,
             contact,
             separation=separation,
-            modes=modes,
-            tolerance=tolerance,
-            t_max=t_max,
+            modes=s.modes,
+            tolerance=s.tolerance,
+            t_max=s.t_max,
         )
         if swing is not None:  # the stationary impact at the closing speed, plus the swing
             traj = add_swing(traj, frame_map, model, swing, v_r)
-        return _result(
-            model, impact, ball, contact, solver, separation, basis, kept, traj, frame_map,
-            swing=swing, tolerance=tolerance,
-        )  # fmt: skip
-    system = build_system(model, impact, ball, contact, basis=basis, modes=modes)
+        run = _Run(solver, separation, s.basis, kept, traj, frame_map)
+        return _result(problem, contact, run, tolerance=s.tolerance)
+    system = build_system(model, impact, ball, contact, basis=s.basis, modes=s.modes)
     to_lab = None
     if swing is not None:
         system, to_lab = swing_setup(system, model, swing, x_i, direct=solver != "exact")
-    if output_step is not None:
-        _check_output_count(output_step, t_max, system.contact_time_estimate(), kcb, ball.mass)
+    if s.output_step is not None:
+        _check_output_count(
+            s.output_step, s.t_max, system.contact_time_estimate(), problem.kcb, ball.mass
+        )
     traj = get_solver(solver)(
-        system, separation=separation, output_step=output_step, t_max=t_max, rtol=rtol, atol=atol
+        system,
+        separation=separation,
+        output_step=s.output_step,
+        t_max=s.t_max,
+        rtol=s.rtol,
+        atol=s.atol,
     )
     if to_lab is not None:
         traj = to_lab(traj)
-    n_modes = (system.size - 1 - RIGID_MODES) if basis == "modal" else None
-    return _result(
-        model, impact, ball, contact, solver, separation, basis, n_modes, traj, system.frame_map,
-        swing=swing, rtol=rtol, atol=atol,
-    )  # fmt: skip
+    n_modes = (system.size - 1 - RIGID_MODES) if s.basis == "modal" else None
+    run = _Run(solver, separation, s.basis, n_modes, traj, system.frame_map)
+    tols = {} if solver == "exact" else {"rtol": s.rtol, "atol": s.atol}
+    return _result(problem, contact, run, **tols)
+
+
+@dataclass(frozen=True)
+class _Run:
+    """How a linear-law run went: the solver, its trajectory in the solver's coordinates and the
+    map taking them to the frame's Hermite DOFs (None: they are those)."""
+
+    solver: str
+    separation: str
+    basis: str
+    n_modes: int | None
+    traj: Any
+    frame_map: Any
 
 
 def _result(
-    model, impact, ball, contact, solver, separation, basis, n_modes, traj, frame_map,
-    *, swing=None, rtol=None, atol=None, tolerance=None,
-):  # fmt: skip
-    """The :class:`ImpactResult` of a linear-law run from its trajectory in the solver's
-    coordinates (``frame_map`` takes them to the frame's Hermite DOFs, None: they are those)."""
+    problem: ImpactProblem,
+    contact: LinearContact,
+    run: _Run,
+    *,
+    rtol: float | None = None,
+    atol: float | None = None,
+    tolerance: float | None = None,
+) -> ImpactResult:
+    """The :class:`ImpactResult` of a linear-law ``run`` of ``problem``."""
+    traj, frame_map = run.traj, run.frame_map
     if frame_map is None:
         q, qd = traj.x[:, 1:], traj.v[:, 1:]
     else:
         q, qd = traj.x[:, 1:] @ frame_map.T, traj.v[:, 1:] @ frame_map.T
     return ImpactResult(
-        model=model,
-        impact=impact,
-        ball=ball,
+        model=problem.model,
+        impact=problem.impact,
+        ball=problem.ball,
         contact=contact,
-        solver=solver,
-        separation=separation,
-        basis=basis,
-        n_modes=n_modes,
+        solver=run.solver,
+        separation=run.separation,
+        basis=run.basis,
+        n_modes=run.n_modes,
         t=traj.t,
         ball_displacement=traj.x[:, 0],
         ball_velocity=traj.v[:, 0],
         frame_displacement=q,
         frame_velocity=qd,
         peak_force=traj.peak_force,
-        rtol=None if solver == "exact" else rtol,
-        atol=None if solver == "exact" else atol,
+        rtol=rtol,
+        atol=atol,
         tolerance=tolerance,
-        swing=swing,
+        swing=problem.swing,
     )

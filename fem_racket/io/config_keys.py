@@ -12,7 +12,9 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS, LAW_NAMES
+from fem_racket.contact.linear import LinearContact
+from fem_racket.contact.parameters import LawParameter
+from fem_racket.contact.registry import LAW_NAMES, LiveView, family_parameters
 from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.ode.integrators import SOLVERS
@@ -125,6 +127,11 @@ def _segments(name: str, value: Any) -> tuple[Segment, ...]:
     return tuple(out)
 
 
+def _declared(p: LawParameter) -> Callable[[str, Any], float]:
+    """The check of a law parameter's key: its declared bounds."""
+    return _number(p.si_unit, lambda name, value, unit: p.check(value, name))
+
+
 @dataclass(frozen=True)
 class Key:
     """One key of a core table: how to check it and which CLI option (argparse dest) it sets."""
@@ -135,7 +142,7 @@ class Key:
 
 
 #: The core tables: table -> key -> :class:`Key`.
-CORE_KEYS: dict[str, dict[str, Key]] = {
+CORE_KEYS: dict[str, Mapping[str, Key]] = {
     "frame": {
         "preset": Key(_choice(tuple(PRESETS)), "ei1", "standard (EI1 146 N m^2) or rigid (9999)"),
         "ei1_n_m2": Key(_positive("N m^2"), "ei1", "grip-side bending rigidity EI1"),
@@ -145,25 +152,7 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         "elements": Key(_integer(1), "elements", "number of beam elements"),
     },
     "ball": {"mass_kg": Key(_positive("kg"), "ball_mass", "ball mass m_B")},
-    "contact": {
-        "kcb_n_m": Key(_positive("N/m"), "kcb", "ball/string stiffness K_CB"),
-        "zeta": Key(_interval(0.0, 1.0, include_high=False), "zeta", "damping ratio"),
-        "clamped_cor": Key(
-            _interval(0.0, 1.0, include_low=False), "zeta", "clamped-frame COR fixing zeta"
-        ),
-        "law": Key(_choice(LAW_NAMES), "law", "ball/string law: linear, a family or a preset"),
-        **{
-            FILE_KEYS[name]: Key(
-                _interval(0.0, math.inf)
-                if name in ("hc_alpha", "string_cubic")
-                else _positive(unit),
-                name,
-                f"{family} law: {name} [{unit}]",
-            )
-            for family, spec in FAMILY_PARAMETERS.items()
-            for name, (unit, _default) in spec.items()
-        },
-    },
+    "contact": LiveView(lambda: _contact_keys()),
     "impact": {
         "position_x_over_l": Key(_interval(0.0, 1.0), "position", "impact point x/L"),
         "speed_m_s": Key(_positive("m/s"), "speed", "incident ball speed V_B0"),
@@ -204,6 +193,27 @@ CORE_KEYS: dict[str, dict[str, Key]] = {
         "overwrite": Key(_boolean, "overwrite", "replace an existing output file"),
     },
 }
+
+
+def _contact_keys() -> dict[str, Key]:
+    """The [contact] table: the paper's law, the law's name and every registered family's
+    declared parameters (:mod:`fem_racket.contact.registry`: a law registered later adds its
+    keys)."""
+    kcb, zeta = LinearContact.declared
+    return {
+        kcb.key: Key(_declared(kcb), kcb.name, kcb.help),
+        zeta.key: Key(_declared(zeta), zeta.name, zeta.help),
+        "clamped_cor": Key(
+            _interval(0.0, 1.0, include_low=False), "zeta", "clamped-frame COR fixing zeta"
+        ),
+        "law": Key(_choice(LAW_NAMES), "law", "ball/string law: linear, a family or a preset"),
+        **{
+            p.key: Key(_declared(p), p.name, f"{family} law: {p.name} [{p.unit}]")
+            for family, declared in family_parameters().items()
+            for p in declared
+        },
+    }
+
 
 #: The argparse dests the core tables own; a command table may not set them.
 CORE_DESTS = frozenset(k.dest for t in CORE_KEYS.values() for k in t.values() if k.dest)

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.plausible import check_implement
 from fem_racket.validation import InputError
 
 __all__ = ["read_mesh", "write_mesh"]
@@ -134,9 +135,10 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
         )
     points = np.concatenate([left, right[-1:]]) - left[0]
     try:
-        return FrameMesh(points, ei, ra)
+        mesh = FrameMesh(points, ei, ra)
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
+    return check_implement(mesh, where)  # a mesh in millimetres is refused, not computed
 
 
 def write_mesh(

@@ -16,7 +16,6 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.paper.claims import AGREES, DIFFERS, Claim
 from fem_racket.paper.claims.conclusions import PAPER_TC_RANGE_S, contact_time_rows
 from fem_racket.paper.figures import FIGURES, FigureData
-from fem_racket.paper.figures.law_runs import elastic_counterpart
 from fem_racket.paper.report import cell, figure_link
 
 __all__ = ["VERDICT_WORDS", "render_law_report"]
@@ -62,7 +61,7 @@ def render_law_report(
         "",
         f"**Law**: `{law.name}`, {params} (SI units as in the names). The paper's \"no "
         "damping\" curves are drawn with the law's *elastic counterpart* (the same law without "
-        "its losses)" + ("" if elastic_counterpart(law) is not None else
+        "its losses)" + ("" if law.elastic() is not None else
         ", which this law has not: those curves are left out") + ".",
         "",
         f"**{held} of the paper's 4 conclusions hold under this law.**",

@@ -21,26 +21,25 @@ from __future__ import annotations
 
 import logging
 import math
-from collections.abc import Callable
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.hunt_crossley import HuntCrossley
-from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.series import SeriesBallString
-from fem_racket.contact.spring_dashpot import SpringDashpot
+from fem_racket.contact.linear import LinearContact, check_ball_mass
+from fem_racket.contact.parameters import LawFit
+from fem_racket.contact.registry import FAMILIES as REGISTERED
+from fem_racket.contact.registry import LiveView
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
-from fem_racket.validation import InputError, check_choice, check_positive
+from fem_racket.validation import InputError, check_choice
 
 __all__ = [
     "FAMILIES",
     "TARGET_SETS",
     "Calibration",
-    "Family",
     "Target",
     "calibrate",
     "clamped_histories",
@@ -98,63 +97,15 @@ TARGET_SETS: dict[str, tuple[Target, ...]] = {
 }
 
 
-def _hunt_crossley(p: np.ndarray) -> ContactLaw:
-    return HuntCrossley(p[0], p[1], p[2])
-
-
-def _hysteretic(p: np.ndarray) -> ContactLaw:
-    return Hysteretic.from_cor(p[0], min(p[2], 0.999), p[1])
-
-
-def _series(p: np.ndarray) -> ContactLaw:
-    return SeriesBallString(p[0], p[1], p[2], p[3])
-
-
-def _linear(p: np.ndarray) -> ContactLaw:
-    return SpringDashpot(p[0], p[1])
-
-
-@dataclass(frozen=True)
-class Family:
-    """A law family to fit: parameter names (with units), builder, bounds and starts."""
-
-    names: tuple[str, ...]
-    build: Callable[[np.ndarray], ContactLaw]
-    low: tuple[float, ...]
-    high: tuple[float, ...]
-    starts: dict[str, tuple[float, ...]]
-
-
-FAMILIES: dict[str, Family] = {
-    "linear": Family(
-        ("kcb [N/m]", "ccb [N s/m]"),
-        _linear,
-        (1e3, 1e-3),
-        (1e7, 1e3),
-        {"kawazoe-1997": (5e4, 6.3), "itf": (2e4, 3.0)},
-    ),
-    "hunt-crossley": Family(
-        ("k [N/m^n]", "n [-]", "alpha [s/m]"),
-        _hunt_crossley,
-        (1e2, 1.0, 1e-5),
-        (1e40, 20.0, 5.0),
-        {"kawazoe-1997": (1e17, 9.0, 0.01), "itf": (3e5, 1.5, 0.05)},
-    ),
-    "hysteretic": Family(
-        ("k1 [N/m^n]", "n [-]", "rigid COR [-]"),
-        _hysteretic,
-        (1e2, 1.0, 0.05),
-        (1e40, 20.0, 0.999),
-        {"kawazoe-1997": (1e17, 9.0, 0.83), "itf": (2e4, 1.0, 0.745)},
-    ),
-    "series": Family(
-        ("ball K_b [N/m]", "ball C_b [N s/m]", "string k_s [N/m]", "string k_3 [N/m^3]"),
-        _series,
-        (1e3, 1e-2, 1e3, 1e-3),
-        (1e8, 1e3, 1e7, 1e14),
-        {"kawazoe-1997": (2e5, 10.0, 2e4, 3e8), "itf": (2e4, 3.0, 1e9, 1.0)},
-    ),
-}
+#: Family name -> how calibration fits it (live: the paper's linear law and every registered
+#: family that declares a :class:`~fem_racket.contact.parameters.LawFit`).
+FAMILIES: Mapping[str, LawFit] = LiveView(
+    lambda: {
+        name: cls.fit
+        for name, cls in {"linear": LinearContact, **REGISTERED}.items()
+        if cls.fit is not None
+    }
+)
 
 
 def clamped_impacts(law: ContactLaw, speeds: Any, ball_mass: float = 0.057) -> tuple[Any, Any]:
@@ -224,7 +175,7 @@ def calibrate(
 
     check_choice("family", family, FAMILIES)
     check_choice("target_set", target_set, TARGET_SETS)
-    check_positive("ball_mass", ball_mass, "kg")
+    check_ball_mass(ball_mass, "ball_mass")
     fam = FAMILIES[family]
     targets = TARGET_SETS[target_set]
     x0 = np.log(np.asarray(fam.starts[target_set], dtype=float))
@@ -260,8 +211,10 @@ def clamped_histories(
 
 
 def run_file_table(law: ContactLaw) -> str:
-    """The law as a run file's ``[contact]`` table (keys as in JSON outputs, units in them)."""
-    lines = ["[contact]"]
+    """The law as a run file's ``[contact]`` table: its declared parameters by their keys
+    (units in them, as in JSON outputs)."""
+    lines = ["[contact]", f'law = "{law.name}"']
     for key, value in law.describe().items():
-        lines.append(f"{key} = {value!r}" if key != "law" else f'law = "{value}"')
+        if key in {p.key for p in law.declared}:
+            lines.append(f"{key} = {value!r}")
     return "\n".join(lines) + "\n"

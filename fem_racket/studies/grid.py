@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import (
@@ -34,6 +35,7 @@ from fem_racket.frame.segments import (
 )
 from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
+from fem_racket.impact.solvers import auto_method
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.grid_values import (
@@ -44,7 +46,7 @@ from fem_racket.studies.grid_values import (
     parameter,
     parse_values,
 )
-from fem_racket.studies.law_axes import case_law, sweep_law_values
+from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
 from fem_racket.validation import (
     InputError,
@@ -108,7 +110,7 @@ class SweepSpec:
     values: dict[str, Any]
     frame: Frame | FrameMesh | None = None
     ei2: float | None = None
-    solver: str = "exact"
+    solver: str = "auto"
     separation: str = "displacement"
     basis: str = "modal"
     modes: int | None = DEFAULT_MODES
@@ -124,10 +126,12 @@ class SweepSpec:
         :func:`fem_racket.sweep` for the keywords (the law's parameters by their names in
         :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
+        check_linear_options(kwargs.get("law"), kcb=raw["kcb"], zeta=raw["zeta"])
         values = {name: as_values(name, value) for name, value in raw.items()}
         law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
         for name, value in sweep_law_values(kwargs.get("law"), law_given).items():
             values[name] = as_values(name, value)
+        check_law_grid(kwargs.get("law"), values)  # every combination, before any work
         defaults = {"position": 0.75, "speed": 20.0, "ei_factor": 1.0, "elements": 20}
         defaults.update(racket_speed=0.0, reference=DEFAULT_REFERENCE)
         defaults["ball_mass"] = DEFAULT_BALL_MASS
@@ -153,11 +157,11 @@ class SweepSpec:
                         f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
-        if kwargs.get("law") is not None and kwargs.get("solver", "exact") == "exact":
-            kwargs["solver"] = "general"  # the exact path is the linear law's only
+        if kwargs.get("solver", "auto") == "auto":
+            kwargs["solver"] = auto_method(kwargs.get("law") is None)
         spec = cls(values=values, frame=frame, ei2=ei2, **kwargs)
         if spec.law is not None:
-            check_choice("solver", spec.solver, ("exact", "general", "cvode"))
+            check_choice("solver", spec.solver, ("general", "cvode"))
         else:
             check_choice("solver", spec.solver, SOLVERS)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)

@@ -15,9 +15,11 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS
+from fem_racket.contact.linear import LinearContact, check_ball_mass
+from fem_racket.contact.registry import LAW_PARAMETERS as DECLARED
+from fem_racket.contact.registry import LiveView
 from fem_racket.frame.mesh import MAX_ELEMENTS
-from fem_racket.studies.law_axes import LAW_DESCRIPTIONS, check_law_value
+from fem_racket.studies.law_axes import check_law_value
 from fem_racket.studies.limits import MAX_CASES
 from fem_racket.validation import (
     InputError,
@@ -58,14 +60,14 @@ PARAMETERS: dict[str, Parameter] = {
 }
 
 #: Sweepable parameters of the contact law families (a sweep holds those of its law's family):
-#: the attribute is the run file's [contact] key with ``contact_`` before it.
-LAW_PARAMETERS: dict[str, Parameter] = {
-    name: Parameter(
-        "1" if unit == "-" else unit, LAW_DESCRIPTIONS[name], "contact_" + FILE_KEYS[name]
-    )
-    for spec in FAMILY_PARAMETERS.values()
-    for name, (unit, _default) in spec.items()
-}
+#: the attribute is the run file's [contact] key with ``contact_`` before it (live, from the
+#: laws' declarations: :mod:`fem_racket.contact.registry`).
+LAW_PARAMETERS = LiveView(
+    lambda: {
+        name: Parameter("1" if p.unit == "-" else p.unit, p.help, "contact_" + p.key)
+        for name, (_, p) in DECLARED.items()
+    }
+)
 
 
 def parameter(name: str) -> Parameter:
@@ -81,10 +83,12 @@ def _check_value(name: str, value: object) -> float | int:
         return check_range(name, value, 0.0, 1.0, unit=unit)
     if name in ("racket_speed", "pivot"):  # any sign: towards/away, beyond the butt
         return check_finite(name, value, unit)
-    if name == "zeta":
-        return check_range(name, value, 0.0, 1.0, include_high=False)
+    if name in ("kcb", "zeta"):  # the paper's law's declared bounds
+        return next(p for p in LinearContact.declared if p.name == name).check(value)
     if name == "elements":
         return check_elements(value, 2, MAX_ELEMENTS)  # the words of simulate's --elements
+    if name == "ball_mass":
+        return check_ball_mass(value, name)
     return check_positive(name, value, "" if unit == "1" else unit)
 
 

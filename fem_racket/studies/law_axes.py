@@ -1,12 +1,14 @@
 """Contact-law parameters as sweep axes: each parameter of a law family fixed or swept.
 
-A family law (:data:`fem_racket.contact.presets.FAMILY_PARAMETERS`: ``hunt-crossley``,
-``hysteretic``, ``series``) has named parameters (``hc_exponent``, ``k1``, ...; the command
-line's ``--hc-exponent`` and the run file's ``contact.hc_exponent``). In a sweep each of them
-takes one value (fixed) or several (a dimension), like the impact's parameters
+A family law (:data:`fem_racket.contact.registry.FAMILIES`: ``hunt-crossley``, ``hysteretic``,
+``series`` and any registered later) has named parameters (``hc_exponent``, ``k1``, ...; the
+command line's ``--hc-exponent`` and the run file's ``contact.hc_exponent``). In a sweep each of
+them takes one value (fixed) or several (a dimension), like the impact's parameters
 (:mod:`fem_racket.studies.grid`). Every law works elementwise on arrays, so a batch of cases
 with different parameter values is one law whose parameters are arrays of one value per case
-(:func:`case_law`): the general integrator advances them together.
+(:func:`case_law`): the general integrator advances them together. Each value is checked
+against its bounds when parsed, and every combination of the grid against the law's conditions
+(k2 >= k1 ...) before any work (:func:`check_law_grid`).
 """
 
 from __future__ import annotations
@@ -17,12 +19,15 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.presets import FAMILY_PARAMETERS, FILE_KEYS, family_law, get_law
+from fem_racket.contact.parameters import check_values
+from fem_racket.contact.presets import family_law
+from fem_racket.contact.registry import FAMILIES, LAW_PARAMETERS, LiveView
 from fem_racket.validation import InputError, show
 
 __all__ = [
     "LAW_DESCRIPTIONS",
     "case_law",
+    "check_law_grid",
     "check_law_value",
     "family_of",
     "law_values",
@@ -30,44 +35,50 @@ __all__ = [
     "sweep_law_values",
 ]
 
-#: Law parameter -> description (the equations are in each law's module).
-LAW_DESCRIPTIONS = {
-    "hc_stiffness": "Hunt-Crossley stiffness k of F = k delta^n (1 + alpha delta')",
-    "hc_exponent": "Hunt-Crossley exponent n",
-    "hc_alpha": "Hunt-Crossley damping alpha = lambda / k",
-    "k1": "hysteretic loading stiffness k1 (F = k1 delta^n)",
-    "k2": "hysteretic unloading stiffness k2",
-    "hyst_exponent": "hysteretic exponent n",
-    "ball_stiffness": "series law: ball stiffness",
-    "ball_damping": "series law: ball damping",
-    "string_stiffness": "series law: string-bed stiffness k_s",
-    "string_cubic": "series law: string-bed cubic stiffness k_3",
-}
+#: Law parameter -> description (live, from the declarations; the equations are in each law's
+#: module).
+LAW_DESCRIPTIONS = LiveView(lambda: {name: p.help for name, (_, p) in LAW_PARAMETERS.items()})
 
 
 def owner(name: str) -> str:
     """The family whose parameter ``name`` is."""
-    return next(f for f, spec in FAMILY_PARAMETERS.items() if name in spec)
+    return LAW_PARAMETERS[name][0]
 
 
 def family_of(law: ContactLaw | None) -> str | None:
     """The family of ``law`` (presets included: ``kawazoe-1997-nonlinear`` is hysteretic);
     None for the paper's linear law and any law without named parameters."""
     name = getattr(law, "name", None)
-    return name if name in FAMILY_PARAMETERS else None
+    return name if name in FAMILIES else None
 
 
 def law_values(law: ContactLaw) -> dict[str, Any]:
     """The parameters of a family law by their option names (``hc_exponent`` ...)."""
-    by_key = {key: name for name, key in FILE_KEYS.items()}
-    return {by_key[k]: v for k, v in law.parameters().items()}
+    return law.values()
 
 
 def check_law_value(name: str, value: Any) -> float:
-    """One value of the law parameter ``name``, checked as the law checks it (one-line
-    :class:`InputError` naming the parameter)."""
-    law = get_law(owner(name), **{name: value})
-    return float(law_values(law)[name])
+    """One value of the law parameter ``name`` checked against its bounds (one-line
+    :class:`InputError` naming the parameter); the conditions between parameters are checked
+    on the whole grid (:func:`check_law_grid`)."""
+    return LAW_PARAMETERS[name][1].check(value)
+
+
+def check_law_grid(law: ContactLaw | None, values: Mapping[str, Any]) -> None:
+    """Check every combination of the law parameters in ``values`` (a number or a 1-D array of
+    swept values each) against the law's bounds and conditions, before any work; a one-line
+    :class:`InputError` names the first case that fails (e.g. k2 < k1)."""
+    family = family_of(law)
+    if family is None:
+        return
+    cls = FAMILIES[family]
+    grid = np.meshgrid(
+        *(np.atleast_1d(np.asarray(values[p.name], dtype=float)) for p in cls.declared),
+        indexing="ij",
+        sparse=True,
+    )
+    cases = {p.name: a for p, a in zip(cls.declared, grid, strict=True)}
+    check_values(family, cls.declared, cls.conditions, cases)
 
 
 def sweep_law_values(law: ContactLaw | None, given: Mapping[str, Any]) -> dict[str, Any]:
@@ -80,10 +91,10 @@ def sweep_law_values(law: ContactLaw | None, given: Mapping[str, Any]) -> dict[s
             what = "linear" if law is None else law.name
             raise InputError(
                 f"law parameters {sorted(given)} are not allowed with law {show(what)}: must "
-                f"be a family with parameters ({', '.join(FAMILY_PARAMETERS)})"
+                f"be a family with parameters ({', '.join(FAMILIES)})"
             )
         return {}
-    spec = FAMILY_PARAMETERS[family]
+    spec = [p.name for p in FAMILIES[family].declared]
     for key in given:
         if key not in spec:
             raise InputError(
@@ -101,7 +112,7 @@ def case_law(law: ContactLaw | None, values: Mapping[str, Any], n: int | None = 
     family = family_of(law)
     if family is None:
         return law
-    params = {k: values[k] for k in FAMILY_PARAMETERS[family]}
+    params = {p.name: values[p.name] for p in FAMILIES[family].declared}
     if n is not None:
         params = {
             k: np.broadcast_to(np.asarray(v, dtype=float), (n,)).copy() for k, v in params.items()

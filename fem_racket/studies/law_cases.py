@@ -2,8 +2,7 @@
 
 The cases of a chunk that share a frame (mesh, EI scaling) run as one batch of
 :func:`fem_racket.impact.general.integrator.solve_general`: positions, speeds, ball masses and the
-law's
-parameters (:mod:`fem_racket.studies.law_axes`) as arrays of one value per case, which is what
+law's parameters (:mod:`fem_racket.studies.law_axes`) as arrays of one value per case, which is what
 makes the general integrator cheap per impact (``scripts/bench_laws.py``). Inside the batch the
 integrator groups cases by their estimated contact time, each group with its own step.
 

@@ -9,11 +9,9 @@ law, :mod:`fem_racket.impact.swing`). Sweet spots: :mod:`fem_racket.studies.swee
 
 :func:`apparent_cor_along` is the one place the impacts are solved: one call of the batched
 engine (:func:`fem_racket.impact.exact.engine.impacts`) for the whole grid, frame modes computed
-once;
-under a contact law other than the paper's, one batch of the general integrator
+once; under a contact law other than the paper's, one batch of the general integrator
 (:func:`fem_racket.impact.general.integrator.solve_general`, every mode available, those far above
-the
-contact frequency as one residual mode). The identity for v_out holds for any law: the impact
+the contact frequency as one residual mode). The identity for v_out holds for any law: the impact
 of a swinging free racket is the stationary one at the closing speed
 (:mod:`fem_racket.studies.law_cases` derives it), e_A depending on that speed.
 """

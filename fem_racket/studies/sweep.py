@@ -77,7 +77,7 @@ def sweep(
     reference: Any = None,
     pivot: Any = None,
     elements: Any = None,
-    solver: str = "exact",
+    solver: str = "auto",
     separation: str = "displacement",
     basis: str = "modal",
     modes: int | None = DEFAULT_MODES,

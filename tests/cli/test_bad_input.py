@@ -191,6 +191,20 @@ CLI_CASES = [
         sim("--grip", "firm", "--law", "hunt-crossley"),
         ("law = 'hunt-crossley'", "linear"),
     ),
+    # One racket per command: a second --mesh used to replace the first silently.
+    Case(
+        "mesh-twice",
+        sim("--mesh", "a.vtu", "--mesh", "b.vtu"),
+        ("--mesh is given twice", "'a.vtu'", "'b.vtu'"),
+    ),
+    # A nonlinear law with the paper's K_CB or zeta, or with the exact solver: refused, not
+    # ignored or switched (the library's ImpactProblem and solvers).
+    Case(
+        "law-with-exact",
+        sim("--law", "hunt-crossley", "--solver", "exact"),
+        ("solver = 'exact'", "general"),
+    ),
+    Case("law-with-modes", sim("--law", "hysteretic", "--modes", "10"), ("modes = 10",)),
     Case("modes-count-zero", ["modes", "--count", "0"], ("count = 0", ">= 1")),
     Case("modes-ei1-nan", ["modes", "--ei1", "nan"], ("ei1 = nan", "finite")),
     Case("unknown-command", ["nonsense"], ("COMMAND", "choose from")),

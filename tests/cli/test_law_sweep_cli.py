@@ -92,10 +92,12 @@ def test_map_under_the_linear_law_is_today_s_map(capsys, cwd):
 
 def test_map_takes_the_law_from_a_run_file(capsys, cwd):
     (cwd / "run.toml").write_text(
-        '[contact]\nlaw = "hunt-crossley"\nhc_stiffness_n_m_n = 1e7\n'
+        # a Hertz-like ball (1e7 N/m^n with the default n = 14.87 would deflect 0.54 m under
+        # 1 kN: refused as no ball)
+        '[contact]\nlaw = "hunt-crossley"\nhc_stiffness_n_m_n = 1e7\nhc_exponent = 1.5\n'
         '[map]\npositions = "0.5:1:5"\nout = ["r.nc"]\n'
     )
     code, out, err = run(capsys, "map", "--config", "run.toml", "--json")
     assert code == 0, err
-    law = get_law("hunt-crossley", hc_stiffness=1e7)
+    law = get_law("hunt-crossley", hc_stiffness=1e7, hc_exponent=1.5)
     assert json.loads(out)["contact"] == law.describe()

@@ -8,13 +8,13 @@ import pytest
 from fem_racket.contact.hunt_crossley import HuntCrossley, damping_from_cor
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import power_contact_time
+from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.presets import LAW_NAMES, PRESETS, get_law
 from fem_racket.contact.series import SeriesBallString
-from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.validation import InputError
 
 LAWS = {
-    "linear": SpringDashpot(5e4, 6.3),
+    "linear": LinearContact.from_damping(5e4, 6.3),
     "hunt-crossley": HuntCrossley(1e17, 9.0, 0.01),
     "hysteretic": Hysteretic(3e15, 9e16, 8.9),
     "series": SeriesBallString(1e5, 17.0, 2e4, 8e8),

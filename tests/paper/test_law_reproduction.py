@@ -11,19 +11,17 @@ import pytest
 
 from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.presets import get_law
-from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.claims import AGREES, DIFFERS
 from fem_racket.paper.claims.conclusions import conclusion_claims, contact_time_claim
 from fem_racket.paper.figures.law_runs import (
-    clamped_impacts,
-    elastic_counterpart,
     equivalent_kcb,
     free_impacts,
 )
 from fem_racket.paper.reproduce import reproduce
+from fem_racket.studies.calibrate import clamped_impacts
 from fem_racket.validation import InputError
 
 M_B = 0.057  # kg, the project's default ball mass (DESIGN section 1)
@@ -43,8 +41,7 @@ def test_linear_law_through_the_batch_equals_the_exact_path(model):
     # The general integrator with the paper's spring-dashpot is the exact solution to ~1e-6 in
     # COR (issue 15 check: 1e-7 with its own settings; the batch keeps the default truncation).
     positions = np.array([0.6, 0.75, 0.9])
-    c = LinearContact.for_speed(20.0)
-    law = SpringDashpot(c.stiffness, c.damping(M_B))
+    law = LinearContact.for_speed(20.0, ball_mass=M_B)
     cor, tc = free_impacts(law, model, positions, 20.0, M_B)
     for p, e, t in zip(positions, cor, tc, strict=True):
         exact = simulate(model, position=p, speed=20.0, output_step=None, tolerance=None)
@@ -65,7 +62,7 @@ def test_preset_meets_its_calibration_targets_on_the_clamped_frame():
 def test_equivalent_kcb_inverts_eq_11():
     # A linear spring without damping: T_c = pi sqrt(m_B / K) (eq 11), so K comes back exactly.
     k = 5.0e4
-    _, tc = clamped_impacts(SpringDashpot(k, 0.0), np.array([30.0]), M_B)
+    _, tc = clamped_impacts(LinearContact(k, 0.0, M_B), np.array([30.0]), M_B)
     assert tc[0] == pytest.approx(math.pi * math.sqrt(M_B / k), rel=1e-6)
     assert equivalent_kcb(tc, M_B)[0] == pytest.approx(k, rel=2e-6)
 
@@ -74,7 +71,7 @@ def test_equivalent_kcb_inverts_eq_11():
 def test_elastic_counterpart_returns_the_ball_at_its_speed(name):
     # Without losses a ball leaves a rigid support at its incoming speed: e = 1 (energy
     # conservation), to the integrator's accuracy.
-    elastic = elastic_counterpart(get_law(name))
+    elastic = get_law(name).elastic()
     cor, _ = clamped_impacts(elastic, np.array([20.0, 40.0]), M_B)
     assert cor == pytest.approx(1.0, abs=1e-5)
 
@@ -86,7 +83,7 @@ def test_series_law_has_no_elastic_counterpart_and_its_curves_are_left_out():
     from fem_racket.paper.plots.common import pyplot
 
     law = get_law("series")
-    assert elastic_counterpart(law) is None
+    assert law.elastic() is None
     d8, d9 = cor_position(True, law), contact_time_position(True, law)
     assert "COR standard undamped [-]" not in d8.tables["cor"]
     assert math.isnan(d8.values["eq16_max_excess"])

@@ -38,14 +38,11 @@ from fem_racket.cli.common import (
     swing_from_args,
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
-from fem_racket.cli.options.laws import law_from_args
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
 from fem_racket.cli.options.output import write_result_files
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
-from fem_racket.impact.held.run import HELD_RUN_SOLVERS, held_impact
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.simulate import simulate
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
@@ -139,7 +136,8 @@ NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
 
 
 def _check_hand(args: argparse.Namespace) -> None:
-    """Refuse, before the run, what the hand-held racket does not take."""
+    """Refuse, before the run, the options the hand-held racket does not take, named as the
+    command line spells them (the library refuses the rest: a law, the general solver)."""
     given = set(getattr(args, "explicit_options", ()))
     for dest in NOT_WITH_HAND:
         if dest in given:
@@ -148,16 +146,6 @@ def _check_hand(args: argparse.Namespace) -> None:
                 "its modes by --tolerance (exact) or all its DOFs (cvode, bdf) and ends contact "
                 "by the spring deflection"
             )
-    if args.solver not in HELD_RUN_SOLVERS:
-        raise InputError(
-            f"solver = {args.solver!r} is not allowed with a hand: must be one of "
-            f"{', '.join(HELD_RUN_SOLVERS)}"
-        )
-    if law_from_args(args) is not None:
-        raise InputError(
-            f"law = {args.law!r} is not allowed with a hand: the held racket takes the paper's "
-            "linear law (--kcb, --zeta)"
-        )
 
 
 def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
@@ -165,28 +153,13 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
     _check_hand(args)
     model = build_model(args)
     window = DEFAULT_WINDOW if args.hand_shock_window is None else args.hand_shock_window
-    # Every mode unless a --tolerance is asked: the modes dropped by the COR tolerance still
-    # move the hand (the grip force), and the held racket has few DOFs.
-    asked = args.tolerance != DEFAULT_TOLERANCE or "tolerance" in getattr(
-        args, "explicit_options", ()
-    )
-    tolerance = (args.tolerance or None) if asked else None
-    result = held_impact(
+    result = simulate(
         model,
-        hand,
-        position=args.position,
-        speed=args.speed,
-        ball_mass=args.ball_mass,
-        kcb=args.kcb,
-        zeta=args.zeta,
-        solver=args.solver,
+        hand=hand,
+        shock_window=args.hand_shock_window,
         swing=swing_from_args(args, model.mesh.length),
-        window=window,
-        output_step=args.output_step,
-        histories=bool(args.out),
-        tolerance=tolerance,
-        rtol=args.rtol,
-        atol=args.atol,
+        output_step=args.output_step if args.out else None,
+        **impact_kwargs(args),
     )
     summary = result.summary()
     if args.out:
@@ -195,7 +168,8 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
         print_json(summary)
         return 0
     h = summary["hand"]
-    modes = f"{summary['modes']} modes" if args.solver == "exact" else f"{summary['modes']} DOFs"
+    exact = summary["solver"] == "exact"
+    modes = f"{summary['modes']} modes" if exact else f"{summary['modes']} DOFs"
     rows = [
         *_outcome_rows(summary, summary["racket_speed_at_impact_m_s"] != 0.0),
         ("peak grip force", significant(summary["peak_grip_force_n"], 4), "N"),

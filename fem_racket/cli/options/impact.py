@@ -13,10 +13,9 @@ from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.frame.hand import GRIPS, Hand
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
-from fem_racket.impact.law_impact import LAW_SOLVERS
-from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.simulate_linear import BASES
+from fem_racket.impact.settings import BASES
+from fem_racket.impact.solvers import SOLVER_NAMES
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import InputError, show
@@ -200,10 +199,11 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
     s = parser.add_argument_group("solver")
     s.add_argument(
         "--solver",
-        default="exact",
-        choices=sorted((*SOLVERS, *LAW_SOLVERS)),
-        help="integrator: exact (closed-form modal solution), cvode, bdf or general (any "
-        "contact law; used for a nonlinear --law when exact is asked) (default exact)",
+        default="auto",
+        choices=SOLVER_NAMES,
+        help="integrator: exact (the paper's linear law, closed-form modal solution), general "
+        "(any contact law or racket motion), cvode, bdf, or auto: exact for the paper's law, "
+        "general otherwise (default auto)",
     )
     s.add_argument(
         "--separation",
@@ -284,21 +284,34 @@ def check_output_step(value: float) -> float:
     return value
 
 
+#: The options of :func:`fem_racket.simulate` the parser gives, with the parser's defaults: an
+#: option at its default that the command line did not give is left to the library (so that one
+#: a solver or law does not use is refused only when it was asked for).
+SIMULATE_DEFAULTS: dict[str, Any] = {
+    "ball_mass": None,
+    "kcb": None,
+    "zeta": None,
+    "solver": "auto",
+    "separation": "displacement",
+    "basis": "modal",
+    "modes": DEFAULT_MODES,
+    "tolerance": DEFAULT_TOLERANCE,
+    "t_max": None,
+    "rtol": 1e-10,
+    "atol": 1e-12,
+}
+
+
 def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
-    """Keyword arguments of :func:`fem_racket.simulate` from the parsed options."""
-    return {
-        "position": args.position,
-        "speed": args.speed,
-        "ball_mass": args.ball_mass,
-        "kcb": args.kcb,
-        "zeta": args.zeta,
-        "solver": args.solver,
-        "separation": args.separation,
-        "basis": args.basis,
-        "modes": args.modes,
-        "tolerance": args.tolerance,
-        "t_max": args.t_max,
-        "rtol": args.rtol,
-        "atol": args.atol,
-        "law": law_from_args(args),
-    }
+    """Keyword arguments of :func:`fem_racket.simulate` from the parsed options: the impact
+    point, speed and law, and every other option given (on the command line or in a run file)."""
+    given = set(getattr(args, "explicit_options", ()))
+    kwargs: dict[str, Any] = {"position": args.position, "speed": args.speed}
+    for key, default in SIMULATE_DEFAULTS.items():
+        value = getattr(args, key, default)
+        if key in given or value != default:
+            kwargs[key] = value
+    law = law_from_args(args)
+    if law is not None:
+        kwargs["law"] = law
+    return kwargs

@@ -10,14 +10,16 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.presets import FAMILY_PARAMETERS, LAW_NAMES, get_law, law_parameters
+from fem_racket.contact.presets import LAW_NAMES, check_linear_options, get_law, law_parameters
+from fem_racket.contact.registry import family_parameters
 
 __all__ = ["add_law_options", "law_from_args"]
 
 
 def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> None:
-    """--law and one option per family parameter (``--hc-alpha``, ``--k1`` ...); ``swept``:
-    each takes sweep values (a number, a comma list or start:stop:num[:log]) as text."""
+    """--law and one option per declared family parameter (``--hc-alpha``, ``--k1`` ...: the
+    registry's, :mod:`fem_racket.contact.registry`); ``swept``: each takes sweep values (a
+    number, a comma list or start:stop:num[:log]) as text."""
     g = parser.add_argument_group("contact law")
     g.add_argument(
         "--law",
@@ -26,19 +28,22 @@ def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> 
         help="ball/string law: linear (the paper's K_CB, zeta; default), a family with its "
         "options below, or a calibrated preset",
     )
-    for family, spec in FAMILY_PARAMETERS.items():
-        for name, (unit, default) in spec.items():
+    for family, declared in family_parameters().items():
+        for p in declared:
             g.add_argument(
-                f"--{name.replace('_', '-')}",
-                dest=name,
+                p.option,
+                dest=p.name,
                 type=str if swept else float,
                 default=None,
                 metavar="VALUES" if swept else "X",
-                help=f"{family}: {name} [{unit}]{', swept or fixed' if swept else ''} "
-                f"(default {default:.4g})",
+                help=f"{family}: {p.name} [{p.unit}]{', swept or fixed' if swept else ''} "
+                f"(default {p.default:.4g}; allowed {p.interval()})",
             )
 
 
 def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
-    """The law the options describe (None: the paper's linear law from --kcb and --zeta)."""
-    return get_law(getattr(args, "law", "linear"), **law_parameters(vars(args)))
+    """The law the options describe (None: the paper's linear law from --kcb and --zeta);
+    --kcb or --zeta with another law is refused (that law would ignore them)."""
+    name = getattr(args, "law", "linear")
+    check_linear_options(name, kcb=getattr(args, "kcb", None), zeta=getattr(args, "zeta", None))
+    return get_law(name, **law_parameters(vars(args)))

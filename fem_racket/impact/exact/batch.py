@@ -2,8 +2,8 @@
 
 Cases are grouped by the size of their reduced problem (:func:`.reduction.pole_blocks`) and
 solved :data:`BLOCK` at a time: roots and residues (:mod:`fem_racket.impact.exact.roots`),
-separation time, impulse
-and peak force (:mod:`fem_racket.impact.exact.separation`), all per unit impact speed. A case whose
+separation time, impulse and peak force (:mod:`fem_racket.impact.exact.separation`), all per unit
+impact speed. A case whose
 event function
 nearly touches zero before it separates (an ill-conditioned criterion: the reduced model may
 cross there or not, the COR jumping with it) is solved again with every mode given.

@@ -16,7 +16,8 @@ zero) inside its step.
 A COR tolerance sets the step count and the mode cut-off (:func:`settings`). Single impacts
 solve every node at once (:mod:`fem_racket.impact.general.nodes`), batches march node by node
 vectorised across cases. Accuracy (``scripts/bench_laws.py`` and
-``tests/impact/general/test_general.py``, against CVODE, :mod:`fem_racket.impact.ode.law_cvode`): fourth
+``tests/impact/general/test_general.py``, against CVODE, :mod:`fem_racket.impact.ode.law_cvode`):
+fourth
 order in the step where the force is smooth (Hunt-Crossley, hysteretic n = 8.9, series). Two
 things limit it: a force with a jump or kink at contact (the linear spring-dashpot's C v0, the
 hysteretic law with n = 1) rings with the frame modes above 1/h, which the cubic force aliases,

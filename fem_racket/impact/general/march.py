@@ -2,8 +2,7 @@
 
 Node by node (:func:`fem_racket.impact.general.step.solve_step`), the history of the nodal
 forces enters through the kernel tables of :mod:`fem_racket.impact.general.receptance`. The first
-three
-nodes use the forward (starting) stencil, which reaches nodes 1-3 at once: they are solved by
+three nodes use the forward (starting) stencil, which reaches nodes 1-3 at once: they are solved by
 Gauss-Seidel sweeps over the three (the coupling through the later nodes is O((omega h)^2), so
 a few sweeps converge to round-off). Separation is found per case on the law's own end
 condition inside its step; the outcomes integrate the same piecewise cubic force (impulse,

@@ -9,8 +9,7 @@ contact is a Volterra integral of F (free-free modal superposition)::
 (a_j: mass-normalised mode shapes at the impact point; delta_free: the ball's and the frame's
 motion without contact) and delta' likewise with K'. With F the piecewise cubic of
 :mod:`fem_racket.impact.general.cubic_force` on a grid of step h, the deflection at node m is a
-weighted
-sum of the nodal forces, exactly for every mode::
+weighted sum of the nodal forces, exactly for every mode::
 
     delta_m = delta_free(t_m) - sum_j W[m, j] F_j,   W[m, j] = T[m - j] + S[m, j]
 

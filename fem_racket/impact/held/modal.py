@@ -20,8 +20,7 @@ static flexibility and mass at the impact point (and no share in the hand's moti
 The grip force on the hand is F_h = m_h u_h'' (nothing else acts on it), u_h = sum p eta with p
 the modes' values at the hand's translation. Its rigid part m_h F sum_r p_r a_r is the
 ``_rigid_factor`` of :mod:`fem_racket.impact.held.grip`; the vibration part is m_h sum_f p_f
-eta_f''.
-After separation the racket and hand vibrate freely (ball gone): y = [eta_f, eta_f'] obeys
+eta_f''. After separation the racket and hand vibrate freely (ball gone): y = [eta_f, eta_f'] obeys
 y' = B y, B = [[0, I], [-Omega^2, -D]], again a sum of exponentials from the state at t_c.
 Shock measures: :mod:`fem_racket.impact.held.shock`.
 """

@@ -5,12 +5,8 @@ The entry of ``fem-racket simulate`` with a hand. Two ways to the same answer:
 - ``exact`` (default): the eigen-solution of :mod:`fem_racket.impact.held.modal` and the exact
   shock measures of :mod:`fem_racket.impact.held.shock` (peak of the grip force, RMS of its
   vibration part over the window [0, T]);
-- ``cvode`` / ``bdf``: the integrators of :func:`fem_racket.impact.held.grip.simulate_held` during
-  contact; after separation the frame and hand vibrate freely (ball gone), a linear system
-  y' = A_s y of the held structure, y = [x, x'], A_s = [[0, I], [-M^-1 K, -M^-1 C]], stepped
-  from the integrator's state at t_c by its propagator exp(A_s dt) (exact for a linear system).
-  The shock measures come from the samples: the peak is their largest |F_h| and the energy
-  int F_v^2 dt Simpson's rule over them, both to the output step.
+- ``cvode`` / ``bdf``: the integrators during contact and the free vibration after it
+  (:mod:`fem_racket.impact.held.sampled`), the shock measures from the samples.
 
 A swing (:mod:`fem_racket.impact.swing`) moves racket and hand rigidly; the grip layer is not
 stretched by it, so the impact superposes on the stationary one at the closing speed
@@ -26,11 +22,10 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.frame.hand import GRIPS, Hand, held_frame
-from fem_racket.frame.model import FrameModel
-from fem_racket.impact.held.grip import HELD_SOLVERS, HeldImpact, simulate_held
+from fem_racket.frame.hand import GRIPS, Hand
+from fem_racket.impact.held.grip import HELD_SOLVERS
 from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.sampled import history_columns, sampled_impact, shock_grid
 from fem_racket.impact.held.shock import (
     DEFAULT_WINDOW,
     contact_peak,
@@ -38,11 +33,11 @@ from fem_racket.impact.held.shock import (
     vibration_rms,
 )
 from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
+from fem_racket.impact.problem import HeldRacket, ImpactProblem
+from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.validation import InputError, check_choice, check_range
 
-__all__ = ["HELD_RUN_SOLVERS", "HeldRun", "hand_summary", "held_impact"]
+__all__ = ["HELD_RUN_SOLVERS", "HeldRun", "HeldSettings", "hand_summary", "held_impact"]
 
 #: Solvers of :func:`held_impact`.
 HELD_RUN_SOLVERS = ("exact", *HELD_SOLVERS)
@@ -141,129 +136,13 @@ class HeldRun:
         }
 
 
-def _grid(step: float, tc: float, window: float) -> tuple[np.ndarray, np.ndarray]:
-    """Output times during contact (k step, then t_c) and after it (t_c + k step, then T)."""
-    on = np.arange(0.0, tc, step)
-    on = np.append(on[on < tc * (1 - 1e-12)], tc)
-    off = tc + np.arange(step, window - tc, step)
-    return on, np.append(off[off < window * (1 - 1e-12)], window)
+@dataclass(frozen=True)
+class HeldSettings:
+    """How a held racket is solved.
 
-
-def _columns(t, force, grip, rigid) -> dict[str, np.ndarray]:
-    return {
-        "time [s]": t,
-        "contact force [N]": force,
-        "grip force [N]": grip,
-        "grip force rigid part [N]": rigid,
-        "grip force vibration part [N]": grip - rigid,
-    }
-
-
-def _exact(model, hand, x, speed, ball, kcb, zeta, tolerance, window, step):
-    """The exact path: (e_A, t_c, peak F, peak F_h, RMS), histories or None, what it used."""
-    c = held_contact(
-        held_basis(model.fe, hand),
-        position=x,
-        speed=speed,
-        ball_mass=ball.mass,
-        kcb=kcb,
-        zeta=zeta,
-        tolerance=tolerance,
-    )
-    out = (c.cor, c.contact_time, contact_peak(c), grip_peak(c, window), vibration_rms(c, window))
-    hist = None
-    if step is not None:
-        t = np.concatenate(_grid(step, c.contact_time, window))
-        grip, rigid = c.grip_force(t)
-        hist = _columns(t, c.contact_force(t), grip, rigid)
-    return out, hist, {"modes": c.modes, "tolerance": tolerance}
-
-
-def _free_grip(model: FrameModel, hand: Hand, state: np.ndarray, s: np.ndarray) -> np.ndarray:
-    """Grip force [N] of the freely vibrating held racket at times ``s`` after t_c (uniform
-    steps but the last), from the state at t_c (module docstring)."""
-    from scipy.linalg import expm
-
-    held = held_frame(model.fe, hand)
-    n = held.K.shape[0]
-    minv = np.linalg.inv(held.M)
-    A = np.zeros((2 * n, 2 * n))
-    A[:n, n:] = np.eye(n)
-    A[n:, :n], A[n:, n:] = -minv @ held.K, -minv @ held.C
-    row = held.grip[held.n_frame]
-    out_row = -np.concatenate([hand.stiffness * row, hand.damping * row])
-    y = np.empty((s.size, 2 * n))
-    y[0] = state
-    if s.size > 2:
-        step = expm(A * (s[1] - s[0]))
-        for k in range(1, s.size - 1):
-            y[k] = step @ y[k - 1]
-    if s.size > 1:
-        y[-1] = expm(A * (s[-1] - s[-2])) @ y[-2]
-    return y @ out_row
-
-
-def _integrated(model, hand, x, speed, ball, kcb, zeta, solver, swing, window, step, rtol, atol):
-    """The integrators' path: as :func:`_exact`, the shock measures from the samples."""
-    from scipy.integrate import simpson
-
-    r: HeldImpact = simulate_held(
-        model, hand, position=x, speed=speed, ball_mass=ball.mass, kcb=kcb, zeta=zeta,
-        solver=solver, output_step=step, rtol=rtol, atol=atol, swing=swing,
-    )  # fmt: skip
-    tc = r.contact_time
-    if not window > tc:
-        raise InputError(
-            f"window = {window!r} s is not allowed: must exceed the contact time ({tc:.4g} s)"
-        )
-    _, off = _grid(step, tc, window)
-    free = _free_grip(model, hand, r.state, np.append(0.0, off - tc))  # from t_c
-    energy = simpson(r.grip_vibration**2, x=r.t) + simpson(free**2, x=np.append(tc, off))
-    free = free[1:]
-    peak = max(float(np.max(np.abs(r.grip_force))), float(np.max(np.abs(free))))
-    out = (r.cor, tc, float(np.max(r.contact_force)), peak, float(np.sqrt(energy / window)))
-    zeros = np.zeros_like(off)
-    hist = _columns(
-        np.concatenate([r.t, off]),
-        np.concatenate([r.contact_force, zeros]),
-        np.concatenate([r.grip_force, free]),
-        np.concatenate([r.grip_force_rigid, zeros]),
-    )
-    return out, hist, {"modes": model.fe.ndof + 2, "rtol": rtol, "atol": atol}
-
-
-def held_impact(
-    model: FrameModel,
-    hand: Hand,
-    *,
-    position: float = 0.75,
-    speed: float = 20.0,
-    ball_mass: float | None = None,
-    kcb: float | None = None,
-    zeta: float | None = None,
-    solver: str = "exact",
-    swing: Swing | None = None,
-    window: float = DEFAULT_WINDOW,
-    output_step: float = 1e-5,
-    histories: bool = False,
-    tolerance: float | None = DEFAULT_TOLERANCE,
-    rtol: float = 1e-10,
-    atol: float = 1e-12,
-) -> HeldRun:
-    """A ball striking the racket held by ``hand`` (module docstring).
-
-    Parameters
+    Attributes
     ----------
-    model : FrameModel
-    hand : Hand
-    position, speed, ball_mass, kcb, zeta
-        As for :func:`fem_racket.simulate` (``speed`` the incident ball speed v_in [m/s]).
     solver : {"exact", "cvode", "bdf"}
-    swing : Swing, optional
-        Racket and hand's rigid motion before impact; at rest when None.
-    window : float
-        Window T of the shock measures from the start of contact [s], > t_c and at most
-        :data:`MAX_WINDOW`.
     output_step : float
         Spacing of the histories' times and of the integrators' samples [s] (the integrators'
         shock measures are to it, module docstring).
@@ -271,44 +150,81 @@ def held_impact(
         Keep the histories (:attr:`HeldRun.histories`).
     tolerance : float or None
         COR tolerance choosing the exact path's modes (None: every mode).
-    rtol, atol
+    rtol, atol : float
         Tolerances of cvode / bdf.
+    """
+
+    solver: str = "exact"
+    output_step: float = 1e-5
+    histories: bool = False
+    tolerance: float | None = None
+    rtol: float = 1e-10
+    atol: float = 1e-12
+
+
+def _exact(problem: ImpactProblem, tolerance: float | None, window: float, step: float | None):
+    """The exact path: (e_A, t_c, peak F, peak F_h, RMS), histories or None, what it used."""
+    held = problem.structure
+    c = held_contact(
+        held_basis(held.model.fe, held.hand),
+        position=problem.impact.position,
+        speed=problem.closing_speed,
+        ball_mass=problem.ball.mass,
+        kcb=problem.kcb,
+        zeta=problem.zeta,
+        tolerance=tolerance,
+    )
+    out = (c.cor, c.contact_time, contact_peak(c), grip_peak(c, window), vibration_rms(c, window))
+    hist = None
+    if step is not None:
+        t = np.concatenate(shock_grid(step, c.contact_time, window))
+        grip, rigid = c.grip_force(t)
+        hist = history_columns(t, c.contact_force(t), grip, rigid)
+    return out, hist, {"modes": c.modes, "tolerance": tolerance}
+
+
+def held_impact(problem: ImpactProblem, settings: HeldSettings | None = None) -> HeldRun:
+    """A ball striking the racket held in a hand (``problem.structure`` a
+    :class:`~fem_racket.impact.problem.HeldRacket`; module docstring), solved as ``settings``
+    say (by default the exact solution with every mode).
 
     Returns
     -------
     HeldRun
     """
-    check_choice("solver", solver, HELD_RUN_SOLVERS)
-    _check_size(solver, model.mesh.n_elements, rtol, atol)
+    s = HeldSettings() if settings is None else settings
+    held = problem.structure
+    if not isinstance(held, HeldRacket):
+        raise InputError("held_impact takes a problem whose structure is a HeldRacket")
+    model, hand = held.model, held.hand
+    check_choice("solver", s.solver, HELD_RUN_SOLVERS)
+    _check_size(s.solver, model.mesh.n_elements, s.rtol, s.atol)
+    window = DEFAULT_WINDOW if held.shock_window is None else held.shock_window
     window = check_range("shock_window", window, 0.0, MAX_WINDOW, unit="s", include_low=False)
-    if not output_step > 0.0:
-        raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
-    x = check_range("position", position, 0.0, 1.0, unit="x/L")
-    ball = Ball() if ball_mass is None else Ball(ball_mass)
-    v_r = 0.0 if swing is None else float(swing.speed_at(x * model.mesh.length))
-    closing = closing_speed(speed, v_r)
-    if solver == "exact":
-        step = output_step if histories else None
-        out, hist, used = _exact(model, hand, x, closing, ball, kcb, zeta, tolerance, window, step)
+    if not s.output_step > 0.0:
+        raise InputError(f"output_step = {s.output_step!r} s is not allowed: must be > 0")
+    if s.solver == "exact":
+        step = s.output_step if s.histories else None
+        out, hist, used = _exact(problem, s.tolerance, window, step)
     else:
-        out, hist, used = _integrated(
-            model, hand, x, speed, ball, kcb, zeta, solver, swing, window, output_step, rtol, atol
-        )
-        hist = hist if histories else None
+        out, hist, used = sampled_impact(problem, s.solver, window, s)
+        hist = hist if s.histories else None
     cor, tc, peak_force, peak_grip, rms = out
-    law = LinearContact.for_speed(closing, kcb=kcb, zeta=zeta)
+    law = problem.contact()
+    speed = float(problem.impact.speed)
     used = {
-        "solver": solver,
+        "solver": s.solver,
         "elements": model.mesh.n_elements,
         **used,
-        "position_x_over_l": x,
-        "speed_m_s": float(speed),
-        "ball_mass_kg": ball.mass,
+        "position_x_over_l": problem.impact.position,
+        "speed_m_s": speed,
+        "ball_mass_kg": problem.ball.mass,
         "kcb_n_m": law.stiffness,
         "zeta": law.zeta,
-        "ccb_n_s_m": law.damping(ball.mass),
+        "ccb_n_s_m": law.damping(problem.ball.mass),
         "shock_window_s": float(window),
         "hand": hand_summary(hand),
-        **(swing or Swing()).summary(),
+        **(problem.swing or Swing()).summary(),
     }
-    return HeldRun(cor, float(speed), v_r, tc, peak_force, peak_grip, rms, hist, used)
+    v_r = problem.racket_speed
+    return HeldRun(cor, speed, v_r, tc, peak_force, peak_grip, rms, hist, used)

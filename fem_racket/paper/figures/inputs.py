@@ -25,11 +25,11 @@ from fem_racket.impact.analytic.rigid import clamped_impact
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (
-    clamped_impacts,
     equivalent_kcb,
     free_impacts,
     law_title,
 )
+from fem_racket.studies.calibrate import clamped_impacts
 
 __all__ = ["FIG_02_03", "FIG_04", "ball_string", "frame_modes"]
 

@@ -3,13 +3,14 @@
 The paper replaces the nonlinear ball/string restoring force by a linear spring K_CB fitted per
 impact speed (section 2.1.1). Under a contact law (:mod:`fem_racket.contact`) the figures are
 drawn with that law instead, through the general integrator
-(:func:`fem_racket.impact.general.integrator.solve_general`), many impacts per call:
+(:func:`fem_racket.impact.general.integrator.solve_general`), many impacts per call (on the
+clamped frame: :func:`fem_racket.studies.calibrate.clamped_impacts`):
 
 - the paper's "no damping" curves (zeta = 0) become the law's *elastic counterpart*, the same
-  law with its losses removed (:func:`elastic_counterpart`): Hunt-Crossley with alpha = 0, a
-  hysteretic law with k2 = k1 (its loading branch both ways), a spring-dashpot without its
-  dashpot. A Kelvin-Voigt ball in series with a string bed has none (its state equation needs
-  C_b > 0), so those curves are left out for it;
+  law with its losses removed (:meth:`~fem_racket.contact.law.ContactLaw.elastic`):
+  Hunt-Crossley with alpha = 0, a hysteretic law with k2 = k1 (its loading branch both ways), a
+  spring-dashpot without its dashpot. A Kelvin-Voigt ball in series with a string bed has none
+  (its state equation needs C_b > 0), so those curves are left out for it;
 - the rigid-frame closed forms become: the COR of eq 12 (momentum and energy conservation on a
   rigid free frame: the same for every elastic law) and, for eq 11, the elastic counterpart's
   contact time of a mass striking a rigid support (its ``contact_time_estimate``, exact for a
@@ -27,18 +28,12 @@ from dataclasses import replace
 
 import numpy as np
 
-from fem_racket.contact.hunt_crossley import HuntCrossley
-from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.law_impact import receptance
 
 __all__ = [
-    "clamped_impacts",
-    "elastic_counterpart",
     "equivalent_kcb",
     "free_impacts",
     "law_title",
@@ -51,17 +46,6 @@ def law_title(law: ContactLaw) -> str:
     from fem_racket.contact.presets import PRESETS
 
     return next((name for name, p in PRESETS.items() if p is law), law.name)
-
-
-def elastic_counterpart(law: ContactLaw) -> ContactLaw | None:
-    """``law`` with its losses removed, or None when the family has no lossless member."""
-    if isinstance(law, Hysteretic):
-        return replace(law, k2=law.k1)
-    if isinstance(law, HuntCrossley):
-        return replace(law, alpha=0.0)
-    if isinstance(law, SpringDashpot):
-        return replace(law, damping=0.0)
-    return None
 
 
 def free_impacts(
@@ -90,17 +74,6 @@ def free_impacts(
     out = solve_general(law, rec, speed.ravel().copy(), beta=beta)
     cor = -out.ball_velocity / speed.ravel()
     return cor.reshape(pos.shape), out.contact_time.reshape(pos.shape)
-
-
-def clamped_impacts(
-    law: ContactLaw, speeds: np.ndarray, ball_mass: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """COR [-] and contact time [s] of the ball on the clamped frame (a rigid support)."""
-    v = np.asarray(speeds, dtype=float)
-    n = v.size
-    rec = Receptance(np.zeros(0), np.zeros((n, 0)), np.zeros((n, 2)), np.full(n, ball_mass))
-    out = solve_general(law, rec, v.copy())
-    return -out.ball_velocity / v, out.contact_time
 
 
 def equivalent_kcb(contact_time: np.ndarray, ball_mass: float) -> np.ndarray:

@@ -2,8 +2,8 @@
 
 Without damping the ball velocity is V_T + V_R + sum_i V_i cos Omega_i t over the natural modes of
 the coupled ball + frame system (:mod:`~fem_racket.impact.analytic.coupled`). Fig 11 draws the
-terms against
-time at 0.60 L and at the node of frame mode 1; Fig 12 the system's frequencies and mode shapes
+terms against time at 0.60 L and at the node of frame mode 1; Fig 12 the system's frequencies and
+mode shapes
 there. The paper's node is 0.769 L; ours (20 elements) is 0.7697 L, used for the figures so that
 V_1 vanishes exactly; the values at 0.769 L itself are reported too.
 """

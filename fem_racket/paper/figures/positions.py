@@ -23,7 +23,6 @@ from fem_racket.impact.analytic.rigid import rigid_impact_at
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (
-    elastic_counterpart,
     free_impacts,
     law_title,
     rigid_contact_time,
@@ -71,7 +70,7 @@ def position_sweep(
         cor_wide = [simulate(rigid, position=p, speed=SPEED, output_step=None).cor for p in xw]
     else:
         m_b = Ball().mass
-        elastic = elastic_counterpart(law)
+        elastic = law.elastic()
         runs = {
             "standard": (law, base, None),
             "rigid": (law, rigid, None),

@@ -27,11 +27,10 @@ from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
 from fem_racket.impact.exact.engine import impacts
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (
-    clamped_impacts,
-    elastic_counterpart,
     free_impacts,
     law_title,
 )
+from fem_racket.studies.calibrate import clamped_impacts
 
 __all__ = ["FIG_13", "SATURATION_FRACTION", "cor_rigidity", "saturation_ei"]
 
@@ -71,7 +70,7 @@ def _curves(base: FrameModel, factors: np.ndarray, law: ContactLaw | None) -> di
         return out
     m_b = Ball().mass
     pos, speed = np.meshgrid(POSITIONS, SPEEDS, indexing="ij")
-    laws = {"damped": law, "undamped": elastic_counterpart(law)}
+    laws = {"damped": law, "undamped": law.elastic()}
     out = {}
     for tag, used in laws.items():
         if used is None:

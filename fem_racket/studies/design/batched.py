@@ -19,8 +19,7 @@ the engine's tolerance. With the paper's linear law K_CB is the closing speed's 
 design's ``kcb_factor``. Any other contact law (:attr:`.problem.DesignProblem.law`, with the
 design's string-bed k_s and k_3 for the series law) runs each design's cases through the general
 integrator (:func:`fem_racket.impact.general.integrator.solve_general`: 100 steps per contact time
-and
-Richardson extrapolation, |dCOR| ~ 1e-6) on the design's receptance at the impact points; e_A is
+and Richardson extrapolation, |dCOR| ~ 1e-6) on the design's receptance at the impact points; e_A is
 -v_B(t_c) / v_closing as for the linear law.
 """
 

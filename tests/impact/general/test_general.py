@@ -10,7 +10,6 @@ from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.presets import PRESETS
 from fem_racket.contact.series import SeriesBallString
-from fem_racket.contact.spring_dashpot import SpringDashpot
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.law_impact import receptance, solve_law_impact
@@ -38,8 +37,7 @@ def test_linear_law_equals_exact_path(standard_model, speed, position):
         standard_model, position=position, speed=speed, output_step=None, modes=None,
         tolerance=None,
     )  # fmt: skip
-    lc = LinearContact.for_speed(speed)
-    law = SpringDashpot(lc.stiffness, lc.damping(0.057))
+    law = LinearContact.for_speed(speed, ball_mass=0.057)
     out = solve_general(law, receptance(standard_model, position, 0.057), speed, tolerance=None)
     assert -out.ball_velocity[0] / speed == pytest.approx(ref.cor, abs=1e-7)
     assert out.contact_time[0] == pytest.approx(ref.contact_time, rel=1e-6)
