@@ -133,6 +133,7 @@ IMPACT_TOP = {
     "simulate",
     "simulate_law",
     "simulate_linear",
+    "simulate_oblique",
     "solvers",
 }
 

@@ -26,19 +26,21 @@ import numpy as np
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.impact.analytic.rigid import ClampedImpact, clamped_impact
 from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
-from fem_racket.impact.simulate import simulate
 from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, SampledNormal
 from fem_racket.impact.tangential.oblique import BallMotion, ObliqueOutcome, tangential_impact
-from fem_racket.validation import InputError, check_choice, check_positive
+from fem_racket.validation import InputError, check_choice
 
 __all__ = [
+    "CLAMPED_ARGS",
     "NormalImpact",
     "ObliqueResult",
+    "clamped_normal",
+    "free_normal",
     "normal_history",
-    "normal_impact",
     "oblique_on",
-    "simulate_oblique",
+    "solve_oblique",
 ]
 
 #: Output step of the normal impact whose force history drives the tangential contact [s].
@@ -140,42 +142,6 @@ def normal_history(result: ImpactResult) -> SampledNormal:
     return SampledNormal(result.t, impulse, force, k_n)
 
 
-def simulate_oblique(
-    frame: Any = None,
-    *,
-    incidence: Incidence,
-    speed: float = 20.0,
-    clamped: bool = False,
-    **kwargs: Any,
-) -> ObliqueResult:
-    """Simulate an oblique, spinning ball striking the free racket or a clamped head.
-
-    Parameters
-    ----------
-    frame : Frame, FrameMesh or FrameModel, optional
-        The racket (as :func:`fem_racket.impact.simulate.simulate`); not with ``clamped``.
-    incidence : Incidence
-        Angle from the face normal, spin, friction, ball inertia and radius, eta^2.
-    speed : float
-        Incident ball speed V [m/s]; the normal impact runs at V cos(angle).
-    clamped : bool
-        A rigid, immovable head (eqs 1-3): takes only ``ball_mass``, ``kcb``, ``zeta`` and
-        ``separation``.
-    **kwargs
-        The other arguments of :func:`~fem_racket.impact.simulate.simulate` (``output_step``
-        defaults to 1e-5 s: the tangential contact needs the normal force history).
-
-    Returns
-    -------
-    ObliqueResult
-    """
-    if not isinstance(incidence, Incidence):
-        raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence")
-    v = check_positive("speed", speed, "m/s")
-    normal = normal_impact(frame, incidence.components(v)[0], clamped=clamped, **kwargs)
-    return oblique_on(normal, incidence, v)
-
-
 @dataclass(frozen=True, eq=False)
 class NormalImpact:
     """The normal impact an oblique one builds on (shared by every spin and friction at one
@@ -217,28 +183,27 @@ def oblique_on(normal: NormalImpact, incidence: Incidence, speed: float) -> Obli
     return ObliqueResult(normal.result, out, speed, normal.contact)
 
 
-def normal_impact(
-    frame: Any = None, normal_speed: float = 20.0, *, clamped: bool = False, **kwargs: Any
-) -> NormalImpact:
-    """The normal impact at ``normal_speed`` [m/s] with its force history: the free racket by
-    :func:`~fem_racket.impact.simulate.simulate` (``kwargs``; ``output_step`` 1e-5 s by
-    default), or a clamped head by eqs 1-3 (``kwargs``: only ``ball_mass``, ``kcb``, ``zeta``,
-    ``separation``)."""
-    if clamped:
-        return _clamped(frame, normal_speed, kwargs)
-    if kwargs.get("output_step", OBLIQUE_OUTPUT_STEP) is None:
-        raise InputError("output_step = None is not allowed with an oblique impact: must be > 0")
-    kwargs.setdefault("output_step", OBLIQUE_OUTPUT_STEP)
-    result = simulate(frame, speed=normal_speed, **kwargs)
+def free_normal(result: ImpactResult) -> NormalImpact:
+    """The normal impact of a free racket, computed with histories."""
     return NormalImpact(result, normal_history(result), result.ball.mass, result.model.props.mass)
+
+
+def solve_oblique(solver: Any, problem: ImpactProblem) -> ObliqueResult:
+    """Solve an oblique ``problem`` with ``solver`` (a :class:`~fem_racket.impact.solvers.Solver`,
+    which calls this for a problem with an incidence): its normal impact
+    (:meth:`ImpactProblem.head_on`), then the tangential contact over it."""
+    normal = free_normal(solver.solve(problem.head_on()))
+    return oblique_on(normal, problem.incidence, problem.impact.speed)
 
 
 #: What a clamped head takes besides the incidence and the speed.
 CLAMPED_ARGS = ("ball_mass", "kcb", "zeta", "separation")
 
 
-def _clamped(frame: Any, v_n: float, kwargs: dict) -> NormalImpact:
-    """A clamped head: the paper's spring-dashpot in closed form."""
+def clamped_normal(frame: Any, v_n: float, kwargs: dict) -> NormalImpact:
+    """The normal impact on a clamped head at ``v_n`` [m/s]: the paper's spring-dashpot in
+    closed form (eqs 1-3); ``kwargs`` only ``ball_mass``, ``kcb``, ``zeta``, ``separation``
+    (``frame`` must be None)."""
     extra = sorted(set(kwargs) - set(CLAMPED_ARGS))
     if frame is not None or extra:
         name = "frame" if frame is not None else extra[0]

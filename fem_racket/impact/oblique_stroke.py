@@ -14,7 +14,8 @@ from typing import Any
 
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.model_cache import frame_model
-from fem_racket.impact.oblique import ObliqueResult, normal_impact
+from fem_racket.impact.oblique import ObliqueResult
+from fem_racket.impact.simulate_oblique import normal_impact
 from fem_racket.impact.stroke import Stroke
 from fem_racket.impact.swing import Swing
 from fem_racket.impact.tangential.oblique import BallMotion, tangential_impact

@@ -9,7 +9,10 @@ An impact problem states everything about one impact that does not depend on how
   compound ball/string spring (``law=None``; K_CB from ``kcb`` or the closing speed, ζ from
   ``zeta`` or the clamped COR 0.83, eqs 1-4) or any :class:`~fem_racket.contact.law.ContactLaw`;
 - the end of contact for the paper's law (``separation``; any other law brings its own);
-- the racket's motion before impact: a rigid swing, or initial velocities of its modes.
+- the racket's motion before impact: a rigid swing, or initial velocities of its modes;
+- an oblique, spinning ball (:class:`~fem_racket.impact.incidence.Incidence`; None: head-on):
+  the solvers solve the normal impact at V cos(angle) (:meth:`ImpactProblem.head_on`) and the
+  tangential contact is marched over it (:mod:`fem_racket.impact.oblique`).
 
 It is immutable and validated once, when made; a field that does not apply to the rest of the
 problem (K_CB under a nonlinear law, a hand with a nonlinear law) is refused in one line, never
@@ -27,6 +30,7 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.validation import (
@@ -120,6 +124,9 @@ class ImpactProblem:
     frame_velocity : (v, omega) or array or None
         Initial racket motion as the centre of gravity's speed and the turning rate, or the
         free-free modes' velocities (:func:`fem_racket.impact.law_impact.modal_velocity`).
+    incidence : Incidence or None
+        An oblique, spinning ball (angle from the face normal, spin, friction, ...); ``impact``
+        then gives its full speed. None: head-on, without spin.
     """
 
     structure: FrameModel | HeldRacket
@@ -131,6 +138,7 @@ class ImpactProblem:
     separation: str | None = None
     swing: Swing | None = None
     frame_velocity: Any = None
+    incidence: Incidence | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.structure, FrameModel | HeldRacket):
@@ -150,6 +158,26 @@ class ImpactProblem:
             raise InputError("swing and frame_velocity cannot be combined: give one")
         if self.held:
             self._check_held()
+        if self.incidence is not None:
+            self._check_incidence()
+
+    def _check_incidence(self) -> None:
+        if not isinstance(self.incidence, Incidence):
+            raise InputError(
+                f"incidence = {self.incidence!r} is not allowed: must be an Incidence or None"
+            )
+        if self.held:
+            raise InputError(
+                "incidence is not allowed with a hand: the oblique impact takes a free racket"
+            )
+
+    def head_on(self) -> ImpactProblem:
+        """The normal impact of an oblique one: the ball at V cos(angle), without incidence
+        (``self`` when head-on already)."""
+        if self.incidence is None:
+            return self
+        v_n = self.incidence.components(self.impact.speed)[0]
+        return replace(self, impact=Impact(self.impact.position, v_n), incidence=None)
 
     def _check_law(self) -> None:
         if not isinstance(self.law, ContactLaw):
@@ -260,8 +288,11 @@ class ImpactProblem:
             motion = f"swinging {self.racket_speed:.3g} m/s"
         elif self.frame_velocity is not None:
             motion = "moving"
+        oblique = ""
+        if self.incidence is not None:
+            oblique = f"; {self.incidence.angle:.4g} deg, {self.incidence.spin:.4g} rpm"
         return (
             f"ImpactProblem({where} frame, {self.model.mesh.n_elements} elements; "
             f"x = {self.impact.position:.4g} L, {self.impact.speed:.4g} m/s; "
-            f"ball {self.ball.mass:.4g} kg; law {law}; {motion})"
+            f"ball {self.ball.mass:.4g} kg; law {law}; {motion}{oblique})"
         )

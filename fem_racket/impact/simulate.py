@@ -37,6 +37,7 @@ PROBLEM_OPTIONS = (
     "hand",
     "shock_window",
     "elements",
+    "incidence",
 )
 
 
@@ -57,7 +58,8 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
         paper's, or "force"; the paper's law only), ``swing`` (a Swing) or ``frame_velocity``
         ((v [m/s], omega [rad/s]) of the centre of gravity, or the modes' velocities), ``hand``
         (a Hand: the racket held on its grip; returns a HeldRun) and ``shock_window`` [s],
-        ``elements`` (cells when meshing a Frame; 20).
+        ``elements`` (cells when meshing a Frame; 20), ``incidence`` (an Incidence: an oblique,
+        spinning ball at ``speed``; returns an ObliqueResult, :mod:`fem_racket.impact.oblique`).
         The solver: ``solver`` ("auto" (default), "exact", "general", "cvode", "bdf") and its
         options ``tolerance`` (COR tolerance choosing modes and steps; 1e-6), ``modes``
         (flexible modes kept; 80), ``basis`` ("modal" or "physical", BDF only),

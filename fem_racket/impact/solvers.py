@@ -28,6 +28,7 @@ from collections.abc import Iterable
 from typing import Any, ClassVar
 
 from fem_racket.impact.held.run import HeldSettings, held_impact
+from fem_racket.impact.oblique import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.settings import DEFAULTS, SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
@@ -98,14 +99,21 @@ class Solver:
     def solve(self, problem: ImpactProblem) -> Any:
         """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket)."""
         self.check(problem)
-        return self._solve(problem)
+        return self._outcome(problem)
 
     def solve_many(self, problems: Iterable[ImpactProblem]) -> list[Any]:
         """The outcomes of ``problems``, in order (each checked before any is solved)."""
         problems = list(problems)
         for p in problems:
             self.check(p)
-        return [self._solve(p) for p in problems]
+        return [self._outcome(p) for p in problems]
+
+    def _outcome(self, problem: ImpactProblem) -> Any:
+        """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
+        the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
+        if problem.incidence is not None:
+            return solve_oblique(self, problem)
+        return self._solve(problem)
 
     # -- helpers ------------------------------------------------------------------------------
 

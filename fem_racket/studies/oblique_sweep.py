@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.oblique import normal_impact, oblique_on
+from fem_racket.impact.oblique import oblique_on
+from fem_racket.impact.simulate_oblique import normal_impact
 from fem_racket.validation import InputError, check_positive
 
 __all__ = ["OUTPUTS", "ObliqueSweep", "oblique_sweep"]

@@ -8,8 +8,8 @@ import pytest
 
 from fem_racket.impact.analytic.rigid import clamped_impact
 from fem_racket.impact.incidence import RPM, Incidence
-from fem_racket.impact.oblique import simulate_oblique
 from fem_racket.impact.simulate import simulate
+from fem_racket.impact.simulate_oblique import simulate_oblique
 from fem_racket.validation import InputError
 
 STROKE = Incidence(angle=40.0, spin=-3820.0)
@@ -124,5 +124,31 @@ def test_clamped_force_criterion_is_the_gross_slip_closed_form():
 def test_oblique_input_checks():
     with pytest.raises(InputError, match="^position is not allowed with a clamped head"):
         simulate_oblique(incidence=STROKE, clamped=True, position=0.7)
-    with pytest.raises(InputError, match="^output_step = None is not allowed"):
+    with pytest.raises(InputError, match="^an oblique impact needs the normal impact.s histories"):
         simulate_oblique(incidence=STROKE, output_step=None)
+
+
+def test_an_impact_problem_with_an_incidence_through_the_solvers(exact):
+    # ImpactProblem(incidence=...) is solved by any Solver as its normal impact (head_on: the
+    # ball at V cos(angle)) and then the tangential contact; solve and solve_many agree with
+    # simulate_oblique
+    from fem_racket.frame.hand import Hand
+    from fem_racket.impact.problem import ImpactProblem
+    from fem_racket.impact.solvers import make_solver
+
+    problem = ImpactProblem.build(speed=25.0, incidence=STROKE)
+    head_on = problem.head_on()
+    assert head_on.incidence is None
+    assert head_on.impact.speed == pytest.approx(25.0 * math.cos(math.radians(40.0)), rel=1e-15)
+    assert head_on.head_on() is head_on
+    solver = make_solver("exact")
+    one = solver.solve(problem).summary()
+    (many,) = solver.solve_many([problem])
+    ref = exact.summary()
+    for key in ("spin_out_rpm", "angle_out_deg", "contact_regime", "cor"):
+        assert one[key] == ref[key] == many.summary()[key]
+    assert "40 deg, -3820 rpm" in repr(problem)
+    with pytest.raises(InputError, match="^incidence is not allowed with a hand"):
+        ImpactProblem.build(hand=Hand(), incidence=STROKE)
+    with pytest.raises(InputError, match="^incidence = 40 is not allowed"):
+        ImpactProblem.build(incidence=40)

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.oblique import simulate_oblique
+from fem_racket.impact.simulate_oblique import simulate_oblique
 from fem_racket.studies.oblique_sweep import oblique_sweep
 from fem_racket.validation import InputError
 

@@ -190,8 +190,8 @@ def _stroke_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
 
 def oblique_from_args(args: argparse.Namespace, incidence: Incidence, hand: Any):
     """Check the options against the oblique impact and run it: an ``ObliqueResult``."""
-    from fem_racket.impact.oblique import simulate_oblique
     from fem_racket.impact.oblique_stroke import simulate_stroke
+    from fem_racket.impact.simulate_oblique import simulate_oblique
 
     _check(args, hand)
     stroke = stroke_from_args(args)
