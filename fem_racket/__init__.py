@@ -62,7 +62,7 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "io.plotting": ("plot_impact", "plot_refinement", "plot_sweep"),
     "io.vtk": ("write_vtk_series",),
     "io.vtk_series": ("ImpactSeries", "impact_series"),
-    "studies.oblique_sweep": ("ObliqueSweep", "oblique_sweep"),
+    "studies.oblique_sweep": ("ObliqueSweep", "oblique_map", "oblique_sweep"),
     "studies.racket_map": ("RacketMap", "racket_map"),
     "studies.refine": ("RefinementStudy", "refinement_study"),
     "studies.sweep": ("sweep",),

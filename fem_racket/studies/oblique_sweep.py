@@ -18,7 +18,7 @@ from fem_racket.impact.oblique import oblique_on
 from fem_racket.impact.simulate_oblique import normal_impact
 from fem_racket.validation import InputError, check_positive
 
-__all__ = ["OUTPUTS", "ObliqueSweep", "oblique_sweep"]
+__all__ = ["OUTPUTS", "ObliqueSweep", "oblique_map", "oblique_sweep"]
 
 #: Scalar outputs of each case (keys of :meth:`fem_racket.impact.oblique.ObliqueResult.summary`).
 OUTPUTS = (
@@ -110,3 +110,44 @@ def oblique_sweep(
                     out[key][i, j, k] = summary[key]
                 regime[i, j, k] = summary["contact_regime"]
     return ObliqueSweep(a, s, f, {**out, "contact_regime": regime})
+
+
+def oblique_map(
+    frame: Any = None,
+    *,
+    positions: Any,
+    incidence: Incidence,
+    speed: float = 20.0,
+    **kwargs: Any,
+) -> dict[str, np.ndarray]:
+    """The oblique outcome over impact points along the face of the free racket.
+
+    Parameters
+    ----------
+    frame : optional
+        The racket (as :func:`fem_racket.impact.simulate.simulate`).
+    positions : sequence of float
+        Impact points x/L.
+    incidence : Incidence
+        The ball's angle, spin and the contact's parameters.
+    speed : float
+        Incident ball speed [m/s].
+    **kwargs
+        The normal impact's other arguments.
+
+    Returns
+    -------
+    dict of str to ndarray
+        ``position_x_over_l`` and :data:`OUTPUTS` (floats), ``contact_regime`` (strings), each
+        of shape (positions,).
+    """
+    x = _axis("positions", positions)
+    v = check_positive("speed", speed, "m/s")
+    v_n = incidence.components(v)[0]
+    rows = [
+        oblique_on(normal_impact(frame, v_n, position=p, **kwargs), incidence, v).summary()
+        for p in x
+    ]
+    out = {key: np.array([r[key] for r in rows]) for key in OUTPUTS}
+    regime = np.array([r["contact_regime"] for r in rows], dtype=object)
+    return {"position_x_over_l": x, **out, "contact_regime": regime}

@@ -48,3 +48,17 @@ def test_the_readme_figure_script_quick(tmp_path):
     spec.loader.exec_module(module)
     path = module.main(["--quick", "--out", str(tmp_path / "spin.png")])
     assert path.is_file() and path.stat().st_size > 10_000
+
+
+def test_the_spin_map_over_the_face():
+    # each point is the single impact there; the free racket recoils along its axis with its
+    # whole mass wherever it is struck, so the spin varies only through the normal impact
+    from fem_racket.studies.oblique_sweep import oblique_map
+
+    inc = Incidence(angle=40.0, spin=-3820.0)
+    m = oblique_map(positions=(0.6, 0.75, 0.9), incidence=inc, speed=25.0)
+    assert m["spin_out_rpm"].shape == (3,)
+    for i, x in enumerate(m["position_x_over_l"]):
+        ref = simulate_oblique(incidence=inc, speed=25.0, position=x).summary()
+        assert m["spin_out_rpm"][i] == ref["spin_out_rpm"]
+        assert m["cor"][i] == ref["cor"]
