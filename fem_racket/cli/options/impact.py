@@ -15,7 +15,7 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.settings import BASES
-from fem_racket.impact.solvers import SOLVER_NAMES
+from fem_racket.impact.solvers import SOLVER_NAMES, auto_method
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import InputError, show
@@ -306,12 +306,14 @@ def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """Keyword arguments of :func:`fem_racket.simulate` from the parsed options: the impact
     point, speed and law, and every other option given (on the command line or in a run file)."""
     given = set(getattr(args, "explicit_options", ()))
+    law = law_from_args(args)
+    if getattr(args, "solver", "auto") == "auto":  # as the library's auto picks it, and the
+        args.solver = auto_method(law is None)  # provenance records the method that ran
     kwargs: dict[str, Any] = {"position": args.position, "speed": args.speed}
     for key, default in SIMULATE_DEFAULTS.items():
         value = getattr(args, key, default)
         if key in given or value != default:
             kwargs[key] = value
-    law = law_from_args(args)
     if law is not None:
         kwargs["law"] = law
     return kwargs
