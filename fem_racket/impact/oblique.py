@@ -1,8 +1,8 @@
-"""An oblique, spinning ball on the racket: :func:`simulate_oblique` -> :class:`ObliqueResult`.
+"""An oblique, spinning ball on the racket: :func:`solve_oblique` -> :class:`ObliqueResult`.
 
 The normal impact is today's, at the normal speed V cos(angle): any contact law, any solver, on
-the free racket (:func:`fem_racket.impact.simulate.simulate`) or on a clamped head (eqs 1-3 in
-closed form, the paper's linear law). The tangential contact
+the free racket (:meth:`ImpactProblem.head_on`, solved by the solver the problem was given to)
+or on a clamped head (:func:`clamped_normal`: eqs 1-3 in closed form, the paper's linear law). The tangential contact
 (:mod:`fem_racket.impact.tangential`) is then marched over its normal force history, with the
 racket's tangential effective mass: the free racket recoils along its long axis as a rigid body,
 M_t = M (the string plane lies on the beam's axis, so the tangential force neither bends nor
