@@ -2,11 +2,12 @@
 
 The normal impact is today's, at the normal speed V cos(angle): any contact law, any solver, on
 the free racket (:meth:`ImpactProblem.head_on`, solved by the solver the problem was given to)
-or on a clamped head (:func:`clamped_normal`: eqs 1-3 in closed form, the paper's linear law). The tangential contact
-(:mod:`fem_racket.impact.tangential`) is then marched over its normal force history, with the
-racket's tangential effective mass: the free racket recoils along its long axis as a rigid body,
-M_t = M (the string plane lies on the beam's axis, so the tangential force neither bends nor
-turns it, and the beam is rigid along itself); a clamped head does not move (M_t infinite).
+or on a clamped head (:func:`clamped_normal`: eqs 1-3 in closed form, the paper's linear law).
+The tangential contact (:mod:`fem_racket.impact.tangential`) is then marched over its normal
+force history, with the racket's tangential effective mass: the free racket recoils along its
+long axis as a rigid body, M_t = M (the string plane lies on the beam's axis, so the tangential
+force neither bends nor turns it, and the beam is rigid along itself); a clamped head does not
+move (M_t infinite).
 
 Assumed (stated in the README): the tangential force does not change the normal impact (so with
 mu = 0, or head-on without spin, the normal outcome is exactly the head-on impact's at the
