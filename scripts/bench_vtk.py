@@ -5,7 +5,7 @@ MP4 of M frames at 960x400 (``render_animation``), each the best of ``--repeat``
 temporary folder. With ``--compare-hdf`` it also writes the same frame series as one transient
 ``.vtkhdf`` through VTK's ``vtkHDFWriter`` (chunk 1024, no compression, the fast settings of
 DESIGN.md section 7) and reports the time errors of its float32 step values: the measurement
-behind the choice of format in ``fem_racket/vtk.py``.
+behind the choice of format in ``fem_racket/io/vtk.py``.
 
 Run time here: ~30 s (200 steps, GIF and MP4 of 100 frames); --quick (20 steps, 5 frames, no
 MP4, for tests) ~4 s.

@@ -23,6 +23,7 @@ LAYERS = {
     "version": 0,
     "progress": 0,
     "display": 0,
+    "extras": 0,
     "frame": 1,
     "contact": 1,
     "impact": 2,

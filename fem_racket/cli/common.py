@@ -41,6 +41,7 @@ from fem_racket.cli.options.lists import number_list
 from fem_racket.cli.options.output import (
     add_output_options,
     print_json,
+    print_written,
     run_parameters,
     write_json,
     write_text,
@@ -71,6 +72,7 @@ __all__ = [
     "note_modes",
     "number_list",
     "print_json",
+    "print_written",
     "run_parameters",
     "significant",
     "swing_from_args",

@@ -1,10 +1,34 @@
-"""The command line's argument parser: usage errors in one line, exit code 2."""
+"""The command line's argument parser: usage errors in one line, exit code 2.
+
+An option the command does not know is refused naming the command's own help, with the closest
+option it has (``fem-racket simulate --positon 0.7`` -> ``did you mean --position?``) or, for an
+old spelling, the one that replaced it (:data:`RENAMED`).
+"""
 
 from __future__ import annotations
 
 import argparse
+import difflib
+from collections.abc import Sequence
+from typing import Any
 
-__all__ = ["OneLineErrorParser"]
+__all__ = ["RENAMED", "OneLineErrorParser", "suggestion"]
+
+#: Old option spellings -> what replaced them (the progress bar shows on a terminal by itself).
+RENAMED = {
+    "--no-progress": "--quiet",
+    "--progress": "the progress bar shows by itself when stderr is a terminal; --quiet hides it",
+}
+
+
+def suggestion(word: str, options: Sequence[str]) -> str:
+    """`` (did you mean --x?)`` for the option of ``options`` closest to ``word``, or ``""``."""
+    name = word.split("=", 1)[0]
+    if name in RENAMED:
+        renamed = RENAMED[name]
+        return f": did you mean {renamed}?" if renamed.startswith("-") else f": {renamed}"
+    close = difflib.get_close_matches(name, [o for o in options if o.startswith("--")], n=1)
+    return f": did you mean {close[0]}?" if close else ""
 
 
 class OneLineErrorParser(argparse.ArgumentParser):
@@ -13,3 +37,27 @@ class OneLineErrorParser(argparse.ArgumentParser):
     def error(self, message: str) -> None:  # type: ignore[override]
         """Print ``prog: error: message`` and exit 2."""
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+    def parse_args(self, args: Any = None, namespace: Any = None) -> argparse.Namespace:  # type: ignore[override]
+        """Parse ``args``; a word no option takes is refused by the command it follows."""
+        parsed, extras = self.parse_known_args(args, namespace)
+        if extras:
+            self._command(parsed).unrecognized(extras)
+        return parsed
+
+    def _command(self, parsed: argparse.Namespace) -> OneLineErrorParser:
+        """The sub-command's parser that ``parsed`` ran (this parser when none)."""
+        for action in self._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                command = action.choices.get(getattr(parsed, action.dest, None) or "")
+                if isinstance(command, OneLineErrorParser):
+                    return command
+        return self
+
+    def unrecognized(self, extras: Sequence[str]) -> None:
+        """Refuse the first unknown option of ``extras`` (or the stray values) in one line."""
+        options = [s for a in self._actions for s in a.option_strings]
+        word = next((w for w in extras if w.startswith("-") and len(w) > 1), None)
+        if word is None:
+            self.error(f"unrecognized arguments: {' '.join(extras)}")
+        self.error(f"unrecognized option {word.split('=', 1)[0]}{suggestion(word, options)}")

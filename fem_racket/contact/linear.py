@@ -170,7 +170,7 @@ class LinearContact(ContactLaw):
             key="kcb_n_m",
             help="ball/string stiffness K_CB",
             why="the paper's 2.74e4-8.33e4 N/m at 20-40 m/s; the linear law is solved exactly "
-            "for any K_CB > 0 (1e-6 N/m: a 100 s contact; tests use it to stress the output "
+            "for any K_CB > 0 (1e-6 N/m: a 750 s contact; tests use it to stress the output "
             "limits); 1e12: a contact of 0.75 us for a tennis ball, far beyond steel on steel",
             open_low=True,
         ),
@@ -178,7 +178,7 @@ class LinearContact(ContactLaw):
             name="zeta",
             field="zeta",
             unit="-",
-            default=0.0592,
+            default=zeta_from_cor(PAPER_CLAMPED_COR),
             low=0.0,
             high=1.0,
             key="zeta",

@@ -169,15 +169,10 @@ def check_values(
     InputError
         One line naming the first parameter or the first case that fails, and the rule.
     """
-    arrays = dict(
-        zip(
-            [p.name for p in declared],
-            np.broadcast_arrays(*(np.asarray(values[p.name], dtype=float) for p in declared)),
-            strict=True,
-        )
-    )
-    for p in declared:
-        a = arrays[p.name]
+    given = {p.name: np.asarray(values[p.name], dtype=float) for p in declared}
+    arrays = dict(zip(given, np.broadcast_arrays(*given.values()), strict=True))
+    for p in declared:  # each value once (a grid's axis, not its every case)
+        a = given[p.name]
         low_ok = a > p.low if p.open_low else a >= p.low
         high_ok = a < p.high if p.open_high else a <= p.high
         bad = np.flatnonzero(~(np.isfinite(a) & low_ok & high_ok).ravel())
@@ -186,7 +181,8 @@ def check_values(
     names = tuple(p.name for p in declared)
     for cond in conditions:
         with np.errstate(all="ignore"):
-            ok = np.broadcast_to(np.asarray(cond.holds(arrays), dtype=bool), arrays[names[0]].shape)
+            # on the arrays as given: a sparse grid stays sparse until the condition broadcasts
+            ok = np.broadcast_to(np.asarray(cond.holds(given), dtype=bool), arrays[names[0]].shape)
         bad = np.flatnonzero(~ok.ravel())
         if bad.size:
             case = _case(names, arrays, int(bad[0]))

@@ -3,7 +3,7 @@
 ``get_law(name, **params)`` builds a law from a family name (``hunt-crossley``, ``hysteretic``,
 ``series``) with any parameter overridden, or returns a named preset (which takes no
 parameters). ``linear`` is the paper's spring-dashpot, built by
-:func:`~fem_racket.impact.simulate.simulate` from K_CB and zeta, so it maps to None here.
+:func:`fem_racket.simulate` from K_CB and zeta, so it maps to None here.
 
 Defaults and presets come from ``fem-racket calibrate`` (:mod:`fem_racket.studies.calibrate`):
 
@@ -32,12 +32,10 @@ from fem_racket.contact.registry import (
     LAW_PARAMETERS,
     PRESETS,
     LiveView,
-    family_parameters,
 )
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = [
-    "FAMILY_PARAMETERS",
     "FILE_KEYS",
     "LAW_NAMES",
     "PRESETS",
@@ -46,14 +44,6 @@ __all__ = [
     "get_law",
     "law_parameters",
 ]
-
-#: family -> {parameter (command-line dest): (unit, default)} (live, from the declarations).
-FAMILY_PARAMETERS = LiveView(
-    lambda: {
-        f: {p.name: (p.unit, p.default) for p in params}
-        for f, params in family_parameters().items()
-    }
-)
 
 #: Parameter -> its key in a run file's [contact] table and in JSON outputs (units in the key,
 #: as :meth:`ContactLaw.describe` writes them) (live, from the declarations).

@@ -6,11 +6,12 @@ its parameters, :mod:`fem_racket.contact.parameters`) plus one line here::
     register(HuntCrossley)
 
 Everything else derives from the registry: ``--law`` and each parameter's option
-(:mod:`fem_racket.cli.laws`), the run file's ``[contact]`` keys (:mod:`fem_racket.io.config_keys`),
-the sweep axes (:mod:`fem_racket.studies.grid_values`), the JSON keys and the calibration
-(:mod:`fem_racket.studies.calibrate`). The views below (:data:`FAMILIES`, :data:`PRESETS`,
-:data:`LAW_NAMES`, :data:`LAW_PARAMETERS`) read the registry whenever they are used, so a law
-registered later (a script's own, or a test's) appears in all of them.
+(:mod:`fem_racket.cli.options.laws`), the run file's ``[contact]`` keys
+(:mod:`fem_racket.io.config_keys`), the sweep axes (:mod:`fem_racket.studies.grid_values`), the
+JSON keys and the calibration (:mod:`fem_racket.studies.calibrate`). The views below
+(:data:`FAMILIES`, :data:`PRESETS`, :data:`LAW_NAMES`, :data:`LAW_PARAMETERS`) read the registry
+whenever they are used, so a law registered later (a script's own, or a test's) appears in all
+of them.
 
 ``linear`` is the paper's law (:class:`~fem_racket.contact.linear.LinearContact`, built from
 K_CB and zeta by :func:`fem_racket.simulate`): a name of :data:`LAW_NAMES`, not a family.

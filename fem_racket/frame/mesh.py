@@ -1,7 +1,7 @@
 """The frame's 1-D mesh: nodes along the racket with per-cell EI [N m^2] and rhoA [kg/m].
 
 A :class:`FrameMesh` is what the finite-element assembly consumes. Build one from a
-:class:`~fem_racket.params.Frame` with :func:`frame_mesh` (a node at every section step) or
+:class:`~fem_racket.frame.segments.Frame` with :func:`frame_mesh` (a node at every section step) or
 :func:`graded_mesh`, or read a user's line mesh with :func:`fem_racket.io.mesh_files.read_mesh`.
 """
 
@@ -230,8 +230,8 @@ def frame_from_mesh(mesh: FrameMesh) -> Frame:
     """The piecewise-uniform frame a mesh describes.
 
     Consecutive cells with equal EI and rhoA merge into one
-    :class:`~fem_racket.params.Segment`, so re-meshing the result with :func:`frame_mesh` keeps
-    every section step of ``mesh`` on a node.
+    :class:`~fem_racket.frame.segments.Segment`, so re-meshing the result with :func:`frame_mesh`
+    keeps every section step of ``mesh`` on a node.
     """
     from fem_racket.frame.segments import Segment
 

@@ -1,9 +1,10 @@
 """Offscreen GIF / MP4 animation of an impact, rendered with pyvista (no display needed).
 
 Side view of the racket (x along the frame to the right, deflection z upwards), the frame drawn
-as a thick line coloured by one of :data:`~fem_racket.vtk.FRAME_FIELDS` on its true values, the
-undeformed frame as a thin grey reference line, on a dark background, and the ball as a sphere (see
-:func:`~fem_racket.vtk.impact_series` for how it is placed when the deflection is exaggerated).
+as a thick line coloured by one of :data:`~fem_racket.io.vtk_series.FRAME_FIELDS` on its true
+values, the undeformed frame as a thin grey reference line, on a dark background, and the ball as
+a sphere (see :func:`~fem_racket.io.vtk_series.impact_series` for how it is placed when the
+deflection is exaggerated).
 Each image carries the time in ms, the exaggeration factor, the contact force and the impact
 settings. The camera is fixed over the whole animation and frames the motion of every step.
 
@@ -26,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from fem_racket.extras import require
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import ImpactSeries, field_name, impact_series
 from fem_racket.outputs import (
@@ -101,9 +103,9 @@ def _renderer() -> tuple[Any, Any]:
     # DESIGN.md section 7: EGL renders offscreen without an X server and avoids the X warning.
     os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
     with deferred_interrupts():
-        import imageio
-        import pyvista
-        import pyvista.plotting  # pyvista imports it on first use of pyvista.Plotter
+        imageio = require("imageio", "render_animation (animate)")
+        pyvista = require("pyvista", "render_animation (animate)")
+        require("pyvista.plotting", "render_animation")  # pyvista imports it on first Plotter
 
     return imageio, pyvista
 
@@ -268,7 +270,7 @@ def render_animation(
     path : path
         Output file, ``.gif`` or ``.mp4``.
     field : str
-        Frame colouring: a :data:`~fem_racket.vtk.FRAME_FIELDS` name or its short alias
+        Frame colouring: a :data:`~fem_racket.io.vtk_series.FRAME_FIELDS` name or its short alias
         (``deflection``, ``slope``, ``velocity``, ``curvature``, ``moment``).
     frames : int
         Images, evenly spread over the output times, first and last included (>= 2).

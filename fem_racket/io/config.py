@@ -52,7 +52,7 @@ class RunConfig:
     ----------
     values : dict
         Core table -> key -> checked value (only the keys the file sets; segments as
-        :class:`~fem_racket.params.Segment` tuples, numbers as float).
+        :class:`~fem_racket.frame.segments.Segment` tuples, numbers as float).
     tables : dict
         Command table -> its raw key/value pairs (checked by the command that reads it).
     source : Path or None

@@ -1,7 +1,7 @@
 """The annotated example run file printed by ``fem-racket config --example``.
 
 It runs as is and states the paper's standard case (Kawazoe & Kanda 1997: standard racket, ball
-at 20 m/s striking 0.75 L), every key at its built-in default; ``tests/test_config.py`` checks
+at 20 m/s striking 0.75 L), every key at its built-in default; ``tests/io/test_config.py`` checks
 that running it gives exactly the default run.
 """
 

@@ -46,6 +46,7 @@ COMMAND_TABLES = {
     "reproduce": "reproduce",
     "optimize": "design",
     "sensitivity": "sensitivity",
+    "calibrate": "calibrate",
 }
 
 #: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).
@@ -231,7 +232,9 @@ def reject_unknown(
         if key in allowed:
             continue
         here = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
-        if here:
+        if not where and COMMAND_TABLES.get(key, key) in allowed:  # [export-vtk] for [vtk]
+            hint = f"did you mean '{COMMAND_TABLES[key]}'? (the table of fem-racket {key})"
+        elif here:
             hint = f"did you mean '{here[0]}'?"
         else:
             other = difflib.get_close_matches(key, _all_keys(), n=1, cutoff=0.6)

@@ -81,7 +81,7 @@ def plot_map(problem: DesignProblem, maps: dict, path: str | os.PathLike) -> Non
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     z = problem.zone.positions
     for ax, key, label in (
-        (axes[0], "apparent_cor", "apparent COR e_A [1]"),
+        (axes[0], "apparent_cor", "apparent COR e_A [-]"),
         (axes[1], "ball_speed_out", "ball speed v_out [m/s]"),
     ):
         ax.axvspan(z[0], z[-1], color="0.93", label="impact zone")
@@ -90,7 +90,7 @@ def plot_map(problem: DesignProblem, maps: dict, path: str | os.PathLike) -> Non
             for which, style in (("start", "--"), ("optimum", "-")):
                 m = maps[which][k]
                 ax.plot(m.positions, getattr(m, key), style, color=c, label=f"{which}, {v:g} m/s")
-        ax.set_xlabel("impact position x/L [1]")
+        ax.set_xlabel("impact position x/L [-]")
         ax.set_ylabel(label)
         spots = maps["optimum"][0].spots
         marks = [(spots.node, "node")]
@@ -172,7 +172,7 @@ def plot_pareto(result, path: str | os.PathLike) -> None:
     axes[1].set_ylabel("EI [N m^2]")
     axes[2].set_ylabel("rhoA [kg/m]")
     for ax in axes[1:]:
-        ax.set_xlabel("x/L [1]")
+        ax.set_xlabel("x/L [-]")
         ax.legend(fontsize=7)
     fig.suptitle(f"NSGA-II Pareto front: {len(f)} designs")
     fig.tight_layout()
@@ -188,7 +188,7 @@ def plot_sobol(indices, path: str | os.PathLike) -> None:
     ax.bar(pos - 0.2, indices.s1, 0.4, yerr=indices.s1_conf, label="first order S1", capsize=3)
     ax.bar(pos + 0.2, indices.st, 0.4, yerr=indices.st_conf, label="total ST", capsize=3)
     ax.set_xticks(pos, indices.names)
-    ax.set_ylabel("Sobol index [1]")
+    ax.set_ylabel("Sobol index [-]")
     ax.set_title(f"Sensitivity of {indices.output} ({indices.designs} designs)")
     ax.legend(fontsize=8)
     fig.tight_layout()

@@ -1,8 +1,9 @@
 """One call per command: run a design study or a sensitivity analysis and write its files.
 
 With an output folder the study is resumable: evaluated designs are kept in
-``<out>.history/`` (:mod:`.history`) until the results are written, and a rerun with the same
-settings replays them from there (the solvers are deterministic for a given seed).
+``<out>.history/`` (:mod:`fem_racket.studies.design.history`) until the results are written,
+and a rerun with the same settings replays them from there (the solvers are deterministic for a
+given seed).
 """
 
 from __future__ import annotations
@@ -68,7 +69,9 @@ def run_optimization(
     """Optimise ``problem`` with ``method`` (:data:`METHODS`) and write the study to ``out``.
 
     ``nsga2`` gives a Pareto front of the problem's objectives; the others maximise the first.
-    See :func:`.solvers.optimize`, :func:`.solvers.pareto_front` and :func:`.output.write_study`.
+    See :func:`fem_racket.studies.design.solvers.optimize`,
+    :func:`fem_racket.studies.design.pareto.pareto_front` and
+    :func:`fem_racket.io.design_files.write_study`.
     """
     check_choice("method", method, METHODS)
     if method == "nsga2" and len(problem.objectives) < 2:
@@ -117,8 +120,9 @@ def run_sensitivity(
     progress: bool | None = None,
     parameters: dict[str, Any] | None = None,
 ) -> SobolIndices:
-    """Sobol indices of ``output`` (:func:`.sensitivity.sobol_indices`); with ``out`` a PNG bar
-    chart there and the indices as JSON beside it (``<out>.json``, with the provenance)."""
+    """Sobol indices of ``output`` (:func:`fem_racket.studies.design.sensitivity.sobol_indices`);
+    with ``out`` a PNG bar chart there and the indices as JSON beside it (``<out>.json``, with
+    the provenance)."""
     from fem_racket.io.design_plots import plot_sobol
 
     if out is not None:

@@ -5,7 +5,8 @@ from what the run used: ``--modes 80`` keeps the 40 flexible modes a 20-element 
 ``zeta`` / ``K_CB`` left unset are derived from the clamped COR and the speed. So the provenance
 records both: ``"parameters"`` the request, ``"used"`` :meth:`ImpactResult.settings` (the solver
 that ran and its tolerances, modes kept, K_CB, zeta, C_CB, ...: the same keys and values as
-``fem-racket simulate --json``) and ``"results"`` the outcome (COR, contact time, ...).
+``fem-racket simulate --json``, numbers as :func:`fem_racket.outputs.json_ready` writes them)
+and ``"results"`` the outcome (COR, contact time, ...).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
-from fem_racket.outputs import provenance
+from fem_racket.outputs import json_ready, provenance
 
 if TYPE_CHECKING:
     from fem_racket.impact.simulate import ImpactResult
@@ -28,6 +29,6 @@ def impact_provenance(
     of the impact ``result``."""
     meta = provenance(parameters)
     used = result.settings()
-    meta["used"] = used
-    meta["results"] = {k: v for k, v in result.summary().items() if k not in used}
+    meta["used"] = json_ready(used)
+    meta["results"] = json_ready({k: v for k, v in result.summary().items() if k not in used})
     return meta

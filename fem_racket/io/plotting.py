@@ -186,8 +186,13 @@ def coordinate_labels(values: Sequence[float], digits: int = 3) -> list[str]:
     return [repr(v) for v in vals]
 
 
+def _unit(unit: str | None) -> str:
+    """A unit as labels show it: the netCDF (CF) ``"1"`` of a dimensionless value as ``-``."""
+    return "-" if unit == "1" else unit or ""
+
+
 def _name(coord: Any) -> str:
-    unit = coord.attrs.get("units", "")
+    unit = _unit(coord.attrs.get("units"))
     return f"{coord.name} [{unit}]" if unit else str(coord.name)
 
 
@@ -226,10 +231,10 @@ def plot_sweep(
     if xs.size > 1 and xs.min() > 0 and xs.max() / xs.min() > 20:
         ax.set_xscale("log")
     ax.set_xlabel(_name(da[x]))
-    unit = da.attrs.get("units")
+    unit = _unit(da.attrs.get("units"))
     ax.set_ylabel(f"{da.name} [{unit}]" if unit else str(da.name))
     fixed = [
-        f"{c} = {coordinate_labels([float(da[c])])[0]} {da[c].attrs.get('units', '')}".strip()
+        f"{c} = {coordinate_labels([float(da[c])])[0]} {_unit(da[c].attrs.get('units'))}".strip()
         for c in da.coords
         if da[c].ndim == 0 and c not in (x, hue)
     ]

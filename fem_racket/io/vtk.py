@@ -21,6 +21,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.extras import require
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import BALL_FIELDS, FRAME_FIELDS, field_name, impact_series
 from fem_racket.outputs import atomic_folder
@@ -101,6 +102,7 @@ def write_vtk_series(
     progress : bool or None
         A progress bar over the steps on stderr (None: when stderr is a terminal).
     """
+    require("pyvista", "write_vtk_series (export-vtk)")
     field = field_name(field)
     series = impact_series(result, subdivide=subdivide, frames=frames, scale=scale)
     settings = {

@@ -8,12 +8,13 @@ R_B whose centre moves with the ball displacement u_B (positive towards the fram
 
 Fields, with their units in the names:
 
-- frame points: ``deflection [m]`` w, ``slope [rad]`` dw/dx, ``velocity [m/s]`` dw/dt;
+- frame points: ``deflection [m]`` w, ``slope [rad]`` dw/dx, ``frame velocity [m/s]`` dw/dt;
 - frame cells (the polyline segments): ``curvature [1/m]`` d^2w/dx^2 and ``bending moment [N m]``
   M = EI d^2w/dx^2, evaluated at each segment's midpoint (cubic Hermite elements are C1, so the
   curvature jumps at the nodes and is a cell quantity), and ``EI [N m^2]``;
-- ball points: ``displacement [m]`` u_B, ``velocity [m/s]`` v_B and ``contact force [N]``
-  F = K_CB delta + C_CB delta' (eq 1's spring-dashpot).
+- ball points: ``deflection [m]`` its own displacement u_B along z (so that one colour map shows
+  both blocks), ``ball velocity [m/s]`` v_B and ``contact force [N]`` F = K_CB delta + C_CB
+  delta' (eq 1's spring-dashpot).
 
 Format, chosen by measurement (``scripts/bench_vtk.py --compare-hdf``, 200 steps of the standard
 impact): one ``.vtu`` per step and dataset plus a ``.pvd`` collection carrying the physical times
@@ -71,12 +72,12 @@ BALL_RADIUS = 0.0335
 FRAME_FIELDS = (
     "deflection [m]",
     "slope [rad]",
-    "velocity [m/s]",
+    "frame velocity [m/s]",
     "curvature [1/m]",
     "bending moment [N m]",
 )
 #: Point fields of the ball (uniform over the sphere, per step).
-BALL_FIELDS = ("displacement [m]", "velocity [m/s]", "contact force [N]")
+BALL_FIELDS = ("deflection [m]", "ball velocity [m/s]", "contact force [N]")
 
 #: Short names accepted for the frame fields (``--field moment``).
 FIELD_ALIASES = {name.split(" [")[0].split()[-1]: name for name in FRAME_FIELDS}
@@ -273,14 +274,14 @@ def impact_series(
     point_fields = {
         "deflection [m]": field(x, 0),
         "slope [rad]": field(x, 1),
-        "velocity [m/s]": field(x, 0, velocity=True),
+        "frame velocity [m/s]": field(x, 0, velocity=True),
     }
     cell_fields = {"curvature [1/m]": curvature, "bending moment [N m]": curvature * EI}
     u_B = result.ball_displacement[steps]
     w_i = result.impact_point_displacement[steps]
     ball_fields = {
-        "displacement [m]": u_B,
-        "velocity [m/s]": result.ball_velocity[steps],
+        "deflection [m]": u_B,
+        "ball velocity [m/s]": result.ball_velocity[steps],
         "contact force [N]": result.force[steps],
     }
     return ImpactSeries(

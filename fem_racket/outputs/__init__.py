@@ -47,6 +47,7 @@ from fem_racket.outputs.checks import (
     check_output_path,
     check_targets,
 )
+from fem_racket.outputs.jsonable import json_ready
 from fem_racket.outputs.provenance import add_png_provenance, provenance, sidecar_path
 
 __all__ = [
@@ -62,6 +63,7 @@ __all__ = [
     "provenance",
     "deferred_interrupts",
     "deferring",
+    "json_ready",
     "record_interrupt",
     "sidecar_path",
 ]

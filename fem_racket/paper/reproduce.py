@@ -1,6 +1,6 @@
 """Reproduce every analysis of Kawazoe & Kanda (1997): all figures, their data and a report.
 
-:func:`reproduce` computes each figure of :data:`fem_racket.figures.FIGURES`, writes its CSV
+:func:`reproduce` computes each figure of :data:`fem_racket.paper.figures.FIGURES`, writes its CSV
 tables and figure (PNG by default, or SVG, PDF) into an output folder, writes ``values.json``
 (every scalar and the list of files, with provenance) there, and writes a Markdown report
 (``REPRODUCTION.md``) setting each statement of the paper beside our value and a verdict
@@ -142,7 +142,8 @@ def reproduce(
         are computed, as one set: all of them or, on any failure or interruption, none (old
         files kept); every destination is checked before the work.
     figures : list of str, optional
-        Subset of :data:`fem_racket.figures.FIGURES` keys; all by default (a report needs all).
+        Subset of :data:`fem_racket.paper.figures.FIGURES` keys; all by default (a report needs
+        all).
     parameters : dict, optional
         Extra provenance (e.g. the command's options), in ``values.json``, every figure's
         metadata and a comment at the end of the report. Every provenance also records what
@@ -152,7 +153,8 @@ def reproduce(
     dpi : float
         Resolution of the figures [dots per inch].
     progress : bool or None
-        A progress bar over the figures on stderr (None: when stderr is a terminal).
+        A progress bar over the whole work on stderr, naming its phase: computing each
+        figure, checking the statements, drawing each figure (None: when stderr is a terminal).
     law : ContactLaw or str, optional
         Draw the figures with this contact law (or the law of that name,
         :data:`fem_racket.contact.presets.LAW_NAMES`) instead of the paper's linear K_CB;
@@ -195,25 +197,37 @@ def reproduce(
     meta["used"] = used_settings(law)
     done: dict[str, FigureData] = {}
     seconds: dict[str, float] = {}
-    for key in progress_bar(keys, desc="reproduce", unit="figure", enabled=progress):
+    # One bar over the whole work, its phase named: computing each figure, checking the
+    # statements, drawing each figure (the drawing takes most of the time).
+    bar = progress_bar(total=2 * len(keys) + (report is not None), unit="step", enabled=progress)
+    for key in keys:
+        bar.set_description_str(f"reproduce: computing {key}")
         t0 = time.perf_counter()
         done[key] = FIGURES[key].compute(quick, law)
         seconds[key] = time.perf_counter() - t0
         log.info("%s: %.2f s", key, seconds[key])
+        bar.update()
     values = {k: d.values for k, d in done.items()}
     listing = [p.name for p in written]
-    claims = [] if report is None else _claims(values, law)
+    claims = []
+    if report is not None:
+        bar.set_description_str("reproduce: checking the statements")
+        claims = _claims(values, law)
+        bar.update()
     # Every file of the reproduction moved into place together (check_replaceable above did the
     # --overwrite check: what remains is ours to replace); unchanged ones are left as they are.
     with atomic_outputs(targets, overwrite=True) as temps:
         pending = iter(temps)
         for key, paths in groups.items():
+            bar.set_description_str(f"reproduce: drawing {key}")
             t0 = time.perf_counter()
             mine = [next(pending) for _ in paths]
             write_figure_into(
                 FIGURES[key], done[key], mine, paths, meta, dpi=dpi, keep_unchanged=True
             )
             seconds[key] += time.perf_counter() - t0
+            bar.update()
+        bar.close()
         listed = {"provenance": meta, "files": listing, "values": values}
         next(pending).write_text(json.dumps(listed, indent=1))
         if report is not None:

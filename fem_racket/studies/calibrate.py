@@ -34,6 +34,7 @@ from fem_racket.contact.registry import FAMILIES as REGISTERED
 from fem_racket.contact.registry import LiveView
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
+from fem_racket.studies.views import CalibrationView
 from fem_racket.validation import InputError, check_choice
 
 __all__ = [
@@ -131,8 +132,8 @@ def _model_values(law: ContactLaw, targets: tuple[Target, ...], ball_mass: float
     return np.array(out, dtype=float)
 
 
-@dataclass(frozen=True, eq=False)
-class Calibration:
+@dataclass(frozen=True, eq=False, repr=False)
+class Calibration(CalibrationView):
     """A fitted law and how it meets each target."""
 
     family: str

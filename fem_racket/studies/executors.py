@@ -40,6 +40,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.extras import require
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BACKENDS", "check_scheduler", "pin_blas_threads", "run_chunks"]
@@ -74,6 +75,7 @@ def check_scheduler(address: str) -> str:
         raise InputError(
             f"scheduler = {show(address)} is not allowed: must look like tcp://HOST:PORT"
         )
+    require("distributed", "a Dask scheduler (--scheduler)")
     return address
 
 

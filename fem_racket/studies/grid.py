@@ -172,6 +172,14 @@ class SweepSpec:
             )
         if spec.modes is not None:
             check_integer("modes", spec.modes)
+        if spec.law is not None:  # the law's integrators keep the modes they need: refuse,
+            for key, default in (("modes", DEFAULT_MODES), ("basis", "modal")):  # not ignore
+                if getattr(spec, key) != default:
+                    raise InputError(
+                        f"{key} = {show(getattr(spec, key))} is not allowed with solver "
+                        f"{spec.solver!r} under contact law {show(spec.law.name)}: it keeps "
+                        "the modes it needs (its tolerance) or every mode (cvode)"
+                    )
         check_solver_settings(
             spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
         )

@@ -21,28 +21,16 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.parameters import check_values
 from fem_racket.contact.presets import family_law
-from fem_racket.contact.registry import FAMILIES, LAW_PARAMETERS, LiveView
+from fem_racket.contact.registry import FAMILIES, LAW_PARAMETERS
 from fem_racket.validation import InputError, show
 
 __all__ = [
-    "LAW_DESCRIPTIONS",
     "case_law",
     "check_law_grid",
     "check_law_value",
     "family_of",
-    "law_values",
-    "owner",
     "sweep_law_values",
 ]
-
-#: Law parameter -> description (live, from the declarations; the equations are in each law's
-#: module).
-LAW_DESCRIPTIONS = LiveView(lambda: {name: p.help for name, (_, p) in LAW_PARAMETERS.items()})
-
-
-def owner(name: str) -> str:
-    """The family whose parameter ``name`` is."""
-    return LAW_PARAMETERS[name][0]
 
 
 def family_of(law: ContactLaw | None) -> str | None:
@@ -50,11 +38,6 @@ def family_of(law: ContactLaw | None) -> str | None:
     None for the paper's linear law and any law without named parameters."""
     name = getattr(law, "name", None)
     return name if name in FAMILIES else None
-
-
-def law_values(law: ContactLaw) -> dict[str, Any]:
-    """The parameters of a family law by their option names (``hc_exponent`` ...)."""
-    return law.values()
 
 
 def check_law_value(name: str, value: Any) -> float:
@@ -101,7 +84,7 @@ def sweep_law_values(law: ContactLaw | None, given: Mapping[str, Any]) -> dict[s
                 f"law parameter {key} is not allowed with law {show(family)}: must be one of "
                 f"{sorted(spec)}"
             )
-    own = law_values(law)
+    own = law.values()
     return {k: given.get(k, own[k]) for k in spec}
 
 

@@ -40,6 +40,7 @@ from fem_racket.studies.sweetspots import (
     mode_node_positions,
     power_region,
 )
+from fem_racket.studies.views import MapView
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -119,8 +120,8 @@ def apparent_cor_along(
     return np.asarray(batch.cor, dtype=float).reshape(x.shape)
 
 
-@dataclass(frozen=True, eq=False)
-class RacketMap:
+@dataclass(frozen=True, eq=False, repr=False)
+class RacketMap(MapView):
     """e_A and v_out along one racket, with its sweet spots.
 
     Attributes

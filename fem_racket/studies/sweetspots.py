@@ -27,6 +27,7 @@ import numpy as np
 
 from fem_racket.frame.modal import MassProperties, mode_nodes
 from fem_racket.frame.model import FrameModel
+from fem_racket.studies.views import SpotsView
 from fem_racket.validation import InputError, check_finite, check_range
 
 __all__ = [
@@ -105,8 +106,8 @@ def power_region(positions: np.ndarray, values: np.ndarray, fraction: float) -> 
     return left, right
 
 
-@dataclass(frozen=True)
-class SweetSpots:
+@dataclass(frozen=True, repr=False)
+class SweetSpots(SpotsView):
     """A racket's sweet spots, positions as x/L from the butt (NaN when not defined).
 
     Attributes

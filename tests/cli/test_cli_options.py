@@ -74,7 +74,7 @@ def test_simulate_csv_has_the_json_histories_and_a_sidecar(capsys, tmp_path):
     assert run(capsys, "simulate", "--out", j, "--output-step", 5e-4)[0] == 0
     code, out, err = run(capsys, "simulate", "--out", c, "--output-step", 5e-4)
     assert code == 0, err
-    assert f"written                      {c}.json" in out
+    assert f"wrote {c}\nwrote {c}.json\n" in out
     data = json.loads(j.read_text())
     with open(c, newline="") as f:
         rows = list(csv.reader(f))

@@ -17,7 +17,8 @@ def test_export_vtk_writes_the_simulated_impact(capsys, tmp_path, standard_model
         "--frames", 12, "--subdivide", 4, "--scale", 3, "--field", "moment",
     )  # fmt: skip
     assert code == 0, err
-    assert stdout.strip() == str(out / "impact.pvd")
+    n = len(list(out.iterdir()))  # 12 frames and 12 balls, the .pvd and provenance.json
+    assert (n, stdout) == (26, f"wrote {out}/ (26 files; open impact.pvd in ParaView)\n")
     expected = simulate(standard_model, position=0.6, speed=30.0)
     reader = pv.get_reader(str(out / "impact.pvd"))
     assert reader.number_time_points == 12

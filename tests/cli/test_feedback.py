@@ -39,3 +39,15 @@ def test_figure_script_and_reproduce_write_svg_and_pdf(tmp_path):
     assert pdf and pdf[0].read_bytes().startswith(b"%PDF")
     text = render_report(done.figures, [], "figs", fmt="pdf")
     assert "[Fig. 4" in text and "(figs/fig04_frame_modes.pdf)" in text and "![" not in text
+
+
+def test_reproduce_bar_names_each_phase_and_ends_with_the_work(tmp_path, capsys):
+    # One bar over the whole work: it reached 10/10 at ~9 s of a 54 s run when it counted only
+    # the computing; drawing the figures took the rest.
+    from fem_racket.paper.reproduce import reproduce
+
+    reproduce(tmp_path, quick=True, figures=["fig04"], progress=True)
+    err = capsys.readouterr().err
+    assert "reproduce: computing fig04" in err and "reproduce: drawing fig04" in err
+    assert "1/2" in err and "2/2" in err
+    assert err.index("computing fig04") < err.index("drawing fig04")

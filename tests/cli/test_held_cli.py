@@ -16,6 +16,7 @@ from fem_racket.impact.held.modal import held_basis, held_contact
 from fem_racket.impact.held.run import hand_summary
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, contact_peak, grip_peak, vibration_rms
 from fem_racket.impact.swing import Swing
+from fem_racket.outputs import json_ready
 
 
 def run(capsys, *argv):
@@ -50,7 +51,7 @@ def test_exact_output_is_the_library_call(capsys, exact, grip):
         vibration_rms(c, DEFAULT_WINDOW), rel=1e-13
     )
     assert data["rebound_speed_m_s"] == pytest.approx(-c.rebound_velocity, rel=1e-13)
-    assert data["hand"] == hand_summary(GRIPS[grip]) and data["hand"]["grip"] == grip
+    assert data["hand"] == json_ready(hand_summary(GRIPS[grip])) and data["hand"]["grip"] == grip
     assert data["modes"] == c.modes
     text = run(capsys, "simulate", "--grip", grip)
     for name, value in [
@@ -123,7 +124,8 @@ def test_out_writes_histories_and_the_hand_in_the_provenance(capsys, tmp_path, s
     run(capsys, "simulate", *custom, "--out", str(out))
     meta = json.loads((tmp_path / "held.csv.json").read_text())
     hand = Hand(stiffness=1e5, damping=150.0)
-    assert meta["used"]["hand"] == hand_summary(hand) and meta["used"]["hand"]["grip"] == "custom"
+    assert meta["used"]["hand"] == json_ready(hand_summary(hand))
+    assert meta["used"]["hand"]["grip"] == "custom"
     assert meta["used"]["shock_window_s"] == 0.02
     assert meta["parameters"]["grip_damping"] == 150.0
     assert meta["summary"]["grip_vibration_rms_n"] == meta["results"]["grip_vibration_rms_n"]

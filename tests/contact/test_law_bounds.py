@@ -156,3 +156,30 @@ def test_a_failed_step_is_one_line_naming_the_case():
     msg = str(err.value)
     assert "\n" not in msg and "ball_stiffness = 1e+08" in msg and "20 m/s" in msg
     assert "cvode" in msg
+
+
+@pytest.mark.parametrize("family", list(FITTED))
+def test_every_fit_starts_inside_its_bounds_with_a_valid_law(family):
+    # calibrate --family series --targets itf started at k_s = 1e9 N/m, outside its own search
+    # bounds (scipy refused with a traceback); every start now builds a law within its bounds.
+    fit = FITTED[family]
+    for start in fit.starts.values():
+        assert all(lo <= x <= hi for lo, x, hi in zip(fit.low, start, fit.high, strict=True))
+        fit.build(np.asarray(start, dtype=float))
+
+
+def test_design_bounds_outside_the_law_are_refused_before_any_work():
+    from fem_racket.studies.design.build import design_problem
+
+    with pytest.raises(InputError, match=r"k_s bound = 1000000000.0 N/m .*\[1, 1e\+07\]"):
+        design_problem(vary=("string",), law=get_law("series"), string_bounds=(1e3, 1e9))
+    with pytest.raises(InputError, match=r"k_3 bound = 1e\+16 N/m\^3"):
+        design_problem(vary=("string_cubic",), law=get_law("series"), cubic_bounds=(0.0, 1e16))
+
+
+def test_the_batched_engine_refuses_a_ball_in_grams():
+    from fem_racket import FrameModel, impacts
+
+    model = FrameModel.build(None, 20)
+    with pytest.raises(InputError, match=r"ball_mass = 57.0 kg .*57.0 g = 0.057 kg"):
+        impacts(model, position=0.7, speed=20.0, ball_mass=[0.057, 57.0])

@@ -1,4 +1,4 @@
-"""Exact free-free frequencies of piecewise-uniform beams (fem_racket.exact)."""
+"""Exact free-free frequencies of piecewise-uniform beams (fem_racket.frame.continuous)."""
 
 import numpy as np
 import pytest

@@ -1,6 +1,6 @@
 """Run files drive every command: sweep, export-vtk, animate, refine and reproduce read their own
 table (``[sweep]``, ``[vtk]`` ...) and the core tables, the command line wins, and what they
-write records the run (provenance). simulate and modes: tests/test_config.py."""
+write records the run (provenance). simulate and modes: tests/io/test_config.py."""
 
 import json
 import re
@@ -81,14 +81,18 @@ def test_vtk_and_animate_tables(capsys, cwd):
         "[vtk]\nframes = 3\nout = 'series'\nfield = 'moment'\n"
         "[animate]\nframes = 4\nout = 'a.gif'\nsize = '160x160'\nfps = 10.0\n"
     )
-    assert run(capsys, "export-vtk", "--config", "run.toml").strip() == "series/impact.pvd"
+    printed = run(capsys, "export-vtk", "--config", "run.toml").strip()
+    assert printed == "wrote series/ (8 files; open impact.pvd in ParaView)"
     assert len(list((cwd / "series").glob("frame_*.vtu"))) == 3
     prov = json.loads((cwd / "series" / "provenance.json").read_text())
     params = prov["parameters"]
     assert prov["used"]["position_x_over_l"] == 0.6 and params["steps"] == 3
     assert params["config"] == "run.toml" and params["rtol"] == 1e-10 and prov["version"]
     # The command line wins over [animate].
-    assert run(capsys, "animate", "--config", "run.toml", "--frames", "2").strip() == "a.gif"
+    assert (
+        run(capsys, "animate", "--config", "run.toml", "--frames", "2").strip()
+        == "wrote a.gif\nwrote a.gif.json"
+    )
     meta = json.loads((cwd / "a.gif.json").read_text())
     assert meta["parameters"]["frames"] == 2 and meta["parameters"]["fps"] == 10.0
     assert meta["parameters"]["size_px"] == [160, 160]

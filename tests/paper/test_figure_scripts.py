@@ -103,6 +103,15 @@ def test_every_script_is_run_by_a_test():
     assert not missing, f"scripts not run by any test: {missing}"
 
 
+def test_bench_docs_script_runs(capsys):
+    # The README's stated run times are measured by scripts/bench_docs.py (here its quick set).
+    rows = load(SCRIPTS / "bench_docs.py").main(["--quick"])
+    assert [r["command"] for r in rows] == ["fem-racket --help", "fem-racket simulate",
+                                            "fem-racket config --example"]  # fmt: skip
+    assert all(0 < s < 120 for r in rows for s in r["seconds"])
+    assert "README" in capsys.readouterr().out
+
+
 def test_bench_laws_script_runs(capsys):
     # the general integrator's benchmark (issue 15) in its quick variant: every law within the
     # 1e-5 COR target against CVODE (DESIGN section 9)

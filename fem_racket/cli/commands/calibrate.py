@@ -13,13 +13,14 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
+    add_config_option,
     add_output_options,
     print_json,
+    print_written,
     run_parameters,
     significant,
 )
-from fem_racket.cli.options.output import json_ready
-from fem_racket.outputs import Target, atomic_outputs, check_targets, provenance
+from fem_racket.outputs import Target, atomic_outputs, check_targets, json_ready, provenance
 from fem_racket.studies.calibrate import (
     FAMILIES,
     TARGET_SETS,
@@ -54,6 +55,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument("--json", action="store_true", help="print a JSON object")
     add_output_options(p, what="output folder (writes FAMILY-TARGETS .toml, .json and .png)")
+    add_config_option(p)
     p.set_defaults(func=run)
 
 
@@ -100,6 +102,5 @@ def run(args: argparse.Namespace) -> int:
             f"{significant(row['target'], 4):>10} {significant(row['model'], 4):>10} "
             f"{significant(row['tolerance'], 2):>7}  {'yes' if row['within'] else 'NO'}"
         )
-    for f in files:
-        print(f"written {f}")
+    print_written(files)
     return 0

@@ -103,12 +103,12 @@ def run(args: argparse.Namespace) -> int:
     if args.out:
         import json
 
-        from fem_racket.cli.common import run_parameters, write_text
+        from fem_racket.cli.common import print_written, run_parameters, write_text
         from fem_racket.outputs import provenance
 
         meta = json.dumps(provenance(run_parameters(args)), sort_keys=True)
         write_text(args.out, f"{text}\n# provenance: {meta}\n", overwrite=args.overwrite)
-        print(f"written {args.out}")
+        print_written([args.out])
         return 0
     print(text, end="")
     return 0

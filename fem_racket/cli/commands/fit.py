@@ -13,10 +13,18 @@ import json
 from pathlib import Path
 
 from fem_racket.cli.common import add_config_option, print_json, run_parameters, significant
+from fem_racket.cli.options.output import print_written
+from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2, fit_racket, racket_spec
 from fem_racket.io.mesh_files import write_mesh
-from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
+from fem_racket.outputs import (
+    atomic_outputs,
+    check_output_path,
+    json_ready,
+    provenance,
+    sidecar_path,
+)
 from fem_racket.validation import InputError, check_integer
 
 #: Where the mesh goes unless --out is given.
@@ -78,8 +86,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--out",
         default=str(DEFAULT_OUTPUT),
         metavar="FILE",
-        help=f"mesh file to write (.vtu recommended; default {DEFAULT_OUTPUT}); the "
-        "specification and provenance go to FILE.json",
+        help=f"mesh file to write (.vtu recommended; default {DEFAULT_OUTPUT}, replacing "
+        "the mesh an earlier run wrote there); the specification and provenance go to FILE.json",
     )
     o.add_argument(
         "--overwrite", action="store_true", help="replace existing files (default: refuse)"
@@ -97,8 +105,9 @@ def run(args: argparse.Namespace) -> int:
             flag = "--" + name.replace("_", "-")
             raise InputError(f"{name} is required: give {flag} (or {name} in the run file's [fit])")
     out = Path(args.out)
+    overwrite = replace_own(args, out == DEFAULT_OUTPUT, [out, sidecar_path(out)])
     for f in (out, sidecar_path(out)):
-        check_output_path(f, overwrite=args.overwrite)
+        check_output_path(f, overwrite=overwrite)
     frame = fit_racket(
         args.length,
         args.mass,
@@ -122,9 +131,9 @@ def run(args: argparse.Namespace) -> int:
     summary = {"target": target, "fitted": got, "segments": segments, "mesh": str(out)}
     meta = provenance(run_parameters(args))
     # the mesh and its sidecar as one set: both or neither
-    with atomic_outputs([out, sidecar_path(out)], overwrite=args.overwrite) as (tmp, side):
+    with atomic_outputs([out, sidecar_path(out)], overwrite=overwrite) as (tmp, side):
         write_mesh(mesh, tmp, overwrite=True)
-        text = json.dumps({**meta, **summary}, indent=2, default=str)
+        text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
         side.write_text(text + "\n", encoding="utf-8")
     if args.json:
         print_json(summary)
@@ -138,5 +147,5 @@ def run(args: argparse.Namespace) -> int:
             f"segment {k + 1}: {s['length_m']:.4f} m, EI {significant(s['ei_n_m2'], 5)} N m^2, "
             f"rhoA {significant(s['rhoa_kg_m'], 5)} kg/m"
         )
-    print(f"{'written':<22} {out}")
+    print_written([out, sidecar_path(out)])
     return 0

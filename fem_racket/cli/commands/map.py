@@ -3,7 +3,9 @@
 Rackets: ``--preset standard rigid`` and/or ``--mesh A.vtu B.vtu`` (each option also repeatable);
 the paper's standard racket when neither is given. ``--out`` takes one or more files, the
 format from the suffix: .png (curves with the sweet spots marked), .nc (netCDF) and .csv (with a
-``.json`` sidecar); ``output/map.png`` by default. ``--json`` prints the sweet spots and curves.
+``.json`` sidecar); ``output/map.png`` by default, where a rerun replaces its own earlier map
+(:mod:`fem_racket.cli.options.rerun`). ``--json`` prints the sweet spots and curves and writes
+only what ``--out`` names; ``--no-files`` writes nothing.
 ``--law NAME`` (and its parameters) maps under another ball/string law than the paper's.
 """
 
@@ -17,10 +19,12 @@ from fem_racket.cli.common import (
     add_config_option,
     add_swing_options,
     print_json,
+    print_written,
     run_parameters,
     significant,
 )
 from fem_racket.cli.options.laws import add_law_options, law_from_args
+from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
@@ -30,6 +34,7 @@ from fem_racket.io.map_files import check_map_output, write_map
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.studies.grid import as_values
 from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
+from fem_racket.validation import InputError
 
 #: Where the map goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "map.png"
@@ -91,9 +96,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     start, stop, num = DEFAULT_POSITIONS
     g.add_argument(
         "--positions",
+        "--position",
         default=f"{start}:{stop}:{num}",
         metavar="VALUES",
-        help=f"impact points x/L: start:stop:num or a comma list (default {start}:{stop}:{num})",
+        help=f"impact points x/L [-]: start:stop:num or a comma list "
+        f"(default {start}:{stop}:{num})",
     )
     g.add_argument(
         "--ball-mass", type=float, default=0.057, metavar="KG", help="m_B [kg] (default 0.057)"
@@ -106,7 +113,11 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="K_CB [N/m] of the linear law (default: from the closing speed)",
     )
     g.add_argument(
-        "--zeta", type=float, default=None, metavar="ZETA", help="damping ratio (default 0.0592)"
+        "--zeta",
+        type=float,
+        default=None,
+        metavar="ZETA",
+        help="ball/string damping ratio [-] (default 0.0592)",
     )
     g.add_argument(
         "--separation",
@@ -126,7 +137,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=float,
         default=DEFAULT_TOLERANCE,
         metavar="COR",
-        help="COR error the batched engine may make: modes far above the contact frequency "
+        help="COR error [-] the batched engine may make: modes far above the contact frequency "
         f"become one residual mode (default {DEFAULT_TOLERANCE:g}; 0: every mode)",
     )
     add_swing_options(p)
@@ -137,18 +148,20 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=float,
         default=DEFAULT_POWER_FRACTION,
         metavar="F",
-        help="power region: v_out >= F x its maximum, 0 < F <= 1 (default 0.95)",
+        help="power region: v_out >= F [-] x its maximum, 0 < F <= 1 (default 0.95)",
     )
     o.add_argument(
         "--out",
         nargs="+",
         default=None,
         metavar="FILE",
-        help=f"file(s) to write: .png, .nc, .csv (default {DEFAULT_OUTPUT})",
+        help=f"file(s) to write: .png, .nc, .csv (default {DEFAULT_OUTPUT}, replacing the map an "
+        "earlier run wrote there; none with --json)",
     )
     o.add_argument(
         "--overwrite", action="store_true", help="replace existing output files (default: refuse)"
     )
+    o.add_argument("--no-files", action="store_true", help="write no file, print only")
     o.add_argument(
         "--json",
         action="store_true",
@@ -170,9 +183,14 @@ def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
 
 def run(args: argparse.Namespace) -> int:
     """Map every racket, write the files and print the sweet spots."""
-    outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
+    if args.no_files and args.out:
+        raise InputError("no_files = True is not allowed with --out: give one of them")
+    default = not (args.out or args.no_files or args.json)
+    outs = [Path(p) for p in (args.out or [])] or ([DEFAULT_OUTPUT] if default else [])
+    files = [f for path in outs for f in check_map_output(path, overwrite=True)]
+    overwrite = replace_own(args, default, files)
     for path in outs:
-        check_map_output(path, overwrite=args.overwrite)
+        check_map_output(path, overwrite=overwrite)
     positions = as_values("position", args.positions)
     law = law_from_args(args)
     maps = [
@@ -196,7 +214,7 @@ def run(args: argparse.Namespace) -> int:
         for name, frame in _rackets(args)
     ]
     for path in outs:
-        write_map(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
+        write_map(maps, path, overwrite=overwrite, parameters=run_parameters(args))
     if args.json:
         objs = [m.summary() for m in maps]
         print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
@@ -215,6 +233,5 @@ def run(args: argparse.Namespace) -> int:
         for label, value in rows:
             text = "-" if value != value else significant(value, 4)
             print(f"  {label:<26} {text:>10} x/L")
-    for path in outs:
-        print(f"{'written':<28} {path}")
+    print_written(files)
     return 0

@@ -9,7 +9,14 @@ import argparse
 
 from fem_racket.cli.common import add_config_option
 from fem_racket.cli.options.design import add_design_options, problem_from_args
-from fem_racket.cli.options.execution import add_progress_option, add_run_options, run_options
+from fem_racket.cli.options.drawing import add_quiet_option
+from fem_racket.cli.options.execution import add_run_options, run_options
+from fem_racket.cli.options.output import print_written_folder
+from fem_racket.cli.options.rerun import replace_own
+from fem_racket.extras import require
+
+#: Where the study goes unless --out is given.
+DEFAULT_OUTPUT = "output/design"
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -45,15 +52,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     g = p.add_argument_group("output")
     g.add_argument(
         "--out",
-        default="output/design",
+        default=DEFAULT_OUTPUT,
         metavar="DIR",
         help="output folder: optimum.vtu, start.vtu, result.json, history.nc, PNGs "
-        "(default output/design); designs are kept in DIR.history/ until it is "
-        "written, so a rerun resumes",
+        f"(default {DEFAULT_OUTPUT}, replacing the study an earlier run wrote there); designs "
+        "are kept in DIR.history/ until it is written, so a rerun resumes",
     )
     g.add_argument("--overwrite", action="store_true", help="replace the output folder")
     g.add_argument("--restart", action="store_true", help="discard DIR.history/ and start afresh")
-    add_progress_option(g)
+    add_quiet_option(g)
     p.add_argument("--json", action="store_true", help="print result.json's summary as JSON")
     add_config_option(p, private=("out",))
     p.set_defaults(func=run)
@@ -64,12 +71,14 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.cli.common import print_json
     from fem_racket.io.design_study import run_optimization
 
+    if args.method == "nsga2":
+        require("pymoo", "fem-racket optimize --method nsga2")
     problem = problem_from_args(args)
     r = run_optimization(
         problem,
         method=args.method,
         out=args.out,
-        overwrite=args.overwrite,
+        overwrite=replace_own(args, args.out == DEFAULT_OUTPUT, [args.out]),
         restart=args.restart,
         maxiter=args.maxiter,
         popsize=args.popsize,
@@ -103,5 +112,5 @@ def run(args: argparse.Namespace) -> int:
         print(f"{c['label']:<40} {c['value']:>12.6g} in [{c['low']:g}, {c['high']:g}] {ok}")
     if r.pareto_f is not None:
         print(f"Pareto front: {len(r.pareto_f)} designs (pareto.png, result.json)")
-    print(f"wrote {args.out}")
+    print_written_folder(args.out)
     return 0

@@ -12,9 +12,11 @@ from fem_racket.cli.common import (
     frame_from_args,
     number_list,
     print_json,
+    print_written,
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
+from fem_racket.cli.options.rerun import replace_own
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.system import SEPARATION_EVENTS
@@ -23,6 +25,9 @@ from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT
 from fem_racket.validation import InputError, show
 
 FAMILY_CHOICES = (*FAMILIES, "both")
+
+#: Where the table goes unless --csv is given (the plot beside it).
+DEFAULT_CSV = "output/refine.csv"
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -76,7 +81,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         **number_list(float),
         default=list(DEFAULT_POSITIONS),
         metavar="X_OVER_L",
-        help="impact points x/L from the grip end, space- or comma-separated (default "
+        help="impact points x/L [-] from the grip end, space- or comma-separated (default "
         + ",".join(map(str, DEFAULT_POSITIONS))
         + ")",
     )
@@ -128,9 +133,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     o = p.add_argument_group("output")
     o.add_argument(
         "--csv",
-        default="output/refine.csv",
+        default=DEFAULT_CSV,
         metavar="FILE",
-        help="output file: CSV table, provenance in FILE.json beside it (default %(default)s)",
+        help="output file: CSV table, provenance in FILE.json beside it (default %(default)s, "
+        "replacing the table an earlier run wrote there; none with --json)",
     )
     o.add_argument(
         "--plot",
@@ -143,7 +149,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_quiet_option(o)
     o.add_argument("--no-files", action="store_true", help="write neither the CSV nor the plot")
     o.add_argument("--overwrite", action="store_true", help="replace existing output files")
-    o.add_argument("--json", action="store_true", help="print a JSON object")
+    o.add_argument(
+        "--json", action="store_true", help="print a JSON object (writes only --csv, --plot)"
+    )
     add_config_option(p, private=("elements",))
     p.set_defaults(func=run)
 
@@ -178,9 +186,11 @@ def run(args: argparse.Namespace) -> int:
     frame = frame_from_args(args, exclusive=("ei1", "ei2"))
     plot = _plot_path(args)
     check_dpi(args.dpi)
-    outputs = [] if args.no_files else [Path(args.csv), plot]
+    default = args.csv == DEFAULT_CSV and args.plot is None
+    outputs = [] if args.no_files or (args.json and default) else [Path(args.csv), plot]
+    overwrite = replace_own(args, default, [t.path for t in refine_targets(args.csv, plot)])
     if outputs:  # fail before the work, not after it
-        check_targets(refine_targets(args.csv, plot), overwrite=args.overwrite)
+        check_targets(refine_targets(args.csv, plot), overwrite=overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
     impact = {
         "ball_mass": args.ball_mass,
@@ -208,7 +218,7 @@ def run(args: argparse.Namespace) -> int:
         write_outputs(
             studies,
             *outputs,
-            overwrite=args.overwrite,
+            overwrite=overwrite,
             parameters=run_parameters(args),
             dpi=args.dpi,
         )
@@ -221,6 +231,5 @@ def run(args: argparse.Namespace) -> int:
         print_json(data)
         return 0
     print("\n\n".join(format_study(s) for s in studies.values()))
-    for path in outputs:
-        print(f"wrote {path}")
+    print_written([t.path for t in refine_targets(args.csv, plot)] if outputs else [])
     return 0

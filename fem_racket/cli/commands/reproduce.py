@@ -81,13 +81,13 @@ def run(args: argparse.Namespace) -> int:
     counts = result.counts()
     if law is None:
         print(
-            f"report: {report} ({len(result.claims)} statements: {counts['agrees']} agree, "
+            f"wrote {report} ({len(result.claims)} statements: {counts['agrees']} agree, "
             f"{counts['differs']} differ, {counts['not checkable']} not checkable)"
         )
     else:
         held = sum(c.verdict == "agrees" for c in result.claims[:4])
-        print(f"report: {report} ({held} of the paper's 4 conclusions hold under {args.law})")
-    print(f"total: {total:.1f} s, output in {out}/")
+        print(f"wrote {report} ({held} of the paper's 4 conclusions hold under {args.law})")
+    print(f"wrote {out}/ ({len(result.files)} files; {total:.1f} s in all)")
     return 0
 
 

@@ -6,7 +6,9 @@ import argparse
 
 from fem_racket.cli.common import add_config_option
 from fem_racket.cli.options.design import add_design_options, problem_from_args
-from fem_racket.cli.options.execution import add_progress_option, add_run_options, run_options
+from fem_racket.cli.options.drawing import add_quiet_option
+from fem_racket.cli.options.execution import add_run_options, run_options
+from fem_racket.extras import require
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -34,7 +36,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="PNG file: bar chart of the indices, PNG.json beside it (default: print only)",
     )
     g.add_argument("--overwrite", action="store_true", help="replace the output files")
-    add_progress_option(g)
+    add_quiet_option(g)
     p.add_argument("--json", action="store_true", help="print the indices as JSON")
     add_config_option(p, private=("out",))
     p.set_defaults(func=run)
@@ -42,9 +44,10 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the indices."""
-    from fem_racket.cli.common import print_json
+    from fem_racket.cli.common import print_json, print_written
     from fem_racket.io.design_study import run_sensitivity, sobol_json
 
+    require("SALib", "fem-racket sensitivity")
     s = run_sensitivity(
         problem_from_args(args),
         output=args.output,
@@ -62,5 +65,5 @@ def run(args: argparse.Namespace) -> int:
     )
     print(s.table())
     if args.out:
-        print(f"wrote {args.out}")
+        print_written([args.out, f"{args.out}.json"])
     return 0

@@ -39,7 +39,7 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
-from fem_racket.cli.options.output import write_result_files
+from fem_racket.cli.options.output import print_written, write_result_files
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
@@ -210,8 +210,7 @@ def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, st
 def _print(rows: list[tuple[str, str, str]], files: list[Path]) -> None:
     for name, value, unit in rows:
         print(f"{name:<28} {value:>14} {unit}".rstrip())
-    for f in files:
-        print(f"{'written':<28} {f}")
+    print_written(files)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -21,7 +21,9 @@ from fem_racket.cli.common import (
     print_json,
     run_parameters,
 )
+from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.laws import add_law_options
+from fem_racket.cli.options.rerun import replace_own
 from fem_racket.contact.presets import law_parameters
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import DEFAULT_MODES
@@ -34,10 +36,10 @@ from fem_racket.validation import InputError, show
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
 
 _HELP = {
-    "position": "impact point x/L from the grip end (default 0.75)",
+    "position": "impact point x/L [-] from the grip end (default 0.75)",
     "speed": "incident ball speed [m/s] (default 20)",
     "racket_speed": "racket speed towards the ball at --reference [m/s] (default 0)",
-    "reference": "point x/L whose speed --racket-speed gives (default 0.75)",
+    "reference": "point x/L [-] whose speed --racket-speed gives (default 0.75)",
     "pivot": "pivot of the swing [m from the butt] (default: none, the racket translates)",
     "ei1": "grip-side EI1 [N m^2], EI2 = 0.88 EI1 unless --ei2 (default 146)",
     "ei_factor": "factor on every segment's EI [-] (default 1)",
@@ -46,6 +48,9 @@ _HELP = {
     "kcb": "ball/string stiffness K_CB [N/m] (default: from the speed)",
     "elements": "number of beam elements (default 20)",
 }
+
+#: Plural spellings, as the commands taking one list of these spell them (map, optimize).
+_PLURAL = {"position": ("--positions",), "speed": ("--speeds",)}
 
 
 def _grid_value(where: str, value: Any) -> Any:
@@ -78,7 +83,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     g = p.add_argument_group("swept or fixed parameters")
     for name, text in _HELP.items():
-        g.add_argument("--" + name.replace("_", "-"), dest=name, metavar="VALUES", help=text)
+        flags = ["--" + name.replace("_", "-"), *_PLURAL.get(name, ())]
+        g.add_argument(*flags, dest=name, metavar="VALUES", help=text)
     g.add_argument(
         "--ei2",
         type=float,
@@ -94,7 +100,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=Path,
         default=DEFAULT_OUTPUT,
         metavar="FILE",
-        help=f"output file: the netCDF result (default {DEFAULT_OUTPUT})",
+        help=f"output file: the netCDF result (default {DEFAULT_OUTPUT}, replacing the sweep an "
+        "earlier run wrote there)",
     )
     r.add_argument("--overwrite", action="store_true", help="replace an existing result file")
     r.add_argument(
@@ -127,7 +134,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         action="store_true",
         help="also compute the largest contact force (variable peak_force_n; slower)",
     )
-    r.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_quiet_option(r)
     r.add_argument("--json", action="store_true", help="print a JSON summary")
     add_config_option(
         p,
@@ -189,13 +196,13 @@ def run(args: argparse.Namespace) -> int:
         tolerance=args.tolerance,
         peak_force=args.peak_force,
         output=args.out,
-        overwrite=args.overwrite,
+        overwrite=replace_own(args, Path(args.out) == DEFAULT_OUTPUT, [args.out]),
         restart=args.restart,
         backend=backend,
         workers=args.workers,
         scheduler=args.scheduler,
         chunk_size=args.chunk_size,
-        progress=False if args.quiet else None,
+        progress=progress_of(args),
         parameters=run_parameters(args),
         **law_parameters(vars(args)),
     )

@@ -16,8 +16,15 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
+from fem_racket.cli.options.output import print_written, print_written_folder
+from fem_racket.cli.options.rerun import replace_own
+from fem_racket.extras import require
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import InputError
+
+#: Where export-vtk and animate write unless --out is given.
+DEFAULT_FOLDER = Path("output") / "impact_vtk"
+DEFAULT_ANIMATION = Path("output") / "impact.gif"
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -78,9 +85,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--out",
         type=Path,
-        default=Path("output/impact_vtk"),
+        default=DEFAULT_FOLDER,
         metavar="DIR",
-        help="output folder (default output/impact_vtk); open DIR/impact.pvd in ParaView",
+        help=f"output folder (default {DEFAULT_FOLDER}, replacing the series an earlier run wrote "
+        "there); open DIR/impact.pvd in ParaView",
     )
     _add_common(p, scale=1.0, frames=None)
     add_config_option(p, private=("out",))  # a folder, not output.out
@@ -90,9 +98,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     a.add_argument(
         "--out",
         type=Path,
-        default=Path("output/impact.gif"),
+        default=DEFAULT_ANIMATION,
         metavar="FILE",
-        help="output file, .gif or .mp4 (default output/impact.gif)",
+        help=f"output file, .gif or .mp4 (default {DEFAULT_ANIMATION}, replacing the animation an "
+        "earlier run wrote there)",
     )
     _add_common(a, scale=10.0, frames=100)
     a.add_argument(
@@ -120,12 +129,16 @@ def _simulate(args: argparse.Namespace):
     return result
 
 
-def _check_early(args: argparse.Namespace) -> None:
-    """Reject bad drawing options before the simulation runs."""
+def _check_early(args: argparse.Namespace) -> bool:
+    """Reject bad drawing options and destinations before the simulation runs; the overwrite
+    the writer takes (:func:`fem_racket.cli.options.rerun.replace_own`)."""
     from fem_racket.io.vtk import PROVENANCE_NAME
     from fem_racket.io.vtk_series import check_scale, field_name
     from fem_racket.outputs import check_output_folder, check_targets
 
+    require("pyvista", f"fem-racket {args.command}")  # before the simulation
+    if args.command == "animate":
+        require("imageio", "fem-racket animate")
     field_name(args.field)
     check_scale(args.scale)
     if args.frames is not None and args.frames < 2:
@@ -133,21 +146,25 @@ def _check_early(args: argparse.Namespace) -> None:
     if args.subdivide < 1:
         raise InputError(f"subdivide = {args.subdivide} is not allowed: must be an integer >= 1")
     if args.command == "export-vtk":
-        check_output_folder(args.out, overwrite=args.overwrite, marker=PROVENANCE_NAME)
-        return
+        overwrite = replace_own(args, Path(args.out) == DEFAULT_FOLDER, [args.out])
+        check_output_folder(args.out, overwrite=overwrite, marker=PROVENANCE_NAME)
+        return overwrite
     from fem_racket.io.animate import animation_targets, check_fps, check_size
 
     targets = animation_targets(args.out)
     check_fps(args.fps)
     check_size(args.size)
-    check_targets(targets, overwrite=args.overwrite)
+    default = Path(args.out) == DEFAULT_ANIMATION
+    overwrite = replace_own(args, default, [t.path for t in targets])
+    check_targets(targets, overwrite=overwrite)
+    return overwrite
 
 
 def run_export(args: argparse.Namespace) -> int:
     """Simulate and write the VTK time series."""
     from fem_racket.io.vtk import write_vtk_series
 
-    _check_early(args)
+    overwrite = _check_early(args)
     result = _simulate(args)
     pvd = write_vtk_series(
         result,
@@ -156,19 +173,19 @@ def run_export(args: argparse.Namespace) -> int:
         frames=args.frames,
         scale=args.scale,
         field=args.field,
-        overwrite=args.overwrite,
+        overwrite=overwrite,
         parameters=run_parameters(args),
         progress=progress_of(args),
     )
-    print(pvd)
+    print_written_folder(pvd.parent, f"open {pvd.name} in ParaView")
     return 0
 
 
 def run_animate(args: argparse.Namespace) -> int:
     """Simulate and render the animation."""
-    from fem_racket.io.animate import render_animation
+    from fem_racket.io.animate import animation_targets, render_animation
 
-    _check_early(args)
+    overwrite = _check_early(args)
     result = _simulate(args)
     path = render_animation(
         result,
@@ -179,9 +196,9 @@ def run_animate(args: argparse.Namespace) -> int:
         scale=args.scale,
         subdivide=args.subdivide,
         size=args.size,
-        overwrite=args.overwrite,
+        overwrite=overwrite,
         parameters=run_parameters(args),
         progress=progress_of(args),
     )
-    print(path)
+    print_written(t.path for t in animation_targets(path))
     return 0

@@ -1,5 +1,5 @@
 """Where a design study's designs run, on the command line (``optimize``, ``sensitivity``):
---backend, --workers, --scheduler, --seed and --progress."""
+--backend, --workers, --scheduler, --seed, and --quiet (no progress bar)."""
 
 from __future__ import annotations
 
@@ -7,9 +7,10 @@ import argparse
 from typing import Any
 
 from fem_racket.cli.common import run_parameters
+from fem_racket.cli.options.drawing import progress_of
 from fem_racket.studies.executors import BACKENDS
 
-__all__ = ["add_progress_option", "add_run_options", "run_options"]
+__all__ = ["add_run_options", "run_options"]
 
 
 def add_run_options(parser: argparse.ArgumentParser) -> None:
@@ -31,24 +32,14 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
 
 
-def add_progress_option(group: argparse._ArgumentGroup) -> None:
-    """--progress / --no-progress, in the command's output group."""
-    group.add_argument(
-        "--progress",
-        action=argparse.BooleanOptionalAction,
-        default=None,
-        help="progress bar on stderr (default: when stderr is a terminal)",
-    )
-
-
 def run_options(args: argparse.Namespace) -> dict[str, Any]:
-    """Keywords of the design studies from the run and progress options: backend, workers,
+    """Keywords of the design studies from the run options and ``--quiet``: backend, workers,
     scheduler, seed, progress and the run parameters (provenance)."""
     return {
         "backend": args.backend,
         "workers": args.workers,
         "scheduler": args.scheduler,
         "seed": args.seed,
-        "progress": args.progress,
+        "progress": progress_of(args),
         "parameters": run_parameters(args),
     }

@@ -51,7 +51,7 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=0.75,
         metavar="X_OVER_L",
-        help="impact point x/L from the grip end, 0..1 (default 0.75)",
+        help="impact point x/L [-] from the grip end, 0..1 (default 0.75)",
     )
     g.add_argument(
         "--ball-mass",
@@ -95,7 +95,7 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=DEFAULT_REFERENCE,
         metavar="X_OVER_L",
-        help=f"point x/L whose speed --racket-speed gives (default {DEFAULT_REFERENCE}, the "
+        help=f"point x/L [-] whose speed --racket-speed gives (default {DEFAULT_REFERENCE}, the "
         "string centre)",
     )
     g.add_argument(
@@ -240,7 +240,7 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
         type=float,
         default=DEFAULT_TOLERANCE,
         metavar="COR",
-        help="COR error the exact solver may make when no histories are asked: modes far above "
+        help="COR error [-] the exact solver may make when no histories are asked: modes far above "
         f"the contact frequency become one residual mode (default {DEFAULT_TOLERANCE:g}; "
         "0: every mode)",
     )
@@ -254,7 +254,7 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
         "--atol",
         type=float,
         default=1e-12,
-        help="absolute tolerance of cvode/bdf, in the state's units (default 1e-12)",
+        help="absolute tolerance of cvode/bdf [state units: m, rad, m/s, rad/s] (default 1e-12)",
     )
 
 

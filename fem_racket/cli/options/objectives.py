@@ -55,14 +55,14 @@ def add_objective_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=0.9,
         metavar="F",
-        help="power region: where v_out >= F * its maximum (default 0.9)",
+        help="power region: where v_out >= F [-] x its maximum (default 0.9)",
     )
     o.add_argument(
         "--stiffness-cost",
         type=float,
         default=0.0,
         metavar="PER_N_M2",
-        help="subtracted from the objectives per N m^2 of EI_1 (default 0)",
+        help="subtracted from the objectives per N m^2 of EI_1 [1/(N m^2)] (default 0)",
     )
     o.add_argument(
         "--grip",

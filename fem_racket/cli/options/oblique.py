@@ -19,7 +19,7 @@ from fem_racket.cli.common import (
     significant,
     swing_from_args,
 )
-from fem_racket.cli.options.output import write_result_files
+from fem_racket.cli.options.output import print_written, write_result_files
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
@@ -221,6 +221,5 @@ def run_oblique(args: argparse.Namespace, incidence: Incidence, hand: Any, files
         return 0
     for name, value, unit in oblique_rows(summary):
         print(f"{name:<28} {value:>14} {unit}".rstrip())
-    for f in files:
-        print(f"{'written':<28} {f}")
+    print_written(files)
     return 0

@@ -1,22 +1,25 @@
 """What the commands print and write: JSON on stdout, ``--out``/``--overwrite``, the run's
 parameters for provenance, atomic text and JSON files.
 
-NaN and infinities, which JSON cannot hold, become ``null`` everywhere (:func:`json_ready`).
+Numbers go through :func:`fem_racket.outputs.json_ready` (NaN as ``null``, a short decimal
+plus rounding noise as that decimal).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
 from pathlib import Path
 from typing import Any
 
+from fem_racket.outputs.jsonable import json_ready
+
 __all__ = [
     "add_output_options",
-    "json_ready",
     "print_json",
+    "print_written",
+    "print_written_folder",
     "run_parameters",
     "write_json",
     "write_result_files",
@@ -24,15 +27,16 @@ __all__ = [
 ]
 
 
-def json_ready(v: Any) -> Any:
-    """``v`` with every non-finite float (at any depth of dicts, lists, tuples) replaced by None."""
-    if isinstance(v, float) and not math.isfinite(v):
-        return None
-    if isinstance(v, dict):
-        return {k: json_ready(x) for k, x in v.items()}
-    if isinstance(v, (list, tuple)):
-        return [json_ready(x) for x in v]
-    return v
+def print_written(paths: Any) -> None:
+    """The success line of every file a command wrote, sidecars included: ``wrote PATH``."""
+    for path in paths:
+        print(f"wrote {path}")
+
+
+def print_written_folder(folder: str | Path, note: str = "") -> None:
+    """The success line of a folder a command wrote: ``wrote DIR/ (N files[; note])``."""
+    n = sum(1 for p in Path(folder).rglob("*") if p.is_file())
+    print(f"wrote {Path(folder)}/ ({n} files{'; ' + note if note else ''})")
 
 
 def print_json(data: Any) -> None:
@@ -112,5 +116,5 @@ def write_result_files(
             w.writerow(history)
             for row in zip(*history.values(), strict=True):
                 w.writerow([repr(float(v)) for v in row])
-        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
+        text = json.dumps(json_ready({**meta, "summary": summary}), indent=2, default=str)
         side.write_text(text + "\n", encoding="utf-8")

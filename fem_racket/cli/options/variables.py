@@ -20,7 +20,8 @@ def add_variable_options(parser: argparse.ArgumentParser) -> None:
         **number_list(),
         default=[0.3, 0.5333333333333333, 0.7666666666666667],
         metavar="X",
-        help="segment boundaries x/L of the design frame (default 0.3, 0.533, 0.767: 4 segments)",
+        help="segment boundaries x/L [-] of the design frame "
+        "(default 0.3, 0.533, 0.767: 4 segments)",
     )
     g.add_argument(
         "--vary",
@@ -54,7 +55,7 @@ def add_variable_options(parser: argparse.ArgumentParser) -> None:
         **number_list(),
         default=[],
         metavar="X",
-        help="centres x/L of added masses (20 mm strips; default none)",
+        help="centres x/L [-] of added masses (20 mm strips; default none)",
     )
     g.add_argument(
         "--mass-bounds",
@@ -75,14 +76,14 @@ def add_variable_options(parser: argparse.ArgumentParser) -> None:
         **number_list(),
         default=[0.0, 1.0],
         metavar="LOW,HIGH",
-        help="bounds x/L of every added mass's centre with --vary position (default 0,1)",
+        help="bounds x/L [-] of every added mass's centre with --vary position (default 0,1)",
     )
     g.add_argument(
         "--ei-points",
         **number_list(),
         default=[],
         metavar="X",
-        help="control stations x/L of a smooth EI(x) (first 0, last 1), one EI variable each, "
+        help="control stations x/L [-] of a smooth EI(x) (first 0, last 1), one EI variable each, "
         "instead of one per segment (default: segments)",
     )
     g.add_argument(
@@ -90,7 +91,7 @@ def add_variable_options(parser: argparse.ArgumentParser) -> None:
         **number_list(),
         default=[],
         metavar="X",
-        help="control stations x/L of a smooth rhoA(x), as --ei-points (default: segments)",
+        help="control stations x/L [-] of a smooth rhoA(x), as --ei-points (default: segments)",
     )
     g.add_argument(
         "--interpolation",

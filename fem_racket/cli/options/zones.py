@@ -27,7 +27,7 @@ def add_zone_options(parser: argparse.ArgumentParser) -> None:
         **number_list(),
         default=[0.6, 0.9],
         metavar="LOW,HIGH",
-        help="uniform zone x/L (default 0.6,0.9)",
+        help="uniform zone x/L [-] (default 0.6,0.9)",
     )
     z.add_argument(
         "--zone-points",
@@ -41,10 +41,11 @@ def add_zone_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=0.05,
         metavar="X",
-        help="standard deviation of the node zone x/L (default 0.05)",
+        help="standard deviation of the node zone x/L [-] (default 0.05)",
     )
     z.add_argument(
         "--speeds",
+        "--speed",
         **number_list(),
         default=[20.0, 30.0, 40.0],
         metavar="M_S",
@@ -61,7 +62,7 @@ def add_zone_options(parser: argparse.ArgumentParser) -> None:
         "--zeta",
         type=float,
         default=None,
-        help="ball/string damping ratio (default from the clamped COR 0.83)",
+        help="ball/string damping ratio [-] (default from the clamped COR 0.83)",
     )
     z.add_argument(
         "--racket-speed",
@@ -77,7 +78,7 @@ def add_zone_options(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=0.75,
         metavar="X",
-        help="reference point of --racket-speed x/L (default 0.75)",
+        help="reference point of --racket-speed x/L [-] (default 0.75)",
     )
     z.add_argument(
         "--pivot",
@@ -90,7 +91,8 @@ def add_zone_options(parser: argparse.ArgumentParser) -> None:
         "--swing-exponent",
         type=float,
         default=-0.27,
-        help="swing speed ~ I^exponent (default -0.27; 0: same swing for any racket)",
+        help="swing speed ~ I^exponent, the exponent [-] "
+        "(default -0.27; 0: same swing for any racket)",
     )
 
 

@@ -47,6 +47,7 @@ from fem_racket.contact.linear import (
     DEFAULT_BALL_MASS,
     KCB_SPEED_RANGE,
     PAPER_CLAMPED_COR,
+    check_ball_mass,
     kcb_from_speed,
     zeta_from_cor,
 )
@@ -173,6 +174,9 @@ def _check_common(speed, kcb, zeta, ball_mass, ei_factor, separation, tolerance)
         _check_array("kcb", kcb, "N/m", 0.0, math.inf)
     _check_array("zeta", zeta, "", 0.0, 1.0, closed_high=False)
     _check_array("ball_mass", ball_mass, "kg", 0.0, math.inf)
+    if ball_mass is not None:  # a plausible ball (grams typed as kg named)
+        for m in np.unique(np.asarray(ball_mass, dtype=float)):
+            check_ball_mass(m, "ball_mass")
     _check_array("ei_factor", ei_factor, "", 0.0, math.inf)
 
 

@@ -22,6 +22,6 @@ def build_claims(values: dict[str, dict[str, float]]) -> list[Claim]:
     ----------
     values : dict
         Figure key (``"fig08"``) -> that figure's scalar values; every figure of
-        :data:`fem_racket.figures.FIGURES` is needed.
+        :data:`fem_racket.paper.figures.FIGURES` is needed.
     """
     return model_claims(values) + result_claims(values)

@@ -149,7 +149,7 @@ def model_claims(v: dict[str, dict[str, float]]) -> list[Claim]:
             "2.3",
             "Direct integration by a Runge-Kutta method with a time step of 1e-7 to 1e-6 s.",
             "closed-form solution of the linear system in free-free modal coordinates (all 40 "
-            "flexible modes); tests/test_impact.py checks CVODE and scipy BDF against it",
+            "flexible modes); tests/impact/test_impact.py checks CVODE and scipy BDF against it",
             False,
             "",
             "",

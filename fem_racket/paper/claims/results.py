@@ -85,7 +85,8 @@ def result_claims(v: dict[str, dict[str, float]]) -> list[Claim]:
             f"|eq 14 residual| {below(res14, 1e-12)} m/s; |sum of V_i - eq 10's V_I| "
             f"{below(res15, 1e-8)} m/s (0.60 L and node, V_B0 = 20 m/s)",
             max(res14, res15) < 1e-6,
-            "Undamped ball + frame eigenmodes (fem_racket.coupled); V_T, V_R equal eqs 8-9. "
+            "Undamped ball + frame eigenmodes (fem_racket.impact.analytic.coupled); V_T, V_R "
+            "equal eqs 8-9. "
             f"Eq 13 matches the simulated zeta = 0 ball velocity to "
             f"{below(s11['eq13_vs_simulation_max_diff_m_s'], 1e-8)} m/s.",
             "fig11",

@@ -3,8 +3,8 @@
 Solvers hand the :class:`Evaluator` a whole batch (SLSQP's point and its finite-difference
 neighbours, a differential-evolution population, an NSGA-II generation, a Sobol sample). Designs
 already in the :class:`~.history.History` are answered from it; the others are split into chunks
-and run where a sweep runs (:func:`fem_racket.executors.run_chunks`: serial, a local process pool
-or a Dask scheduler), each chunk evaluating its designs in turn.
+and run where a sweep runs (:func:`fem_racket.studies.executors.run_chunks`: serial, a local
+process pool or a Dask scheduler), each chunk evaluating its designs in turn.
 """
 
 from __future__ import annotations

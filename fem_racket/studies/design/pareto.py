@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.extras import require
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
@@ -35,6 +36,7 @@ def pareto_front(
     Returns a :class:`DesignResult` whose ``pareto_x``/``pareto_f`` hold the non-dominated
     feasible designs, best first in the first objective; ``x`` is the one best in it.
     """
+    require("pymoo", "the nsga2 method (a Pareto front)")
     from pymoo.algorithms.moo.nsga2 import NSGA2
     from pymoo.core.callback import Callback
     from pymoo.core.problem import Problem

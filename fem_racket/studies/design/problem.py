@@ -175,6 +175,10 @@ class DesignProblem(ParameterLayout, ProblemDescription):
                 raise InputError(
                     f"{v.name} bounds = [{v.low}, {v.high}] {v.unit} are not allowed: need {need}"
                 )
+            declared = {p.name: p for p in getattr(self.law, "declared", ())}
+            name = {"k_s": "string_stiffness", "k_3": "string_cubic"}.get(v.name, "")
+            for bound in (v.low, v.high) if name in declared else ():
+                declared[name].check(bound, f"{v.name} bound")  # the law's own bounds
         self.mesh(self.x_start)  # checks the added masses' positions and widths
         if self.shock:
             check_positive("shock window", self.shock_window, "s")

@@ -11,12 +11,13 @@ import numpy as np
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.variables import QUANTITIES
+from fem_racket.studies.views import DesignView
 
 __all__ = ["DesignResult"]
 
 
-@dataclass
-class DesignResult:
+@dataclass(repr=False)
+class DesignResult(DesignView):
     """The outcome of a design study.
 
     Attributes

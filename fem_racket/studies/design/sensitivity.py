@@ -14,9 +14,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fem_racket.extras import require
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.scaling import progress_bar
+from fem_racket.studies.views import SobolView
 from fem_racket.validation import InputError, check_choice, check_integer
 
 __all__ = ["SobolIndices", "sobol_indices"]
@@ -25,8 +27,8 @@ __all__ = ["SobolIndices", "sobol_indices"]
 SLICES = 20
 
 
-@dataclass(frozen=True)
-class SobolIndices:
+@dataclass(frozen=True, repr=False)
+class SobolIndices(SobolView):
     """Sobol indices of one output.
 
     Attributes
@@ -89,6 +91,7 @@ def sobol_indices(
     progress : bool, optional
         Progress bar (designs) on stderr; None: only when stderr is a terminal.
     """
+    require("SALib", "Sobol indices (sensitivity)")
     from SALib.analyze import sobol as analyze
     from SALib.sample import sobol as sample
 

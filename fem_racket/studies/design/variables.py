@@ -25,7 +25,7 @@ QUANTITIES: dict[str, tuple[str, float]] = {
 }
 #: Objectives (maximised): name -> label with units.
 OBJECTIVES: dict[str, str] = {
-    "cor": "mean apparent COR e_A [1]",
+    "cor": "mean apparent COR e_A [-]",
     "ball_speed": "mean ball speed v_out [m/s]",
     "power_region": "power region length [m]",
     "handle_shock": "mean handle shock, RMS grip vibration force [N]",

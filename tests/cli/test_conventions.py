@@ -1,0 +1,122 @@
+"""The CLI style (README, "CLI style") held for every command: this walks each command's parser
+and fails on a departure, so a new command or option that breaks the convention is caught."""
+
+from __future__ import annotations
+
+import argparse
+import inspect
+import re
+
+import pytest
+
+from fem_racket.cli import COMMANDS, build_parser
+from fem_racket.cli.options.lists import _NumberList
+
+
+def _commands() -> dict[str, argparse.ArgumentParser]:
+    parser = build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return dict(sub.choices)
+
+
+PARSERS = _commands()
+#: Integer counts given as a sweep's VALUES: a count has no unit.
+COUNTS = {"elements"}
+
+
+def _options(p: argparse.ArgumentParser) -> list[argparse.Action]:
+    return [a for a in p._actions if a.option_strings and a.help != argparse.SUPPRESS]
+
+
+def _flags(p: argparse.ArgumentParser) -> set[str]:
+    return {s for a in p._actions for s in a.option_strings}
+
+
+def _real_valued(a: argparse.Action) -> bool:
+    """An option taking real numbers: a float, a list of floats, or a sweep's VALUES."""
+    if a.type is float or (isinstance(a.type, _NumberList) and a.type.item is float):
+        return True
+    return a.metavar == "VALUES" and a.dest not in COUNTS
+
+
+def test_the_walk_sees_every_command():
+    assert set(PARSERS) == set(COMMANDS)
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_option_names_are_lower_case_words_joined_by_hyphens(name):
+    for flag in _flags(PARSERS[name]):
+        assert re.fullmatch(r"-[hv]|--[a-z][a-z0-9]*(-[a-z0-9]+)*", flag), f"{name} {flag}"
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_real_valued_options_state_their_unit(name):
+    for a in _options(PARSERS[name]):
+        if _real_valued(a):
+            assert re.search(r"\[[^\]]+\]", a.help), f"{name} {a.option_strings[0]}: no [unit]"
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_dimensionless_is_written_as_a_dash(name):
+    for a in _options(PARSERS[name]):
+        assert "[1]" not in (a.help or "") and "[]" not in (a.help or ""), a.option_strings
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_every_option_states_its_default(name):
+    for a in _options(PARSERS[name]):
+        if a.nargs != 0 and not a.required:
+            assert "default" in a.help, f"{name} {a.option_strings[0]}: no default stated"
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_choices_are_listed_once(name):
+    for a in _options(PARSERS[name]):
+        if a.choices is not None:
+            choices = list(a.choices)
+            assert len(choices) == len(set(choices)), f"{name} {a.option_strings[0]}: {choices}"
+
+
+@pytest.mark.parametrize("name", sorted(set(PARSERS) - {"config"}))
+def test_every_command_that_computes_takes_a_run_file(name):
+    assert "--config" in _flags(PARSERS[name])
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_a_command_with_a_progress_bar_has_quiet_and_no_other_spelling(name):
+    import importlib
+
+    module = importlib.import_module(f"fem_racket.cli.commands.{COMMANDS[name]}")
+    flags = _flags(PARSERS[name])
+    assert not flags & {"--progress", "--no-progress"}
+    if "progress_of(" in inspect.getsource(module):
+        assert "--quiet" in flags, f"{name} shows a progress bar without --quiet"
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_out_goes_with_overwrite(name):
+    flags = _flags(PARSERS[name])
+    if flags & {"--out", "--csv", "--plot"}:
+        assert "--overwrite" in flags, name
+    if "--overwrite" in flags:
+        assert flags & {"--out", "--csv", "--plot"}, name
+
+
+@pytest.mark.parametrize("name", sorted(PARSERS))
+def test_a_list_takes_the_singular_and_the_plural(name):
+    # map --positions, sweep --position, refine both: whichever a command takes several values
+    # of, both spellings work.
+    for a in _options(PARSERS[name]):
+        several = a.metavar == "VALUES" or a.nargs in ("+", "*")
+        for one, many in (("--position", "--positions"), ("--speed", "--speeds")):
+            if several and {one, many} & set(a.option_strings):
+                assert {one, many} <= set(a.option_strings), f"{name} {a.option_strings}"
+
+
+def test_the_walk_fails_on_a_departure():
+    # The checks themselves: a float option without a unit, a duplicated choice.
+    p = argparse.ArgumentParser()
+    bad = p.add_argument("--speed", type=float, default=1.0, help="speed (default 1)")
+    twice = p.add_argument("--solver", choices=["a", "a"], default="a", help="(default a)")
+    assert _real_valued(bad) and not re.search(r"\[[^\]]+\]", bad.help)
+    assert len(list(twice.choices)) != len(set(twice.choices))
