@@ -1,8 +1,9 @@
 """Oblique impacts over a grid of incidence angle, incoming spin and friction.
 
 Each incidence angle sets one normal speed V cos(angle), so its normal impact
-(:func:`fem_racket.impact.oblique.normal_impact`) is computed once and every spin and friction
-at that angle marches only the tangential contact over its force history (milliseconds each).
+(:func:`fem_racket.impact.simulate_oblique.normal_impact`) is computed once and every spin and
+friction at that angle marches only the tangential contact over its force history (milliseconds
+each).
 """
 
 from __future__ import annotations
@@ -89,7 +90,8 @@ def oblique_sweep(
     clamped : bool
         A clamped head instead of the free racket.
     **kwargs
-        The normal impact's other arguments (:func:`fem_racket.impact.oblique.normal_impact`).
+        The normal impact's other arguments
+        (:func:`fem_racket.impact.simulate_oblique.normal_impact`).
     """
     base = Incidence() if base is None else base
     a = _axis("angles", angles)

@@ -1,6 +1,6 @@
 """The oblique impact's options of ``fem-racket simulate`` (``--angle``, ``--spin``,
 ``--friction``, ..., ``--clamped``, ``--face-angle``, ``--path-angle``): the run they ask for
-(:func:`fem_racket.impact.oblique.simulate_oblique` or
+(:func:`fem_racket.impact.simulate_oblique.simulate_oblique` or
 :func:`fem_racket.impact.oblique_stroke.simulate_stroke`), its histories and its printed rows.
 
 Without any of these options ``simulate`` runs today's head-on impact, unchanged.
@@ -48,14 +48,14 @@ OBLIQUE_OPTIONS = {
     "spin": ("--spin", "spin", "RPM", "incoming spin [rpm]: positive = topspin (the ball's "
              "surface on the strings' side moving backward, the sense of rolling along them), "
              "negative = backspin (default 0)"),
-    "friction": ("--friction", "friction", "MU", "sliding friction ball/strings, >= 0 "
+    "friction": ("--friction", "friction", "MU", "sliding friction ball/strings [-], >= 0 "
                  f"(default {DEFAULT_FRICTION:g}, Cross 2003)"),
     "ball_inertia": ("--ball-inertia", "ball_inertia", "I_OVER_MR2", "ball's moment of inertia "
-                     f"I/(m R^2), 0..2/3 (default {DEFAULT_BALL_INERTIA:g}: a thick shell)"),
+                     f"I/(m R^2) [-], 0..2/3 (default {DEFAULT_BALL_INERTIA:g}: a thick shell)"),
     "ball_radius": ("--ball-radius", "radius", "M", "ball radius R [m] (default "
                     f"{DEFAULT_BALL_RADIUS:g})"),
     "compliance_ratio": ("--compliance-ratio", "compliance_ratio", "ETA2", "normal over "
-                         "tangential contact stiffness eta^2 = k_n/k_t, >= 0 (default "
+                         "tangential contact stiffness eta^2 = k_n/k_t [-], >= 0 (default "
                          f"{DEFAULT_COMPLIANCE_RATIO:g}, an assumption; 0: rigid)"),
 }  # fmt: skip
 
