@@ -3,8 +3,8 @@
 The stroke's geometry (:mod:`fem_racket.impact.stroke`) resolves the horizontal ball and the
 racket's path on the face: the normal impact is the swinging racket's
 (:func:`fem_racket.impact.simulate_oblique.normal_impact`) at ball speed V sin F with the swing
-scaled to its normal part S sin(F - P), and the tangential contact starts from the ball's and the strings'
-speeds along the face (the strings moving with the swing's part S cos(F - P)).
+scaled to its normal part S sin(F - P), and the tangential contact starts from the ball's and
+the strings' speeds along the face (the strings moving with the swing's part S cos(F - P)).
 """
 
 from __future__ import annotations
