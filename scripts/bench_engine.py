@@ -35,7 +35,7 @@ import numpy as np  # noqa: E402
 from fem_racket import FrameModel, impacts, kcb_from_speed, standard_frame  # noqa: E402
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor  # noqa: E402
 from fem_racket.frame.segments import PAPER_EI1  # noqa: E402
-from fem_racket.impact.exact.closed_form import exact_outcome  # noqa: E402
+from fem_racket.impact.exact.outcome import exact_outcome  # noqa: E402
 from fem_racket.impact.system import modal_system  # noqa: E402
 
 FIG13 = (7, 3, 60)

@@ -14,7 +14,8 @@
 # One impact, a sweep, a refinement study, a VTK export for ParaView and a power map with its
 # sweet spots. Run it as a script,
 # `python scripts/tour.py [--quick] [--out DIR]` (about 10 s here, 5 s with `--quick`; it
-# rewrites its own folder, `output/tour/` by default), or open it as a notebook:
+# rewrites its own folder, the repository's `output/tour/` by default, from wherever it runs),
+# or open it as a notebook:
 # `jupytext --to notebook scripts/tour.py` (each `# %%` is a cell).
 
 # %%
@@ -28,9 +29,13 @@ ap = argparse.ArgumentParser(
     description="A tour of fem_racket.", epilog="Run time here: ~10 s; --quick ~5 s."
 )
 ap.add_argument("--quick", action="store_true", help="smaller sweep and refinement (~5 s)")
-ap.add_argument("--out", default="output/tour", metavar="DIR", help="output folder")
+ap.add_argument("--out", default=None, metavar="DIR", help="output folder (output/tour)")
 args, _ = ap.parse_known_args()  # a notebook kernel passes its own arguments
-OUT = Path(args.out)
+# The repository's output/ (ignored by git) whether run from its root or, as a notebook, from
+# scripts/: the first folder up holding pyproject.toml.
+here = Path.cwd().resolve()
+root = next((p for p in (here, *here.parents) if (p / "pyproject.toml").is_file()), here)
+OUT = Path(args.out) if args.out else root / "output" / "tour"
 
 # %% [markdown]
 # ## 1. One impact
@@ -55,7 +60,8 @@ print("contact force at t = 0 and t_c:", ds.contact_force.values[[0, -1]].round(
 
 # %%
 ax = fr.plot_impact(r, "force")
-fr.save_figure(ax.figure, OUT / "force.png", provenance({"tour": "force"}), overwrite=True)
+path = fr.save_figure(ax.figure, OUT / "force.png", provenance({"tour": "force"}), overwrite=True)
+print(f"wrote {path}")
 
 # %% [markdown]
 # ## 2. A sweep
@@ -72,7 +78,8 @@ print(cor.assign_coords(position=cor.position.round(3)).round(4).to_series().to_
 
 # %%
 ax = fr.plot_sweep(ds.cor, "ei1", hue="position")
-fr.save_figure(ax.figure, OUT / "sweep.png", provenance({"tour": "sweep"}), overwrite=True)
+path = fr.save_figure(ax.figure, OUT / "sweep.png", provenance({"tour": "sweep"}), overwrite=True)
+print(f"wrote {path}")
 
 # %% [markdown]
 # ## 3. A refinement study
@@ -88,7 +95,8 @@ print(study.to_xarray().cor.round(6).to_pandas().to_string())
 
 # %%
 ax = fr.plot_refinement(study, "frequency")
-fr.save_figure(ax.figure, OUT / "refine.png", provenance({"tour": "refine"}), overwrite=True)
+path = fr.save_figure(ax.figure, OUT / "refine.png", provenance({"tour": "refine"}), overwrite=True)
+print(f"wrote {path}")
 
 # %% [markdown]
 # ## 4. A VTK export

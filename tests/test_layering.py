@@ -1,8 +1,8 @@
-"""The layering: data flows one way, frame/contact -> impact -> studies -> io -> paper -> cli.
+"""The layering, one way: frame/contact/strings -> impact -> studies -> io -> paper -> cli.
 
 Reads the imports of every module with :mod:`ast` (module level, inside functions and under
 ``TYPE_CHECKING`` alike) and fails on an import from a higher layer into a lower one, on an import
-between the two lowest folders (frame and contact are independent), and on any import cycle
+between the lowest folders (frame, contact and strings are independent), and on any import cycle
 between modules.
 """
 
@@ -26,6 +26,7 @@ LAYERS = {
     "extras": 0,
     "frame": 1,
     "contact": 1,
+    "strings": 1,
     "impact": 2,
     "studies": 3,
     "io": 4,
@@ -80,7 +81,9 @@ def test_no_upward_import(module):
         there = part(target)
         assert LAYERS[there] <= LAYERS[here], f"{module} imports {target} from a higher layer"
         if LAYERS[here] == LAYERS[there] == 1:
-            assert there == here, f"{module} imports {target}: frame and contact are independent"
+            assert there == here, (
+                f"{module} imports {target}: frame, contact and strings are independent"
+            )
 
 
 def test_no_import_cycle():
@@ -136,6 +139,9 @@ IMPACT_TOP = {
     "simulate_linear",
     "simulate_oblique",
     "solvers",
+    "strung_exact",
+    "strung_impact",
+    "strung_solve",
 }
 
 

@@ -27,7 +27,8 @@ the rigid (Routh) tangential contact: the ball slides until it rolls, then rolls
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Any
 
 from fem_racket.validation import InputError, check_finite, check_positive, check_range, show
 
@@ -38,6 +39,8 @@ __all__ = [
     "DEFAULT_FRICTION",
     "Incidence",
     "RPM",
+    "check_incidence",
+    "head_on",
 ]
 
 #: I / (m R^2) of a tennis ball (uniform shell, R = 33 mm, wall 3.3 mm: 0.605; range 0.55-0.67).
@@ -125,3 +128,26 @@ class Incidence:
             "ball_radius_m": self.radius,
             "compliance_ratio_eta2": self.compliance_ratio,
         }
+
+
+def check_incidence(incidence: object, refused: bool) -> None:
+    """Refuse an ``incidence`` that is not an :class:`Incidence` (or None: head-on), or any on
+    a racket the oblique impact does not take (``refused``: held in a hand, or strung)."""
+    if incidence is None:
+        return
+    if not isinstance(incidence, Incidence):
+        raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence or None")
+    if refused:
+        raise InputError(
+            "incidence is not allowed with a hand or a string bed: the oblique impact takes a "
+            "free racket with the lumped ball/string law"
+        )
+
+
+def head_on(problem: Any) -> Any:
+    """The normal impact of an oblique :class:`~fem_racket.impact.problem.ImpactProblem`: the
+    ball at V cos(angle), without incidence (``problem`` itself when it is head-on)."""
+    if problem.incidence is None:
+        return problem
+    v_n = problem.incidence.components(problem.impact.speed)[0]
+    return replace(problem, impact=replace(problem.impact, speed=v_n), incidence=None)

@@ -38,6 +38,7 @@ __all__ = [
     "LawRun",
     "law_histories",
     "modal_velocity",
+    "ode_state_at",
     "receptance",
     "solve_law_impact",
 ]
@@ -52,8 +53,8 @@ def receptance(
     """The frame's modal shapes at impact points ``positions`` (x/L), one case each."""
     fm = model.modes(modes)
     pos = np.atleast_1d(np.asarray(positions, dtype=float))
-    G = np.column_stack([model.fe.point_vector(p * model.mesh.length) for p in pos])
-    a = (fm.all_shapes.T @ G).T
+    # point by point, so a point's values do not depend on the others asked with it
+    a = np.array([fm.all_shapes.T @ model.fe.point_vector(p * model.mesh.length) for p in pos])
     mb = np.broadcast_to(np.asarray(ball_mass, dtype=float), pos.shape).copy()
     return Receptance(fm.omega, a[:, 2:], a[:, :2], mb)
 
@@ -184,7 +185,7 @@ def run_law(
         ) from None
 
 
-def _state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
+def ode_state_at(law: ContactLaw, out: GeneralOutcome, t: np.ndarray) -> np.ndarray:
     """An ODE state at times ``t``: cubic Hermite through its nodal values and rates [m]."""
     from fem_racket.impact.general.step import hermite_value
 
@@ -303,5 +304,5 @@ def solve_law_impact(
     if law.state == "memory":
         z = _memory_at(out, t, x[:, 0] - x[:, 1:] @ a, v[:, 0] - v[:, 1:] @ a)
     elif law.state == "ode":
-        z = _state_at(law, out, t)
+        z = ode_state_at(law, out, t)
     return LawRun(t, x[:, 0], v[:, 0], x[:, 1:], v[:, 1:], z, float(out.peak_force[0]))

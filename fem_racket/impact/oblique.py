@@ -1,7 +1,7 @@
 """An oblique, spinning ball on the racket: :func:`solve_oblique` -> :class:`ObliqueResult`.
 
 The normal impact is today's, at the normal speed V cos(angle): any contact law, any solver, on
-the free racket (:meth:`ImpactProblem.head_on`, solved by the solver the problem was given to)
+the free racket (:func:`fem_racket.impact.incidence.head_on`, solved by the problem's solver)
 or on a clamped head (:func:`clamped_normal`: eqs 1-3 in closed form, the paper's linear law).
 The tangential contact (:mod:`fem_racket.impact.tangential`) is then marched over its normal
 force history, with the racket's tangential effective mass: the free racket recoils along its
@@ -26,7 +26,7 @@ import numpy as np
 
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.impact.analytic.rigid import ClampedImpact, clamped_impact
-from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence import Incidence, head_on
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, SampledNormal
@@ -192,8 +192,8 @@ def free_normal(result: ImpactResult) -> NormalImpact:
 def solve_oblique(solver: Any, problem: ImpactProblem) -> ObliqueResult:
     """Solve an oblique ``problem`` with ``solver`` (a :class:`~fem_racket.impact.solvers.Solver`,
     which calls this for a problem with an incidence): its normal impact
-    (:meth:`ImpactProblem.head_on`), then the tangential contact over it."""
-    normal = free_normal(solver.solve(problem.head_on()))
+    (:func:`fem_racket.impact.incidence.head_on`), then the tangential contact over it."""
+    normal = free_normal(solver.solve(head_on(problem)))
     return oblique_on(normal, problem.incidence, problem.impact.speed)
 
 

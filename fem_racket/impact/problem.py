@@ -10,9 +10,10 @@ An impact problem states everything about one impact that does not depend on how
   ``zeta`` or the clamped COR 0.83, eqs 1-4) or any :class:`~fem_racket.contact.law.ContactLaw`;
 - the end of contact for the paper's law (``separation``; any other law brings its own);
 - the racket's motion before impact: a rigid swing, or initial velocities of its modes;
-- an oblique, spinning ball (:class:`~fem_racket.impact.incidence.Incidence`; None: head-on):
-  the solvers solve the normal impact at V cos(angle) (:meth:`ImpactProblem.head_on`) and the
-  tangential contact is marched over it (:mod:`fem_racket.impact.oblique`).
+- the string bed (``strings``, a :class:`~fem_racket.strings.bed.StringBed`): None keeps the
+  paper's lumped K_CB; a bed replaces it, and ``law`` is then the ball's own law (the
+  ``kawazoe-1997-ball`` when None), acting on the bed (:mod:`fem_racket.impact.strung`);
+- an oblique, spinning ball (``incidence``; None: head-on; :mod:`fem_racket.impact.oblique`).
 
 It is immutable and validated once, when made; a field that does not apply to the rest of the
 problem (K_CB under a nonlinear law, a hand with a nonlinear law) is refused in one line, never
@@ -30,9 +31,11 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence import Incidence, check_incidence
 from fem_racket.impact.model_cache import frame_model
+from fem_racket.impact.strung import check_strung_problem, kawazoe_ball
 from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.strings.bed import StringBed
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -124,9 +127,11 @@ class ImpactProblem:
     frame_velocity : (v, omega) or array or None
         Initial racket motion as the centre of gravity's speed and the turning rate, or the
         free-free modes' velocities (:func:`fem_racket.impact.law_impact.modal_velocity`).
+    strings : StringBed or None
+        The string bed; None: the paper's lumped K_CB (unchanged). With a bed the racket is
+        free and at rest, K_CB and zeta do not apply, and ``law`` is the ball's own law.
     incidence : Incidence or None
-        An oblique, spinning ball (angle from the face normal, spin, friction, ...); ``impact``
-        then gives its full speed. None: head-on, without spin.
+        An oblique, spinning ball; ``impact`` gives its full speed. None: head-on, no spin.
     """
 
     structure: FrameModel | HeldRacket
@@ -138,6 +143,7 @@ class ImpactProblem:
     separation: str | None = None
     swing: Swing | None = None
     frame_velocity: Any = None
+    strings: StringBed | None = None
     incidence: Incidence | None = None
 
     def __post_init__(self) -> None:
@@ -158,26 +164,15 @@ class ImpactProblem:
             raise InputError("swing and frame_velocity cannot be combined: give one")
         if self.held:
             self._check_held()
-        if self.incidence is not None:
-            self._check_incidence()
+        if self.strings is not None:
+            check_strung_problem(self)
+        check_incidence(self.incidence, self.held or self.strings is not None)
 
-    def _check_incidence(self) -> None:
-        if not isinstance(self.incidence, Incidence):
-            raise InputError(
-                f"incidence = {self.incidence!r} is not allowed: must be an Incidence or None"
-            )
-        if self.held:
-            raise InputError(
-                "incidence is not allowed with a hand: the oblique impact takes a free racket"
-            )
-
-    def head_on(self) -> ImpactProblem:
-        """The normal impact of an oblique one: the ball at V cos(angle), without incidence
-        (``self`` when head-on already)."""
-        if self.incidence is None:
-            return self
-        v_n = self.incidence.components(self.impact.speed)[0]
-        return replace(self, impact=Impact(self.impact.position, v_n), incidence=None)
+    def ball_law(self) -> ContactLaw:
+        """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""
+        if self.law is not None:
+            return self.law
+        return kawazoe_ball(self.ball.mass, self.separation or "displacement")
 
     def _check_law(self) -> None:
         if not isinstance(self.law, ContactLaw):
@@ -283,16 +278,22 @@ class ImpactProblem:
     def __repr__(self) -> str:
         where = "held" if self.held else "free"
         law = "linear (paper)" if self.law is None else self.law.name
+        if self.strings is not None and self.law is None:
+            law = "kawazoe-1997-ball"
         motion = "at rest"
         if self.swing is not None:
             motion = f"swinging {self.racket_speed:.3g} m/s"
         elif self.frame_velocity is not None:
             motion = "moving"
-        oblique = ""
-        if self.incidence is not None:
-            oblique = f"; {self.incidence.angle:.4g} deg, {self.incidence.spin:.4g} rpm"
+        bed = (
+            ""
+            if self.strings is None
+            else f"; strings {self.strings.pattern} at " + (f"{self.strings.tension_n:.4g} N")
+        )
+        if self.incidence is not None:  # oblique
+            bed += f"; {self.incidence.angle:.4g} deg, {self.incidence.spin:.4g} rpm"
         return (
             f"ImpactProblem({where} frame, {self.model.mesh.n_elements} elements; "
             f"x = {self.impact.position:.4g} L, {self.impact.speed:.4g} m/s; "
-            f"ball {self.ball.mass:.4g} kg; law {law}; {motion}{oblique})"
+            f"ball {self.ball.mass:.4g} kg; law {law}; {motion}{bed})"
         )

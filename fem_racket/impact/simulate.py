@@ -36,6 +36,7 @@ PROBLEM_OPTIONS = (
     "frame_velocity",
     "hand",
     "shock_window",
+    "strings",
     "elements",
     "incidence",
 )
@@ -58,8 +59,10 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
         paper's, or "force"; the paper's law only), ``swing`` (a Swing) or ``frame_velocity``
         ((v [m/s], omega [rad/s]) of the centre of gravity, or the modes' velocities), ``hand``
         (a Hand: the racket held on its grip; returns a HeldRun) and ``shock_window`` [s],
-        ``elements`` (cells when meshing a Frame; 20), ``incidence`` (an Incidence: an oblique,
-        spinning ball at ``speed``; returns an ObliqueResult, :mod:`fem_racket.impact.oblique`).
+        ``strings`` (a StringBed: the string bed replaces the lumped K_CB, ``law`` is the
+        ball's own; returns a StrungImpact), ``elements`` (cells when meshing a Frame; 20),
+        ``incidence`` (an Incidence: an oblique, spinning ball at ``speed``; returns an
+        ObliqueResult, :mod:`fem_racket.impact.oblique`).
         The solver: ``solver`` ("auto" (default), "exact", "general", "cvode", "bdf") and its
         options ``tolerance`` (COR tolerance choosing modes and steps; 1e-6), ``modes``
         (flexible modes kept; 80), ``basis`` ("modal" or "physical", BDF only),
@@ -70,7 +73,8 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
     Returns
     -------
     ImpactResult
-        (a :class:`~fem_racket.impact.held.run.HeldRun` for a hand-held racket)
+        (a :class:`~fem_racket.impact.held.run.HeldRun` for a hand-held racket, a
+        :class:`~fem_racket.impact.strung_impact.StrungImpact` with a string bed)
     """
     known = (*PROBLEM_OPTIONS, "solver", *SolverOptions.names())
     for key in options:

@@ -33,6 +33,7 @@ from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.settings import DEFAULTS, SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
 from fem_racket.impact.simulate_linear import simulate_linear
+from fem_racket.impact.strung_solve import check_strung, solve_strung
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "make_solver"]
@@ -89,6 +90,9 @@ class Solver:
 
     def check(self, problem: ImpactProblem) -> None:
         """Refuse, in one line, a problem (or an option for it) this solver cannot do."""
+        if problem.strings is not None:
+            check_strung(problem, self.name, self.options)
+            return
         if problem.held:
             self._refuse_options(
                 self.held_refuses,
@@ -97,7 +101,8 @@ class Solver:
             )
 
     def solve(self, problem: ImpactProblem) -> Any:
-        """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket)."""
+        """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
+        StrungImpact with a string bed)."""
         self.check(problem)
         return self._outcome(problem)
 
@@ -168,9 +173,12 @@ class ExactSolver(Solver):
 
     def check(self, problem: ImpactProblem) -> None:
         super().check(problem)
-        self._refuse_law(problem)
+        if problem.strings is None:
+            self._refuse_law(problem)
 
     def _solve(self, problem: ImpactProblem) -> Any:
+        if problem.strings is not None:
+            return solve_strung(problem, self.name, self.options)
         if problem.held:
             return self._held(problem)
         return simulate_linear(problem, "exact", self.options.settings())
@@ -183,12 +191,16 @@ class GeneralSolver(Solver):
     takes = ("tolerance", "output_step", "t_max")
 
     def check(self, problem: ImpactProblem) -> None:
-        if problem.held:
+        if problem.strings is not None:
+            check_strung(problem, self.name, self.options)
+        elif problem.held:
             raise InputError(
                 "solver = 'general' is not allowed with a hand: must be one of exact, cvode, bdf"
             )
 
     def _solve(self, problem: ImpactProblem) -> Any:
+        if problem.strings is not None:
+            return solve_strung(problem, self.name, self.options)
         return simulate_law(problem, "general", self.options.settings())
 
 
@@ -201,6 +213,8 @@ class _OdeSolver(Solver):
 
     def check(self, problem: ImpactProblem) -> None:
         super().check(problem)
+        if problem.strings is not None:
+            return
         if problem.held:
             self._refuse_options(("tolerance",), "with a hand: it integrates every DOF")
         elif not problem.linear or problem.frame_velocity is not None:
@@ -211,6 +225,8 @@ class _OdeSolver(Solver):
             )
 
     def _solve(self, problem: ImpactProblem) -> Any:
+        if problem.strings is not None:
+            return solve_strung(problem, self.name, self.options)
         if problem.held:
             return self._held(problem)
         s = self.options.settings()
@@ -232,7 +248,7 @@ class BdfSolver(_OdeSolver):
 
     def check(self, problem: ImpactProblem) -> None:
         super().check(problem)
-        self._refuse_law(problem)
+        self._refuse_law(problem)  # (a string bed is refused by check_strung)
 
 
 #: The solvers by name.
@@ -255,7 +271,10 @@ class AutoSolver(Solver):
 
     def pick(self, problem: ImpactProblem) -> Solver:
         """The solver this one stands for on ``problem``."""
-        name = auto_method(problem.linear and problem.frame_velocity is None)
+        linear = problem.linear
+        if problem.strings is not None:  # the ball's own law on the bed
+            linear = problem.ball_law().name == "linear"
+        name = auto_method(linear and problem.frame_velocity is None)
         try:
             return SOLVERS[name](**self.options.given())
         except InputError as err:

@@ -20,6 +20,8 @@ from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.strings.bed import EDGES, parse_pattern
+from fem_racket.strings.materials import STRINGS
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -128,6 +130,13 @@ def _segments(name: str, value: Any) -> tuple[Segment, ...]:
     return tuple(out)
 
 
+def _pattern(name: str, value: Any) -> str:
+    if not isinstance(value, str):
+        raise InputError(f'{name} = {show(value)} is not allowed: must be a string like "16x19"')
+    parse_pattern(value, name)  # raises, naming the key
+    return value
+
+
 def _declared(p: LawParameter) -> Callable[[str, Any], float]:
     """The check of a law parameter's key: its declared bounds."""
     return _number(p.si_unit, lambda name, value, unit: p.check(value, name))
@@ -176,6 +185,15 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         ),
         "inertia_kg_m2": Key(_positive("kg m^2"), "hand_inertia", "hand inertia about its centre"),
         "shock_window_s": Key(_positive("s"), "hand_shock_window", "window of the shock measures"),
+    },
+    "strings": {  # any key replaces the lumped K_CB by the string bed (simulate)
+        "tension_n": Key(_positive("N"), "string_tension", "tension per string"),
+        "pattern": Key(_pattern, "pattern", "string pattern MAINSxCROSSES, e.g. 16x19"),
+        "head_area_cm2": Key(_positive("cm^2"), "head_area", "string-bed area"),
+        "head_length_m": Key(_positive("m"), "head_length", "string-bed length along the racket"),
+        "head_width_m": Key(_positive("m"), "head_width", "string-bed width across the racket"),
+        "string": Key(_choice(tuple(STRINGS)), "string_material", "string material"),
+        "edge": Key(_choice(EDGES), "bed_edge", "head ring follows the frame: point or hoop"),
     },
     "solver": {
         "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),

@@ -30,7 +30,7 @@ from fem_racket.progress import progress_bar
 if TYPE_CHECKING:
     from fem_racket.impact.simulate import ImpactResult
 
-__all__ = ["PROVENANCE_NAME", "PVD_NAME", "write_vtk_series"]
+__all__ = ["PROVENANCE_NAME", "PVD_NAME", "write_pvd", "write_vtk_series", "write_vtu"]
 
 log = logging.getLogger(__name__)
 
@@ -38,7 +38,7 @@ PVD_NAME = "impact.pvd"
 PROVENANCE_NAME = "provenance.json"
 
 
-def _write_vtu(grid: Any, path: Path) -> None:
+def write_vtu(grid: Any, path: Path) -> None:
     """Write ``grid`` (a pyvista UnstructuredGrid) as ``.vtu`` through Python (see above)."""
     from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
 
@@ -52,7 +52,7 @@ def _write_vtu(grid: Any, path: Path) -> None:
     path.write_bytes(writer.GetOutputString().encode("ascii"))
 
 
-def _write_pvd(path: Path, entries: list[tuple[float, int, str, str]]) -> None:
+def write_pvd(path: Path, entries: list[tuple[float, int, str, str]]) -> None:
     """The ParaView collection: one ``DataSet`` per (time [s], part, name, file)."""
     root = ET.Element("VTKFile", type="Collection", version="1.0", byte_order="LittleEndian")
     coll = ET.SubElement(root, "Collection")
@@ -125,13 +125,13 @@ def write_vtk_series(
             if field in series.cell_fields:  # readers colour by the active point scalars first
                 frame.point_data.active_scalars_name = None
             frame.set_active_scalars(field)
-            _write_vtu(frame, tmp / f"frame_{i:04d}.vtu")
-            _write_vtu(series.ball_grid(i), tmp / f"ball_{i:04d}.vtu")
+            write_vtu(frame, tmp / f"frame_{i:04d}.vtu")
+            write_vtu(series.ball_grid(i), tmp / f"ball_{i:04d}.vtu")
             entries += [
                 (series.t[i], 0, "frame", f"frame_{i:04d}.vtu"),
                 (series.t[i], 1, "ball", f"ball_{i:04d}.vtu"),
             ]
-        _write_pvd(tmp / PVD_NAME, entries)
+        write_pvd(tmp / PVD_NAME, entries)
         (tmp / PROVENANCE_NAME).write_text(json.dumps(meta, indent=2) + "\n")
     log.info("wrote %d steps to %s", series.n_steps, folder)
     return Path(folder) / PVD_NAME

@@ -1,10 +1,12 @@
-"""Sweep cases under a contact law, batched per frame through the general integrator.
+"""Sweep cases under a contact law: a chunk of cases, whatever their frames, in one batch.
 
-The cases of a chunk that share a frame (mesh, EI scaling) run as one batch of
-:func:`fem_racket.impact.general.integrator.solve_general`: positions, speeds, ball masses and the
-law's parameters (:mod:`fem_racket.studies.law_axes`) as arrays of one value per case, which is what
-makes the general integrator cheap per impact (``scripts/bench_laws.py``). Inside the batch the
-integrator groups cases by their estimated contact time, each group with its own step.
+The cases of a chunk run as one batch of
+:func:`fem_racket.impact.general.integrator.solve_general`: each case's frame (mesh, EI
+scaling) at its impact point (:func:`fem_racket.impact.general.batches.stack_receptances`),
+positions, speeds, ball masses and the law's parameters (:mod:`fem_racket.studies.law_axes`)
+as arrays of one value per case, which is what makes the general integrator cheap per impact
+(``scripts/bench_kernels.py``). Every case has its own step and modes, so its result does not
+depend on the chunk (nor on the backend or a resume).
 
 **A swinging racket.** The free frame is linear, so its motion is the rigid swing (the point x
 moving towards the ball at s(x) = v + omega x, :mod:`fem_racket.impact.swing`) plus the
@@ -36,6 +38,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.impact.general.batches import stack_receptances
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
@@ -58,8 +61,11 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
     :func:`fem_racket.simulate` reports under a law).
 
     ``model_of(spec, elements, ei1, ei_factor) -> (key, FrameModel)`` gives each case's frame
-    (cached by the caller). A batch that fails (no separation within its time limit, or a
-    diverging Newton iteration) gives NaN for its cases, with a warning.
+    (cached by the caller). Every case of the chunk, whatever its frame, goes to one call of
+    the general integrator at the sweep's COR tolerance; each case is computed on its own (its
+    frame, its step), so its result does not depend on the chunk it is in. A case the
+    integrator cannot vouch for, or whose ball does not separate within its time limit, gives
+    NaN, with a warning.
     """
     cases = [spec.case(int(i)) for i in chunk]
     groups: dict[tuple, list[int]] = {}
@@ -68,29 +74,40 @@ def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]
         key, model = model_of(spec, p["elements"], p["ei1"], p["ei_factor"])
         groups.setdefault(key, []).append(row)
         models[key] = model
-    out = np.full((len(cases), 7), np.nan)
+    order = np.array([r for rows in groups.values() for r in rows])
+    frame = [models[k] for k, rows in groups.items() for _ in rows]  # in the order of ``order``
+    parts = []
     for key, rows in groups.items():
-        model = models[key]
-        length = model.mesh.length
-        pos = np.array([cases[r]["position"] for r in rows])
-        speed = np.array([cases[r]["speed"] for r in rows])
         mass = np.array([cases[r]["ball_mass"] for r in rows])
-        swings = [case_swing(cases[r], length) for r in rows]
-        v_r = np.array([sw.speed_at(x * length) for sw, x in zip(swings, pos, strict=True)])
-        closing = np.array([closing_speed(v, w) for v, w in zip(speed, v_r, strict=True)])
-        named = {k: [cases[r][k] for r in rows] for k in LAW_PARAMETERS if k in spec.values}
-        law = spec.case_law(named, len(rows))
-        rec = receptance(model, pos, mass)
-        try:
-            o = solve_general(law, rec, closing)
-        except (NoSeparationError, RuntimeError) as exc:
-            log.warning("%d cases failed (NaN in the results): %s", len(rows), exc)
-            continue
-        e_a = -o.ball_velocity / closing
-        out[rows, 0] = e_a
-        out[rows, 1] = o.contact_time
-        out[rows, 2] = ball_speed_out(e_a, speed, v_r)
-        out[rows, 3] = o.peak_force
-        out[rows, 5] = v_r
-        out[rows, 6] = rec.omega.size
+        parts.append(receptance(models[key], [cases[r]["position"] for r in rows], mass))
+    rec = stack_receptances(parts)
+    length = np.array([m.mesh.length for m in frame])
+    swings = [case_swing(cases[r], ln) for r, ln in zip(order, length, strict=True)]
+    pos = np.array([cases[r]["position"] for r in order])
+    speed = np.array([cases[r]["speed"] for r in order])
+    v_r = np.array([sw.speed_at(x * ln) for sw, x, ln in zip(swings, pos, length, strict=True)])
+    closing = np.array([closing_speed(v, w) for v, w in zip(speed, v_r, strict=True)])
+    named = {k: [cases[r][k] for r in order] for k in LAW_PARAMETERS if k in spec.values}
+    law = spec.case_law(named, len(order))
+    out = np.full((len(cases), 7), np.nan)
+    try:
+        o = solve_general(law, rec, closing, tolerance=spec.tolerance, refused="nan")
+    except (NoSeparationError, RuntimeError) as exc:
+        log.warning("%d cases failed (NaN in the results): %s", len(cases), exc)
+        return out
+    bad = int(np.sum(~np.isfinite(o.ball_velocity)))
+    if bad:
+        log.warning(
+            "%d cases could not be computed within tolerance %s or did not separate (NaN in "
+            "the results)",
+            bad,
+            spec.tolerance,
+        )
+    e_a = -o.ball_velocity / closing
+    out[order, 0] = e_a
+    out[order, 1] = o.contact_time
+    out[order, 2] = ball_speed_out(e_a, speed, v_r)
+    out[order, 3] = o.peak_force
+    out[order, 5] = v_r
+    out[order, 6] = [m.modes(None).omega.size for m in frame]
     return out

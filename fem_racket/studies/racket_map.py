@@ -82,10 +82,11 @@ def apparent_cor_along(
     speeds : array of float
         Closing speed v_in + v_r at each point [m/s] (sets K_CB unless ``kcb`` is given).
     ball_mass, kcb, zeta, separation, modes, tolerance
-        As for :func:`fem_racket.simulate` (``tolerance``: the batched engine's COR tolerance).
+        As for :func:`fem_racket.simulate` (``tolerance``: the batched engine's COR tolerance,
+        or the general integrator's under a law).
     law : ContactLaw, optional
         A contact law other than the paper's: the general integrator, the law's own end
-        condition (``kcb``, ``zeta``, ``separation``, ``modes`` and ``tolerance`` do not apply).
+        condition (``kcb``, ``zeta``, ``separation`` and ``modes`` do not apply).
     kcb_factor : float
         Factor on the linear law's K_CB (``kcb``, or the paper's K_CB of each closing speed):
         a stiffer or softer string bed, as the design studies vary it.
@@ -99,7 +100,7 @@ def apparent_cor_along(
     x = np.atleast_1d(np.asarray(positions, dtype=float))
     v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
     if law is not None:
-        out = solve_general(law, receptance(model, x, ball_mass), v)
+        out = solve_general(law, receptance(model, x, ball_mass), v, tolerance=tolerance)
         return -out.ball_velocity / v
     if kcb_factor != 1.0:
         check_positive("kcb_factor", kcb_factor, "")

@@ -25,12 +25,13 @@ from typing import Any
 import numpy as np
 
 from fem_racket.frame.continuous import free_free_frequencies
-from fem_racket.frame.mesh import MAX_ELEMENTS, FrameMesh, frame_from_mesh, frame_mesh, graded_mesh
+from fem_racket.frame.mesh import FrameMesh, frame_mesh, graded_mesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.frame.segments import Frame, standard_frame
+from fem_racket.frame.segments import Frame
 from fem_racket.impact.simulate import simulate
 from fem_racket.progress import progress_bar
-from fem_racket.validation import InputError, check_choice, check_integer, check_range, show
+from fem_racket.studies.refine_meshes import refinable
+from fem_racket.validation import InputError, check_choice, check_integer, check_range
 
 __all__ = [
     "DEFAULT_ELEMENTS",
@@ -190,22 +191,6 @@ def _orders(elements: np.ndarray, errors: np.ndarray) -> np.ndarray:
         return np.log(errors[:-1] / errors[1:]) / ratio
 
 
-def _check_elements(elements: Sequence[int]) -> np.ndarray:
-    allowed = f"must be a list of integers from 1 to {MAX_ELEMENTS}"
-    try:
-        counts = [int(n) for n in elements]
-    except (TypeError, ValueError):
-        raise InputError(f"elements = {show(elements)} is not allowed: {allowed}") from None
-    bad = [
-        n
-        for n, e in zip(counts, elements, strict=True)
-        if not 1 <= n <= MAX_ELEMENTS or isinstance(e, bool) or n != e
-    ]
-    if not counts or bad:
-        raise InputError(f"elements = {show(list(elements))} is not allowed: {allowed}")
-    return np.unique(counts)
-
-
 def refinement_study(
     frame: Frame | FrameMesh | None = None,
     elements: Sequence[int] = DEFAULT_ELEMENTS,
@@ -249,27 +234,11 @@ def refinement_study(
         separation).
     """
     check_choice("family", family, FAMILIES)
-    counts = _check_elements(elements)
     check_integer("modes", n_modes)
     pos = np.array([check_range("position", p, 0.0, 1.0, unit="x/L") for p in positions])
     if pos.size == 0:
         raise InputError("positions = [] is not allowed: give at least one impact point")
-    if frame is None:
-        frame = standard_frame()
-    if isinstance(frame, FrameMesh):
-        frame = frame_from_mesh(frame)
-    if not isinstance(frame, Frame):
-        raise InputError(f"frame = {show(frame)} is not allowed: must be a Frame or a FrameMesh")
-    n_seg = len(frame.segments)
-    skipped = tuple(int(n) for n in counts if n < n_seg)
-    if skipped:
-        log.warning("skipping element counts %s: fewer than the %d segments", skipped, n_seg)
-    counts = counts[counts >= n_seg]
-    if counts.size == 0:
-        raise InputError(
-            f"elements = {show(list(elements))} is not allowed: need a count >= {n_seg} "
-            f"(one per segment)"
-        )
+    frame, counts, skipped = refinable(frame, elements)
     exact = free_free_frequencies(frame, n_modes)
     extra = tuple(pos) if impact_nodes else ()
     rows = []

@@ -48,10 +48,11 @@ log = logging.getLogger(__name__)
 SERIAL_BELOW = 20000
 #: Largest chunk of exact impacts (one engine call per frame; also one checkpoint file).
 EXACT_CHUNK = 32768
-#: Chunk of the general integrator's cases (contact laws): fixed, so that every backend and a
-#: resumed run make the same batches (a batch's time step follows its cases, which moves
-#: results at the integrator's error, ~1e-6 in COR).
-LAW_CHUNK = 64
+#: Chunk of the general integrator's cases (contact laws; one compiled call for the chunk,
+#: whatever the cases' frames). Each case has its own step and modes, so its result does not
+#: depend on the chunk; the size is fixed all the same, so every backend and a resumed run
+#: make the same batches and checkpoint files.
+LAW_CHUNK = 512
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:

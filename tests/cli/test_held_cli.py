@@ -11,10 +11,12 @@ from clirun import run as run_cli
 
 from fem_racket.cli.text import significant
 from fem_racket.frame.hand import GRIPS, Hand
+from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.grip import simulate_held
-from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.modal import held_contact
 from fem_racket.impact.held.run import hand_summary
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, contact_peak, grip_peak, vibration_rms
+from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.swing import Swing
 from fem_racket.outputs import json_ready
 
@@ -68,7 +70,9 @@ def test_exact_output_is_the_library_call(capsys, exact, grip):
 
 def test_cvode_output_is_the_library_call(capsys, standard_model):
     hand = GRIPS["firm"]
-    ref = simulate_held(standard_model, hand, position=0.6, speed=30.0, solver="cvode")
+    ref = simulate_held(
+        ImpactProblem.build(standard_model, hand=hand, position=0.6, speed=30.0), solver="cvode"
+    )
     data = run_json(
         capsys, "--grip", "firm", "--solver", "cvode", "--position", "0.6", "--speed", "30"
     )

@@ -133,14 +133,15 @@ def test_an_impact_problem_with_an_incidence_through_the_solvers(exact):
     # ball at V cos(angle)) and then the tangential contact; solve and solve_many agree with
     # simulate_oblique
     from fem_racket.frame.hand import Hand
+    from fem_racket.impact.incidence import head_on
     from fem_racket.impact.problem import ImpactProblem
     from fem_racket.impact.solvers import make_solver
 
     problem = ImpactProblem.build(speed=25.0, incidence=STROKE)
-    head_on = problem.head_on()
-    assert head_on.incidence is None
-    assert head_on.impact.speed == pytest.approx(25.0 * math.cos(math.radians(40.0)), rel=1e-15)
-    assert head_on.head_on() is head_on
+    normal = head_on(problem)
+    assert normal.incidence is None
+    assert normal.impact.speed == pytest.approx(25.0 * math.cos(math.radians(40.0)), rel=1e-15)
+    assert head_on(normal) is normal
     solver = make_solver("exact")
     one = solver.solve(problem).summary()
     (many,) = solver.solve_many([problem])
@@ -148,7 +149,7 @@ def test_an_impact_problem_with_an_incidence_through_the_solvers(exact):
     for key in ("spin_out_rpm", "angle_out_deg", "contact_regime", "cor"):
         assert one[key] == ref[key] == many.summary()[key]
     assert "40 deg, -3820 rpm" in repr(problem)
-    with pytest.raises(InputError, match="^incidence is not allowed with a hand"):
+    with pytest.raises(InputError, match="^incidence is not allowed with a hand or a string bed"):
         ImpactProblem.build(hand=Hand(), incidence=STROKE)
     with pytest.raises(InputError, match="^incidence = 40 is not allowed"):
         ImpactProblem.build(incidence=40)

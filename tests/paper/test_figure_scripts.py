@@ -112,6 +112,15 @@ def test_bench_docs_script_runs(capsys):
     assert "README" in capsys.readouterr().out
 
 
+def test_bench_kernels_script_runs(capsys):
+    # issue 27's benchmark, its accuracy part (one random law per family against CVODE): the
+    # general integrator within its default COR tolerance 1e-6
+    rows = load(SCRIPTS / "bench_kernels.py").main(["--only-accuracy", "--accuracy", "1"])
+    assert [r[0] for r in rows] == ["hunt-crossley", "hysteretic", "series"]
+    assert all(r[1] <= 1e-6 for r in rows)
+    assert "worst |dCOR| vs CVODE" in capsys.readouterr().out
+
+
 def test_bench_laws_script_runs(capsys):
     # the general integrator's benchmark (issue 15) in its quick variant: every law within the
     # 1e-5 COR target against CVODE (DESIGN section 9)

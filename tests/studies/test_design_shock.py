@@ -6,7 +6,8 @@ import pytest
 from fem_racket.contact.presets import get_law
 from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP
 from fem_racket.frame.hermite import assemble_closed_form
-from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.basis import held_basis
+from fem_racket.impact.held.modal import held_contact
 from fem_racket.impact.held.shock import grip_peak, vibration_rms
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator

@@ -86,7 +86,7 @@ def test_a_law_object_takes_overrides_and_the_linear_law_is_unchanged():
 
 
 def test_law_sweeps_give_the_same_numbers_on_every_backend():
-    # fixed chunks of 64 cases under a law (studies/sweep.py LAW_CHUNK): 70 cases, two batches
+    # fixed chunks under a law (studies/sweep.py LAW_CHUNK), each case computed on its own
     kw = dict(law=KAWAZOE, k2=np.geomspace(5e16, 1.5e17, 14), position="0.5:0.9:5", speed=25.0)
     serial = sweep(**kw, backend="serial")
     pool = sweep(**kw, backend="processes", workers=2)
@@ -103,7 +103,7 @@ def test_a_resumed_law_sweep_equals_an_uninterrupted_one(tmp_path):
     kw = dict(k2=np.geomspace(5e16, 1.5e17, 14), position="0.5:0.9:5", speed=25.0)
     run = sweep_result(law=KAWAZOE, **kw, backend="serial", peak_force=True)
     clean = run.to_xarray()
-    # a run killed after its first chunk of 64 cases (studies/sweep.py LAW_CHUNK)
+    # a run killed after its first 64 cases were saved
     out = tmp_path / "s.nc"
     spec = SweepSpec.build(None, law=KAWAZOE, peak_force=True, **kw)
     ckpt = Checkpoint(out, spec.digest, spec.describe(), spec.size, len(COLUMNS))

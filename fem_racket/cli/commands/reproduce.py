@@ -25,7 +25,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         "provenance); any other existing file needs --overwrite. With --law NAME the figures "
         "are drawn with that contact law instead of the paper's linear K_CB and the report says "
         "which of the paper's conclusions (1)-(4) still hold and how the contact times compare "
-        "with the paper's 6-3 ms. About 15 s here (--law kawazoe-1997-nonlinear: about 20 s).",
+        "with the paper's 6-3 ms. About 15 s on a quiet 2-core machine (--law "
+        "kawazoe-1997-nonlinear: about 20 s), several times that under load.",
     )
     p.add_argument(
         "--out",

@@ -40,6 +40,7 @@ from fem_racket.cli.common import (
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
 from fem_racket.cli.options.output import print_written, write_result_files
+from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
@@ -64,6 +65,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_swing_options(p)
     add_hand_options(p)
     add_oblique_options(p)
+    add_strings_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON object")
     g = add_output_options(
         p,
@@ -218,9 +220,15 @@ def run(args: argparse.Namespace) -> int:
     check_output_step(args.output_step)
     hand = hand_from_args(args)
     files = _check_out(args) if args.out else []
-    incidence = incidence_from_args(args)
+    incidence, strings = incidence_from_args(args), strings_from_args(args)
     if incidence is not None:  # an oblique impact (fem_racket.cli.options.oblique)
+        if strings is not None:
+            raise InputError("a string bed is not allowed with an oblique impact: give one")
         return run_oblique(args, incidence, hand, files)
+    if strings is not None:
+        if hand is not None:
+            raise InputError("a hand is not allowed with a string bed: give one of them")
+        return run_strung(args, strings, build_model(args), files)
     if hand is not None:
         return _run_held(args, hand, files)
     model = build_model(args)

@@ -18,6 +18,7 @@ from fem_racket.cli.common import (
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.strings import add_strings_options, strings_from_args, strung_from_args
 from fem_racket.extras import require
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import InputError
@@ -91,6 +92,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "there); open DIR/impact.pvd in ParaView",
     )
     _add_common(p, scale=1.0, frames=None)
+    add_strings_options(p)
     add_config_option(p, private=("out",))  # a folder, not output.out
     p.set_defaults(func=run_export)
 
@@ -165,6 +167,9 @@ def run_export(args: argparse.Namespace) -> int:
     from fem_racket.io.vtk import write_vtk_series
 
     overwrite = _check_early(args)
+    strings = strings_from_args(args)
+    if strings is not None:
+        return _export_strung(args, strings, overwrite)
     result = _simulate(args)
     pvd = write_vtk_series(
         result,
@@ -176,6 +181,32 @@ def run_export(args: argparse.Namespace) -> int:
         overwrite=overwrite,
         parameters=run_parameters(args),
         progress=progress_of(args),
+    )
+    print_written_folder(pvd.parent, f"open {pvd.name} in ParaView")
+    return 0
+
+
+def _export_strung(args: argparse.Namespace, strings, overwrite: bool) -> int:
+    """The strung racket's series: frame, ball and the bed's surface (part ``strings``); 101
+    steps unless --frames says (its histories have 801 output times)."""
+    from fem_racket.io.strung_vtk import write_strung_vtk
+
+    for dest in ("subdivide", "field"):
+        if dest in getattr(args, "explicit_options", ()):
+            raise InputError(
+                f"--{dest} is not allowed with a string bed: the strung series draws the "
+                "deflection at the frame's nodes and the bed's vertices"
+            )
+    model = build_model(args)
+    result = strung_from_args(args, strings, model)
+    pvd = write_strung_vtk(
+        result,
+        model,
+        args.out,
+        frames=101 if args.frames is None else args.frames,
+        scale=args.scale,
+        overwrite=overwrite,
+        parameters=run_parameters(args),
     )
     print_written_folder(pvd.parent, f"open {pvd.name} in ParaView")
     return 0

@@ -11,16 +11,14 @@ eigenvalues of A (amplitudes from the eigenvectors, ``Z = V diag(V^-1 z0)``), an
 ``F(t) = sum_j f_j exp(lambda_j t)``. The impulse J = int F and its integral P = int J are
 summed in closed form, giving the ball (u_B = V_B0 t - P/m_B) and rigid modes (eta_r = a_r P).
 The separation time is the first sign change of the event function on a fine grid, refined by
-Brent's method on the closed form. :func:`exact_outcome` (for sweeps) gives only t_c, the
-rebound velocity and the peak force (maximised on the closed form); it needs only delta's
-amplitudes, which follow from the eigenvalues as residues of the Laplace transform
-delta(s) = V_B0 / P(s), with no eigenvectors.
+Brent's method on the closed form. Without histories (:mod:`fem_racket.impact.exact.outcome`)
+only delta's amplitudes are needed, which follow from the eigenvalues as residues of the
+Laplace transform delta(s) = V_B0 / P(s), with no eigenvectors.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -34,9 +32,8 @@ from fem_racket.impact.system import (
 from fem_racket.validation import AccuracyError, InputError, check_choice, show
 
 __all__ = [
-    "ImpactOutcome",
     "ModalClosedForm",
-    "exact_outcome",
+    "peak_force",
     "reduced_matrix",
     "separation_time",
     "solve_exact",
@@ -272,32 +269,10 @@ def solve_exact(
     tc = separation_time(cf, separation, system.contact_time_estimate(), t_max)
     t = output_times(output_step, tc)
     x, v = cf.states(t)
-    return Trajectory(t, x, v, _peak_force(cf, tc)[0])
+    return Trajectory(t, x, v, peak_force(cf, tc)[0])
 
 
-@dataclass(frozen=True)
-class ImpactOutcome:
-    """Scalar outcome of one impact, without time histories.
-
-    Attributes
-    ----------
-    contact_time : float
-        t_c [s].
-    rebound_velocity : float
-        Ball velocity at separation [m/s] (negative: rebounding).
-    peak_force : float
-        Largest contact force during contact [N], maximised on the closed form.
-    peak_time : float
-        When it occurs [s].
-    """
-
-    contact_time: float
-    rebound_velocity: float
-    peak_force: float
-    peak_time: float
-
-
-def _peak_force(cf: ModalClosedForm, tc: float) -> tuple[float, float]:
+def peak_force(cf: ModalClosedForm, tc: float) -> tuple[float, float]:
     """Maximum of F on [0, t_c] and its time.
 
     The largest of 257 values on [0, t_c], then of 257 values on the four grid steps around it
@@ -319,20 +294,3 @@ def _peak_force(cf: ModalClosedForm, tc: float) -> tuple[float, float]:
             if f > best:
                 best_t, best = float(t), f
     return best, best_t
-
-
-def exact_outcome(
-    system: CoupledSystem, *, separation: str = "displacement", t_max: float | None = None
-) -> ImpactOutcome:
-    """Contact time, rebound velocity and peak force from the closed form, without histories.
-
-    The same closed form and separation search as :func:`solve_exact` (whose
-    ``output_step=None`` result it matches to round-off), with the contact force's amplitudes
-    from the eigenvalues alone (no eigenvectors), plus the exact maximum of the contact force.
-    """
-    check_choice("separation", separation, SEPARATION_EVENTS)
-    cf = ModalClosedForm(system, histories=False)
-    tc = separation_time(cf, separation, system.contact_time_estimate(), t_max)
-    rebound = cf.v0 - cf.impulse(tc) / cf.mb
-    peak, t_peak = _peak_force(cf, tc)
-    return ImpactOutcome(tc, rebound, peak, t_peak)

@@ -188,7 +188,7 @@ def peak_force(roots: RootSet, fw: np.ndarray, tc: np.ndarray) -> tuple[np.ndarr
 
     Every term on a grid over [0, t_c] of at least 257 points resolving all terms of weight
     >= :data:`SIGNIFICANT`, then 257 points over the four steps around the largest value (as
-    :func:`fem_racket.impact.exact.closed_form.exact_outcome`: steps finer than the high modes'
+    :func:`fem_racket.impact.exact.outcome.exact_outcome`: steps finer than the high modes'
     ripple), then Newton on dF/dt = 0 within the neighbours of the best of those (kept only if
     it improves on it).
     """

@@ -233,26 +233,35 @@ def find_end(law, F, D, V, Z, G, h, first=1, stop=None, where=True):
     return last, frac
 
 
+def _dot(vals: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """sum_r vals[..., r] w[r], term by term in order (no BLAS: the same bits for any batch)."""
+    return sum(vals[..., r] * w[r] for r in range(w.size))
+
+
 def _outcome(F, D, V, Z, last, frac, h, speed, rec, kept) -> GeneralOutcome:
-    """Scalars from the histories: the impulse of the piecewise cubic up to separation."""
+    """Scalars from the histories: the impulse of the piecewise cubic up to separation (``h``:
+    the step, one for all cases or one per case)."""
     ncase, nsteps = F.shape
+    h = np.broadcast_to(np.asarray(h, dtype=float), (ncase,))
     steps = np.zeros((ncase, nsteps - 1))  # int over each whole step
-    for k in (0, 1):
+    for k in (0, 1):  # elementwise sums: a case's bits do not depend on the batch
         vals, off = _stencil_values(F, k)
-        steps[:, k] = h * (vals @ stencil_quadrature(off))
-    qb = h * stencil_quadrature(BACKWARD)
-    steps[:, 2:] = sum(qb[r] * F[:, r : nsteps - 3 + r] for r in range(ORDER))
+        steps[:, k] = h * _dot(vals, stencil_quadrature(off))
+    qb = stencil_quadrature(BACKWARD)
+    steps[:, 2:] = h[:, None] * sum(qb[r] * F[:, r : nsteps - 3 + r] for r in range(ORDER))
     done = np.concatenate([np.zeros((ncase, 1)), np.cumsum(steps, axis=1)], axis=1)
     idx = np.arange(ncase)
     k = last - 1  # the step of separation, integrated up to its fraction
     impulse = done[idx, k].copy()
     powers = np.arange(1, ORDER + 1)[:, None]
-    q = lagrange(BACKWARD) @ (frac[None, :] ** powers / powers)  # (4, C): int_0^frac L_r
+    c = lagrange(BACKWARD)
+    x = frac[None, :] ** powers / powers
+    q = sum(c[:, j : j + 1] * x[j] for j in range(ORDER))  # (4, C): int_0^frac L_r
     ks = np.maximum(k, 2)[:, None] + np.array(BACKWARD)
     impulse += np.where(k >= 2, h * np.sum(F[idx[:, None], ks] * q.T, axis=1), 0.0)
     for i in np.flatnonzero(k < 2):  # separation in a starting step (forward stencil)
         off = step_stencil(int(k[i]))
-        impulse[i] += h * F[i, [k[i] + o for o in off]] @ stencil_quadrature(off, frac[i])
+        impulse[i] += h[i] * _dot(F[i, [k[i] + o for o in off]], stencil_quadrature(off, frac[i]))
     # peak: the parabola through the largest node before separation and its neighbours
     masked = np.where(np.arange(nsteps)[None, :] <= last[:, None], F, -np.inf)
     i = np.clip(np.argmax(masked, axis=1), 1, nsteps - 2)
@@ -265,7 +274,7 @@ def _outcome(F, D, V, Z, last, frac, h, speed, rec, kept) -> GeneralOutcome:
         ball_velocity=speed - impulse / rec.ball_mass,
         impulse=impulse,
         peak_force=peak,
-        step=np.full(ncase, h),
+        step=h.copy(),
         force=F[:, : last.max() + 1],
         deflection=D[:, : last.max() + 1],
         rate=V[:, : last.max() + 1],

@@ -43,8 +43,9 @@ class Receptance:
 
     Attributes
     ----------
-    omega : ndarray, shape (n,)
-        Flexible angular frequencies [rad/s], shared by the batch.
+    omega : ndarray, shape (n,) or (C, n)
+        Flexible angular frequencies [rad/s], shared by the batch or one row per case (a batch
+        spanning frames, :mod:`fem_racket.impact.general.batches`; the compiled march only).
     a : ndarray, shape (C, n)
         Mass-normalised flexible mode shapes at each case's impact point [1/sqrt(kg)].
     rigid : ndarray, shape (C, 2)

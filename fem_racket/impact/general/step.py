@@ -131,12 +131,13 @@ def solve_step(
 
 def per_case(obj: Any, ncase: int, idx: np.ndarray | None = None, column: bool = False) -> Any:
     """A law or receptance with its per-case array fields (first axis ``ncase``; a frame's
-    ``omega`` is shared) cut to the cases ``idx`` and, with ``column``, shaped (C, 1) to
-    broadcast against (C, N) histories."""
+    ``omega`` is shared unless it has a row per case) cut to the cases ``idx`` and, with
+    ``column``, shaped (C, 1) to broadcast against (C, N) histories."""
     cut = {}
     for f in fields(obj):
         value = getattr(obj, f.name)
-        if np.ndim(value) > 0 and np.shape(value)[0] == ncase and f.name != "omega":
+        shared = f.name == "omega" and np.ndim(value) == 1
+        if np.ndim(value) > 0 and np.shape(value)[0] == ncase and not shared:
             value = np.asarray(value) if idx is None else np.asarray(value)[idx]
             cut[f.name] = value[:, None] if column else value
     return replace(obj, **cut) if cut else obj

@@ -20,13 +20,12 @@ from functools import cached_property
 
 import numpy as np
 
-from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.frame.hand import Hand, HeldFrame, held_frame
+from fem_racket.frame.hand import HeldFrame, held_frame
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.ode.integrators import get_solver
-from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.impact.problem import HeldRacket, ImpactProblem
 from fem_racket.impact.system import CoupledSystem, physical_system
-from fem_racket.validation import InputError, check_choice, check_range
+from fem_racket.validation import InputError, check_choice
 
 __all__ = ["HeldImpact", "simulate_held"]
 
@@ -119,49 +118,43 @@ def _rigid_factor(model: FrameModel, held: HeldFrame, x_i: float) -> float:
 
 
 def simulate_held(
-    model: FrameModel,
-    hand: Hand,
+    problem: ImpactProblem,
     *,
-    position: float = 0.75,
-    speed: float = 20.0,
-    ball_mass: float | None = None,
-    kcb: float | None = None,
-    zeta: float | None = None,
     solver: str = "cvode",
     output_step: float = 1e-5,
     rtol: float = 1e-10,
     atol: float = 1e-12,
-    swing: Swing | None = None,
 ) -> HeldImpact:
-    """A ball striking the racket held by ``hand``, at rest or swinging.
+    """A ball striking the racket held in a hand, at rest or swinging, by an integrator.
 
     Parameters
     ----------
-    model : FrameModel
-    hand : Hand
-    position, speed, ball_mass, kcb, zeta, rtol, atol
-        As for :func:`fem_racket.simulate`.
+    problem : ImpactProblem
+        Its structure a :class:`~fem_racket.impact.problem.HeldRacket` (the frame and the hand),
+        the paper's linear law. A swing (:mod:`fem_racket.impact.swing`) moves racket and hand
+        rigidly: the integration starts from its velocity field (the hand moving with the
+        handle), the ball at the problem's speed; K_CB follows the closing speed unless given.
+        The grip layer is not stretched by a rigid motion, so the grip force is that of the
+        racket at rest struck at the closing speed.
     solver : {"cvode", "bdf"}
         The integrator (the exact solver needs modal damping, which the grip is not).
     output_step : float
         Spacing of the output times [s].
-    swing : Swing, optional
-        The rigid motion of racket and hand before impact (:mod:`fem_racket.impact.swing`):
-        the integration starts from its velocity field (the hand moving with the handle), the
-        ball at ``speed``; K_CB follows the closing speed unless given. The grip layer is not
-        stretched by a rigid motion, so the grip force is that of the racket at rest struck at
-        the closing speed.
+    rtol, atol : float
+        Tolerances of the integrator.
 
     Returns
     -------
     HeldImpact
     """
     check_choice("solver", solver, HELD_SOLVERS)
-    pos = check_range("position", position, 0.0, 1.0, unit="x/L")
-    ball = Ball() if ball_mass is None else Ball(ball_mass)
-    x_i = pos * model.mesh.length
-    v_r = 0.0 if swing is None else float(swing.speed_at(x_i))
-    law = LinearContact.for_speed(closing_speed(speed, v_r), kcb=kcb, zeta=zeta)
+    if not isinstance(problem.structure, HeldRacket):
+        raise InputError("simulate_held takes a problem whose structure is a HeldRacket")
+    model, hand = problem.model, problem.structure.hand
+    ball, swing, speed = problem.ball, problem.swing, problem.impact.speed
+    x_i = problem.impact.position * model.mesh.length
+    v_r = problem.racket_speed
+    law = problem.contact()
     if not output_step > 0.0:
         raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
     import scipy.sparse as sp

@@ -23,8 +23,9 @@ from typing import Any
 import numpy as np
 
 from fem_racket.frame.hand import GRIPS, Hand
+from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.grip import HELD_SOLVERS
-from fem_racket.impact.held.modal import held_basis, held_contact
+from fem_racket.impact.held.modal import held_contact
 from fem_racket.impact.held.sampled import history_columns, sampled_impact, shock_grid
 from fem_racket.impact.held.shock import (
     DEFAULT_WINDOW,

@@ -75,11 +75,7 @@ def sampled_impact(problem: ImpactProblem, solver: str, window: float, tolerance
     held = problem.structure
     model, hand = held.model, held.hand
     step, rtol, atol = tolerances.output_step, tolerances.rtol, tolerances.atol
-    r: HeldImpact = simulate_held(
-        model, hand, position=problem.impact.position, speed=problem.impact.speed,
-        ball_mass=problem.ball.mass, kcb=problem.kcb, zeta=problem.zeta, solver=solver,
-        output_step=step, rtol=rtol, atol=atol, swing=problem.swing,
-    )  # fmt: skip
+    r: HeldImpact = simulate_held(problem, solver=solver, output_step=step, rtol=rtol, atol=atol)
     tc = r.contact_time
     if not window > tc:
         raise InputError(

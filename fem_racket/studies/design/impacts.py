@@ -15,7 +15,8 @@ import numpy as np
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.exact.engine import impacts
-from fem_racket.impact.held.modal import held_basis, held_contacts
+from fem_racket.impact.held.basis import held_basis
+from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.shock import grip_peak, vibration_rms
 
 __all__ = ["apparent_cor", "handle_shock"]

@@ -1,7 +1,7 @@
 """The batched engine against the exact per-case path, closed forms and its own tolerance.
 
 Sources: with every mode kept the engine solves the same linear system as
-:func:`fem_racket.impact.exact.closed_form.exact_outcome` (the reference; both are exact up to
+:func:`fem_racket.impact.exact.outcome.exact_outcome` (the reference; both are exact up to
 round-off, measured agreement ~1e-11 in COR and t_c), so they must agree to 1e-9. With a COR
 tolerance the error against every mode must stay within it (the point of the tolerance). A
 ball on a spring-dashpot against a fixed wall (no structure modes, no rigid modes) is eqs 1-4 of
@@ -19,8 +19,8 @@ from hypothesis import strategies as st
 from strategies import frames
 
 from fem_racket import FrameModel, InputError, LinearContact
-from fem_racket.impact.exact.closed_form import exact_outcome
 from fem_racket.impact.exact.engine import impacts, modal_impacts
+from fem_racket.impact.exact.outcome import exact_outcome
 from fem_racket.impact.system import modal_system
 
 #: Impact points between nodes (20 cells: nodes every 0.05 L on a uniform frame).

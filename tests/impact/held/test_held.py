@@ -8,6 +8,7 @@ import pytest
 from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP, Hand, held_frame, held_modes
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.held.grip import simulate_held
+from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.simulate import simulate
 from fem_racket.validation import InputError
 
@@ -46,14 +47,14 @@ def test_rebound_hardly_depends_on_the_hand(model, position):
     # within 0.02 near the string centre (measured: <= 0.0033 at 0.70-0.80 L with either grip).
     free = simulate(model, position=position, output_step=None, tolerance=None).cor
     for hand in (LOOSE_GRIP, FIRM_GRIP):
-        held = simulate_held(model, hand, position=position)
+        held = simulate_held(ImpactProblem.build(model, hand=hand, position=position))
         assert abs(held.cor - free) < 0.02
 
 
 @pytest.mark.slow
 def test_grip_force_is_the_hands_momentum(model):
     # Nothing but the grip acts on the hand: int F_h dt = m_h u_h'(t_c) (trapezoid on 2 us).
-    r = simulate_held(model, FIRM_GRIP, position=0.8, output_step=2e-6)
+    r = simulate_held(ImpactProblem.build(model, hand=FIRM_GRIP, position=0.8), output_step=2e-6)
     f, t = r.grip_force, r.t
     impulse = 0.5 * np.sum((f[1:] + f[:-1]) * np.diff(t))  # numpy >= 1.26: no np.trapezoid
     assert impulse == pytest.approx(FIRM_GRIP.mass * r.hand_velocity[-1], rel=1e-4)
@@ -67,6 +68,6 @@ def test_bad_hand_and_solver(model):
     with pytest.raises(InputError, match="grip stiffness = -1"):
         Hand(stiffness=-1.0)
     with pytest.raises(InputError, match="solver = 'exact'"):
-        simulate_held(model, LOOSE_GRIP, solver="exact")
+        simulate_held(ImpactProblem.build(model, hand=LOOSE_GRIP), solver="exact")
     with pytest.raises(InputError, match="beyond the frame"):
         held_frame(model.fe, Hand(grip_end=0.9))

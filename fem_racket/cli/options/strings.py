@@ -1,0 +1,237 @@
+"""The string bed on the command line: tension, pattern, head size and string, and the run of
+``fem-racket simulate`` with it (:func:`run_strung`).
+
+Any of these options replaces the paper's lumped K_CB by the string bed (:mod:`fem_racket.strings`,
+:mod:`fem_racket.impact.strung`): the ball's own law then acts on the bed. Without them the
+paper's spring stays, unchanged. (``--string-stiffness`` and ``--string-cubic`` are parameters
+of the ``series`` contact law, a different, lumped model.)
+
+The head: ``--head-length`` and ``--head-width`` set the ellipse's axes; ``--head-area`` scales
+the default head (0.326 m x 0.252 m, 645 cm^2) keeping its shape, or, with one axis given, sets
+the other; all three together are refused.
+
+:func:`run_strung` runs :func:`fem_racket.simulate` with the bed and prints the
+outcome with the bed's stiffness and first frequencies, the peak deflections of the bed and the
+ball and the energy the bed returns and the ball loses. Options that belong to the paper's lumped
+spring or to paths the strung racket does not take are refused in one line (by the problem and
+its solver).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
+from fem_racket.cli.options.output import print_json, print_written, run_parameters, write_json
+from fem_racket.cli.text import significant
+from fem_racket.impact.simulate import simulate
+from fem_racket.impact.strung_impact import StrungImpact
+from fem_racket.outputs import Target, atomic_outputs, provenance
+from fem_racket.strings.bed import EDGES, StringBed, parse_pattern
+from fem_racket.strings.materials import STRINGS
+from fem_racket.validation import InputError, check_positive, show
+
+__all__ = [
+    "STRING_DESTS",
+    "add_strings_options",
+    "run_strung",
+    "strings_from_args",
+    "strung_from_args",
+]
+
+#: The argparse destinations of the string-bed options.
+STRING_DESTS = (
+    "string_tension",
+    "pattern",
+    "head_area",
+    "head_length",
+    "head_width",
+    "string_material",
+    "bed_edge",
+)
+
+
+def add_strings_options(parser: argparse.ArgumentParser) -> None:
+    """Add the string-bed options (all default to None: the paper's K_CB)."""
+    d = StringBed()
+    g = parser.add_argument_group(
+        "string bed (any of these replaces the paper's K_CB by a membrane bed and the ball's law)"
+    )
+    g.add_argument(
+        "--string-tension",
+        type=float,
+        default=None,
+        metavar="N",
+        help=f"tension per string [N] (default {d.tension_n:g}, the paper's 55 lb)",
+    )
+    g.add_argument(
+        "--pattern",
+        default=None,
+        metavar="MAINSxCROSSES",
+        help=f"string pattern, mains along the racket x crosses (default {d.pattern})",
+    )
+    g.add_argument(
+        "--head-area",
+        type=float,
+        default=None,
+        metavar="CM2",
+        help=f"string-bed area [cm^2] (default {d.area_m2 * 1e4:.0f}; the ellipse keeps its shape)",
+    )
+    g.add_argument(
+        "--head-length",
+        type=float,
+        default=None,
+        metavar="M",
+        help=f"string-bed length along the racket [m] (default {d.head_length_m:g})",
+    )
+    g.add_argument(
+        "--head-width",
+        type=float,
+        default=None,
+        metavar="M",
+        help=f"string-bed width across the racket [m] (default {d.head_width_m:g})",
+    )
+    g.add_argument(
+        "--string-material",
+        default=None,
+        choices=tuple(STRINGS),
+        help=f"string material (default {d.string})",
+    )
+    g.add_argument(
+        "--bed-edge",
+        default=None,
+        choices=EDGES,
+        help="how the head ring follows the frame: point (with the impact point; default, the "
+        "paper's point contact when the bed is stiff) or hoop (each edge point with the frame's "
+        "bending at its x)",
+    )
+
+
+def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
+    """The head's axes [m] from the options (see the module docstring)."""
+    d = StringBed()
+    if area is None:
+        return (
+            d.head_length_m if length is None else check_positive("head length", length, "m"),
+            d.head_width_m if width is None else check_positive("head width", width, "m"),
+        )
+    a = check_positive("head area", area, "cm^2") * 1e-4 * 4.0 / math.pi  # L W [m^2]
+    if length is not None and width is not None:
+        raise InputError(
+            f"head area = {show(area)} cm^2 is not allowed with both --head-length and "
+            "--head-width: give two of the three"
+        )
+    if length is not None:
+        return float(length), a / check_positive("head length", length, "m")
+    if width is not None:
+        return a / check_positive("head width", width, "m"), float(width)
+    s = math.sqrt(a / (d.head_length_m * d.head_width_m))
+    return d.head_length_m * s, d.head_width_m * s
+
+
+def strings_from_args(args: argparse.Namespace) -> StringBed | None:
+    """The string bed the options ask for, or None when no string option is given."""
+    values = {k: getattr(args, k, None) for k in STRING_DESTS}
+    if all(v is None for v in values.values()):
+        return None
+    d = StringBed()
+    length, width = _axes(values["head_area"], values["head_length"], values["head_width"])
+    mains, crosses = (
+        (d.mains, d.crosses) if values["pattern"] is None else parse_pattern(values["pattern"])
+    )
+    return StringBed(
+        tension_n=d.tension_n if values["string_tension"] is None else values["string_tension"],
+        mains=mains,
+        crosses=crosses,
+        head_length_m=length,
+        head_width_m=width,
+        string=d.string if values["string_material"] is None else values["string_material"],
+        edge=d.edge if values["bed_edge"] is None else values["bed_edge"],
+    )
+
+
+def _histories(result: StrungImpact) -> dict[str, Any]:
+    return {
+        "time [s]": result.t,
+        "ball deflection [m]": result.ball_deflection,
+        "bed deflection [m]": result.bed_deflection,
+        "contact force [N]": result.force,
+    }
+
+
+def _write(args: argparse.Namespace, result: StrungImpact, summary: dict, files: list) -> None:
+    meta = provenance(run_parameters(args))
+    meta["used"] = summary
+    history = _histories(result)
+    if len(files) == 1:
+        data = {"provenance": meta, "summary": summary}
+        history = {k: v.tolist() for k, v in history.items()}
+        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
+        return
+    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            w = csv.writer(f)
+            w.writerow(history)
+            for row in zip(*history.values(), strict=True):
+                w.writerow([repr(float(v)) for v in row])
+        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
+        side.write_text(text + "\n", encoding="utf-8")
+
+
+def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
+    freqs = ", ".join(f"{f:.0f}" for f in s["stringbed_frequencies_hz"])
+    return [
+        ("coefficient of restitution", significant(s["cor"], 6), "-"),
+        ("contact time", significant(s["contact_time_s"] * 1e3, 5), "ms"),
+        ("rebound speed", significant(s["rebound_speed_m_s"], 5), "m/s"),
+        ("peak force", significant(s["peak_force_n"], 4), "N"),
+        ("impact point", significant(s["position_x_over_l"], 4), "x/L"),
+        ("impact speed", significant(s["speed_m_s"], 5), "m/s"),
+        ("string bed", f"{s['pattern']} {s['string']}", ""),
+        ("string tension", significant(s["string_tension_n"], 4), "N"),
+        ("head area", significant(s["head_area_cm2"], 4), "cm^2"),
+        ("stringbed stiffness", significant(s["stringbed_stiffness_n_m"], 4), "N/m"),
+        ("stringbed frequencies", freqs, "Hz"),
+        ("peak bed deflection", significant(s["peak_bed_deflection_m"] * 1e3, 4), "mm"),
+        ("peak ball deflection", significant(s["peak_ball_deflection_m"] * 1e3, 4), "mm"),
+        ("energy returned by the bed", significant(s["bed_energy_returned_j"], 4), "J"),
+        ("energy lost in the ball", significant(s["energy_lost_in_ball_j"], 4), "J"),
+        ("ball law", s["ball_law"], ""),
+        ("solver", f"{s['solver']} (modal, {s['elements']} elements + bed)", ""),
+    ]
+
+
+def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> StrungImpact:
+    """The impact the options ask for on ``strings`` and the frame ``model``, through
+    :func:`fem_racket.simulate` (which refuses, in one line, what the strung racket does not
+    take: K_CB, zeta, a swing, the options of other solvers)."""
+    kwargs = impact_kwargs(args)
+    if "output_step" in getattr(args, "explicit_options", ()):
+        kwargs["output_step"] = args.output_step  # refused there, not ignored here
+    if hasattr(args, "racket_speed"):  # commands with the swing options
+        kwargs["swing"] = swing_from_args(args, model.mesh.length)
+    return simulate(model, strings=strings, **kwargs)
+
+
+def run_strung(args: argparse.Namespace, strings: StringBed, model, files: list[Path]) -> int:
+    """Simulate the ball on ``strings`` and the frame ``model``; print, write."""
+    result = strung_from_args(args, strings, model)
+    summary = {
+        **result.summary(),
+        "ball_law": "kawazoe-1997-ball" if args.law == "linear" else args.law,
+        "elements": model.mesh.n_elements,
+    }
+    if args.out:
+        _write(args, result, summary, files)
+    if args.json:
+        print_json(summary)
+        return 0
+    for name, value, unit in _rows(summary):
+        print(f"{name:<28} {value:>14} {unit}".rstrip())
+    print_written(files)
+    return 0

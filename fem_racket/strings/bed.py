@@ -1,0 +1,153 @@
+"""The string bed's parameters: tension, pattern, head size, string; its membrane constants.
+
+The bed is a pre-tensioned orthotropic membrane (``DESIGN.md`` section 10; Cross 2000, Goodwill &
+Haake 2001): ``n_m`` mains run along the racket (x) across the head width W, ``n_c`` crosses run
+across it (y) over the head length L_h, each at tension T. Per unit width the mains carry
+``N_x = n_m T / W`` and the crosses ``N_y = n_c T / L_h`` [N/m], and the strings' mass per area is
+``rho_s = mu (n_m / W + n_c / L_h)`` [kg/m^2] (mu: the string's linear density). The transverse
+deflection w of the bed obeys (small deflection, edge on the head's ellipse)::
+
+    rho_s w'' = N_x w_xx + N_y w_yy + p(x, y, t)
+
+Defaults: the paper's racket was strung at 246 N (55 lb, issue 25), a 16 x 19 pattern (the most
+common) with nylon; the head is the "100 in^2" (645 cm^2) ellipse 0.326 m x 0.252 m of
+:mod:`fem_racket.frame.head` (ITF rules, appendix II: strung surface <= 39.4 cm x 29.2 cm; typical
+dimensions, an assumption). The ball meets the bed over a disk of radius a (``load_radius_m``,
+0.02 m: about the contact patch of a tennis ball at impact and the probe of a stringbed-stiffness
+meter; an assumption): the bed's deflection "at the impact point" is its mean over that disk.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from fem_racket.strings.materials import StringMaterial, get_string
+from fem_racket.validation import (
+    InputError,
+    check_choice,
+    check_integer,
+    check_positive,
+    check_range,
+    show,
+)
+
+__all__ = ["EDGES", "StringBed", "parse_pattern"]
+
+#: How the head ring follows the frame (:mod:`fem_racket.impact.strung`): uniformly with the
+#: impact point, or each edge point with the frame at its own x (bending along the hoop).
+EDGES = ("point", "hoop")
+
+#: Most and fewest strings in either direction a pattern may have.
+PATTERN_RANGE = (4, 40)
+
+
+def parse_pattern(text: str, name: str = "pattern") -> tuple[int, int]:
+    """``"16x19"`` -> (16, 19): mains x crosses (``name``: the parameter named in errors)."""
+    match = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", str(text))
+    if match is None:
+        raise InputError(f"{name} = {show(text)} is not allowed: must be MAINSxCROSSES, e.g. 16x19")
+    lo, hi = PATTERN_RANGE
+    mains = check_integer(f"{name} mains", int(match.group(1)), lo, hi)
+    crosses = check_integer(f"{name} crosses", int(match.group(2)), lo, hi)
+    return mains, crosses
+
+
+@dataclass(frozen=True)
+class StringBed:
+    """A strung head (see the module docstring).
+
+    Parameters
+    ----------
+    tension_n : float
+        Tension T per string [N].
+    mains, crosses : int
+        Strings along the racket and across it.
+    head_length_m, head_width_m : float
+        The head ellipse's axes along and across the racket [m].
+    string : str
+        String preset (:data:`fem_racket.strings.materials.STRINGS`).
+    load_radius_m : float
+        Radius a of the ball's contact disk [m].
+    head_centre : float
+        The head's centre on the frame, x/L (0.74: the typical head of
+        :mod:`fem_racket.frame.head` on the paper's frame; an assumption).
+    edge : {"point", "hoop"}
+        How the head ring follows the frame (:data:`EDGES`).
+    """
+
+    tension_n: float = 246.0
+    mains: int = 16
+    crosses: int = 19
+    head_length_m: float = 0.326
+    head_width_m: float = 0.252
+    string: str = "nylon"
+    load_radius_m: float = 0.02
+    head_centre: float = 0.74
+    edge: str = "point"
+
+    def __post_init__(self) -> None:
+        check_range("string tension", self.tension_n, 1.0, 1e16, unit="N")
+        lo, hi = PATTERN_RANGE
+        check_integer("pattern mains", self.mains, lo, hi)
+        check_integer("pattern crosses", self.crosses, lo, hi)
+        check_range("head length", self.head_length_m, 0.05, 1.0, unit="m")
+        check_range("head width", self.head_width_m, 0.05, 1.0, unit="m")
+        get_string(self.string)
+        check_positive("load radius", self.load_radius_m, "m")
+        check_range("head centre", self.head_centre, 0.0, 1.0, unit="x/L")
+        check_choice("edge", self.edge, EDGES)
+        half = 0.5 * min(self.head_length_m, self.head_width_m)
+        if self.load_radius_m >= 0.5 * half:
+            raise InputError(
+                f"load radius = {show(self.load_radius_m)} m is not allowed: must be < "
+                f"{0.5 * half:.4g} m (a quarter of the head's smaller axis)"
+            )
+
+    @property
+    def material(self) -> StringMaterial:
+        return get_string(self.string)
+
+    @property
+    def pattern(self) -> str:
+        """``"16x19"``."""
+        return f"{self.mains}x{self.crosses}"
+
+    @property
+    def area_m2(self) -> float:
+        """Area of the head ellipse [m^2]."""
+        return math.pi / 4.0 * self.head_length_m * self.head_width_m
+
+    @property
+    def n_x(self) -> float:
+        """N_x = n_m T / W, the mains' tension per unit width [N/m]."""
+        return self.mains * self.tension_n / self.head_width_m
+
+    @property
+    def n_y(self) -> float:
+        """N_y = n_c T / L_h, the crosses' tension per unit length [N/m]."""
+        return self.crosses * self.tension_n / self.head_length_m
+
+    @property
+    def rho_s(self) -> float:
+        """Mass per area of the strings [kg/m^2]."""
+        mu = self.material.linear_density_kg_m
+        return mu * (self.mains / self.head_width_m + self.crosses / self.head_length_m)
+
+    def describe(self) -> dict[str, float | str]:
+        """Parameters and membrane constants for JSON outputs, units in the keys."""
+        return {
+            "string_tension_n": float(self.tension_n),
+            "pattern": self.pattern,
+            "head_length_m": self.head_length_m,
+            "head_width_m": self.head_width_m,
+            "head_area_cm2": self.area_m2 * 1e4,
+            "string": self.string,
+            "load_radius_m": self.load_radius_m,
+            "head_centre_x_over_l": self.head_centre,
+            "stringbed_edge": self.edge,
+            "tension_per_width_x_n_m": self.n_x,
+            "tension_per_width_y_n_m": self.n_y,
+            "mass_per_area_kg_m2": self.rho_s,
+        }

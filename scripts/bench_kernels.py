@@ -1,0 +1,238 @@
+"""Compiled kernels: cost and accuracy of the general integrator and the linear engine, one run.
+
+Prints, on the paper's standard racket (20 elements, one BLAS thread):
+
+- the first-call compile time of the general integrator's kernels (a fresh numba cache in a
+  temporary folder) and the load time from the cache (a second process);
+- CPU us per impact of each law batched (random positions 0.45-0.95 L and speeds 20-40 m/s,
+  default COR tolerance 1e-6, answers vouched for) and its largest |dCOR| against CVODE
+  (rtol 1e-10) on the first cases;
+- the 4 200-impact, 200-frame law sweep of issue 27 (``fem-racket sweep --law
+  kawazoe-1997-nonlinear --position 0.6:0.9:7 --speed 20,30,40 --ei1 50:3000:200:log``), in
+  process (serial): wall and CPU per impact;
+- CPU us per impact of the linear engine (``fem_racket.impacts``) at tolerance 1e-6 on a
+  126 000-impact grid;
+- the worst |dCOR| against CVODE over a seeded random set of law parameters per family
+  (``--accuracy N`` cases each; the ranges of tests/strategies.py ``contact_laws``); this part
+  uses only what the tool had before the kernels, so it also measures an older tree
+  (``PYTHONPATH=/path/to/old python scripts/bench_kernels.py --only-accuracy``);
+- OpenSeesPy (a benchmark-only peer) when it is installed, else says so.
+
+This machine is shared: absolute times are noisy; read the ratios within one run.
+
+Usage: python scripts/bench_kernels.py [--quick] [--accuracy N] [--only-accuracy]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import numpy as np  # noqa: E402
+
+from fem_racket import FrameModel  # noqa: E402
+from fem_racket.contact.hunt_crossley import HuntCrossley, damping_from_cor  # noqa: E402
+from fem_racket.contact.hysteretic import Hysteretic  # noqa: E402
+from fem_racket.contact.law import power_contact_time  # noqa: E402
+from fem_racket.contact.presets import PRESETS, get_law  # noqa: E402
+from fem_racket.contact.series import SeriesBallString  # noqa: E402
+from fem_racket.impact.general.integrator import solve_general  # noqa: E402
+from fem_racket.impact.law_impact import receptance, solve_law_impact  # noqa: E402
+
+FIRST_CALL = """
+import time, numpy as np
+t0 = time.perf_counter()
+from fem_racket import FrameModel
+from fem_racket.contact.presets import PRESETS
+from fem_racket.impact.general.integrator import solve_general
+from fem_racket.impact.law_impact import receptance
+m = FrameModel.build(None, 10)
+rec = receptance(m, 0.75, 0.057)
+t1 = time.perf_counter()
+solve_general(PRESETS["kawazoe-1997-nonlinear"], rec, 30.0)
+print(time.perf_counter() - t1)
+"""
+
+
+def first_call() -> list[tuple[float, float]]:
+    """(wall s of the first general-integrator call, CPU s of the whole process): compiling
+    (an empty cache), then loading from it."""
+    import resource
+
+    with tempfile.TemporaryDirectory() as cache:
+        env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+        times = []
+        for _ in range(2):
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            done = subprocess.run(
+                [sys.executable, "-c", FIRST_CALL], env=env, capture_output=True, text=True
+            )
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+            times.append((float(done.stdout.split()[-1]), cpu))
+    return times
+
+
+def cvode_cor(law, model, position, speed) -> float:
+    run = solve_law_impact(
+        law, model, position, 0.057, speed, solver="cvode", output_step=None, rtol=1e-10,
+        atol=1e-13,
+    )  # fmt: skip
+    return float(-run.ball_velocity[-1] / speed)
+
+
+def stiffness_for(t_c: float, n: float) -> float:
+    """k of k delta^n whose rigid contact time at 30 m/s (0.057 kg) is t_c (bisection)."""
+    lo, hi = 1.0, 1e40
+    for _ in range(200):
+        k = math.sqrt(lo * hi)
+        if power_contact_time(k, n, 0.057, 30.0) > t_c:
+            lo = k
+        else:
+            hi = k
+    return math.sqrt(lo * hi)
+
+
+def random_law(family: str, rng: np.random.Generator):
+    """A law in the ranges of tests/strategies.py contact_laws."""
+    if family == "series":
+        k_b, c_b, cubic = 10 ** rng.uniform(4, 6), 10 ** rng.uniform(math.log10(0.5), 1.7), 0.0
+        k_s = 10 ** rng.uniform(3, 5)
+        cubic = float(rng.choice([0.0, 1e8, 1e9, 1e10]))
+        return SeriesBallString(k_b, c_b, max(k_s, 1e4) if cubic == 0.0 else k_s, cubic)
+    n = 1.0 if rng.random() < 0.3 else rng.uniform(1.0, 10.0)
+    k = stiffness_for(10 ** rng.uniform(math.log10(2e-3), math.log10(8e-3)), n)
+    e = rng.uniform(0.5, 0.95)
+    if family == "hysteretic":
+        return Hysteretic.from_cor(k, e, n)
+    return HuntCrossley(k, n, 0.0 if rng.random() < 0.5 else damping_from_cor(e, 30.0))
+
+
+def accuracy(model: FrameModel, count: int) -> list[tuple[str, float, str]]:
+    """(family, worst |dCOR| vs CVODE, its case) over ``count`` random cases per family."""
+    rows = []
+    for family in ("hunt-crossley", "hysteretic", "series"):
+        rng = np.random.default_rng(27)
+        worst, where = 0.0, ""
+        for _ in range(count):
+            law = random_law(family, rng)
+            x, v = rng.uniform(0.4, 0.95), rng.uniform(10.0, 40.0)
+            ref = cvode_cor(law, model, x, v)
+            try:
+                out = solve_general(law, receptance(model, x, 0.057), v)
+                cor = float(-out.ball_velocity[0] / v)
+                err = abs(cor - ref)
+            except Exception as exc:  # a refusal is not an error in COR: say so
+                err, cor = math.nan, type(exc).__name__
+            if not err <= worst:
+                worst = err if np.isfinite(err) else worst
+                where = f"{law} at {x:.3f} L, {v:.1f} m/s: {cor} vs {ref:.8f}"
+        rows.append((family, worst, where))
+    return rows
+
+
+def law_batches(model: FrameModel, n: int, checked: int) -> list[tuple[str, float, float]]:
+    """(law, CPU us per impact batched, max |dCOR| vs CVODE on the first ``checked``)."""
+    rng = np.random.default_rng(1)
+    x, v = rng.uniform(0.45, 0.95, n), rng.uniform(20.0, 40.0, n)
+    laws = {
+        "kawazoe-1997-nonlinear": PRESETS["kawazoe-1997-nonlinear"],
+        "hunt-crossley (default)": get_law("hunt-crossley"),
+        "series (default)": get_law("series"),
+        "hysteretic n = 1": Hysteretic.from_cor(5e4, 0.83, 1.0),
+        "itf-ball": PRESETS["itf-ball"],
+    }
+    rows = []
+    rec = receptance(model, x, 0.057)
+    for name, law in laws.items():
+        solve_general(law, receptance(model, x[:2], 0.057), v[:2])  # load the kernels
+        c0 = time.process_time()
+        out = solve_general(law, rec, v)
+        cpu = (time.process_time() - c0) / n
+        err = max(
+            abs(-out.ball_velocity[i] / v[i] - cvode_cor(law, model, x[i], v[i]))
+            for i in range(checked)
+        )
+        rows.append((name, 1e6 * cpu, err))
+    return rows
+
+
+def law_sweep() -> tuple[int, float, float]:
+    """(impacts, wall s, CPU s) of issue 27's 200-frame law sweep, in process."""
+    from fem_racket.studies.sweep import sweep
+
+    c0, w0 = time.process_time(), time.perf_counter()
+    ds = sweep(
+        law="kawazoe-1997-nonlinear", position="0.6:0.9:7", speed=[20.0, 30.0, 40.0],
+        ei1="50:3000:200:log", backend="serial",
+    )  # fmt: skip
+    return int(ds.cor.size), time.perf_counter() - w0, time.process_time() - c0
+
+
+def linear_engine(model: FrameModel, shape: tuple[int, int, int]) -> tuple[int, float]:
+    """(impacts, CPU us per impact) of the linear engine at 1e-6 on a position x speed x EI
+    grid."""
+    from fem_racket import impacts
+
+    p = np.linspace(0.55, 0.95, shape[0])
+    s = np.linspace(20.0, 40.0, shape[1])
+    e = np.geomspace(50.0, 3000.0, shape[2]) / 146.0
+    P, S, E = (a.ravel() for a in np.meshgrid(p, s, e, indexing="ij"))
+    impacts(model, position=P[:10], speed=S[:10], ei_factor=E[:10])
+    c0 = time.process_time()
+    impacts(model, position=P, speed=S, ei_factor=E, tolerance=1e-6)
+    return P.size, 1e6 * (time.process_time() - c0) / P.size
+
+
+def main(argv: list[str] | None = None) -> list[tuple[str, float, str]]:
+    """Run the benchmark and print its tables; returns the accuracy rows (family, worst
+    |dCOR|, its case)."""
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="small batches, no 4 200-impact sweep")
+    ap.add_argument("--accuracy", type=int, default=12, help="random cases per law family")
+    ap.add_argument("--only-accuracy", action="store_true", help="the random set only")
+    args = ap.parse_args(argv)
+    model = FrameModel.build(None, 20)
+    model.modes(None)
+    print(f"load: {os.getloadavg()[0]:.1f} (2 cores shared)")
+    if not args.only_accuracy:
+        (c_wall, c_cpu), (l_wall, l_cpu) = first_call()
+        print(
+            f"first call: compile {c_wall:.1f} s wall (process {c_cpu:.1f} s CPU; empty numba "
+            f"cache), from the cache {l_wall:.2f} s wall (process {l_cpu:.2f} s CPU)"
+        )
+        n = 200 if args.quick else 2000
+        print(f"\nlaws batched ({n} impacts, tolerance 1e-6)   CPU [us/impact]   max |dCOR| (4)")
+        for name, us, err in law_batches(model, n, 4):
+            print(f"  {name:38s} {us:12.0f} {err:18.1e}")
+        if not args.quick:
+            count, wall, cpu = law_sweep()
+            print(
+                f"\nlaw sweep, 200 frames: {count} impacts, {wall:.1f} s wall, "
+                f"{1e3 * wall / count:.2f} ms wall and {1e6 * cpu / count:.0f} us CPU per impact"
+            )
+        count, us = linear_engine(model, (7, 3, 60) if args.quick else (70, 30, 60))
+        print(f"\nlinear engine at 1e-6: {count} impacts, {us:.1f} us CPU per impact")
+        try:
+            import openseespy  # noqa: F401
+
+            print("openseespy installed: peer not run by this script (see DESIGN section 9)")
+        except ImportError:
+            print("openseespy: not installed (optional peer, DESIGN section 9: ~10 ms/impact)")
+    print(f"\nworst |dCOR| vs CVODE over {args.accuracy} random laws per family (tolerance 1e-6)")
+    rows = accuracy(model, args.accuracy)
+    for family, worst, where in rows:
+        print(f"  {family:14s} {worst:9.1e}   {where}")
+    return rows
+
+
+if __name__ == "__main__":
+    main()
