@@ -117,7 +117,8 @@ def test_no_import_cycle():
 #: The rooms of impact/, lowest first: the base modules (the problem, the coupled system, the mode
 #: reduction, the swing, the result) at the root; the methods (closed forms, the exact solution,
 #: the general integrator) independent of each other; the ODE integrators (which take the exact
-#: solution's modal form); the hand-held racket (built on both); and at the top the dispatch
+#: solution's modal form) and the tangential contact of oblique impacts (which may take the closed
+#: forms); the hand-held racket (built on both); and at the top the dispatch
 #: (solvers, simulate, the law path), which alone chooses a method.
 IMPACT_ROOMS = {
     "base": 0,
@@ -125,14 +126,18 @@ IMPACT_ROOMS = {
     "exact": 1,
     "general": 1,
     "ode": 2,
+    "tangential": 2,
     "held": 3,
     "top": 4,
 }
 IMPACT_TOP = {
     "law_impact",
+    "oblique",
+    "oblique_stroke",
     "simulate",
     "simulate_law",
     "simulate_linear",
+    "simulate_oblique",
     "solvers",
     "strung_exact",
     "strung_impact",

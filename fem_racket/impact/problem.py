@@ -14,7 +14,8 @@ An impact problem states everything about one impact that does not depend on how
 - the racket's motion before impact: a rigid swing, or initial velocities of its modes;
 - the string bed (``strings``, a :class:`~fem_racket.strings.bed.StringBed`): None keeps the
   paper's lumped K_CB; a bed replaces it, and ``law`` is then the ball's own law (the
-  ``kawazoe-1997-ball`` when None), acting on the bed (:mod:`fem_racket.impact.strung`).
+  ``kawazoe-1997-ball`` when None), acting on the bed (:mod:`fem_racket.impact.strung`);
+- an oblique, spinning ball (``incidence``; None: head-on; :mod:`fem_racket.impact.oblique`).
 
 It is immutable and validated once, when made; a field that does not apply to the rest of the
 problem (K_CB under a nonlinear law, a hand with a nonlinear law) is refused in one line, never
@@ -32,6 +33,7 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.hand import Hand, check_grip
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.incidence import Incidence, check_incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.offaxis import check_offsets
 from fem_racket.impact.strung import check_strung_problem, kawazoe_ball
@@ -136,6 +138,8 @@ class ImpactProblem:
         Lateral offset of the impact point from the long axis [m] (0: on it, the paper's). The
         point must lie on the head outline (:class:`~fem_racket.frame.head.HeadOutline`) and
         the frame needs torsion data (cell data GJ and rhoIp); not with a hand.
+    incidence : Incidence or None
+        An oblique, spinning ball; ``impact`` gives its full speed. None: head-on, no spin.
     """
 
     structure: FrameModel | HeldRacket
@@ -149,6 +153,7 @@ class ImpactProblem:
     frame_velocity: Any = None
     strings: StringBed | None = None
     offset: float = 0.0
+    incidence: Incidence | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.structure, FrameModel | HeldRacket):
@@ -185,6 +190,7 @@ class ImpactProblem:
                     "strung racket is struck on its long axis"
                 )
             check_offsets(self.model, self.impact.position, self.offset)
+        check_incidence(self.incidence, self.held or self.strings is not None)
 
     def ball_law(self) -> ContactLaw:
         """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""
@@ -309,6 +315,8 @@ class ImpactProblem:
             if self.strings is None
             else f"; strings {self.strings.pattern} at " + (f"{self.strings.tension_n:.4g} N")
         )
+        if self.incidence is not None:  # oblique
+            bed += f"; {self.incidence.angle:.4g} deg, {self.incidence.spin:.4g} rpm"
         return (
             f"ImpactProblem({where} frame, {self.model.mesh.n_elements} elements; "
             f"x = {self.impact.position:.4g} L, "

@@ -39,6 +39,7 @@ PROBLEM_OPTIONS = (
     "shock_window",
     "strings",
     "elements",
+    "incidence",
 )
 
 
@@ -62,7 +63,9 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
         frame then also twists; 0 by default), ``hand``
         (a Hand: the racket held on its grip; returns a HeldRun) and ``shock_window`` [s],
         ``strings`` (a StringBed: the string bed replaces the lumped K_CB, ``law`` is the
-        ball's own; returns a StrungImpact), ``elements`` (cells when meshing a Frame; 20).
+        ball's own; returns a StrungImpact), ``elements`` (cells when meshing a Frame; 20),
+        ``incidence`` (an Incidence: an oblique, spinning ball at ``speed``; returns an
+        ObliqueResult, :mod:`fem_racket.impact.oblique`).
         The solver: ``solver`` ("auto" (default), "exact", "general", "cvode", "bdf") and its
         options ``tolerance`` (COR tolerance choosing modes and steps; 1e-6), ``modes``
         (flexible modes kept; 80), ``basis`` ("modal" or "physical", BDF only),

@@ -28,6 +28,7 @@ from collections.abc import Iterable
 from typing import Any, ClassVar
 
 from fem_racket.impact.held.run import HeldSettings, held_impact
+from fem_racket.impact.oblique import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.settings import DEFAULTS, SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
@@ -104,7 +105,7 @@ class Solver:
         StrungImpact with a string bed)."""
         self.check(problem)
         work_begins()  # fem-racket config --check stops here: every check has passed
-        return self._solve(problem)
+        return self._outcome(problem)
 
     def solve_many(self, problems: Iterable[ImpactProblem]) -> list[Any]:
         """The outcomes of ``problems``, in order (each checked before any is solved)."""
@@ -112,7 +113,14 @@ class Solver:
         for p in problems:
             self.check(p)
         work_begins()
-        return [self._solve(p) for p in problems]
+        return [self._outcome(p) for p in problems]
+
+    def _outcome(self, problem: ImpactProblem) -> Any:
+        """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
+        the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
+        if problem.incidence is not None:
+            return solve_oblique(self, problem)
+        return self._solve(problem)
 
     # -- helpers ------------------------------------------------------------------------------
 

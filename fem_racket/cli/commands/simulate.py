@@ -19,8 +19,6 @@ force histories over that window, the hand in the provenance's ``"used"``.
 from __future__ import annotations
 
 import argparse
-import csv
-import json
 from pathlib import Path
 from typing import Any
 
@@ -38,10 +36,10 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
     swing_from_args,
-    write_json,
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
-from fem_racket.cli.options.output import print_written
+from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
+from fem_racket.cli.options.output import print_written, write_result_files
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.contact.presets import FILE_KEYS
@@ -52,10 +50,8 @@ from fem_racket.io.config_run import NOT_WITH_HAND
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
     Target,
-    atomic_outputs,
     check_output_path,
     check_targets,
-    json_ready,
     sidecar_path,
 )
 from fem_racket.validation import InputError, show_path
@@ -70,6 +66,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_impact_options(p)
     add_swing_options(p)
     add_hand_options(p)
+    add_oblique_options(p)
     add_strings_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON object")
     g = add_output_options(
@@ -111,19 +108,7 @@ def _write(
 ) -> None:
     """Write --out: JSON, or CSV and its sidecar as one set (both or neither)."""
     meta = impact_provenance(result, run_parameters(args))
-    if len(files) == 1:
-        data = {"provenance": meta, "summary": summary}
-        history = {k: v.tolist() for k, v in history.items()}
-        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
-        return
-    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
-        with open(tmp, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(history)
-            for row in zip(*history.values(), strict=True):
-                w.writerow([repr(float(v)) for v in row])
-        text = json.dumps(json_ready({**meta, "summary": summary}), indent=2, default=str)
-        side.write_text(text + "\n", encoding="utf-8")
+    write_result_files(args, meta, summary, files, history)
 
 
 def _law_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
@@ -249,7 +234,11 @@ def run(args: argparse.Namespace) -> int:
     check_output_step(args.output_step)
     hand = hand_from_args(args)
     files = _check_out(args) if args.out else []
-    strings = strings_from_args(args)
+    incidence, strings = incidence_from_args(args), strings_from_args(args)
+    if incidence is not None:  # an oblique impact (fem_racket.cli.options.oblique)
+        if strings is not None:
+            raise InputError("a string bed is not allowed with an oblique impact: give one")
+        return run_oblique(args, incidence, hand, files)
     if strings is not None:
         if hand is not None:
             raise InputError("a hand is not allowed with a string bed: give one of them")

@@ -22,6 +22,7 @@ __all__ = [
     "print_written_folder",
     "run_parameters",
     "write_json",
+    "write_result_files",
     "write_text",
 ]
 
@@ -88,3 +89,32 @@ def write_text(path: str | Path, text: str, *, overwrite: bool = False) -> Path:
 def write_json(path: str | Path, data: Any, *, overwrite: bool = False) -> Path:
     """Write ``data`` as JSON to ``path`` atomically (NaN and inf become null)."""
     return write_text(path, json.dumps(json_ready(data), indent=2) + "\n", overwrite=overwrite)
+
+
+def write_result_files(
+    args: argparse.Namespace,
+    meta: dict[str, Any],
+    summary: dict[str, Any],
+    files: list[Path],
+    history: dict[str, Any],
+) -> None:
+    """Write ``--out`` of one impact: JSON (provenance ``meta``, summary, histories), or the
+    histories as CSV and ``meta`` with the summary in its JSON sidecar, as one set (both or
+    neither); ``files`` the one or two paths."""
+    import csv
+
+    from fem_racket.outputs import Target, atomic_outputs
+
+    if len(files) == 1:
+        data = {"provenance": meta, "summary": summary}
+        history = {k: v.tolist() for k, v in history.items()}
+        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
+        return
+    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            w = csv.writer(f)
+            w.writerow(history)
+            for row in zip(*history.values(), strict=True):
+                w.writerow([repr(float(v)) for v in row])
+        text = json.dumps(json_ready({**meta, "summary": summary}), indent=2, default=str)
+        side.write_text(text + "\n", encoding="utf-8")

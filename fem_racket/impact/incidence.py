@@ -1,0 +1,153 @@
+"""An oblique, spinning ball and its frictional contact with the strings: :class:`Incidence`.
+
+Geometry: the plane of the racket's long axis x and the face normal n. The ball arrives at speed
+V at ``angle`` from the face normal (in that plane): normal speed V cos(angle) towards the
+strings, tangential speed V sin(angle) >= 0 along the unit vector t of the face (the direction of
+its tangential velocity; at angle 0 the tip direction +x by convention).
+
+Spin, about the axis normal to that plane, is signed relative to the strings like a ball on the
+ground: positive (topspin) when the ball's surface on the strings' side moves backward (-t)
+relative to its centre, the sense of rolling along the strings; negative (backspin) when it
+moves forward (+t), so the contact point slips faster. The contact point's velocity is
+``v_t - R omega``: a ball rolling along the strings has ``omega = v_t / R``.
+
+The ball is a rigid sphere of radius R and moment of inertia I = k m R^2 about its centre. A
+tennis ball is a thick rubber shell under felt: a uniform shell of outer radius 33 mm and wall
+3.3 mm gives k = (2/5)(1 - 0.9^5)/(1 - 0.9^3) = 0.605; the literature's range is 0.55-0.67
+(DESIGN.md section 10; Cross 2005, Am. J. Phys. 73). The contact carries Coulomb friction mu
+(ball on strings about 0.4, Cross 2003, Sports Eng. 6, measured sliding friction) through a
+tangential spring (Stronge's compliant contact, Stronge 2000, *Impact Mechanics*, ch. 5):
+``eta^2 = k_n / k_t``, the normal-to-tangential stiffness ratio. Its default 1.5 is Mindlin's
+ratio (2 - nu) / (2 (1 - nu)) for an incompressible elastic contact, nu = 0.5 (Johnson 1985,
+*Contact Mechanics*, section 7.2): an assumption for the ball/string contact, whose tangential
+stiffness has not been measured (the strings' lateral motion makes it softer). ``eta^2 = 0`` is
+the rigid (Routh) tangential contact: the ball slides until it rolls, then rolls.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Any
+
+from fem_racket.validation import InputError, check_finite, check_positive, check_range, show
+
+__all__ = [
+    "DEFAULT_BALL_INERTIA",
+    "DEFAULT_BALL_RADIUS",
+    "DEFAULT_COMPLIANCE_RATIO",
+    "DEFAULT_FRICTION",
+    "Incidence",
+    "RPM",
+    "check_incidence",
+    "head_on",
+]
+
+#: I / (m R^2) of a tennis ball (uniform shell, R = 33 mm, wall 3.3 mm: 0.605; range 0.55-0.67).
+DEFAULT_BALL_INERTIA = 0.6
+#: Ball radius R [m] (ITF: 32.7-34.3 mm).
+DEFAULT_BALL_RADIUS = 0.033
+#: Sliding friction ball on strings (Cross 2003, Sports Eng. 6: about 0.4).
+DEFAULT_FRICTION = 0.4
+#: eta^2 = k_n / k_t, Mindlin's (2 - nu) / (2 (1 - nu)) at nu = 0.5 (an assumption).
+DEFAULT_COMPLIANCE_RATIO = 1.5
+#: rad/s per rpm.
+RPM = 2.0 * math.pi / 60.0
+
+
+def _non_negative(name: str, value: object) -> float:
+    number = check_finite(name, value)
+    if number < 0.0:
+        raise InputError(f"{name} = {show(value)} is not allowed: must be a finite number >= 0")
+    return number
+
+
+@dataclass(frozen=True)
+class Incidence:
+    """The ball's incidence and spin, and the tangential contact's parameters.
+
+    Parameters
+    ----------
+    angle : float
+        Angle between the ball's path and the face normal [deg], in [0, 90).
+    spin : float
+        Incoming spin [rpm], positive = topspin (see the module docstring).
+    friction : float
+        Coulomb friction coefficient mu >= 0 (0: frictionless, the head-on normal problem).
+    ball_inertia : float
+        I / (m R^2) of the ball, in (0, 2/3] (2/3: a thin shell).
+    radius : float
+        Ball radius R [m], > 0.
+    compliance_ratio : float
+        eta^2 = k_n / k_t >= 0 (0: rigid tangential contact).
+    """
+
+    angle: float = 0.0
+    spin: float = 0.0
+    friction: float = DEFAULT_FRICTION
+    ball_inertia: float = DEFAULT_BALL_INERTIA
+    radius: float = DEFAULT_BALL_RADIUS
+    compliance_ratio: float = DEFAULT_COMPLIANCE_RATIO
+
+    def __post_init__(self) -> None:
+        checks = {
+            "angle": check_range("angle", self.angle, 0.0, 90.0, unit="deg", include_high=False),
+            "spin": check_finite("spin", self.spin, "rpm"),
+            "friction": _non_negative("friction", self.friction),
+            "ball_inertia": check_range(
+                "ball_inertia", self.ball_inertia, 0.0, 2.0 / 3.0, include_low=False
+            ),
+            "radius": check_positive("radius", self.radius, "m"),
+            "compliance_ratio": _non_negative("compliance_ratio", self.compliance_ratio),
+        }
+        for name, value in checks.items():
+            object.__setattr__(self, name, value)
+
+    @property
+    def spin_rad_s(self) -> float:
+        """Incoming spin omega [rad/s], positive = topspin."""
+        return self.spin * RPM
+
+    @property
+    def beta_t(self) -> float:
+        """beta_t = 1 + m R^2 / I: the ball's contact point accelerates at beta_t F_t / m."""
+        return 1.0 + 1.0 / self.ball_inertia
+
+    def components(self, speed: float) -> tuple[float, float]:
+        """(normal, tangential) ball speed [m/s] for an incident ``speed`` [m/s]."""
+        a = math.radians(self.angle)
+        return speed * math.cos(a), speed * math.sin(a)
+
+    def summary(self) -> dict[str, float]:
+        """The incidence and contact parameters, units in the keys."""
+        return {
+            "angle_deg": self.angle,
+            "spin_rpm": self.spin,
+            "friction": self.friction,
+            "ball_inertia_i_over_mr2": self.ball_inertia,
+            "ball_radius_m": self.radius,
+            "compliance_ratio_eta2": self.compliance_ratio,
+        }
+
+
+def check_incidence(incidence: object, refused: bool) -> None:
+    """Refuse an ``incidence`` that is not an :class:`Incidence` (or None: head-on), or any on
+    a racket the oblique impact does not take (``refused``: held in a hand, or strung)."""
+    if incidence is None:
+        return
+    if not isinstance(incidence, Incidence):
+        raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence or None")
+    if refused:
+        raise InputError(
+            "incidence is not allowed with a hand or a string bed: the oblique impact takes a "
+            "free racket with the lumped ball/string law"
+        )
+
+
+def head_on(problem: Any) -> Any:
+    """The normal impact of an oblique :class:`~fem_racket.impact.problem.ImpactProblem`: the
+    ball at V cos(angle), without incidence (``problem`` itself when it is head-on)."""
+    if problem.incidence is None:
+        return problem
+    v_n = problem.incidence.components(problem.impact.speed)[0]
+    return replace(problem, impact=replace(problem.impact, speed=v_n), incidence=None)

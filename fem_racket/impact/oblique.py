@@ -1,0 +1,224 @@
+"""An oblique, spinning ball on the racket: :func:`solve_oblique` -> :class:`ObliqueResult`.
+
+The normal impact is today's, at the normal speed V cos(angle): any contact law, any solver, on
+the free racket (:func:`fem_racket.impact.incidence.head_on`, solved by the problem's solver)
+or on a clamped head (:func:`clamped_normal`: eqs 1-3 in closed form, the paper's linear law).
+The tangential contact (:mod:`fem_racket.impact.tangential`) is then marched over its normal
+force history, with the racket's tangential effective mass: the free racket recoils along its
+long axis as a rigid body, M_t = M (the string plane lies on the beam's axis, so the tangential
+force neither bends nor turns it, and the beam is rigid along itself); a clamped head does not
+move (M_t infinite).
+
+Assumed (stated in the README): the tangential force does not change the normal impact (so with
+mu = 0, or head-on without spin, the normal outcome is exactly the head-on impact's at the
+normal speed); the contact point stays at the impact point (the ball travels a few cm along
+the face during contact); the frame's tangential compliance and the strings' lateral motion are
+neglected; K_CB follows the normal speed.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import Ball, LinearContact
+from fem_racket.impact.analytic.rigid import ClampedImpact, clamped_impact
+from fem_racket.impact.incidence import Incidence, head_on
+from fem_racket.impact.problem import ImpactProblem
+from fem_racket.impact.result import ImpactResult
+from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, SampledNormal
+from fem_racket.impact.tangential.oblique import BallMotion, ObliqueOutcome, tangential_impact
+from fem_racket.validation import InputError, check_choice
+
+__all__ = [
+    "CLAMPED_ARGS",
+    "NormalImpact",
+    "ObliqueResult",
+    "clamped_normal",
+    "free_normal",
+    "normal_history",
+    "oblique_on",
+    "solve_oblique",
+]
+
+#: Output step of the normal impact whose force history drives the tangential contact [s].
+OBLIQUE_OUTPUT_STEP = 1e-5
+
+
+@dataclass(frozen=True, eq=False)
+class ObliqueResult:
+    """The normal impact and the tangential contact of one oblique impact.
+
+    Attributes
+    ----------
+    normal : ImpactResult or ClampedImpact
+        The normal impact at the normal speed (ClampedImpact: a clamped head, eqs 1-3).
+    tangential : ObliqueOutcome
+        Outgoing speed, angle and spin, the regime, histories.
+    speed : float
+        Incident ball speed [m/s].
+    contact : LinearContact or None
+        The clamped head's K_CB and zeta (None on the free racket: in ``normal``).
+    stroke : dict or None
+        A stroke's face and path angles, the incidence they give and the launch angle
+        (:mod:`fem_racket.impact.oblique_stroke`), units in the keys.
+    """
+
+    normal: ImpactResult | ClampedImpact
+    tangential: ObliqueOutcome
+    speed: float
+    contact: LinearContact | None = None
+    stroke: dict[str, Any] | None = None
+
+    @property
+    def clamped(self) -> bool:
+        return isinstance(self.normal, ClampedImpact)
+
+    def histories(self) -> dict[str, np.ndarray]:
+        """Time histories of the tangential contact at the normal impact's output times (over
+        the force's contact for a clamped head), units in the names."""
+        if self.clamped:
+            t = self.tangential.solution.normal.grid
+            return {"time [s]": t, **self.tangential.histories(t)}
+        return {"time [s]": self.normal.t, **self.tangential.histories(self.normal.t)}
+
+    def summary(self) -> dict[str, Any]:
+        """The normal impact's summary (its ``rebound_speed_m_s`` the normal component) with the
+        oblique outcome: ``ball_speed_out_m_s`` the full outgoing speed, ``angle_out_deg``,
+        ``spin_out_rpm``, ``contact_regime``...; units in the keys."""
+        if self.clamped:
+            n, c = self.normal, self.contact
+            base = {
+                "cor": n.cor,
+                "contact_time_s": n.contact_time,
+                "rebound_speed_m_s": -n.rebound_velocity,
+                "peak_force_n": _clamped_peak(self.tangential.solution.normal),
+                "structure": "clamped head",
+                "ball_mass_kg": self.tangential.ball.mass,
+                "law": "linear",
+                "kcb_n_m": c.stiffness,
+                "zeta": c.zeta,
+            }
+        else:
+            base = {**self.normal.summary(), "structure": "free racket"}
+        normal_speed = self.tangential.incidence.components(self.speed)[0]
+        return {
+            **base,
+            "speed_m_s": self.speed,
+            "normal_speed_m_s": normal_speed,
+            **self.tangential.summary(),
+            **(self.stroke or {}),
+        }
+
+
+def _clamped_peak(normal: NormalHistory) -> float:
+    from scipy.optimize import minimize_scalar
+
+    res = minimize_scalar(lambda t: -normal.force(t), bounds=(0.0, normal.end), method="bounded")
+    return float(-res.fun)
+
+
+def normal_history(result: ImpactResult) -> SampledNormal:
+    """The normal force history of a computed impact (needs its output times).
+
+    The stiffness k_n is K_CB for the paper's linear law, else the secant F / delta at the
+    output time of maximum compression.
+    """
+    if result.t.size < 5:
+        raise InputError(
+            f"an oblique impact needs the normal impact's histories: {result.t.size} output "
+            "times given; simulate with an output_step"
+        )
+    v = result.ball_velocity
+    impulse = result.ball.mass * (v[0] - v)
+    force = result.force
+    if result.contact is not None:
+        k_n = result.contact.stiffness
+    else:
+        i = int(np.argmax(result.deflection))
+        k_n = float(force[i] / result.deflection[i])
+    return SampledNormal(result.t, impulse, force, k_n)
+
+
+@dataclass(frozen=True, eq=False)
+class NormalImpact:
+    """The normal impact an oblique one builds on (shared by every spin and friction at one
+    normal speed).
+
+    Attributes
+    ----------
+    result : ImpactResult or ClampedImpact
+    history : NormalHistory
+        Its force history.
+    ball_mass : float
+        m [kg].
+    racket_mass : float
+        M_t [kg], the tangential effective mass (``math.inf``: clamped head).
+    contact : LinearContact or None
+        A clamped head's K_CB and zeta.
+    """
+
+    result: ImpactResult | ClampedImpact
+    history: NormalHistory
+    ball_mass: float
+    racket_mass: float
+    contact: LinearContact | None = None
+
+    @property
+    def rebound_speed(self) -> float:
+        """Normal speed of the ball away from the strings after impact [m/s]."""
+        if isinstance(self.result, ClampedImpact):
+            return -self.result.rebound_velocity
+        return self.result.ball_speed_out
+
+
+def oblique_on(normal: NormalImpact, incidence: Incidence, speed: float) -> ObliqueResult:
+    """The oblique impact of ``incidence`` at ``speed`` [m/s] over its computed normal impact
+    (at the normal speed ``speed cos(angle)``)."""
+    v_t = incidence.components(speed)[1]
+    motion = BallMotion(normal.ball_mass, v_t, normal.rebound_speed, normal.racket_mass)
+    out = tangential_impact(incidence, normal.history, motion)
+    return ObliqueResult(normal.result, out, speed, normal.contact)
+
+
+def free_normal(result: ImpactResult) -> NormalImpact:
+    """The normal impact of a free racket, computed with histories."""
+    return NormalImpact(result, normal_history(result), result.ball.mass, result.model.props.mass)
+
+
+def solve_oblique(solver: Any, problem: ImpactProblem) -> ObliqueResult:
+    """Solve an oblique ``problem`` with ``solver`` (a :class:`~fem_racket.impact.solvers.Solver`,
+    which calls this for a problem with an incidence): its normal impact
+    (:func:`fem_racket.impact.incidence.head_on`), then the tangential contact over it."""
+    normal = free_normal(solver.solve(head_on(problem)))
+    return oblique_on(normal, problem.incidence, problem.impact.speed)
+
+
+#: What a clamped head takes besides the incidence and the speed.
+CLAMPED_ARGS = ("ball_mass", "kcb", "zeta", "separation")
+
+
+def clamped_normal(frame: Any, v_n: float, kwargs: dict) -> NormalImpact:
+    """The normal impact on a clamped head at ``v_n`` [m/s]: the paper's spring-dashpot in
+    closed form (eqs 1-3); ``kwargs`` only ``ball_mass``, ``kcb``, ``zeta``, ``separation``
+    (``frame`` must be None)."""
+    extra = sorted(set(kwargs) - set(CLAMPED_ARGS))
+    if frame is not None or extra:
+        name = "frame" if frame is not None else extra[0]
+        raise InputError(
+            f"{name} is not allowed with a clamped head: it takes only {', '.join(CLAMPED_ARGS)}"
+        )
+    separation = check_choice(
+        "separation", kwargs.get("separation", "displacement"), ("displacement", "force")
+    )
+    ball = Ball() if kwargs.get("ball_mass") is None else Ball(kwargs["ball_mass"])
+    contact = LinearContact.for_speed(v_n, kcb=kwargs.get("kcb"), zeta=kwargs.get("zeta"))
+    history = ClampedNormal(ball.mass, contact.stiffness, contact.zeta, v_n)
+    eqs = clamped_impact(ball.mass, contact.stiffness, contact.zeta, v_n)
+    if separation == "force":  # contact ends as the force returns to zero (DESIGN.md section 1)
+        out = history.rebound_speed()
+        eqs = ClampedImpact(eqs.omega_n, eqs.omega_d, history.end, -out, out / v_n)
+    return NormalImpact(eqs, history, ball.mass, math.inf, contact)

@@ -1,0 +1,155 @@
+"""Oblique impacts over a grid of incidence angle, incoming spin and friction.
+
+Each incidence angle sets one normal speed V cos(angle), so its normal impact
+(:func:`fem_racket.impact.simulate_oblique.normal_impact`) is computed once and every spin and
+friction at that angle marches only the tangential contact over its force history (milliseconds
+each).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.oblique import oblique_on
+from fem_racket.impact.simulate_oblique import normal_impact
+from fem_racket.validation import InputError, check_positive
+
+__all__ = ["OUTPUTS", "ObliqueSweep", "oblique_map", "oblique_sweep"]
+
+#: Scalar outputs of each case (keys of :meth:`fem_racket.impact.oblique.ObliqueResult.summary`).
+OUTPUTS = (
+    "ball_speed_out_m_s",
+    "angle_out_deg",
+    "spin_out_rpm",
+    "tangential_cor",
+    "cor",
+    "contact_time_s",
+)
+
+
+@dataclass(frozen=True)
+class ObliqueSweep:
+    """Outputs over the grid, each of shape (angles, spins, frictions).
+
+    Attributes
+    ----------
+    angle_deg, spin_rpm, friction : ndarray
+        The axes.
+    outputs : dict of str to ndarray
+        :data:`OUTPUTS` (floats) and ``contact_regime`` (strings).
+    """
+
+    angle_deg: np.ndarray
+    spin_rpm: np.ndarray
+    friction: np.ndarray
+    outputs: dict[str, np.ndarray]
+
+    def __getitem__(self, key: str) -> np.ndarray:
+        return self.outputs[key]
+
+
+def _axis(name: str, values: Any) -> np.ndarray:
+    a = np.atleast_1d(np.asarray(values, dtype=float))
+    if a.ndim != 1 or a.size == 0:
+        raise InputError(f"{name} = {values!r} is not allowed: must be one or more numbers")
+    return a
+
+
+def oblique_sweep(
+    frame: Any = None,
+    *,
+    angles: Any,
+    spins: Any = (0.0,),
+    frictions: Any = None,
+    speed: float = 20.0,
+    base: Incidence | None = None,
+    clamped: bool = False,
+    **kwargs: Any,
+) -> ObliqueSweep:
+    """Oblique impacts at every (angle, spin, friction).
+
+    Parameters
+    ----------
+    frame : optional
+        The racket (as :func:`fem_racket.impact.simulate.simulate`); None with ``clamped``.
+    angles : sequence of float
+        Incidence angles from the face normal [deg].
+    spins : sequence of float
+        Incoming spins [rpm], positive = topspin.
+    frictions : sequence of float, optional
+        Friction coefficients; the ``base`` incidence's when None.
+    speed : float
+        Incident ball speed [m/s].
+    base : Incidence, optional
+        Ball inertia, radius, eta^2 (and friction when ``frictions`` is None).
+    clamped : bool
+        A clamped head instead of the free racket.
+    **kwargs
+        The normal impact's other arguments
+        (:func:`fem_racket.impact.simulate_oblique.normal_impact`).
+    """
+    base = Incidence() if base is None else base
+    a = _axis("angles", angles)
+    s = _axis("spins", spins)
+    f = _axis("frictions", (base.friction,) if frictions is None else frictions)
+    v = check_positive("speed", speed, "m/s")
+    shape = (a.size, s.size, f.size)
+    out = {k: np.empty(shape) for k in OUTPUTS}
+    regime = np.empty(shape, dtype=object)
+    cases = [dataclasses.replace(base, angle=x) for x in a]  # checks every angle first
+    for i, inc in enumerate(cases):
+        normal = normal_impact(frame, inc.components(v)[0], clamped=clamped, **kwargs)
+        for j, spin in enumerate(s):
+            for k, mu in enumerate(f):
+                res = oblique_on(normal, dataclasses.replace(inc, spin=spin, friction=mu), v)
+                summary = res.summary()
+                for key in OUTPUTS:
+                    out[key][i, j, k] = summary[key]
+                regime[i, j, k] = summary["contact_regime"]
+    return ObliqueSweep(a, s, f, {**out, "contact_regime": regime})
+
+
+def oblique_map(
+    frame: Any = None,
+    *,
+    positions: Any,
+    incidence: Incidence,
+    speed: float = 20.0,
+    **kwargs: Any,
+) -> dict[str, np.ndarray]:
+    """The oblique outcome over impact points along the face of the free racket.
+
+    Parameters
+    ----------
+    frame : optional
+        The racket (as :func:`fem_racket.impact.simulate.simulate`).
+    positions : sequence of float
+        Impact points x/L.
+    incidence : Incidence
+        The ball's angle, spin and the contact's parameters.
+    speed : float
+        Incident ball speed [m/s].
+    **kwargs
+        The normal impact's other arguments.
+
+    Returns
+    -------
+    dict of str to ndarray
+        ``position_x_over_l`` and :data:`OUTPUTS` (floats), ``contact_regime`` (strings), each
+        of shape (positions,).
+    """
+    x = _axis("positions", positions)
+    v = check_positive("speed", speed, "m/s")
+    v_n = incidence.components(v)[0]
+    rows = [
+        oblique_on(normal_impact(frame, v_n, position=p, **kwargs), incidence, v).summary()
+        for p in x
+    ]
+    out = {key: np.array([r[key] for r in rows]) for key in OUTPUTS}
+    regime = np.array([r["contact_regime"] for r in rows], dtype=object)
+    return {"position_x_over_l": x, **out, "contact_regime": regime}
