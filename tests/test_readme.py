@@ -112,7 +112,6 @@ def _params():
 def test_readme_example_output(capsys, monkeypatch, tmp_path, steps):
     monkeypatch.chdir(tmp_path)  # an example that writes a file writes it here
     (tmp_path / "meshes").symlink_to(README.parent / "meshes")
-    (tmp_path / "examples").symlink_to(README.parent / "examples")  # the files examples read
     for argv, printed in steps:
         assert argv[0] == "fem-racket"
         code = main(argv[1:])

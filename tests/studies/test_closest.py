@@ -18,7 +18,7 @@ from fem_racket.studies.closest import Listed, closest, distance, predicted
 from fem_racket.studies.customise import Target
 from fem_racket.validation import InputError
 
-EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "rackets.csv"
+EXAMPLE = Path(__file__).resolve().parents[2] / "meshes" / "rackets.csv"
 
 
 def listed(name, mass, balance, sw, tw=None):

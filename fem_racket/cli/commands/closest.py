@@ -1,6 +1,6 @@
 """``fem-racket closest``: the listed rackets nearest a target, and the least lead for each.
 
-``fem-racket closest examples/rackets.csv --swing-weight 330 --balance 0.32 --mass 0.33:0.34``
+``fem-racket closest meshes/rackets.csv --swing-weight 330 --balance 0.32 --mass 0.33:0.34``
 ranks the CSV's rackets (:mod:`fem_racket.io.racket_table`) by their scaled distance to the
 targets and gives each of the nearest its least customisation with lead at ``--places``
 (:mod:`fem_racket.studies.closest`).
@@ -28,7 +28,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "swing_weight_kg_cm2; optional twist_weight_kg_cm2, stiffness_ra, f1_hz) by their "
         "distance to the targets (each a value or LOW:HIGH) and find the least lead bringing "
         "each of the nearest to the mass, balance, swing-weight and twistweight targets. "
-        "Example: fem-racket closest examples/rackets.csv --swing-weight 330 --balance 0.32",
+        "Example: fem-racket closest meshes/rackets.csv --swing-weight 330 --balance 0.32",
     )
     p.add_argument(
         "rackets", nargs="?", default=None, metavar="CSV", help="the racket list (a CSV file)"
