@@ -15,6 +15,7 @@ import dataclasses
 import math
 from typing import Any
 
+from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.io.config_keys import CORE_KEYS
@@ -37,10 +38,11 @@ HAND_KEYS = {
 #: Options (argparse dests) the hand-held racket does not take: it keeps its modes by the
 #: tolerance or all its DOFs and ends contact when the spring deflection falls to zero.
 NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
-#: The options of :func:`fem_racket.simulate` a file may set, with the command's defaults
-#: (``SIMULATE_DEFAULTS`` of the command line; ``tests/io/test_config_run.py`` compares them).
+#: The options of :func:`fem_racket.simulate` a file or the command line may set, with their
+#: defaults (the command line's parser states them too; ``tests/io/test_config_run.py`` compares
+#: them): an option at its default that was not given is left to the library.
 DEFAULTS: dict[str, Any] = {
-    "ball_mass": None,
+    "ball_mass": DEFAULT_BALL_MASS,
     "kcb": None,
     "zeta": None,
     "solver": "auto",

@@ -18,6 +18,7 @@ from fem_racket.impact.settings import BASES
 from fem_racket.impact.solvers import SOLVER_NAMES, auto_method
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.io.config_run import DEFAULTS as SIMULATE_DEFAULTS
 from fem_racket.validation import InputError, show
 
 __all__ = [
@@ -290,25 +291,6 @@ def check_output_step(value: float) -> float:
             f"output_step = {show(value)} s is not allowed: must be a finite number > 0"
         )
     return value
-
-
-#: The options of :func:`fem_racket.simulate` the parser gives, with the parser's defaults: an
-#: option at its default that the command line did not give is left to the library (so that one
-#: a solver or law does not use is refused only when it was asked for).
-SIMULATE_DEFAULTS: dict[str, Any] = {
-    "offset": 0.0,
-    "ball_mass": None,
-    "kcb": None,
-    "zeta": None,
-    "solver": "auto",
-    "separation": "displacement",
-    "basis": "modal",
-    "modes": DEFAULT_MODES,
-    "tolerance": DEFAULT_TOLERANCE,
-    "t_max": None,
-    "rtol": 1e-10,
-    "atol": 1e-12,
-}
 
 
 def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
