@@ -20,18 +20,21 @@ its solver).
 from __future__ import annotations
 
 import argparse
-import csv
-import json
 import math
 from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
-from fem_racket.cli.options.output import print_json, print_written, run_parameters, write_json
+from fem_racket.cli.options.output import (
+    print_json,
+    print_written,
+    run_parameters,
+    write_result_files,
+)
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.strung_impact import StrungImpact
-from fem_racket.outputs import Target, atomic_outputs, provenance
+from fem_racket.outputs import provenance
 from fem_racket.strings.bed import EDGES, StringBed, parse_pattern
 from fem_racket.strings.materials import STRINGS
 from fem_racket.validation import InputError, check_positive, show
@@ -167,20 +170,7 @@ def _histories(result: StrungImpact) -> dict[str, Any]:
 def _write(args: argparse.Namespace, result: StrungImpact, summary: dict, files: list) -> None:
     meta = provenance(run_parameters(args))
     meta["used"] = summary
-    history = _histories(result)
-    if len(files) == 1:
-        data = {"provenance": meta, "summary": summary}
-        history = {k: v.tolist() for k, v in history.items()}
-        write_json(args.out, {**data, "history": history}, overwrite=args.overwrite)
-        return
-    with atomic_outputs([Target(f) for f in files], overwrite=args.overwrite) as (tmp, side):
-        with open(tmp, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(history)
-            for row in zip(*history.values(), strict=True):
-                w.writerow([repr(float(v)) for v in row])
-        text = json.dumps({**meta, "summary": summary}, indent=2, default=str)
-        side.write_text(text + "\n", encoding="utf-8")
+    write_result_files(args, meta, summary, files, _histories(result))
 
 
 def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
