@@ -7,11 +7,11 @@ stationary free racket's COR there is e_A(x), and the ball leaves at
 v_out(x) = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11; exact for the linear
 law, :mod:`fem_racket.impact.swing`). Sweet spots: :mod:`fem_racket.studies.sweetspots`.
 
-:func:`apparent_cor_along` is the one place the impacts are solved: one call of the batched
-engine (:func:`fem_racket.impact.exact.engine.impacts`) for the whole grid, frame modes computed
-once; under a contact law other than the paper's, one batch of the general integrator
-(:func:`fem_racket.impact.general.integrator.solve_general`, every mode available, those far above
-the contact frequency as one residual mode). The identity for v_out holds for any law: the impact
+:func:`apparent_cor_along` is the one place the impacts are solved: the whole grid as one
+:class:`~fem_racket.impact.problem_batch.ProblemBatch` that the solver answers (the exact
+solver's batched engine, frame modes computed once; under a contact law other than the paper's,
+the general solver's one integrator call, every mode available, those far above the contact
+frequency as one residual mode). The identity for v_out holds for any law: the impact
 of a swinging free racket is the stationary one at the closing speed
 (:mod:`fem_racket.studies.law_cases` derives it), e_A depending on that speed.
 """
@@ -28,9 +28,9 @@ from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, impacts
-from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.law_impact import receptance
+from fem_racket.impact.problem_batch import ProblemBatch
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.impact.solvers import make_solver
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.sweetspots import (
@@ -101,25 +101,24 @@ def apparent_cor_along(
     x = np.atleast_1d(np.asarray(positions, dtype=float))
     v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
     if law is not None:
-        out = solve_general(law, receptance(model, x, ball_mass), v, tolerance=tolerance)
-        return -out.ball_velocity / v
+        batch = ProblemBatch((model,), x.ravel(), v.ravel(), ball_mass=ball_mass, law=law)
+        return make_solver("general", tolerance=tolerance).solve_many(batch).cor.reshape(x.shape)
     if kcb_factor != 1.0:
         check_positive("kcb_factor", kcb_factor, "")
         if kcb is None:
             kcb = np.array([kcb_from_speed(s) for s in v.ravel()]).reshape(v.shape)
         kcb = kcb * kcb_factor
-    batch = impacts(
-        model,
-        position=x,
-        speed=v,
-        kcb=kcb,
-        zeta=zeta,
+    batch = ProblemBatch(
+        (model,),
+        x.ravel(),
+        v.ravel(),
         ball_mass=ball_mass,
+        kcb=None if kcb is None else np.broadcast_to(kcb, x.shape).ravel(),
+        zeta=zeta,
         separation=separation,
-        tolerance=tolerance,
-        modes=modes,
     )
-    return np.asarray(batch.cor, dtype=float).reshape(x.shape)
+    solver = make_solver("exact", tolerance=tolerance, modes=modes)
+    return solver.solve_many(batch).cor.reshape(x.shape)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
