@@ -29,7 +29,9 @@ import numpy as np
 from fem_racket.impact.exact.engine import impacts
 from fem_racket.impact.general.batches import stack_receptances
 from fem_racket.impact.general.integrator import solve_general
+from fem_racket.impact.incidence import head_on
 from fem_racket.impact.law_impact import receptance
+from fem_racket.impact.oblique import free_normal, oblique_on
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import Settings
 from fem_racket.impact.swing import ball_speed_out, closing_speed
@@ -153,30 +155,80 @@ def law_batch(batch: ProblemBatch, settings: Settings) -> BatchOutcome:
     return BatchOutcome(**out)
 
 
+#: The outcome's extra fields of a string bed and of an oblique impact.
+STRUNG_EXTRA = ("stringbed_stiffness_n_m", "stringbed_frequency_hz")
+OBLIQUE_EXTRA = ("ball_speed_out_m_s", "angle_out_deg", "spin_out_rpm", "tangential_cor")
+
+
+def _normal_key(batch: ProblemBatch, i: int, frame: tuple) -> tuple:
+    """What case ``i``'s normal impact depends on: all but its spin and friction."""
+    law = batch.law
+    params = () if law is None else tuple(
+        float(np.asarray(getattr(law, p.field))[i]) if np.ndim(getattr(law, p.field)) == 1
+        else getattr(law, p.field)
+        for p in law.declared
+    )  # fmt: skip
+    columns = (batch.position, batch.offset, batch.speed, batch.ball_mass, batch.kcb, batch.zeta)
+    numbers = tuple(None if c is None else float(c[i]) for c in columns)
+    swing = None if batch.swing is None else tuple(batch.swing[i])
+    return (frame, numbers, swing, params, batch.incidence[i].angle)
+
+
+def _solve_case(solver: Any, batch: ProblemBatch, i: int, model: Any, normals: dict) -> tuple:
+    """(problem, result, its normal impact's result) of case ``i``; an oblique case over the
+    normal impact it shares with the batch's other spins and frictions at its angle."""
+    problem = batch.problem(i, model)
+    solver.check(problem)
+    if problem.incidence is None:
+        r = solver._outcome(problem)
+        return problem, r, r
+    key = _normal_key(batch, i, (int(batch.frame[i]), float(batch.ei_factor[i])))
+    if key not in normals:
+        normals[key] = free_normal(solver._outcome(head_on(problem)))
+    r = oblique_on(normals[key], problem.incidence, problem.impact.speed)
+    return problem, r, r.normal
+
+
 def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
-    """Every case of a batch as its own problem by ``solver`` (checked; the ODE solvers), the
-    peak force the largest over the solver's output times."""
-    out = _nan(len(batch))
+    """Every case of a batch as its own problem by ``solver`` (checked; the ODE solvers, and
+    every solver on a string bed or an oblique ball), the peak force the largest over the
+    solver's output times; oblique cases at one angle share their normal impact."""
+    n = len(batch)
+    out = _nan(n)
+    names = (STRUNG_EXTRA if batch.strings is not None else ()) + (
+        OBLIQUE_EXTRA if batch.incidence is not None else ()
+    )
+    extra = {k: np.full(n, np.nan) for k in names}
+    if batch.incidence is not None:
+        extra["contact_regime"] = np.full(n, "", dtype=object)
     modes = solver.options.settings().modes
     models: dict[tuple, Any] = {}
-    for i in range(len(batch)):
+    normals: dict[tuple, Any] = {}
+    for i in range(n):
         key = (int(batch.frame[i]), float(batch.ei_factor[i]))
         if key not in models:
             base = batch.models[key[0]]
             base.modes(modes)  # once per frame: its scalings reuse them
             models[key] = base if key[1] == 1.0 else base.scaled(key[1])
-        problem = batch.problem(i, models[key])
-        out["racket_speed"][i] = problem.racket_speed
         try:
-            solver.check(problem)
-            r = solver._outcome(problem)
+            problem, r, normal = _solve_case(solver, batch, i, models[key], normals)
         except (NoSeparationError, AccuracyError, RuntimeError, np.linalg.LinAlgError) as exc:
             log.warning("case %d of the batch failed (NaN in the results): %s", i, exc)
             continue
-        kcb = problem.contact().stiffness if problem.linear else np.nan
-        modes_kept = np.nan if r.n_modes is None else r.n_modes  # None: the physical basis
-        row = (r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb)
-        for name, value in zip(_FIELDS[:5], row, strict=True):
+        out["racket_speed"][i] = problem.racket_speed
+        if problem.strings is not None:
+            row = (r.cor, r.contact_time, r.cor * r.speed, r.peak_force, np.nan, np.nan)
+            extra["stringbed_stiffness_n_m"][i] = r.point.bed_stiffness
+            extra["stringbed_frequency_hz"][i] = r.point.bed_frequencies_hz[0]
+        else:
+            kcb = problem.contact().stiffness if problem.linear else np.nan
+            kept = np.nan if normal.n_modes is None else normal.n_modes  # None: physical basis
+            row = (normal.cor, normal.contact_time, normal.ball_speed_out, normal.peak_force)
+            row += (kcb, kept)
+        for name, value in zip((*_FIELDS[:5], "modes"), row, strict=True):
             out[name][i] = value
-        out["modes"][i] = modes_kept
-    return BatchOutcome(**out)
+        if problem.incidence is not None:
+            summary = r.summary()
+            for name in (*OBLIQUE_EXTRA, "contact_regime"):
+                extra[name][i] = summary[name]
+    return BatchOutcome(**out, extra=extra)

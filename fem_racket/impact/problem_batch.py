@@ -18,7 +18,7 @@ v_r = v + omega x.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -26,8 +26,10 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem import SEPARATIONS, Impact, ImpactProblem
 from fem_racket.impact.swing import Swing
+from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["BatchOutcome", "ProblemBatch"]
@@ -77,6 +79,10 @@ class ProblemBatch:
     peak_force : bool
         Whether the outcome holds the largest contact force (the engine computes it only when
         asked).
+    strings : sequence of StringBed, or None
+        Each case's string bed (:attr:`ImpactProblem.strings`); None: the lumped K_CB.
+    incidence : sequence of Incidence, or None
+        Each case's oblique, spinning ball (:attr:`ImpactProblem.incidence`); None: head-on.
     """
 
     models: tuple[FrameModel, ...]
@@ -92,6 +98,8 @@ class ProblemBatch:
     separation: str | None = None
     swing: Any = None
     peak_force: bool = False
+    strings: Any = None
+    incidence: Any = None
 
     def __post_init__(self) -> None:
         models = tuple(self.models)
@@ -127,6 +135,19 @@ class ProblemBatch:
         if self.swing is not None:
             swing = np.asarray(self.swing, dtype=float)
             set_(self, "swing", np.broadcast_to(swing, (n, 2)))
+        for name, kind in (("strings", StringBed), ("incidence", Incidence)):
+            value = getattr(self, name)
+            if value is None:
+                continue
+            value = tuple(value)
+            if len(value) != n or not all(isinstance(v, kind) for v in value):
+                raise InputError(f"{name} is not allowed: must be {n} {kind.__name__}s, one a case")
+            set_(self, name, value)
+
+    @property
+    def per_case(self) -> bool:
+        """True when the cases carry a string bed or an incidence (solved one by one)."""
+        return self.strings is not None or self.incidence is not None
 
     def __len__(self) -> int:
         return int(self.position.size)
@@ -185,7 +206,9 @@ class ProblemBatch:
             zeta=None if self.zeta is None else float(self.zeta[i]),
             separation=self.separation,
             swing=swing,
+            strings=None if self.strings is None else self.strings[i],
             offset=float(self.offset[i]),
+            incidence=None if self.incidence is None else self.incidence[i],
         )
 
 
@@ -209,6 +232,11 @@ class BatchOutcome:
         v_r [m/s].
     modes : ndarray
         Flexible modes kept (NaN for the physical basis).
+    extra : dict of str to ndarray
+        Outputs of the string bed (``stringbed_stiffness_n_m``, ``stringbed_frequency_hz``) or
+        of the oblique impact (``ball_speed_out_m_s``, ``angle_out_deg``, ``spin_out_rpm``,
+        ``tangential_cor``, ``contact_regime`` as strings); empty otherwise. With an incidence
+        the fields above are the normal impact's (at V cos(angle)).
     """
 
     cor: np.ndarray
@@ -218,6 +246,7 @@ class BatchOutcome:
     kcb: np.ndarray
     racket_speed: np.ndarray
     modes: np.ndarray
+    extra: dict = field(default_factory=dict)
 
     def columns(self) -> np.ndarray:
         """The fields as columns, shape (cases, 7), in the order of the attributes."""

@@ -60,9 +60,12 @@ class ExactSolver(Solver):
 
     def _check_batch(self, batch: ProblemBatch) -> None:
         super()._check_batch(batch)
-        self._refuse_law(batch)
+        if not batch.per_case:  # a string bed's ball law: checked case by case
+            self._refuse_law(batch)
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
+        if batch.per_case:
+            return each_batch(self, batch)
         return engine_batch(batch, self.options.settings())
 
     def _solve(self, problem: ImpactProblem) -> Any:
@@ -89,13 +92,15 @@ class GeneralSolver(Solver):
 
     def _check_batch(self, batch: ProblemBatch) -> None:
         super()._check_batch(batch)
-        if batch.law is None:
+        if batch.law is None and not batch.per_case:
             raise InputError(
                 "solver = 'general' is not allowed with a ProblemBatch under the paper's law: "
                 "use 'exact' (its batched engine)"
             )
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
+        if batch.per_case:
+            return each_batch(self, batch)
         return law_batch(batch, self.options.settings())
 
     def _solve(self, problem: ImpactProblem) -> Any:

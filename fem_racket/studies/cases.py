@@ -32,8 +32,25 @@ from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.solvers import Solver, make_solver
 from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec
 from fem_racket.studies.law_cases import case_swings
+from fem_racket.studies.sweep_physics import (
+    OBLIQUE_AXES,
+    STRING_AXES,
+    case_beds,
+    case_incidences,
+    given,
+    regime_code,
+)
 
-__all__ = ["COLUMNS", "MODES_COLUMN", "VARIABLES", "clear_caches", "result_variables", "run_chunk"]
+__all__ = [
+    "ALL_VARIABLES",
+    "AXIS_VARIABLES",
+    "COLUMNS",
+    "MODES_COLUMN",
+    "VARIABLES",
+    "clear_caches",
+    "result_variables",
+    "run_chunk",
+]
 
 log = logging.getLogger(__name__)
 
@@ -46,18 +63,50 @@ VARIABLES: dict[str, tuple[str, str]] = {
     "kcb_n_m": ("N/m", "ball/string stiffness K_CB used"),
     "racket_speed_at_impact_m_s": ("m/s", "impact point's speed towards the ball before impact"),
 }
-#: Column of the peak force in a chunk's results (computed only when asked).
-PEAK_COLUMN = list(VARIABLES).index("peak_force_n")
+#: Result variables of the string-bed and oblique axes (only with them): name -> (units,
+#: description).
+AXIS_VARIABLES: dict[str, tuple[str, str]] = {
+    # with a string bed (string_tension, pattern)
+    "stringbed_stiffness_n_m": ("N/m", "string bed's static stiffness at the impact point"),
+    "stringbed_frequency_hz": ("Hz", "string bed's first frequency"),
+    # with an oblique ball (angle, spin, friction); cor ... peak_force_n: its normal impact
+    "ball_speed_out_m_s": ("m/s", "ball speed after an oblique impact (normal and tangential)"),
+    "angle_out_deg": ("deg", "ball's outgoing angle from the face normal"),
+    "spin_out_rpm": ("rpm", "ball's outgoing spin, positive = topspin"),
+    "tangential_cor": ("1", "tangential coefficient of restitution"),
+    "contact_regime": ("1", "contact regime: phases, negative when the first grips"),
+}
+#: The variables of a string bed, and of an oblique ball (only with their axes).
+STRUNG_VARIABLES = ("stringbed_stiffness_n_m", "stringbed_frequency_hz")
+OBLIQUE_VARIABLES = (
+    "ball_speed_out_m_s",
+    "angle_out_deg",
+    "spin_out_rpm",
+    "tangential_cor",
+    "contact_regime",
+)
 #: Columns of a chunk's results: the :data:`VARIABLES`, then the flexible modes the solver kept
 #: for each case (the dataset's ``modes_kept`` attribute, not a variable; NaN for the physical
 #: basis and for a failed case).
-COLUMNS = (*VARIABLES, "modes_kept")
+COLUMNS = (*VARIABLES, *AXIS_VARIABLES, "modes_kept")
+#: Every result variable, in column order.
+ALL_VARIABLES = {**VARIABLES, **AXIS_VARIABLES}
 MODES_COLUMN = COLUMNS.index("modes_kept")
 
 
 def result_variables(spec: SweepSpec) -> list[str]:
-    """The variables a sweep's dataset holds (the peak force only when asked)."""
-    return [v for v in VARIABLES if spec.peak_force or v != "peak_force_n"]
+    """The variables a sweep's dataset holds (the peak force only when asked, those of a
+    string bed or an oblique ball only with their axes)."""
+    left_out = set()
+    if not spec.peak_force:
+        left_out.add("peak_force_n")
+    if not given(spec.values, STRING_AXES):
+        left_out.update(STRUNG_VARIABLES)
+    else:  # the bed replaces the lumped K_CB
+        left_out.add("kcb_n_m")
+    if not given(spec.values, OBLIQUE_AXES):
+        left_out.update(OBLIQUE_VARIABLES)
+    return [v for v in ALL_VARIABLES if v not in left_out]
 
 
 #: Output step of the BDF solvers in sweeps [s] (their peak force is the maximum over it).
@@ -126,11 +175,15 @@ def chunk_problems(spec: SweepSpec, chunk: np.ndarray) -> ProblemBatch:
         separation=spec.separation if spec.law is None else None,
         swing=case_swings(p, n, lengths),
         peak_force=spec.peak_force,
+        strings=case_beds(p, n),
+        incidence=case_incidences(p, n),
     )
 
 
 def sweep_solver(spec: SweepSpec) -> Solver:
     """The solver of a sweep, with the sweep's options."""
+    if given(spec.values, STRING_AXES):  # the strung racket keeps every mode
+        return make_solver(spec.solver, **_strung_options(spec))
     if spec.solver == "exact":
         return make_solver("exact", tolerance=spec.tolerance, modes=spec.modes)
     if spec.solver == "general":
@@ -139,6 +192,13 @@ def sweep_solver(spec: SweepSpec) -> Solver:
     if spec.law is None:  # the paper's law: its modes, basis, and the peak force over 1 us
         options.update(basis=spec.basis, modes=spec.modes, output_step=BDF_OUTPUT_STEP)
     return make_solver(spec.solver, **options)
+
+
+def _strung_options(spec: SweepSpec) -> dict[str, Any]:
+    """The options of the sweep's solver on the strung racket (:mod:`.sweep_physics`)."""
+    if spec.solver == "general":
+        return {"tolerance": spec.tolerance}
+    return {"rtol": spec.rtol, "atol": spec.atol} if spec.solver == "cvode" else {}
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
@@ -150,12 +210,21 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     gets NaN in every variable (the sweep reports how many); any other error stops the sweep.
     """
     chunk = np.asarray(chunk)
-    out = sweep_solver(spec).solve_many(chunk_problems(spec, chunk)).columns()
-    # K_CB is NaN under another contact law than the paper's (it has none)
+    outcome = sweep_solver(spec).solve_many(chunk_problems(spec, chunk))
+    out = np.full((chunk.size, len(COLUMNS)), np.nan)
+    base = outcome.columns()
+    out[:, : len(VARIABLES)] = base[:, :-1]
+    out[:, MODES_COLUMN] = base[:, -1]
+    for name, values in outcome.extra.items():
+        if name == "contact_regime":
+            values = [regime_code(v) for v in values]
+        out[:, COLUMNS.index(name)] = values
+    # K_CB is NaN under another contact law than the paper's (it has none); the tangential
+    # COR is NaN without tangential speed (head-on without spin: 0/0)
     computed = [
-        k
-        for k, v in enumerate(VARIABLES)
-        if (spec.peak_force or k != PEAK_COLUMN) and (spec.law is None or v != "kcb_n_m")
+        COLUMNS.index(v)
+        for v in result_variables(spec)
+        if (spec.law is None or v != "kcb_n_m") and v != "tangential_cor"
     ]
     out[~np.all(np.isfinite(out[:, computed]), axis=1)] = np.nan
     failed = np.flatnonzero(np.isnan(out[:, 0]))

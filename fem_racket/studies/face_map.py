@@ -179,8 +179,8 @@ def face_map(
     opts.setdefault("tolerance", DEFAULT_TOLERANCE)
     opts["ball_mass"] = Ball(opts.get("ball_mass") or DEFAULT_BALL_MASS).mass
     speed = check_positive("speed", speed, "m/s")
-    x = _increasing("positions", positions, 2)
-    y = _increasing("offsets", offsets, 2)
+    x = increasing("positions", positions, 2)
+    y = increasing("offsets", offsets, 2)
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
     length = model.mesh.length
     head = head.on_frame(length)
@@ -207,7 +207,8 @@ def face_map(
     )  # fmt: skip
 
 
-def _increasing(name: str, values: Any, minimum: int) -> np.ndarray:
+def increasing(name: str, values: Any, minimum: int) -> np.ndarray:
+    """``values`` as an array of at least ``minimum`` increasing finite numbers, or refused."""
     v = np.atleast_1d(np.asarray(values, dtype=float))
     if v.size < minimum or not np.all(np.isfinite(v)) or np.any(np.diff(v) <= 0.0):
         raise InputError(

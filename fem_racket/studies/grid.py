@@ -41,6 +41,7 @@ from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.grid_values import (
     LAW_PARAMETERS,
+    OPTIONAL,
     PARAMETERS,
     Parameter,
     as_values,
@@ -50,6 +51,7 @@ from fem_racket.studies.grid_values import (
 )
 from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
+from fem_racket.studies.sweep_physics import check_physics
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -192,6 +194,9 @@ class SweepSpec:
             spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
         )
         spec._check_rigidity()
+        frame_length = float((frame if frame is not None else standard_frame()).length)
+        options = {k: getattr(spec, k) for k in ("solver", "separation", "basis", "modes")}
+        check_physics(values, spec.law, {**options, "tolerance": spec.tolerance}, frame_length)
         spec._check_swings()
         spec._check_offsets()
         check_grid_size(spec.shape, spec.dims)
@@ -315,8 +320,10 @@ class SweepSpec:
         def plain(v: Any) -> Any:
             return v.tolist() if isinstance(v, np.ndarray) else v
 
-        return {
-            "values": {k: plain(v) for k, v in self.values.items()},
+        return {  # the string-bed and oblique axes only when given (digests stay as they were)
+            "values": {
+                k: plain(v) for k, v in self.values.items() if not (k in OPTIONAL and v is None)
+            },
             "ei2": self.ei2,
             "frame": self.frame_key,
             "solver": self.solver,

@@ -31,11 +31,12 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.outputs import atomic_output, check_output_path
+from fem_racket.outputs import atomic_output, atomic_outputs, check_output_path, sidecar_path
 from fem_racket.studies.cases import COLUMNS, VARIABLES, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, SweepSpec, chunks
+from fem_racket.studies.sweep_physics import OBLIQUE_AXES, STRING_AXES, given
 from fem_racket.studies.sweep_result import SweepResult
 from fem_racket.validation import InputError, check_choice, check_integer, show, work_begins
 
@@ -53,9 +54,14 @@ EXACT_CHUNK = 32768
 #: depend on the chunk; the size is fixed all the same, so every backend and a resumed run
 #: make the same batches and checkpoint files.
 LAW_CHUNK = 512
+#: Chunk of the string-bed and oblique cases (solved one by one; oblique cases at one angle
+#: share their normal impact within a chunk, which does not change their results).
+PER_CASE_CHUNK = 32
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
+    if given(spec.values, (*STRING_AXES, *OBLIQUE_AXES)):  # solved case by case
+        return PER_CASE_CHUNK
     if spec.solver == "general":  # batches of the general integrator (see LAW_CHUNK)
         return LAW_CHUNK
     # the engine (exact solver) takes big chunks
@@ -131,7 +137,8 @@ def sweep(
     peak_force : bool
         Also compute the largest contact force (variable ``peak_force_n``; costs more).
     output : path, optional
-        netCDF file to write (atomically). With it the sweep is resumable: finished cases are
+        netCDF file to write (atomically; a .csv path: a CSV table and its JSON sidecar).
+        With it the sweep is resumable: finished cases are
         kept in ``<output>.checkpoint/`` and a rerun with the same arguments continues.
     overwrite : bool
         Replace an existing ``output``.
@@ -172,6 +179,16 @@ def sweep(
 
 #: The keywords of :meth:`SweepSpec.build` besides the parameters.
 _SPEC_OPTIONS = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
+
+
+def _write(result: SweepResult, path: Path, overwrite: bool) -> None:
+    """The result file: CSV (+ its JSON sidecar) for a .csv path, else netCDF."""
+    if path.suffix.lower() == ".csv":
+        with atomic_outputs([path, sidecar_path(path)], overwrite=overwrite) as (tmp, side):
+            result.write_csv(tmp, side)
+    else:
+        with atomic_output(path, overwrite=overwrite) as tmp:
+            result.write(tmp)
 
 
 def sweep_result(
@@ -270,8 +287,7 @@ def sweep_result(
         if result.failed:
             log.warning("%d of %d cases failed: NaN in the dataset", result.failed, spec.size)
         if output is not None:
-            with atomic_output(Path(output), overwrite=overwrite) as tmp:
-                result.write(tmp)
+            _write(result, Path(output), overwrite)
             ckpt.remove()
             log.info("wrote %s", output)
     except BaseException as exc:

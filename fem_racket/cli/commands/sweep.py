@@ -48,6 +48,13 @@ _HELP = {
     "zeta": "ball/string damping ratio [-], 0..1 (default 0.0592: clamped COR 0.83)",
     "kcb": "ball/string stiffness K_CB [N/m] (default: from the speed)",
     "elements": "number of beam elements (default 20)",
+    "string_tension": "tension per string [N]: a string bed replaces the lumped K_CB "
+    "(default: none; with --pattern alone 246)",
+    "pattern": "string pattern MAINSxCROSSES [-], e.g. 16x19,18x20 (default: none; with "
+    "--string-tension alone 16x19)",
+    "angle": "incidence angle [deg] from the face normal: an oblique ball (default: head-on)",
+    "spin": "incoming spin [rpm], positive = topspin (default 0 with an oblique ball)",
+    "friction": "Coulomb friction ball/strings [-] (default 0.4 with an oblique ball)",
 }
 
 #: Plural spellings, as the commands taking one list of these spell them (map, optimize).
@@ -101,7 +108,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=Path,
         default=DEFAULT_OUTPUT,
         metavar="FILE",
-        help=f"output file: the netCDF result (default {DEFAULT_OUTPUT}, replacing the sweep an "
+        help=f"output file: the netCDF result, or a CSV table (+ JSON sidecar) for a .csv name "
+        f"(default {DEFAULT_OUTPUT}, replacing the sweep an "
         "earlier run wrote there)",
     )
     r.add_argument("--overwrite", action="store_true", help="replace an existing result file")
