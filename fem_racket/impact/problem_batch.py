@@ -110,6 +110,8 @@ class ProblemBatch:
         n = max(int(np.size(v)) for v in per_case)
         if self.swing is not None:
             n = max(n, int(np.size(self.swing)) // 2)
+        for objects in (self.strings, self.incidence):
+            n = max(n, 0 if objects is None else len(tuple(objects)))
         set_ = object.__setattr__
         set_(self, "position", _column("position", self.position, n))
         for name in ("speed", "ei_factor", "offset", "ball_mass"):
@@ -148,6 +150,37 @@ class ProblemBatch:
     def per_case(self) -> bool:
         """True when the cases carry a string bed or an incidence (solved one by one)."""
         return self.strings is not None or self.incidence is not None
+
+    @classmethod
+    def of(cls, problem: ImpactProblem, **per_case: Any) -> ProblemBatch:
+        """Copies of the free racket's ``problem`` that differ in ``per_case`` fields (numbers
+        or arrays; ``strings`` and ``incidence`` sequences of one object per case)."""
+        if problem.held or problem.frame_velocity is not None:
+            raise InputError(
+                "problem is not allowed in a ProblemBatch: it takes a free racket at rest or "
+                "swinging (no hand, no frame_velocity)"
+            )
+        swing = problem.swing
+        fields: dict[str, Any] = {
+            "position": problem.impact.position,
+            "speed": problem.impact.speed,
+            "offset": problem.offset,
+            "ball_mass": problem.ball.mass,
+            "kcb": problem.kcb,
+            "zeta": problem.zeta,
+            "law": problem.law,
+            "separation": problem.separation,
+            "swing": None if swing is None else (swing.velocity, swing.omega),
+        }
+        fields.update(per_case)
+        n = max(
+            [int(np.size(v)) for k, v in fields.items() if k in _PER_CASE and v is not None]
+            + [len(per_case.get(k, ())) for k in ("strings", "incidence")]
+        )
+        for name in ("strings", "incidence"):
+            if name not in per_case and getattr(problem, name) is not None:
+                fields[name] = (getattr(problem, name),) * n
+        return cls((problem.model,), **fields)
 
     def __len__(self) -> int:
         return int(self.position.size)
