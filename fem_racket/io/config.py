@@ -150,6 +150,21 @@ class RunConfig:
 
         return refine_file(self)
 
+    def export_vtk(self, out: str | os.PathLike | None = None) -> Path:
+        """Write the VTK series ``fem-racket export-vtk --config FILE`` writes (into ``out``,
+        else ``[vtk] out``); the ``.pvd`` path. See
+        :func:`fem_racket.io.config_drawings.vtk_file`."""
+        from fem_racket.io.config_drawings import vtk_file
+
+        return vtk_file(self, out)
+
+    def animate(self, out: str | os.PathLike | None = None) -> Path:
+        """Render the animation ``fem-racket animate --config FILE`` renders (to ``out``, else
+        ``[animate] out``); its path. See :func:`fem_racket.io.config_drawings.animate_file`."""
+        from fem_racket.io.config_drawings import animate_file
+
+        return animate_file(self, out)
+
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None
         (the standard racket with ``ei1_n_m2``/``ei2_n_m2``/preset applied)."""

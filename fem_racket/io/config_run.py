@@ -135,7 +135,9 @@ def _check_hand(cfg: RunConfig, d: dict[str, Any]) -> None:
             )
 
 
-def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
+def simulate_file(
+    cfg: RunConfig, *, histories: bool | None = None, output_step: float | None = None
+) -> Any:
     """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it.
 
     Parameters
@@ -144,6 +146,8 @@ def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     histories : bool, optional
         Compute the time histories (at ``[simulate] output_step``, 1e-5 s by default); by
         default when the file names an output, as the command does.
+    output_step : float, optional
+        The histories' step [s] instead of ``[simulate] output_step`` (export-vtk, animate).
 
     Returns
     -------
@@ -152,6 +156,11 @@ def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     from fem_racket.impact.simulate import simulate
 
     d = cfg.defaults()
+    if cfg.values.get("strings"):
+        raise InputError(
+            f"[strings] ({cfg.source}) is not allowed in RunConfig.simulate yet: run "
+            "fem-racket simulate --config for the string bed"
+        )
     if histories is None:
         histories = bool(cfg.table("simulate").get("out") or d.get("out"))
     hand = _hand(cfg)
@@ -172,7 +181,7 @@ def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
         kwargs["law"] = law
     if cfg.values.get("oblique"):  # the oblique impact, as simulate's --angle ...
         return _oblique(cfg, d, hand, model, swing, kwargs)
-    step = _output_step(cfg) if histories else None
+    step = (output_step or _output_step(cfg)) if histories else None
     if hand is not None:
         window = d.get("hand_shock_window")
         return simulate(

@@ -158,3 +158,45 @@ def test_sweep_axes_from_a_run_file_equal_the_command(cwd, capsys):
         for name in ("cor", "spin_out_rpm", "angle_out_deg", "contact_regime"):
             np.testing.assert_array_equal(back[name].values, ds[name].values)
         assert back.attrs["friction"] == 0.3 == ds.attrs["friction"]
+
+
+@pytest.mark.parametrize(("command", "table"), [("export-vtk", "vtk"), ("animate", "animate")])
+def test_the_drawing_defaults_are_the_commands(command, table):
+    from fem_racket.io.config_drawings import ANIMATE_DEFAULTS, VTK_DEFAULTS
+
+    defaults = VTK_DEFAULTS if table == "vtk" else ANIMATE_DEFAULTS
+    args = build_parser([command]).parse_args([command])
+    for dest, value in defaults.items():
+        assert getattr(args, dest) == value, dest
+
+
+def test_export_vtk_equals_the_command(cwd, capsys):
+    pytest.importorskip("pyvista")
+    import meshio
+
+    text = CORE.replace("racket_speed_m_s = 10\npivot_m = 0.1\n", "")  # it takes no swing
+    text += '[vtk]\nframes = 4\nsubdivide = 2\nscale = 3.0\noutput_step = 2e-5\nout = "a"\n'
+    (cwd / "run.toml").write_text(text)
+    assert main(["export-vtk", "--config", "run.toml", "--quiet"]) == 0
+    capsys.readouterr()
+    pvd = load_config(cwd / "run.toml").export_vtk(out=cwd / "b")
+    cli_files = sorted((cwd / "a").glob("*.vtu"))
+    assert [p.name for p in cli_files] == sorted(p.name for p in pvd.parent.glob("*.vtu"))
+    assert len(cli_files) >= 4
+    for path in cli_files:
+        ours, theirs = meshio.read(cwd / "b" / path.name), meshio.read(path)
+        # the same impact, to rounding (the command and the library sum the swing's and the
+        # deflection's terms in another order)
+        np.testing.assert_allclose(ours.points, theirs.points, rtol=1e-12, atol=1e-14)
+        for key, values in theirs.point_data.items():
+            np.testing.assert_allclose(ours.point_data[key], values, rtol=1e-9, atol=1e-14)
+
+
+def test_a_table_the_drawing_does_not_take_is_refused(cwd):
+    from fem_racket.validation import InputError
+
+    (cwd / "run.toml").write_text("[oblique]\nangle_deg = 30\n")
+    with pytest.raises(
+        InputError, match=r"^\[oblique\] \(.*\) is not allowed with fem-racket export"
+    ):
+        load_config(cwd / "run.toml").export_vtk(out=cwd / "b")
