@@ -23,6 +23,7 @@ from __future__ import annotations
 import logging
 from dataclasses import replace
 from typing import Any
+from weakref import WeakKeyDictionary
 
 import numpy as np
 
@@ -44,6 +45,25 @@ log = logging.getLogger(__name__)
 
 #: The outcome's fields, in :meth:`BatchOutcome.columns` order.
 _FIELDS = ("cor", "contact_time", "ball_speed_out", "peak_force", "kcb", "racket_speed", "modes")
+
+
+#: Each frame's scaled copies (EI x factor) made in this process, reused by the next batches
+#: (a sweep's EI axis scales one frame many times); forgotten with the frame.
+_SCALED: WeakKeyDictionary = WeakKeyDictionary()
+#: Most scaled copies kept per frame.
+SCALED_KEPT = 256
+
+
+def scaled(model: Any, factor: float) -> Any:
+    """``model`` with every EI times ``factor`` (itself for 1), its modes reused; cached."""
+    if factor == 1.0:
+        return model
+    copies = _SCALED.setdefault(model, {})
+    if factor not in copies:
+        if len(copies) >= SCALED_KEPT:
+            copies.clear()
+        copies[factor] = model.scaled(factor)
+    return copies[factor]
 
 
 def _nan(n: int) -> dict[str, np.ndarray]:
@@ -121,7 +141,7 @@ def law_batch(batch: ProblemBatch, settings: Settings) -> BatchOutcome:
     for (k, f, y), rows in groups.items():
         base = batch.models[int(k)]
         base.modes(None)  # once per frame: its scalings reuse them
-        model = base if f == 1.0 else base.scaled(f)
+        model = scaled(base, f)
         parts.append(receptance(model, batch.position[rows], batch.ball_mass[rows], None, y))
     order = np.array([r for rows in groups.values() for r in rows], dtype=np.int64)
     v_r = batch.racket_speed()
@@ -209,7 +229,7 @@ def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
         if key not in models:
             base = batch.models[key[0]]
             base.modes(modes)  # once per frame: its scalings reuse them
-            models[key] = base if key[1] == 1.0 else base.scaled(key[1])
+            models[key] = scaled(base, key[1])
         try:
             problem, r, normal = _solve_case(solver, batch, i, models[key], normals)
         except (NoSeparationError, AccuracyError, RuntimeError, np.linalg.LinAlgError) as exc:

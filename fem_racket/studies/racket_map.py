@@ -19,6 +19,7 @@ of a swinging free racket is the stationary one at the closing speed
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -66,6 +67,14 @@ __all__ = [
 ]
 
 
+@lru_cache(maxsize=16)
+def _solver(name: str, tolerance: float | None, modes: int | None = None) -> Any:
+    """The map's solver, made once per options (a map asks it again for each refined point)."""
+    if name == "general":
+        return make_solver(name, tolerance=tolerance)
+    return make_solver(name, tolerance=tolerance, modes=modes)
+
+
 def apparent_cor_along(
     model: FrameModel, positions: np.ndarray, speeds: np.ndarray, **options: Any
 ) -> np.ndarray:
@@ -98,7 +107,7 @@ def apparent_cor_along(
     v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
     if law is not None:
         batch = ProblemBatch((model,), x.ravel(), v.ravel(), ball_mass=ball_mass, law=law)
-        return make_solver("general", tolerance=tolerance).solve_many(batch).cor.reshape(x.shape)
+        return _solver("general", tolerance).solve_many(batch).cor.reshape(x.shape)
     if kcb_factor != 1.0:
         check_positive("kcb_factor", kcb_factor, "")
         if kcb is None:
@@ -113,8 +122,7 @@ def apparent_cor_along(
         zeta=zeta,
         separation=separation,
     )
-    solver = make_solver("exact", tolerance=tolerance, modes=modes)
-    return solver.solve_many(batch).cor.reshape(x.shape)
+    return _solver("exact", tolerance, modes).solve_many(batch).cor.reshape(x.shape)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
