@@ -137,13 +137,13 @@ def map_file(cfg: RunConfig) -> list[Any]:
     impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation", "modes", "tolerance")}
     oblique = {k: o[k] for k in ("angle", "spin", "friction") if o[k] is not None}
     if oblique:
-        from fem_racket.studies.spin_map import spin_map
+        from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, spin_map
 
         table = cfg.table("map")
-        positions = o["positions"] if "positions" in table else "0.52:0.96:12"
+        positions = o["positions"] if "positions" in table else SPIN_POSITIONS
         grid = {
             "positions": as_values("position", positions),
-            "offsets": as_values("offset", o["offsets"] or "-0.12:0.12:9"),
+            "offsets": as_values("offset", o["offsets"] or SPIN_OFFSETS),
         }
         if law is not None:
             impact = {k: impact[k] for k in ("ball_mass", "tolerance")}

@@ -29,7 +29,12 @@ from fem_racket.impact.solvers import make_solver
 from fem_racket.studies.face_map import increasing
 from fem_racket.validation import InputError, check_positive
 
-__all__ = ["SPIN_FIELDS", "SpinMap", "spin_map"]
+__all__ = ["SPIN_FIELDS", "SPIN_OFFSETS", "SPIN_POSITIONS", "SpinMap", "spin_map"]
+
+#: The spin map's grid unless given: x/L along the head and y [m] across it (each point is one
+#: oblique impact).
+SPIN_POSITIONS = "0.52:0.96:12"
+SPIN_OFFSETS = "-0.12:0.12:9"
 
 #: The mapped outputs: field -> (unit, label).
 SPIN_FIELDS = {

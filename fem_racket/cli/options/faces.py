@@ -5,7 +5,8 @@ outgoing spin and angle (``--angle``, ``--spin``, ``--friction``).
 any of ``--angle``/``--spin``/``--friction`` maps the outgoing spin ``spin_out_rpm`` and angle
 ``angle_out_deg`` of an oblique, spinning ball over the face
 (:mod:`fem_racket.studies.spin_map`), on the grid of ``--positions`` and ``--offsets``
-(defaults :data:`SPIN_POSITIONS`, :data:`SPIN_OFFSETS`: each point is one oblique impact).
+(defaults :data:`fem_racket.studies.spin_map.SPIN_POSITIONS` and ``SPIN_OFFSETS``: each point
+is one oblique impact).
 Options the spin map cannot use are refused in one line.
 """
 
@@ -19,13 +20,11 @@ from fem_racket.cli.common import print_json, run_parameters, significant
 from fem_racket.cli.options.runfile import given_options
 from fem_racket.frame.model import FrameModel
 from fem_racket.studies.grid import as_values
+from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS
 from fem_racket.validation import InputError
 
-__all__ = ["SPIN_OFFSETS", "SPIN_POSITIONS", "add_face_options", "face_asked", "run_face"]
+__all__ = ["add_face_options", "face_asked", "run_face"]
 
-#: The spin map's grid unless given: x/L along the head and y [m] across it.
-SPIN_POSITIONS = "0.52:0.96:12"
-SPIN_OFFSETS = "-0.12:0.12:9"
 #: The oblique ball's options: dest -> (option, metavar, help).
 OBLIQUE = {
     "angle": ("--angle", "DEG", "incidence angle [deg] from the face normal, in the plane of the "
