@@ -78,9 +78,23 @@ PARAMETERS: dict[str, Parameter] = {
     "angle": Parameter("deg", "incidence angle from the face normal", "angle_deg"),
     "spin": Parameter("rpm", "incoming spin, positive = topspin", "spin_rpm"),
     "friction": Parameter("1", "Coulomb friction coefficient ball/strings", "friction"),
+    "ball_inertia": Parameter("1", "ball's moment of inertia I/(m R^2)", "ball_inertia_i_over_mr2"),
+    "ball_radius": Parameter("m", "ball radius R", "ball_radius_m"),
+    "compliance_ratio": Parameter(
+        "1", "normal over tangential contact stiffness eta^2", "compliance_ratio_eta2"
+    ),
 }
 #: The parameters that are None unless given: they add physics (a string bed, an incidence).
-OPTIONAL = ("string_tension", "pattern", "angle", "spin", "friction")
+OPTIONAL = (
+    "string_tension",
+    "pattern",
+    "angle",
+    "spin",
+    "friction",
+    "ball_inertia",
+    "ball_radius",
+    "compliance_ratio",
+)
 
 #: Sweepable parameters of the contact law families (a sweep holds those of its law's family):
 #: the attribute is the run file's [contact] key with ``contact_`` before it (live, from the
@@ -119,8 +133,10 @@ def _check_value(name: str, value: object) -> float | int:
         return check_range(name, value, 0.0, 90.0, unit=unit, include_high=False)
     if name == "spin":
         return check_finite(name, value, unit)
-    if name == "friction":
+    if name in ("friction", "compliance_ratio"):
         return check_range(name, value, 0.0, math.inf, unit="")
+    if name == "ball_inertia":
+        return check_range(name, value, 0.0, 2.0 / 3.0, include_low=False)
     if name in ("position", "reference"):
         return check_range(name, value, 0.0, 1.0, unit=unit)
     if name in ("racket_speed", "pivot", "offset"):  # any sign: towards/away, either side

@@ -4,11 +4,12 @@
 (:class:`~fem_racket.strings.bed.StringBed`, the paper's racket strung at 246 N with 16 x 19
 nylon unless given) on every case: the bed replaces the lumped K_CB and the ball strikes it with
 its own law (the ``kawazoe-1997-ball`` unless ``law`` is given). ``angle`` [deg], ``spin``
-[rpm] and ``friction`` (issue 26) make every case an oblique, spinning ball
-(:class:`~fem_racket.impact.incidence.Incidence`; angle 0, spin 0 and friction 0.4 unless
-given), solved as its normal impact at V cos(angle) and the tangential contact over it. What
-the problems refuse (a string bed on a swinging racket, an incidence on a strung one ...) is
-refused here for the whole grid, in one line, before any work.
+[rpm] and ``friction`` (issue 26), and the ball's ``ball_inertia`` (I/(m R^2)), ``ball_radius``
+[m] and the contact's ``compliance_ratio`` (eta^2), make every case an oblique, spinning ball
+(:class:`~fem_racket.impact.incidence.Incidence`; its defaults, angle 0, spin 0 and friction
+0.4, unless given), solved as its normal impact at V cos(angle) and the tangential contact over
+it. What the problems refuse (a string bed on a swinging racket, an incidence on a strung
+one ...) is refused here for the whole grid, in one line, before any work.
 
 The contact regime of an oblique impact (``slide``, ``grip``, ``slide-grip-slide`` ...: the
 phases in order) is a number in the dataset (:func:`regime_code`): the count of phases, negative
@@ -43,7 +44,9 @@ __all__ = [
 ]
 
 STRING_AXES = ("string_tension", "pattern")
-OBLIQUE_AXES = ("angle", "spin", "friction")
+OBLIQUE_AXES = ("angle", "spin", "friction", "ball_inertia", "ball_radius", "compliance_ratio")
+#: The Incidence field of each oblique axis.
+INCIDENCE_FIELD = {a: a for a in OBLIQUE_AXES} | {"ball_radius": "radius"}
 
 
 def given(values: dict[str, Any], names: tuple[str, ...]) -> list[str]:
@@ -123,10 +126,14 @@ def case_incidences(p: dict[str, Any], n: int) -> tuple[Incidence, ...] | None:
     if not given(p, OBLIQUE_AXES):
         return None
     base = Incidence()
-    cols = [np.broadcast_to(getattr(base, k) if p[k] is None else p[k], n) for k in OBLIQUE_AXES]
+    fields = [INCIDENCE_FIELD[k] for k in OBLIQUE_AXES]
+    cols = [
+        np.broadcast_to(getattr(base, f) if p[k] is None else p[k], n)
+        for k, f in zip(OBLIQUE_AXES, fields, strict=True)
+    ]
     return tuple(
-        Incidence(angle=float(a), spin=float(s), friction=float(f))
-        for a, s, f in zip(*cols, strict=True)
+        Incidence(**{f: float(v) for f, v in zip(fields, values, strict=True)})
+        for values in zip(*cols, strict=True)
     )
 
 

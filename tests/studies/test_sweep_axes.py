@@ -78,3 +78,16 @@ def test_head_on_without_spin_is_a_case_not_a_failure(tmp_path):
     assert rows[0].startswith("angle [deg],spin [rpm],cor [1],")
     assert "spin_out_rpm [rpm]" in rows[0] and rows[1].endswith(",grip")
     assert (tmp_path / "o.csv.json").is_file()
+
+
+def test_the_balls_inertia_radius_and_compliance_are_axes_too():
+    # a hollower ball (larger I/(m R^2)) takes less spin from the same grip (beta_t = 1 + mR^2/I)
+    r = sweep_result(angle=30.0, ball_inertia="0.4,0.66", compliance_ratio=1.2, ball_radius=0.034,
+                     speed=25.0, backend="serial")  # fmt: skip
+    ds = r.to_xarray()
+    assert ds.spin_out_rpm.dims == ("ball_inertia",)
+    assert ds.attrs["compliance_ratio_eta2"] == 1.2 and ds.attrs["ball_radius_m"] == 0.034
+    for k, inertia in enumerate(ds.ball_inertia.values):
+        inc = Incidence(angle=30.0, ball_inertia=inertia, compliance_ratio=1.2, radius=0.034)
+        ref = simulate_oblique(incidence=inc, speed=25.0).summary()
+        assert float(ds.spin_out_rpm[k]) == ref["spin_out_rpm"]

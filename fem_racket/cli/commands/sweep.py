@@ -28,6 +28,11 @@ from fem_racket.contact.presets import law_parameters
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame, standard_frame
+from fem_racket.impact.incidence import (
+    DEFAULT_BALL_INERTIA,
+    DEFAULT_BALL_RADIUS,
+    DEFAULT_COMPLIANCE_RATIO,
+)
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
 from fem_racket.studies.sweep import sweep_result
 from fem_racket.validation import InputError, show
@@ -55,6 +60,11 @@ _HELP = {
     "angle": "incidence angle [deg] from the face normal: an oblique ball (default: head-on)",
     "spin": "incoming spin [rpm], positive = topspin (default 0 with an oblique ball)",
     "friction": "Coulomb friction ball/strings [-] (default 0.4 with an oblique ball)",
+    "ball_inertia": f"ball's I/(m R^2) [-], 0..2/3 (default {DEFAULT_BALL_INERTIA:g} with an "
+    "oblique ball)",
+    "ball_radius": f"ball radius R [m] (default {DEFAULT_BALL_RADIUS:g} with an oblique ball)",
+    "compliance_ratio": "normal over tangential contact stiffness eta^2 [-] (default "
+    f"{DEFAULT_COMPLIANCE_RATIO:g} with an oblique ball)",
 }
 
 #: Plural spellings, as the commands taking one list of these spell them (map, optimize).
