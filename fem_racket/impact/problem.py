@@ -184,12 +184,8 @@ class ImpactProblem:
                     f"offset = {show(self.offset)} m is not allowed with a hand: the held racket "
                     "is struck on its long axis (it does not twist)"
                 )
-            if self.strings is not None:
-                raise InputError(
-                    f"offset = {show(self.offset)} m is not allowed with a string bed: the "
-                    "strung racket is struck on its long axis"
-                )
-            check_offsets(self.model, self.impact.position, self.offset)
+            if self.strings is None:  # on the bed: checked against the bed's head
+                check_offsets(self.model, self.impact.position, self.offset)
         check_incidence(self.incidence, self.held or self.strings is not None)
 
     def ball_law(self) -> ContactLaw:

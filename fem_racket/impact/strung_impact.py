@@ -151,7 +151,8 @@ def strung_impact(
         x, v = y[:, :n], y[:, n : 2 * n]
         z = y[:, -1] if law.state == "ode" else None
     else:
-        rec = Receptance(w[2:], a[None, 2:], a[None, :2], np.array([ball_mass]))
+        rc = point.rigid_count
+        rec = Receptance(w[rc:], a[None, rc:], a[None, :rc], np.array([ball_mass]))
         out = solve_general(law, rec, speed, tolerance=tolerance)
         tc = float(out.contact_time[0])
         t = np.linspace(0.0, tc, SAMPLES)
@@ -179,7 +180,7 @@ def strung_impact(
         racket_energy=float(energy[-1].sum()),
         bed_energy_left=float(e_bed[-1]),
         bed_peak_energy=float(np.max(e_bed)),
-        frame_momentum=float(v[-1, 1] / a[0]) if a[0] else math.nan,
+        frame_momentum=float(v[-1, 1] / a[0]) if point.rigid_count else math.nan,
         point=point,
         law=law,
         speed=float(speed),

@@ -63,6 +63,7 @@ def solve_strung(problem: Any, method: str, options: SolverOptions) -> StrungImp
         problem.model,
         problem.strings,
         position=problem.impact.position,
+        offset=problem.offset,
         speed=problem.impact.speed,
         ball_mass=problem.ball.mass,
         law=problem.ball_law(),

@@ -33,6 +33,7 @@ from fem_racket.cli.options.output import (
 )
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
+from fem_racket.impact.solvers import auto_method
 from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.outputs import provenance
 from fem_racket.strings.bed import EDGES, StringBed, parse_pattern
@@ -200,7 +201,11 @@ def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> Str
     """The impact the options ask for on ``strings`` and the frame ``model``, through
     :func:`fem_racket.simulate` (which refuses, in one line, what the strung racket does not
     take: K_CB, zeta, a swing, the options of other solvers)."""
+    auto = getattr(args, "solver", "auto") == "auto"
     kwargs = impact_kwargs(args)
+    if auto:  # on the bed a linear ball (a preset of the linear law too) is solved exactly
+        law = kwargs.get("law")
+        args.solver = kwargs["solver"] = auto_method(law is None or law.name == "linear")
     if "output_step" in getattr(args, "explicit_options", ()):
         kwargs["output_step"] = args.output_step  # refused there, not ignored here
     if hasattr(args, "racket_speed"):  # commands with the swing options
