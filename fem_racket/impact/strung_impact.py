@@ -71,6 +71,8 @@ class StrungImpact:
         The integrator that ran.
     coordinates : ndarray, shape (nt, 1 + n)
         u_B [m] and the structure's coordinates (:attr:`StrungPoint.omega` order) at ``t``.
+    rates : ndarray, shape (nt, 1 + n)
+        Their time derivatives (u_B' [m/s] first).
     """
 
     cor: float
@@ -91,6 +93,7 @@ class StrungImpact:
     ball_mass: float
     solver: str
     coordinates: np.ndarray
+    rates: np.ndarray
 
     def summary(self) -> dict[str, Any]:
         """The results, the bed and what the run used, JSON-ready, units in the keys."""
@@ -187,6 +190,7 @@ def strung_impact(
         ball_mass=float(ball_mass),
         solver=solver,
         coordinates=x,
+        rates=v,
     )
 
 
