@@ -186,7 +186,7 @@ class ImpactProblem:
                 )
             if self.strings is None:  # on the bed: checked against the bed's head
                 check_offsets(self.model, self.impact.position, self.offset)
-        check_incidence(self.incidence, self.held or self.strings is not None)
+        check_incidence(self.incidence, self.held)  # on the bed: its normal history
 
     def ball_law(self) -> ContactLaw:
         """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""

@@ -16,12 +16,13 @@ stores ``(x'^2 + omega^2 x^2) / 2``, the bed's coordinates the bed's energy rela
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.linear import Ball
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
@@ -73,6 +74,15 @@ class StrungImpact:
         u_B [m] and the structure's coordinates (:attr:`StrungPoint.omega` order) at ``t``.
     rates : ndarray, shape (nt, 1 + n)
         Their time derivatives (u_B' [m/s] first).
+    model : FrameModel or None
+        The frame (:func:`simulate_strung` sets it).
+
+    The attributes an oblique impact reads of its normal impact
+    (:func:`fem_racket.impact.oblique.free_normal`) are those of an
+    :class:`~fem_racket.impact.result.ImpactResult`: ``ball``, ``ball_velocity``,
+    ``ball_speed_out``, ``deflection`` (the ball law's, its compression) and ``contact`` (None:
+    no lumped K_CB; the normal stiffness of the tangential contact is then the ball law's secant
+    at its largest compression), ``model``, ``t`` and :meth:`summary`.
     """
 
     cor: float
@@ -94,6 +104,32 @@ class StrungImpact:
     solver: str
     coordinates: np.ndarray
     rates: np.ndarray
+    model: FrameModel | None = None
+
+    @property
+    def ball(self) -> Ball:
+        """The ball (its mass)."""
+        return Ball(self.ball_mass)
+
+    @property
+    def ball_velocity(self) -> np.ndarray:
+        """u_B' at ``t`` [m/s] (towards the racket)."""
+        return self.rates[:, 0]
+
+    @property
+    def ball_speed_out(self) -> float:
+        """The ball's speed away from the racket after impact [m/s]."""
+        return -float(self.rates[-1, 0])
+
+    @property
+    def deflection(self) -> np.ndarray:
+        """The ball law's deflection (the ball's compression) at ``t`` [m]."""
+        return self.ball_deflection
+
+    @property
+    def contact(self) -> None:
+        """None: the ball's own law acts on the bed (no lumped K_CB)."""
+        return None
 
     def summary(self) -> dict[str, Any]:
         """The results, the bed and what the run used, JSON-ready, units in the keys."""
@@ -258,4 +294,5 @@ def simulate_strung(
     check_positive("speed", speed, "m/s")
     point = strung_point(model, strings, check_range("position", position, 0.0, 1.0), offset)
     ball = kawazoe_ball(ball_mass) if law is None else law
-    return strung_impact(point, ball, ball_mass, speed, solver=solver, **options)
+    out = strung_impact(point, ball, ball_mass, speed, solver=solver, **options)
+    return replace(out, model=model)
