@@ -44,6 +44,17 @@ def check_strung(problem: Any, method: str, options: SolverOptions) -> None:
             f"solver = 'exact' is not allowed with a string bed and ball law {law.name!r}: it "
             "takes the linear ball; use 'general' or 'cvode'"
         )
+    if problem.strings.stretch:
+        if method != "cvode":
+            raise InputError(
+                f"solver = {method!r} is not allowed with the strings' stretch: the stretching "
+                "bed is integrated by 'cvode'"
+            )
+        if law.state is not None:
+            raise InputError(
+                f"law = {law.name!r} is not allowed with the strings' stretch: it takes a ball "
+                "law without an internal state (linear, hunt-crossley)"
+            )
     for key, value in options.given().items():
         if key not in STRUNG_OPTIONS[method]:
             takes = ", ".join(STRUNG_OPTIONS[method]) or "none"

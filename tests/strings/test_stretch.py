@@ -78,3 +78,49 @@ def test_refit_linear_ball_of_the_docstring(point):
 def test_state_laws_refused(point):
     with pytest.raises(InputError, match="without an internal state"):
         solve_stretch(point, Hysteretic(3.182e15, 8.816e16, 8.913), MB, 20.0)
+
+
+def test_stretching_bed_through_simulate():
+    # StringBed(stretch=True): simulate's cvode path is solve_stretch's impact; the energy the
+    # ball loses with an elastic ball is all in the racket (modes and stretch potential: 1e-7);
+    # exact and general are refused in one line, as is a law with a state. (A coarse frame, 8
+    # elements: CVODE's dense Jacobian grows with the modes.)
+    from fem_racket import FrameModel, standard_frame
+    from fem_racket.impact.simulate import simulate
+    from fem_racket.impact.strung import strung_point
+
+    standard_model = FrameModel.build(standard_frame(), 8)
+    bed = StringBed(stretch=True)
+    out = simulate(standard_model, strings=bed, position=0.75, speed=30.0, solver="cvode")
+    p = strung_point(standard_model, bed, 0.75)
+    t, y, n = _outcome(p, out.law, 30.0)
+    assert out.cor == pytest.approx(-y[-1, n] / 30.0, abs=1e-14)
+    assert out.contact_time == t[-1] and out.summary()["string_stretch"] is True
+    linear = simulate(standard_model, strings=StringBed(), position=0.75, speed=30.0)
+    assert out.contact_time < linear.contact_time  # the stiffer bed
+    elastic = LinearContact(1.37e5, 0.0, MB)
+    e = simulate(standard_model, strings=bed, law=elastic, position=0.75, speed=30.0,
+                 solver="cvode")  # fmt: skip
+    assert e.racket_energy == pytest.approx(e.ball_loss, rel=1e-7)
+    for solver in ("exact", "general", "auto"):
+        with pytest.raises(InputError, match="integrated by 'cvode'"):
+            simulate(standard_model, strings=bed, solver=solver)
+    with pytest.raises(InputError, match="without an internal state"):
+        simulate(standard_model, strings=bed, law="hysteretic", solver="cvode")
+
+
+def test_cli_string_stretch(capsys):
+    from tests.clirun import run
+
+    code, out, err = run(capsys, "simulate", "--string-stretch", "--speed", "40", "--elements", 8)
+    assert code == 0, err
+    assert "string stretch" in out and "cvode" in out
+    code, plain, _ = run(capsys, "simulate", "--string-tension", "246", "--speed", "40",
+                         "--elements", 8)  # fmt: skip
+    assert "string stretch" not in plain
+
+    def tc(text):
+        line = next(ln for ln in text.splitlines() if ln.startswith("contact time"))
+        return float(line.split()[2])
+
+    assert tc(out) < tc(plain)

@@ -57,6 +57,7 @@ STRING_DESTS = (
     "head_width",
     "string_material",
     "bed_edge",
+    "string_stretch",
 )
 
 
@@ -112,7 +113,15 @@ def add_strings_options(parser: argparse.ArgumentParser) -> None:
         choices=EDGES,
         help="how the head ring follows the frame: point (with the impact point; default, the "
         "paper's point contact when the bed is stiff) or hoop (each edge point with the frame's "
-        "bending at its x)",
+        "bending and twist at its place)",
+    )
+    g.add_argument(
+        "--string-stretch",
+        action="store_const",
+        const=True,
+        default=None,
+        help="the strings stretch as the bed deflects, their tension rising in the impact "
+        "(integrated by cvode; default: off, the linear bed)",
     )
 
 
@@ -156,6 +165,7 @@ def strings_from_args(args: argparse.Namespace) -> StringBed | None:
         head_width_m=width,
         string=d.string if values["string_material"] is None else values["string_material"],
         edge=d.edge if values["bed_edge"] is None else values["bed_edge"],
+        stretch=bool(values["string_stretch"]),
     )
 
 
@@ -192,6 +202,11 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("peak ball deflection", significant(s["peak_ball_deflection_m"] * 1e3, 4), "mm"),
         ("energy returned by the bed", significant(s["bed_energy_returned_j"], 4), "J"),
         ("energy lost in the ball", significant(s["energy_lost_in_ball_j"], 4), "J"),
+        *(
+            [("string stretch", "on (tension rises with the deflection)", "")]
+            if s["string_stretch"]
+            else []
+        ),
         ("ball law", s["ball_law"], ""),
         ("solver", f"{s['solver']} (modal, {s['elements']} elements + bed)", ""),
     ]
@@ -203,9 +218,10 @@ def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> Str
     take: K_CB, zeta, a swing, the options of other solvers)."""
     auto = getattr(args, "solver", "auto") == "auto"
     kwargs = impact_kwargs(args)
-    if auto:  # on the bed a linear ball (a preset of the linear law too) is solved exactly
-        law = kwargs.get("law")
-        args.solver = kwargs["solver"] = auto_method(law is None or law.name == "linear")
+    if auto:  # on the bed a linear ball (a preset of the linear law too) is solved exactly,
+        law = kwargs.get("law")  # a stretching bed by CVODE
+        linear = law is None or law.name == "linear"
+        args.solver = kwargs["solver"] = "cvode" if strings.stretch else auto_method(linear)
     if "output_step" in getattr(args, "explicit_options", ()):
         kwargs["output_step"] = args.output_step  # refused there, not ignored here
     if hasattr(args, "racket_speed"):  # commands with the swing options
