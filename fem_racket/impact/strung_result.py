@@ -133,4 +133,14 @@ class StrungImpact:
             "energy_lost_in_ball_j": self.ball_loss - self.racket_energy,
             "bed_energy_returned_j": self.bed_peak_energy - self.bed_energy_left,
             "bed_energy_left_j": self.bed_energy_left,
+            "roll_rate_rad_s": self.roll_rate,
         }
+
+    @property
+    def roll_rate(self) -> float:
+        """The racket's rigid roll rate about its long axis after impact [rad/s] (0 on the
+        axis): the roll coordinate's rate times its value per unit offset, 1/sqrt(I_p)."""
+        p = self.point
+        if p.rigid_count < 3:
+            return 0.0
+        return float(self.rates[-1, 3] * p.a[2] / p.lateral_m)

@@ -93,3 +93,6 @@ def test_cli_simulate_with_the_preset(capsys):
     assert first == [ln for ln in default.splitlines() if ln.startswith("coefficient")]
     code, out, _ = run(capsys, "simulate", "--help")
     assert "kawazoe-1997-ball" in out
+    # without a bed it is refused: the ball alone is not the paper's compound spring
+    code, _, err = run(capsys, "simulate", "--law", "kawazoe-1997-ball")
+    assert code == 2 and "not allowed without a string bed" in err

@@ -91,6 +91,9 @@ def test_offset_through_simulate_and_off_the_head(standard_model):
 
     out = simulate(standard_model, strings=StringBed(), position=X, offset=Y, speed=V)
     assert out.point.lateral_m == Y and out.summary()["offset_m"] == Y
+    J = MB * V * (1.0 + out.cor)  # the roll rate: I_p Omega = y J
+    I_p = standard_model.torsion.modes().polar_moment
+    assert out.summary()["roll_rate_rad_s"] == pytest.approx(Y * J / I_p, rel=1e-12)
     assert out.cor == pytest.approx(_engine(strung_point(standard_model, StringBed(), X, Y))[0],
                                     abs=1e-10)  # fmt: skip
     with pytest.raises(InputError, match="must lie on the head"):

@@ -192,6 +192,14 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("rebound speed", significant(s["rebound_speed_m_s"], 5), "m/s"),
         ("peak force", significant(s["peak_force_n"], 4), "N"),
         ("impact point", significant(s["position_x_over_l"], 4), "x/L"),
+        *(
+            [
+                ("offset from the axis", significant(s["offset_m"], 4), "m"),
+                ("roll rate after impact", significant(s["roll_rate_rad_s"], 4), "rad/s"),
+            ]
+            if s["offset_m"]
+            else []
+        ),
         ("impact speed", significant(s["speed_m_s"], 5), "m/s"),
         ("string bed", f"{s['pattern']} {s['string']}", ""),
         ("string tension", significant(s["string_tension_n"], 4), "N"),
