@@ -52,3 +52,26 @@ def test_friction_turns_backspin_to_topspin_without_creating_energy(standard_mod
     e_out = 0.5 * m * s["ball_speed_out_m_s"] ** 2 + 0.5 * inertia * w_out**2
     assert e_out < e_in
     assert s["structure"] == "free racket" and s["law"] == "linear"
+
+
+def test_cli_angle_and_spin_with_strings(capsys, tmp_path):
+    # issue 26's example on the bed: the outgoing spin, angle and regime with the bed's rows;
+    # the JSON is the library's summary; --clamped (a rigid head) is refused with a bed
+    import json
+
+    from tests.clirun import run
+
+    args = ("simulate", "--angle", ANGLE, "--spin", SPIN, "--speed", V, "--string-tension", 246)
+    code, out, err = run(capsys, *args)
+    assert code == 0, err
+    for row in ("spin out", "angle out", "contact regime", "stringbed stiffness"):
+        assert row in out
+    code, text, _ = run(capsys, *args, "--json", "--out", tmp_path / "o.json")
+    s = json.loads(text[: text.rindex("}") + 1])
+    assert s["spin_out_rpm"] > 0 and s["stringbed_stiffness_n_m"] > 0
+    written = json.loads((tmp_path / "o.json").read_text())
+    assert written["summary"]["spin_out_rpm"] == s["spin_out_rpm"]
+    history = written["history"]
+    assert len(history["contact force [N]"]) == len(history["time [s]"]) > 100
+    code, _, err = run(capsys, *args, "--clamped")
+    assert code == 2 and "--clamped is not allowed with a string bed" in err

@@ -220,10 +220,13 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
     ]
 
 
-def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> StrungImpact:
-    """The impact the options ask for on ``strings`` and the frame ``model``, through
-    :func:`fem_racket.simulate` (which refuses, in one line, what the strung racket does not
-    take: K_CB, zeta, a swing, the options of other solvers)."""
+def strung_from_args(
+    args: argparse.Namespace, strings: StringBed, model, incidence: Any = None
+) -> Any:
+    """The impact the options ask for on ``strings`` and the frame ``model`` (a StrungImpact;
+    an ObliqueResult with an ``incidence``), through :func:`fem_racket.simulate` (which refuses,
+    in one line, what the strung racket does not take: K_CB, zeta, a swing, the options of
+    other solvers)."""
     auto = getattr(args, "solver", "auto") == "auto"
     kwargs = impact_kwargs(args)
     if auto:  # on the bed a linear ball (a preset of the linear law too) is solved exactly,
@@ -234,6 +237,8 @@ def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> Str
         kwargs["output_step"] = args.output_step  # refused there, not ignored here
     if hasattr(args, "racket_speed"):  # commands with the swing options
         kwargs["swing"] = swing_from_args(args, model.mesh.length)
+    if incidence is not None:
+        kwargs["incidence"] = incidence
     return simulate(model, strings=strings, **kwargs)
 
 
