@@ -29,6 +29,7 @@ from fem_racket.outputs import (
     provenance,
     sidecar_path,
 )
+from fem_racket.outputs.labels import LABELS
 from fem_racket.studies.racket_map import RacketMap
 from fem_racket.validation import InputError
 
@@ -42,15 +43,11 @@ __all__ = [
 
 #: Suffixes a map can be written to.
 MAP_SUFFIXES = (".nc", ".csv", ".png")
-#: Curves: attribute of RacketMap -> (variable name, units, description).
+#: Curves: attribute of RacketMap -> variable name (labels: fem_racket.outputs.labels.LABELS).
 CURVES = {
-    "apparent_cor": (
-        "apparent_cor",
-        "1",
-        "apparent COR e_A of the free racket at the closing speed",
-    ),
-    "ball_speed_out": ("ball_speed_out_m_s", "m/s", "ball speed after impact v_out"),
-    "racket_speed": ("racket_speed_at_impact_m_s", "m/s", "impact point's speed v_r before impact"),
+    "apparent_cor": "apparent_cor",
+    "ball_speed_out": "ball_speed_out_m_s",
+    "racket_speed": "racket_speed_at_impact_m_s",
 }
 #: Sweet spots: SweetSpots attribute -> attribute name (x/L).
 SPOTS = {
@@ -78,13 +75,13 @@ def map_dataset(maps: Sequence[RacketMap], parameters: Mapping[str, Any] | None 
         var: (
             ("racket", "position"),
             np.stack([getattr(m, attr) for m in maps]),
-            {"units": unit, "long_name": text},
+            LABELS[var].attrs(),
         )
-        for attr, (var, unit, text) in CURVES.items()
+        for attr, var in CURVES.items()
     }
     coords = {
         "racket": ("racket", [m.name for m in maps]),
-        "position": ("position", x, {"units": "x/L", "long_name": "impact point from the butt"}),
+        "position": ("position", x, LABELS["position"].attrs()),
     }
     attrs: dict[str, Any] = {
         name: np.array([getattr(m.spots, attr) for m in maps], dtype=float)
