@@ -37,6 +37,7 @@ __all__ = [
     "MAP_SUFFIXES",
     "check_map_outputs",
     "map_dataset",
+    "map_figure",
     "map_targets",
     "write_maps",
 ]
@@ -123,14 +124,34 @@ def _spots_text(m: RacketMap) -> str:
     return f"{m.name}: " + ", ".join(f"{k} {v:.3f}" for k, v in spots if np.isfinite(v))
 
 
-def _figure(maps: Sequence[RacketMap]) -> Any:
-    """PNG: e_A (top) and v_out (bottom) along the frame; sweet spots as markers and lines,
-    named with their positions in the legends (no text on the curves: several rackets' labels
-    would overlap)."""
-    from matplotlib.figure import Figure  # no pyplot: no global state, ~0.2 s less to import
+def map_figure(maps: Sequence[RacketMap], *, pyplot: bool = False) -> Any:
+    """The maps' figure: e_A (top) and v_out (bottom) along the frame, sweet spots as markers
+    and lines named with their positions in the legends (no text on the curves: several
+    rackets' labels would overlap).
+
+    Parameters
+    ----------
+    maps : sequence of RacketMap
+        One curve each (:func:`fem_racket.racket_map`).
+    pyplot : bool
+        Make the figure with pyplot (a notebook then shows it inline); by default a plain
+        matplotlib Figure (no global state), as the ``.png`` of :func:`write_maps`.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    size = (7.5, 7.4 + 0.25 * len(maps))
+    if pyplot:
+        import matplotlib.pyplot as plt
+
+        fig = plt.figure(figsize=size, layout="constrained")
+    else:
+        from matplotlib.figure import Figure  # no pyplot: ~0.2 s less to import
+
+        fig = Figure(figsize=size, layout="constrained")
     from matplotlib.lines import Line2D
 
-    fig = Figure(figsize=(7.5, 7.4 + 0.25 * len(maps)), layout="constrained")
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
     for k, m in enumerate(maps):
         c, s = f"C{k}", m.spots
@@ -248,7 +269,7 @@ def write_maps(
         for t, tmp in pending:
             suffix = t.path.suffix.lower()
             if suffix == ".png":
-                _save_png(_figure(maps), tmp, parameters)
+                _save_png(map_figure(maps), tmp, parameters)
             elif suffix == ".csv":
                 _write_csv(maps, tmp, next(pending)[1], parameters)
             else:

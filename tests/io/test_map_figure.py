@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fem_racket.io.map_files import _figure
+from fem_racket.io.map_files import map_figure
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.studies.racket_map import racket_map
 
@@ -25,7 +25,7 @@ def _texts(fig):
 
 
 def test_three_rackets_name_their_spots_in_the_legends_not_on_the_curves(maps):
-    fig = _figure(maps)
+    fig = map_figure(maps)
     ax1, ax2 = fig.axes
     assert not ax1.texts and not ax2.texts  # no annotation that could overlap another
     texts = _texts(fig)
@@ -49,6 +49,17 @@ def test_three_rackets_name_their_spots_in_the_legends_not_on_the_curves(maps):
 
 
 def test_one_racket_is_named_in_the_title(maps):
-    title = _figure(maps[:1]).axes[0].get_title()
+    title = map_figure(maps[:1]).axes[0].get_title()
     assert f"racket turning at {maps[0].swing.omega:.1f} rad/s" in title
     assert "(fit_light_racket)" in title
+
+
+def test_with_pyplot_the_figure_is_pyplots(maps):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig = map_figure(maps[:1], pyplot=True)
+    assert plt.gcf() is fig and fig.axes[0].get_title() == map_figure(maps[:1]).axes[0].get_title()
+    plt.close(fig)
