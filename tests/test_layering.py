@@ -144,6 +144,7 @@ IMPACT_TOP = {
     "strung_exact",
     "strung_impact",
     "strung_solve",
+    "strung_stretch",
 }
 
 

@@ -95,20 +95,23 @@ def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) ->
 def animate_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) -> Path:
     """Render the animation ``animate --config`` renders (to ``out``, else the file's
     ``[animate] out``); return its path."""
-    from fem_racket.io.animate import render_animation
+    from fem_racket.io.animate import AnimationOptions, render_animation
     from fem_racket.io.config_run import simulate_file
 
     o = _drawing(cfg, "animate", ANIMATE_DEFAULTS, ("hand", "oblique", "strings"))
     result = simulate_file(cfg, histories=True, output_step=o["output_step"])
-    return render_animation(
-        result,
-        out or o["out"],
+    options = AnimationOptions(
         field=o["field"],
         frames=o["frames"],
         fps=o["fps"],
         scale=o["scale"],
         subdivide=o["subdivide"],
         size=o["size"],
+    )
+    return render_animation(
+        result,
+        out or o["out"],
+        options,
         overwrite=o["overwrite"],
         parameters=parameters,
         progress=False,

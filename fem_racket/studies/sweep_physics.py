@@ -68,8 +68,8 @@ def check_physics(values: dict[str, Any], law: Any, options: dict[str, Any], len
     strings, oblique = given(values, STRING_AXES), given(values, OBLIQUE_AXES)
     if strings and oblique:
         raise InputError(
-            f"{oblique[0]} is not allowed with {strings[0]}: the oblique impact takes the lumped "
-            "ball/string law, not a string bed"
+            f"{oblique[0]} is not allowed with {strings[0]}: the sweep's oblique cases take the "
+            "lumped ball/string law, not a string bed (simulate takes both)"
         )
     if not strings:
         return

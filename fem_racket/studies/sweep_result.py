@@ -2,12 +2,14 @@
 
 :class:`SweepResult` holds the values of every case (one row per case, the columns of
 :data:`fem_racket.studies.cases.COLUMNS`) and turns them into the labelled variables of the
-dataset: one dimension per swept parameter (its values the coordinate, with units and a
-long name), the result variables :data:`~fem_racket.studies.cases.VARIABLES` and the global
-attributes (provenance, every fixed parameter, solver, tolerances, modes kept). The same
-variables give the netCDF file (:func:`fem_racket.outputs.netcdf.write_netcdf`, no xarray: what
-the command line writes) and the :class:`xarray.Dataset` of :func:`fem_racket.sweep`, so
-``xarray.open_dataset`` of the file is identical to that dataset.
+dataset: one dimension per swept parameter (its values the coordinate), the result variables
+:data:`~fem_racket.studies.cases.VARIABLES` and the global attributes (provenance, every fixed
+parameter, solver, tolerances, modes kept). Each variable's ``long_name``, ``units`` and
+``description`` come from :data:`fem_racket.outputs.labels.LABELS` (short names, so that
+xarray's own ``.plot()`` labels fit on one line). The same variables give the netCDF file
+(:func:`fem_racket.outputs.netcdf.write_netcdf`, no xarray: what the command line writes) and
+the :class:`xarray.Dataset` of :func:`fem_racket.sweep`, so ``xarray.open_dataset`` of the file
+is identical to that dataset.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import numpy as np
 
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.outputs import provenance
+from fem_racket.outputs.labels import label
 from fem_racket.studies.cases import ALL_VARIABLES, MODES_COLUMN, result_variables
 from fem_racket.studies.grid import SweepSpec, parameter
 from fem_racket.studies.grid_values import pattern_label
@@ -91,6 +94,12 @@ def _cell(name: str, value: Any) -> str:
     return repr(float(value))
 
 
+def _attrs(name: str, units: str, description: str) -> dict[str, str]:
+    """A variable's attributes: short ``long_name``, ``units`` (``-`` when dimensionless) and
+    ``description`` (:mod:`fem_racket.outputs.labels`)."""
+    return label(name, units, description).attrs()
+
+
 def modes_kept(spec: SweepSpec, kept: np.ndarray) -> int | str:
     """The ``modes_kept`` attribute: the flexible modes the solver kept, one number when every
     case kept the same, else their range (the engine's COR tolerance chooses them per case)."""
@@ -142,14 +151,11 @@ class SweepResult:
         return attrs
 
     def coordinates(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
-        """Each swept parameter's values: name -> ((name,), values, units and long name; a
-        pattern's labels as CF flags)."""
+        """Each swept parameter's values: name -> ((name,), values, attributes of its
+        :func:`~fem_racket.outputs.labels.label`; a pattern's labels as CF flags)."""
         out = {}
         for name, vals in self.spec.axes.items():
-            attrs: dict[str, Any] = {
-                "units": parameter(name).unit,
-                "long_name": parameter(name).description,
-            }
+            attrs: dict[str, Any] = _attrs(name, parameter(name).unit, parameter(name).description)
             if name == "pattern":
                 attrs["flag_values"] = [int(v) for v in vals]
                 attrs["flag_meanings"] = " ".join(pattern_label(v) for v in vals)
@@ -157,10 +163,11 @@ class SweepResult:
         return out
 
     def data_variables(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
-        """The result variables: name -> (dimensions, values, units and long name)."""
+        """The result variables: name -> (dimensions, values, attributes of its
+        :func:`~fem_racket.outputs.labels.label`)."""
         spec, keep = self.spec, result_variables(self.spec)
         out = {
-            name: (spec.dims, self.values[:, k].reshape(spec.shape), {"units": u, "long_name": t})
+            name: (spec.dims, self.values[:, k].reshape(spec.shape), _attrs(name, u, t))
             for k, (name, (u, t)) in enumerate(ALL_VARIABLES.items())
             if name in keep
         }
@@ -191,8 +198,8 @@ class SweepResult:
 
         spec, keep = self.spec, result_variables(self.spec)
         names = list(spec.axes)
-        header = [f"{n} [{parameter(n).unit}]" for n in names]
-        header += [f"{v} [{ALL_VARIABLES[v][0]}]" for v in keep]
+        header = [f"{n} [{label(n, parameter(n).unit).units}]" for n in names]
+        header += [f"{v} [{label(v, ALL_VARIABLES[v][0]).units}]" for v in keep]
         cols = [list(ALL_VARIABLES).index(v) for v in keep]
         where = np.unravel_index(np.arange(spec.size), spec.shape) if names else ()
         with open(path, "w", newline="", encoding="utf-8") as fh:

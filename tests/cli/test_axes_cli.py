@@ -36,7 +36,7 @@ def test_sweep_writes_the_bed_outputs(cwd, capsys):
     assert code == 0, err
     with open(cwd / "s.csv", newline="") as fh:
         rows = list(csv.DictReader(fh))
-    assert [r["pattern [1]"] for r in rows] == ["16x19", "18x20"] * 2
+    assert [r["pattern [-]"] for r in rows] == ["16x19", "18x20"] * 2
     k = [float(r["stringbed_stiffness_n_m [N/m]"]) for r in rows]
     assert k[2] / k[0] == pytest.approx(270 / 220, rel=1e-12)  # k ~ T (membrane)
 

@@ -75,7 +75,7 @@ def test_head_on_without_spin_is_a_case_not_a_failure(tmp_path):
 
     assert r.values[0, 0] == simulate(speed=20.0).cor  # the exact solution, as simulate's
     rows = (tmp_path / "o.csv").read_text().splitlines()
-    assert rows[0].startswith("angle [deg],spin [rpm],cor [1],")
+    assert rows[0].startswith("angle [deg],spin [rpm],cor [-],")
     assert "spin_out_rpm [rpm]" in rows[0] and rows[1].endswith(",grip")
     assert (tmp_path / "o.csv.json").is_file()
 
