@@ -5,6 +5,12 @@ step with the cubic force through 4 nodal values F_r it becomes exactly
 y e^{i theta} + a^2 h e^{i theta} sum_r F_r G_r, G_r = sum_q c_rq conj(M_q(theta, 1)),
 theta = omega h (:mod:`fem_racket.impact.general.cubic_force`); the rigid modes and the ball
 (compliance mu0) integrate the cubic twice. Used by :mod:`fem_racket.impact.general.kernel`.
+
+The starting steps use :func:`advance` (complex states, any stencil). After them every step has
+the backward stencil, and :func:`stride` carries the states as real and imaginary rows with the
+weights B_r = e^{i theta} a^2 h G_r folded per mode; a node's own weight B_3 (which multiplies
+the force still unknown while its node is solved) is carried into the next step as
+B_2 + e^{i theta} B_3, so a node costs one pass over the modes.
 """
 
 from __future__ import annotations
@@ -12,10 +18,15 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["advance", "moments", "response", "weights"]
+__all__ = ["advance", "backward_weights", "moments", "response", "stride", "weights"]
 
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 _SERIES = 34
+#: A series term below this no longer changes a moment (|M_q| >= 1/(q + 1) e^{-|x|} / 4 > 0.04
+#: for |x| < 2, and a term bounds the rest of the series to a factor 2 there).
+_TERM = 1e-19
+#: 1 / k for k = 1 .. _SERIES + 4 (products are cheaper than divisions).
+_RECIPROCAL = 1.0 / np.arange(1.0, _SERIES + 5.0)
 
 
 @njit(**_JIT)
@@ -31,13 +42,21 @@ def moments(x):
             prev = (e - q * prev) / ix
             out[q] = prev
         return out
+    # sum_n (i x)^n / (n! (n + q + 1)), one running term for the four q
+    tr, ti = 1.0, 0.0
+    a = np.empty(8)
     for q in range(4):
-        term = 1.0 + 0.0j
-        acc = term / (q + 1.0)
-        for n in range(1, _SERIES):
-            term = term * (1j * x) / n
-            acc += term / (n + q + 1.0)
-        out[q] = acc
+        a[2 * q], a[2 * q + 1] = 1.0 / (q + 1.0), 0.0
+    for n in range(1, _SERIES):
+        xn = x * _RECIPROCAL[n - 1]
+        tr, ti = -ti * xn, tr * xn
+        for q in range(4):
+            a[2 * q] += tr * _RECIPROCAL[n + q]
+            a[2 * q + 1] += ti * _RECIPROCAL[n + q]
+        if abs(tr) + abs(ti) < _TERM:
+            break
+    for q in range(4):
+        out[q] = a[2 * q] + 1j * a[2 * q + 1]
     return out
 
 
@@ -63,8 +82,13 @@ def weights(w, h, cs):
 
 
 @njit(**_JIT)
-def advance(y, R, Rv, f, s, e, a2, mu0, h, Gw, c1, c2):
-    """Modal states over one step with stencil s and its 4 nodal forces f; returns R, R'."""
+def advance(y, rig, f, s, modal, rigid):
+    """Modal states y over one step with stencil s and its 4 nodal forces f; ``rig`` = (R, R')
+    of the rigid modes and the ball, ``modal`` = (e^{i theta}, a^2, G), ``rigid`` = (mu0, h,
+    c1, c2); returns the new (R, R')."""
+    R, Rv = rig
+    e, a2, Gw = modal
+    mu0, h, c1, c2 = rigid
     fd, fv = 0.0, 0.0
     for r in range(4):
         fd += f[r] * c2[s, r]
@@ -83,3 +107,46 @@ def response(y, R, Rv, w):
         d += y[j].imag / w[j]
         v += y[j].real
     return d, v
+
+
+@njit(**_JIT)
+def backward_weights(e, a2, h, Gw, w):
+    """Rows (13, modes) for :func:`stride`: e^{i theta}, B_0, B_1, B_2, B_2 + e^{i theta} B_3,
+    B_3 (real and imaginary rows each) and 1 / omega (B_r = e^{i theta} a^2 h G_r, backward
+    stencil)."""
+    nm = w.size
+    out = np.empty((13, nm))
+    for j in range(nm):
+        g = e[j] * a2[j] * h
+        b2, b3 = g * Gw[0, 2, j], g * Gw[0, 3, j]
+        rows = (e[j], g * Gw[0, 0, j], g * Gw[0, 1, j], b2, b2 + e[j] * b3, b3)
+        for k in range(6):
+            out[2 * k, j], out[2 * k + 1, j] = rows[k].real, rows[k].imag
+        out[12, j] = 1.0 / w[j]
+    return out
+
+
+@njit(inline="always", **_JIT)
+def stride(Y, Bw, f, first):
+    """States Y (2, modes: real, imaginary) over one backward step whose earlier nodes carry
+    forces f = (F_{m-3}, F_{m-2}, F_{m-1}), without node m's own weight (``first``: Y holds
+    node m - 1's; else it too was left out); returns the modes' delta and delta' at node m."""
+    f0, f1, f2 = f
+    k2 = 6 if first else 8
+    nm = Y.shape[1]
+    for j in range(nm):
+        yr, yi = Y[0, j], Y[1, j]
+        er, ei = Bw[0, j], Bw[1, j]
+        Y[0, j] = er * yr - ei * yi + Bw[2, j] * f0 + Bw[4, j] * f1 + Bw[k2, j] * f2
+        Y[1, j] = er * yi + ei * yr + Bw[3, j] * f0 + Bw[5, j] * f1 + Bw[k2 + 1, j] * f2
+    d0, d1, v0, v1 = 0.0, 0.0, 0.0, 0.0  # two fixed partial sums: the same bits in any batch
+    half = nm // 2
+    for j in range(half):
+        d0 += Y[1, 2 * j] * Bw[12, 2 * j]
+        d1 += Y[1, 2 * j + 1] * Bw[12, 2 * j + 1]
+        v0 += Y[0, 2 * j]
+        v1 += Y[0, 2 * j + 1]
+    if nm % 2:
+        d0 += Y[1, nm - 1] * Bw[12, nm - 1]
+        v0 += Y[0, nm - 1]
+    return d0 + d1, v0 + v1

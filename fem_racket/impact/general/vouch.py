@@ -28,10 +28,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.impact.general.compiled import KernelLaw, march_compiled
-from fem_racket.impact.general.cubic_force import BACKWARD, ORDER, step_stencil
+from fem_racket.impact.general.compiled import Checks, KernelLaw, march_compiled
 from fem_racket.impact.general.march import GeneralOutcome
-from fem_racket.impact.general.receptance import Receptance, stencil_quadrature
+from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.general.step import per_case
 from fem_racket.validation import show
 
@@ -82,31 +81,16 @@ class Run:
         )
 
 
-def _step_integrals(X: np.ndarray, h: np.ndarray) -> np.ndarray:
-    """int over each step of the cubic through the nodal values X (C, N): (C, N - 1)."""
-    ncase, n = X.shape
-    out = np.zeros((ncase, n - 1))
-    for k in (0, 1):
-        off = step_stencil(k)
-        out[:, k] = h * (X[:, [k + o for o in off]] @ stencil_quadrature(off))
-    qb = stencil_quadrature(BACKWARD)
-    out[:, 2:] = h[:, None] * sum(qb[r] * X[:, r : n - 3 + r] for r in range(ORDER))
-    return out
-
-
-def energy_residual(out: GeneralOutcome, flexible: np.ndarray, rec: Receptance, speed):
+def energy_residual(chk: Checks, rec: Receptance, speed: np.ndarray) -> np.ndarray:
     """(contact work - energy lost by ball and frame) / impact energy up to the separation
-    node (frame at rest before impact; ``flexible``: the modes' energy there [J])."""
-    pad = max(ORDER + 1 - out.force.shape[1], 0)  # a contact ended within the first steps
-    F, V = (np.pad(x, ((0, 0), (0, pad))) for x in (out.force, out.rate))
-    upto = np.arange(F.shape[1] - 1)[None, :] < out.last[:, None]
-    work = np.sum(np.where(upto, _step_integrals(F * V, out.step), 0.0), 1)
-    impulse = np.sum(np.where(upto, _step_integrals(F, out.step), 0.0), 1)
+    node (frame at rest before impact; the work, impulse and the modes' energy there from the
+    march's :class:`~fem_racket.impact.general.compiled.Checks`)."""
+    impulse = chk.node_impulse
     m = rec.ball_mass
     energy = 0.5 * m * speed**2
     ball = 0.5 * m * (speed - impulse / m) ** 2
     rigid = 0.5 * (rec.compliance - 1.0 / m) * impulse**2
-    return (work - (energy - ball - rigid - flexible)) / energy
+    return (chk.work - (energy - ball - rigid - chk.flexible_energy)) / energy
 
 
 def _estimate(cors: np.ndarray) -> np.ndarray:
@@ -173,8 +157,7 @@ def vouched(
         cors[todo, 2] = -out.ball_velocity / speed[todo]
         short = ((status == 0) & (out.contact_time < 0.25 * t_case[todo])) | (status == 2)
         e = np.where(status == 0, _estimate(cors[todo]), np.inf)
-        r = np.zeros(todo.size) if moving else energy_residual(out, chk.flexible_energy, sub,
-                                                               speed[todo])  # fmt: skip
+        r = np.zeros(todo.size) if moving else energy_residual(chk, sub, speed[todo])
         est[todo], res[todo], stiff[todo] = e, r, chk.stiffness / STIFF_LIMIT
         ok = (e <= STEP_SHARE * tol) & (chk.stiffness <= STIFF_LIMIT) & (np.abs(r) <= tol)
         ok &= ~short & np.isfinite(cors[todo, 2])
