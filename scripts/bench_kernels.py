@@ -45,7 +45,11 @@ from fem_racket.contact.law import power_contact_time  # noqa: E402
 from fem_racket.contact.presets import PRESETS, get_law  # noqa: E402
 from fem_racket.contact.series import SeriesBallString  # noqa: E402
 from fem_racket.impact.general.integrator import solve_general  # noqa: E402
-from fem_racket.impact.law_impact import receptance, solve_law_impact  # noqa: E402
+from fem_racket.impact.law_impact import (  # noqa: E402
+    LawOptions,
+    receptance,
+    solve_law_impact,
+)
 
 FIRST_CALL = """
 import time, numpy as np
@@ -82,10 +86,8 @@ def first_call() -> list[tuple[float, float]]:
 
 
 def cvode_cor(law, model, position, speed) -> float:
-    run = solve_law_impact(
-        law, model, position, 0.057, speed, solver="cvode", output_step=None, rtol=1e-10,
-        atol=1e-13,
-    )  # fmt: skip
+    options = LawOptions("cvode", output_step=None, rtol=1e-10, atol=1e-13)
+    run = solve_law_impact(law, model, position, 0.057, speed, options=options)
     return float(-run.ball_velocity[-1] / speed)
 
 

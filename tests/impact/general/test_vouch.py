@@ -28,7 +28,7 @@ from fem_racket.impact.general.batches import stack_laws, stack_receptances
 from fem_racket.impact.general.compiled import kernel_law, march_compiled
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.march import march
-from fem_racket.impact.law_impact import receptance, solve_law_impact
+from fem_racket.impact.law_impact import LawOptions, receptance, solve_law_impact
 from fem_racket.validation import AccuracyError
 
 #: CVODE's own COR error at rtol 1e-10 (measured against rtol 1e-12: <= 2e-9 on these laws).
@@ -43,10 +43,8 @@ def model10() -> FrameModel:
 
 
 def _cvode_cor(law, model, position, speed):
-    run = solve_law_impact(
-        law, model, position, 0.057, speed, solver="cvode", output_step=None, rtol=1e-10,
-        atol=1e-13,
-    )  # fmt: skip
+    options = LawOptions("cvode", output_step=None, rtol=1e-10, atol=1e-13)
+    run = solve_law_impact(law, model, position, 0.057, speed, options=options)
     return -run.ball_velocity[-1] / speed
 
 
