@@ -27,14 +27,13 @@ from numba import njit
 
 from fem_racket.impact.general import kernel_laws as kl
 from fem_racket.impact.general import kernel_modes as km
+from fem_racket.impact.general import kernel_node as kn
 
 __all__ = ["RESULTS", "march_cases"]
 
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
-_NEWTON_ITER = 40
 _START_SWEEPS = 12
-#: Rows of a case's histories: F, delta, delta', z, z'.
-_F, _D, _V, _Z, _G = range(5)
+_F, _D, _V, _Z, _G = kn.F, kn.D, kn.V, kn.Z, kn.G
 #: The columns of the kernel's result row per case.
 RESULTS = (
     "last",
@@ -47,104 +46,6 @@ RESULTS = (
     "work",
     "node_impulse",
 )
-
-
-@njit(**_JIT)
-def _newton(kind, p, lin, guess, prev, step):
-    """F and z at a node (as step.solve_step for one case); ok False if not converged.
-
-    ``kind`` = (law, state, ...), ``lin`` = (A, B, kd0, kv0): delta = A - kd0 F, delta' = B -
-    kv0 F; ``prev`` = (z at the previous node, the ODE state's base and weight, delta and
-    delta' at the previous node); ``step`` = (h, force scale).
-    """
-    law, state = kind[0], kind[1]
-    A, B, kd0, kv0 = lin
-    zp, zb, zc, d0, v0 = prev
-    h, scale = step
-    F, z = guess, zp
-    for _ in range(_NEWTON_ITER):
-        d, v = A - kd0 * F, B - kv0 * F
-        if state == 1:
-            z = max(zp, kl.turn_max(d0, v0, d, v, h))
-        f, fd, fv, fz = kl.force_partials(law, p, d, v, z)
-        r1 = F - f
-        tol = 1e-12 * (abs(F) + scale)
-        if state == 2:
-            r2 = z - zb - zc * kl.rate(law, p, d, v, z)
-            if abs(r1) <= tol and abs(r2) <= 1e-12 * (abs(z) + 1e-9):
-                return F, z, True
-            gd, gv, gz = kl.rate_partials(law, p, d, v, z)
-            j11 = 1.0 + fd * kd0 + fv * kv0
-            j21 = zc * (gd * kd0 + gv * kv0)
-            j22 = 1.0 - zc * gz
-            det = j11 * j22 + fz * j21
-            dF = -(r1 * j22 + fz * r2) / det
-            z = z - (j11 * r2 - j21 * r1) / det
-        else:
-            if abs(r1) <= tol:
-                return F, z, True
-            dF = -r1 / (1.0 + fd * kd0 + fv * kv0)
-        cap = 2.0 * (abs(F) + scale)
-        F = F + max(min(dF, cap), -cap)
-    return F, z, False
-
-
-@njit(inline="always", **_JIT)
-def _ended(kind, p, H, m):
-    """True where the contact ends in step m - 1 (nodes m - 1, m)."""
-    law, end = kind[0], kind[2]
-    if end == 1:
-        return H[_F, m - 1] > 0 and H[_F, m] <= 0
-    if end == 2:
-        return H[_Z, m - 1] > 0 and H[_Z, m] <= 0
-    e0, e1 = kl.end_value(law, p, H[_Z, m - 1]), kl.end_value(law, p, H[_Z, m])
-    return H[_D, m - 1] - e0 > 0 and H[_D, m] - e1 <= 0
-
-
-@njit(**_JIT)
-def _fraction(kind, p, H, at, h, cs):
-    """Where in step m - 1 (``at`` = (m, its stencil's first node b, stencil s)) the contact
-    ended (0-1]."""
-    law, end = kind[0], kind[2]
-    m, b, s = at
-    if end == 1:
-        coef = np.zeros(4)
-        for r in range(4):
-            for q in range(4):
-                coef[q] += H[_F, b + r] * cs[s, r, q]
-        return kl.cubic_root(coef, H[_F, m - 1], H[_F, m])
-    if end == 2:
-        return kl.hermite_root(H[_Z, m - 1], H[_G, m - 1], H[_Z, m], H[_G, m], 0.0, h)
-    return kl.hermite_root(
-        H[_D, m - 1], H[_V, m - 1], H[_D, m], H[_V, m], kl.end_value(law, p, H[_Z, m]), h
-    )
-
-
-@njit(inline="always", **_JIT)
-def _solve_node(kind, p, H, at, lin, guess, step, c1):
-    """The contact equation at node m (``at`` = (m, b, s): stencil s of step m - 1 from node
-    b; ``lin``, ``step`` as :func:`_newton`); False if Newton fails."""
-    law, state = kind[0], kind[1]
-    m, b, s = at
-    A, B, kd0, kv0 = lin
-    h = step[0]
-    zb, zc = H[_Z, m - 1], 0.0
-    if state == 2:  # Adams-Moulton on the step's cubic: z_m = zb + zc g_m
-        acc = 0.0
-        for r in range(4):
-            acc += H[_G, b + r] * (h * c1[s, r])
-        zc = h * c1[s, m - b]
-        zb = H[_Z, m - 1] + acc - zc * H[_G, m]
-    Fm, zm, ok = _newton(
-        kind, p, lin, guess, (H[_Z, m - 1], zb, zc, H[_D, m - 1], H[_V, m - 1]), step
-    )
-    d, v = A - kd0 * Fm, B - kv0 * Fm
-    if state == 1:
-        zm = max(H[_Z, m - 1], kl.turn_max(H[_D, m - 1], H[_V, m - 1], d, v, h))
-    H[_F, m], H[_D, m], H[_V, m], H[_Z, m] = Fm, d, v, zm
-    if state == 2:
-        H[_G, m] = kl.rate(law, p, d, v, zm)
-    return ok
 
 
 @njit(**_JIT)
@@ -185,7 +86,7 @@ def _start(kind, p, modal, rigid, fdv, H, scale):
                     B -= Wv[m, j] * H[_F, j]
             s = m if m < 3 else 0
             lin = (A, B, Wd[m, m], Wv[m, m])
-            if not _solve_node(kind, p, H, (m, 0, s), lin, H[_F, m], (h, scale), c1):
+            if not kn.solve_node(kind, p, H, (m, 0, s), lin, H[_F, m], (h, scale), c1):
                 return False, y, 0.0, 0.0
             conv &= abs(H[_F, m] - fb) <= 1e-13 * (abs(H[_F, m]) + scale)
             conv &= abs(H[_Z, m] - zb) <= 1e-13 * (abs(H[_Z, m]) + 1e-9)
@@ -235,6 +136,15 @@ def _integrals(H, at, h, cs, c1, res):
 
 
 @njit(**_JIT)
+def _continue_branch(H, m, kd0, kv0):
+    """The force was cut to zero past the end at node m: the step's cubic takes the branch's
+    cubic continuation instead (the cut is a kink the cubic would smear, O(h^2))."""
+    F = H[_F]
+    dF = 4.0 * F[m - 1] - 6.0 * F[m - 2] + 4.0 * F[m - 3] - F[m - 4] - F[m]
+    H[_F, m], H[_D, m], H[_V, m] = F[m] + dF, H[_D, m] - kd0 * dF, H[_V, m] - kv0 * dF
+
+
+@njit(**_JIT)
 def _case(kind, p, modes, grid, fdv, cs, H, res):
     """March one case (histories H = F, D, V, Z, G; ``modes`` = (omega, a^2) of the modes kept,
     ``grid`` = (mu0, h, nodes, force scale), free motion fdv (2, >= nodes)) into ``res``."""
@@ -268,7 +178,7 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
             md, mv = km.stride(Y, Bw, (f0, f1, f2), m == 4)
             guess = 3.0 * H[_F, m - 1] - 3.0 * H[_F, m - 2] + H[_F, m - 3]
             lin = (fdv[0, m] - (R + md), fdv[1, m] - (Rv + mv), kd0, kv0)
-            if not _solve_node(kind, p, H, (m, b, 0), lin, guess, (h, scale), c1):
+            if not kn.solve_node(kind, p, H, (m, b, 0), lin, guess, (h, scale), c1):
                 res[2] = 2.0
                 return
             R += mu0 * h * h * c2[0, 3] * H[_F, m]
@@ -276,28 +186,11 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
         if state == 2:
             gz = kl.rate_partials(law, p, H[_D, m], H[_V, m], H[_Z, m])[2]
             stiff = max(stiff, h * abs(gz))
-        if _ended(kind, p, H, m):
-            if (
-                extend
-                and end == 0
-                and m >= 5
-                and kl.force(law, p, H[_D, m], H[_V, m], H[_Z, m]) == 0.0
-            ):
-                # the force was cut to zero past the end: the step's cubic takes the branch's
-                # cubic continuation instead (the cut is a kink the cubic would smear, O(h^2))
-                dF = (
-                    4.0 * H[_F, m - 1]
-                    - 6.0 * H[_F, m - 2]
-                    + 4.0 * H[_F, m - 3]
-                    - H[_F, m - 4]
-                    - H[_F, m]
-                )
-                H[_F, m], H[_D, m], H[_V, m] = (
-                    H[_F, m] + dF,
-                    H[_D, m] - kd0 * dF,
-                    H[_V, m] - kv0 * dF,
-                )
-            res[0], res[1] = m, _fraction(kind, p, H, (m, b, s), h, cs)
+        if kn.ended(kind, p, H, m):
+            cut = extend and end == 0 and m >= 5
+            if cut and kl.force(law, p, H[_D, m], H[_V, m], H[_Z, m]) == 0.0:
+                _continue_branch(H, m, kd0, kv0)
+            res[0], res[1] = m, kn.fraction(kind, p, H, (m, b, s), h, cs)
             res[2], res[3] = 0.0, stiff
             own = H[_F, m] if m >= 4 else 0.0  # node m's own weight, not yet in Y
             energy = 0.0
