@@ -56,19 +56,8 @@ def _start(kind, p, modal, rigid, fdv, H, scale):
     law, state = kind[0], kind[1]
     e, a2, Gw, w = modal
     h, c1 = rigid[1], rigid[2]
-    nm = w.size
-    y = np.zeros(nm, dtype=np.complex128)
     mod = (e, a2, Gw)
-    # weights of the starting nodes 0-3 at nodes 1-3: unit forces through steps 0, 1, 2
-    Wd, Wv, f = np.zeros((4, 4)), np.zeros((4, 4)), np.zeros(4)
-    for node in range(4):
-        f[:] = 0.0
-        f[node] = 1.0
-        y[:] = 0.0
-        R, Rv = 0.0, 0.0
-        for k in range(3):
-            R, Rv = km.advance(y, (R, Rv), f, 1 + k if k < 2 else 0, mod, rigid)
-            Wd[k + 1, node], Wv[k + 1, node] = km.response(y, R, Rv, w)
+    Wd, Wv = km.start_weights(mod, w, rigid)
     H[_D, 0], H[_V, 0] = fdv[0, 0], fdv[1, 0]
     H[_F, 0] = kl.force(law, p, H[_D, 0], H[_V, 0], 0.0)
     if state == 2:
@@ -87,12 +76,12 @@ def _start(kind, p, modal, rigid, fdv, H, scale):
             s = m if m < 3 else 0
             lin = (A, B, Wd[m, m], Wv[m, m])
             if not kn.solve_node(kind, p, H, (m, 0, s), lin, H[_F, m], (h, scale), c1):
-                return False, y, 0.0, 0.0
+                return False, np.zeros(0, dtype=np.complex128), 0.0, 0.0
             conv &= abs(H[_F, m] - fb) <= 1e-13 * (abs(H[_F, m]) + scale)
             conv &= abs(H[_Z, m] - zb) <= 1e-13 * (abs(H[_Z, m]) + 1e-9)
         if conv:
             break
-    y[:] = 0.0
+    y = np.zeros(w.size, dtype=np.complex128)
     R, Rv = 0.0, 0.0
     for k in range(3):
         R, Rv = km.advance(y, (R, Rv), H[_F, :4], 1 + k if k < 2 else 0, mod, rigid)

@@ -18,46 +18,54 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["advance", "backward_weights", "moments", "response", "stride", "weights"]
+__all__ = [
+    "advance",
+    "backward_weights",
+    "moments",
+    "response",
+    "start_weights",
+    "stride",
+    "weights",
+]
 
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 _SERIES = 34
-#: A series term below this no longer changes a moment (|M_q| >= 1/(q + 1) e^{-|x|} / 4 > 0.04
-#: for |x| < 2, and a term bounds the rest of the series to a factor 2 there).
+#: A series term below this no longer changes M_3 (|M_3| > 0.1 for |x| < 2, and a term bounds
+#: the rest of the series to a factor 2 there).
 _TERM = 1e-19
 #: 1 / k for k = 1 .. _SERIES + 4 (products are cheaper than divisions).
 _RECIPROCAL = 1.0 / np.arange(1.0, _SERIES + 5.0)
 
 
 @njit(**_JIT)
-def moments(x):
-    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments)."""
-    out = np.empty(4, dtype=np.complex128)
+def moments(x, out):
+    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``.
+
+    |x| >= 2: the upward recursion M_q = (e^{ix} - q M_{q-1}) / (i x); below, M_3 by its series
+    sum_n (i x)^n / (n! (n + 4)) and the downward recursion M_{q-1} = (e^{ix} - i x M_q) / q,
+    which is stable there (it multiplies an error by |x| / q < 1).
+    """
+    ix = 1j * x
+    e = np.exp(ix)
     if abs(x) >= 2.0:
-        ix = 1j * x
-        e = np.exp(ix)
         prev = (e - 1.0) / ix
         out[0] = prev
         for q in range(1, 4):
             prev = (e - q * prev) / ix
             out[q] = prev
-        return out
-    # sum_n (i x)^n / (n! (n + q + 1)), one running term for the four q
+        return
     tr, ti = 1.0, 0.0
-    a = np.empty(8)
-    for q in range(4):
-        a[2 * q], a[2 * q + 1] = 1.0 / (q + 1.0), 0.0
+    ar, ai = 0.25, 0.0
     for n in range(1, _SERIES):
         xn = x * _RECIPROCAL[n - 1]
         tr, ti = -ti * xn, tr * xn
-        for q in range(4):
-            a[2 * q] += tr * _RECIPROCAL[n + q]
-            a[2 * q + 1] += ti * _RECIPROCAL[n + q]
+        ar += tr * _RECIPROCAL[n + 3]
+        ai += ti * _RECIPROCAL[n + 3]
         if abs(tr) + abs(ti) < _TERM:
             break
-    for q in range(4):
-        out[q] = a[2 * q] + 1j * a[2 * q + 1]
-    return out
+    out[3] = ar + 1j * ai
+    for q in range(3, 0, -1):
+        out[q - 1] = (e - ix * out[q]) * _RECIPROCAL[q - 1]
 
 
 @njit(**_JIT)
@@ -66,8 +74,11 @@ def weights(w, h, cs):
     the rigid weights c1_r = sum_q c_rq / (q + 1), c2_r = sum_q c_rq / ((q + 1)(q + 2))."""
     nm = w.size
     Gw = np.empty((3, 4, nm), dtype=np.complex128)
+    M = np.empty(4, dtype=np.complex128)
     for j in range(nm):
-        M = np.conj(moments(w[j] * h))
+        moments(w[j] * h, M)
+        for q in range(4):
+            M[q] = M[q].conjugate()
         for s in range(3):
             for r in range(4):
                 Gw[s, r, j] = cs[s, r, 0] * M[0] + cs[s, r, 1] * M[1] + cs[s, r, 2] * M[2]
@@ -97,6 +108,32 @@ def advance(y, rig, f, s, modal, rigid):
         acc = Gw[s, 0, j] * f[0] + Gw[s, 1, j] * f[1] + Gw[s, 2, j] * f[2] + Gw[s, 3, j] * f[3]
         y[j] = e[j] * (y[j] + a2[j] * h * acc)
     return R + h * Rv + mu0 * h * h * fd, Rv + mu0 * h * fv
+
+
+@njit(**_JIT)
+def start_weights(modal, w, rigid):
+    """delta and delta' (4 x 4: nodes 0-3 by the unit force at nodes 0-3; row 0 zero) of a unit
+    force at each starting node through steps 0, 1, 2 (stencils forward 0, forward 1,
+    backward), as :func:`advance` and :func:`response` give them."""
+    e, a2, Gw = modal
+    mu0, h, c1, c2 = rigid
+    Wd, Wv = np.zeros((4, 4)), np.zeros((4, 4))
+    for node in range(4):
+        R, Rv = 0.0, 0.0
+        for k in range(3):
+            s = 1 + k if k < 2 else 0
+            R, Rv = R + h * Rv + mu0 * h * h * c2[s, node], Rv + mu0 * h * c1[s, node]
+            Wd[k + 1, node], Wv[k + 1, node] = R, Rv
+    for j in range(w.size):
+        g = a2[j] * h
+        iw = 1.0 / w[j]
+        for node in range(4):
+            y = 0.0 + 0.0j
+            for k in range(3):
+                y = e[j] * (y + g * Gw[1 + k if k < 2 else 0, node, j])
+                Wd[k + 1, node] += y.imag * iw
+                Wv[k + 1, node] += y.real
+    return Wd, Wv
 
 
 @njit(**_JIT)
