@@ -266,7 +266,9 @@ def main(argv: list[str] | None = None) -> list[tuple[str, float, str]]:
             print(f"  {name:42s} {peer[0]:12.0f} {peer[1]:14.1e} vs exact")
         if not args.quick:
             count, wall, cpu = law_sweep()
-            ratio = "" if peer is None else f", {peer[0] / (1e6 * wall / count):.0f}x the peer"
+            ratio = (
+                "" if peer is None else f" ({peer[0] / (1e6 * cpu / count):.0f}x the peer's CPU)"
+            )
             print(
                 f"\nlaw sweep, 200 frames: {count} impacts, {wall:.1f} s wall, "
                 f"{1e3 * wall / count:.2f} ms wall and {1e6 * cpu / count:.0f} us CPU per impact"
