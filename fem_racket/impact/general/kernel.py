@@ -5,17 +5,19 @@ force on a uniform grid, the contact equation solved at each node, the law's own
 condition), evaluated in modal form: instead of the convolution tables of
 :mod:`fem_racket.impact.general.receptance` (O(N^2) per case), each kept mode carries its state
 y = x' + i omega x from node to node exactly for the step's cubic force (the recursion of
-:mod:`fem_racket.impact.law_impact`), y_{k+1} = e^{i theta} (y_k + a^2 h sum_r F_r G_r), so a
-node costs O(modes). Every case brings its own frequencies, mode values and step, so one call
-serves a batch spanning many frames. The starting nodes 1-3 (forward stencil) are solved by
-Gauss-Seidel sweeps over their 4 x 4 weights, as the march does.
+:mod:`fem_racket.impact.general.histories`), y_{k+1} = e^{i theta} (y_k + a^2 h sum_r F_r G_r),
+so a node costs O(modes) (:mod:`fem_racket.impact.general.kernel_modes`). A case's law
+parameters are a tuple and its histories one (5, N) array, so a node costs no reference counts.
+Every case brings its own frequencies, mode values and step, so one call serves a batch spanning
+many frames. The starting nodes 1-3 (forward stencil) are solved by Gauss-Seidel sweeps over
+their 4 x 4 weights, as the march does.
 
 Outputs per case: the nodal histories and one row of :data:`RESULTS`: the separation step and
 fraction, a status (0 separated, 1 still in contact at the last node, 2 Newton did not
 converge), the largest h |dz'/dz| of an ODE state (the march's stiffness), the flexible modes'
-energy at the separation node, and what the outcome and the energy balance integrate from the
-histories (as :mod:`fem_racket.impact.general.march` and
-:func:`fem_racket.impact.general.vouch.energy_residual` do in numpy): the impulse up to
+energy at the separation node, and what the outcome and the energy balance
+(:func:`fem_racket.impact.general.vouch.energy_residual`) integrate from the histories (as
+:mod:`fem_racket.impact.general.march` integrates its outcome in numpy): the impulse up to
 separation, the peak force (a parabola through the largest node and its neighbours), and the
 contact work int F delta' dt and impulse over the whole steps up to the separation node.
 """

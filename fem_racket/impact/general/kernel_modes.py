@@ -22,7 +22,6 @@ __all__ = [
     "advance",
     "backward_weights",
     "moments",
-    "response",
     "start_weights",
     "stride",
     "weights",
@@ -114,7 +113,8 @@ def advance(y, rig, f, s, modal, rigid):
 def start_weights(modal, w, rigid):
     """delta and delta' (4 x 4: nodes 0-3 by the unit force at nodes 0-3; row 0 zero) of a unit
     force at each starting node through steps 0, 1, 2 (stencils forward 0, forward 1,
-    backward), as :func:`advance` and :func:`response` give them."""
+    backward), as :func:`advance` gives the states: the rigid part and the ball, then y' and
+    Im(y) / omega of every mode."""
     e, a2, Gw = modal
     mu0, h, c1, c2 = rigid
     Wd, Wv = np.zeros((4, 4)), np.zeros((4, 4))
@@ -134,16 +134,6 @@ def start_weights(modal, w, rigid):
                 Wd[k + 1, node] += y.imag * iw
                 Wv[k + 1, node] += y.real
     return Wd, Wv
-
-
-@njit(**_JIT)
-def response(y, R, Rv, w):
-    """The forced part of delta and delta' at a node (rigid + ball, then every mode)."""
-    d, v = R, Rv
-    for j in range(y.size):
-        d += y[j].imag / w[j]
-        v += y[j].real
-    return d, v
 
 
 @njit(**_JIT)
