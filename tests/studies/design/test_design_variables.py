@@ -1,6 +1,5 @@
 """Design variables beyond one value per segment: smooth EI(x), rhoA(x) by control points, added
-masses at free positions, the string bed's stiffness; the batched evaluation against the
-per-design one."""
+masses at free positions, the string bed's stiffness."""
 
 import numpy as np
 import pytest
@@ -14,10 +13,9 @@ from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import impacts
-from fem_racket.studies.design.batched import evaluate_batch
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
-from fem_racket.studies.design.objectives import evaluate_design, output_names
+from fem_racket.studies.design.objectives import evaluate_rows, output_names
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.report import design_maps
 from fem_racket.studies.design.solvers import optimize
@@ -29,7 +27,7 @@ STATIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 
 
 def outputs(problem, x):
-    return dict(zip(output_names(problem), evaluate_batch(problem, x[None])[0], strict=True))
+    return dict(zip(output_names(problem), evaluate_rows(problem, x[None])[0], strict=True))
 
 
 def test_linear_profile_mass_is_the_trapezoid_rule():
@@ -191,24 +189,6 @@ def test_series_string_stiffness_matches_simulate():
     (m,) = design_maps(p, x, positions=np.array([0.6, 0.7, 0.8]))
     assert m.law.describe() == ref.describe()
     np.testing.assert_allclose(m.apparent_cor[1:], cor, atol=2e-5)
-
-
-def test_batched_evaluation_matches_design_by_design():
-    """evaluate_batch (all designs' impacts in one engine call, every mode given) against
-    evaluate_design (one engine call per design, modes above 24 through static solves)."""
-    p = design_problem(
-        objectives=("cor", "ball_speed", "power_region"),
-        racket_speed=20.0,
-        vary=("ei", "rhoa", "mass", "position"),
-        mass_positions=(0.9,),
-        mass_start=0.01,
-        zone_points=5,
-    )
-    x = p.from_unit(np.random.default_rng(3).random((6, p.n_var)))
-    batch = evaluate_batch(p, x)
-    for i, xi in enumerate(x):
-        one = evaluate_design(p, xi)
-        assert batch[i] == pytest.approx([one[n] for n in output_names(p)], rel=1e-8, abs=1e-9)
 
 
 @pytest.mark.parametrize(

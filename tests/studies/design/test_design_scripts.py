@@ -10,7 +10,7 @@ import pytest
 from fem_racket.cli import main
 from fem_racket.io.mesh_files import read_mesh
 
-SCRIPTS = Path(__file__).resolve().parents[2] / "scripts"
+SCRIPTS = Path(__file__).resolve().parents[3] / "scripts"
 SMALL = ["--boundaries", "0.3", "--speeds", "30", "--zone-points", "3", "--backend", "serial"]
 
 

@@ -24,7 +24,7 @@ CENTRE = np.array([0.3, 0.6, 0.45, 0.7])
 
 
 def planted(problem, designs):
-    """Synthetic outputs (tests/studies/test_design.py): "mass" = sum of unit coordinates,
+    """Synthetic outputs (tests/studies/design/test_design.py): "mass" = sum of unit coordinates,
     cor = 1 - |u - CENTRE|^2, the other quantities 0."""
     u = problem.to_unit(designs)
     names = output_names(problem)
