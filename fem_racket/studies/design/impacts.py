@@ -6,8 +6,9 @@ time (an eigen-solution or an engine call per impact, milliseconds each, and a f
 :class:`~fem_racket.impact.result.ImpactResult`), where a design batch has thousands of impacts
 and needs only e_A or the grip measures. Until the batched engine stands behind
 ``ExactSolver.solve_many`` and the law batch behind ``GeneralSolver.solve_many``, the two
-functions here take the same arguments (a solver and its problems), let the solver check them,
-and run the method it stands for on every structure's cases at once:
+functions here take a solver and the problems (each structure's
+:class:`~.cases.DesignCases`), let the solver check them, and run the method it stands for on
+every structure's cases at once:
 
 - :func:`apparent_cor`, the free racket: under the paper's law the batched engine
   (:func:`fem_racket.impact.exact.engine.modal_impacts`) on each structure's modes kept by the
@@ -17,15 +18,15 @@ and run the method it stands for on every structure's cases at once:
 - :func:`grip_shock`, the hand-held racket: the exact modal path
   (:mod:`fem_racket.impact.held.modal`), the modes of frame + hand once per structure.
 
-Switching to ``solve_many`` changes these two bodies only. The cases of one structure differ
-only in their impact point and speed, which no solver refuses, so the first of each is checked.
+Switching to ``solve_many`` changes these two bodies only (``solver.solve_many(chain(*runs))``).
+The cases of one structure differ only in their impact point and speed (checked in bulk by the
+engine), which no solver refuses, so the first of each is checked as a problem.
 """
 
 from __future__ import annotations
 
 from collections import OrderedDict
 from collections.abc import Sequence
-from itertools import groupby
 from typing import Any
 
 import numpy as np
@@ -38,8 +39,8 @@ from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.shock import grip_peak, vibration_rms
 from fem_racket.impact.law_impact import receptance
-from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.solvers import Solver
+from fem_racket.studies.design.cases import DesignCases
 
 __all__ = ["apparent_cor", "grip_shock"]
 
@@ -60,41 +61,30 @@ def _field(model: FrameModel, positions: np.ndarray) -> Any:
     return g
 
 
-def _groups(solver: Solver, problems: Sequence[ImpactProblem]) -> list[list[ImpactProblem]]:
-    """The problems in runs on one structure, the first of each checked by ``solver``."""
-    runs = [list(run) for _, run in groupby(problems, key=lambda p: id(p.structure))]
+def _checked(solver: Solver, runs: Sequence[DesignCases]) -> Sequence[DesignCases]:
+    """``runs``, the first problem of each checked by ``solver``."""
     for run in runs:
-        solver.check(run[0])
+        if len(run):
+            solver.check(run[0])
     return runs
 
 
-def _cases(run: list[ImpactProblem]) -> tuple[np.ndarray, np.ndarray]:
-    return (
-        np.array([p.impact.position for p in run]),
-        np.array([p.impact.speed for p in run]),
-    )
-
-
-def apparent_cor(solver: Solver, problems: Sequence[ImpactProblem]) -> np.ndarray:
-    """e_A = -v_B(t_c) / V_B0 of each problem (a free racket at rest struck at V_B0), as
-    ``[r.cor for r in solver.solve_many(problems)]`` (module docstring).
-
-    Problems on one structure must be consecutive; the solver's ``modes`` and ``tolerance``
-    apply (NaN: the ball did not separate).
-    """
-    runs = _groups(solver, problems)
+def apparent_cor(solver: Solver, runs: Sequence[DesignCases]) -> np.ndarray:
+    """e_A = -v_B(t_c) / V_B0 of each problem of ``runs`` in order (a free racket at rest
+    struck at V_B0), as ``[r.cor for r in solver.solve_many(chain(*runs))]`` (module
+    docstring); the solver's ``modes`` and ``tolerance`` apply (NaN: no separation)."""
+    runs = [run for run in _checked(solver, runs) if len(run)]
     if not runs:
         return np.empty(0)
     settings = solver.options.settings()
-    if runs[0][0].law is not None:
+    if runs[0].law is not None:
         return _law_cor(runs, settings.modes, settings.tolerance)
     data = []
     for run in runs:
-        x, v = _cases(run)
-        modes = run[0].model.modes(settings.modes)
-        g = _field(run[0].model, x)
+        modes = run.structure.modes(settings.modes)
+        g = _field(run.structure, run.positions)
         rigid = (np.asarray(g @ modes.rigid) ** 2).sum(axis=1)
-        data.append((modes.omega, np.asarray(g @ modes.shapes), rigid, v, run))
+        data.append((modes.omega, np.asarray(g @ modes.shapes), rigid, run.speeds, run))
     cor = [np.empty(0)] * len(data)
     counts = np.array([d[0].size for d in data])
     for m in np.unique(counts):
@@ -105,9 +95,11 @@ def apparent_cor(solver: Solver, problems: Sequence[ImpactProblem]) -> np.ndarra
             np.concatenate([d[1] for d in group]),
             np.concatenate([d[2] for d in group]),
             speed=np.concatenate([d[3] for d in group]),
-            kcb=np.array([p.kcb for d in group for p in d[4]]),
-            zeta=np.array([p.zeta for d in group for p in d[4]]),
-            ball_mass=np.array([p.ball.mass for d in group for p in d[4]]),
+            kcb=np.concatenate([d[4].kcb for d in group]),
+            zeta=np.concatenate([np.full(k, d[4].zeta) for d, k in zip(group, n, strict=True)]),
+            ball_mass=np.concatenate(
+                [np.full(k, d[4].ball.mass) for d, k in zip(group, n, strict=True)]
+            ),
             tolerance=settings.tolerance,
         )
         parts = np.split(batch.cor, np.cumsum(n)[:-1])
@@ -116,25 +108,19 @@ def apparent_cor(solver: Solver, problems: Sequence[ImpactProblem]) -> np.ndarra
     return np.concatenate(cor)
 
 
-def _law_cor(
-    runs: list[list[ImpactProblem]], modes: int | None, tolerance: float | None
-) -> np.ndarray:
+def _law_cor(runs: list[DesignCases], modes: int | None, tolerance: float | None) -> np.ndarray:
     """e_A of every run's cases under its law: one call of the general integrator."""
-    cases = [_cases(run) for run in runs]
     rec = stack_receptances(
-        [
-            receptance(run[0].model, x, run[0].ball.mass, modes)
-            for run, (x, _) in zip(runs, cases, strict=True)
-        ]
+        [receptance(run.structure, run.positions, run.ball.mass, modes) for run in runs]
     )
-    law = stack_laws([run[0].law for run in runs], [len(run) for run in runs])
-    speed = np.concatenate([v for _, v in cases])
+    law = stack_laws([run.law for run in runs], [len(run) for run in runs])
+    speed = np.concatenate([run.speeds for run in runs])
     out = solve_general(law, rec, speed, tolerance=tolerance)
     return -out.ball_velocity / speed
 
 
 def grip_shock(
-    solver: Solver, problems: Sequence[ImpactProblem], *, peak: bool = True
+    solver: Solver, runs: Sequence[DesignCases], *, peak: bool = True
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """Vibration RMS and peak of the grip force [N] over each problem's shock window, the
     racket held in a hand (:mod:`fem_racket.impact.held.shock`), as ``solver.solve_many``
@@ -143,8 +129,8 @@ def grip_shock(
     Parameters
     ----------
     solver : Solver
-    problems : sequence of ImpactProblem
-        Hand-held rackets at rest under the paper's law; problems on one structure consecutive.
+    runs : sequence of DesignCases
+        Hand-held rackets at rest under the paper's law.
     peak : bool
         Compute the peaks too (about half again the cost).
 
@@ -155,16 +141,15 @@ def grip_shock(
     """
     tolerance = solver.options.settings().tolerance
     rms, peaks = [], []
-    for run in _groups(solver, problems):
-        held = run[0].structure
+    for run in _checked(solver, runs):
+        held = run.structure
         window = held.shock_window
-        x, v = _cases(run)
         contacts = held_contacts(
             held_basis(held.model.fe, held.hand),
-            x,
-            v,
-            ball_mass=run[0].ball.mass,
-            zeta=run[0].zeta,
+            run.positions,
+            run.speeds,
+            ball_mass=run.ball.mass,
+            zeta=run.zeta,
             tolerance=tolerance,
         )
         rms += [vibration_rms(c, window) for c in contacts]

@@ -109,9 +109,9 @@ def _free_cor(
         contact = closing_kcb(speed, problem.law_values(designs)["kcb_factor"])
     else:
         contact = [problem.design_law(x) for x in designs]
-    cases = []
-    for i, d in enumerate(built):
-        cases += free_cases(problem, d.model, positions, speed[i], contact[i])
+    cases = [
+        free_cases(problem, d.model, positions, speed[i], contact[i]) for i, d in enumerate(built)
+    ]
     return apparent_cor(design_solver(problem), cases).reshape(speed.shape)
 
 
@@ -121,9 +121,9 @@ def _shock(
     """Handle-shock objectives (designs, speeds, zone) of each design held in the hand."""
     x = problem.zone.positions
     nd, nv = speed.shape[0], len(problem.speeds)
-    cases = []
-    for i, d in enumerate(built):
-        cases += held_cases(problem, d.model, np.tile(x, nv), speed[i])
+    cases = [
+        held_cases(problem, d.model, np.tile(x, nv), v) for d, v in zip(built, speed, strict=True)
+    ]
     peak = "peak_grip_force" in problem.objectives
     rms, peaks = grip_shock(design_solver(problem, held=True), cases, peak=peak)
     out = {"handle_shock": rms.reshape(nd, nv, x.size)}

@@ -2,6 +2,8 @@
 (:mod:`fem_racket.studies.design.impacts`) against the solvers' own ``solve_many``, one problem
 at a time, on the same problems."""
 
+from itertools import chain
+
 import numpy as np
 import pytest
 
@@ -31,10 +33,9 @@ def test_linear_cases_agree_with_the_exact_solver_one_by_one():
     p = design_problem(vary=("ei", "string"), zone_points=3)
     factor = np.array([0.7, 1.6])
     kcb = closing_kcb(np.vstack([V, V]), factor)
-    cases = []
-    for model, k in zip(models(p), kcb, strict=True):
-        cases += free_cases(p, model, X, V, k)
-    got = apparent_cor(make_solver("auto", tolerance=None, modes=None, output_step=None), cases)
+    runs = [free_cases(p, m, X, V, k) for m, k in zip(models(p), kcb, strict=True)]
+    got = apparent_cor(make_solver("auto", tolerance=None, modes=None, output_step=None), runs)
+    cases = list(chain(*runs))  # the ImpactProblems, each made and validated as it is read
     ref = make_solver("exact", tolerance=None, modes=None, output_step=None).solve_many(cases)
     np.testing.assert_allclose(got, [r.cor for r in ref], rtol=1e-10)
     assert cases[4].kcb == 1.6 * kcb_from_speed(V[1])  # the design's factor on K_CB(v)
@@ -42,22 +43,18 @@ def test_linear_cases_agree_with_the_exact_solver_one_by_one():
 
 def test_law_cases_agree_with_the_general_solver_one_by_one():
     p = design_problem(vary=("ei",), law=get_law("hysteretic"), zone_points=3, speeds=(25.0,))
-    cases = []
-    for model in models(p):
-        cases += free_cases(p, model, X, V, p.law)
-    got = apparent_cor(design_solver(p), cases)
-    ref = make_solver("general", output_step=None).solve_many(cases)
+    runs = [free_cases(p, model, X, V, p.law) for model in models(p)]
+    got = apparent_cor(design_solver(p), runs)
+    ref = make_solver("general", output_step=None).solve_many(chain(*runs))
     # the general integrator vouched for at the COR tolerance 1e-6 on both sides
     np.testing.assert_allclose(got, [r.cor for r in ref], atol=2e-6)
 
 
 def test_held_cases_agree_with_the_held_runs():
     p = design_problem(objectives=("handle_shock",), zone_points=3, speeds=(30.0,))
-    cases = []
-    for model in models(p):
-        cases += held_cases(p, model, X, V)
+    cases = [held_cases(p, model, X, V) for model in models(p)]
     rms, peak = grip_shock(design_solver(p, held=True), cases)
-    runs = make_solver("exact", tolerance=p.tolerance, output_step=None).solve_many(cases)
+    runs = make_solver("exact", tolerance=p.tolerance, output_step=None).solve_many(chain(*cases))
     # the same modal path, one run per problem: round-off apart (measured 1e-12)
     np.testing.assert_allclose(rms, [r.grip_vibration_rms for r in runs], rtol=1e-10)
     np.testing.assert_allclose(peak, [r.peak_grip_force for r in runs], rtol=1e-10)
@@ -68,4 +65,7 @@ def test_the_solver_refuses_what_it_cannot_do():
     p = design_problem(vary=("ei",), law=get_law("hysteretic"), zone_points=3)
     cases = free_cases(p, models(p, 1)[0], X, V, p.law)
     with pytest.raises(InputError, match="solver = 'exact' is not allowed with contact law"):
-        apparent_cor(make_solver("exact", output_step=None), cases)
+        apparent_cor(make_solver("exact", output_step=None), [cases])
+    with pytest.raises(InputError, match="need one position, speed"):
+        free_cases(p, models(p, 1)[0], X, V[:2], p.law)
+    assert cases[1:3] == [] or [q.impact.position for q in cases[1:3]] == list(X[1:3])
