@@ -10,7 +10,7 @@ import argparse
 from fem_racket.cli.common import add_config_option
 from fem_racket.cli.options.design import add_design_options, problem_from_args
 from fem_racket.cli.options.drawing import add_quiet_option
-from fem_racket.cli.options.execution import add_run_options, run_options
+from fem_racket.cli.options.execution import add_run_options, execution_from_args
 from fem_racket.cli.options.output import print_written_folder
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.extras import require
@@ -68,23 +68,25 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study and print its summary."""
-    from fem_racket.cli.common import print_json
-    from fem_racket.io.design_study import run_optimization
+    from fem_racket.cli.common import print_json, run_parameters
+    from fem_racket.io.design_study import OptimizationRun, OutputOptions, run_optimization
+    from fem_racket.studies.design.options import SearchOptions
 
     if args.method == "nsga2":
         require("pymoo", "fem-racket optimize --method nsga2")
     problem = problem_from_args(args)
-    r = run_optimization(
-        problem,
-        method=args.method,
-        out=args.out,
-        overwrite=replace_own(args, args.out == DEFAULT_OUTPUT, [args.out]),
-        restart=args.restart,
-        maxiter=args.maxiter,
-        popsize=args.popsize,
-        pop_size=args.pop_size,
+    search = SearchOptions(
+        **{k: getattr(args, k) for k in ("method", "maxiter", "popsize", "pop_size")},
         generations=args.generations,
-        **run_options(args),
+        seed=args.seed,
+    )
+    files = OutputOptions(
+        args.out,
+        replace_own(args, args.out == DEFAULT_OUTPUT, [args.out]),
+        run_parameters(args),
+    )
+    r = run_optimization(
+        OptimizationRun(problem, search, execution_from_args(args), files, args.restart)
     )
     summary = {
         "objective_name": problem.objectives[0],

@@ -7,7 +7,7 @@ import argparse
 from fem_racket.cli.common import add_config_option
 from fem_racket.cli.options.design import add_design_options, problem_from_args
 from fem_racket.cli.options.drawing import add_quiet_option
-from fem_racket.cli.options.execution import add_run_options, run_options
+from fem_racket.cli.options.execution import add_run_options, execution_from_args
 from fem_racket.extras import require
 
 
@@ -44,18 +44,25 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the indices."""
-    from fem_racket.cli.common import print_json, print_written
-    from fem_racket.io.design_study import run_sensitivity, sobol_json
+    from fem_racket.cli.common import print_json, print_written, run_parameters
+    from fem_racket.io.design_study import (
+        OutputOptions,
+        SensitivityRun,
+        run_sensitivity,
+        sobol_json,
+    )
 
     require("SALib", "fem-racket sensitivity")
-    s = run_sensitivity(
+    files = OutputOptions(args.out, args.overwrite, run_parameters(args))
+    run = SensitivityRun(
         problem_from_args(args),
-        output=args.output,
-        designs=args.designs,
-        out=args.out,
-        overwrite=args.overwrite,
-        **run_options(args),
+        args.output,
+        args.designs,
+        args.seed,
+        execution_from_args(args),
+        files,
     )
+    s = run_sensitivity(run)
     if args.json:
         print_json(sobol_json(s))
         return 0

@@ -7,14 +7,16 @@ option groups: :mod:`.variables`, :mod:`.zones`, :mod:`.objectives`; where the d
 from __future__ import annotations
 
 import argparse
+from dataclasses import fields
 from typing import Any
 
 from fem_racket.cli.common import add_frame_options, frame_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.objectives import add_objective_options, objectives_from_args
-from fem_racket.cli.options.variables import add_variable_options, variables_from_args
-from fem_racket.cli.options.zones import add_zone_options, zone_from_args
-from fem_racket.studies.design.build import design_problem
+from fem_racket.cli.options.variables import add_variable_options
+from fem_racket.cli.options.zones import add_zone_options
+from fem_racket.studies.design.build import build_problem
+from fem_racket.studies.design.options import DesignOptions, VariableOptions, ZoneOptions
 from fem_racket.studies.design.problem import DesignProblem
 
 __all__ = ["add_design_options", "problem_from_args"]
@@ -29,13 +31,19 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
     add_law_options(parser)
 
 
+def _group(kind: type, args: argparse.Namespace) -> Any:
+    """The option group ``kind`` from the options of the same names (the others default)."""
+    given = vars(args)
+    return kind(**{f.name: given[f.name] for f in fields(kind) if f.name in given})
+
+
 def problem_from_args(args: argparse.Namespace) -> DesignProblem:
     """The design problem the options describe."""
-    kwargs: dict[str, Any] = {
-        **variables_from_args(args),
-        "law": law_from_args(args),
-        **zone_from_args(args),
-        **objectives_from_args(args),
-        "elements": args.elements,
-    }
-    return design_problem(frame_from_args(args), **kwargs)
+    options = DesignOptions(
+        variables=_group(VariableOptions, args),
+        zone_options=_group(ZoneOptions, args),
+        goals=objectives_from_args(args),
+        law=law_from_args(args),
+        elements=args.elements,
+    )
+    return build_problem(frame_from_args(args), options)

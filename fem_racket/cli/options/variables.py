@@ -5,11 +5,10 @@ bounds, added masses, smooth profiles and the string bed."""
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
 from fem_racket.cli.options.lists import number_list
 
-__all__ = ["add_variable_options", "variables_from_args"]
+__all__ = ["add_variable_options"]
 
 
 def add_variable_options(parser: argparse.ArgumentParser) -> None:
@@ -115,23 +114,3 @@ def add_variable_options(parser: argparse.ArgumentParser) -> None:
         help="with --vary string_cubic (--law series): bounds of k_3 [N/m^3] "
         "(default 0-2 x the start)",
     )
-
-
-def variables_from_args(args: argparse.Namespace) -> dict[str, Any]:
-    """Keywords of :func:`fem_racket.studies.design.build.design_problem` from the options."""
-    return {
-        "boundaries": args.boundaries,
-        "vary": args.vary,
-        "link_ei": args.link_ei,
-        "ei_bounds": args.ei_bounds,
-        "rhoa_bounds": args.rhoa_bounds,
-        "mass_positions": args.mass_positions,
-        "mass_bounds": args.mass_bounds,
-        "mass_start": args.mass_start,
-        "position_bounds": args.position_bounds,
-        "ei_points": args.ei_points,
-        "rhoa_points": args.rhoa_points,
-        "interpolation": args.interpolation,
-        "string_bounds": args.string_bounds,
-        "cubic_bounds": args.cubic_bounds,
-    }

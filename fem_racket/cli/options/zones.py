@@ -4,12 +4,11 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
 from fem_racket.cli.options.lists import number_list
 from fem_racket.studies.design.build import ZONES
 
-__all__ = ["add_zone_options", "zone_from_args"]
+__all__ = ["add_zone_options"]
 
 
 def add_zone_options(parser: argparse.ArgumentParser) -> None:
@@ -94,20 +93,3 @@ def add_zone_options(parser: argparse.ArgumentParser) -> None:
         help="swing speed ~ I^exponent, the exponent [-] "
         "(default -0.27; 0: same swing for any racket)",
     )
-
-
-def zone_from_args(args: argparse.Namespace) -> dict[str, Any]:
-    """Keywords of :func:`fem_racket.studies.design.build.design_problem` from the options."""
-    return {
-        "zone": args.zone,
-        "zone_range": args.zone_range,
-        "zone_points": args.zone_points,
-        "zone_sigma": args.zone_sigma,
-        "speeds": args.speeds,
-        "racket_speed": args.racket_speed,
-        "reference": args.reference,
-        "pivot": args.pivot,
-        "swing_exponent": args.swing_exponent,
-        "ball_mass": args.ball_mass,
-        "zeta": args.zeta,
-    }

@@ -15,6 +15,7 @@ import pytest
 from fem_racket.cli import main
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import output_names
+from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.variables import Constraint
@@ -36,7 +37,10 @@ def planted(problem, designs):
 
 def problem(**kwargs):
     return paper_problem(
-        boundaries=(0.3,), constraints=(Constraint("mass_kg", high=1.5),), **kwargs
+        None,
+        VariableOptions(boundaries=(0.3,)),
+        constraints=(Constraint("mass_kg", high=1.5),),
+        **kwargs,
     )
 
 

@@ -16,6 +16,7 @@ from fem_racket.impact.exact.engine import impacts
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_rows, output_names
+from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.report import design_maps
 from fem_racket.studies.design.solvers import optimize
@@ -91,8 +92,8 @@ def test_planted_control_point_profile_recovered_to_1_percent():
     base = design_problem(ei_points=STATIONS, rhoa_points=(0.0, 0.5, 1.0))
     mass = mass_quantities(base.mesh(target))["mass"]
     p = paper_problem(
-        ei_points=STATIONS,
-        rhoa_points=(0.0, 0.5, 1.0),
+        None,
+        VariableOptions(ei_points=STATIONS, rhoa_points=(0.0, 0.5, 1.0)),
         constraints=(Constraint("mass_kg", mass, mass),),
     )
     r = optimize(
