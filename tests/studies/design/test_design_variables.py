@@ -201,6 +201,10 @@ def test_series_string_stiffness_matches_simulate():
         ({"vary": ("position",), "mass_positions": (0.8,), "position_bounds": (-0.1, 1)}, "pos_1"),
         ({"vary": ("string_cubic",)}, "string_cubic"),
         ({"vary": ("string",), "law": get_law("hysteretic")}, "string"),
+        (
+            {"zone_point": 3},
+            "'zone_point' is not known to design_problem; did you mean 'zone_points'",
+        ),
     ],
 )
 def test_bad_new_variables(kwargs, needle):
