@@ -144,26 +144,13 @@ def run_optimization(run: OptimizationRun) -> DesignResult:
     work_begins()
     history = None if files.out is None else history_path(files.out)
     ev = _evaluator(problem, run.execution, history, run.restart)
-    progress = run.execution.progress
+    common = {"evaluator": ev, "seed": s.seed, "progress": run.execution.progress}
     try:
         if s.method == "nsga2":
-            result = pareto_front(
-                problem,
-                evaluator=ev,
-                pop_size=s.pop_size,
-                generations=s.generations,
-                seed=s.seed,
-                progress=progress,
-            )
+            result = pareto_front(problem, pop_size=s.pop_size, generations=s.generations, **common)
         else:
             result = optimize(
-                problem,
-                method=s.method,
-                evaluator=ev,
-                maxiter=s.maxiter,
-                popsize=s.popsize,
-                seed=s.seed,
-                progress=progress,
+                problem, method=s.method, maxiter=s.maxiter, popsize=s.popsize, **common
             )
         if files.out is not None:
             write_study(result, files.out, overwrite=files.overwrite, parameters=files.parameters)

@@ -30,7 +30,13 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.studies.checkpoint import LOCK_NAME, acquire_lock, checksum, write_atomic
+from fem_racket.studies.checkpoint import (
+    LOCK_NAME,
+    acquire_lock,
+    checksum,
+    stored_digest,
+    write_atomic,
+)
 from fem_racket.validation import InputError, show_path
 
 __all__ = ["History"]
@@ -132,23 +138,8 @@ class History:
 
     def _prepare(self, description: dict[str, Any] | None, restart: bool) -> None:
         """Remove stale temporaries (everything with ``restart``); check ``problem.json``."""
-        for entry in self.folder.iterdir():
-            if entry.name.startswith(".tmp-") or (restart and entry.name != LOCK_NAME):
-                (shutil.rmtree if entry.is_dir() else Path.unlink)(entry)
         meta = self.folder / META_NAME
-        stored = None
-        if meta.exists():
-            try:
-                stored = json.loads(meta.read_text())["digest"]
-                if not isinstance(stored, str):
-                    raise TypeError("digest is not a string")
-            except (OSError, ValueError, KeyError, TypeError) as exc:
-                log.warning(
-                    "history file %s is damaged (%s): rewritten; every batch is checked on its own",
-                    show_path(meta),
-                    " ".join(str(exc).split())[:80] or type(exc).__name__,
-                )
-                stored = None
+        stored = stored_digest(self.folder, meta, restart, "history", "batch")
         if stored is not None and stored != self.digest:
             raise InputError(
                 f"history = '{self.folder}' belongs to a different design problem: rerun "
