@@ -43,6 +43,7 @@ __all__ = [
     "acquire_lock",
     "checkpoint_path",
     "checksum",
+    "make_folder",
     "stored_digest",
     "write_atomic",
 ]
@@ -86,6 +87,15 @@ def acquire_lock(folder: Path, busy: str) -> Any:
     fh.write(f"{os.getpid()}\n")
     fh.flush()
     return fh
+
+
+def make_folder(folder: Path, refusal: str) -> None:
+    """Make ``folder`` and its parents, or refuse in one line: ``refusal`` followed by the
+    system's reason in parentheses."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"{refusal} ({exc.strerror})") from None
 
 
 def stored_digest(folder: Path, record: Path, restart: bool, kind: str, piece: str) -> str | None:
@@ -168,13 +178,11 @@ class Checkpoint:
         self.n_cases, self.n_values = n_cases, n_values
         self.cases = 0  # finished cases stored
         self._lock: Any = None
-        try:
-            self.folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise InputError(
-                f"out = {show_path(self.output)} is not allowed: its checkpoint folder "
-                f"{show_path(self.folder)} cannot be made ({exc.strerror})"
-            ) from None
+        make_folder(
+            self.folder,
+            f"out = {show_path(self.output)} is not allowed: its checkpoint folder "
+            f"{show_path(self.folder)} cannot be made",
+        )
         self._lock = self._acquire()
         try:
             self._prepare(description, restart)

@@ -34,6 +34,7 @@ from fem_racket.studies.checkpoint import (
     LOCK_NAME,
     acquire_lock,
     checksum,
+    make_folder,
     stored_digest,
     write_atomic,
 )
@@ -118,13 +119,9 @@ class History:
         self._locked = False
         if self.folder is None:
             return
-        try:
-            self.folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise InputError(
-                f"history = {show_path(self.folder)} is not allowed: it cannot be made "
-                f"({exc.strerror})"
-            ) from None
+        make_folder(
+            self.folder, f"history = {show_path(self.folder)} is not allowed: it cannot be made"
+        )
         _lock(self.folder)
         self._locked = True
         # released when the history is closed, or forgotten (an evaluator a script drops)
