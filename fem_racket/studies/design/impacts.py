@@ -19,8 +19,9 @@ every structure's cases at once:
   (:mod:`fem_racket.impact.held.modal`), the modes of frame + hand once per structure.
 
 Switching to ``solve_many`` changes these two bodies only (``solver.solve_many(chain(*runs))``).
-The cases of one structure differ only in their impact point and speed (checked in bulk by the
-engine), which no solver refuses, so the first of each is checked as a problem.
+The runs are of one kind (one design problem's); the cases of one structure differ only in
+their impact point and speed (checked in bulk by the engine), which no solver refuses, so the
+first of each is checked as a problem.
 """
 
 from __future__ import annotations
@@ -61,11 +62,14 @@ def _field(model: FrameModel, positions: np.ndarray) -> Any:
     return g
 
 
-def _checked(solver: Solver, runs: Sequence[DesignCases]) -> Sequence[DesignCases]:
-    """``runs``, the first problem of each checked by ``solver``."""
+def _checked(solver: Solver, runs: Sequence[DesignCases]) -> list[DesignCases]:
+    """The non-empty ``runs``, the first problem of each checked by the method ``solver``
+    stands for (``auto`` picks it on the first problem: the runs are of one kind)."""
+    runs = [run for run in runs if len(run)]
+    if runs and hasattr(solver, "pick"):
+        solver = solver.pick(runs[0][0])
     for run in runs:
-        if len(run):
-            solver.check(run[0])
+        solver.check(run[0])
     return runs
 
 
@@ -73,7 +77,7 @@ def apparent_cor(solver: Solver, runs: Sequence[DesignCases]) -> np.ndarray:
     """e_A = -v_B(t_c) / V_B0 of each problem of ``runs`` in order (a free racket at rest
     struck at V_B0), as ``[r.cor for r in solver.solve_many(chain(*runs))]`` (module
     docstring); the solver's ``modes`` and ``tolerance`` apply (NaN: no separation)."""
-    runs = [run for run in _checked(solver, runs) if len(run)]
+    runs = _checked(solver, runs)
     if not runs:
         return np.empty(0)
     settings = solver.options.settings()
