@@ -11,6 +11,16 @@ relative to its centre, the sense of rolling along the strings; negative (backsp
 moves forward (+t), so the contact point slips faster. The contact point's velocity is
 ``v_t - R omega``: a ball rolling along the strings has ``omega = v_t / R``.
 
+Across the face: the lateral axis y of the face (positive toward the side of a positive
+``offset``, :mod:`fem_racket.impact.offaxis`). ``side_angle`` is the angle between the ball's
+path and the plane of the long axis and the face normal (positive: moving toward +y), so the
+ball arrives at normal speed V cos(side) cos(angle), along the face V cos(side) sin(angle) and
+across it V sin(side); ``angle`` is then the angle of the path's projection on that plane from
+the normal. ``side_spin``, about the long axis's direction, is signed like ``spin`` along y:
+positive when the ball's surface on the strings' side moves toward -y relative to its centre
+(the sense of rolling toward +y); the contact point's lateral velocity is ``v_y - R omega_s``.
+With both zero the impact is the one in the plane of the long axis, unchanged.
+
 The ball is a rigid sphere of radius R and moment of inertia I = k m R^2 about its centre. A
 tennis ball is a thick rubber shell under felt: a uniform shell of outer radius 33 mm and wall
 3.3 mm gives k = (2/5)(1 - 0.9^5)/(1 - 0.9^3) = 0.605; the literature's range is 0.55-0.67
@@ -69,7 +79,8 @@ class Incidence:
     Parameters
     ----------
     angle : float
-        Angle between the ball's path and the face normal [deg], in [0, 90).
+        Angle between the ball's path (its projection on the plane of the long axis and the
+        face normal) and the face normal [deg], in [0, 90).
     spin : float
         Incoming spin [rpm], positive = topspin (see the module docstring).
     friction : float
@@ -80,6 +91,11 @@ class Incidence:
         Ball radius R [m], > 0.
     compliance_ratio : float
         eta^2 = k_n / k_t >= 0 (0: rigid tangential contact).
+    side_angle : float
+        Angle between the ball's path and the plane of the long axis and the face normal [deg],
+        in (-90, 90), positive toward +y (module docstring).
+    side_spin : float
+        Incoming side spin [rpm], positive = rolling toward +y (module docstring).
     """
 
     angle: float = 0.0
@@ -88,6 +104,8 @@ class Incidence:
     ball_inertia: float = DEFAULT_BALL_INERTIA
     radius: float = DEFAULT_BALL_RADIUS
     compliance_ratio: float = DEFAULT_COMPLIANCE_RATIO
+    side_angle: float = 0.0
+    side_spin: float = 0.0
 
     def __post_init__(self) -> None:
         checks = {
@@ -99,6 +117,11 @@ class Incidence:
             ),
             "radius": check_positive("radius", self.radius, "m"),
             "compliance_ratio": _non_negative("compliance_ratio", self.compliance_ratio),
+            "side_angle": check_range(
+                "side_angle", self.side_angle, -90.0, 90.0, unit="deg", include_low=False,
+                include_high=False,
+            ),  # fmt: skip
+            "side_spin": check_finite("side_spin", self.side_spin, "rpm"),
         }
         for name, value in checks.items():
             object.__setattr__(self, name, value)
@@ -113,10 +136,25 @@ class Incidence:
         """beta_t = 1 + m R^2 / I: the ball's contact point accelerates at beta_t F_t / m."""
         return 1.0 + 1.0 / self.ball_inertia
 
+    @property
+    def side_spin_rad_s(self) -> float:
+        """Incoming side spin omega_s [rad/s], positive = rolling toward +y."""
+        return self.side_spin * RPM
+
+    @property
+    def lateral(self) -> bool:
+        """True when the ball arrives with a component across the face or side spin."""
+        return self.side_angle != 0.0 or self.side_spin != 0.0
+
     def components(self, speed: float) -> tuple[float, float]:
-        """(normal, tangential) ball speed [m/s] for an incident ``speed`` [m/s]."""
-        a = math.radians(self.angle)
-        return speed * math.cos(a), speed * math.sin(a)
+        """(normal, along the face) ball speed [m/s] for an incident ``speed`` [m/s]."""
+        a, b = math.radians(self.angle), math.radians(self.side_angle)
+        v = speed * math.cos(b)  # cos(0) = 1 exactly: the plane's numbers bit for bit
+        return v * math.cos(a), v * math.sin(a)
+
+    def lateral_speed(self, speed: float) -> float:
+        """The ball's speed across the face v_y [m/s] for an incident ``speed`` [m/s]."""
+        return speed * math.sin(math.radians(self.side_angle))
 
     def summary(self) -> dict[str, float]:
         """The incidence and contact parameters, units in the keys."""
@@ -127,6 +165,8 @@ class Incidence:
             "ball_inertia_i_over_mr2": self.ball_inertia,
             "ball_radius_m": self.radius,
             "compliance_ratio_eta2": self.compliance_ratio,
+            "side_angle_deg": self.side_angle,
+            "side_spin_rpm": self.side_spin,
         }
 
 

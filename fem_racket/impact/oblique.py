@@ -4,10 +4,18 @@ The normal impact is today's, at the normal speed V cos(angle): any contact law,
 the free racket (:func:`fem_racket.impact.incidence.head_on`, solved by the problem's solver)
 or on a clamped head (:func:`clamped_normal`: eqs 1-3 in closed form, the paper's linear law).
 The tangential contact (:mod:`fem_racket.impact.tangential`) is then marched over its normal
-force history, with the racket's tangential effective mass: the free racket recoils along its
-long axis as a rigid body, M_t = M (the string plane lies on the beam's axis, so the tangential
-force neither bends nor turns it, and the beam is rigid along itself); a clamped head does not
-move (M_t infinite).
+force history, with the racket's tangential response: the free racket moves rigidly in the
+plane of its face (the string plane lies on the beam's axis, so the tangential force neither
+bends nor twists it, and the frame is taken as rigid in that plane), translating with its mass
+M and turning about the face normal through its centre of gravity (its yaw, inertia
+I_n = I_cg + I_p for a flat racket, the perpendicular-axis theorem; I_p the polar moment of
+:mod:`fem_racket.impact.offaxis`): on the long axis and in its plane that is M_t = M; across
+the face, or off the axis, the impact point's 2x2 compliance couples the two directions
+(:class:`~fem_racket.impact.tangential.oblique.BallMotion`). The racket's roll about its long
+axis, from the normal force off the axis, moves the face point only along the normal (the
+face contains the roll axis), so it enters the normal impact (:mod:`fem_racket.impact.offaxis`)
+and not the tangential one; the tangential force, applied in the face, exerts no roll moment.
+A clamped head does not move.
 
 Assumed (stated in the README): the tangential force does not change the normal impact (so with
 mu = 0, or head-on without spin, the normal outcome is exactly the head-on impact's at the
@@ -30,7 +38,12 @@ from fem_racket.impact.incidence import Incidence, head_on
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
 from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, SampledNormal
-from fem_racket.impact.tangential.oblique import BallMotion, ObliqueOutcome, tangential_impact
+from fem_racket.impact.tangential.oblique import (
+    BallMotion,
+    ObliqueOutcome,
+    RacketYaw,
+    tangential_impact,
+)
 from fem_racket.validation import InputError, check_choice
 
 __all__ = [
@@ -159,6 +172,10 @@ class NormalImpact:
         M_t [kg], the tangential effective mass (``math.inf``: clamped head).
     contact : LinearContact or None
         A clamped head's K_CB and zeta.
+    model : FrameModel or None
+        The free racket (its yaw inertia); None: clamped, or no yaw (a hand).
+    point : (float, float)
+        The impact point: along the frame from the butt and across from the long axis [m].
     """
 
     result: ImpactResult | ClampedImpact
@@ -166,6 +183,21 @@ class NormalImpact:
     ball_mass: float
     racket_mass: float
     contact: LinearContact | None = None
+    model: Any = None
+    point: tuple[float, float] = (0.0, 0.0)
+
+    @property
+    def offset(self) -> float:
+        return self.point[1]
+
+    def racket_yaw(self) -> RacketYaw | None:
+        """The free racket's yaw about the face normal (None for a clamped head); needs the
+        frame's polar moment (torsion data)."""
+        if self.model is None:
+            return None
+        props = self.model.props
+        inertia = props.inertia + self.model.torsion.polar_moment
+        return RacketYaw(inertia, self.point[0] - props.cg, self.point[1])
 
     @property
     def rebound_speed(self) -> float:
@@ -177,16 +209,23 @@ class NormalImpact:
 
 def oblique_on(normal: NormalImpact, incidence: Incidence, speed: float) -> ObliqueResult:
     """The oblique impact of ``incidence`` at ``speed`` [m/s] over its computed normal impact
-    (at the normal speed ``speed cos(angle)``)."""
+    (at the normal speed ``speed cos(side) cos(angle)``); the racket's yaw enters when
+    anything crosses the face or the point is off the axis (else M_t alone, as in the plane)."""
     v_t = incidence.components(speed)[1]
-    motion = BallMotion(normal.ball_mass, v_t, normal.rebound_speed, normal.racket_mass)
+    yaw = normal.racket_yaw() if incidence.lateral or normal.offset != 0.0 else None
+    motion = BallMotion(
+        normal.ball_mass, v_t, normal.rebound_speed, normal.racket_mass,
+        lateral_speed=incidence.lateral_speed(speed), yaw=yaw,
+    )  # fmt: skip
     out = tangential_impact(incidence, normal.history, motion)
     return ObliqueResult(normal.result, out, speed, normal.contact)
 
 
 def free_normal(result: ImpactResult) -> NormalImpact:
     """The normal impact of a free racket, computed with histories."""
-    return NormalImpact(result, normal_history(result), result.ball.mass, result.model.props.mass)
+    m_b, model = result.ball.mass, result.model
+    point = (result.x_impact, result.offset)
+    return NormalImpact(result, normal_history(result), m_b, model.props.mass, None, model, point)
 
 
 def solve_oblique(solver: Any, problem: ImpactProblem) -> ObliqueResult:
