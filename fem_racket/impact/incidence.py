@@ -118,9 +118,14 @@ class Incidence:
             "radius": check_positive("radius", self.radius, "m"),
             "compliance_ratio": _non_negative("compliance_ratio", self.compliance_ratio),
             "side_angle": check_range(
-                "side_angle", self.side_angle, -90.0, 90.0, unit="deg", include_low=False,
+                "side_angle",
+                self.side_angle,
+                -90.0,
+                90.0,
+                unit="deg",
+                include_low=False,
                 include_high=False,
-            ),  # fmt: skip
+            ),
             "side_spin": check_finite("side_spin", self.side_spin, "rpm"),
         }
         for name, value in checks.items():
