@@ -175,17 +175,18 @@ class Incidence:
         }
 
 
-def check_incidence(incidence: object, refused: bool) -> None:
+def check_incidence(incidence: object, *, strung: bool) -> None:
     """Refuse an ``incidence`` that is not an :class:`Incidence` (or None: head-on), or any on
-    a racket the oblique impact does not take (``refused``: held in a hand, or strung)."""
+    a strung racket (the oblique impact takes the lumped ball/string law; a hand-held racket
+    takes one in the plane of its long axis, :func:`fem_racket.impact.oblique.oblique_on`)."""
     if incidence is None:
         return
     if not isinstance(incidence, Incidence):
         raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence or None")
-    if refused:
+    if strung:
         raise InputError(
-            "incidence is not allowed with a hand or a string bed: the oblique impact takes a "
-            "free racket with the lumped ball/string law"
+            "incidence is not allowed with a string bed: the oblique impact takes the lumped "
+            "ball/string law"
         )
 
 

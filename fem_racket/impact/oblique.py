@@ -34,6 +34,7 @@ import numpy as np
 
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.impact.analytic.rigid import ClampedImpact, clamped_impact
+from fem_racket.impact.held.run import HeldRun
 from fem_racket.impact.incidence import Incidence, head_on
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
@@ -52,6 +53,7 @@ __all__ = [
     "ObliqueResult",
     "clamped_normal",
     "free_normal",
+    "held_normal",
     "normal_history",
     "oblique_on",
     "solve_oblique",
@@ -80,7 +82,7 @@ class ObliqueResult:
         (:mod:`fem_racket.impact.oblique_stroke`), units in the keys.
     """
 
-    normal: ImpactResult | ClampedImpact
+    normal: ImpactResult | ClampedImpact | HeldRun
     tangential: ObliqueOutcome
     speed: float
     contact: LinearContact | None = None
@@ -90,10 +92,14 @@ class ObliqueResult:
     def clamped(self) -> bool:
         return isinstance(self.normal, ClampedImpact)
 
+    @property
+    def held(self) -> bool:
+        return isinstance(self.normal, HeldRun)
+
     def histories(self) -> dict[str, np.ndarray]:
         """Time histories of the tangential contact at the normal impact's output times (over
-        the force's contact for a clamped head), units in the names."""
-        if self.clamped:
+        the force's contact for a clamped head or a hand-held racket), units in the names."""
+        if self.clamped or self.held:
             t = self.tangential.solution.normal.grid
             return {"time [s]": t, **self.tangential.histories(t)}
         return {"time [s]": self.normal.t, **self.tangential.histories(self.normal.t)}
@@ -116,7 +122,8 @@ class ObliqueResult:
                 "zeta": c.zeta,
             }
         else:
-            base = {**self.normal.summary(), "structure": "free racket"}
+            where = "hand-held racket" if self.held else "free racket"
+            base = {**self.normal.summary(), "structure": where}
         normal_speed = self.tangential.incidence.components(self.speed)[0]
         return {
             **base,
@@ -185,6 +192,7 @@ class NormalImpact:
     contact: LinearContact | None = None
     model: Any = None
     point: tuple[float, float] = (0.0, 0.0)
+    held: bool = False
 
     @property
     def offset(self) -> float:
@@ -212,6 +220,11 @@ def oblique_on(normal: NormalImpact, incidence: Incidence, speed: float) -> Obli
     (at the normal speed ``speed cos(side) cos(angle)``); the racket's yaw enters when
     anything crosses the face or the point is off the axis (else M_t alone, as in the plane)."""
     v_t = incidence.components(speed)[1]
+    if normal.held and incidence.lateral:
+        raise InputError(
+            "side_angle and side_spin are not allowed with a hand: the hand holds the racket in "
+            "the plane of its long axis only (the held racket's yaw is not modelled)"
+        )
     yaw = normal.racket_yaw() if incidence.lateral or normal.offset != 0.0 else None
     motion = BallMotion(
         normal.ball_mass, v_t, normal.rebound_speed, normal.racket_mass,
@@ -228,11 +241,42 @@ def free_normal(result: ImpactResult) -> NormalImpact:
     return NormalImpact(result, normal_history(result), m_b, model.props.mass, None, model, point)
 
 
+def held_normal(run: HeldRun, problem: ImpactProblem) -> NormalImpact:
+    """The normal impact of a hand-held racket, computed with histories.
+
+    The impulse P(t) is the integral of the contact force's samples over the contact (a cubic
+    spline's, fourth order in the output step); k_n is K_CB. Along the face the held racket
+    recoils with the frame's mass M: the hand model's grip layer acts across the handle, in
+    the swing plane, and nothing joins it along the long axis (a hand rigidly joined there
+    would make it M + m_h; README "Oblique impacts and spin" gives the difference).
+    """
+    from scipy.interpolate import CubicSpline
+
+    if run.histories is None:
+        raise InputError(
+            "an oblique impact needs the normal impact's histories: give an output_step"
+        )
+    t, f = run.histories["time [s]"], run.histories["contact force [N]"]
+    on = t <= run.contact_time
+    t, f = t[on], f[on]
+    impulse = CubicSpline(t, f).antiderivative()(t)
+    history = SampledNormal(t, impulse, f, run.used["kcb_n_m"])
+    model = problem.structure.model
+    point = (problem.impact.position * model.mesh.length, 0.0)
+    return NormalImpact(
+        run, history, problem.ball.mass, model.props.mass, None, None, point, held=True
+    )
+
+
 def solve_oblique(solver: Any, problem: ImpactProblem) -> ObliqueResult:
     """Solve an oblique ``problem`` with ``solver`` (a :class:`~fem_racket.impact.solvers.Solver`,
     which calls this for a problem with an incidence): its normal impact
     (:func:`fem_racket.impact.incidence.head_on`), then the tangential contact over it."""
-    normal = free_normal(solver.solve(head_on(problem)))
+    result = solver.solve(head_on(problem))
+    if isinstance(result, HeldRun):
+        normal = held_normal(result, problem)
+    else:
+        normal = free_normal(result)
     return oblique_on(normal, problem.incidence, problem.impact.speed)
 
 

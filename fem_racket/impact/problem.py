@@ -190,7 +190,7 @@ class ImpactProblem:
                     "strung racket is struck on its long axis"
                 )
             check_offsets(self.model, self.impact.position, self.offset)
-        check_incidence(self.incidence, self.held or self.strings is not None)
+        check_incidence(self.incidence, strung=self.strings is not None)
 
     def ball_law(self) -> ContactLaw:
         """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""

@@ -149,8 +149,12 @@ def test_an_impact_problem_with_an_incidence_through_the_solvers(exact):
     for key in ("spin_out_rpm", "angle_out_deg", "contact_regime", "cor"):
         assert one[key] == ref[key] == many.summary()[key]
     assert "40 deg, -3820 rpm" in repr(problem)
-    with pytest.raises(InputError, match="^incidence is not allowed with a hand or a string bed"):
-        ImpactProblem.build(hand=Hand(), incidence=STROKE)
+    # a hand-held racket takes an incidence in the plane of its long axis (issue 26, item 2),
+    # not one across the face
+    held = ImpactProblem.build(hand=Hand(), incidence=STROKE)
+    assert held.held and held.incidence is STROKE
+    with pytest.raises(InputError, match="^side_angle and side_spin are not allowed with a hand"):
+        solver.solve(held.replace(incidence=Incidence(angle=40.0, side_spin=500.0)))
     with pytest.raises(InputError, match="^incidence = 40 is not allowed"):
         ImpactProblem.build(incidence=40)
 

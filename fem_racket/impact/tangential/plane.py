@@ -30,40 +30,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.impact.tangential.march import TangentialContact, TangentialSolution, march
+from fem_racket.impact.tangential.march import TangentialSolution, march
 from fem_racket.impact.tangential.normal import NormalHistory
+from fem_racket.impact.tangential.plane_ode import PlaneContact, march_vector
 
 __all__ = ["LineSolution", "PlaneContact", "march_plane"]
-
-
-@dataclass(frozen=True, eq=False)
-class PlaneContact:
-    """The tangential contact's mechanics on the face.
-
-    Parameters
-    ----------
-    friction : float
-        mu >= 0.
-    stiffness : float
-        k_t [N/m], > 0; ``math.inf`` for a rigid tangential contact.
-    compliance : ndarray, shape (2, 2)
-        A [1/kg]: s' = A f (symmetric, positive definite).
-    """
-
-    friction: float
-    stiffness: float
-    compliance: np.ndarray
-
-    @property
-    def rigid(self) -> bool:
-        return math.isinf(self.stiffness)
-
-    def line(self, direction: np.ndarray) -> TangentialContact:
-        """The 1-D contact along the unit ``direction``: y when it is (0, 1), else x (A
-        diagonal, or a multiple of 1 for any direction)."""
-        a = self.compliance
-        inv = a[1, 1] if direction[0] == 0.0 else a[0, 0]
-        return TangentialContact(self.friction, self.stiffness, 1.0 / inv)
 
 
 @dataclass(frozen=True, eq=False)
@@ -149,6 +120,4 @@ def march_plane(c: PlaneContact, normal: NormalHistory, slip: np.ndarray, *, lin
     e = line_direction(c, s0) if line else None
     if e is not None:
         return LineSolution(march(c.line(e), normal, float(s0 @ e)), e, c)
-    from fem_racket.impact.tangential.plane_ode import march_vector
-
     return march_vector(c, normal, s0)

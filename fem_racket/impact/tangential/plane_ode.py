@@ -1,4 +1,4 @@
-"""The vector tangential contact whose slip turns: :func:`march_vector`.
+"""The vector tangential contact (:class:`PlaneContact`) whose slip turns: :func:`march_vector`.
 
 The model is :mod:`fem_racket.impact.tangential.plane`'s. A grip is linear (u' = s,
 s' = -k_t A u) and solved in closed form on A's eigenvectors (two harmonic oscillators at
@@ -23,11 +23,10 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.tangential.march import MAX_PHASES, _first_crossing
+from fem_racket.impact.tangential.march import MAX_PHASES, TangentialContact, _first_crossing
 from fem_racket.impact.tangential.normal import NormalHistory
-from fem_racket.impact.tangential.plane import PlaneContact
 
-__all__ = ["PlanePhase", "PlaneSolution", "march_vector"]
+__all__ = ["PlaneContact", "PlanePhase", "PlaneSolution", "march_vector"]
 
 #: Relative tolerance of the slides' integration.
 RTOL = 1e-13
@@ -35,6 +34,36 @@ METHOD = "DOP853"
 #: The stretch length below which the slide turns no faster, over its largest mu F / k_t (a
 #: force below 1e-6 of its peak acts for ~1e-6 of the contact: an impulse error ~1e-12).
 FLOOR = 1e-6
+
+
+@dataclass(frozen=True, eq=False)
+class PlaneContact:
+    """The tangential contact's mechanics on the face.
+
+    Parameters
+    ----------
+    friction : float
+        mu >= 0.
+    stiffness : float
+        k_t [N/m], > 0; ``math.inf`` for a rigid tangential contact.
+    compliance : ndarray, shape (2, 2)
+        A [1/kg]: s' = A f (symmetric, positive definite).
+    """
+
+    friction: float
+    stiffness: float
+    compliance: np.ndarray
+
+    @property
+    def rigid(self) -> bool:
+        return math.isinf(self.stiffness)
+
+    def line(self, direction: np.ndarray) -> TangentialContact:
+        """The 1-D contact along the unit ``direction``: y when it is (0, 1), else x (A
+        diagonal, or a multiple of 1 for any direction)."""
+        a = self.compliance
+        inv = a[1, 1] if direction[0] == 0.0 else a[0, 0]
+        return TangentialContact(self.friction, self.stiffness, 1.0 / inv)
 
 
 @dataclass(frozen=True, eq=False)
