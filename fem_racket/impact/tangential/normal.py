@@ -41,6 +41,8 @@ class NormalHistory(Protocol):
 
     def impulse(self, t: np.ndarray | float) -> np.ndarray: ...
 
+    def slope(self, t: np.ndarray | float) -> np.ndarray: ...
+
 
 @dataclass(frozen=True, eq=False)
 class SampledNormal:
@@ -63,11 +65,12 @@ class SampledNormal:
     force_samples: np.ndarray
     stiffness: float
     _spline: object = field(init=False, repr=False)
+    _slope: object = field(init=False, repr=False)
     end: float = field(init=False)
     grid: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        from scipy.interpolate import CubicHermiteSpline
+        from scipy.interpolate import CubicHermiteSpline, CubicSpline
 
         t = np.asarray(self.t, dtype=float)
         # an output time repeated (the contact time on the output grid) is one sample
@@ -76,6 +79,7 @@ class SampledNormal:
         p = np.asarray(self.impulse_samples, dtype=float)[keep]
         spline = CubicHermiteSpline(t, p, f)
         object.__setattr__(self, "_spline", spline)
+        object.__setattr__(self, "_slope", CubicSpline(t, f).derivative())
         grid = t
         for i in range(1, len(t)):
             if f[i - 1] > 0.0 >= f[i]:
@@ -89,6 +93,13 @@ class SampledNormal:
 
     def rate(self, t):
         return self._spline(t, 2)
+
+    def slope(self, t):
+        """F' [N/s] from a C2 cubic spline through the force samples: continuous, where
+        :meth:`rate` (P'' of the Hermite spline) jumps at the samples. The vector contact
+        (:mod:`fem_racket.impact.tangential.plane_ode`) stops its slides by it: the jumps
+        would switch a slider moving near zero speed at every sample."""
+        return self._slope(t)
 
     def impulse(self, t):
         return self._spline(t) - self._spline(0.0)
@@ -159,6 +170,10 @@ class ClampedNormal:
         _, v, a = self._states(t)
         return self.stiffness * v + 2.0 * self.zeta * math.sqrt(self.stiffness * self.mass) * a
 
+    def slope(self, t):
+        """F' [N/s] (:meth:`rate`, exact)."""
+        return self.rate(t)
+
     def impulse(self, t):
         return self.mass * (self.speed - self._states(t)[1])
 
@@ -227,6 +242,10 @@ class StrongeNormal:
     def rate(self, t):
         phi, scale = self._phase(t)
         return self.mass * self.speed * self.omega**2 * scale * np.cos(phi)
+
+    def slope(self, t):
+        """F' [N/s] (:meth:`rate`, exact)."""
+        return self.rate(t)
 
     def impulse(self, t):
         phi, scale = self._phase(t)

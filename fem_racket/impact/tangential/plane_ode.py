@@ -9,10 +9,14 @@ the stretch's direction and rho = mu F / k_t its length::
     s' = -mu F A d,   phi' = (s . d_perp) / rho,   d_perp = (-sin phi, cos phi)
 
 integrated by an explicit Runge-Kutta method of order 8 (scipy's DOP853, rtol 1e-13) until the
-slider stops (s . d = rho', an event located by the integrator) or the normal force returns to
-zero. A rigid tangential contact (eta^2 = 0) slides along the slip itself (d = s / |s|),
-written in polar form (|s|' = -mu F d.A d, the angle turning at -mu F d_perp.A d / |s|) until
-|s| = 0; the ball then rolls with no force.
+slider stops (s . d = rho', an event located by the integrator, with the history's continuous
+``slope`` F') or the normal force returns to zero. A rigid tangential contact (eta^2 = 0)
+slides along the slip itself (d = s / |s|), written in polar form (|s|' = -mu F d.A d, the
+angle turning at -mu F d_perp.A d / |s|) until |s| = 0; the ball then rolls with no force.
+
+The stretch turns toward the slip at the rate |s_perp| / rho, fast where the normal force is
+small: below FLOOR of its largest value rho is held at that floor (the force there, under
+1e-6 of its peak, acts for ~1e-6 of the contact: an impulse error ~1e-12).
 """
 
 from __future__ import annotations
@@ -31,8 +35,7 @@ __all__ = ["PlaneContact", "PlanePhase", "PlaneSolution", "march_vector"]
 #: Relative tolerance of the slides' integration.
 RTOL = 1e-13
 METHOD = "DOP853"
-#: The stretch length below which the slide turns no faster, over its largest mu F / k_t (a
-#: force below 1e-6 of its peak acts for ~1e-6 of the contact: an impulse error ~1e-12).
+#: The stretch length below which the slide turns no faster, over its largest mu F / k_t.
 FLOOR = 1e-6
 
 
@@ -187,7 +190,7 @@ def _start(c: PlaneContact, normal: NormalHistory, s0: np.ndarray) -> PlanePhase
     """Grip with the spring unstretched, unless the ball slips at once (as the 1-D march)."""
     f0 = max(float(normal.force(0.0)), 0.0)
     size = float(np.linalg.norm(s0))
-    slow = f0 == 0.0 and c.stiffness * size >= c.friction * float(normal.rate(0.0))
+    slow = f0 == 0.0 and c.stiffness * size >= c.friction * float(normal.slope(0.0))
     zero = np.zeros(2)
     if c.friction == 0.0 or (size > 0.0 and (c.rigid or slow)):
         return PlanePhase("slide", 0.0, normal.end, s0, s0 / size if size else zero)
@@ -225,7 +228,7 @@ def _integrate(c: PlaneContact, normal: NormalHistory, t0: float, slip, directio
 
         def stop(t, y):
             d = (math.cos(y[2]), math.sin(y[2]))
-            return y[0] * d[0] + y[1] * d[1] - mu * float(normal.rate(t)) / k
+            return y[0] * d[0] + y[1] * d[1] - mu * float(normal.slope(t)) / k
 
         y0, atol = [slip[0], slip[1], phi0], [1e-14 * scale, 1e-14 * scale, 1e-12]
     stop.terminal, stop.direction = True, -1
