@@ -29,7 +29,9 @@ def test_nothing_across_the_face_is_todays_march():
     normal = free_normal(out.normal)
     m = 0.057
     c = TangentialContact(
-        0.4, normal.history.stiffness / 1.5, 1 / (inc.beta_t / m + 1 / normal.racket_mass)
+        0.4,
+        normal.history.stiffness / inc.compliance_ratio,
+        1 / (inc.beta_t / m + 1 / normal.racket_mass),
     )
     v_t = 25.0 * math.sin(math.radians(40.0))
     ref = march(c, normal.history, v_t - inc.radius * inc.spin_rad_s)

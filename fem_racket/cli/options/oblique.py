@@ -56,7 +56,7 @@ OBLIQUE_OPTIONS = {
                     f"{DEFAULT_BALL_RADIUS:g})"),
     "compliance_ratio": ("--compliance-ratio", "compliance_ratio", "ETA2", "normal over "
                          "tangential contact stiffness eta^2 = k_n/k_t [-], >= 0 (default "
-                         f"{DEFAULT_COMPLIANCE_RATIO:g}, an assumption; 0: rigid)"),
+                         f"{DEFAULT_COMPLIANCE_RATIO:g}, fitted to clamped-head spins; 0: rigid)"),
     "side_angle": ("--side-angle", "side_angle", "DEG", "angle of the ball's path from the plane "
                    "of the long axis and the face normal [deg], -90..90, positive toward the "
                    "side of a positive --offset (default 0)"),
@@ -182,6 +182,7 @@ def oblique_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("ball inertia", significant(s["ball_inertia_i_over_mr2"], 4), "I/(m R^2)"),
         ("compliance ratio", significant(s["compliance_ratio_eta2"], 4), "eta^2 = k_n/k_t"),
         ("structure", where, ""),
+        *_offset_rows(s),
         *_stroke_rows(s),
     ]
 
@@ -201,6 +202,16 @@ def _side_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("racket yaw rate", significant(s["racket_yaw_rate_rad_s"], 5), "rad/s"),
         ("side angle in", significant(s["side_angle_deg"], 5), "deg"),
         ("side spin in", significant(s["side_spin_rpm"], 5), "rpm"),
+    ]
+
+
+def _offset_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """Off the axis: the offset and the racket's roll rate (from the normal impact)."""
+    if not s.get("offset_m"):
+        return []
+    return [
+        ("offset from the axis", significant(s["offset_m"], 4), "m"),
+        ("roll rate", significant(s["roll_rate_rad_s"], 5), "rad/s"),
     ]
 
 
