@@ -3,6 +3,7 @@ racket with an incidence (item 2). The numbers the README's "Oblique impacts and
 are the ones asserted here."""
 
 import dataclasses
+import math
 
 import numpy as np
 import pytest
@@ -16,6 +17,7 @@ from fem_racket.impact.simulate import simulate
 from fem_racket.impact.simulate_oblique import simulate_oblique
 from fem_racket.impact.stroke import Stroke
 from fem_racket.impact.swing import Swing
+from fem_racket.impact.tangential.stronge import gross_slip_bound
 
 # Lindsey, "String movement and spin" (Tennis Warehouse University, 2011; data taken with
 # R. Cross): head-clamped racket, ball at 56 mph (25.0 m/s), 40 deg, -3820 rpm; spin out of
@@ -46,6 +48,20 @@ def test_the_default_eta2_reproduces_the_clamped_measurement():
     # eta^2 = 0.10-0.18 (0.107-0.179), where the model's spin rises with eta^2
     spins = [_clamped(e)["spin_out_rpm"] for e in (0.10, 0.14, 0.18)]
     assert spins[0] < mean - sd and spins[2] > mean + sd and spins[0] < spins[1] < spins[2]
+    # README: 1 390 and 1 758 rpm, about 4 600 rpm per unit eta^2
+    assert spins[0] == pytest.approx(1389.8, abs=0.05) and spins[2] == pytest.approx(
+        1758.3, abs=0.05
+    )
+    assert (spins[2] - spins[0]) / 0.08 == pytest.approx(4600, rel=0.01)
+
+
+def test_the_gross_slip_bound_against_cross():
+    # README: Stronge's bound tan(angle) = mu ((1 + e) beta_t - eta^2 / e) on the clamped head
+    # (e = 0.83, no spin) is 62 deg at eta^2 = 0.14 and 51 deg at 1.5, where Cross (2003) saw
+    # sliding throughout below ~40 deg to the string plane (50 deg from the normal)
+    beta = 1 + 1 / 0.6
+    angle = [math.degrees(math.atan(gross_slip_bound(0.4, 0.83, e, beta))) for e in (0.14, 1.5)]
+    assert angle == pytest.approx([62.05, 50.87], abs=0.01)
 
 
 @pytest.mark.parametrize(

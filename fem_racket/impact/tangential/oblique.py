@@ -11,8 +11,8 @@ impulse on the ball (:mod:`fem_racket.impact.tangential.plane`)::
     omega_s' = omega_s - R J_y / I
 
 so the ball's angular momentum about the contact point (I omega + m R v_t, and across) is
-conserved. The racket (:class:`RacketTangential`) moves rigidly in the face's plane: its centre
-of gravity by -J / M and its yaw (rotation about the face normal) by
+conserved. The racket (:class:`BallMotion`, :class:`RacketYaw`) moves rigidly in the face's
+plane: its centre of gravity by -J / M and its yaw (rotation about the face normal) by
 -(b J_y - y J_x) / I_n, the impact point at (b, y) from the centre of gravity. The ball leaves
 at speed |(v_n', v_t', v_y')|, angle atan(v_t' / v_n') from the face normal in the plane of the
 long axis (positive: on the side it arrived from) and side angle atan(v_y' / |(v_n', v_t')|)

@@ -146,6 +146,7 @@ def test_the_projects_spring_against_mbf(curves):
     i, j = np.argmin(mdr), np.argmin(lin)
     assert mdr[i] == pytest.approx(-1.426, abs=1e-3) and psi1[i] == pytest.approx(3.05)
     assert lin[j] == pytest.approx(mdr[i], rel=0.15) and psi1[j] == pytest.approx(psi1[i], rel=0.1)
+    assert lin[j] == pytest.approx(-1.592, abs=1e-3) and psi1[j] == pytest.approx(2.80)
     # - across the reversal region (1 <= psi_1 <= 4) the two curves stay within 0.25 (in psi_2
     #   units; the minimum's difference, 0.17, plus the shift of its location)
     mid = (psi1 >= 1.0) & (psi1 <= 4.0)
