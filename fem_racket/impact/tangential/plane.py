@@ -10,8 +10,8 @@ and the tangential force f on the ball are vectors; the contact point accelerate
 (C_r: the racket's tangential compliance at the impact point, 2x2, symmetric; zero for a
 clamped head; :meth:`fem_racket.impact.tangential.oblique.BallMotion.racket_compliance`).
 Stronge's tangential spring acts in both directions (k_t = k_n / eta^2, isotropic, stretch u,
-f = -k_t u) in series with a Coulomb slider on the vector: while the ball grips, u' = s, and it slides when
-|f| reaches mu F, the slider then moving along u (the friction force opposes its velocity), so
+f = -k_t u) in series with a Coulomb slider on the vector: while the ball grips, u' = s, and it
+slides when |f| reaches mu F, the slider then moving along u (the friction force opposes its velocity), so
 |u| = mu F / k_t while u turns toward s: ``rho d' = s - (s.d) d`` (rho = |u|, d = u / |u|); it
 grips again when the slider stops, ``s.d = rho'``.
 
