@@ -11,9 +11,9 @@ and the tangential force f on the ball are vectors; the contact point accelerate
 clamped head; :meth:`fem_racket.impact.tangential.oblique.BallMotion.racket_compliance`).
 Stronge's tangential spring acts in both directions (k_t = k_n / eta^2, isotropic, stretch u,
 f = -k_t u) in series with a Coulomb slider on the vector: while the ball grips, u' = s, and it
-slides when |f| reaches mu F, the slider then moving along u (the friction force opposes its velocity), so
-|u| = mu F / k_t while u turns toward s: ``rho d' = s - (s.d) d`` (rho = |u|, d = u / |u|); it
-grips again when the slider stops, ``s.d = rho'``.
+slides when |f| reaches mu F, the slider then moving along u (the friction force opposes its
+velocity), so |u| = mu F / k_t while u turns toward s: ``rho d' = s - (s.d) d`` (rho = |u|,
+d = u / |u|); it grips again when the slider stops, ``s.d = rho'``.
 
 When the motion stays on one line the vector problem is the 1-D one along it, solved in closed
 form by :func:`~fem_racket.impact.tangential.march.march`: the slip starts along an eigenvector
