@@ -38,7 +38,13 @@ from fem_racket.impact.held.run import HeldRun
 from fem_racket.impact.incidence import Incidence, head_on
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
-from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, SampledNormal
+from fem_racket.impact.tangential.normal import (
+    ClampedNormal,
+    NormalHistory,
+    SampledNormal,
+    normal_history,
+    peak_force,
+)
 from fem_racket.impact.tangential.oblique import (
     BallMotion,
     ObliqueOutcome,
@@ -114,7 +120,7 @@ class ObliqueResult:
                 "cor": n.cor,
                 "contact_time_s": n.contact_time,
                 "rebound_speed_m_s": -n.rebound_velocity,
-                "peak_force_n": _clamped_peak(self.tangential.solution.normal),
+                "peak_force_n": peak_force(self.tangential.solution.normal),
                 "structure": "clamped head",
                 "ball_mass_kg": self.tangential.ball.mass,
                 "law": "linear",
@@ -132,35 +138,6 @@ class ObliqueResult:
             **self.tangential.summary(),
             **(self.stroke or {}),
         }
-
-
-def _clamped_peak(normal: NormalHistory) -> float:
-    from scipy.optimize import minimize_scalar
-
-    res = minimize_scalar(lambda t: -normal.force(t), bounds=(0.0, normal.end), method="bounded")
-    return float(-res.fun)
-
-
-def normal_history(result: ImpactResult) -> SampledNormal:
-    """The normal force history of a computed impact (needs its output times).
-
-    The stiffness k_n is K_CB for the paper's linear law, else the secant F / delta at the
-    output time of maximum compression.
-    """
-    if result.t.size < 5:
-        raise InputError(
-            f"an oblique impact needs the normal impact's histories: {result.t.size} output "
-            "times given; simulate with an output_step"
-        )
-    v = result.ball_velocity
-    impulse = result.ball.mass * (v[0] - v)
-    force = result.force
-    if result.contact is not None:
-        k_n = result.contact.stiffness
-    else:
-        i = int(np.argmax(result.deflection))
-        k_n = float(force[i] / result.deflection[i])
-    return SampledNormal(result.t, impulse, force, k_n)
 
 
 @dataclass(frozen=True, eq=False)

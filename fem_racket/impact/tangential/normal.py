@@ -19,11 +19,20 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import Any, Protocol
 
 import numpy as np
 
-__all__ = ["ClampedNormal", "NormalHistory", "SampledNormal", "StrongeNormal"]
+from fem_racket.validation import InputError
+
+__all__ = [
+    "ClampedNormal",
+    "NormalHistory",
+    "SampledNormal",
+    "StrongeNormal",
+    "normal_history",
+    "peak_force",
+]
 
 
 class NormalHistory(Protocol):
@@ -251,3 +260,33 @@ class StrongeNormal:
         phi, scale = self._phase(t)
         e = np.where(scale == 1.0, 1.0, self.restitution)
         return self.mass * self.speed * (1.0 - e * np.cos(phi))
+
+
+def peak_force(normal: NormalHistory) -> float:
+    """The largest normal force over the contact [N] (bounded search)."""
+    from scipy.optimize import minimize_scalar
+
+    res = minimize_scalar(lambda t: -normal.force(t), bounds=(0.0, normal.end), method="bounded")
+    return float(-res.fun)
+
+
+def normal_history(result: Any) -> SampledNormal:
+    """The normal force history of a computed impact (needs its output times).
+
+    The stiffness k_n is K_CB for the paper's linear law, else the secant F / delta at the
+    output time of maximum compression.
+    """
+    if result.t.size < 5:
+        raise InputError(
+            f"an oblique impact needs the normal impact's histories: {result.t.size} output "
+            "times given; simulate with an output_step"
+        )
+    v = result.ball_velocity
+    impulse = result.ball.mass * (v[0] - v)
+    force = result.force
+    if result.contact is not None:
+        k_n = result.contact.stiffness
+    else:
+        i = int(np.argmax(result.deflection))
+        k_n = float(force[i] / result.deflection[i])
+    return SampledNormal(result.t, impulse, force, k_n)
