@@ -52,6 +52,8 @@ class NormalHistory(Protocol):
 
     def slope(self, t: np.ndarray | float) -> np.ndarray: ...
 
+    def smooth_force(self, t: np.ndarray | float) -> np.ndarray: ...
+
 
 @dataclass(frozen=True, eq=False)
 class SampledNormal:
@@ -74,7 +76,7 @@ class SampledNormal:
     force_samples: np.ndarray
     stiffness: float
     _spline: object = field(init=False, repr=False)
-    _slope: object = field(init=False, repr=False)
+    force_spline: object = field(init=False, repr=False)
     end: float = field(init=False)
     grid: np.ndarray = field(init=False, repr=False)
 
@@ -88,7 +90,7 @@ class SampledNormal:
         p = np.asarray(self.impulse_samples, dtype=float)[keep]
         spline = CubicHermiteSpline(t, p, f)
         object.__setattr__(self, "_spline", spline)
-        object.__setattr__(self, "_slope", CubicSpline(t, f).derivative())
+        object.__setattr__(self, "force_spline", CubicSpline(t, f))
         grid = t
         for i in range(1, len(t)):
             if f[i - 1] > 0.0 >= f[i]:
@@ -103,12 +105,18 @@ class SampledNormal:
     def rate(self, t):
         return self._spline(t, 2)
 
+    def smooth_force(self, t):
+        """F [N] from a C2 cubic spline through the force samples (``force_spline``): the
+        vector contact (:mod:`fem_racket.impact.tangential.plane_ode`) integrates its slides
+        over it, where :meth:`force` (P' of the Hermite spline) has a corner at every sample
+        that an adaptive integrator would creep through; the two differ by O(h^4)."""
+        return self.force_spline(t)
+
     def slope(self, t):
-        """F' [N/s] from a C2 cubic spline through the force samples: continuous, where
-        :meth:`rate` (P'' of the Hermite spline) jumps at the samples. The vector contact
-        (:mod:`fem_racket.impact.tangential.plane_ode`) stops its slides by it: the jumps
-        would switch a slider moving near zero speed at every sample."""
-        return self._slope(t)
+        """F' [N/s] of :meth:`smooth_force`: continuous, where :meth:`rate` (P'' of the
+        Hermite spline) jumps at the samples; the vector contact stops its slides by it (the
+        jumps would switch a slider moving near zero speed at every sample)."""
+        return self.force_spline(t, 1)
 
     def impulse(self, t):
         return self._spline(t) - self._spline(0.0)
@@ -183,6 +191,10 @@ class ClampedNormal:
         """F' [N/s] (:meth:`rate`, exact)."""
         return self.rate(t)
 
+    def smooth_force(self, t):
+        """F [N] (:meth:`force`, exact)."""
+        return self.force(t)
+
     def impulse(self, t):
         return self.mass * (self.speed - self._states(t)[1])
 
@@ -255,6 +267,10 @@ class StrongeNormal:
     def slope(self, t):
         """F' [N/s] (:meth:`rate`, exact)."""
         return self.rate(t)
+
+    def smooth_force(self, t):
+        """F [N] (:meth:`force`, exact)."""
+        return self.force(t)
 
     def impulse(self, t):
         phi, scale = self._phase(t)

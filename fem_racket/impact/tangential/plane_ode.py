@@ -108,7 +108,7 @@ def _slide(c: PlaneContact, p: PlanePhase, normal, t) -> tuple[np.ndarray, np.nd
     else:
         s = np.column_stack([y[0], y[1]])
         d = np.column_stack([np.cos(y[2]), np.sin(y[2])])
-    return s, -c.friction * np.maximum(normal.force(t), 0.0)[:, None] * d
+    return s, -c.friction * np.maximum(normal.smooth_force(t), 0.0)[:, None] * d
 
 
 @dataclass(frozen=True, eq=False)
@@ -197,38 +197,70 @@ def _start(c: PlaneContact, normal: NormalHistory, s0: np.ndarray) -> PlanePhase
     return PlanePhase("grip", 0.0, normal.end, s0, zero)
 
 
+def _scalar(normal: NormalHistory):
+    """(F(t), F'(t)) of the history's smooth force for one time t [s], as floats: a sampled
+    history's spline evaluated piece by piece in Python (a scipy call per step costs ~15x)."""
+    spline = getattr(normal, "force_spline", None)
+    if spline is None:
+        return (lambda t: float(normal.smooth_force(t))), (lambda t: float(normal.slope(t)))
+    from bisect import bisect_right
+
+    x = spline.x.tolist()
+    c3, c2, c1, c0 = (row.tolist() for row in spline.c)
+    last = len(x) - 2
+
+    def piece(t):
+        i = min(max(bisect_right(x, t) - 1, 0), last)
+        return i, t - x[i]
+
+    def force(t):
+        i, h = piece(t)
+        return ((c3[i] * h + c2[i]) * h + c1[i]) * h + c0[i]
+
+    def slope(t):
+        i, h = piece(t)
+        return (3.0 * c3[i] * h + 2.0 * c2[i]) * h + c1[i]
+
+    return force, slope
+
+
 def _integrate(c: PlaneContact, normal: NormalHistory, t0: float, slip, direction):
     """Integrate a slide from ``t0``; (end time, dense solution, stopped by the slider)."""
     from scipy.integrate import solve_ivp
 
     mu, k, a = c.friction, c.stiffness, c.compliance
+    force, slope = _scalar(normal)
+    (a00, a01), (a10, a11) = a.tolist()
     phi0 = math.atan2(direction[1], direction[0])
     scale = max(float(np.linalg.norm(slip)), 1e-300)
     if c.rigid:
 
         def rhs(t, y):
-            d = np.array([math.cos(y[1]), math.sin(y[1])])
-            f = mu * max(float(normal.force(t)), 0.0)
-            perp = np.array([-d[1], d[0]])
-            return [-f * (d @ a @ d), -f * (perp @ a @ d) / max(y[0], 1e-9 * scale)]
+            cos, sin = math.cos(y[1]), math.sin(y[1])
+            f = mu * max(force(t), 0.0)
+            ad = (a00 * cos + a01 * sin, a10 * cos + a11 * sin)
+            turn = -sin * ad[0] + cos * ad[1]
+            return [-f * (cos * ad[0] + sin * ad[1]), -f * turn / max(y[0], 1e-9 * scale)]
 
         def stop(t, y):
             return y[0]
 
         y0, atol = [scale, phi0], [1e-14 * scale, 1e-12]
     else:
-        floor = FLOOR * mu * max(float(np.max(normal.force(normal.grid))), 0.0) / k
+        floor = FLOOR * mu * max(float(np.max(normal.smooth_force(normal.grid))), 0.0) / k
 
         def rhs(t, y):
-            d = np.array([math.cos(y[2]), math.sin(y[2])])
-            f = max(float(normal.force(t)), 0.0)
-            s_dot = -mu * f * (a @ d)
-            rho = max(mu * f / k, floor)
-            return [s_dot[0], s_dot[1], (-y[0] * d[1] + y[1] * d[0]) / rho]
+            cos, sin = math.cos(y[2]), math.sin(y[2])
+            f = mu * max(force(t), 0.0)
+            rho = max(f / k, floor)
+            return [
+                -f * (a00 * cos + a01 * sin),
+                -f * (a10 * cos + a11 * sin),
+                (-y[0] * sin + y[1] * cos) / rho,
+            ]
 
         def stop(t, y):
-            d = (math.cos(y[2]), math.sin(y[2]))
-            return y[0] * d[0] + y[1] * d[1] - mu * float(normal.slope(t)) / k
+            return y[0] * math.cos(y[2]) + y[1] * math.sin(y[2]) - mu * slope(t) / k
 
         y0, atol = [slip[0], slip[1], phi0], [1e-14 * scale, 1e-14 * scale, 1e-12]
     stop.terminal, stop.direction = True, -1
