@@ -42,7 +42,6 @@ from fem_racket.impact.tangential.normal import (
     ClampedNormal,
     NormalHistory,
     SampledNormal,
-    normal_history,
     peak_force,
 )
 from fem_racket.impact.tangential.oblique import (
@@ -51,6 +50,7 @@ from fem_racket.impact.tangential.oblique import (
     RacketYaw,
     tangential_impact,
 )
+from fem_racket.impact.tangential.result_history import normal_history
 from fem_racket.validation import InputError, check_choice
 
 __all__ = [

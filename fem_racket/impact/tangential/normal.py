@@ -19,18 +19,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Protocol
 
 import numpy as np
-
-from fem_racket.validation import InputError
 
 __all__ = [
     "ClampedNormal",
     "NormalHistory",
     "SampledNormal",
     "StrongeNormal",
-    "normal_history",
     "peak_force",
 ]
 
@@ -284,25 +281,3 @@ def peak_force(normal: NormalHistory) -> float:
 
     res = minimize_scalar(lambda t: -normal.force(t), bounds=(0.0, normal.end), method="bounded")
     return float(-res.fun)
-
-
-def normal_history(result: Any) -> SampledNormal:
-    """The normal force history of a computed impact (needs its output times).
-
-    The stiffness k_n is K_CB for the paper's linear law, else the secant F / delta at the
-    output time of maximum compression.
-    """
-    if result.t.size < 5:
-        raise InputError(
-            f"an oblique impact needs the normal impact's histories: {result.t.size} output "
-            "times given; simulate with an output_step"
-        )
-    v = result.ball_velocity
-    impulse = result.ball.mass * (v[0] - v)
-    force = result.force
-    if result.contact is not None:
-        k_n = result.contact.stiffness
-    else:
-        i = int(np.argmax(result.deflection))
-        k_n = float(force[i] / result.deflection[i])
-    return SampledNormal(result.t, impulse, force, k_n)

@@ -29,6 +29,7 @@ import numpy as np
 
 from fem_racket.impact.tangential.march import MAX_PHASES, TangentialContact, _first_crossing
 from fem_racket.impact.tangential.normal import NormalHistory
+from fem_racket.impact.tangential.scalar import scalar_force
 
 __all__ = ["PlaneContact", "PlanePhase", "PlaneSolution", "march_vector"]
 
@@ -197,39 +198,12 @@ def _start(c: PlaneContact, normal: NormalHistory, s0: np.ndarray) -> PlanePhase
     return PlanePhase("grip", 0.0, normal.end, s0, zero)
 
 
-def _scalar(normal: NormalHistory):
-    """(F(t), F'(t)) of the history's smooth force for one time t [s], as floats: a sampled
-    history's spline evaluated piece by piece in Python (a scipy call per step costs ~15x)."""
-    spline = getattr(normal, "force_spline", None)
-    if spline is None:
-        return (lambda t: float(normal.smooth_force(t))), (lambda t: float(normal.slope(t)))
-    from bisect import bisect_right
-
-    x = spline.x.tolist()
-    c3, c2, c1, c0 = (row.tolist() for row in spline.c)
-    last = len(x) - 2
-
-    def piece(t):
-        i = min(max(bisect_right(x, t) - 1, 0), last)
-        return i, t - x[i]
-
-    def force(t):
-        i, h = piece(t)
-        return ((c3[i] * h + c2[i]) * h + c1[i]) * h + c0[i]
-
-    def slope(t):
-        i, h = piece(t)
-        return (3.0 * c3[i] * h + 2.0 * c2[i]) * h + c1[i]
-
-    return force, slope
-
-
 def _integrate(c: PlaneContact, normal: NormalHistory, t0: float, slip, direction):
     """Integrate a slide from ``t0``; (end time, dense solution, stopped by the slider)."""
     from scipy.integrate import solve_ivp
 
     mu, k, a = c.friction, c.stiffness, c.compliance
-    force, slope = _scalar(normal)
+    force, slope = scalar_force(normal)
     (a00, a01), (a10, a11) = a.tolist()
     phi0 = math.atan2(direction[1], direction[0])
     scale = max(float(np.linalg.norm(slip)), 1e-300)
