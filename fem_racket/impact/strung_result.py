@@ -63,9 +63,10 @@ class StrungImpact:
     The attributes an oblique impact reads of its normal impact
     (:func:`fem_racket.impact.oblique.free_normal`) are those of an
     :class:`~fem_racket.impact.result.ImpactResult`: ``ball``, ``ball_velocity``,
-    ``ball_speed_out``, ``x_impact``, ``offset``, ``deflection`` (the ball law's, its compression) and ``contact`` (None:
-    no lumped K_CB; the normal stiffness of the tangential contact is then the ball law's secant
-    at its largest compression), ``model``, ``t`` and :meth:`summary`.
+    ``ball_speed_out``, ``x_impact``, ``offset``, ``deflection`` (the ball law's, its
+    compression) and ``contact`` (None: no lumped K_CB; the normal stiffness of the tangential
+    contact is then the ball law's secant at its largest compression), ``model``, ``t`` and
+    :meth:`summary`.
     """
 
     cor: float
