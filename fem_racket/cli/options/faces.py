@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import print_json, run_parameters, significant
+from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.runfile import given_options
 from fem_racket.frame.model import FrameModel
 from fem_racket.studies.grid import as_values
@@ -124,8 +125,7 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
               f" y = {y_hi:g} m")  # fmt: skip
         print(f"  {'angle out':<26} {significant(a_lo, 4):>10} to {significant(a_hi, 4)} deg")
         print(f"  {'contact regimes':<26} {', '.join(m.summary()['contact_regimes'])}")
-    for path in outs:
-        print(f"{'written':<28} {path}")
+    print_written(outs)
     return 0
 
 
@@ -182,6 +182,5 @@ def _run_power(
         print(f"  {'mode-1 node':<26} {significant(m.node, 4):>10} x/L")
         cop = "-" if m.cop != m.cop else significant(m.cop, 4)
         print(f"  {'centre of percussion':<26} {cop:>10} x/L")
-    for path in outs:
-        print(f"{'written':<28} {path}")
+    print_written(outs)
     return 0
