@@ -28,15 +28,15 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.contact.presets import check_linear_options, get_law
-from fem_racket.frame.hand import Hand, check_grip
+from fem_racket.contact.presets import get_law
+from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.incidence import Incidence, check_incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.offaxis import check_offsets
+from fem_racket.impact.problem_checks import check_held, check_law
 from fem_racket.impact.strung import check_strung_problem, kawazoe_ball
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.strings.bed import StringBed
@@ -165,7 +165,7 @@ class ImpactProblem:
         if self.separation is not None:
             check_choice("separation", self.separation, SEPARATIONS)
         if self.law is not None:
-            self._check_law()
+            check_law(self)
         else:  # the paper's K_CB and zeta, checked once
             LinearContact.for_speed(
                 self.impact.speed, kcb=self.kcb, zeta=self.zeta, ball_mass=self.ball.mass
@@ -175,7 +175,7 @@ class ImpactProblem:
         if self.swing is not None:
             _ = self.closing_speed  # ball and strings must close, under any law
         if self.held:
-            self._check_held()
+            check_held(self)
         if self.strings is not None:
             check_strung_problem(self)
         object.__setattr__(self, "offset", check_finite("offset", self.offset, "m"))
@@ -194,40 +194,6 @@ class ImpactProblem:
         if self.law is not None:
             return self.law
         return kawazoe_ball(self.ball.mass, self.separation or "displacement")
-
-    def _check_law(self) -> None:
-        if not isinstance(self.law, ContactLaw):
-            raise InputError(f"law = {self.law!r} is not allowed: must be a ContactLaw or None")
-        check_linear_options(self.law, kcb=self.kcb, zeta=self.zeta)
-        if self.law is KAWAZOE_BALL and self.strings is None:
-            raise InputError(
-                "law = 'kawazoe-1997-ball' is not allowed without a string bed: it is the "
-                "ball's own law, fitted in series with the bed (give strings, e.g. "
-                "--string-tension)"
-            )
-        if self.separation is not None:
-            raise InputError(
-                f"separation = {show(self.separation)} is not allowed with contact law "
-                f"{show(self.law.name)}: the law ends contact by its own condition "
-                f"({self.law.end})"
-            )
-
-    def _check_held(self) -> None:
-        if self.law is not None:
-            raise InputError(
-                f"law = {show(self.law.name)} is not allowed with a hand: the held racket takes "
-                "the paper's linear law (kcb, zeta)"
-            )
-        if self.frame_velocity is not None:
-            raise InputError(
-                "frame_velocity is not allowed with a hand: give the racket's motion as a swing"
-            )
-        if self.separation is not None:
-            raise InputError(
-                f"separation = {show(self.separation)} is not allowed with a hand: the held "
-                "racket ends contact by the spring deflection (the paper's criterion)"
-            )
-        check_grip(self.structure.hand, self.model.mesh.length)
 
     @classmethod
     def build(cls, frame: Any = None, *, elements: int | None = None, **fields: Any):

@@ -19,7 +19,8 @@ import numpy as np
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.io.strung_vtk import strung_fields
-from fem_racket.io.vtk_series import BALL_RADIUS, ImpactSeries, check_scale, sample_steps
+from fem_racket.io.vtk_series import BALL_RADIUS, ImpactSeries, check_scale
+from fem_racket.io.vtk_steps import sample_steps
 from fem_racket.strings.membrane import bed_mesh
 
 __all__ = ["BedSeries", "strung_series"]

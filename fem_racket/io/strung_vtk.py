@@ -30,7 +30,8 @@ import numpy as np
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.io.vtk import PROVENANCE_NAME, PVD_NAME, write_pvd, write_vtu
-from fem_racket.io.vtk_series import BALL_RADIUS, check_scale, sample_steps
+from fem_racket.io.vtk_series import BALL_RADIUS, check_scale
+from fem_racket.io.vtk_steps import sample_steps
 from fem_racket.outputs import atomic_folder, provenance
 from fem_racket.strings.membrane import bed_mesh
 

@@ -40,6 +40,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from fem_racket.display import number, short_repr
+from fem_racket.io.vtk_steps import check_int, sample_steps
 from fem_racket.validation import InputError, check_positive, check_range, show
 
 if TYPE_CHECKING:
@@ -56,7 +57,6 @@ __all__ = [
     "check_scale",
     "field_name",
     "impact_series",
-    "sample_steps",
 ]
 
 #: Largest deflection exaggeration [-]: millimetres drawn as kilometres; far beyond any use, and
@@ -82,8 +82,6 @@ BALL_FIELDS = ("deflection [m]", "ball velocity [m/s]", "contact force [N]")
 #: Short names accepted for the frame fields (``--field moment``).
 FIELD_ALIASES = {name.split(" [")[0].split()[-1]: name for name in FRAME_FIELDS}
 
-#: Name of the collection and of the provenance sidecar inside an export folder.
-
 
 def field_name(field: str) -> str:
     """The full frame field name for ``field`` (full name or short alias, e.g. ``"moment"``)."""
@@ -93,27 +91,6 @@ def field_name(field: str) -> str:
         return FIELD_ALIASES[field]
     allowed = ", ".join([*FIELD_ALIASES, *(repr(f) for f in FRAME_FIELDS)])
     raise InputError(f"field = {show(field)} is not allowed: must be one of {allowed}")
-
-
-def _check_int(name: str, value: object, low: int, high: int | None = None, why: str = "") -> int:
-    ok = isinstance(value, (int, np.integer)) and not isinstance(value, bool)
-    if not ok or value < low or (high is not None and value > high):
-        rng = f">= {low}" if high is None else f"in [{low}, {high}]"
-        raise InputError(f"{name} = {show(value)} is not allowed: must be an integer {rng}{why}")
-    return int(value)
-
-
-def sample_steps(n_times: int, frames: int | None = None) -> np.ndarray:
-    """Indices of ``frames`` output times spread evenly over ``n_times``, first and last kept.
-
-    ``None`` keeps every output time.
-    """
-    if frames is None:
-        return np.arange(n_times)
-    frames = _check_int(
-        "frames", frames, 2, n_times, f" (the simulation has {n_times} output times)"
-    )
-    return np.unique(np.rint(np.linspace(0, n_times - 1, frames)).astype(int))
 
 
 @dataclass(frozen=True, eq=False)
@@ -254,7 +231,7 @@ def impact_series(
     ball_radius : float
         R_B [m].
     """
-    subdivide = _check_int("subdivide", subdivide, 1, 1000)
+    subdivide = check_int("subdivide", subdivide, 1, 1000)
     scale = check_scale(scale)
     ball_radius = check_positive("ball_radius", ball_radius, "m")
     if result.t.size < 2:

@@ -9,7 +9,8 @@ import pyvista as pv
 from scipy.interpolate import CubicHermiteSpline
 
 from fem_racket import InputError, impact_series, simulate, write_vtk_series
-from fem_racket.io.vtk_series import BALL_RADIUS, FRAME_FIELDS, field_name, sample_steps
+from fem_racket.io.vtk_series import BALL_RADIUS, FRAME_FIELDS, field_name
+from fem_racket.io.vtk_steps import sample_steps
 from fem_racket.outputs import json_ready
 
 # 0.769 L is a node of mode 1 and not a mesh node with 20 elements (nodes every L/20).

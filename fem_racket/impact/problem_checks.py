@@ -1,0 +1,54 @@
+"""The checks of an :class:`~fem_racket.impact.problem.ImpactProblem` that concern its contact
+law and its hand: each refuses, in one line, a field the rest of the problem cannot use. The
+problem is typed ``Any`` here: importing its class would make an import cycle (it calls these)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fem_racket.contact.bed_ball import KAWAZOE_BALL
+from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.presets import check_linear_options
+from fem_racket.frame.hand import check_grip
+from fem_racket.validation import InputError, show
+
+__all__ = ["check_held", "check_law"]
+
+
+def check_law(problem: Any) -> None:
+    """Refuse a ``law`` that is not a ContactLaw, or options the law cannot use (one line)."""
+    if not isinstance(problem.law, ContactLaw):
+        raise InputError(f"law = {problem.law!r} is not allowed: must be a ContactLaw or None")
+    check_linear_options(problem.law, kcb=problem.kcb, zeta=problem.zeta)
+    if problem.law is KAWAZOE_BALL and problem.strings is None:
+        raise InputError(
+            "law = 'kawazoe-1997-ball' is not allowed without a string bed: it is the "
+            "ball's own law, fitted in series with the bed (give strings, e.g. "
+            "--string-tension)"
+        )
+    if problem.separation is not None:
+        raise InputError(
+            f"separation = {show(problem.separation)} is not allowed with contact law "
+            f"{show(problem.law.name)}: the law ends contact by its own condition "
+            f"({problem.law.end})"
+        )
+
+
+def check_held(problem: Any) -> None:
+    """Refuse what a racket held in a hand cannot take (a nonlinear law, mode velocities, a
+    separation other than the paper's) and a grip off the handle (one line)."""
+    if problem.law is not None:
+        raise InputError(
+            f"law = {show(problem.law.name)} is not allowed with a hand: the held racket takes "
+            "the paper's linear law (kcb, zeta)"
+        )
+    if problem.frame_velocity is not None:
+        raise InputError(
+            "frame_velocity is not allowed with a hand: give the racket's motion as a swing"
+        )
+    if problem.separation is not None:
+        raise InputError(
+            f"separation = {show(problem.separation)} is not allowed with a hand: the held "
+            "racket ends contact by the spring deflection (the paper's criterion)"
+        )
+    check_grip(problem.structure.hand, problem.model.mesh.length)
