@@ -51,7 +51,7 @@ from fem_racket.contact.linear import (
     kcb_from_speed,
     zeta_from_cor,
 )
-from fem_racket.impact.exact.batch import solve_cases
+from fem_racket.impact.exact.batch import Cases, SolveOptions, solve_cases
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance, cutoff_factor
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.validation import InputError, check_choice, check_integer
@@ -138,18 +138,10 @@ def _run(
         sl = slice(start, start + CHUNK)
         ix = index[sl]
         w = (omega[None, :] if omega.ndim == 1 else omega[ix]) * root_s[sl, None]
+        cases = Cases(w, values_at[ix], rigid[ix], flex[ix] / scale[sl], mass[ix], k[sl], c[sl],
+                      mb[sl])  # fmt: skip
         cor[sl], tc[sl], peak[sl], kept[sl] = solve_cases(
-            w,
-            values_at[ix],
-            rigid[ix],
-            flex[ix] / scale[sl],
-            mass[ix],
-            k[sl],
-            c[sl],
-            mb[sl],
-            beta,
-            separation,
-            want_peak,
+            cases, SolveOptions(beta, separation, want_peak)
         )
     return ImpactBatch(
         cor=cor.reshape(shape),
