@@ -32,7 +32,13 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import numpy as np  # noqa: E402
 
-from fem_racket import FrameModel, impacts, kcb_from_speed, standard_frame  # noqa: E402
+from fem_racket import (  # noqa: E402
+    EngineOptions,
+    FrameModel,
+    impacts,
+    kcb_from_speed,
+    standard_frame,
+)
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor  # noqa: E402
 from fem_racket.frame.segments import PAPER_EI1  # noqa: E402
 from fem_racket.impact.exact.outcome import exact_outcome  # noqa: E402
@@ -105,7 +111,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
         p, v, e = grid(shape)
         n = p.size
         kw = dict(position=p, speed=v, ei_factor=e)
-        every = impacts(model, tolerance=None, **kw)
+        every = impacts(model, options=EngineOptions(tolerance=None), **kw)
         sample = rng.choice(n, size=min(n, 1260 if not args.quick else 60), replace=False)
         cor_old, c_old, w_old = timed(
             lambda p=p[sample], v=v[sample], e=e[sample]: per_case(model, p, v, e)
@@ -124,8 +130,12 @@ def main(argv: list[str] | None = None) -> list[dict]:
             )
         )
         for tol in (1e-6, 3e-5):
-            impacts(model, tolerance=tol, **{k: x[:50] for k, x in kw.items()})  # warm caches
-            b, c, w = timed(lambda tol=tol, kw=kw: impacts(model, tolerance=tol, **kw))
+            impacts(
+                model, options=EngineOptions(tolerance=tol), **{k: x[:50] for k, x in kw.items()}
+            )  # warm caches
+            b, c, w = timed(
+                lambda tol=tol, kw=kw: impacts(model, options=EngineOptions(tolerance=tol), **kw)
+            )
             rows.append(
                 dict(
                     grid=name,

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import numpy as np
 
-from fem_racket import FrameModel, impacts, simulate
+from fem_racket import EngineOptions, FrameModel, impacts, simulate
 from fem_racket.contact.presets import PRESETS
 from fem_racket.frame.segments import standard_frame
 from fem_racket.studies.calibrate import TARGET_SETS, clamped_impacts
@@ -67,8 +67,8 @@ def _batch_peak_against_every_mode(frame, x, v) -> float:
     """Worst relative peak force of the batched engine at its default tolerance against every
     mode."""
     model = FrameModel.build(standard_frame() if frame is None else frame, 20)
-    a = impacts(model, position=x, speed=v, peak_force=True)
-    b = impacts(model, position=x, speed=v, peak_force=True, tolerance=None)
+    a = impacts(model, position=x, speed=v, options=EngineOptions(peak_force=True))
+    b = impacts(model, position=x, speed=v, options=EngineOptions(tolerance=None, peak_force=True))
     return float(np.max(np.abs(a.peak_force / b.peak_force - 1)))
 
 

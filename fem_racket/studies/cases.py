@@ -30,7 +30,7 @@ import numpy as np
 from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
-from fem_racket.impact.exact.engine import impacts
+from fem_racket.impact.exact.engine import EngineOptions, impacts
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import ball_speed_out, closing_speed
 from fem_racket.impact.system import NoSeparationError
@@ -240,10 +240,7 @@ def _engine_group(
         zeta=take(p["zeta"], rows),
         ball_mass=take(p["ball_mass"], rows),
         ei_factor=factor,
-        separation=spec.separation,
-        tolerance=spec.tolerance,
-        peak_force=spec.peak_force,
-        modes=spec.modes,
+        options=EngineOptions(spec.separation, spec.tolerance, spec.peak_force, spec.modes),
     )
     v_out = ball_speed_out(b.cor, v_in, v_r)
     cols = [b.cor, b.contact_time, v_out, b.peak_force, b.kcb, v_r, b.modes]

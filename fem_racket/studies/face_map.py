@@ -23,7 +23,7 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
 from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, impacts
+from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, EngineOptions, impacts
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
 from fem_racket.studies.sweetspots import centre_of_percussion, mode_node_positions
 from fem_racket.validation import InputError, check_positive, check_range
@@ -172,8 +172,9 @@ def face_map(
     unknown = set(opts) - {"ball_mass", "kcb", "zeta", "separation", "modes", "tolerance"}
     if unknown:
         raise InputError(f"options = {sorted(unknown)} is not allowed: unknown face-map options")
-    opts.setdefault("modes", DEFAULT_MODES)
-    opts.setdefault("tolerance", DEFAULT_TOLERANCE)
+    engine = EngineOptions(opts.pop("separation", "displacement"),
+                           opts.pop("tolerance", DEFAULT_TOLERANCE),
+                           modes=opts.pop("modes", DEFAULT_MODES))  # fmt: skip
     opts["ball_mass"] = Ball(opts.get("ball_mass") or DEFAULT_BALL_MASS).mass
     speed = check_positive("speed", speed, "m/s")
     x = _increasing("positions", positions, 2)
@@ -189,7 +190,8 @@ def face_map(
     e = np.full(X.shape, np.nan)
     if np.any(face):
         cols = np.nonzero(face)[1]
-        batch = impacts(model, position=X[face], offset=Y[face], speed=closing[cols], **opts)
+        batch = impacts(model, position=X[face], offset=Y[face], speed=closing[cols],
+                        options=engine, **opts)  # fmt: skip
         e[face] = batch.cor
     vo = ball_speed_out(e, speed, v_r[None, :])
     k = np.unravel_index(int(np.nanargmax(e)), e.shape) if np.any(face) else None

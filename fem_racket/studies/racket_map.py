@@ -28,7 +28,7 @@ from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, impacts
+from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, EngineOptions, impacts
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
@@ -115,9 +115,7 @@ def apparent_cor_along(
         kcb=kcb,
         zeta=zeta,
         ball_mass=ball_mass,
-        separation=separation,
-        tolerance=tolerance,
-        modes=modes,
+        options=EngineOptions(separation, tolerance, modes=modes),
     )
     return np.asarray(batch.cor, dtype=float).reshape(x.shape)
 

@@ -35,7 +35,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import kcb_from_speed
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.exact.engine import modal_impacts
+from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.general.batches import stack_laws, stack_receptances
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
@@ -130,7 +130,7 @@ def _linear_cor(
             kcb=None if kcb is None else kcb[group],
             zeta=problem.zeta,
             ball_mass=problem.ball_mass,
-            tolerance=problem.tolerance,
+            options=EngineOptions(tolerance=problem.tolerance),
         )
         cor[group] = batch.cor
     return cor

@@ -14,7 +14,7 @@ import numpy as np
 
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.exact.engine import impacts
+from fem_racket.impact.exact.engine import EngineOptions, impacts
 from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.shock import grip_peak, vibration_rms
@@ -61,8 +61,7 @@ def apparent_cor(
         speed=v,
         ball_mass=ball_mass,
         zeta=zeta,
-        modes=modes,
-        tolerance=tolerance,
+        options=EngineOptions(tolerance=tolerance, modes=modes),
     )
     return np.asarray(batch.cor).reshape(x.shape)
 
