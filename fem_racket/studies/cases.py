@@ -169,18 +169,26 @@ def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
 
 
 def _racket_speeds(p: dict[str, Any], rows: np.ndarray, length: float) -> np.ndarray:
-    """v_r [m/s] of the cases ``rows`` of ``case_arrays`` values ``p`` (swept or fixed)."""
-    names = ("racket_speed", "reference", "pivot", "position")
+    """v_r [m/s] of the cases ``rows`` of ``case_arrays`` values ``p`` (swept or fixed): one
+    swing per distinct (racket_speed, reference, pivot), evaluated at its cases' points."""
+    names = ("racket_speed", "reference", "pivot")
     cols = [
         np.broadcast_to(np.asarray(p[k], dtype=object), (rows.size,))
         if np.ndim(p[k]) == 0
         else np.asarray(p[k])[rows]
         for k in names
     ]
+    x = np.asarray(p["position"], dtype=float)
+    x = np.broadcast_to(x if x.ndim == 0 else x[rows], rows.shape) * length
+    groups: dict[tuple, Any] = {}
+    if all(np.ndim(p[k]) == 0 for k in names):
+        groups[tuple(p[k] for k in names)] = slice(None)
+    else:
+        for i, key in enumerate(zip(*cols, strict=True)):
+            groups.setdefault(key, []).append(i)
     out = np.empty(rows.size)
-    for i, (v, ref, piv, pos) in enumerate(zip(*cols, strict=True)):
-        swing = case_swing({"racket_speed": v, "reference": ref, "pivot": piv}, length)
-        out[i] = swing.speed_at(float(pos) * length)
+    for key, idx in groups.items():
+        out[idx] = case_swing(dict(zip(names, key, strict=True)), length).speed_at(x[idx])
     return out
 
 
@@ -230,7 +238,9 @@ def _engine_group(
     factor = _factor(spec, take(p["ei1"], rows), take(p["ei_factor"], rows))
     v_in = np.broadcast_to(np.asarray(take(p["speed"], rows), dtype=float), rows.shape)
     v_r = _racket_speeds(p, rows, model.mesh.length)
-    closing = np.array([closing_speed(vi, vr) for vi, vr in zip(v_in, v_r, strict=True)])
+    closing = v_in + v_r
+    for i in np.flatnonzero(~(closing > 0.0))[:1]:
+        closing_speed(v_in[i], v_r[i])  # refuses it, naming the speeds
     b = impacts(
         model,
         position=take(p["position"], rows),

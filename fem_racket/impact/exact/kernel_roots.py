@@ -111,16 +111,24 @@ def case_roots(d, v, R, k, c, lam, res, work, scratch):
                 continue
             s = lam[j]
             s2 = s * s
-            S0 = S1 = S2 = 0j
+            s2r, s2i = s2.real, s2.imag
             p = pole[j]
+            # S0 = sum v_i x_i, S1 = sum x_i, S2 = sum v_i x_i^2 with x_i = 1/(d_i + s^2), i != p
+            # (real arithmetic: v_i and d_i are real)
+            a0 = b0 = a1 = b1 = a2 = b2 = 0.0
             for i in range(R):
                 if i != p:
-                    zr = d[i] + s2.real
-                    inv = 1.0 / (zr * zr + s2.imag * s2.imag)
-                    x = complex(zr * inv, -s2.imag * inv)
-                    S0 += v[i] * x
-                    S1 += x
-                    S2 += v[i] * (x * x)
+                    zr = d[i] + s2r
+                    inv = 1.0 / (zr * zr + s2i * s2i)
+                    xr, xi = zr * inv, -s2i * inv
+                    vi = v[i]
+                    a0 += vi * xr
+                    b0 += vi * xi
+                    a1 += xr
+                    b1 += xi
+                    a2 += vi * (xr * xr - xi * xi)
+                    b2 += vi * (2.0 * xr * xi)
+            S0, S1, S2 = complex(a0, b0), complex(a1, b1), complex(a2, b2)
             ikcs = _inverse(k + c * s)
             q = ikcs + S0
             e = d[p] + s2
