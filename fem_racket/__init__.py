@@ -65,6 +65,7 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "io.animate": ("render_animation",),
     "io.config": ("RunConfig", "example_config", "load_config", "parse_config"),
     "io.figure_files": ("save_figure",),
+    "io.map_files": ("map_figure",),
     "io.mesh_files": ("read_mesh", "write_mesh"),
     "io.plotting": ("plot_impact", "plot_refinement", "plot_sweep"),
     "io.vtk": ("write_vtk_series",),

@@ -1,22 +1,29 @@
 """Optional parts of the install: which extra brings which library, and one line when it is
 missing.
 
-``pip install -e .`` installs what an impact, a sweep, a map, a refinement and the paper's
-reproduction need; the extras add the rest (``pip install -e ".[test]"`` installs them all):
+``pip install -e .`` installs the core (scikit-fem, numpy, scipy, meshio, pyvista,
+scikit-sundae and the file and plotting libraries): every command but the few below; the extras
+add the rest (``pip install -e ".[test]"`` installs them all):
 
 ========  ===========================================  =======================================
 extra     libraries                                    for
 ========  ===========================================  =======================================
-vtk       pyvista (VTK), imageio, imageio-ffmpeg       export-vtk, animate
+animate   imageio, imageio-ffmpeg                      animate (GIF, MP4)
 design    pymoo, SALib                                 optimize --method nsga2, sensitivity
 dask      dask[distributed]                            --scheduler (sweeps and design studies)
 all       every one above
 ========  ===========================================  =======================================
+
+:func:`require` is also the door to pyvista, a core library imported only where it is used: its
+import loads pooch, whose ``tqdm.auto`` warns in a Jupyter kernel without ipywidgets
+(``TqdmWarning: IProgress not found``) about download bars fem_racket never shows, so that one
+warning is silenced while pyvista is imported.
 """
 
 from __future__ import annotations
 
 import importlib
+import warnings
 from types import ModuleType
 
 from fem_racket.validation import InputError
@@ -25,10 +32,8 @@ __all__ = ["EXTRAS", "MissingExtra", "require"]
 
 #: Top-level module -> the extra that installs it.
 EXTRAS = {
-    "pyvista": "vtk",
-    "vtkmodules": "vtk",
-    "imageio": "vtk",
-    "imageio_ffmpeg": "vtk",
+    "imageio": "animate",
+    "imageio_ffmpeg": "animate",
     "pymoo": "design",
     "SALib": "design",
     "dask": "dask",
@@ -40,22 +45,30 @@ class MissingExtra(InputError):
     """A library of an optional extra is not installed (the command line: one line, exit 2)."""
 
 
+def _import(name: str) -> ModuleType:
+    """``importlib.import_module(name)``, pooch's notebook warning silenced (see above)."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message="IProgress not found", module="tqdm")
+        return importlib.import_module(name)
+
+
 def require(name: str, what: str) -> ModuleType:
-    """Import module ``name`` (of :data:`EXTRAS`), or say in one line which install adds it.
+    """Import module ``name``, or say in one line which install adds it (a library of
+    :data:`EXTRAS`; a core library missing is a broken install: its own ImportError).
 
     Parameters
     ----------
     name : str
         The module, e.g. ``"pyvista"`` or ``"SALib.sample.sobol"``.
     what : str
-        What needs it, for the message (``"export-vtk"``).
+        What needs it, for the message (``"fem-racket animate"``).
     """
     try:
-        return importlib.import_module(name)
+        return _import(name)
     except ModuleNotFoundError as exc:
         top = name.split(".")[0]
-        if exc.name is None or exc.name.split(".")[0] != top:
-            raise  # the library is there but lacks one of its own dependencies
+        if top not in EXTRAS or exc.name is None or exc.name.split(".")[0] != top:
+            raise  # a core library, or one lacking one of its own dependencies
         extra = EXTRAS[top]
         raise MissingExtra(
             f"{what} needs {top}, which is not installed: pip install 'fem_racket[{extra}]' "

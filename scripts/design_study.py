@@ -139,7 +139,7 @@ def plot_profiles(steps, smooth, path: Path, quick: bool) -> None:
     ax_ei.set_ylabel("EI [N m^2]")
     ax_ra.set_ylabel("rhoA [kg/m]")
     for ax in (ax_ei, ax_ra):
-        ax.set_xlabel("x/L [1]")
+        ax.set_xlabel("x/L [-]")
     ax_ra.legend(*ax_ei.get_legend_handles_labels(), fontsize=8, loc="upper left")
     speeds = ", ".join(f"{v:g}" for v in sp.speeds)
     fig.suptitle(

@@ -15,8 +15,9 @@
 # sweet spots. Run it as a script,
 # `python scripts/tour.py [--quick] [--out DIR]` (about 10 s here, 5 s with `--quick`; it
 # rewrites its own folder, the repository's `output/tour/` by default, from wherever it runs),
-# or open it as a notebook:
-# `jupytext --to notebook scripts/tour.py` (each `# %%` is a cell).
+# or as a notebook (each `# %%` is a cell; the plots show inline):
+# `jupytext --to notebook scripts/tour.py` makes `scripts/tour.ipynb` to open in Jupyter, or
+# `jupytext --to notebook --output output/tour.ipynb --execute scripts/tour.py` runs it.
 
 # %%
 import argparse
@@ -122,3 +123,12 @@ print(
     f"({m.ball_speed_out.max():.1f} m/s), power region {s.power_region[0]:.3f}-"
     f"{s.power_region[1]:.3f} L"
 )
+
+# %% [markdown]
+# The map's figure: e_A and v_out along the frame, the sweet spots marked and named in the
+# legends (`fr.map_figure` takes several maps: one curve each).
+
+# %%
+fig = fr.map_figure([m], pyplot=True)
+path = fr.save_figure(fig, OUT / "map.png", provenance({"tour": "map"}), overwrite=True)
+print(f"wrote {path}")

@@ -12,7 +12,7 @@ import numpy as np
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.variables import OBJECTIVES, sense
 
-__all__ = ["plot_map", "plot_pareto", "plot_progress", "plot_sobol"]
+__all__ = ["plot_map", "plot_pareto", "plot_progress", "plot_sobol", "zoom_limits"]
 
 DPI = 110
 
@@ -125,6 +125,19 @@ def plot_map(problem: DesignProblem, maps: dict, path: str | os.PathLike) -> Non
 ZOOM_BELOW = 0.25
 
 
+def zoom_limits(front: np.ndarray, cloud: np.ndarray) -> np.ndarray | None:
+    """Limits ``[[x0, x1], [y0, y1]]`` of the zoomed panel of a Pareto front (two objectives
+    per row), or None when there is nothing to zoom into: a front of one point, or one spanning
+    :data:`ZOOM_BELOW` or more of the ``cloud``'s (every design's) range in an objective. The
+    margin is 15 % of the front's extent, or 2 % of the cloud's along an objective where the
+    front has none."""
+    span, whole = np.ptp(front, axis=0), np.ptp(cloud, axis=0)
+    if not (np.any(span > 0) and np.all(span < ZOOM_BELOW * whole)):
+        return None
+    pad = np.where(span > 0, 0.15 * span, 0.02 * whole)
+    return np.column_stack([front.min(axis=0) - pad, front.max(axis=0) + pad])
+
+
 def plot_pareto(result, path: str | os.PathLike) -> None:
     """Every evaluated design, the Pareto front (zoomed in a second panel when it is small),
     and EI(x), rhoA(x) of three front designs."""
@@ -137,7 +150,8 @@ def plot_pareto(result, path: str | os.PathLike) -> None:
     f = result.pareto_f
     s0 = [result.start_outputs[o] for o in p.objectives[:2]]
     cloud = np.vstack([y[:, [k0, k1]], [s0]])
-    zoom = bool(np.all(np.ptp(f[:, :2], axis=0) < ZOOM_BELOW * np.ptp(cloud, axis=0)))
+    limits = zoom_limits(f[:, :2], cloud)
+    zoom = limits is not None
     fig, axes = plt.subplots(1, 4 if zoom else 3, figsize=(18 if zoom else 14, 4.2))
     picks = sorted({0, len(f) // 2, len(f) - 1})
     colors = ["tab:blue", "tab:green", "tab:purple"]
@@ -152,12 +166,11 @@ def plot_pareto(result, path: str | os.PathLike) -> None:
         ax.set_ylabel(OBJECTIVES[p.objectives[1]])
     axes[0].legend(fontsize=7)
     if zoom:
-        lo, hi = f[:, :2].min(axis=0), f[:, :2].max(axis=0)
-        pad = 0.15 * np.maximum(hi - lo, 1e-9 * np.abs(hi))
-        axes[1].set_xlim(lo[0] - pad[0], hi[0] + pad[0])
-        axes[1].set_ylim(lo[1] - pad[1], hi[1] + pad[1])
+        axes[1].set_xlim(*limits[0])
+        axes[1].set_ylim(*limits[1])
         axes[1].set_title("the front, zoomed", fontsize=9)
         axes[1].locator_params(axis="x", nbins=5)
+        axes[1].ticklabel_format(useOffset=False)  # the values themselves, not "1e-11+0.229"
         axes = axes[[0, 2, 3]]
     for c, i in zip(colors, picks, strict=False):
         mesh = p.mesh(result.pareto_x[i])
@@ -174,7 +187,7 @@ def plot_pareto(result, path: str | os.PathLike) -> None:
     for ax in axes[1:]:
         ax.set_xlabel("x/L [-]")
         ax.legend(fontsize=7)
-    fig.suptitle(f"NSGA-II Pareto front: {len(f)} designs")
+    fig.suptitle(f"NSGA-II Pareto front: {len(f)} design{'s' if len(f) != 1 else ''}")
     fig.tight_layout()
     _save(fig, path)
 

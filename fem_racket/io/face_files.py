@@ -25,6 +25,7 @@ from fem_racket.outputs import (
     provenance,
     sidecar_path,
 )
+from fem_racket.outputs.labels import LABELS
 from fem_racket.studies.face_map import FaceMap
 from fem_racket.validation import InputError
 
@@ -60,18 +61,18 @@ def face_dataset(maps: Sequence[FaceMap], parameters: Mapping[str, Any] | None =
         "apparent_cor": (
             dims,
             np.stack([m.apparent_cor for m in maps]),
-            {"units": "1", "long_name": "apparent COR e_A at the closing speed (NaN off the face)"},
+            {**LABELS["apparent_cor"].attrs(), "comment": "NaN off the face"},
         ),
         "ball_speed_out_m_s": (
             dims,
             np.stack([m.ball_speed_out for m in maps]),
-            {"units": "m/s", "long_name": "ball speed after impact v_out"},
+            {**LABELS["ball_speed_out_m_s"].attrs(), "comment": "NaN off the face"},
         ),
     }
     coords = {
         "racket": ("racket", [m.name for m in maps]),
-        "offset": ("offset", y, {"units": "m", "long_name": "lateral offset from the long axis"}),
-        "position": ("position", x, {"units": "x/L", "long_name": "impact point from the butt"}),
+        "offset": ("offset", y, LABELS["offset"].attrs()),
+        "position": ("position", x, LABELS["position"].attrs()),
     }
     sums = [m.summary() for m in maps]
     attrs: dict[str, Any] = {k: np.array([s[k] for s in sums], dtype=float) for k in PER_RACKET}

@@ -29,6 +29,7 @@ from fem_racket.outputs import (
     provenance,
     sidecar_path,
 )
+from fem_racket.outputs.labels import LABELS
 from fem_racket.studies.racket_map import RacketMap
 from fem_racket.validation import InputError
 
@@ -36,21 +37,18 @@ __all__ = [
     "MAP_SUFFIXES",
     "check_map_outputs",
     "map_dataset",
+    "map_figure",
     "map_targets",
     "write_maps",
 ]
 
 #: Suffixes a map can be written to.
 MAP_SUFFIXES = (".nc", ".csv", ".png")
-#: Curves: attribute of RacketMap -> (variable name, units, description).
+#: Curves: attribute of RacketMap -> variable name (labels: fem_racket.outputs.labels.LABELS).
 CURVES = {
-    "apparent_cor": (
-        "apparent_cor",
-        "1",
-        "apparent COR e_A of the free racket at the closing speed",
-    ),
-    "ball_speed_out": ("ball_speed_out_m_s", "m/s", "ball speed after impact v_out"),
-    "racket_speed": ("racket_speed_at_impact_m_s", "m/s", "impact point's speed v_r before impact"),
+    "apparent_cor": "apparent_cor",
+    "ball_speed_out": "ball_speed_out_m_s",
+    "racket_speed": "racket_speed_at_impact_m_s",
 }
 #: Sweet spots: SweetSpots attribute -> attribute name (x/L).
 SPOTS = {
@@ -78,13 +76,13 @@ def map_dataset(maps: Sequence[RacketMap], parameters: Mapping[str, Any] | None 
         var: (
             ("racket", "position"),
             np.stack([getattr(m, attr) for m in maps]),
-            {"units": unit, "long_name": text},
+            LABELS[var].attrs(),
         )
-        for attr, (var, unit, text) in CURVES.items()
+        for attr, var in CURVES.items()
     }
     coords = {
         "racket": ("racket", [m.name for m in maps]),
-        "position": ("position", x, {"units": "x/L", "long_name": "impact point from the butt"}),
+        "position": ("position", x, LABELS["position"].attrs()),
     }
     attrs: dict[str, Any] = {
         name: np.array([getattr(m.spots, attr) for m in maps], dtype=float)
@@ -107,77 +105,105 @@ def map_dataset(maps: Sequence[RacketMap], parameters: Mapping[str, Any] | None 
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
-def _mark_maximum(
-    ax: Any, x: float, xs: np.ndarray, ys: np.ndarray, marker: str, name: str, color: str
-) -> None:
-    """A marker at the curve (xs, ys) at ``x`` labelled ``max NAME x``."""
-    y = np.interp(x, xs, ys)
-    ax.plot([x], [y], marker, color=color)
-    ax.annotate(
-        f"max {name} {x:.3f}",
-        (x, y),
-        xytext=(4, 4),
-        textcoords="offset points",
-        color=color,
-        fontsize=8,
-    )
+def _motion(maps: Sequence[RacketMap]) -> str:
+    """The swing in words, once for every racket (their angular speeds as a range when the
+    rackets' lengths make them differ)."""
+    omegas = sorted({round(m.swing.omega, 12) for m in maps})
+    sw = maps[0].swing
+    if sw.omega != 0.0:
+        rate = f"{omegas[0]:.1f}" if len(omegas) == 1 else f"{omegas[0]:.1f}-{omegas[-1]:.1f}"
+        who = "racket" if len(maps) == 1 else "rackets"
+        return f"{who} turning at {rate} rad/s about {sw.pivot:.3g} m from the butt"
+    return f"racket moving at {sw.velocity:.3g} m/s" if sw.velocity else "racket at rest"
 
 
-def _figure(maps: Sequence[RacketMap]) -> Any:
-    """PNG: e_A (top) and v_out (bottom) along the frame, sweet spots marked and labelled."""
-    from matplotlib.figure import Figure  # no pyplot: no global state, ~0.2 s less to import
+def _spots_text(m: RacketMap) -> str:
+    """``name: COP 0.739, mode-1 node 0.770, max v_out at 0.799`` (x/L; the spots defined)."""
+    s = m.spots
+    spots = [("COP", s.cop), ("mode-1 node", s.node), ("max v_out at", s.max_ball_speed)]
+    return f"{m.name}: " + ", ".join(f"{k} {v:.3f}" for k, v in spots if np.isfinite(v))
 
-    fig = Figure(figsize=(7.5, 7.0))
+
+def map_figure(maps: Sequence[RacketMap], *, pyplot: bool = False) -> Any:
+    """The maps' figure: e_A (top) and v_out (bottom) along the frame, sweet spots as markers
+    and lines named with their positions in the legends (no text on the curves: several
+    rackets' labels would overlap).
+
+    Parameters
+    ----------
+    maps : sequence of RacketMap
+        One curve each (:func:`fem_racket.racket_map`).
+    pyplot : bool
+        Make the figure with pyplot (a notebook then shows it inline); by default a plain
+        matplotlib Figure (no global state), as the ``.png`` of :func:`write_maps`.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    size = (7.5, 7.4 + 0.25 * len(maps))
+    if pyplot:
+        import matplotlib.pyplot as plt
+
+        fig = plt.figure(figsize=size, layout="constrained")
+    else:
+        from matplotlib.figure import Figure  # no pyplot: ~0.2 s less to import
+
+        fig = Figure(figsize=size, layout="constrained")
+    from matplotlib.lines import Line2D
+
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
-    drawn: dict[str, list[float]] = {"mode-1 node": [], "COP": []}
     for k, m in enumerate(maps):
-        c = f"C{k}"
-        s = m.spots
-        ax1.plot(m.positions, m.apparent_cor, color=c, label=m.name)
-        ax2.plot(m.positions, m.ball_speed_out, color=c, label=m.name)
+        c, s = f"C{k}", m.spots
+        ax1.plot(
+            m.positions,
+            m.apparent_cor,
+            color=c,
+            label=f"{m.name}: max e_A at {s.max_apparent_cor:.3f}",
+        )
+        ax1.plot(
+            [s.max_apparent_cor],
+            [np.interp(s.max_apparent_cor, m.positions, m.apparent_cor)],
+            "o",
+            color=c,
+        )
+        ax2.plot(m.positions, m.ball_speed_out, color=c, label=_spots_text(m))
         ax2.axvspan(*s.power_region, color=c, alpha=0.12)
-        marks = [("mode-1 node", s.node, ":"), ("COP", s.cop, "--")]
-        for label, xv, style in marks:
-            if not np.isfinite(xv) or any(abs(xv - o) < 1e-3 for o in drawn[label]):
-                continue  # the same spot on an earlier racket: one line and label
-            drawn[label].append(xv)
-            for ax in (ax1, ax2):
-                ax.axvline(xv, color=c, ls=style, lw=1)
-            right = label == "COP"  # COP left of its line, the node right of its own
-            ax2.annotate(
-                f"{label} {xv:.3f}",
-                (xv, 0.02),
-                xycoords=("data", "axes fraction"),
-                xytext=(-3 if right else 3, 0),
-                textcoords="offset points",
-                rotation=90,
-                ha="right" if right else "left",
-                va="bottom",
-                color=c,
-                fontsize=8,
-            )
-        _mark_maximum(ax1, s.max_apparent_cor, m.positions, m.apparent_cor, "o", "e_A", c)
         if np.isfinite(s.max_ball_speed):
-            _mark_maximum(ax2, s.max_ball_speed, m.positions, m.ball_speed_out, "s", "v_out", c)
+            y = np.interp(s.max_ball_speed, m.positions, m.ball_speed_out)
+            ax2.plot([s.max_ball_speed], [y], "s", color=c)
+        for xv, style in ((s.node, ":"), (s.cop, "--")):
+            if np.isfinite(xv):
+                for ax in (ax1, ax2):
+                    ax.axvline(xv, color=c, ls=style, lw=1)
     pct = round(100 * maps[0].spots.power_fraction)
     ax1.set_ylabel("apparent COR e_A [-]")
     ax2.set_ylabel("ball speed out v_out [m/s]")
     ax2.set_xlabel("impact point x/L from the butt [-]")
-    sw = maps[0].swing
-    if sw.omega != 0.0:
-        motion = f"racket turning at {sw.omega:.3g} rad/s about {sw.pivot:.3g} m from the butt"
-    else:
-        motion = f"racket moving at {sw.velocity:.3g} m/s" if sw.velocity else "racket at rest"
     law = maps[0].law_summary()["law"]
+    name = f" ({maps[0].name})" if len(maps) == 1 else ""
     ax1.set_title(
-        f"ball at {maps[0].speed:g} m/s, {motion} ({maps[0].name}), {law} contact law\n"
+        f"ball at {maps[0].speed:g} m/s, {_motion(maps)}{name}, {law} contact law\n"
         f"shaded: power region (v_out >= {pct} % of its max)",
         fontsize=9,
     )
     ax1.legend(fontsize=8, loc="lower left")
+    keys = [
+        Line2D([], [], color="0.3", ls="--", lw=1, label="centre of percussion (COP)"),
+        Line2D([], [], color="0.3", ls=":", lw=1, label="mode-1 node"),
+        Line2D([], [], color="0.3", marker="s", ls="", label="max v_out"),
+    ]
+    handles, _ = ax2.get_legend_handles_labels()
+    ax2.legend(
+        handles=handles + keys,
+        fontsize=8,
+        loc="upper center",
+        bbox_to_anchor=(0.5, -0.14),
+        ncol=1,
+        frameon=False,
+    )
     for ax in (ax1, ax2):
         ax.grid(alpha=0.3)
-    fig.tight_layout()
     return fig
 
 
@@ -243,7 +269,7 @@ def write_maps(
         for t, tmp in pending:
             suffix = t.path.suffix.lower()
             if suffix == ".png":
-                _save_png(_figure(maps), tmp, parameters)
+                _save_png(map_figure(maps), tmp, parameters)
             elif suffix == ".csv":
                 _write_csv(maps, tmp, next(pending)[1], parameters)
             else:

@@ -4,8 +4,9 @@
 - :func:`plot_refinement`: a refinement study's frequency errors or COR / contact-time changes
   against the number of elements (log-log);
 - :func:`plot_sweep`: a swept result (an ``xarray.DataArray`` of :func:`fem_racket.sweep`)
-  against one coordinate, one line per value of another, with readable labels
-  (:func:`coordinate_labels`: ``0.617``, not ``0.6166666666666667``).
+  against one coordinate, one line per value of another, with readable labels: the axes
+  ``long_name [units]`` (:mod:`fem_racket.outputs.labels`: "apparent COR e_A [-]"), the lines'
+  values rounded (:func:`coordinate_labels`: ``0.617``, not ``0.6166666666666667``).
 
 Pass ``ax`` to draw into an existing figure; without it a new figure (constrained layout, so
 no label is clipped) is made. matplotlib is imported inside the functions.
@@ -24,6 +25,8 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+from fem_racket.outputs.labels import Label, label
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -186,14 +189,21 @@ def coordinate_labels(values: Sequence[float], digits: int = 3) -> list[str]:
     return [repr(v) for v in vals]
 
 
-def _unit(unit: str | None) -> str:
-    """A unit as labels show it: the netCDF (CF) ``"1"`` of a dimensionless value as ``-``."""
-    return "-" if unit == "1" else unit or ""
+def _label(da: Any) -> Label:
+    """A variable's or coordinate's label: its own ``long_name`` and ``units`` (a sweep file's,
+    :mod:`fem_racket.outputs.labels`; CF's ``"1"`` shown as ``-``), else the table's entry for
+    its name."""
+    table = label(str(da.name), str(da.attrs.get("units", "-")))
+    if "long_name" not in da.attrs:
+        return table
+    units = str(da.attrs.get("units", table.units))
+    return Label(str(da.attrs["long_name"]), "-" if units in ("1", "") else units)
 
 
-def _name(coord: Any) -> str:
-    unit = _unit(coord.attrs.get("units"))
-    return f"{coord.name} [{unit}]" if unit else str(coord.name)
+def _fixed(lab: Label, value: float) -> str:
+    """``ball speed v_in = 30 m/s`` (no unit for a dimensionless value)."""
+    unit = "" if lab.units == "-" else f" {lab.units}"
+    return f"{lab.long_name} = {coordinate_labels([value])[0]}{unit}"
 
 
 def plot_sweep(
@@ -226,15 +236,14 @@ def plot_sweep(
     xs = da[x].values
     lines = [(None, da)] if hue is None else [(v, da.sel({hue: v})) for v in da[hue].values]
     labels = coordinate_labels(da[hue].values) if hue is not None else [None]
-    for (_, line), label in zip(lines, labels, strict=True):
-        ax.plot(xs, line.transpose(x).values, "-o", ms=3, label=label)
+    for (_, line), text in zip(lines, labels, strict=True):
+        ax.plot(xs, line.transpose(x).values, "-o", ms=3, label=text)
     if xs.size > 1 and xs.min() > 0 and xs.max() / xs.min() > 20:
         ax.set_xscale("log")
-    ax.set_xlabel(_name(da[x]))
-    unit = _unit(da.attrs.get("units"))
-    ax.set_ylabel(f"{da.name} [{unit}]" if unit else str(da.name))
+    ax.set_xlabel(_label(da[x]).text)
+    ax.set_ylabel(_label(da).text)
     fixed = [
-        f"{c} = {coordinate_labels([float(da[c])])[0]} {_unit(da[c].attrs.get('units'))}".strip()
+        _fixed(_label(da[c]), float(da[c]))
         for c in da.coords
         if da[c].ndim == 0 and c not in (x, hue)
     ]
@@ -243,7 +252,7 @@ def plot_sweep(
     if hue is not None:
         # Beside the axes, so that it never covers a line.
         ax.legend(
-            title=_name(da[hue]),
+            title=_label(da[hue]).text,
             fontsize=8,
             title_fontsize=8,
             loc="center left",

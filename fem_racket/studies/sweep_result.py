@@ -2,12 +2,14 @@
 
 :class:`SweepResult` holds the values of every case (one row per case, the columns of
 :data:`fem_racket.studies.cases.COLUMNS`) and turns them into the labelled variables of the
-dataset: one dimension per swept parameter (its values the coordinate, with units and a
-long name), the result variables :data:`~fem_racket.studies.cases.VARIABLES` and the global
-attributes (provenance, every fixed parameter, solver, tolerances, modes kept). The same
-variables give the netCDF file (:func:`fem_racket.outputs.netcdf.write_netcdf`, no xarray: what
-the command line writes) and the :class:`xarray.Dataset` of :func:`fem_racket.sweep`, so
-``xarray.open_dataset`` of the file is identical to that dataset.
+dataset: one dimension per swept parameter (its values the coordinate), the result variables
+:data:`~fem_racket.studies.cases.VARIABLES` and the global attributes (provenance, every fixed
+parameter, solver, tolerances, modes kept). Each variable's ``long_name``, ``units`` and
+``description`` come from :data:`fem_racket.outputs.labels.LABELS` (short names, so that
+xarray's own ``.plot()`` labels fit on one line). The same variables give the netCDF file
+(:func:`fem_racket.outputs.netcdf.write_netcdf`, no xarray: what the command line writes) and
+the :class:`xarray.Dataset` of :func:`fem_racket.sweep`, so ``xarray.open_dataset`` of the file
+is identical to that dataset.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import numpy as np
 
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.outputs import provenance
+from fem_racket.outputs.labels import label
 from fem_racket.studies.cases import MODES_COLUMN, VARIABLES, result_variables
 from fem_racket.studies.grid import SweepSpec, parameter
 from fem_racket.studies.law_axes import family_of
@@ -80,6 +83,12 @@ def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
     return attrs
 
 
+def _attrs(name: str, units: str, description: str) -> dict[str, str]:
+    """A variable's attributes: short ``long_name``, ``units`` (``-`` when dimensionless) and
+    ``description`` (:mod:`fem_racket.outputs.labels`)."""
+    return label(name, units, description).attrs()
+
+
 def modes_kept(spec: SweepSpec, kept: np.ndarray) -> int | str:
     """The ``modes_kept`` attribute: the flexible modes the solver kept, one number when every
     case kept the same, else their range (the engine's COR tolerance chooses them per case)."""
@@ -129,21 +138,19 @@ class SweepResult:
         return attrs
 
     def coordinates(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
-        """Each swept parameter's values: name -> ((name,), values, units and long name)."""
+        """Each swept parameter's values: name -> ((name,), values, attributes of its
+        :func:`~fem_racket.outputs.labels.label`)."""
         return {
-            name: (
-                (name,),
-                vals,
-                {"units": parameter(name).unit, "long_name": parameter(name).description},
-            )
+            name: ((name,), vals, _attrs(name, parameter(name).unit, parameter(name).description))
             for name, vals in self.spec.axes.items()
         }
 
     def data_variables(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
-        """The result variables: name -> (dimensions, values, units and long name)."""
+        """The result variables: name -> (dimensions, values, attributes of its
+        :func:`~fem_racket.outputs.labels.label`)."""
         spec, keep = self.spec, result_variables(self.spec)
         return {
-            name: (spec.dims, self.values[:, k].reshape(spec.shape), {"units": u, "long_name": t})
+            name: (spec.dims, self.values[:, k].reshape(spec.shape), _attrs(name, u, t))
             for k, (name, (u, t)) in enumerate(VARIABLES.items())
             if name in keep
         }

@@ -49,8 +49,10 @@ def test_plot_sweep_labels_lines_with_rounded_coordinates(plt):
     ax = fr.plot_sweep(ds.cor, "ei1", hue="position", speed=30)
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert labels == ["0.55", "0.683", "0.817", "0.95"]
-    assert ax.get_xscale() == "log" and "[N m^2]" in ax.get_xlabel()
-    assert "speed = 30" in ax.get_title()
+    assert ax.get_xscale() == "log" and ax.get_xlabel() == "grip-side EI1 [N m^2]"
+    assert ax.get_ylabel() == "apparent COR e_A [-]"  # not the terse "cor [1]"
+    assert ax.get_legend().get_title().get_text() == "impact point [x/L]"
+    assert ax.get_title() == "ball speed v_in = 30 m/s"
 
 
 def test_plot_refinement_returns_the_axes(plt):

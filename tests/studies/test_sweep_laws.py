@@ -34,7 +34,11 @@ def test_a_law_parameter_sweep_is_simulate_at_each_value():
         law="hysteretic", k2=k2, position=[0.6, 0.8], speed=30.0, backend="serial", peak_force=True
     )
     assert ds.cor.dims == ("position", "k2")
-    assert ds.k2.attrs == {"units": "N/m^n", "long_name": "hysteretic unloading stiffness k2"}
+    assert ds.k2.attrs == {
+        "long_name": "unloading k2",
+        "units": "N/m^n",
+        "description": "hysteretic unloading stiffness k2",
+    }
     assert ds.attrs["contact_law"] == "hysteretic" and ds.attrs["solver"] == "general"
     # the fixed parameters (the family's defaults here) are attributes, the swept one is not
     assert ds.attrs["contact_k1_n_m_n"] == KAWAZOE.k1
