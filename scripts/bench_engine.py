@@ -154,7 +154,9 @@ def cli_wall(args: list[str]) -> float:
 def main(argv: list[str] | None = None) -> list[dict]:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
-        "--quick", action="store_true", help="small grids, two meshes, no CLI sweep of the big grids, no compile from scratch"
+        "--quick",
+        action="store_true",
+        help="small grids, two meshes, no CLI sweep of the big grids, no compile from scratch",
     )
     args = parser.parse_args(argv)
     print("load average (1, 5, 15 min): {:.1f} {:.1f} {:.1f}".format(*os.getloadavg()))
@@ -232,7 +234,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
     if not args.quick:  # a compile from scratch takes ~10-30 s
         first, cached = compile_seconds()
         rows.append(dict(compile_s=first, cached_s=cached))
-        print(f"\nfirst engine call: {first:.1f} s with an empty numba cache, {cached:.2f} s cached")
+        print(f"\nfirst engine call: {first:.1f} s with an empty numba cache, {cached:.2f} s later")
     print(f"\n{'elements':>8} {'modes+static s':>15} {'CPU us/impact':>14} {'modes kept':>11}")
     p, v, e = grid(grids["Fig 13"])
     for cells in QUICK["elements"] if args.quick else ELEMENTS:
