@@ -62,7 +62,7 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "impact.strung": ("StrungPoint", "strung_point"),
     "impact.strung_impact": ("StrungImpact", "simulate_strung"),
     "impact.swing": ("Swing", "ball_speed_out"),
-    "io.animate": ("render_animation",),
+    "io.animate": ("AnimationOptions", "render_animation"),
     "io.config": ("RunConfig", "example_config", "load_config", "parse_config"),
     "io.figure_files": ("save_figure",),
     "io.map_files": ("map_figure",),

@@ -1,24 +1,20 @@
-"""Compiled kernels: cost and accuracy of the general integrator and the linear engine, one run.
+"""Compiled kernels: issue 27's table of costs and accuracy, in one run (20 elements, 1 thread).
 
-Prints, on the paper's standard racket (20 elements, one BLAS thread):
+- ``fem-racket simulate --law kawazoe-1997-nonlinear`` in a new process, compiling the
+  kernels (an empty numba cache), then with them cached;
+- CPU us per impact: the linear engine (``impacts``, tolerance 1e-6; reference), each law
+  batched (positions 0.45-0.95 L, 20-40 m/s, tolerance 1e-6, vouched; max |dCOR| against CVODE
+  at rtol 1e-10 on the first cases) and the OpenSeesPy peer (Newmark, average acceleration,
+  dt = 1e-5 s, on a beam of the standard racket's stepped segments, the ball the paper's linear
+  spring-dashpot; |dCOR| against the exact solution with every mode);
+- the 4 200-impact, 200-frame law sweep (``fem-racket sweep --law kawazoe-1997-nonlinear
+  --position 0.6:0.9:7 --speed 20,30,40 --ei1 50:3000:200:log``, serial, in process): wall and
+  CPU per impact, against the peer;
+- the worst |dCOR| against CVODE over seeded random laws per family (``--accuracy N`` each;
+  the ranges of tests/strategies.py ``contact_laws``).
 
-- the first-call compile time of the general integrator's kernels (a fresh numba cache in a
-  temporary folder) and the load time from the cache (a second process);
-- CPU us per impact of each law batched (random positions 0.45-0.95 L and speeds 20-40 m/s,
-  default COR tolerance 1e-6, answers vouched for) and its largest |dCOR| against CVODE
-  (rtol 1e-10) on the first cases;
-- the 4 200-impact, 200-frame law sweep of issue 27 (``fem-racket sweep --law
-  kawazoe-1997-nonlinear --position 0.6:0.9:7 --speed 20,30,40 --ei1 50:3000:200:log``), in
-  process (serial): wall and CPU per impact;
-- CPU us per impact of the linear engine (``fem_racket.impacts``) at tolerance 1e-6 on a
-  126 000-impact grid;
-- the worst |dCOR| against CVODE over a seeded random set of law parameters per family
-  (``--accuracy N`` cases each; the ranges of tests/strategies.py ``contact_laws``); this part
-  uses only what the tool had before the kernels, so it also measures an older tree
-  (``PYTHONPATH=/path/to/old python scripts/bench_kernels.py --only-accuracy``);
-- OpenSeesPy (a benchmark-only peer) when it is installed, else says so.
-
-This machine is shared: absolute times are noisy; read the ratios within one run.
+OpenSeesPy is a benchmark-only extra (``pip install -e ".[bench]"``); without it the peer's row
+says so in one line. The machine is shared (the load is printed): read ratios within one run.
 
 Usage: python scripts/bench_kernels.py [--quick] [--accuracy N] [--only-accuracy]
 """
@@ -45,26 +41,14 @@ from fem_racket.contact.law import power_contact_time  # noqa: E402
 from fem_racket.contact.presets import PRESETS, get_law  # noqa: E402
 from fem_racket.contact.series import SeriesBallString  # noqa: E402
 from fem_racket.impact.general.integrator import solve_general  # noqa: E402
-from fem_racket.impact.law_impact import receptance, solve_law_impact  # noqa: E402
+from fem_racket.impact.law_impact import LawOptions, receptance, solve_law_impact  # noqa: E402
 
-FIRST_CALL = """
-import time, numpy as np
-t0 = time.perf_counter()
-from fem_racket import FrameModel
-from fem_racket.contact.presets import PRESETS
-from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.law_impact import receptance
-m = FrameModel.build(None, 10)
-rec = receptance(m, 0.75, 0.057)
-t1 = time.perf_counter()
-solve_general(PRESETS["kawazoe-1997-nonlinear"], rec, 30.0)
-print(time.perf_counter() - t1)
-"""
+SIMULATE = "from fem_racket.cli import main; main(['simulate', '--law', 'kawazoe-1997-nonlinear'])"
 
 
-def first_call() -> list[tuple[float, float]]:
-    """(wall s of the first general-integrator call, CPU s of the whole process): compiling
-    (an empty cache), then loading from it."""
+def first_runs() -> list[tuple[float, float]]:
+    """(wall s, CPU s) of ``fem-racket simulate --law kawazoe-1997-nonlinear`` in a new
+    process: compiling the kernels (an empty numba cache), then loading them from it."""
     import resource
 
     with tempfile.TemporaryDirectory() as cache:
@@ -72,20 +56,18 @@ def first_call() -> list[tuple[float, float]]:
         times = []
         for _ in range(2):
             before = resource.getrusage(resource.RUSAGE_CHILDREN)
-            done = subprocess.run(
-                [sys.executable, "-c", FIRST_CALL], env=env, capture_output=True, text=True
-            )
+            w0 = time.perf_counter()
+            run = [sys.executable, "-c", SIMULATE]
+            subprocess.run(run, env=env, capture_output=True, check=True)
             after = resource.getrusage(resource.RUSAGE_CHILDREN)
             cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
-            times.append((float(done.stdout.split()[-1]), cpu))
+            times.append((time.perf_counter() - w0, cpu))
     return times
 
 
 def cvode_cor(law, model, position, speed) -> float:
-    run = solve_law_impact(
-        law, model, position, 0.057, speed, solver="cvode", output_step=None, rtol=1e-10,
-        atol=1e-13,
-    )  # fmt: skip
+    options = LawOptions("cvode", output_step=None, rtol=1e-10, atol=1e-13)
+    run = solve_law_impact(law, model, position, 0.057, speed, options=options)
     return float(-run.ball_velocity[-1] / speed)
 
 
@@ -192,6 +174,67 @@ def linear_engine(model: FrameModel, shape: tuple[int, int, int]) -> tuple[int, 
     return P.size, 1e6 * (time.process_time() - c0) / P.size
 
 
+def opensees_cor(model: FrameModel, position: float, speed: float, dt: float = 1e-5) -> float:
+    """COR of the OpenSeesPy peer: Newmark on elastic beam-columns (consistent mass) at the
+    model's cells and the impact point, the ball a mass on a zero-length spring-dashpot (the
+    paper's K_CB, zeta at ``speed``), until the spring's compression returns to zero."""
+    import openseespy.opensees as ops
+
+    from fem_racket.contact.linear import LinearContact, kcb_from_speed
+
+    law = LinearContact(kcb_from_speed(speed))
+    x = model.mesh.points
+    pts = np.unique(np.append(x, position * x[-1]))
+    cell = np.clip(np.searchsorted(x, 0.5 * (pts[:-1] + pts[1:])) - 1, 0, x.size - 2)
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    ops.geomTransf("Linear", 1)
+    for k, p in enumerate(pts):
+        ops.node(k + 1, float(p), 0.0)
+    for k, c in enumerate(cell):
+        EI, rhoA = float(model.mesh.EI[c]), float(model.mesh.rhoA[c])
+        ops.element("elasticBeamColumn", k + 1, k + 1, k + 2, 1.0, EI, 1.0, 1, "-mass", rhoA,
+                    "-cMass")  # fmt: skip
+    hit, ball = int(np.searchsorted(pts, position * x[-1])) + 1, pts.size + 1
+    ops.node(ball, position * x[-1], 0.0)
+    ops.fix(ball, 1, 0, 1)
+    ops.mass(ball, 0.0, 0.057, 0.0)
+    ops.uniaxialMaterial("Elastic", 1, float(law.stiffness), float(law.damping()))
+    ops.element("zeroLength", pts.size, hit, ball, "-mat", 1, "-dir", 2)
+    ops.setNodeVel(ball, 2, -speed, "-commit")
+    for name, *rest in (("constraints", "Plain"), ("numberer", "RCM"), ("system", "BandGeneral"),
+                        ("algorithm", "Linear"), ("integrator", "Newmark", 0.5, 0.25),
+                        ("analysis", "Transient")):  # fmt: skip
+        getattr(ops, name)(*rest)
+    ops.analyze(1, 1e-9 * dt)  # a tiny first step: accelerations consistent with C_CB V_0
+    d0, v0 = 0.0, -speed
+    for _ in range(200000):
+        ops.analyze(1, dt)
+        d, v = ops.nodeDisp(hit, 2) - ops.nodeDisp(ball, 2), ops.nodeVel(ball, 2)
+        if d0 > 0 and d <= 0:  # the compression returned to zero in this step: interpolate
+            return (v0 + d0 / (d0 - d) * (v - v0)) / speed
+        d0, v0 = d, v
+    raise RuntimeError("the OpenSeesPy peer did not separate")
+
+
+def opensees_peer(model: FrameModel, n: int) -> tuple[float, float] | None:
+    """(CPU us per impact, max |dCOR| against the exact solution with every mode) of the
+    OpenSeesPy peer over ``n`` impacts; None without openseespy."""
+    try:
+        import openseespy.opensees  # noqa: F401
+    except (ImportError, RuntimeError):  # RuntimeError: installed without its BLAS/LAPACK
+        return None
+    from fem_racket import impacts
+
+    rng = np.random.default_rng(3)
+    x, v = rng.uniform(0.45, 0.95, n), rng.choice([20.0, 30.0, 40.0], n)
+    c0 = time.process_time()
+    cors = np.array([opensees_cor(model, x[i], v[i]) for i in range(n)])
+    cpu = (time.process_time() - c0) / n
+    exact = impacts(model, position=x, speed=v, tolerance=None).cor
+    return 1e6 * cpu, float(np.max(np.abs(cors - exact)))
+
+
 def main(argv: list[str] | None = None) -> list[tuple[str, float, str]]:
     """Run the benchmark and print its tables; returns the accuracy rows (family, worst
     |dCOR|, its case)."""
@@ -204,29 +247,33 @@ def main(argv: list[str] | None = None) -> list[tuple[str, float, str]]:
     model.modes(None)
     print(f"load: {os.getloadavg()[0]:.1f} (2 cores shared)")
     if not args.only_accuracy:
-        (c_wall, c_cpu), (l_wall, l_cpu) = first_call()
+        (c_wall, c_cpu), (l_wall, l_cpu) = first_runs()
         print(
-            f"first call: compile {c_wall:.1f} s wall (process {c_cpu:.1f} s CPU; empty numba "
-            f"cache), from the cache {l_wall:.2f} s wall (process {l_cpu:.2f} s CPU)"
+            f"simulate --law, a new process: compiling the kernels (empty numba cache) "
+            f"{c_wall:.1f} s wall, {c_cpu:.1f} s CPU; cached {l_wall:.2f} s wall, {l_cpu:.2f} s CPU"
         )
         n = 200 if args.quick else 2000
-        print(f"\nlaws batched ({n} impacts, tolerance 1e-6)   CPU [us/impact]   max |dCOR| (4)")
+        count, us = linear_engine(model, (7, 3, 60) if args.quick else (70, 30, 60))
+        print(f"\n{'path (tolerance 1e-6)':44s} CPU [us/impact]   max |dCOR|")
+        print(f"  {'linear engine (' + str(count) + ' impacts)':42s} {us:12.1f}")
         for name, us, err in law_batches(model, n, 4):
-            print(f"  {name:38s} {us:12.0f} {err:18.1e}")
+            print(f"  {name + ' (' + str(n) + ' batched)':42s} {us:12.0f} {err:14.1e} vs CVODE")
+        peer = opensees_peer(model, 4 if args.quick else 12)
+        if peer is None:
+            print("  OpenSeesPy peer: not installed (pip install -e '.[bench]')")
+        else:
+            name = "OpenSeesPy Newmark, linear law"
+            print(f"  {name:42s} {peer[0]:12.0f} {peer[1]:14.1e} vs exact")
         if not args.quick:
             count, wall, cpu = law_sweep()
+            ratio = (
+                "" if peer is None else f" ({peer[0] / (1e6 * cpu / count):.0f}x the peer's CPU)"
+            )
             print(
                 f"\nlaw sweep, 200 frames: {count} impacts, {wall:.1f} s wall, "
                 f"{1e3 * wall / count:.2f} ms wall and {1e6 * cpu / count:.0f} us CPU per impact"
+                f"{ratio}"
             )
-        count, us = linear_engine(model, (7, 3, 60) if args.quick else (70, 30, 60))
-        print(f"\nlinear engine at 1e-6: {count} impacts, {us:.1f} us CPU per impact")
-        try:
-            import openseespy  # noqa: F401
-
-            print("openseespy installed: peer not run by this script (see DESIGN section 9)")
-        except ImportError:
-            print("openseespy: not installed (optional peer, DESIGN section 9: ~10 ms/impact)")
     print(f"\nworst |dCOR| vs CVODE over {args.accuracy} random laws per family (tolerance 1e-6)")
     rows = accuracy(model, args.accuracy)
     for family, worst, where in rows:

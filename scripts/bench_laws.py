@@ -23,7 +23,7 @@ import numpy as np
 from fem_racket import FrameModel, LinearContact
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.law_impact import receptance, solve_law_impact
+from fem_racket.impact.law_impact import LawOptions, receptance, solve_law_impact
 
 
 def laws() -> dict:
@@ -64,10 +64,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
                 positions[i],
                 0.057,
                 speeds[i],
-                solver="cvode",
-                output_step=None,
-                rtol=rtol,
-                atol=rtol * 1e-3,
+                options=LawOptions("cvode", output_step=None, rtol=rtol, atol=rtol * 1e-3),
             )
             t_cvode += time.perf_counter() - t0
             ref.append((-r.ball_velocity[-1] / speeds[i], r.t[-1]))

@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from fem_racket import impact_series, render_animation, simulate, write_vtk_series
+from fem_racket.io.animate import AnimationOptions
 
 
 def _folder_size(path: Path) -> int:
@@ -133,7 +134,8 @@ def main(argv: list[str] | None = None) -> list[dict]:
     for suffix in (".gif",) if args.no_mp4 else (".gif", ".mp4"):
 
         def anim(tmp: Path, suffix=suffix):
-            path = render_animation(result, tmp / f"impact{suffix}", frames=args.frames)
+            options = AnimationOptions(frames=args.frames)
+            path = render_animation(result, tmp / f"impact{suffix}", options)
             return path.stat().st_size
 
         wall, size = _best(anim, args.repeat)

@@ -41,10 +41,11 @@ from pathlib import Path
 
 import numpy as np
 
-from fem_racket.io.design_study import run_optimization
+from fem_racket.io.design_study import OptimizationRun, OutputOptions, run_optimization
 from fem_racket.io.figure_files import save_figure
 from fem_racket.outputs import provenance
 from fem_racket.studies.design.build import design_problem
+from fem_racket.studies.design.options import ExecutionOptions, SearchOptions
 from fem_racket.studies.design.profiles import cell_means
 from fem_racket.validation import InputError
 
@@ -176,14 +177,15 @@ def main(argv: list[str] | None = None) -> list[dict]:
                 continue
             problem = design_problem(**settings)
             t0 = time.perf_counter()
-            r = run_optimization(
-                problem,
-                out=out / sub if sub else out,
-                overwrite=args.overwrite or bool(sub),
-                progress=False,
-                parameters={"script": "design_study", "study": sub or "cor", "quick": args.quick},
-                **solver,
+            files = OutputOptions(
+                out / sub if sub else out,
+                args.overwrite or bool(sub),
+                {"script": "design_study", "study": sub or "cor", "quick": args.quick},
             )
+            run = OptimizationRun(
+                problem, SearchOptions(**solver), ExecutionOptions(progress=False), files
+            )
+            r = run_optimization(run)
             results[sub or "cor"] = r
             rows.append(
                 {

@@ -142,6 +142,7 @@ IMPACT_TOP = {
     "strung_exact",
     "strung_impact",
     "strung_solve",
+    "strung_stretch",
 }
 
 

@@ -14,7 +14,9 @@ whenever they are used, so a law registered later (a script's own, or a test's) 
 of them.
 
 ``linear`` is the paper's law (:class:`~fem_racket.contact.linear.LinearContact`, built from
-K_CB and zeta by :func:`fem_racket.simulate`): a name of :data:`LAW_NAMES`, not a family.
+K_CB and zeta by :func:`fem_racket.simulate`): a name of :data:`LAW_NAMES`, not a family (its
+parameters are the paper's ``--kcb``/``--zeta``); a calibrated linear law is a preset of it
+(``kawazoe-1997-ball``: the ball alone, in series with a string bed).
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from types import MappingProxyType
 from typing import Any
 
+from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.law import ContactLaw
@@ -130,8 +133,8 @@ def register(cls: type[ContactLaw]) -> type[ContactLaw]:
 
 
 def register_preset(name: str, law: ContactLaw) -> None:
-    """Add a named, calibrated law of a registered family."""
-    if not name or name in LAW_NAMES or law.name not in _FAMILIES:
+    """Add a named, calibrated law of a registered family or of the linear law."""
+    if not name or name in LAW_NAMES or law.name not in (*_FAMILIES, "linear"):
         raise ValueError(f"preset name {name!r} is empty or taken, or its family unknown")
     _PRESETS[name] = law
 
@@ -151,3 +154,4 @@ register(SeriesBallString)
 # presets (:mod:`fem_racket.contact.presets` says where they come from)
 register_preset("kawazoe-1997-nonlinear", Hysteretic(3.182e15, 8.816e16, 8.913))
 register_preset("itf-ball", HuntCrossley(3.978e5, 1.690, 0.07212))
+register_preset("kawazoe-1997-ball", KAWAZOE_BALL)

@@ -28,6 +28,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import check_linear_options, get_law
@@ -184,13 +185,9 @@ class ImpactProblem:
                     f"offset = {show(self.offset)} m is not allowed with a hand: the held racket "
                     "is struck on its long axis (it does not twist)"
                 )
-            if self.strings is not None:
-                raise InputError(
-                    f"offset = {show(self.offset)} m is not allowed with a string bed: the "
-                    "strung racket is struck on its long axis"
-                )
-            check_offsets(self.model, self.impact.position, self.offset)
-        check_incidence(self.incidence, self.held or self.strings is not None)
+            if self.strings is None:  # on the bed: checked against the bed's head
+                check_offsets(self.model, self.impact.position, self.offset)
+        check_incidence(self.incidence, self.held)  # on the bed: its normal history
 
     def ball_law(self) -> ContactLaw:
         """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""
@@ -202,6 +199,12 @@ class ImpactProblem:
         if not isinstance(self.law, ContactLaw):
             raise InputError(f"law = {self.law!r} is not allowed: must be a ContactLaw or None")
         check_linear_options(self.law, kcb=self.kcb, zeta=self.zeta)
+        if self.law is KAWAZOE_BALL and self.strings is None:
+            raise InputError(
+                "law = 'kawazoe-1997-ball' is not allowed without a string bed: it is the "
+                "ball's own law, fitted in series with the bed (give strings, e.g. "
+                "--string-tension)"
+            )
         if self.separation is not None:
             raise InputError(
                 f"separation = {show(self.separation)} is not allowed with contact law "

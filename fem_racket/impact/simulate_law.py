@@ -9,7 +9,7 @@ gravity, and the paper's linear law then takes K_CB at the closing speed. The so
 
 from __future__ import annotations
 
-from fem_racket.impact.law_impact import solve_law_impact
+from fem_racket.impact.law_impact import LawOptions, solve_law_impact
 from fem_racket.impact.ode.integrators import check_solver_settings
 from fem_racket.impact.offaxis import RIGID_OFFAXIS, combined_modes
 from fem_racket.impact.problem import ImpactProblem
@@ -39,20 +39,16 @@ def simulate_law(problem: ImpactProblem, solver: str, settings: Settings) -> Imp
         t_est = float(law.contact_time_estimate(problem.ball.mass, problem.closing_speed))
         span, what = (s.t_max, "t_max") if s.t_max is not None else (2 * t_est, "twice the law's")
         check_output_count(s.output_step, span, f"{what} {span:.3g} s of contact")
+    options = LawOptions(solver, s.output_step, s.t_max, s.rtol, s.atol, s.tolerance)
     run = solve_law_impact(
         law,
         model,
         problem.impact.position,
         problem.ball.mass,
         problem.impact.speed,
-        solver=solver,
         frame_velocity=frame_velocity,
-        output_step=s.output_step,
-        t_max=s.t_max,
-        rtol=s.rtol,
-        atol=s.atol,
-        tolerance=s.tolerance,
         offset=problem.offset,
+        options=options,
     )
     n_rigid, shapes = RIGID_MODES, model.modes(None).all_shapes
     if problem.offset != 0.0:  # bending then torsion DOFs (fem_racket.impact.offaxis)

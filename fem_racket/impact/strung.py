@@ -3,16 +3,18 @@
 The ball's own law acts between the ball and the bed at the impact point (x_i, y_i); the bed's
 edge moves with the frame. The coupling used (an assumption, stated here and in the README):
 
-1. **The head ring moves with the frame** (``edge``). ``"point"`` (default): the bed's edge is
-   displaced uniformly by the frame's deflection w(x_i) at the impact point (the static edge
-   transmission to the point is then exactly 1: a uniformly displaced membrane translates
-   rigidly); this is the paper's point contact when the bed is very stiff. ``"hoop"``: each edge
-   point moves with the frame's deflection at its own x (the beam's bending along the hoop), and
-   the bed's static edge transmission T (:func:`fem_racket.strings.point.edge_transmission`)
-   averages them: the frame is seen through a_k = sum_e T_e phi_k(x_e) and, by reciprocity,
-   receives the contact force spread over the edge as T F. T reproduces linear functions, so
-   the rigid modes are the same either way; only the frame's bending differs. The frame's twist
-   is not passed to the edge in either.
+1. **The head ring moves with the frame** (``edge``; :mod:`fem_racket.impact.strung_frame`).
+   ``"point"`` (default): the bed's edge is displaced uniformly by the frame's motion at the
+   impact point, w(x_i) + y_i theta(x_i) (the static edge transmission to the point is then
+   exactly 1: a uniformly displaced membrane translates rigidly); this is the paper's point
+   contact when the bed is very stiff. ``"hoop"``: each edge point (x_e, y_e) moves with the
+   frame's bending and twist there, w(x_e) + y_e theta(x_e), and the bed's static edge
+   transmission T (:func:`fem_racket.strings.point.edge_transmission`) averages them: the frame
+   is seen through a_k = sum_e T_e (w_k(x_e) + y_e theta_k(x_e)) and, by reciprocity, receives
+   the contact force spread over the edge as T F. T reproduces linear functions, so the rigid
+   modes are the same either way; only the frame's bending and twist differ. On the racket's
+   axis (y_i = 0) the twist is not excited (T is mirror symmetric) and the bending modes alone
+   are used; off it the torsion modes and the rigid roll join them (3 rigid modes).
 2. **The bed passes the contact force to the frame.** The force of the bed's edge on the frame is
    the contact force F; the inertia of the bed's motion relative to its edge (its fixed-edge
    modes) is not fed back to the frame, and the bed's mass moving with its edge is already part
@@ -40,16 +42,19 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.bed_ball import (
+    BALL_DAMPING,
+    BALL_FIT_MASS,
+    BALL_STIFFNESS,
+    BALL_ZETA,
+    KAWAZOE_BALL,
+)
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.strung_frame import FrameAtPoint, frame_at_point
 from fem_racket.strings.bed import StringBed
-from fem_racket.strings.point import (
-    DEFAULT_BED_MODES,
-    DEFAULT_REFINE,
-    bed_point_data,
-    edge_transmission,
-)
+from fem_racket.strings.point import DEFAULT_BED_MODES, DEFAULT_REFINE, bed_point_data
 from fem_racket.validation import InputError, check_positive, show
 
 __all__ = [
@@ -91,6 +96,13 @@ class StrungPoint:
     bed_shapes : ndarray, shape (n_interior, n_bed)
         The bed coordinates' shapes on the mesh's interior DOFs, in the order they are listed
         (for pictures) [1/sqrt(kg)].
+    rigid_count : int
+        Rigid modes first in ``omega``: 2 (translation, rotation), 3 off the axis (roll), 0 on
+        a clamped frame.
+    frame_shapes : ndarray, shape (ndof, n_frame)
+        The frame coordinates' shapes (bending Hermite DOFs in the first ``ndof_bending`` rows,
+        torsion DOFs below), in the order they are listed [1/sqrt(kg)].
+    ndof_bending : int
     """
 
     omega: np.ndarray
@@ -103,6 +115,9 @@ class StrungPoint:
     lateral_m: float
     refine: int
     bed_shapes: np.ndarray
+    rigid_count: int = 2
+    frame_shapes: np.ndarray | None = None
+    ndof_bending: int = 0
 
     def describe(self) -> dict[str, Any]:
         """The bed and the impact point on it, JSON-ready, units in the keys."""
@@ -115,28 +130,24 @@ class StrungPoint:
 
     @property
     def rigid(self) -> np.ndarray:
-        """Values of the two rigid modes at the point [1/sqrt(kg)]."""
-        return self.a[:2]
+        """Values of the rigid modes at the point [1/sqrt(kg)] (translation first)."""
+        return self.a[: self.rigid_count]
 
     @property
     def flexible(self) -> tuple[np.ndarray, np.ndarray]:
         """(omega, a) of the flexible coordinates, frame and bed."""
-        return self.omega[2:], self.a[2:]
-
-
-#: The ``kawazoe-1997-ball``: a linear ball, spring k_b [N/m] and damping ratio zeta_b [-], whose
-#: series with the paper's racket as strung (246 N, 16x19, nylon, clamped, centre) gives the
-#: paper's clamped contact time 4.53 ms at 20 m/s and COR 0.83 (fitted and tabulated by
-#: :mod:`fem_racket.studies.bed_ball`, where its limits are stated).
-BALL_STIFFNESS = 137357.7927
-BALL_ZETA = 0.400824089
+        return self.omega[self.rigid_count :], self.a[self.rigid_count :]
 
 
 def kawazoe_ball(ball_mass: float, separation: str = "displacement") -> ContactLaw:
-    """The ``kawazoe-1997-ball`` as a contact law for a ball of ``ball_mass`` [kg]: spring
-    k_b and dashpot 2 zeta_b sqrt(m_B k_b)."""
+    """The ``kawazoe-1997-ball`` (:mod:`fem_racket.contact.bed_ball`) as a contact law for a
+    ball of ``ball_mass`` [kg]: the preset's spring k_b and dashpot c_b (the ball's own, whatever
+    its mass; at 0.057 kg the registry's preset itself)."""
     mass = check_positive("ball_mass", ball_mass, "kg")
-    return LinearContact(BALL_STIFFNESS, BALL_ZETA, mass, separation)
+    if mass == BALL_FIT_MASS and separation == KAWAZOE_BALL.separation:
+        return KAWAZOE_BALL
+    zeta = BALL_DAMPING / (2.0 * math.sqrt(mass * BALL_STIFFNESS))
+    return LinearContact(BALL_STIFFNESS, zeta, mass, separation)
 
 
 #: Bed modes whose value at the point is below this fraction of the largest are left out: in
@@ -175,21 +186,31 @@ def _bed_modes(bed: StringBed, point: np.ndarray, bed_modes: int, refine: int):
     return w_bed, a_bed, shapes, data
 
 
-def _assemble(w_frame, a_frame, w_bed, a_bed, shapes, data, where) -> StrungPoint:
-    """Frame (rigid values first) and bed coordinates in one ascending list."""
+def _assemble(frame: FrameAtPoint | None, w_bed, a_bed, shapes, data, where) -> StrungPoint:
+    """Frame (rigid values first) and bed coordinates in one ascending list (no frame: the
+    bed on a clamped frame)."""
+    rc = 0 if frame is None else frame.rigid
+    w_frame = np.zeros(0) if frame is None else frame.omega
     w = np.concatenate([w_frame, w_bed])
-    a = np.concatenate([a_frame[2:], a_bed])
+    a = np.concatenate([np.zeros(0) if frame is None else frame.a[rc:], a_bed])
     is_bed = np.concatenate([np.zeros(w_frame.size, bool), np.ones(w_bed.size, bool)])
     order = np.argsort(w, kind="stable")
     bed_order = order[is_bed[order]] - w_frame.size  # the bed's coordinates as they are listed
+    frame_shapes, nb = None, 0
+    if frame is not None:
+        listed = np.concatenate([np.arange(rc), rc + order[~is_bed[order]]])
+        frame_shapes, nb = frame.shapes[:, listed], frame.ndof_bending
     return StrungPoint(
-        np.concatenate([[0.0, 0.0], w[order]]),
-        np.concatenate([a_frame[:2], a[order]]),
-        np.concatenate([[False, False], is_bed[order]]),
+        np.concatenate([np.zeros(rc), w[order]]),
+        np.concatenate([np.zeros(0) if frame is None else frame.a[:rc], a[order]]),
+        np.concatenate([np.zeros(rc, bool), is_bed[order]]),
         float(data.stiffness[0]),
         data.frequencies_hz,
         *where,
         shapes[:, bed_order],
+        rc,
+        frame_shapes,
+        nb,
     )
 
 
@@ -211,7 +232,11 @@ def check_strung_problem(problem: Any) -> None:
         if given:
             raise InputError(f"{key} is not allowed with a string bed: {why}")
     bed = problem.strings
-    bed_coordinates(bed, problem.impact.position, 0.0, problem.model.mesh.length, bed.head_centre)
+    offset = float(problem.offset)
+    L = problem.model.mesh.length
+    bed_coordinates(bed, problem.impact.position, offset, L, bed.head_centre)
+    if offset != 0.0:
+        _ = problem.model.torsion  # refuses a frame without torsion data
 
 
 def strung_point(
@@ -229,18 +254,11 @@ def strung_point(
 
     Every frame mode of ``model`` is used (rigid modes first).
     """
-    edge, centre = bed.edge, bed.head_centre
     L = model.mesh.length
-    point = bed_coordinates(bed, position, lateral_m, L, centre)
-    fm = model.modes(None)
-    if edge == "point":
-        a_frame = fm.all_shapes.T @ model.fe.point_vector(position * L)
-    else:
-        xy, T = edge_transmission(bed, point[None], refine)
-        R = model.fe.field_matrix(centre * L + xy[:, 0], 0)  # frame deflection at the edge
-        a_frame = (T[0] @ (R @ fm.all_shapes)).ravel()
+    point = bed_coordinates(bed, position, lateral_m, L, bed.head_centre)
+    frame = frame_at_point(model, bed, position, point, refine)
     where = (bed, float(position), float(lateral_m), refine)
-    return _assemble(fm.omega, a_frame, *_bed_modes(bed, point, bed_modes, refine), where)
+    return _assemble(frame, *_bed_modes(bed, point, bed_modes, refine), where)
 
 
 def clamped_point(
@@ -255,4 +273,4 @@ def clamped_point(
     p = np.asarray(point, dtype=float)
     bed_coordinates(bed, bed.head_centre + p[0], p[1], 1.0, bed.head_centre)  # on it
     where = (bed, None, float(p[1]), refine)
-    return _assemble(np.zeros(0), np.zeros(2), *_bed_modes(bed, p, bed_modes, refine), where)
+    return _assemble(None, *_bed_modes(bed, p, bed_modes, refine), where)

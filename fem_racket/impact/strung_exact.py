@@ -12,10 +12,7 @@ with every mode kept. From its roots lambda_j and contact-force residues f_j = (
     flexible f  eta_f = a_f Re sum m f_j e^{lambda_j t} / (lambda_j^2 + omega_f^2)   (and ')
 
 (everything times the speed V). The separation is the first fall of delta (or F) through zero
-(:func:`fem_racket.impact.exact.separation.separation_time`). The general integrator's cubic
-force aliases the jump c V of a heavily damped dashpot at contact on the bed's light,
-high-frequency pseudo-mode and can end the contact at a false zero; this path (and CVODE) does
-not.
+(:func:`fem_racket.impact.exact.separation.separation_time`).
 """
 
 from __future__ import annotations

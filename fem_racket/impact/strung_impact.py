@@ -3,20 +3,16 @@
 The strung racket at the impact point (:mod:`fem_racket.impact.strung`: frame and bed in series,
 one modal structure) goes unchanged through the impact paths: the general integrator or CVODE
 for any ball law (:func:`strung_impact`, with histories), the exact batched engine for the linear
-ball (:func:`strung_engine`, COR and contact time only). From the histories come the bed's and
-the ball's peak deflections and the energy bookkeeping (every coordinate x of the modal structure
-stores ``(x'^2 + omega^2 x^2) / 2``, the bed's coordinates the bed's energy relative to its edge)::
-
-    ball's loss          m_B (V_B0^2 - v_B(t_c)^2) / 2    (= the work of the contact force on it)
-    energy to the racket E_frame(t_c) + E_bed(t_c)
-    lost in the ball     ball's loss - energy to the racket (the law's dissipation)
-    returned by the bed  max_t E_bed(t) - E_bed(t_c)
+ball (:func:`strung_engine`, COR and contact time only); a stretching bed CVODE alone
+(:mod:`fem_racket.impact.strung_stretch`). From the histories come the bed's and the ball's
+peak deflections and the energy bookkeeping (:class:`~fem_racket.impact.strung_result.
+StrungImpact`).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -30,8 +26,10 @@ from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.strung import StrungPoint, kawazoe_ball, strung_point
 from fem_racket.impact.strung_exact import strung_exact_states
+from fem_racket.impact.strung_result import StrungImpact
+from fem_racket.impact.strung_stretch import stretch_energy, stretch_states
 from fem_racket.strings.bed import StringBed
-from fem_racket.validation import check_choice, check_positive, check_range
+from fem_racket.validation import InputError, check_choice, check_positive, check_range
 
 __all__ = ["STRUNG_SOLVERS", "StrungImpact", "simulate_strung", "strung_engine", "strung_impact"]
 
@@ -40,78 +38,6 @@ __all__ = ["STRUNG_SOLVERS", "StrungImpact", "simulate_strung", "strung_engine",
 STRUNG_SOLVERS = ("exact", "general", "cvode")
 #: Output times per contact for the peaks and the energy histories.
 SAMPLES = 801
-
-
-@dataclass(frozen=True, eq=False)
-class StrungImpact:
-    """An impact on the strung racket: results and histories (see the module docstring).
-
-    Attributes
-    ----------
-    cor : float
-        Apparent COR -v_B(t_c)/V_B0.
-    contact_time : float
-        t_c [s].
-    peak_force : float
-        Largest contact force [N].
-    t, ball_deflection, bed_deflection, force : ndarray
-        Times [s], the ball's compression (the law's deflection) [m], the bed's deflection at the
-        point relative to its edge [m] and the contact force [N].
-    ball_loss, racket_energy, bed_energy_left, bed_peak_energy : float
-        Energies [J] of the module docstring.
-    frame_momentum : float
-        Linear momentum of the frame at t_c [kg m/s] (its rigid translation).
-    point : StrungPoint
-        The structure used.
-    law : ContactLaw
-        The ball's law.
-    speed, ball_mass : float
-        V_B0 [m/s] and m_B [kg].
-    solver : str
-        The integrator that ran.
-    coordinates : ndarray, shape (nt, 1 + n)
-        u_B [m] and the structure's coordinates (:attr:`StrungPoint.omega` order) at ``t``.
-    """
-
-    cor: float
-    contact_time: float
-    peak_force: float
-    t: np.ndarray
-    ball_deflection: np.ndarray
-    bed_deflection: np.ndarray
-    force: np.ndarray
-    ball_loss: float
-    racket_energy: float
-    bed_energy_left: float
-    bed_peak_energy: float
-    frame_momentum: float
-    point: StrungPoint
-    law: ContactLaw
-    speed: float
-    ball_mass: float
-    solver: str
-    coordinates: np.ndarray
-
-    def summary(self) -> dict[str, Any]:
-        """The results, the bed and what the run used, JSON-ready, units in the keys."""
-        return {
-            "cor": self.cor,
-            "contact_time_s": self.contact_time,
-            "rebound_speed_m_s": self.cor * self.speed,
-            "peak_force_n": self.peak_force,
-            "position_x_over_l": self.point.position,
-            "speed_m_s": self.speed,
-            "ball_mass_kg": self.ball_mass,
-            "solver": self.solver,
-            **self.law.describe(),
-            **self.point.describe(),
-            "peak_bed_deflection_m": float(np.max(self.bed_deflection)),
-            "peak_ball_deflection_m": float(np.max(self.ball_deflection)),
-            "ball_energy_loss_j": self.ball_loss,
-            "energy_lost_in_ball_j": self.ball_loss - self.racket_energy,
-            "bed_energy_returned_j": self.bed_peak_energy - self.bed_energy_left,
-            "bed_energy_left_j": self.bed_energy_left,
-        }
 
 
 def _energies(point: StrungPoint, x: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -134,12 +60,22 @@ def strung_impact(
 
     ``solver``: ``"exact"`` (the linear ball, every mode:
     :mod:`fem_racket.impact.strung_exact`), ``"general"`` (COR ``tolerance``) or ``"cvode"``
-    (``rtol``, ``atol``, every mode).
+    (``rtol``, ``atol``, every mode); a stretching bed (``strings.stretch``) only ``"cvode"``
+    (:mod:`fem_racket.impact.strung_stretch`, a ball law without a state).
     """
     check_choice("solver", solver, STRUNG_SOLVERS)
     w, a = point.omega, point.a
     z = None
-    if solver == "exact":
+    stretch = point.strings.stretch
+    if stretch and solver != "cvode":
+        raise InputError(
+            f"solver = {solver!r} is not allowed with the strings' stretch: the stretching bed "
+            "is integrated by 'cvode'"
+        )
+    if stretch:
+        t, x, v = stretch_states(point, law, ball_mass, speed, SAMPLES, (rtol, atol))
+        tc = float(t[-1])
+    elif solver == "exact":
         t, x, v = strung_exact_states(point, law, ball_mass, speed, SAMPLES)
         tc = float(t[-1])
     elif solver == "cvode":
@@ -151,7 +87,8 @@ def strung_impact(
         x, v = y[:, :n], y[:, n : 2 * n]
         z = y[:, -1] if law.state == "ode" else None
     else:
-        rec = Receptance(w[2:], a[None, 2:], a[None, :2], np.array([ball_mass]))
+        rc = point.rigid_count
+        rec = Receptance(w[rc:], a[None, rc:], a[None, :rc], np.array([ball_mass]))
         out = solve_general(law, rec, speed, tolerance=tolerance)
         tc = float(out.contact_time[0])
         t = np.linspace(0.0, tc, SAMPLES)
@@ -165,7 +102,7 @@ def strung_impact(
     force = np.asarray(law.force(d, rate, d if z is None else z), dtype=float)
     energy = _energies(point, x[:, 1:], v[:, 1:])
     bed = point.bed
-    e_bed = energy[:, bed].sum(axis=1)
+    e_bed = energy[:, bed].sum(axis=1) + stretch_energy(point, x[:, 1:])
     vb = float(v[-1, 0])
     return StrungImpact(
         cor=-vb / speed,
@@ -176,16 +113,17 @@ def strung_impact(
         bed_deflection=x[:, 1:][:, bed] @ a[bed],
         force=force,
         ball_loss=0.5 * ball_mass * (speed**2 - vb**2),
-        racket_energy=float(energy[-1].sum()),
+        racket_energy=float(energy[-1].sum() + e_bed[-1] - energy[-1, bed].sum()),
         bed_energy_left=float(e_bed[-1]),
         bed_peak_energy=float(np.max(e_bed)),
-        frame_momentum=float(v[-1, 1] / a[0]) if a[0] else math.nan,
+        frame_momentum=float(v[-1, 1] / a[0]) if point.rigid_count else math.nan,
         point=point,
         law=law,
         speed=float(speed),
         ball_mass=float(ball_mass),
         solver=solver,
         coordinates=x,
+        rates=v,
     )
 
 
@@ -251,4 +189,5 @@ def simulate_strung(
     check_positive("speed", speed, "m/s")
     point = strung_point(model, strings, check_range("position", position, 0.0, 1.0), offset)
     ball = kawazoe_ball(ball_mass) if law is None else law
-    return strung_impact(point, ball, ball_mass, speed, solver=solver, **options)
+    out = strung_impact(point, ball, ball_mass, speed, solver=solver, **options)
+    return replace(out, model=model)

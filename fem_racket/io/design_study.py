@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +19,7 @@ from fem_racket.outputs import add_png_provenance, atomic_outputs, check_targets
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.limits import check_sobol_size, check_study_size
 from fem_racket.studies.design.objectives import output_names
+from fem_racket.studies.design.options import ExecutionOptions, SearchOptions
 from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
@@ -25,10 +27,88 @@ from fem_racket.studies.design.sensitivity import SobolIndices, sobol_indices
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.validation import check_choice, work_begins
 
-__all__ = ["METHODS", "history_path", "run_optimization", "run_sensitivity"]
+__all__ = [
+    "METHODS",
+    "OptimizationRun",
+    "OutputOptions",
+    "SensitivityRun",
+    "history_path",
+    "run_optimization",
+    "run_sensitivity",
+]
 
 #: Solvers by name: scipy.optimize's local and global methods, pymoo's NSGA-II.
 METHODS = ("SLSQP", "trust-constr", "differential-evolution", "nsga2")
+
+
+@dataclass(frozen=True)
+class OutputOptions:
+    """Where a study's files go.
+
+    Attributes
+    ----------
+    out : path or None
+        The output (a study folder, or a PNG for the indices); nothing written when None.
+    overwrite : bool
+        Replace what is there.
+    parameters : dict or None
+        The run's settings, kept in the provenance.
+    """
+
+    out: str | os.PathLike | None = None
+    overwrite: bool = False
+    parameters: dict[str, Any] | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class OptimizationRun:
+    """An optimisation study: the problem, how to search, where designs run, its files.
+
+    Attributes
+    ----------
+    problem : DesignProblem
+    search : SearchOptions
+        ``nsga2`` gives a Pareto front of the problem's objectives; the others maximise the
+        first.
+    execution : ExecutionOptions
+    files : OutputOptions
+        With ``out`` the study is resumable from ``<out>.history/``.
+    restart : bool
+        Discard the designs an earlier run left in the history.
+    """
+
+    problem: DesignProblem
+    search: SearchOptions = field(default_factory=SearchOptions)
+    execution: ExecutionOptions = field(default_factory=ExecutionOptions)
+    files: OutputOptions = field(default_factory=OutputOptions)
+    restart: bool = False
+
+
+@dataclass(frozen=True, eq=False)
+class SensitivityRun:
+    """A Sobol sensitivity analysis (:func:`fem_racket.studies.design.sensitivity.sobol_indices`).
+
+    Attributes
+    ----------
+    problem : DesignProblem
+    output : str or None
+        The objective or quantity analysed (the first objective when None).
+    designs : int
+        About this many designs.
+    seed : int
+        Seed of the Sobol sample.
+    execution : ExecutionOptions
+    files : OutputOptions
+        With ``out`` a PNG bar chart there and the indices as JSON beside it (``<out>.json``,
+        with the provenance).
+    """
+
+    problem: DesignProblem
+    output: str | None = None
+    designs: int = 10_000
+    seed: int = 1
+    execution: ExecutionOptions = field(default_factory=ExecutionOptions)
+    files: OutputOptions = field(default_factory=OutputOptions)
 
 
 def history_path(out: str | os.PathLike) -> Path:
@@ -37,72 +117,43 @@ def history_path(out: str | os.PathLike) -> Path:
     return out.with_name(out.name + ".history")
 
 
-def _evaluator(problem, out, restart, backend, workers, scheduler) -> Evaluator:
-    history = None if out is None else history_path(out)
+def _evaluator(problem: DesignProblem, e: ExecutionOptions, history: Path | None, restart: bool):
     return Evaluator(
         problem,
         history=history,
-        backend=backend,
-        workers=workers,
-        scheduler=scheduler,
+        backend=e.backend,
+        workers=e.workers,
+        scheduler=e.scheduler,
         restart=restart,
     )
 
 
-def run_optimization(
-    problem: DesignProblem,
-    *,
-    method: str = "SLSQP",
-    out: str | os.PathLike | None = None,
-    overwrite: bool = False,
-    restart: bool = False,
-    backend: str | None = None,
-    workers: int | None = None,
-    scheduler: str | None = None,
-    maxiter: int = 100,
-    popsize: int = 10,
-    pop_size: int = 50,
-    generations: int = 100,
-    seed: int = 1,
-    progress: bool | None = None,
-    parameters: dict[str, Any] | None = None,
-) -> DesignResult:
-    """Optimise ``problem`` with ``method`` (:data:`METHODS`) and write the study to ``out``.
+def run_optimization(run: OptimizationRun) -> DesignResult:
+    """Optimise ``run.problem`` with its search method (:data:`METHODS`) and write the study.
 
-    ``nsga2`` gives a Pareto front of the problem's objectives; the others maximise the first.
     See :func:`fem_racket.studies.design.solvers.optimize`,
     :func:`fem_racket.studies.design.pareto.pareto_front` and
     :func:`fem_racket.io.design_files.write_study`.
     """
-    check_choice("method", method, METHODS)
-    sizes = {"maxiter": maxiter, "popsize": popsize, "pop_size": pop_size}
-    check_study_size(problem, method, generations=generations, **sizes)
-    if out is not None:
-        check_study_folder(out, overwrite=overwrite)
+    problem, s, files = run.problem, run.search, run.files
+    check_choice("method", s.method, METHODS)
+    sizes = {"maxiter": s.maxiter, "popsize": s.popsize, "pop_size": s.pop_size}
+    check_study_size(problem, s.method, generations=s.generations, **sizes)
+    if files.out is not None:
+        check_study_folder(files.out, overwrite=files.overwrite)
     work_begins()
-    ev = _evaluator(problem, out, restart, backend, workers, scheduler)
+    history = None if files.out is None else history_path(files.out)
+    ev = _evaluator(problem, run.execution, history, run.restart)
+    common = {"evaluator": ev, "seed": s.seed, "progress": run.execution.progress}
     try:
-        if method == "nsga2":
-            result = pareto_front(
-                problem,
-                evaluator=ev,
-                pop_size=pop_size,
-                generations=generations,
-                seed=seed,
-                progress=progress,
-            )
+        if s.method == "nsga2":
+            result = pareto_front(problem, pop_size=s.pop_size, generations=s.generations, **common)
         else:
             result = optimize(
-                problem,
-                method=method,
-                evaluator=ev,
-                maxiter=maxiter,
-                popsize=popsize,
-                seed=seed,
-                progress=progress,
+                problem, method=s.method, maxiter=s.maxiter, popsize=s.popsize, **common
             )
-        if out is not None:
-            write_study(result, out, overwrite=overwrite, parameters=parameters)
+        if files.out is not None:
+            write_study(result, files.out, overwrite=files.overwrite, parameters=files.parameters)
             ev.history.remove()
     except BaseException as exc:
         kept = len(ev.history.rows)
@@ -117,39 +168,34 @@ def run_optimization(
     return result
 
 
-def run_sensitivity(
-    problem: DesignProblem,
-    *,
-    output: str | None = None,
-    designs: int = 10_000,
-    seed: int = 1,
-    out: str | os.PathLike | None = None,
-    overwrite: bool = False,
-    backend: str | None = None,
-    workers: int | None = None,
-    scheduler: str | None = None,
-    progress: bool | None = None,
-    parameters: dict[str, Any] | None = None,
-) -> SobolIndices:
-    """Sobol indices of ``output`` (:func:`fem_racket.studies.design.sensitivity.sobol_indices`);
-    with ``out`` a PNG bar chart there and the indices as JSON beside it (``<out>.json``, with
-    the provenance)."""
+def run_sensitivity(run: SensitivityRun) -> SobolIndices:
+    """Sobol indices of ``run.output`` (:func:`fem_racket.studies.design.sensitivity.
+    sobol_indices`); with an output file a PNG bar chart there and the indices as JSON beside
+    it (``<out>.json``, with the provenance)."""
     from fem_racket.io.design_plots import plot_sobol
 
+    problem, out, files = run.problem, run.files.out, run.files
     names = output_names(problem)
-    check_choice("output", problem.objectives[0] if output is None else output, tuple(names))
-    check_sobol_size(problem, designs)
+    check_choice(
+        "output", problem.objectives[0] if run.output is None else run.output, tuple(names)
+    )
+    check_sobol_size(problem, run.designs)
     if out is not None:
-        check_targets([Path(out), Path(str(out) + ".json")], overwrite=overwrite)
+        check_targets([Path(out), Path(str(out) + ".json")], overwrite=files.overwrite)
     work_begins()
-    ev = Evaluator(problem, backend=backend, workers=workers, scheduler=scheduler)
+    ev = _evaluator(problem, run.execution, None, False)
     s = sobol_indices(
-        problem, output=output, designs=designs, seed=seed, evaluator=ev, progress=progress
+        problem,
+        output=run.output,
+        designs=run.designs,
+        seed=run.seed,
+        evaluator=ev,
+        progress=run.execution.progress,
     )
     if out is not None:  # the chart and its JSON as one set: both or neither
-        meta = provenance(parameters)
+        meta = provenance(files.parameters)
         targets = [Path(out), Path(str(out) + ".json")]
-        with atomic_outputs(targets, overwrite=overwrite) as (png, side):
+        with atomic_outputs(targets, overwrite=files.overwrite) as (png, side):
             plot_sobol(s, png)
             add_png_provenance(png, meta)
             side.write_text(json.dumps({**sobol_json(s), "provenance": meta}, indent=2) + "\n")

@@ -3,15 +3,16 @@
 Three parts in ``impact.pvd`` (ParaView opens it; each step at its physical time [s]):
 
 - ``frame`` (part 0): the beam as a polyline through its nodes, x along the racket, y = 0,
-  z = its deflection w(x, t) x ``scale``; point field ``deflection [m]``;
+  z = its deflection w(x, t) x ``scale``; point field ``deflection [m]`` (and ``twist [rad]``
+  when the ball strikes off the axis);
 - ``ball`` (part 1): a sphere of radius R_B = 0.033 m touching the bed at the impact point at
   t = 0, its centre moving with u_B; point field ``displacement [m]``;
 - ``strings`` (part 2): the bed as a deforming surface (the membrane mesh's triangles on the
   head's ellipse, centred on the frame at the head's centre), z = its deflection: its edge's
-  motion (edge ``"point"``: the frame's deflection at the impact point everywhere; ``"hoop"``:
-  the frame's deflection at each edge point's x, extended statically inside, as the coupling
-  assumes, :mod:`fem_racket.impact.strung`) plus the bed's modes (and its pseudo-mode's static
-  shape); point field ``deflection [m]``.
+  motion (edge ``"point"``: the frame's motion at the impact point everywhere; ``"hoop"``:
+  the frame's deflection and twist y theta at each edge point, extended statically inside, as
+  the coupling assumes, :mod:`fem_racket.impact.strung`) plus the bed's modes (and its
+  pseudo-mode's static shape); point field ``deflection [m]``.
 
 Written as :mod:`fem_racket.io.vtk` writes the frame's series (one ``.vtu`` per step and part,
 XML by VTK, files by Python, the folder all-or-nothing), with a ``provenance.json``.
@@ -33,7 +34,25 @@ from fem_racket.io.vtk_series import BALL_RADIUS, check_scale, sample_steps
 from fem_racket.outputs import atomic_folder, provenance
 from fem_racket.strings.membrane import bed_mesh
 
-__all__ = ["strung_fields", "write_strung_vtk"]
+__all__ = ["frame_twist", "strung_fields", "write_strung_vtk"]
+
+
+def _frame_dofs(result: StrungImpact) -> np.ndarray:
+    """The frame's DOFs at every output time (nt, ndof): bending Hermite DOFs, then (off the
+    axis) torsion DOFs."""
+    p = result.point
+    return result.coordinates[:, 1:][:, ~p.bed] @ p.frame_shapes.T
+
+
+def frame_twist(result: StrungImpact, model: FrameModel) -> np.ndarray | None:
+    """The frame's twist [rad] at its nodes at every output time (nt, nodes); None on the
+    axis, where it is not excited."""
+    q = _frame_dofs(result)
+    nb = result.point.ndof_bending
+    if q.shape[1] == nb:
+        return None
+    x_nodes = np.asarray(model.mesh.points, dtype=float).ravel()
+    return q[:, nb:] @ model.torsion.point_matrix(x_nodes).T
 
 
 def strung_fields(result: StrungImpact, model: FrameModel) -> tuple[np.ndarray, np.ndarray]:
@@ -42,18 +61,21 @@ def strung_fields(result: StrungImpact, model: FrameModel) -> tuple[np.ndarray, 
     p = result.point
     eta = result.coordinates[:, 1:]
     frame = ~p.bed
-    q = eta[:, frame] @ model.modes(None).all_shapes.T  # Hermite DOFs (nt, ndof)
+    q = _frame_dofs(result)
+    nb = p.ndof_bending
     nodes = q[:, model.fe.deflection_dofs]
     L = model.mesh.length
     mesh = bed_mesh(float(p.strings.head_length_m), float(p.strings.head_width_m), p.refine)
-    if p.strings.edge == "point":  # the head ring moves with the impact point
-        edge = q @ model.fe.point_vector(p.position * L)
+    if p.strings.edge == "point":  # the head ring moves with the impact point (and its twist)
+        edge = eta[:, frame] @ p.a[frame]
         full = np.repeat(edge[:, None], mesh.basis.N, axis=1)
-    else:  # each edge point with the frame at its x, extended statically inside
+    else:  # each edge point with the frame at its x (and y theta), extended statically inside
         from scipy.sparse.linalg import splu
 
-        R = model.fe.field_matrix(p.strings.head_centre * L + mesh.edge_points[:, 0], 0)
-        w_e = np.asarray(R @ q.T)  # (n_edge, nt)
+        x_e = p.strings.head_centre * L + mesh.edge_points[:, 0]
+        w_e = np.asarray(model.fe.field_matrix(x_e, 0) @ q[:, :nb].T)  # (n_edge, nt)
+        if q.shape[1] > nb:
+            w_e = w_e + mesh.edge_points[:, 1:2] * (model.torsion.point_matrix(x_e) @ q[:, nb:].T)
         r = float(p.strings.n_x / p.strings.n_y)
         K_ii = (r * mesh.Kxx + mesh.Kyy).tocsc()
         full = np.zeros((q.shape[0], mesh.basis.N))
@@ -96,6 +118,7 @@ def write_strung_vtk(
     scale = check_scale(scale)
     steps = sample_steps(result.t.size, frames)
     nodes, bed = strung_fields(result, model)
+    twist = frame_twist(result, model)
     p = result.point
     L = model.mesh.length
     mesh = bed_mesh(float(p.strings.head_length_m), float(p.strings.head_width_m), p.refine)
@@ -117,6 +140,8 @@ def write_strung_vtk(
                 np.column_stack([x_nodes, np.zeros_like(x_nodes), scale * nodes[i]]),
             )  # fmt: skip
             frame.point_data["deflection [m]"] = nodes[i]
+            if twist is not None:
+                frame.point_data["twist [rad]"] = twist[i]
             surf = pv.UnstructuredGrid(
                 bed_cells, np.full(len(tri), pv.CellType.TRIANGLE),
                 np.column_stack([bed_xy, scale * bed[i]]),

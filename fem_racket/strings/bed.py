@@ -76,6 +76,9 @@ class StringBed:
         off-axis work's head outline; an assumption).
     edge : {"point", "hoop"}
         How the head ring follows the frame (:data:`EDGES`).
+    stretch : bool
+        The strings stretch as the bed deflects, their tension rising in the dynamics
+        (:mod:`fem_racket.impact.strung_stretch`; integrated by CVODE); False: the linear bed.
     """
 
     tension_n: float = 246.0
@@ -87,6 +90,7 @@ class StringBed:
     load_radius_m: float = 0.02
     head_centre: float = 0.74
     edge: str = "point"
+    stretch: bool = False
 
     def __post_init__(self) -> None:
         check_range("string tension", self.tension_n, 1.0, 1e16, unit="N")
@@ -99,6 +103,10 @@ class StringBed:
         check_positive("load radius", self.load_radius_m, "m")
         check_range("head centre", self.head_centre, 0.0, 1.0, unit="x/L")
         check_choice("edge", self.edge, EDGES)
+        if not isinstance(self.stretch, bool):
+            raise InputError(
+                f"stretch = {show(self.stretch)} is not allowed: must be True or False"
+            )
         half = 0.5 * min(self.head_length_m, self.head_width_m)
         if self.load_radius_m >= 0.5 * half:
             raise InputError(
@@ -148,6 +156,7 @@ class StringBed:
             "load_radius_m": self.load_radius_m,
             "head_centre_x_over_l": self.head_centre,
             "stringbed_edge": self.edge,
+            "string_stretch": self.stretch,
             "tension_per_width_x_n_m": self.n_x,
             "tension_per_width_y_n_m": self.n_y,
             "mass_per_area_kg_m2": self.rho_s,

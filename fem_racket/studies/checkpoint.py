@@ -38,7 +38,15 @@ try:
 except ImportError:  # pragma: no cover - not POSIX: no lock
     fcntl = None  # type: ignore[assignment]
 
-__all__ = ["Checkpoint", "acquire_lock", "checkpoint_path", "checksum", "write_atomic"]
+__all__ = [
+    "Checkpoint",
+    "acquire_lock",
+    "checkpoint_path",
+    "checksum",
+    "make_folder",
+    "stored_digest",
+    "write_atomic",
+]
 
 log = logging.getLogger(__name__)
 
@@ -79,6 +87,38 @@ def acquire_lock(folder: Path, busy: str) -> Any:
     fh.write(f"{os.getpid()}\n")
     fh.flush()
     return fh
+
+
+def make_folder(folder: Path, refusal: str) -> None:
+    """Make ``folder`` and its parents, or refuse in one line: ``refusal`` followed by the
+    system's reason in parentheses."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"{refusal} ({exc.strerror})") from None
+
+
+def stored_digest(folder: Path, record: Path, restart: bool, kind: str, piece: str) -> str | None:
+    """Clear ``folder`` of stray temporaries (of everything but its lock with ``restart``) and
+    read the digest kept in its ``record`` file: None when there is none, or when the file is
+    damaged (a warning: the ``kind`` file is rewritten, every ``piece`` checked on its own)."""
+    for entry in folder.iterdir():
+        if entry.name.startswith(".tmp-") or (restart and entry.name != LOCK_NAME):
+            (shutil.rmtree if entry.is_dir() else Path.unlink)(entry)
+    if not record.exists():
+        return None
+    try:
+        stored = json.loads(record.read_text())["digest"]
+        if not isinstance(stored, str):
+            raise TypeError("digest is not a string")
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        log.warning(
+            f"{kind} file %s is damaged (%s): rewritten; every {piece} is checked on its own",
+            show_path(record),
+            " ".join(str(exc).split())[:80] or type(exc).__name__,
+        )
+        return None
+    return stored
 
 
 def write_atomic(path: Path, data: bytes) -> None:
@@ -138,13 +178,11 @@ class Checkpoint:
         self.n_cases, self.n_values = n_cases, n_values
         self.cases = 0  # finished cases stored
         self._lock: Any = None
-        try:
-            self.folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise InputError(
-                f"out = {show_path(self.output)} is not allowed: its checkpoint folder "
-                f"{show_path(self.folder)} cannot be made ({exc.strerror})"
-            ) from None
+        make_folder(
+            self.folder,
+            f"out = {show_path(self.output)} is not allowed: its checkpoint folder "
+            f"{show_path(self.folder)} cannot be made",
+        )
         self._lock = self._acquire()
         try:
             self._prepare(description, restart)
@@ -163,24 +201,7 @@ class Checkpoint:
 
     def _prepare(self, description: dict[str, Any], restart: bool) -> None:
         spec_file = self.folder / SPEC_NAME
-        for entry in self.folder.iterdir():
-            stale = entry.name.startswith(".tmp-")
-            if stale or (restart and entry.name != LOCK_NAME):
-                (shutil.rmtree if entry.is_dir() else Path.unlink)(entry)
-        stored = None
-        if spec_file.exists():
-            try:
-                stored = json.loads(spec_file.read_text())["digest"]
-                if not isinstance(stored, str):
-                    raise TypeError("digest is not a string")
-            except (OSError, ValueError, KeyError, TypeError) as exc:
-                log.warning(
-                    "checkpoint file %s is damaged (%s): rewritten; every chunk is checked "
-                    "on its own",
-                    show_path(spec_file),
-                    " ".join(str(exc).split())[:80] or type(exc).__name__,
-                )
-                stored = None
+        stored = stored_digest(self.folder, spec_file, restart, "checkpoint", "chunk")
         if stored is not None and stored != self.digest:
             raise InputError(
                 f"out = {show_path(self.output)} is not allowed: its checkpoint "

@@ -78,6 +78,18 @@ ELEMENTS_ZERO = "elements = 0 is not allowed: must be an integer from 2 to 50000
 A_FILE = {"afile": "not a folder"}  # a regular file where an output folder should go
 
 
+def unwritable(case_id: str, argv: list[str], option: str, path: str) -> Case:
+    """``--option path`` under the regular file 'afile': refused before anything runs."""
+    says = (f"{option} = '{path}'", "cannot be created: 'afile' is a file")
+    return Case(case_id, [*argv, f"--{option}", path], says, A_FILE)
+
+
+def existing(case_id: str, argv: list[str], shown: str, files: dict[str, str]) -> Case:
+    """An output that is there already (``files``), named as ``shown``: refused without
+    --overwrite."""
+    return Case(case_id, argv, (shown, "already exists", "--overwrite"), files)
+
+
 def toml(text: str, *argv: str, command: str = "simulate") -> tuple[list[str], dict[str, str]]:
     """argv running ``command`` on run.toml holding ``text``, and the files to create."""
     return [command, "--config", "run.toml", *argv], {"run.toml": text}
@@ -252,18 +264,8 @@ SWEEP_CASES = [
     ),
     Case("sweep-workers-zero", ["sweep", "--quiet", "--workers", "0"], ("workers = 0", ">= 1")),
     Case("sweep-modes-zero", sweep("--modes", "0"), ("modes = 0", ">= 1")),
-    Case(
-        "sweep-out-exists",
-        sweep("--out", "old.nc"),
-        ("out = 'old.nc'", "already exists", "--overwrite"),
-        {"old.nc": "mine"},
-    ),
-    Case(
-        "sweep-out-unwritable",
-        sweep("--out", "afile/s.nc"),
-        ("out = 'afile/s.nc'", "cannot be created: 'afile' is a file"),
-        A_FILE,
-    ),
+    existing("sweep-out-exists", sweep("--out", "old.nc"), "out = 'old.nc'", {"old.nc": "mine"}),
+    unwritable("sweep-out-unwritable", sweep(), "out", "afile/s.nc"),
     Case(
         "sweep-ei1-with-run-file-segments",
         ["sweep", "--serial", "--ei1", "100", "--config", "run.toml"],
@@ -313,24 +315,15 @@ VTK_CASES = [
     Case("vtk-negative-scale", vtk("--scale", "-1"), ("scale = -1", "(0, 1e+06]")),
     Case("vtk-huge-scale", vtk("--scale", "1e300"), ("scale = 1e+300", "(0, 1e+06]")),
     Case("vtk-frames-one", vtk("--frames", "1"), ("frames = 1", ">= 2")),
+    Case("vtk-frames-too-many", vtk("--frames", "100000"), ("frames = 100000", "406 output")),
     Case("vtk-subdivide-zero", vtk("--subdivide", "0"), ("subdivide = 0", ">= 1")),
     Case("vtk-output-step-zero", vtk("--output-step", "0"), ("output_step = 0", "> 0")),
     Case("vtk-speed-zero", vtk("--speed", "0"), ("speed = 0", "> 0")),
-    Case(
-        "vtk-out-unwritable",
-        vtk("--out", "afile/vtk"),
-        ("out = 'afile/vtk'", "cannot be created: 'afile' is a file"),
-        A_FILE,
-    ),
+    unwritable("vtk-out-unwritable", vtk(), "out", "afile/vtk"),
     Case(
         "vtk-out-is-a-file", vtk("--out", "afile"), ("out = 'afile'", "is a file", "folder"), A_FILE
     ),
-    Case(
-        "vtk-out-exists",
-        vtk("--out", "old"),
-        ("out = 'old'", "already exists", "--overwrite"),
-        {"old/provenance.json": "{}"},
-    ),
+    existing("vtk-out-exists", vtk("--out", "old"), "out = 'old'", {"old/provenance.json": "{}"}),
     Case(
         "vtk-overwrite-foreign-folder",
         vtk("--out", "mine", "--overwrite"),
@@ -346,17 +339,9 @@ VTK_CASES = [
     Case("anim-fps-nan", anim("--fps", "nan"), ("fps = nan", "finite")),
     Case("anim-size-not-16", anim("--size", "170x160"), ("size = (170, 160)", "multiple of 16")),
     Case("anim-size-form", anim("--size", "big"), ("--size", "WIDTHxHEIGHT")),
-    Case(
-        "anim-out-unwritable",
-        anim("--out", "afile/a.gif"),
-        ("out = 'afile/a.gif'", "cannot be created: 'afile' is a file"),
-        A_FILE,
-    ),
-    Case(
-        "anim-sidecar-exists",
-        anim("--out", "a.gif"),
-        ("out = 'a.gif.json'", "already exists", "--overwrite"),
-        {"a.gif.json": "{}"},
+    unwritable("anim-out-unwritable", anim(), "out", "afile/a.gif"),
+    existing(
+        "anim-sidecar-exists", anim("--out", "a.gif"), "out = 'a.gif.json'", {"a.gif.json": "{}"}
     ),
 ]
 
@@ -389,18 +374,8 @@ REFINE_CASES = [
     Case("refine-grading-below-one", refine("--grading", "0.5"), ("grading = 0.5", ">= 1")),
     Case("refine-speed-negative", refine("--speed", "-20"), ("speed = -20", "> 0")),
     Case("refine-ei1-nan", refine("--ei1", "nan"), ("ei1 = nan", "finite")),
-    Case(
-        "refine-csv-exists",
-        refine("--csv", "r.csv"),
-        ("csv = 'r.csv'", "already exists", "--overwrite"),
-        {"r.csv": "mine"},
-    ),
-    Case(
-        "refine-plot-unwritable",
-        refine("--plot", "afile/r.png"),
-        ("plot = 'afile/r.png'", "cannot be created: 'afile' is a file"),
-        A_FILE,
-    ),
+    existing("refine-csv-exists", refine("--csv", "r.csv"), "csv = 'r.csv'", {"r.csv": "mine"}),
+    unwritable("refine-plot-unwritable", refine(), "plot", "afile/r.png"),
 ]
 
 REPRODUCE_CASES = [
@@ -410,16 +385,11 @@ REPRODUCE_CASES = [
         ("out = 'afile/paper/", "cannot be created: 'afile' is a file"),
         A_FILE,
     ),
-    Case(
-        "reproduce-report-unwritable",
-        repro("--report", "afile/R.md"),
-        ("report = 'afile/R.md'", "cannot be created: 'afile' is a file"),
-        A_FILE,
-    ),
-    Case(
+    unwritable("reproduce-report-unwritable", repro(), "report", "afile/R.md"),
+    existing(
         "reproduce-report-exists",
         repro(),
-        ("report = 'REPRODUCTION.md'", "already exists", "--overwrite"),
+        "report = 'REPRODUCTION.md'",
         {"REPRODUCTION.md": "mine"},
     ),
 ]
@@ -462,6 +432,17 @@ LEAD_CASES = [
         ("swing-weight = 290..290", "can reach"),
     ),
     Case("customise-no-target", ["customise"], ("targets = none", "--swing-weight")),
+    Case("customise-mass-order", ["customise", "--mass", "0.4:0.3"], ("need 0 < LOW <= HIGH",)),
+    Case(
+        "customise-unknown-place",
+        ["customise", "--mass", "0.4", "--places", "13"],
+        ("place = '13' is not allowed",),
+    ),
+    Case(
+        "customise-twist-unreachable",
+        ["customise", "--twist-weight", "15", "--places", "3/9"],
+        ("twist-weight = 15..15 kg cm^2", "can reach"),
+    ),
     Case("closest-no-file", ["closest", "none.csv", "--mass", "0.3"], ("none.csv", "no such file")),
     Case("compare-one", ["compare", "standard"], ("need at least 2",)),
     Case("compare-bad-suffix", ["compare", "standard", "rigid", "--out", "c.txt"], ("c.txt",)),
@@ -525,18 +506,8 @@ DESIGN_CASES = [
 ]
 
 OUTPUT_CASES = [
-    Case(
-        "out-under-a-regular-file",
-        sim("--out", "afile/result.json"),
-        ("out = 'afile/result.json'", "cannot be created: 'afile' is a file"),
-        {"afile": "not a folder"},
-    ),
-    Case(
-        "out-exists",
-        sim("--out", "old.json"),
-        ("out = 'old.json'", "already exists", "--overwrite"),
-        {"old.json": "{}"},
-    ),
+    unwritable("out-under-a-regular-file", sim(), "out", "afile/result.json"),
+    existing("out-exists", sim("--out", "old.json"), "out = 'old.json'", {"old.json": "{}"}),
     Case(
         "out-folder-not-made-when-the-run-fails",  # the check passes, the impact fails later
         sim("--out", "new/deeper/r.json", "--t-max", "1e-4"),
@@ -544,11 +515,8 @@ OUTPUT_CASES = [
     ),
     Case("out-is-a-folder", sim("--out", ".", "--overwrite"), ("out = '.'", "must be a file")),
     Case("out-bad-suffix", sim("--out", "r.txt"), ("out = 'r.txt'", ".json or .csv")),
-    Case(
-        "out-csv-sidecar-exists",
-        sim("--out", "r.csv"),
-        ("out = 'r.csv.json'", "already exists", "--overwrite"),
-        {"r.csv.json": "{}"},
+    existing(
+        "out-csv-sidecar-exists", sim("--out", "r.csv"), "out = 'r.csv.json'", {"r.csv.json": "{}"}
     ),
     Case(
         "config-example-out-exists",
@@ -758,6 +726,33 @@ TOML_CASES = [
         "toml-refine-elements-not-array",
         toml("[refine]\nelements = 20\n", command="refine"),
         ("refine.elements = 20", "must be an array"),
+    ),
+    *(
+        T(f"toml-lead-{k}", toml(f"[frame]\nlead = {lead}\n", command="modes"), (says,))
+        for k, (lead, says) in enumerate(
+            [
+                ('[{ place = "3/9" }]', "frame.lead[0] is missing mass_g"),
+                (
+                    '[{ place = "3/9", mass_g = -1 }]',
+                    "mass_g = -1.0 is not allowed: must be >= 0 g",
+                ),
+                ('[{ place = "3/9", mass = 1 }]', "did you mean 'mass_g'"),
+                ("[]", "frame.lead is not allowed: must be a non-empty array"),
+            ]
+        )
+    ),
+    *(  # a mistyped table: the closest name, and the command whose table it is
+        Case(
+            f"toml-table-{table}",
+            ["config", "--check", "run.toml"],
+            (f"fem-racket config: error: run.toml: {table} is not a known key: {hint}",),
+            {"run.toml": f"[{table}]\nseed = 2\n"},
+        )
+        for table, hint in [
+            ("export-vtk", "did you mean 'vtk'? (the table of fem-racket export-vtk)"),
+            ("optimize", "did you mean 'design'? (the table of fem-racket optimize)"),
+            ("simulat", "did you mean 'simulate'?"),
+        ]
     ),
     T(
         "toml-reproduce-quick-not-bool",

@@ -77,19 +77,3 @@ def test_map_with_lead_at_the_tip_moves_the_best_point_tipward(capsys, tmp_path)
 def test_bad_lead_is_one_line(capsys, args, says):
     code, _, err = run(capsys, "modes", *args)
     assert code == 2 and says in err and len(err.splitlines()) == 1
-
-
-@pytest.mark.parametrize(
-    ("lead", "says"),
-    [
-        ('[{ place = "3/9" }]', "missing mass_g"),
-        ('[{ place = "3/9", mass_g = -1 }]', "must be >= 0 g"),
-        ('[{ place = "3/9", mass = 1 }]', "did you mean 'mass_g'"),
-        ("[]", "non-empty array"),
-    ],
-)
-def test_bad_run_file_lead(capsys, tmp_path, lead, says):
-    toml = tmp_path / "run.toml"
-    toml.write_text(f"[frame]\nlead = {lead}\n")
-    code, _, err = run(capsys, "modes", "--config", toml)
-    assert code == 2 and says in err, err

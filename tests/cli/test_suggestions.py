@@ -1,5 +1,5 @@
-"""A mistyped option or run-file table gets one line with the closest name and the command's own
-help; an old spelling names what replaced it."""
+"""A mistyped option gets one line with the closest name and the command's own help; an old
+spelling names what replaced it (a mistyped run-file table: tests/cli/test_bad_input.py)."""
 
 import pytest
 
@@ -43,22 +43,6 @@ from tests.clirun import run
 def test_a_mistyped_option_is_refused_with_a_suggestion(capsys, argv, line):
     code, out, err = run(capsys, *argv)
     assert (code, out, err) == (2, "", line + "\n")
-
-
-@pytest.mark.parametrize(
-    ("table", "hint"),
-    [
-        ("export-vtk", "did you mean 'vtk'? (the table of fem-racket export-vtk)"),
-        ("optimize", "did you mean 'design'? (the table of fem-racket optimize)"),
-        ("simulat", "did you mean 'simulate'?"),
-    ],
-)
-def test_a_mistyped_run_file_table_gets_a_did_you_mean(capsys, tmp_path, table, hint):
-    path = tmp_path / "run.toml"
-    path.write_text(f"[{table}]\nseed = 2\n")
-    code, out, err = run(capsys, "config", "--check", path)
-    assert code == 2 and out == ""
-    assert err == f"fem-racket config: error: {path}: {table} is not a known key: {hint}\n"
 
 
 def test_calibrate_takes_a_run_file(capsys, tmp_path):

@@ -175,7 +175,6 @@ def test_impact_problem_with_strings(standard_model):
     bad = [
         ({"kcb": 3e4}, "kcb is not allowed with a string bed"),
         ({"solver": "bdf"}, "solver = 'bdf' is not allowed with a string bed"),
-        ({"solver": "general"}, "'general' is not allowed with a string bed and the linear"),
         ({"solver": "exact", "modes": 10}, "modes = 10 is not allowed with a string bed"),
         ({"position": 0.3}, "must lie on the head"),
     ]

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from fem_racket import InputError, render_animation, simulate
+from fem_racket.io.animate import AnimationOptions
 
 SMALL = (320, 160)  # pixels; small images keep the tests fast
 
@@ -22,7 +23,9 @@ def _gif_frames(path):
 
 
 def test_gif_frames_are_drawn_and_move(result, tmp_path):
-    path = render_animation(result, tmp_path / "impact.gif", frames=6, size=SMALL, field="moment")
+    path = render_animation(
+        result, tmp_path / "impact.gif", AnimationOptions(frames=6, size=SMALL, field="moment")
+    )
     frames = _gif_frames(path)
     assert frames.shape == (6, SMALL[1], SMALL[0], 3)
     for f in frames:
@@ -41,7 +44,9 @@ def test_gif_frames_are_drawn_and_move(result, tmp_path):
 
 
 def test_mp4_has_every_frame(result, tmp_path):
-    path = render_animation(result, tmp_path / "impact.mp4", frames=5, fps=10, size=SMALL)
+    path = render_animation(
+        result, tmp_path / "impact.mp4", AnimationOptions(frames=5, fps=10, size=SMALL)
+    )
     # ffmpeg decodes the whole stream (its reading generators leak pipes, so not those).
     n_frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(path))
     assert n_frames == 5
@@ -63,7 +68,7 @@ def test_mp4_has_every_frame(result, tmp_path):
 def test_bad_input_writes_nothing(result, tmp_path, kwargs, match):
     path = tmp_path / kwargs.pop("path", "a.gif")
     with pytest.raises(InputError, match=match):
-        render_animation(result, path, **kwargs)
+        render_animation(result, path, AnimationOptions(**kwargs))
     assert list(tmp_path.iterdir()) == []
 
 
@@ -71,9 +76,9 @@ def test_existing_file_is_kept_without_overwrite(result, tmp_path):
     path = tmp_path / "a.gif"
     path.write_bytes(b"old")
     with pytest.raises(InputError, match="already exists"):
-        render_animation(result, path, frames=2, size=SMALL)
+        render_animation(result, path, AnimationOptions(frames=2, size=SMALL))
     assert path.read_bytes() == b"old"
-    render_animation(result, path, frames=2, size=SMALL, overwrite=True)
+    render_animation(result, path, AnimationOptions(frames=2, size=SMALL), overwrite=True)
     assert len(_gif_frames(path)) == 2
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.gif", "a.gif.json"]
 
@@ -93,3 +98,42 @@ def test_bench_script_runs_small(capsys):
     ]
     assert "velocity [m_s]" in rows[1]["note"]  # the renaming that ruled .vtkhdf out
     assert "wall [s]" in capsys.readouterr().out
+
+
+def test_strung_animation_draws_the_bed_beside_the_frame(standard_model, tmp_path):
+    # issue 25 item 6: with a string bed the image is split, the frame's side view on the left
+    # and the bed's surface on the right; both halves are drawn and the bed moves (its right
+    # half changes between frames while the ball pushes it in).
+    from fem_racket.impact.strung_impact import simulate_strung
+    from fem_racket.io.animate_scene import SIDE_SHARE
+    from fem_racket.strings.bed import StringBed
+
+    strung = simulate_strung(standard_model, StringBed(), position=0.76, speed=30.0)
+    size = (480, 208)
+    with pytest.raises(InputError, match="model is required"):
+        render_animation(strung, tmp_path / "x.gif", AnimationOptions(frames=2, size=size))
+    path = render_animation(
+        strung, tmp_path / "bed.gif", AnimationOptions(frames=5, size=size), model=standard_model
+    )
+    frames = _gif_frames(path)
+    assert frames.shape == (5, size[1], size[0], 3)
+    cut = int(SIDE_SHARE * size[0])
+    for f in frames:
+        for half in (f[:, :cut], f[:, cut:]):
+            assert len(np.unique(half.reshape(-1, 3), axis=0)) > 20
+    # the bed's half changes from the first image to the middle one (the bed deflects)
+    right = frames[:, 40:-40, cut:]
+    assert np.any(right[0] != right[2], axis=-1).mean() > 0.02
+    meta = json.loads((tmp_path / "bed.gif.json").read_text())
+    assert meta["parameters"]["stringbed_stiffness_n_m"] == strung.point.bed_stiffness
+    assert meta["parameters"]["frames"] == 5
+
+
+def test_animate_cli_with_strings(capsys, tmp_path):
+    from tests.clirun import run
+
+    out = tmp_path / "s.gif"
+    code, text, err = run(capsys, "animate", "--string-tension", "240", "--out", out,
+                          "--frames", "3", "--size", "320x160", "--quiet")  # fmt: skip
+    assert code == 0, err
+    assert len(_gif_frames(out)) == 3

@@ -7,7 +7,7 @@ import pytest
 
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.law_impact import solve_law_impact
+from fem_racket.impact.law_impact import LawOptions, solve_law_impact
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.studies.sweep import sweep
@@ -161,9 +161,8 @@ def test_a_swinging_racket_under_a_law_matches_cvode_from_the_swing(model10):
                 p,
                 0.057,
                 20.0,
-                solver="cvode",
                 frame_velocity=swing.cg_motion(model10.props.cg),
-                output_step=None,
+                options=LawOptions("cvode", output_step=None),
             )
             v_out = -float(lab.ball_velocity[-1])
             case = ds.sel(position=p, racket_speed=v)
@@ -174,7 +173,12 @@ def test_a_swinging_racket_under_a_law_matches_cvode_from_the_swing(model10):
             assert float(case.contact_time_s) == pytest.approx(lab.t[-1], rel=1e-5)
             # the identity, CVODE both ways (its tolerances 1e-10/1e-12: agreement to ~1e-9)
             still = solve_law_impact(
-                KAWAZOE, model10, p, 0.057, 20.0 + v_r, solver="cvode", output_step=None
+                KAWAZOE,
+                model10,
+                p,
+                0.057,
+                20.0 + v_r,
+                options=LawOptions("cvode", output_step=None),
             )
             e_still = -float(still.ball_velocity[-1]) / (20.0 + v_r)
             assert ball_speed_out(e_still, 20.0, v_r) == pytest.approx(v_out, abs=1e-8)

@@ -7,16 +7,24 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_config_option
-from fem_racket.cli.options.design import add_design_options, problem_from_args
-from fem_racket.cli.options.drawing import add_quiet_option
-from fem_racket.cli.options.execution import add_run_options, run_options
+from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
+from fem_racket.cli.options.execution import execution_from_args
+from fem_racket.cli.options.lists import add_options
 from fem_racket.cli.options.output import print_written_folder
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.extras import require
 
 #: Where the study goes unless --out is given.
 DEFAULT_OUTPUT = "output/design"
+
+#: (name, default, metavar, help) of the search budget's options.
+BUDGET = (
+    ("maxiter", 100, None, "iterations (local) or generations (differential evolution) "
+     "(default 100)"),
+    ("popsize", 10, None, "differential evolution: population per variable (default 10)"),
+    ("pop_size", 50, None, "nsga2: population (default 50)"),
+    ("generations", 100, None, "nsga2: generations (default 100)"),
+)  # fmt: skip
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -34,57 +42,44 @@ def register(sub: argparse._SubParsersAction) -> None:
         "differential-evolution (global, then SLSQP), nsga2 (Pareto front of the "
         "objectives) (default SLSQP)",
     )
-    s.add_argument(
-        "--maxiter",
-        type=int,
-        default=100,
-        help="iterations (local) or generations (differential evolution) (default 100)",
-    )
-    s.add_argument(
-        "--popsize",
-        type=int,
-        default=10,
-        help="differential evolution: population per variable (default 10)",
-    )
-    s.add_argument("--pop-size", type=int, default=50, help="nsga2: population (default 50)")
-    s.add_argument("--generations", type=int, default=100, help="nsga2: generations (default 100)")
-    add_run_options(p)
-    g = p.add_argument_group("output")
-    g.add_argument(
-        "--out",
-        default=DEFAULT_OUTPUT,
-        metavar="DIR",
-        help="output folder: optimum.vtu, start.vtu, result.json, history.nc, PNGs "
+    add_options(s, BUDGET, type=int)
+    out = {
+        "default": DEFAULT_OUTPUT,
+        "metavar": "DIR",
+        "help": "output folder: optimum.vtu, start.vtu, result.json, history.nc, PNGs "
         f"(default {DEFAULT_OUTPUT}, replacing the study an earlier run wrote there); designs "
         "are kept in DIR.history/ until it is written, so a rerun resumes",
-    )
-    g.add_argument("--overwrite", action="store_true", help="replace the output folder")
-    g.add_argument("--restart", action="store_true", help="discard DIR.history/ and start afresh")
-    add_quiet_option(g)
-    p.add_argument("--json", action="store_true", help="print result.json's summary as JSON")
-    add_config_option(p, private=("out",))
+    }
+    help_of = {
+        "overwrite": "replace the output folder",
+        "restart": "discard DIR.history/ and start afresh",
+        "json": "print result.json's summary as JSON",
+    }
+    add_study_tail(p, out, help_of)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the study and print its summary."""
-    from fem_racket.cli.common import print_json
-    from fem_racket.io.design_study import run_optimization
+    from fem_racket.cli.common import print_json, run_parameters
+    from fem_racket.io.design_study import OptimizationRun, OutputOptions, run_optimization
+    from fem_racket.studies.design.options import SearchOptions
 
     if args.method == "nsga2":
         require("pymoo", "fem-racket optimize --method nsga2")
     problem = problem_from_args(args)
-    r = run_optimization(
-        problem,
-        method=args.method,
-        out=args.out,
-        overwrite=replace_own(args, args.out == DEFAULT_OUTPUT, [args.out]),
-        restart=args.restart,
-        maxiter=args.maxiter,
-        popsize=args.popsize,
-        pop_size=args.pop_size,
+    search = SearchOptions(
+        **{k: getattr(args, k) for k in ("method", "maxiter", "popsize", "pop_size")},
         generations=args.generations,
-        **run_options(args),
+        seed=args.seed,
+    )
+    files = OutputOptions(
+        args.out,
+        replace_own(args, args.out == DEFAULT_OUTPUT, [args.out]),
+        run_parameters(args),
+    )
+    r = run_optimization(
+        OptimizationRun(problem, search, execution_from_args(args), files, args.restart)
     )
     summary = {
         "objective_name": problem.objectives[0],

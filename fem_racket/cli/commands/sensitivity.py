@@ -4,10 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_config_option
-from fem_racket.cli.options.design import add_design_options, problem_from_args
-from fem_racket.cli.options.drawing import add_quiet_option
-from fem_racket.cli.options.execution import add_run_options, run_options
+from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
+from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.extras import require
 
 
@@ -27,35 +25,37 @@ def register(sub: argparse._SubParsersAction) -> None:
         default=10_000,
         help="about this many designs, N (D + 2) with N a power of two (default 10000)",
     )
-    add_run_options(p)
-    g = p.add_argument_group("output")
-    g.add_argument(
-        "--out",
-        default=None,
-        metavar="PNG",
-        help="PNG file: bar chart of the indices, PNG.json beside it (default: print only)",
-    )
-    g.add_argument("--overwrite", action="store_true", help="replace the output files")
-    add_quiet_option(g)
-    p.add_argument("--json", action="store_true", help="print the indices as JSON")
-    add_config_option(p, private=("out",))
+    out = {
+        "default": None,
+        "metavar": "PNG",
+        "help": "PNG file: bar chart of the indices, PNG.json beside it (default: print only)",
+    }
+    help_of = {"overwrite": "replace the output files", "json": "print the indices as JSON"}
+    add_study_tail(p, out, help_of)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the indices."""
-    from fem_racket.cli.common import print_json, print_written
-    from fem_racket.io.design_study import run_sensitivity, sobol_json
+    from fem_racket.cli.common import print_json, print_written, run_parameters
+    from fem_racket.io.design_study import (
+        OutputOptions,
+        SensitivityRun,
+        run_sensitivity,
+        sobol_json,
+    )
 
     require("SALib", "fem-racket sensitivity")
-    s = run_sensitivity(
+    files = OutputOptions(args.out, args.overwrite, run_parameters(args))
+    run = SensitivityRun(
         problem_from_args(args),
-        output=args.output,
-        designs=args.designs,
-        out=args.out,
-        overwrite=args.overwrite,
-        **run_options(args),
+        args.output,
+        args.designs,
+        args.seed,
+        execution_from_args(args),
+        files,
     )
+    s = run_sensitivity(run)
     if args.json:
         print_json(sobol_json(s))
         return 0

@@ -42,6 +42,7 @@ from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_a
 from fem_racket.cli.options.output import print_written, write_result_files
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
+from fem_racket.cli.options.strings_oblique import run_strung_oblique
 from fem_racket.contact.presets import FILE_KEYS
 from fem_racket.frame.hand import Hand
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
@@ -236,8 +237,8 @@ def run(args: argparse.Namespace) -> int:
     files = _check_out(args) if args.out else []
     incidence, strings = incidence_from_args(args), strings_from_args(args)
     if incidence is not None:  # an oblique impact (fem_racket.cli.options.oblique)
-        if strings is not None:
-            raise InputError("a string bed is not allowed with an oblique impact: give one")
+        if strings is not None:  # on the bed (fem_racket.cli.options.strings_oblique)
+            return run_strung_oblique(args, strings, incidence, hand, build_model(args), files)
         return run_oblique(args, incidence, hand, files)
     if strings is not None:
         if hand is not None:

@@ -106,6 +106,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "earlier run wrote there)",
     )
     _add_common(a, scale=10.0, frames=100)
+    add_strings_options(a)
     a.add_argument(
         "--fps",
         type=float,
@@ -213,20 +214,30 @@ def _export_strung(args: argparse.Namespace, strings, overwrite: bool) -> int:
 
 
 def run_animate(args: argparse.Namespace) -> int:
-    """Simulate and render the animation."""
-    from fem_racket.io.animate import animation_targets, render_animation
+    """Simulate and render the animation (with a string bed: the bed beside the frame)."""
+    from fem_racket.io.animate import AnimationOptions, animation_targets, render_animation
 
     overwrite = _check_early(args)
-    result = _simulate(args)
-    path = render_animation(
-        result,
-        args.out,
+    options = AnimationOptions(
         field=args.field,
         frames=args.frames,
         fps=args.fps,
         scale=args.scale,
         subdivide=args.subdivide,
         size=args.size,
+    )
+    strings = strings_from_args(args)
+    model = None
+    if strings is None:
+        result = _simulate(args)
+    else:
+        model = build_model(args)
+        result = strung_from_args(args, strings, model)
+    path = render_animation(
+        result,
+        args.out,
+        options,
+        model=model,
         overwrite=overwrite,
         parameters=run_parameters(args),
         progress=progress_of(args),

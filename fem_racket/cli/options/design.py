@@ -7,17 +7,21 @@ option groups: :mod:`.variables`, :mod:`.zones`, :mod:`.objectives`; where the d
 from __future__ import annotations
 
 import argparse
+from dataclasses import fields
 from typing import Any
 
-from fem_racket.cli.common import add_frame_options, frame_from_args
+from fem_racket.cli.common import add_config_option, add_frame_options, frame_from_args
+from fem_racket.cli.options.drawing import add_quiet_option
+from fem_racket.cli.options.execution import add_run_options
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.objectives import add_objective_options, objectives_from_args
-from fem_racket.cli.options.variables import add_variable_options, variables_from_args
-from fem_racket.cli.options.zones import add_zone_options, zone_from_args
-from fem_racket.studies.design.build import design_problem
+from fem_racket.cli.options.variables import add_variable_options
+from fem_racket.cli.options.zones import add_zone_options
+from fem_racket.studies.design.build import build_problem
+from fem_racket.studies.design.options import DesignOptions, VariableOptions, ZoneOptions
 from fem_racket.studies.design.problem import DesignProblem
 
-__all__ = ["add_design_options", "problem_from_args"]
+__all__ = ["add_design_options", "add_study_tail", "problem_from_args"]
 
 
 def add_design_options(parser: argparse.ArgumentParser) -> None:
@@ -29,13 +33,37 @@ def add_design_options(parser: argparse.ArgumentParser) -> None:
     add_law_options(parser)
 
 
+def add_study_tail(
+    parser: argparse.ArgumentParser, out: dict[str, Any], help_of: dict[str, str]
+) -> None:
+    """What every design study command ends with: where the designs run (:mod:`.execution`),
+    the "output" group (``--out`` with the ``add_argument`` keywords ``out``, ``--overwrite``,
+    ``--restart`` when ``help_of`` has it, ``--quiet``), ``--json`` and ``--config`` (``--out``
+    the run file's own); ``help_of``: the help of --overwrite, --restart and --json."""
+    add_run_options(parser)
+    g = parser.add_argument_group("output")
+    g.add_argument("--out", **out)
+    for flag in ("overwrite", "restart"):
+        if flag in help_of:
+            g.add_argument(f"--{flag}", action="store_true", help=help_of[flag])
+    add_quiet_option(g)
+    parser.add_argument("--json", action="store_true", help=help_of["json"])
+    add_config_option(parser, private=("out",))
+
+
+def _group(kind: type, args: argparse.Namespace) -> Any:
+    """The option group ``kind`` from the options of the same names (the others default)."""
+    given = vars(args)
+    return kind(**{f.name: given[f.name] for f in fields(kind) if f.name in given})
+
+
 def problem_from_args(args: argparse.Namespace) -> DesignProblem:
     """The design problem the options describe."""
-    kwargs: dict[str, Any] = {
-        **variables_from_args(args),
-        "law": law_from_args(args),
-        **zone_from_args(args),
-        **objectives_from_args(args),
-        "elements": args.elements,
-    }
-    return design_problem(frame_from_args(args), **kwargs)
+    options = DesignOptions(
+        variables=_group(VariableOptions, args),
+        zone_options=_group(ZoneOptions, args),
+        goals=objectives_from_args(args),
+        law=law_from_args(args),
+        elements=args.elements,
+    )
+    return build_problem(frame_from_args(args), options)

@@ -4,13 +4,12 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
-from fem_racket.cli.common import run_parameters
 from fem_racket.cli.options.drawing import progress_of
+from fem_racket.studies.design.options import ExecutionOptions
 from fem_racket.studies.executors import BACKENDS
 
-__all__ = ["add_run_options", "run_options"]
+__all__ = ["add_run_options", "execution_from_args"]
 
 
 def add_run_options(parser: argparse.ArgumentParser) -> None:
@@ -32,14 +31,12 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
 
 
-def run_options(args: argparse.Namespace) -> dict[str, Any]:
-    """Keywords of the design studies from the run options and ``--quiet``: backend, workers,
-    scheduler, seed, progress and the run parameters (provenance)."""
-    return {
-        "backend": args.backend,
-        "workers": args.workers,
-        "scheduler": args.scheduler,
-        "seed": args.seed,
-        "progress": progress_of(args),
-        "parameters": run_parameters(args),
-    }
+def execution_from_args(args: argparse.Namespace) -> ExecutionOptions:
+    """Where the designs run (--backend, --workers, --scheduler) and whether a progress bar
+    shows (``--quiet``)."""
+    return ExecutionOptions(
+        backend=args.backend,
+        workers=args.workers,
+        scheduler=args.scheduler,
+        progress=progress_of(args),
+    )

@@ -4,9 +4,10 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Iterable
 from typing import Any
 
-__all__ = ["number_list"]
+__all__ = ["add_options", "number_list"]
 
 
 class _NumberList:
@@ -41,3 +42,14 @@ def number_list(item: type = float) -> dict[str, Any]:
     """``add_argument`` keywords for a list option taking space- or comma-separated values
     (``--positions 0.6 0.75`` or ``--positions 0.6,0.75``, as sweep's comma lists)."""
     return {"type": _NumberList(item), "nargs": "+", "action": _FlattenAction}
+
+
+def add_options(
+    group: Any, rows: Iterable[tuple[str, Any, str | None, str]], **common: Any
+) -> None:
+    """``--name`` (underscores as dashes) for each row ``(name, default, metavar, help)`` of
+    ``group``, with the ``add_argument`` keywords ``common`` (``type=float``,
+    ``**number_list()``)."""
+    for name, default, metavar, text in rows:
+        flag = "--" + name.replace("_", "-")
+        group.add_argument(flag, default=default, metavar=metavar, help=text, **common)

@@ -5,11 +5,11 @@ mass, balance, swing weight and first frequency."""
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
 from fem_racket.cli.options.lists import number_list
 from fem_racket.frame.hand import GRIPS
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
+from fem_racket.studies.design.options import ObjectiveOptions
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
 
 __all__ = ["CONSTRAINTS", "add_objective_options", "objectives_from_args"]
@@ -89,13 +89,13 @@ def add_objective_options(parser: argparse.ArgumentParser) -> None:
         )
 
 
-def objectives_from_args(args: argparse.Namespace) -> dict[str, Any]:
-    """Keywords of :func:`fem_racket.studies.design.build.design_problem` from the options."""
-    return {
-        "objectives": args.objective,
-        "constraints": {q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()},
-        "stiffness_cost": args.stiffness_cost,
-        "power_fraction": args.power_fraction,
-        "grip": args.grip,
-        "shock_window": args.shock_window,
-    }
+def objectives_from_args(args: argparse.Namespace) -> ObjectiveOptions:
+    """The objectives and constraints the options give."""
+    return ObjectiveOptions(
+        objectives=args.objective,
+        constraints={q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()},
+        stiffness_cost=args.stiffness_cost,
+        power_fraction=args.power_fraction,
+        grip=args.grip,
+        shock_window=args.shock_window,
+    )

@@ -33,6 +33,7 @@ from fem_racket.cli.options.output import (
 )
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
+from fem_racket.impact.solvers import auto_method
 from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.outputs import provenance
 from fem_racket.strings.bed import EDGES, StringBed, parse_pattern
@@ -56,6 +57,7 @@ STRING_DESTS = (
     "head_width",
     "string_material",
     "bed_edge",
+    "string_stretch",
 )
 
 
@@ -111,7 +113,15 @@ def add_strings_options(parser: argparse.ArgumentParser) -> None:
         choices=EDGES,
         help="how the head ring follows the frame: point (with the impact point; default, the "
         "paper's point contact when the bed is stiff) or hoop (each edge point with the frame's "
-        "bending at its x)",
+        "bending and twist at its place)",
+    )
+    g.add_argument(
+        "--string-stretch",
+        action="store_const",
+        const=True,
+        default=None,
+        help="the strings stretch as the bed deflects, their tension rising in the impact "
+        "(integrated by cvode; default: off, the linear bed)",
     )
 
 
@@ -155,6 +165,7 @@ def strings_from_args(args: argparse.Namespace) -> StringBed | None:
         head_width_m=width,
         string=d.string if values["string_material"] is None else values["string_material"],
         edge=d.edge if values["bed_edge"] is None else values["bed_edge"],
+        stretch=bool(values["string_stretch"]),
     )
 
 
@@ -181,6 +192,14 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("rebound speed", significant(s["rebound_speed_m_s"], 5), "m/s"),
         ("peak force", significant(s["peak_force_n"], 4), "N"),
         ("impact point", significant(s["position_x_over_l"], 4), "x/L"),
+        *(
+            [
+                ("offset from the axis", significant(s["offset_m"], 4), "m"),
+                ("roll rate after impact", significant(s["roll_rate_rad_s"], 4), "rad/s"),
+            ]
+            if s["offset_m"]
+            else []
+        ),
         ("impact speed", significant(s["speed_m_s"], 5), "m/s"),
         ("string bed", f"{s['pattern']} {s['string']}", ""),
         ("string tension", significant(s["string_tension_n"], 4), "N"),
@@ -191,20 +210,35 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("peak ball deflection", significant(s["peak_ball_deflection_m"] * 1e3, 4), "mm"),
         ("energy returned by the bed", significant(s["bed_energy_returned_j"], 4), "J"),
         ("energy lost in the ball", significant(s["energy_lost_in_ball_j"], 4), "J"),
+        *(
+            [("string stretch", "on (tension rises with the deflection)", "")]
+            if s["string_stretch"]
+            else []
+        ),
         ("ball law", s["ball_law"], ""),
         ("solver", f"{s['solver']} (modal, {s['elements']} elements + bed)", ""),
     ]
 
 
-def strung_from_args(args: argparse.Namespace, strings: StringBed, model) -> StrungImpact:
-    """The impact the options ask for on ``strings`` and the frame ``model``, through
-    :func:`fem_racket.simulate` (which refuses, in one line, what the strung racket does not
-    take: K_CB, zeta, a swing, the options of other solvers)."""
+def strung_from_args(
+    args: argparse.Namespace, strings: StringBed, model, incidence: Any = None
+) -> Any:
+    """The impact the options ask for on ``strings`` and the frame ``model`` (a StrungImpact;
+    an ObliqueResult with an ``incidence``), through :func:`fem_racket.simulate` (which refuses,
+    in one line, what the strung racket does not take: K_CB, zeta, a swing, the options of
+    other solvers)."""
+    auto = getattr(args, "solver", "auto") == "auto"
     kwargs = impact_kwargs(args)
+    if auto:  # on the bed a linear ball (a preset of the linear law too) is solved exactly,
+        law = kwargs.get("law")  # a stretching bed by CVODE
+        linear = law is None or law.name == "linear"
+        args.solver = kwargs["solver"] = "cvode" if strings.stretch else auto_method(linear)
     if "output_step" in getattr(args, "explicit_options", ()):
         kwargs["output_step"] = args.output_step  # refused there, not ignored here
     if hasattr(args, "racket_speed"):  # commands with the swing options
         kwargs["swing"] = swing_from_args(args, model.mesh.length)
+    if incidence is not None:
+        kwargs["incidence"] = incidence
     return simulate(model, strings=strings, **kwargs)
 
 

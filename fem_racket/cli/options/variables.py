@@ -1,28 +1,52 @@
 """The design variables on the command line (``optimize``, ``sensitivity``): the segments, the
 parameter groups to vary (:data:`fem_racket.studies.design.variable_groups.VARY`) and their
-bounds, added masses, smooth profiles and the string bed."""
+bounds, added masses, smooth profiles and the string bed (the fields of
+:class:`fem_racket.studies.design.options.VariableOptions`)."""
 
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
-from fem_racket.cli.options.lists import number_list
+from fem_racket.cli.options.lists import add_options, number_list
 
-__all__ = ["add_variable_options", "variables_from_args"]
+__all__ = ["add_variable_options"]
+
+#: (name, default, metavar, help) of the list options, in the order --help shows them.
+SEGMENTS = (
+    (
+        "boundaries",
+        [0.3, 0.5333333333333333, 0.7666666666666667],
+        "X",
+        "segment boundaries x/L [-] of the design frame (default 0.3, 0.533, 0.767: 4 segments)",
+    ),
+)
+BOUNDS = (
+    ("ei_bounds", [50.0, 3000.0], "LOW,HIGH", "bounds of every EI [N m^2] (default 50,3000: "
+     "Fig 13's range)"),
+    ("rhoa_bounds", [0.2, 1.2], "LOW,HIGH", "bounds of every rhoA [kg/m] (default 0.2,1.2)"),
+    ("mass_positions", [], "X", "centres x/L [-] of added masses (20 mm strips; default none)"),
+    ("mass_bounds", [0.0, 0.03], "LOW,HIGH", "bounds of every added mass [kg] (default 0,0.03)"),
+)  # fmt: skip
+PROFILES = (
+    ("position_bounds", [0.0, 1.0], "LOW,HIGH", "bounds x/L [-] of every added mass's centre "
+     "with --vary position (default 0,1)"),
+    ("ei_points", [], "X", "control stations x/L [-] of a smooth EI(x) (first 0, last 1), one EI "
+     "variable each, instead of one per segment (default: segments)"),
+    ("rhoa_points", [], "X", "control stations x/L [-] of a smooth rhoA(x), as --ei-points "
+     "(default: segments)"),
+)  # fmt: skip
+STRINGS = (
+    ("string_bounds", None, "LOW,HIGH", "with --vary string: bounds of the factor on K_CB "
+     "(linear law) or of k_s [N/m] (--law series) (default 0.5-2 x the start)"),
+    ("cubic_bounds", None, "LOW,HIGH", "with --vary string_cubic (--law series): bounds of k_3 "
+     "[N/m^3] (default 0-2 x the start)"),
+)  # fmt: skip
 
 
 def add_variable_options(parser: argparse.ArgumentParser) -> None:
     """The "design variables" option group."""
     g = parser.add_argument_group("design variables")
-    g.add_argument(
-        "--boundaries",
-        **number_list(),
-        default=[0.3, 0.5333333333333333, 0.7666666666666667],
-        metavar="X",
-        help="segment boundaries x/L [-] of the design frame "
-        "(default 0.3, 0.533, 0.767: 4 segments)",
-    )
+    add_options(g, SEGMENTS, **number_list())
     g.add_argument(
         "--vary",
         **number_list(str),
@@ -36,34 +60,7 @@ def add_variable_options(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="one EI variable (EI_1), the others keeping the starting ratios",
     )
-    g.add_argument(
-        "--ei-bounds",
-        **number_list(),
-        default=[50.0, 3000.0],
-        metavar="LOW,HIGH",
-        help="bounds of every EI [N m^2] (default 50,3000: Fig 13's range)",
-    )
-    g.add_argument(
-        "--rhoa-bounds",
-        **number_list(),
-        default=[0.2, 1.2],
-        metavar="LOW,HIGH",
-        help="bounds of every rhoA [kg/m] (default 0.2,1.2)",
-    )
-    g.add_argument(
-        "--mass-positions",
-        **number_list(),
-        default=[],
-        metavar="X",
-        help="centres x/L [-] of added masses (20 mm strips; default none)",
-    )
-    g.add_argument(
-        "--mass-bounds",
-        **number_list(),
-        default=[0.0, 0.03],
-        metavar="LOW,HIGH",
-        help="bounds of every added mass [kg] (default 0,0.03)",
-    )
+    add_options(g, BOUNDS, **number_list())
     g.add_argument(
         "--mass-start",
         type=float,
@@ -71,67 +68,11 @@ def add_variable_options(parser: argparse.ArgumentParser) -> None:
         metavar="KG",
         help="starting value of every added mass [kg] (default 0)",
     )
-    g.add_argument(
-        "--position-bounds",
-        **number_list(),
-        default=[0.0, 1.0],
-        metavar="LOW,HIGH",
-        help="bounds x/L [-] of every added mass's centre with --vary position (default 0,1)",
-    )
-    g.add_argument(
-        "--ei-points",
-        **number_list(),
-        default=[],
-        metavar="X",
-        help="control stations x/L [-] of a smooth EI(x) (first 0, last 1), one EI variable each, "
-        "instead of one per segment (default: segments)",
-    )
-    g.add_argument(
-        "--rhoa-points",
-        **number_list(),
-        default=[],
-        metavar="X",
-        help="control stations x/L [-] of a smooth rhoA(x), as --ei-points (default: segments)",
-    )
+    add_options(g, PROFILES, **number_list())
     g.add_argument(
         "--interpolation",
         choices=("pchip", "linear"),
         default="pchip",
         help="profile between control points: monotone cubic (PCHIP) or linear (default pchip)",
     )
-    g.add_argument(
-        "--string-bounds",
-        **number_list(),
-        default=None,
-        metavar="LOW,HIGH",
-        help="with --vary string: bounds of the factor on K_CB (linear law) or of k_s [N/m] "
-        "(--law series) (default 0.5-2 x the start)",
-    )
-    g.add_argument(
-        "--cubic-bounds",
-        **number_list(),
-        default=None,
-        metavar="LOW,HIGH",
-        help="with --vary string_cubic (--law series): bounds of k_3 [N/m^3] "
-        "(default 0-2 x the start)",
-    )
-
-
-def variables_from_args(args: argparse.Namespace) -> dict[str, Any]:
-    """Keywords of :func:`fem_racket.studies.design.build.design_problem` from the options."""
-    return {
-        "boundaries": args.boundaries,
-        "vary": args.vary,
-        "link_ei": args.link_ei,
-        "ei_bounds": args.ei_bounds,
-        "rhoa_bounds": args.rhoa_bounds,
-        "mass_positions": args.mass_positions,
-        "mass_bounds": args.mass_bounds,
-        "mass_start": args.mass_start,
-        "position_bounds": args.position_bounds,
-        "ei_points": args.ei_points,
-        "rhoa_points": args.rhoa_points,
-        "interpolation": args.interpolation,
-        "string_bounds": args.string_bounds,
-        "cubic_bounds": args.cubic_bounds,
-    }
+    add_options(g, STRINGS, **number_list())

@@ -1,15 +1,28 @@
 """The impact zone, the ball and the player's swing of a design study on the command line
-(``optimize``, ``sensitivity``)."""
+(``optimize``, ``sensitivity``): the fields of
+:class:`fem_racket.studies.design.options.ZoneOptions`."""
 
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
-from fem_racket.cli.options.lists import number_list
+from fem_racket.cli.options.lists import add_options, number_list
 from fem_racket.studies.design.build import ZONES
 
-__all__ = ["add_zone_options", "zone_from_args"]
+__all__ = ["add_zone_options"]
+
+#: (name, default, metavar, help) of the number options, in the order --help shows them.
+BALL = (
+    ("ball_mass", None, "KG", "ball mass m_B [kg] (default 0.057)"),
+    ("zeta", None, None, "ball/string damping ratio [-] (default from the clamped COR 0.83)"),
+    ("racket_speed", None, "M_S", "swing: speed of the reference point towards the ball with "
+     "the starting racket [m/s]; slower for heavier swings, ~I^-0.27 (Cross & Bower 2006) "
+     "(default: a stationary racket)"),
+    ("reference", 0.75, "X", "reference point of --racket-speed x/L [-] (default 0.75)"),
+    ("pivot", 0.10, "M", "swing pivot (hand) from the butt [m] (default 0.10)"),
+    ("swing_exponent", -0.27, None, "swing speed ~ I^exponent, the exponent [-] "
+     "(default -0.27; 0: same swing for any racket)"),
+)  # fmt: skip
 
 
 def add_zone_options(parser: argparse.ArgumentParser) -> None:
@@ -51,63 +64,4 @@ def add_zone_options(parser: argparse.ArgumentParser) -> None:
         metavar="M_S",
         help="incoming ball speeds [m/s] (default 20 30 40)",
     )
-    z.add_argument(
-        "--ball-mass",
-        type=float,
-        default=None,
-        metavar="KG",
-        help="ball mass m_B [kg] (default 0.057)",
-    )
-    z.add_argument(
-        "--zeta",
-        type=float,
-        default=None,
-        help="ball/string damping ratio [-] (default from the clamped COR 0.83)",
-    )
-    z.add_argument(
-        "--racket-speed",
-        type=float,
-        default=None,
-        metavar="M_S",
-        help="swing: speed of the reference point towards the ball with the starting "
-        "racket [m/s]; slower for heavier swings, ~I^-0.27 (Cross & Bower 2006) "
-        "(default: a stationary racket)",
-    )
-    z.add_argument(
-        "--reference",
-        type=float,
-        default=0.75,
-        metavar="X",
-        help="reference point of --racket-speed x/L [-] (default 0.75)",
-    )
-    z.add_argument(
-        "--pivot",
-        type=float,
-        default=0.10,
-        metavar="M",
-        help="swing pivot (hand) from the butt [m] (default 0.10)",
-    )
-    z.add_argument(
-        "--swing-exponent",
-        type=float,
-        default=-0.27,
-        help="swing speed ~ I^exponent, the exponent [-] "
-        "(default -0.27; 0: same swing for any racket)",
-    )
-
-
-def zone_from_args(args: argparse.Namespace) -> dict[str, Any]:
-    """Keywords of :func:`fem_racket.studies.design.build.design_problem` from the options."""
-    return {
-        "zone": args.zone,
-        "zone_range": args.zone_range,
-        "zone_points": args.zone_points,
-        "zone_sigma": args.zone_sigma,
-        "speeds": args.speeds,
-        "racket_speed": args.racket_speed,
-        "reference": args.reference,
-        "pivot": args.pivot,
-        "swing_exponent": args.swing_exponent,
-        "ball_mass": args.ball_mass,
-        "zeta": args.zeta,
-    }
+    add_options(z, BALL, type=float)

@@ -23,16 +23,16 @@ __all__ = ["stack_laws", "stack_receptances"]
 def stack_receptances(parts: list[Receptance]) -> Receptance:
     """The cases of ``parts`` in order, each with its frame's frequencies (rows of omega)."""
     width = max(p.a.shape[1] for p in parts)
-    omega, a = [], []
-    for p in parts:
-        n, m = p.a.shape
-        w = np.full((n, width), np.inf)
-        w[:, :m] = np.broadcast_to(p.omega, (n, m))
-        omega.append(w)
-        a.append(np.pad(p.a, ((0, 0), (0, width - m))))
+    sizes = [p.a.shape[0] for p in parts]
+    omega, a = np.full((sum(sizes), width), np.inf), np.zeros((sum(sizes), width))
+    start = 0
+    for p, n in zip(parts, sizes, strict=True):
+        m = p.a.shape[1]
+        omega[start : start + n, :m], a[start : start + n, :m] = p.omega, p.a
+        start += n
     return Receptance(
-        np.concatenate(omega),
-        np.concatenate(a),
+        omega,
+        a,
         np.concatenate([p.rigid for p in parts]),
         np.concatenate([p.ball_mass for p in parts]),
     )

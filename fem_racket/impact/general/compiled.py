@@ -2,8 +2,8 @@
 
 :func:`march_compiled` prepares each case's modes (those kept by the cut-off rule of
 :func:`fem_racket.impact.reduction.split_modes` and its residual pseudo-mode), runs the
-compiled march (:mod:`fem_racket.impact.general.kernel`, numba, imported here only) and builds
-the outcome as :mod:`fem_racket.impact.general.march` does, from the same nodal histories. A
+compiled march (:mod:`fem_racket.impact.general.kernel`, numba, imported here only), which also
+integrates the outcome from the nodal histories as :mod:`fem_racket.impact.general.march` does. A
 case still in contact at the end of its span runs again with twice the span (up to ``t_max``).
 Laws of :mod:`fem_racket.contact` have kernels (:func:`kernel_law`); another law (a user's
 subclass) marches in numpy.
@@ -21,7 +21,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.impact.general.cubic_force import ORDER, STENCILS
-from fem_racket.impact.general.march import GeneralOutcome, _outcome
+from fem_racket.impact.general.march import GeneralOutcome
 from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
 from fem_racket.impact.reduction import split_modes
@@ -40,13 +40,15 @@ _PARAMETERS = {
         law.string_cubic,
     ),
 }
+#: Parameters per case the kernel takes (the most any law has; zeros after a law's own).
+_WIDTH = 4
 _STATES = {None: 0, "memory": 1, "ode": 2}
 _ENDS = {"displacement": 0, "force": 1, "state": 2}
 
 
 @dataclass(frozen=True, eq=False)
 class KernelLaw:
-    """A law as the kernel takes it: its number, state and end kinds, parameters (C, p)."""
+    """A law as the kernel takes it: its number, state and end kinds, parameters (C, 4)."""
 
     law: int
     state: int
@@ -68,10 +70,15 @@ class Checks:
         Largest h |dz'/dz| of an ODE state over the contact [-] (0 without one).
     flexible_energy : ndarray
         Energy of the kept flexible modes and pseudo-mode at the separation node [J].
+    work, node_impulse : ndarray
+        int F delta' dt [J] and int F dt [N s] over the whole steps up to the separation node
+        (of the piecewise cubic through the nodal values).
     """
 
     stiffness: np.ndarray
     flexible_energy: np.ndarray
+    work: np.ndarray
+    node_impulse: np.ndarray
 
 
 def kernel_law(law: ContactLaw, ncase: int) -> KernelLaw | None:
@@ -85,6 +92,7 @@ def kernel_law(law: ContactLaw, ncase: int) -> KernelLaw | None:
     cols = [np.broadcast_to(np.asarray(x, dtype=float), (ncase,)) for x in values(law)]
     if isinstance(law, Hysteretic):  # its unloading ratio (k1/k2)^(1/n), as the law has it
         cols.append((cols[0] / cols[1]) ** (1.0 / cols[2]))
+    cols += [np.zeros(ncase)] * (_WIDTH - len(cols))  # the kernel takes _WIDTH per case
     return KernelLaw(
         LAW_IDS[law.name],
         _STATES[law.state],
@@ -144,9 +152,9 @@ def march_compiled(
     from fem_racket.impact.general.kernel import march_cases
 
     W, A2, nmode, kept = _modes(rec, omega_c, beta)
+    kind = (law.law, law.state, law.end, int(extend))
     ncase = speed.size
-    status = np.full(ncase, -1)
-    parts: dict[int, tuple] = {}
+    runs = []
     todo = np.arange(ncase)
     span = span.copy()
     while todo.size:
@@ -155,30 +163,43 @@ def march_compiled(
         scale = np.abs(speed[todo]) / (sub.compliance * span[todo])
         fdv = _free(sub, speed[todo], None if frame_velocity is None else frame_velocity[todo],
                     h[todo], nsteps)  # fmt: skip
+        cases = (sub.compliance, h[todo], nsteps, speed[todo], scale)
         H, res = march_cases(
-            law.law, law.state, law.end, law.params[todo], W[todo], A2[todo], nmode[todo],
-            sub.compliance, h[todo], nsteps, speed[todo], fdv, scale, STENCILS, extend,
-        )  # fmt: skip
-        code = res[:, 2].astype(int)
-        again = (code == 1) & (span[todo] < t_max[todo])
-        for i, c in enumerate(todo):
-            if not again[i]:
-                status[c] = code[i]
-                parts[c] = (H[:, i], res[i])
+            kind, law.params[todo], (W[todo], A2[todo], nmode[todo]), cases, fdv, STENCILS
+        )
+        again = (res[:, 2] == 1) & (span[todo] < t_max[todo])
+        if np.any(again):
+            H, res = H[~again], res[~again]
+        runs.append((todo[~again], H, res))
         span[todo[again]] = np.minimum(2.0 * span[todo[again]], t_max[todo[again]])
         todo = todo[again]
-    width = max(p[0].shape[1] for p in parts.values())
-    H = np.zeros((5, ncase, width))
-    res = np.zeros((ncase, 5))
-    for c, (Hc, rc) in parts.items():
-        H[:, c, : Hc.shape[1]], res[c] = Hc, rc
+    if len(runs) > 1:  # cases that ran again: their longer histories
+        H = np.zeros((ncase, 5, max(r[1].shape[2] for r in runs)))
+        res = np.zeros((ncase, runs[0][2].shape[1]))
+        for idx, Hc, rc in runs:
+            H[idx, :, : Hc.shape[2]], res[idx] = Hc, rc
+    status = res[:, 2].astype(int)
     ok = status == 0
-    last = np.where(ok, res[:, 0], width - 1).astype(int)
-    out = _outcome(H[0], H[1], H[2], H[3], last, np.where(ok, res[:, 1], 1.0), h, speed, rec,
-                   kept)  # fmt: skip
+    last = np.where(ok, res[:, 0], H.shape[2] - 1).astype(int)
+    frac = np.where(ok, res[:, 1], 1.0)
+    width = int(last.max()) + 1
+    out = GeneralOutcome(
+        contact_time=(last - 1 + frac) * h,
+        ball_velocity=speed - res[:, 5] / rec.ball_mass,
+        impulse=res[:, 5],
+        peak_force=res[:, 6],
+        step=h.copy(),
+        force=H[:, 0, :width],
+        deflection=H[:, 1, :width],
+        rate=H[:, 2, :width],
+        state=H[:, 3, :width],
+        last=last,
+        fraction=frac,
+        kept=kept,
+    )
     if not np.all(ok):
         out = _blank(out, ~ok)
-    return out, Checks(res[:, 3], res[:, 4]), status
+    return out, Checks(res[:, 3], res[:, 4], res[:, 7], res[:, 8]), status
 
 
 def _blank(out: GeneralOutcome, bad: np.ndarray) -> GeneralOutcome:

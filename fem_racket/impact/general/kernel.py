@@ -5,14 +5,21 @@ force on a uniform grid, the contact equation solved at each node, the law's own
 condition), evaluated in modal form: instead of the convolution tables of
 :mod:`fem_racket.impact.general.receptance` (O(N^2) per case), each kept mode carries its state
 y = x' + i omega x from node to node exactly for the step's cubic force (the recursion of
-:mod:`fem_racket.impact.law_impact`), y_{k+1} = e^{i theta} (y_k + a^2 h sum_r F_r G_r), so a
-node costs O(modes). Every case brings its own frequencies, mode values and step, so one call
-serves a batch spanning many frames. The starting nodes 1-3 (forward stencil) are solved by
-Gauss-Seidel sweeps over their 4 x 4 weights, as the march does.
+:mod:`fem_racket.impact.general.histories`), y_{k+1} = e^{i theta} (y_k + a^2 h sum_r F_r G_r),
+so a node costs O(modes) (:mod:`fem_racket.impact.general.kernel_modes`). A case's law
+parameters are a tuple and its histories one (5, N) array, so a node costs no reference counts.
+Every case brings its own frequencies, mode values and step, so one call serves a batch spanning
+many frames. The starting nodes 1-3 (forward stencil) are solved by Gauss-Seidel sweeps over
+their 4 x 4 weights, as the march does.
 
-Outputs per case: the nodal histories, the separation step and fraction, a status (0 separated,
-1 still in contact at the last node, 2 Newton did not converge), the largest h |dz'/dz| of an
-ODE state (the march's stiffness) and the flexible modes' energy at the separation node.
+Outputs per case: the nodal histories and one row of :data:`RESULTS`: the separation step and
+fraction, a status (0 separated, 1 still in contact at the last node, 2 Newton did not
+converge), the largest h |dz'/dz| of an ODE state (the march's stiffness), the flexible modes'
+energy at the separation node, and what the outcome and the energy balance
+(:func:`fem_racket.impact.general.vouch.energy_residual`) integrate from the histories (as
+:mod:`fem_racket.impact.general.march` integrates its outcome in numpy): the impulse up to
+separation, the peak force (a parabola through the largest node and its neighbours), and the
+contact work int F delta' dt and impulse over the whole steps up to the separation node.
 """
 
 from __future__ import annotations
@@ -22,228 +29,215 @@ from numba import njit
 
 from fem_racket.impact.general import kernel_laws as kl
 from fem_racket.impact.general import kernel_modes as km
+from fem_racket.impact.general import kernel_node as kn
 
-__all__ = ["march_cases"]
+__all__ = ["RESULTS", "march_cases"]
 
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
-_NEWTON_ITER = 40
 _START_SWEEPS = 12
+_F, _D, _V, _Z, _G = kn.F, kn.D, kn.V, kn.Z, kn.G
+#: The columns of the kernel's result row per case.
+RESULTS = (
+    "last",
+    "fraction",
+    "status",
+    "stiffness",
+    "flexible_energy",
+    "impulse",
+    "peak_force",
+    "work",
+    "node_impulse",
+)
 
 
 @njit(**_JIT)
-def _newton(law, state, p, A, B, kd0, kv0, guess, zp, zb, zc, h, scale, d0, v0):
-    """F and z at a node (as step.solve_step for one case); ok False if not converged."""
-    F, z = guess, zp
-    for _ in range(_NEWTON_ITER):
-        d, v = A - kd0 * F, B - kv0 * F
-        if state == 1:
-            z = max(zp, kl.turn_max(d0, v0, d, v, h))
-        f, fd, fv, fz = kl.force_partials(law, p, d, v, z)
-        r1 = F - f
-        tol = 1e-12 * (abs(F) + scale)
-        if state == 2:
-            r2 = z - zb - zc * kl.rate(law, p, d, v, z)
-            if abs(r1) <= tol and abs(r2) <= 1e-12 * (abs(z) + 1e-9):
-                return F, z, True
-            gd, gv, gz = kl.rate_partials(law, p, d, v, z)
-            j11 = 1.0 + fd * kd0 + fv * kv0
-            j21 = zc * (gd * kd0 + gv * kv0)
-            j22 = 1.0 - zc * gz
-            det = j11 * j22 + fz * j21
-            dF = -(r1 * j22 + fz * r2) / det
-            z = z - (j11 * r2 - j21 * r1) / det
-        else:
-            if abs(r1) <= tol:
-                return F, z, True
-            dF = -r1 / (1.0 + fd * kd0 + fv * kv0)
-        cap = 2.0 * (abs(F) + scale)
-        F = F + max(min(dF, cap), -cap)
-    return F, z, False
-
-
-@njit(**_JIT)
-def _ended(law, end, p, F, D, Z, m):
-    """True where the contact ends in step m - 1 (nodes m - 1, m)."""
-    if end == 1:
-        return F[m - 1] > 0 and F[m] <= 0
-    if end == 2:
-        return Z[m - 1] > 0 and Z[m] <= 0
-    e0, e1 = kl.end_value(law, p, Z[m - 1]), kl.end_value(law, p, Z[m])
-    return D[m - 1] - e0 > 0 and D[m] - e1 <= 0
-
-
-@njit(**_JIT)
-def _fraction(law, end, p, H, m, b, s, h, cs):
-    """Where in step m - 1 (stencil s from node b) the contact ended (0-1]."""
-    F, D, V, Z, G = H
-    if end == 1:
-        coef = np.zeros(4)
-        for r in range(4):
-            for q in range(4):
-                coef[q] += F[b + r] * cs[s, r, q]
-        return kl.cubic_root(coef, F[m - 1], F[m])
-    if end == 2:
-        return kl.hermite_root(Z[m - 1], G[m - 1], Z[m], G[m], 0.0, h)
-    return kl.hermite_root(D[m - 1], V[m - 1], D[m], V[m], kl.end_value(law, p, Z[m]), h)
-
-
-@njit(**_JIT)
-def _solve_node(law, state, p, H, m, b, s, A, B, kd0, kv0, guess, h, c1, scale):
-    """The contact equation at node m (stencil s of step m - 1 from node b); False if Newton
-    fails."""
-    F, D, V, Z, G = H
-    zb, zc = Z[m - 1], 0.0
-    if state == 2:  # Adams-Moulton on the step's cubic: z_m = zb + zc g_m
-        acc = 0.0
-        for r in range(4):
-            acc += G[b + r] * (h * c1[s, r])
-        zc = h * c1[s, m - b]
-        zb = Z[m - 1] + acc - zc * G[m]
-    Fm, zm, ok = _newton(
-        law, state, p, A, B, kd0, kv0, guess, Z[m - 1], zb, zc, h, scale, D[m - 1], V[m - 1]
-    )
-    d, v = A - kd0 * Fm, B - kv0 * Fm
-    if state == 1:
-        zm = max(Z[m - 1], kl.turn_max(D[m - 1], V[m - 1], d, v, h))
-    F[m], D[m], V[m], Z[m] = Fm, d, v, zm
+def _start(kind, p, modal, rigid, fdv, H, scale):
+    """Nodes 1-3 by Gauss-Seidel sweeps over their 4 x 4 weights (``modal`` = (e^{i theta},
+    a^2, G, omega), ``rigid`` as kernel_modes.advance takes it); returns whether Newton
+    converged, and the modal states (y, R, R') at node 3."""
+    law, state = kind[0], kind[1]
+    e, a2, Gw, w = modal
+    h, c1 = rigid[1], rigid[2]
+    mod = (e, a2, Gw)
+    Wd, Wv = km.start_weights(mod, w, rigid)
+    H[_D, 0], H[_V, 0] = fdv[0, 0], fdv[1, 0]
+    H[_F, 0] = kl.force(law, p, H[_D, 0], H[_V, 0], 0.0)
     if state == 2:
-        G[m] = kl.rate(law, p, d, v, zm)
-    return ok
-
-
-@njit(**_JIT)
-def _case(law, state, end, p, w, a2, mu0, h, n, fdv, scale, cs, extend, H, res):
-    """March one case (histories H = F, D, V, Z, G up to node n - 1, free motion fdv = (2, n));
-    res = (last, fraction, status, stiffness, flexible energy)."""
-    F, D, V, Z, G = H
-    nm = w.size
-    e = np.exp(1j * w * h)
-    Gw, c1, c2 = km.weights(w, h, cs)
-    y = np.zeros(nm, dtype=np.complex128)
-    # weights of the starting nodes 0-3 at nodes 1-3: unit forces through steps 0, 1, 2
-    Wd, Wv, f = np.zeros((4, 4)), np.zeros((4, 4)), np.zeros(4)
-    for node in range(4):
-        f[:] = 0.0
-        f[node] = 1.0
-        y[:] = 0.0
-        R, Rv = 0.0, 0.0
-        for k in range(3):
-            R, Rv = km.advance(y, R, Rv, f, 1 + k if k < 2 else 0, e, a2, mu0, h, Gw, c1, c2)
-            Wd[k + 1, node], Wv[k + 1, node] = km.response(y, R, Rv, w)
-    D[0], V[0] = fdv[0, 0], fdv[1, 0]
-    F[0] = kl.force(law, p, D[0], V[0], 0.0)
-    if state == 2:
-        G[0] = kl.rate(law, p, D[0], V[0], 0.0)
+        H[_G, 0] = kl.rate(law, p, H[_D, 0], H[_V, 0], 0.0)
     for m in range(1, 4):
-        F[m], G[m] = F[0], G[0]
+        H[_F, m], H[_G, m] = H[_F, 0], H[_G, 0]
     for _ in range(_START_SWEEPS):
         conv = True
         for m in range(1, 4):
-            fb, zb = F[m], Z[m]
+            fb, zb = H[_F, m], H[_Z, m]
             A, B = fdv[0, m], fdv[1, m]
             for j in range(4):
                 if j != m:
-                    A -= Wd[m, j] * F[j]
-                    B -= Wv[m, j] * F[j]
+                    A -= Wd[m, j] * H[_F, j]
+                    B -= Wv[m, j] * H[_F, j]
             s = m if m < 3 else 0
-            if not _solve_node(law, state, p, H, m, 0, s, A, B, Wd[m, m], Wv[m, m], F[m], h,
-                               c1, scale):  # fmt: skip
-                res[2] = 2.0
-                return
-            conv &= abs(F[m] - fb) <= 1e-13 * (abs(F[m]) + scale)
-            conv &= abs(Z[m] - zb) <= 1e-13 * (abs(Z[m]) + 1e-9)
+            lin = (A, B, Wd[m, m], Wv[m, m])
+            if not kn.solve_node(kind, p, H, (m, 0, s), lin, H[_F, m], (h, scale), c1):
+                return False, np.zeros(0, dtype=np.complex128), 0.0, 0.0
+            conv &= abs(H[_F, m] - fb) <= 1e-13 * (abs(H[_F, m]) + scale)
+            conv &= abs(H[_Z, m] - zb) <= 1e-13 * (abs(H[_Z, m]) + 1e-9)
         if conv:
             break
-    y[:] = 0.0
+    y = np.zeros(w.size, dtype=np.complex128)
     R, Rv = 0.0, 0.0
     for k in range(3):
-        R, Rv = km.advance(y, R, Rv, F[:4], 1 + k if k < 2 else 0, e, a2, mu0, h, Gw, c1, c2)
-    kd0, kv0 = mu0 * h * h * c2[0, 3], mu0 * h * c1[0, 3]
-    tail = np.empty(nm, dtype=np.complex128)  # node m's own weight in the backward step
+        R, Rv = km.advance(y, (R, Rv), H[_F, :4], 1 + k if k < 2 else 0, mod, rigid)
+    return True, y, R, Rv
+
+
+@njit(**_JIT)
+def _integrals(H, at, h, cs, c1, res):
+    """The impulse up to separation (``at`` = (last, fraction, nodes)), the peak force, and
+    the contact work and impulse over the whole steps up to the last node, into ``res``."""
+    last, frac, n = at
+    imp, work, before = 0.0, 0.0, 0.0
+    for k in range(last):
+        s, b = (k + 1, 0) if k < 2 else (0, k - 2)
+        si, sw = 0.0, 0.0
+        for r in range(4):
+            si += c1[s, r] * H[_F, b + r]
+            sw += c1[s, r] * (H[_F, b + r] * H[_V, b + r])
+        before = imp
+        imp += h * si
+        work += h * sw
+    k = last - 1
+    s, b = (k + 1, 0) if k < 2 else (0, k - 2)
+    part = 0.0
+    for r in range(4):
+        q = 0.0
+        for j in range(4):
+            q += cs[s, r, j] * (frac ** (j + 1) / (j + 1.0))
+        part += q * H[_F, b + r]
+    res[5], res[7], res[8] = before + h * part, work, imp
+    top = 0
+    for k in range(1, last + 1):
+        if H[_F, k] > H[_F, top]:
+            top = k
+    i = min(max(top, 1), n - 2)
+    a = H[_F, i - 1]
+    mid = H[_F, i] if i <= last else -np.inf
+    c = H[_F, i + 1] if i + 1 <= last else -np.inf
+    den = a - 2.0 * mid + c
+    res[6] = mid - 0.125 * (c - a) ** 2 / den if np.isfinite(den) and den < 0.0 else H[_F, top]
+
+
+@njit(**_JIT)
+def _continue_branch(H, m, kd0, kv0):
+    """The force was cut to zero past the end at node m: the step's cubic takes the branch's
+    cubic continuation instead (the cut is a kink the cubic would smear, O(h^2))."""
+    F = H[_F]
+    dF = 4.0 * F[m - 1] - 6.0 * F[m - 2] + 4.0 * F[m - 3] - F[m - 4] - F[m]
+    H[_F, m], H[_D, m], H[_V, m] = F[m] + dF, H[_D, m] - kd0 * dF, H[_V, m] - kv0 * dF
+
+
+@njit(**_JIT)
+def _case(kind, p, modes, grid, fdv, cs, H, res):
+    """March one case (histories H = F, D, V, Z, G; ``modes`` = (omega, a^2) of the modes kept,
+    ``grid`` = (mu0, h, nodes, force scale), free motion fdv (2, >= nodes)) into ``res``."""
+    law, state, end, extend = kind
+    w, a2 = modes
+    mu0, h, n, scale = grid
+    e = np.exp(1j * w * h)
+    Gw, c1, c2 = km.weights(w, h, cs)
+    rigid = (mu0, h, c1, c2)
+    ok, y, R, Rv = _start(kind, p, (e, a2, Gw, w), rigid, fdv, H, scale)
+    if not ok:
+        res[2] = 2.0
+        return
+    Bw = km.backward_weights(e, a2, h, Gw, w)
+    nm = w.size
+    Y = np.empty((2, nm))
+    kd0, kv0 = mu0 * h * h * c2[0, 3], mu0 * h * c1[0, 3]  # node m's own weight
     for j in range(nm):
-        tail[j] = e[j] * a2[j] * h * Gw[0, 3, j]
-        kd0 += tail[j].imag / w[j]
-        kv0 += tail[j].real
-    f[3] = 0.0
+        Y[0, j], Y[1, j] = y[j].real, y[j].imag
+        kd0 += Bw[11, j] * Bw[12, j]
+        kv0 += Bw[10, j]
     stiff = 0.0
     for m in range(1, n):
         b = max(m - 3, 0)
         s = 0 if m >= 3 else m
         if m >= 4:
-            f[:3] = F[b : b + 3]
-            R, Rv = km.advance(y, R, Rv, f, 0, e, a2, mu0, h, Gw, c1, c2)
-            rd, rv = km.response(y, R, Rv, w)
-            guess = 3.0 * F[m - 1] - 3.0 * F[m - 2] + F[m - 3]
-            A, B = fdv[0, m] - rd, fdv[1, m] - rv
-            if not _solve_node(law, state, p, H, m, b, 0, A, B, kd0, kv0, guess, h, c1, scale):
+            f0, f1, f2 = H[_F, b], H[_F, b + 1], H[_F, b + 2]
+            fd = f0 * c2[0, 0] + f1 * c2[0, 1] + f2 * c2[0, 2]
+            fv = f0 * c1[0, 0] + f1 * c1[0, 1] + f2 * c1[0, 2]
+            R, Rv = R + h * Rv + mu0 * h * h * fd, Rv + mu0 * h * fv
+            md, mv = km.stride(Y, Bw, (f0, f1, f2), m == 4)
+            guess = 3.0 * H[_F, m - 1] - 3.0 * H[_F, m - 2] + H[_F, m - 3]
+            lin = (fdv[0, m] - (R + md), fdv[1, m] - (Rv + mv), kd0, kv0)
+            if not kn.solve_node(kind, p, H, (m, b, 0), lin, guess, (h, scale), c1):
                 res[2] = 2.0
                 return
-            R += mu0 * h * h * c2[0, 3] * F[m]
-            Rv += mu0 * h * c1[0, 3] * F[m]
-            for j in range(nm):
-                y[j] += tail[j] * F[m]
+            R += mu0 * h * h * c2[0, 3] * H[_F, m]
+            Rv += mu0 * h * c1[0, 3] * H[_F, m]
         if state == 2:
-            gz = kl.rate_partials(law, p, D[m], V[m], Z[m])[2]
+            gz = kl.rate_partials(law, p, H[_D, m], H[_V, m], H[_Z, m])[2]
             stiff = max(stiff, h * abs(gz))
-        if _ended(law, end, p, F, D, Z, m):
-            if extend and end == 0 and m >= 5 and kl.force(law, p, D[m], V[m], Z[m]) == 0.0:
-                # the force was cut to zero past the end: the step's cubic takes the branch's
-                # cubic continuation instead (the cut is a kink the cubic would smear, O(h^2))
-                dF = 4.0 * F[m - 1] - 6.0 * F[m - 2] + 4.0 * F[m - 3] - F[m - 4] - F[m]
-                F[m], D[m], V[m] = F[m] + dF, D[m] - kd0 * dF, V[m] - kv0 * dF
-                for j in range(nm):
-                    y[j] += tail[j] * dF
-            res[0], res[1] = m, _fraction(law, end, p, H, m, b, s, h, cs)
+        if kn.ended(kind, p, H, m):
+            cut = extend and end == 0 and m >= 5
+            if cut and kl.force(law, p, H[_D, m], H[_V, m], H[_Z, m]) == 0.0:
+                _continue_branch(H, m, kd0, kv0)
+            res[0], res[1] = m, kn.fraction(kind, p, H, (m, b, s), h, cs)
             res[2], res[3] = 0.0, stiff
+            own = H[_F, m] if m >= 4 else 0.0  # node m's own weight, not yet in Y
             energy = 0.0
             for j in range(nm):
                 if a2[j] > 0:
-                    energy += 0.5 * (y[j].real ** 2 + y[j].imag ** 2) / a2[j]
+                    yr, yi = Y[0, j] + Bw[10, j] * own, Y[1, j] + Bw[11, j] * own
+                    energy += 0.5 * (yr**2 + yi**2) / a2[j]
             res[4] = energy
+            _integrals(H, (m, res[1], n), h, cs, c1, res)
             return
     res[2] = 1.0
 
 
 @njit(**_JIT)
-def march_cases(law, state, end, P, W, A2, nmode, mu0, h, nsteps, speed, fdv, scale, cs, extend):
+def march_cases(kind, P, modes, cases, fdv, cs):
     """March every case; see the module docstring.
 
     Parameters
     ----------
-    law, state, end : int
+    kind : (4,) int tuple
         Law number (kernel_laws.LAW_IDS), state (0 none, 1 memory, 2 ODE), end (0
-        displacement, 1 force, 2 state).
-    P : (C, p) law parameters; W, A2 : (C, M) frequencies [rad/s] and a^2 [1/kg] of the modes
-    kept (the pseudo-mode among them), the first nmode[c] of each row; mu0 : (C,) compliance
-    [1/kg]; h : (C,) step [s]; nsteps : (C,) nodes; speed : (C,) [m/s]; fdv : (C, 2, N) free
-    delta and delta' (empty: the ball at ``speed`` on a frame at rest); scale : (C,) Newton's
-    force scale [N]; cs : (3, 4, 4) Lagrange coefficients (cubic_force.STENCILS); extend :
-    where a "displacement" law's force is cut to zero at the separation node, continue its
-    branch there by cubic extrapolation (False: the march's equations as they are).
+        displacement, 1 force, 2 state), and ``extend``: where a "displacement" law's force is
+        cut to zero at the separation node, continue its branch there by cubic extrapolation
+        (0: the march's equations as they are).
+    P : (C, p) law parameters
+    modes : (W, A2, nmode)
+        (C, M) frequencies [rad/s] and a^2 [1/kg] of the modes kept (the pseudo-mode among
+        them), the first nmode[c] of each row.
+    cases : (mu0, h, nsteps, speed, scale)
+        (C,) compliance [1/kg], step [s], nodes, speed [m/s] and Newton's force scale [N].
+    fdv : (C, 2, N) free delta and delta' (empty: the ball at ``speed`` on a frame at rest)
+    cs : (3, 4, 4) Lagrange coefficients (cubic_force.STENCILS)
 
     Returns
     -------
-    H : ndarray (5, C, N)
+    H : ndarray (C, 5, N)
         F, delta, delta', z, z' at the nodes.
-    res : ndarray (C, 5)
-        Separation step, fraction, status, stiffness, flexible energy.
+    res : ndarray (C, len(RESULTS))
+        One row of :data:`RESULTS` per case.
     """
+    W, A2, nmode = modes
+    mu0, h, nsteps, speed, scale = cases
     ncase, N = h.size, int(nsteps.max())
-    H = np.zeros((5, ncase, N))
-    res = np.zeros((ncase, 5))
+    H = np.zeros((ncase, 5, N))
+    res = np.zeros((ncase, len(RESULTS)))
     res[:, 0] = -1.0
     given = fdv.shape[0] > 0
+    free = np.empty((2, N))
     for c in range(ncase):
         n = nsteps[c]
-        free = np.empty((2, n))
         for m in range(n):
             if given:
                 free[0, m], free[1, m] = fdv[c, 0, m], fdv[c, 1, m]
             else:
                 free[0, m], free[1, m] = speed[c] * (m * h[c]), speed[c]
         k = nmode[c]
-        _case(
-            law, state, end, P[c], W[c, :k], A2[c, :k], mu0[c], h[c], n, free, scale[c], cs, extend,
-            (H[0, c], H[1, c], H[2, c], H[3, c], H[4, c]), res[c],
-        )  # fmt: skip
+        p = (P[c, 0], P[c, 1], P[c, 2], P[c, 3])  # a tuple: no reference counts per node
+        _case(kind, p, (W[c, :k], A2[c, :k]), (mu0[c], h[c], n, scale[c]), free, cs, H[c], res[c])
     return H, res

@@ -5,6 +5,12 @@ step with the cubic force through 4 nodal values F_r it becomes exactly
 y e^{i theta} + a^2 h e^{i theta} sum_r F_r G_r, G_r = sum_q c_rq conj(M_q(theta, 1)),
 theta = omega h (:mod:`fem_racket.impact.general.cubic_force`); the rigid modes and the ball
 (compliance mu0) integrate the cubic twice. Used by :mod:`fem_racket.impact.general.kernel`.
+
+The starting steps use :func:`advance` (complex states, any stencil). After them every step has
+the backward stencil, and :func:`stride` carries the states as real and imaginary rows with the
+weights B_r = e^{i theta} a^2 h G_r folded per mode; a node's own weight B_3 (which multiplies
+the force still unknown while its node is solved) is carried into the next step as
+B_2 + e^{i theta} B_3, so a node costs one pass over the modes.
 """
 
 from __future__ import annotations
@@ -12,33 +18,53 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["advance", "moments", "response", "weights"]
+__all__ = [
+    "advance",
+    "backward_weights",
+    "moments",
+    "start_weights",
+    "stride",
+    "weights",
+]
 
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 _SERIES = 34
+#: A series term below this no longer changes M_3 (|M_3| > 0.1 for |x| < 2, and a term bounds
+#: the rest of the series to a factor 2 there).
+_TERM = 1e-19
+#: 1 / k for k = 1 .. _SERIES + 4 (products are cheaper than divisions).
+_RECIPROCAL = 1.0 / np.arange(1.0, _SERIES + 5.0)
 
 
 @njit(**_JIT)
-def moments(x):
-    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments)."""
-    out = np.empty(4, dtype=np.complex128)
+def moments(x, out):
+    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``.
+
+    |x| >= 2: the upward recursion M_q = (e^{ix} - q M_{q-1}) / (i x); below, M_3 by its series
+    sum_n (i x)^n / (n! (n + 4)) and the downward recursion M_{q-1} = (e^{ix} - i x M_q) / q,
+    which is stable there (it multiplies an error by |x| / q < 1).
+    """
+    ix = 1j * x
+    e = np.exp(ix)
     if abs(x) >= 2.0:
-        ix = 1j * x
-        e = np.exp(ix)
         prev = (e - 1.0) / ix
         out[0] = prev
         for q in range(1, 4):
             prev = (e - q * prev) / ix
             out[q] = prev
-        return out
-    for q in range(4):
-        term = 1.0 + 0.0j
-        acc = term / (q + 1.0)
-        for n in range(1, _SERIES):
-            term = term * (1j * x) / n
-            acc += term / (n + q + 1.0)
-        out[q] = acc
-    return out
+        return
+    tr, ti = 1.0, 0.0
+    ar, ai = 0.25, 0.0
+    for n in range(1, _SERIES):
+        xn = x * _RECIPROCAL[n - 1]
+        tr, ti = -ti * xn, tr * xn
+        ar += tr * _RECIPROCAL[n + 3]
+        ai += ti * _RECIPROCAL[n + 3]
+        if abs(tr) + abs(ti) < _TERM:
+            break
+    out[3] = ar + 1j * ai
+    for q in range(3, 0, -1):
+        out[q - 1] = (e - ix * out[q]) * _RECIPROCAL[q - 1]
 
 
 @njit(**_JIT)
@@ -47,8 +73,11 @@ def weights(w, h, cs):
     the rigid weights c1_r = sum_q c_rq / (q + 1), c2_r = sum_q c_rq / ((q + 1)(q + 2))."""
     nm = w.size
     Gw = np.empty((3, 4, nm), dtype=np.complex128)
+    M = np.empty(4, dtype=np.complex128)
     for j in range(nm):
-        M = np.conj(moments(w[j] * h))
+        moments(w[j] * h, M)
+        for q in range(4):
+            M[q] = M[q].conjugate()
         for s in range(3):
             for r in range(4):
                 Gw[s, r, j] = cs[s, r, 0] * M[0] + cs[s, r, 1] * M[1] + cs[s, r, 2] * M[2]
@@ -63,8 +92,13 @@ def weights(w, h, cs):
 
 
 @njit(**_JIT)
-def advance(y, R, Rv, f, s, e, a2, mu0, h, Gw, c1, c2):
-    """Modal states over one step with stencil s and its 4 nodal forces f; returns R, R'."""
+def advance(y, rig, f, s, modal, rigid):
+    """Modal states y over one step with stencil s and its 4 nodal forces f; ``rig`` = (R, R')
+    of the rigid modes and the ball, ``modal`` = (e^{i theta}, a^2, G), ``rigid`` = (mu0, h,
+    c1, c2); returns the new (R, R')."""
+    R, Rv = rig
+    e, a2, Gw = modal
+    mu0, h, c1, c2 = rigid
     fd, fv = 0.0, 0.0
     for r in range(4):
         fd += f[r] * c2[s, r]
@@ -76,10 +110,70 @@ def advance(y, R, Rv, f, s, e, a2, mu0, h, Gw, c1, c2):
 
 
 @njit(**_JIT)
-def response(y, R, Rv, w):
-    """The forced part of delta and delta' at a node (rigid + ball, then every mode)."""
-    d, v = R, Rv
-    for j in range(y.size):
-        d += y[j].imag / w[j]
-        v += y[j].real
-    return d, v
+def start_weights(modal, w, rigid):
+    """delta and delta' (4 x 4: nodes 0-3 by the unit force at nodes 0-3; row 0 zero) of a unit
+    force at each starting node through steps 0, 1, 2 (stencils forward 0, forward 1,
+    backward), as :func:`advance` gives the states: the rigid part and the ball, then y' and
+    Im(y) / omega of every mode."""
+    e, a2, Gw = modal
+    mu0, h, c1, c2 = rigid
+    Wd, Wv = np.zeros((4, 4)), np.zeros((4, 4))
+    for node in range(4):
+        R, Rv = 0.0, 0.0
+        for k in range(3):
+            s = 1 + k if k < 2 else 0
+            R, Rv = R + h * Rv + mu0 * h * h * c2[s, node], Rv + mu0 * h * c1[s, node]
+            Wd[k + 1, node], Wv[k + 1, node] = R, Rv
+    for j in range(w.size):
+        g = a2[j] * h
+        iw = 1.0 / w[j]
+        for node in range(4):
+            y = 0.0 + 0.0j
+            for k in range(3):
+                y = e[j] * (y + g * Gw[1 + k if k < 2 else 0, node, j])
+                Wd[k + 1, node] += y.imag * iw
+                Wv[k + 1, node] += y.real
+    return Wd, Wv
+
+
+@njit(**_JIT)
+def backward_weights(e, a2, h, Gw, w):
+    """Rows (13, modes) for :func:`stride`: e^{i theta}, B_0, B_1, B_2, B_2 + e^{i theta} B_3,
+    B_3 (real and imaginary rows each) and 1 / omega (B_r = e^{i theta} a^2 h G_r, backward
+    stencil)."""
+    nm = w.size
+    out = np.empty((13, nm))
+    for j in range(nm):
+        g = e[j] * a2[j] * h
+        b2, b3 = g * Gw[0, 2, j], g * Gw[0, 3, j]
+        rows = (e[j], g * Gw[0, 0, j], g * Gw[0, 1, j], b2, b2 + e[j] * b3, b3)
+        for k in range(6):
+            out[2 * k, j], out[2 * k + 1, j] = rows[k].real, rows[k].imag
+        out[12, j] = 1.0 / w[j]
+    return out
+
+
+@njit(inline="always", **_JIT)
+def stride(Y, Bw, f, first):
+    """States Y (2, modes: real, imaginary) over one backward step whose earlier nodes carry
+    forces f = (F_{m-3}, F_{m-2}, F_{m-1}), without node m's own weight (``first``: Y holds
+    node m - 1's; else it too was left out); returns the modes' delta and delta' at node m."""
+    f0, f1, f2 = f
+    k2 = 6 if first else 8
+    nm = Y.shape[1]
+    for j in range(nm):
+        yr, yi = Y[0, j], Y[1, j]
+        er, ei = Bw[0, j], Bw[1, j]
+        Y[0, j] = er * yr - ei * yi + Bw[2, j] * f0 + Bw[4, j] * f1 + Bw[k2, j] * f2
+        Y[1, j] = er * yi + ei * yr + Bw[3, j] * f0 + Bw[5, j] * f1 + Bw[k2 + 1, j] * f2
+    d0, d1, v0, v1 = 0.0, 0.0, 0.0, 0.0  # two fixed partial sums: the same bits in any batch
+    half = nm // 2
+    for j in range(half):
+        d0 += Y[1, 2 * j] * Bw[12, 2 * j]
+        d1 += Y[1, 2 * j + 1] * Bw[12, 2 * j + 1]
+        v0 += Y[0, 2 * j]
+        v1 += Y[0, 2 * j + 1]
+    if nm % 2:
+        d0 += Y[1, nm - 1] * Bw[12, nm - 1]
+        v0 += Y[0, nm - 1]
+    return d0 + d1, v0 + v1

@@ -142,7 +142,8 @@ def march(
             zc = q[pos]
             z_base = Z[:, m - 1] + vals @ q - zc * vals[:, pos]
         start = (D[:, m - 1], V[:, m - 1])
-        Fm, zm = solve_step(law, A, B, kd0, kv0, guess, Z[:, m - 1], z_base, zc, h, scale, start)
+        states = (Z[:, m - 1], z_base, zc)
+        Fm, zm = solve_step(law, (A, B, kd0, kv0), guess, states, h, scale, start)
         d, v = A - kd0 * Fm, B - kv0 * Fm
         if memory:
             zm = np.maximum(Z[:, m - 1], turn_max(D[:, m - 1], V[:, m - 1], d, v, h))

@@ -75,24 +75,22 @@ def cubic_root(values: np.ndarray, offsets: tuple[int, ...]) -> np.ndarray:
 
 def solve_step(
     law: ContactLaw,
-    A: np.ndarray,
-    B: np.ndarray,
-    kd0: np.ndarray,
-    kv0: np.ndarray,
+    linear: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray],
     guess: np.ndarray,
-    z_prev: np.ndarray,
-    z_base: np.ndarray,
-    zc: float,
+    states: tuple[np.ndarray, np.ndarray, float],
     h: float,
     scale: np.ndarray,
     start: tuple[np.ndarray, np.ndarray],
 ) -> tuple[np.ndarray, np.ndarray]:
     """Newton on F (and an ODE state z) at one node for every case.
 
-    delta = A - kd0 F, delta' = B - kv0 F; an ODE state obeys z = z_base + zc g(delta, delta', z);
-    a memory state is max(z_prev, the step's largest delta) (``start`` = delta, delta' at the
-    step's start).
+    ``linear`` = (A, B, kd0, kv0): delta = A - kd0 F, delta' = B - kv0 F; ``states`` = (z_prev,
+    z_base, zc): an ODE state obeys z = z_base + zc g(delta, delta', z); a memory state is
+    max(z_prev, the step's largest delta) (``start`` = delta, delta' at the step's start).
+    ``guess``: the starting F [N]; ``h`` the step [s]; ``scale`` the force scale [N].
     """
+    A, B, kd0, kv0 = linear
+    z_prev, z_base, zc = states
     F = guess.copy()
     ode = law.state == "ode"
     memory = law.state == "memory"

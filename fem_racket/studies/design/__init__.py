@@ -5,8 +5,9 @@ Modules: :mod:`.zone` (impact zone), :mod:`.swing` (a player's swing for any rac
 :mod:`.variables` (variables, constraints), :mod:`.problem` (the design problem), :mod:`.layout`
 (its parameter vector and unit box), :mod:`.description` (its description and digest),
 :mod:`.variable_groups` (the variables of each group), :mod:`.paper_problem` (a problem on a
-segmented racket), :mod:`.build` (a problem from plain settings), :mod:`.impacts` (the impact
-calls), :mod:`.objectives`,
+segmented racket), :mod:`.build` (a problem from plain settings), :mod:`.cases` (a design's
+impacts as
+problems), :mod:`.impacts` (where they are solved), :mod:`.objectives`,
 :mod:`.history`, :mod:`.evaluate` (batches on the executors), :mod:`.scaling` (the problem as
 solvers see it), :mod:`.solvers` (scipy), :mod:`.pareto` (NSGA-II), :mod:`.result`,
 :mod:`.sensitivity` (Sobol), :mod:`.report` (mass properties, modes, maps, sweet spots). Files and

@@ -1,7 +1,10 @@
 """A design problem from plain settings (the CLI's options, a run file's ``[design]`` table).
 
-``design_problem(start=None, objectives=("cor",), mass=("start",), ...)`` builds a
-:class:`~.problem.DesignProblem` on the starting racket: each constraint is ``None`` (absent), a
+``build_problem(start, DesignOptions(...))`` (or ``design_problem(start, objectives=("cor",),
+constraints={"mass_kg": ("start",)}, ...)`` with the options' fields as flat keywords, checked
+by :meth:`.options.DesignOptions.from_keywords`) builds a
+:class:`~.problem.DesignProblem` on the starting racket (:mod:`.options`): each constraint is
+``None`` (absent), a
 ``(low, high)`` pair, or ``("start",)`` (equal to the starting racket's value: "keep its mass");
 the zone is ``"uniform"`` over ``zone_range`` or ``"node"``, a Gaussian about the starting
 racket's mode-1 node on the string face (Hatze 1994). ``ei_points`` / ``rhoa_points`` (control
@@ -14,31 +17,26 @@ stiffness (the factor on K_CB for the paper's linear law, k_s of the series law,
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
-from fem_racket.impact.held.shock import DEFAULT_WINDOW
+from fem_racket.studies.design.options import DesignOptions, VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.problem import DesignProblem
-from fem_racket.studies.design.swing import (
-    SWING_EXPONENT,
-    SWING_WEIGHT_AXIS,
-    SwingModel,
-    mass_quantities,
-)
+from fem_racket.studies.design.swing import SwingModel, mass_quantities
 from fem_racket.studies.design.variables import QUANTITIES, Constraint
 from fem_racket.studies.design.zone import gaussian_zone, uniform_zone
 from fem_racket.validation import InputError, check_choice
 
-__all__ = ["ZONES", "design_problem", "mode1_node"]
+__all__ = ["ZONES", "build_problem", "design_problem", "mode1_node"]
 
 ZONES = ("uniform", "node")
 
@@ -71,44 +69,14 @@ def _pair(name: str, value: Sequence[float]) -> tuple[float, float]:
     return float(value[0]), float(value[1])
 
 
-def design_problem(
-    start: Frame | FrameMesh | None = None,
-    *,
-    objectives: Sequence[str] = ("cor",),
-    boundaries: Sequence[float] = (0.3, 0.5333333333333333, 0.7666666666666667),
-    vary: Sequence[str] = ("ei", "rhoa"),
-    link_ei: bool = False,
-    ei_bounds: Sequence[float] = (50.0, 3000.0),
-    rhoa_bounds: Sequence[float] = (0.2, 1.2),
-    mass_positions: Sequence[float] = (),
-    mass_bounds: Sequence[float] = (0.0, 0.03),
-    mass_width: float = 0.02,
-    ei_points: Sequence[float] = (),
-    rhoa_points: Sequence[float] = (),
-    interpolation: str = "pchip",
-    position_bounds: Sequence[float] = (0.0, 1.0),
-    mass_start: float = 0.0,
-    law: ContactLaw | None = None,
-    string_bounds: Sequence[float] | None = None,
-    cubic_bounds: Sequence[float] | None = None,
-    zone: str = "uniform",
-    zone_range: Sequence[float] = (0.6, 0.9),
-    zone_points: int = 20,
-    zone_sigma: float = 0.05,
-    speeds: Sequence[float] = (20.0, 30.0, 40.0),
-    racket_speed: float | None = None,
-    reference: float = 0.75,
-    pivot: float = SWING_WEIGHT_AXIS,
-    swing_exponent: float = SWING_EXPONENT,
-    constraints: dict[str, Sequence[Any] | None] | None = None,
-    stiffness_cost: float = 0.0,
-    power_fraction: float = 0.9,
-    ball_mass: float | None = None,
-    zeta: float | None = None,
-    elements: int = 20,
-    grip: str = "loose",
-    shock_window: float = DEFAULT_WINDOW,
-) -> DesignProblem:
+def design_problem(start: Frame | FrameMesh | None = None, **options: Any) -> DesignProblem:
+    """:func:`build_problem` with the fields of :class:`.options.DesignOptions`' groups as
+    keywords (``objectives=("cor",)``, ``zone_points=20``, ``law=...``; an unknown one is
+    refused naming the nearest)."""
+    return build_problem(start, DesignOptions.from_keywords(**options))
+
+
+def build_problem(start: Frame | FrameMesh | None, options: DesignOptions) -> DesignProblem:
     """Build a design problem; see the module docstring and :func:`.paper_problem.paper_problem`.
 
     Parameters
@@ -116,35 +84,18 @@ def design_problem(
     start : Frame or FrameMesh, optional
         The starting racket (the paper's when None); a mesh is read as its piecewise-uniform
         frame.
-    ei_points, rhoa_points : sequence of float
-        Control stations x/L of smooth EI(x), rhoA(x) profiles (first 0, last 1); empty: one
-        value per segment.
-    position_bounds : (float, float)
-        Bounds x/L of every added mass's centre when ``vary`` has "position".
-    mass_start : float
-        Starting value of every added mass [kg] (0: the starting racket as it is).
-    law : ContactLaw, optional
-        The ball/string law; the paper's linear law when None.
-    string_bounds, cubic_bounds : (float, float), optional
-        Bounds of the string-bed variables (see :func:`.paper_problem.paper_problem`).
-    racket_speed : float, optional
-        Swing: the reference point's speed towards the ball with the starting racket [m/s]
-        (:class:`.swing.SwingModel`); a stationary racket when None.
-    grip : {"loose", "firm"}
-        The hand of the handle-shock objectives (:data:`fem_racket.frame.hand.GRIPS`).
-    constraints : dict, optional
-        Quantity name (:data:`.variables.QUANTITIES`) -> None, ``(low, high)`` or ``("start",)``.
-    Other parameters
-        As the fields of :class:`.problem.DesignProblem` and :func:`.paper_problem.paper_problem`.
+    options : DesignOptions
+        The variables, zone, ball and swing, objectives and constraints, law and mesh.
     """
-    check_choice("zone", zone, ZONES)
-    check_choice("grip", grip, tuple(GRIPS))
+    z, goals, elements = options.zone_options, options.goals, options.elements
+    check_choice("zone", z.zone, ZONES)
+    check_choice("grip", goals.grip, tuple(GRIPS))
     frame = standard_frame() if start is None else start
     if isinstance(frame, FrameMesh):
         frame = frame_from_mesh(frame)
     base = _start_values(frame, elements)
     cons = []
-    for name, value in (constraints or {}).items():
+    for name, value in (goals.constraints or {}).items():
         check_choice("constraint", name, tuple(QUANTITIES))
         if value is None:
             continue
@@ -152,47 +103,55 @@ def design_problem(
             cons.append(Constraint(name, base[name], base[name]))
         else:
             cons.append(Constraint(name, *_pair(name, value)))
-    if zone == "uniform":
-        lo, hi = _pair("zone range", zone_range)
-        z = uniform_zone(lo, hi, zone_points)
+    if z.zone == "uniform":
+        lo, hi = _pair("zone range", z.zone_range)
+        zone = uniform_zone(lo, hi, z.zone_points)
     else:
-        z = gaussian_zone(mode1_node(frame, elements), zone_sigma, zone_points)
+        zone = gaussian_zone(mode1_node(frame, elements), z.zone_sigma, z.zone_points)
     swing = None
-    if racket_speed is not None:
-        swing = SwingModel(racket_speed, reference, pivot, swing_exponent)
-    extra: dict[str, Any] = {}
-    if ball_mass is not None:
-        extra["ball_mass"] = ball_mass
-    if zeta is not None:
-        extra["zeta"] = zeta
+    if z.racket_speed is not None:
+        swing = SwingModel(z.racket_speed, z.reference, z.pivot, z.swing_exponent)
+    ball = {k: v for k, v in (("ball_mass", z.ball_mass), ("zeta", z.zeta)) if v is not None}
     return paper_problem(
-        start=frame,
-        boundaries=tuple(boundaries),
-        vary=tuple(vary),
-        ei_bounds=_pair("ei bounds", ei_bounds),
-        rhoa_bounds=_pair("rhoa bounds", rhoa_bounds),
-        mass_positions=tuple(mass_positions),
-        mass_bounds=_pair("mass bounds", mass_bounds),
-        link_ei=link_ei,
-        mass_width=mass_width,
-        ei_points=tuple(ei_points),
-        rhoa_points=tuple(rhoa_points),
-        interpolation=interpolation,
-        position_bounds=_pair("position bounds", position_bounds),
-        mass_start=mass_start,
-        law=law,
-        string_bounds=None if string_bounds is None else _pair("string bounds", string_bounds),
-        cubic_bounds=None if cubic_bounds is None else _pair("cubic bounds", cubic_bounds),
-        zone=z,
-        speeds=tuple(float(v) for v in speeds),
+        frame,
+        _checked_variables(options.variables),
+        options.law,
+        zone=zone,
+        speeds=tuple(float(v) for v in z.speeds),
         swing=swing,
         constraints=tuple(cons),
-        objectives=tuple(objectives),
-        stiffness_cost=stiffness_cost,
-        power_fraction=power_fraction,
+        objectives=tuple(goals.objectives),
+        stiffness_cost=goals.stiffness_cost,
+        power_fraction=goals.power_fraction,
         elements=elements,
-        hand=GRIPS[grip],
-        shock_window=shock_window,
-        **extra,
+        hand=GRIPS[goals.grip],
+        shock_window=goals.shock_window,
+        **ball,
         region=np.linspace(0.5, 0.98, 25),
+    )
+
+
+def _checked_variables(v: VariableOptions) -> VariableOptions:
+    """``v`` with every bounds pair checked (LOW < HIGH) and the sequences as tuples."""
+
+    def pair(name: str, value: Sequence[float] | None) -> tuple[float, float] | None:
+        return None if value is None else _pair(name.replace("_", " "), value)
+
+    return replace(
+        v,
+        **{
+            name: pair(name, getattr(v, name))
+            for name in (
+                "ei_bounds",
+                "rhoa_bounds",
+                "mass_bounds",
+                "position_bounds",
+                "string_bounds",
+                "cubic_bounds",
+            )
+        },
+        **{
+            name: tuple(getattr(v, name))
+            for name in ("boundaries", "vary", "mass_positions", "ei_points", "rhoa_points")
+        },
     )

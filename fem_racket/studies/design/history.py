@@ -30,7 +30,14 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.studies.checkpoint import LOCK_NAME, acquire_lock, checksum, write_atomic
+from fem_racket.studies.checkpoint import (
+    LOCK_NAME,
+    acquire_lock,
+    checksum,
+    make_folder,
+    stored_digest,
+    write_atomic,
+)
 from fem_racket.validation import InputError, show_path
 
 __all__ = ["History"]
@@ -112,13 +119,9 @@ class History:
         self._locked = False
         if self.folder is None:
             return
-        try:
-            self.folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise InputError(
-                f"history = {show_path(self.folder)} is not allowed: it cannot be made "
-                f"({exc.strerror})"
-            ) from None
+        make_folder(
+            self.folder, f"history = {show_path(self.folder)} is not allowed: it cannot be made"
+        )
         _lock(self.folder)
         self._locked = True
         # released when the history is closed, or forgotten (an evaluator a script drops)
@@ -132,23 +135,8 @@ class History:
 
     def _prepare(self, description: dict[str, Any] | None, restart: bool) -> None:
         """Remove stale temporaries (everything with ``restart``); check ``problem.json``."""
-        for entry in self.folder.iterdir():
-            if entry.name.startswith(".tmp-") or (restart and entry.name != LOCK_NAME):
-                (shutil.rmtree if entry.is_dir() else Path.unlink)(entry)
         meta = self.folder / META_NAME
-        stored = None
-        if meta.exists():
-            try:
-                stored = json.loads(meta.read_text())["digest"]
-                if not isinstance(stored, str):
-                    raise TypeError("digest is not a string")
-            except (OSError, ValueError, KeyError, TypeError) as exc:
-                log.warning(
-                    "history file %s is damaged (%s): rewritten; every batch is checked on its own",
-                    show_path(meta),
-                    " ".join(str(exc).split())[:80] or type(exc).__name__,
-                )
-                stored = None
+        stored = stored_digest(self.folder, meta, restart, "history", "batch")
         if stored is not None and stored != self.digest:
             raise InputError(
                 f"history = '{self.folder}' belongs to a different design problem: rerun "

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.series import SeriesBallString
+from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.variables import Variable
 from fem_racket.validation import InputError
 
@@ -22,61 +23,46 @@ VARY = ("ei", "rhoa", "mass", "position", "string", "string_cubic")
 
 
 def design_variables(
-    vary: tuple[str, ...],
-    *,
-    n_ei: int,
-    n_rhoa: int,
-    n_masses: int,
-    link_ei: bool,
-    link_rhoa: bool,
-    ei_bounds: tuple[float, float],
-    rhoa_bounds: tuple[float, float],
-    mass_bounds: tuple[float, float],
-    position_bounds: tuple[float, float],
-    mass_width: float,
+    options: VariableOptions,
+    layout: tuple[int, int, int],
+    length: float,
     law: ContactLaw | None,
     law_start: list[float],
-    string_bounds: tuple[float, float] | None,
-    cubic_bounds: tuple[float, float] | None,
 ) -> list[Variable]:
-    """The variables of the groups in ``vary``, in the order of the parameter vector.
+    """The variables of the groups in ``options.vary``, in the order of the parameter vector.
 
     Parameters
     ----------
-    vary : tuple of str
-        Groups from :data:`VARY`.
-    n_ei, n_rhoa, n_masses : int
+    options : VariableOptions
+        The groups varied (:data:`VARY`), linked EI or rhoA, the bounds of every EI [N m^2],
+        rhoA [kg/m], added mass [kg], centre [x/L] and string-bed variable (None: 0.5-2 and
+        0-2 times the start), the added masses' strip width [m] (narrows the centres' bounds).
+    layout : (int, int, int)
         Numbers of EI and rhoA entries and of added masses in the parameter vector.
-    link_ei, link_rhoa : bool
-        One EI (rhoA) variable, EI_1 (rhoA_1), the others keeping their starting ratios.
-    ei_bounds, rhoa_bounds, mass_bounds, position_bounds : (float, float)
-        Bounds of every EI [N m^2], rhoA [kg/m], added mass [kg] and centre [x/L].
-    mass_width : float
-        Width of each added mass's strip [x/L] (narrows ``position_bounds``).
+    length : float
+        Length L of the frame [m].
     law : ContactLaw or None
         The ball/string law (None: the paper's linear law).
     law_start : list of float
         The starting values of the law's entries of p.
-    string_bounds, cubic_bounds : (float, float) or None
-        Bounds of the string-bed variables (None: 0.5-2 and 0-2 times the start).
     """
-    n, r, a = n_ei, n_rhoa, n_masses
+    o, (n, r, a) = options, layout
     variables: list[Variable] = []
-    if "ei" in vary:
-        if link_ei:
-            variables.append(Variable("ei", 0, *ei_bounds, "N m^2", log=True))
+    if "ei" in o.vary:
+        if o.link_ei:
+            variables.append(Variable("ei", 0, *o.ei_bounds, "N m^2", log=True))
         else:
-            variables += [Variable(f"ei_{k + 1}", k, *ei_bounds, "N m^2", True) for k in range(n)]
-    if "rhoa" in vary and link_rhoa:
-        variables.append(Variable("rhoa", n, *rhoa_bounds, "kg/m"))
-    elif "rhoa" in vary:
-        variables += [Variable(f"rhoa_{k + 1}", n + k, *rhoa_bounds, "kg/m") for k in range(r)]
-    if "mass" in vary:
-        variables += [Variable(f"mass_{k + 1}", n + r + k, *mass_bounds, "kg") for k in range(a)]
-    if "position" in vary:
-        bounds = _strip_bounds(position_bounds, mass_width)
+            variables += [Variable(f"ei_{k + 1}", k, *o.ei_bounds, "N m^2", True) for k in range(n)]
+    if "rhoa" in o.vary and o.link_rhoa:
+        variables.append(Variable("rhoa", n, *o.rhoa_bounds, "kg/m"))
+    elif "rhoa" in o.vary:
+        variables += [Variable(f"rhoa_{k + 1}", n + k, *o.rhoa_bounds, "kg/m") for k in range(r)]
+    if "mass" in o.vary:
+        variables += [Variable(f"mass_{k + 1}", n + r + k, *o.mass_bounds, "kg") for k in range(a)]
+    if "position" in o.vary:
+        bounds = _strip_bounds(o.position_bounds, o.mass_width / length)
         variables += [Variable(f"pos_{k + 1}", n + r + a + k, *bounds, "x/L") for k in range(a)]
-    variables += _law_variables(vary, law, law_start, n + r + 2 * a, string_bounds, cubic_bounds)
+    variables += _law_variables(o, law, law_start, n + r + 2 * a)
     return variables
 
 
@@ -90,16 +76,12 @@ def _strip_bounds(bounds: tuple[float, float], width: float) -> tuple[float, flo
 
 
 def _law_variables(
-    vary: tuple[str, ...],
-    law: ContactLaw | None,
-    start: list[float],
-    index: int,
-    string_bounds: tuple[float, float] | None,
-    cubic_bounds: tuple[float, float] | None,
+    options: VariableOptions, law: ContactLaw | None, start: list[float], index: int
 ) -> list[Variable]:
     """The string-bed variables: K_CB factor (linear law) or k_s, k_3 (series law)."""
     out: list[Variable] = []
     series = isinstance(law, SeriesBallString)
+    vary, string_bounds, cubic_bounds = options.vary, options.string_bounds, options.cubic_bounds
     if "string" in vary:
         if law is not None and not series:
             raise InputError(

@@ -12,7 +12,7 @@ from fem_racket.contact.presets import PRESETS
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
-from fem_racket.impact.law_impact import receptance, solve_law_impact
+from fem_racket.impact.law_impact import LawOptions, receptance, solve_law_impact
 
 LAWS = {
     "hunt-crossley": HuntCrossley.from_cor(8e16, 9.0, 0.83, 30.0),
@@ -84,8 +84,9 @@ def test_hunt_crossley_flores_cor():
 def _cvode_reference(model, law):
     """The reference run: CVODE (rtol 1e-11, atol 1e-14) at 0.75 L, 30 m/s, ends only."""
     return solve_law_impact(
-        law, model, 0.75, 0.057, 30.0, solver="cvode", output_step=None, rtol=1e-11, atol=1e-14
-    )
+        law, model, 0.75, 0.057, 30.0,
+        options=LawOptions("cvode", output_step=None, rtol=1e-11, atol=1e-14),
+    )  # fmt: skip
 
 
 @pytest.mark.parametrize("name", LAWS)
@@ -94,7 +95,9 @@ def test_general_matches_cvode(standard_model, name):
     # integrator at its defaults is within the benchmark target 1e-5 (measured 5e-8 ... 8e-6)
     law = LAWS[name]
     ref = _cvode_reference(standard_model, law)
-    fast = solve_law_impact(law, standard_model, 0.75, 0.057, 30.0, output_step=None)
+    fast = solve_law_impact(
+        law, standard_model, 0.75, 0.057, 30.0, options=LawOptions(output_step=None)
+    )
     assert fast.ball_velocity[-1] / 30.0 == pytest.approx(ref.ball_velocity[-1] / 30.0, abs=1e-5)
     assert fast.t[-1] == pytest.approx(ref.t[-1], rel=1e-5)
 
@@ -127,18 +130,8 @@ def test_energy_balance_and_momentum(standard_model, name, solver):
     # resolves them. Hence tolerance None (every mode, 800 steps).
     # Its momentum is exact (one impulse drives ball and frame).
     law = LAWS[name]
-    run = solve_law_impact(
-        law,
-        standard_model,
-        0.75,
-        0.057,
-        30.0,
-        solver=solver,
-        output_step=1e-6,
-        rtol=1e-10,
-        atol=1e-13,
-        tolerance=None,
-    )
+    options = LawOptions(solver, output_step=1e-6, rtol=1e-10, atol=1e-13, tolerance=None)
+    run = solve_law_impact(law, standard_model, 0.75, 0.057, 30.0, options=options)
     work, loss = _energy_terms(standard_model, law, run)
     assert work == pytest.approx(loss, rel=1e-6)
     p = 0.057 * run.ball_velocity + run.modal_velocity[:, 0] * math.sqrt(standard_model.props.mass)

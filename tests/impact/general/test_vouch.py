@@ -28,7 +28,7 @@ from fem_racket.impact.general.batches import stack_laws, stack_receptances
 from fem_racket.impact.general.compiled import kernel_law, march_compiled
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.march import march
-from fem_racket.impact.law_impact import receptance, solve_law_impact
+from fem_racket.impact.law_impact import LawOptions, receptance, solve_law_impact
 from fem_racket.validation import AccuracyError
 
 #: CVODE's own COR error at rtol 1e-10 (measured against rtol 1e-12: <= 2e-9 on these laws).
@@ -43,10 +43,8 @@ def model10() -> FrameModel:
 
 
 def _cvode_cor(law, model, position, speed):
-    run = solve_law_impact(
-        law, model, position, 0.057, speed, solver="cvode", output_step=None, rtol=1e-10,
-        atol=1e-13,
-    )  # fmt: skip
+    options = LawOptions("cvode", output_step=None, rtol=1e-10, atol=1e-13)
+    run = solve_law_impact(law, model, position, 0.057, speed, options=options)
     return -run.ball_velocity[-1] / speed
 
 
@@ -168,3 +166,36 @@ def test_no_energy_is_created(standard_model):
     out = solve_general(law, receptance(standard_model, [0.6, 0.9], 0.057), np.array([20.0, 40.0]))
     assert np.all(np.abs(out.ball_velocity) <= np.array([20.0, 40.0]))
     assert math.isfinite(out.ball_velocity[0])
+
+
+@pytest.mark.parametrize(
+    "law",
+    [
+        PRESETS["kawazoe-1997-nonlinear"],
+        PRESETS["itf-ball"],
+        get_law("hunt-crossley"),
+        HuntCrossley(5e4, 1.0, 0.0),
+        Hysteretic.from_cor(5e4, 0.83, 1.0),
+        get_law("series"),
+        LinearContact(5e4, 0.0592),
+    ],
+    ids=[
+        "kawazoe",
+        "itf-ball",
+        "hunt-crossley",
+        "hunt-crossley-n1",
+        "hysteretic-n1",
+        "series",
+        "linear",
+    ],  # fmt: skip
+)
+def test_every_law_batched_across_frames_meets_1e_6(model10, law):
+    # issue 27's target: every law (exponent n = 1 included) at COR error <= 1e-6 against CVODE
+    # when batched, the cases of two frames (EI x 1 and x 0.4) in one compiled call
+    soft = model10.scaled(0.4)
+    recs = [receptance(model10, [0.6, 0.9], 0.057), receptance(soft, [0.6, 0.9], 0.057)]
+    speeds = np.array([20.0, 40.0, 40.0, 20.0])
+    out = solve_general(law, stack_receptances(recs), speeds)
+    for i, (frame, x) in enumerate([(model10, 0.6), (model10, 0.9), (soft, 0.6), (soft, 0.9)]):
+        ref = _cvode_cor(law, frame, x, speeds[i])
+        assert -out.ball_velocity[i] / speeds[i] == pytest.approx(ref, abs=1e-6 + CVODE_COR)

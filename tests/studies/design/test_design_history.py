@@ -15,6 +15,7 @@ import pytest
 from fem_racket.cli import main
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import output_names
+from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.variables import Constraint
@@ -24,7 +25,7 @@ CENTRE = np.array([0.3, 0.6, 0.45, 0.7])
 
 
 def planted(problem, designs):
-    """Synthetic outputs (tests/studies/test_design.py): "mass" = sum of unit coordinates,
+    """Synthetic outputs (tests/studies/design/test_design.py): "mass" = sum of unit coordinates,
     cor = 1 - |u - CENTRE|^2, the other quantities 0."""
     u = problem.to_unit(designs)
     names = output_names(problem)
@@ -36,7 +37,10 @@ def planted(problem, designs):
 
 def problem(**kwargs):
     return paper_problem(
-        boundaries=(0.3,), constraints=(Constraint("mass_kg", high=1.5),), **kwargs
+        None,
+        VariableOptions(boundaries=(0.3,)),
+        constraints=(Constraint("mass_kg", high=1.5),),
+        **kwargs,
     )
 
 

@@ -7,6 +7,7 @@ import pytest
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_rows
+from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.report import racket_report
 from fem_racket.studies.design.solvers import SETTLED, optimize
@@ -19,7 +20,8 @@ ZONE = uniform_zone(0.6, 0.9, 7)
 
 def test_every_constraint_holds_at_the_optimum():
     p = paper_problem(
-        boundaries=(0.3,),
+        None,
+        VariableOptions(boundaries=(0.3,)),
         speeds=(30.0,),
         zone=uniform_zone(0.6, 0.9, 5),
         constraints=(
@@ -38,17 +40,11 @@ def test_every_constraint_holds_at_the_optimum():
 def saturation_ei(speed, cost):
     """EI1* of the stiffness-priced optimum (EI2 = 0.88 EI1, as Fig 13) and the e_A gain of
     raising EI1 from there to the paper's 'rigid' 9999 N m^2."""
-    kw = dict(
-        boundaries=(0.3,),
-        vary=("ei",),
-        link_ei=True,
-        ei_bounds=(50.0, 9999.0),
-        speeds=(speed,),
-        zone=ZONE,
-    )
-    priced = paper_problem(stiffness_cost=cost, **kw)
+    v = VariableOptions(boundaries=(0.3,), vary=("ei",), link_ei=True, ei_bounds=(50.0, 9999.0))
+    kw = dict(speeds=(speed,), zone=ZONE)
+    priced = paper_problem(None, v, stiffness_cost=cost, **kw)
     r = optimize(priced, evaluator=Evaluator(priced, backend="serial"), progress=False)
-    plain = paper_problem(**kw)
+    plain = paper_problem(None, v, **kw)
     cor = evaluate_rows(plain, np.array([r.x, [9999.0]]))[:, -1]
     return float(r.x[0]), float(cor[1] - cor[0])
 
@@ -71,9 +67,8 @@ def test_tip_mass_raises_ball_speed_and_moves_max_power_tipward():
     moves the point of maximum ball speed toward the tip; here with the swing slowing as
     I^-0.27 (Cross & Bower 2006)."""
     p = paper_problem(
-        boundaries=(0.3,),
-        vary=("mass",),
-        mass_positions=(1.0,),
+        None,
+        VariableOptions(boundaries=(0.3,), vary=("mass",), mass_positions=(1.0,)),
         speeds=(20.0,),
         swing=SwingModel(20.0),
         objectives=("ball_speed",),
@@ -94,10 +89,8 @@ def test_best_total_mass_is_inside_its_bounds():
     peaks at m_B/M_eff = 0.27/0.73, a finite mass. Scaling the paper racket's mass (0.155-0.78 kg)
     for a serve-like impact (ball at 5 m/s, racket at 30 m/s) the optimum lies inside."""
     p = paper_problem(
-        boundaries=(0.3,),
-        vary=("rhoa",),
-        link_rhoa=True,
-        rhoa_bounds=(0.3, 1.5),
+        None,
+        VariableOptions(boundaries=(0.3,), vary=("rhoa",), link_rhoa=True, rhoa_bounds=(0.3, 1.5)),
         speeds=(5.0,),
         swing=SwingModel(30.0),
         objectives=("ball_speed",),

@@ -10,7 +10,7 @@ import pytest
 from fem_racket.cli import main
 from fem_racket.io.mesh_files import read_mesh
 
-SCRIPTS = Path(__file__).resolve().parents[2] / "scripts"
+SCRIPTS = Path(__file__).resolve().parents[3] / "scripts"
 SMALL = ["--boundaries", "0.3", "--speeds", "30", "--zone-points", "3", "--backend", "serial"]
 
 
@@ -114,27 +114,6 @@ def test_sensitivity_json(tmp_path, capsys):
     data = json.loads(capsys.readouterr().out)
     assert set(data["indices"]) == {"ei_1", "ei_2"}
     assert png.is_file() and json.loads(Path(str(png) + ".json").read_text())["provenance"]
-
-
-@pytest.mark.parametrize(
-    ("argv", "needle"),
-    [
-        (["optimize", "--vary", "stiffness"], "vary"),
-        (["optimize", "--objective", "speed"], "objective"),
-        (["optimize", "--mass-range", "0.4,0.3"], "mass"),
-        (["optimize", "--zone-range", "0.9,0.6"], "zone"),
-        (["optimize", "--speeds", "200"], "speed"),
-        (["optimize", "--ei-bounds", "0,100"], "ei_1 bounds"),
-        (["optimize", "--vary", "mass", "--mass-positions", "1.2"], "mass position"),
-        (["optimize", "--method", "nsga2"], "objectives"),
-        (["sensitivity", "--output", "nothing", "--designs", "4"], "output"),
-    ],
-)
-def test_bad_input_exits_2(argv, needle, capsys, tmp_path):
-    assert main([*argv, "--out", str(tmp_path / "x")]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and needle in err
-    assert not any(tmp_path.iterdir())  # refused before anything was written
 
 
 def test_bench_design_quick(capsys):

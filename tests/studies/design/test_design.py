@@ -7,6 +7,7 @@ import pytest
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.objectives import evaluate_rows, output_names
+from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.sensitivity import sobol_indices
@@ -34,9 +35,9 @@ def planted(problem, designs):
     return out
 
 
-def small(**kwargs):
+def small(variables=None, **kwargs):
     """The paper's racket as 2 design segments (EI and rhoA free: 4 variables)."""
-    return paper_problem(boundaries=(0.3,), **kwargs)
+    return paper_problem(None, VariableOptions(boundaries=(0.3,), **(variables or {})), **kwargs)
 
 
 def test_start_racket_is_the_papers():
@@ -51,7 +52,7 @@ def test_start_racket_is_the_papers():
 
 
 def test_linked_variables_keep_the_starting_ratios():
-    p = small(vary=("ei", "rhoa"), link_ei=True, link_rhoa=True)
+    p = small({"vary": ("ei", "rhoa"), "link_ei": True, "link_rhoa": True})
     assert p.names == ["ei", "rhoa"]
     full = p.parameters(np.array([1000.0, 0.8]))
     assert full[1] / full[0] == pytest.approx(0.88, rel=1e-12)  # EI2 = 0.88 EI1 (paper 2.2)
@@ -59,7 +60,7 @@ def test_linked_variables_keep_the_starting_ratios():
 
 
 def test_unit_box_round_trip():
-    p = small(vary=("ei", "rhoa"))
+    p = small({"vary": ("ei", "rhoa")})
     x = np.array([[80.0, 2500.0, 0.3, 1.1]])
     assert np.allclose(p.from_unit(p.to_unit(x)), x, rtol=1e-13)
 
@@ -168,12 +169,17 @@ def test_swing_speed_law():
 
 
 @pytest.mark.parametrize(
-    "kwargs",
-    [{"boundaries": (0.5, 0.3)}, {"vary": ("stiffness",)}, {"objectives": ("speed",)}],
+    ("variables", "kwargs", "needle"),
+    [
+        ({"boundaries": (0.5, 0.3)}, {}, "boundaries"),
+        ({"vary": ("stiffness",)}, {}, "vary"),
+        ({}, {"objectives": ("speed",)}, "objective"),
+        ({}, {"speeds": (30.0,), "objective": ("cor",)}, "did you mean 'objectives'"),
+    ],
 )
-def test_bad_problem(kwargs):
-    with pytest.raises(InputError):
-        small(**kwargs) if "boundaries" not in kwargs else paper_problem(**kwargs)
+def test_bad_problem(variables, kwargs, needle):
+    with pytest.raises(InputError, match=needle):
+        paper_problem(None, VariableOptions(**variables), **kwargs)
 
 
 def test_process_pool_gives_the_serial_results():

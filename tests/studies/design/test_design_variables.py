@@ -1,6 +1,5 @@
 """Design variables beyond one value per segment: smooth EI(x), rhoA(x) by control points, added
-masses at free positions, the string bed's stiffness; the batched evaluation against the
-per-design one."""
+masses at free positions, the string bed's stiffness."""
 
 import numpy as np
 import pytest
@@ -14,10 +13,10 @@ from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import impacts
-from fem_racket.studies.design.batched import evaluate_batch
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
-from fem_racket.studies.design.objectives import evaluate_design, output_names
+from fem_racket.studies.design.objectives import evaluate_rows, output_names
+from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.report import design_maps
 from fem_racket.studies.design.solvers import optimize
@@ -29,7 +28,7 @@ STATIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 
 
 def outputs(problem, x):
-    return dict(zip(output_names(problem), evaluate_batch(problem, x[None])[0], strict=True))
+    return dict(zip(output_names(problem), evaluate_rows(problem, x[None])[0], strict=True))
 
 
 def test_linear_profile_mass_is_the_trapezoid_rule():
@@ -93,8 +92,8 @@ def test_planted_control_point_profile_recovered_to_1_percent():
     base = design_problem(ei_points=STATIONS, rhoa_points=(0.0, 0.5, 1.0))
     mass = mass_quantities(base.mesh(target))["mass"]
     p = paper_problem(
-        ei_points=STATIONS,
-        rhoa_points=(0.0, 0.5, 1.0),
+        None,
+        VariableOptions(ei_points=STATIONS, rhoa_points=(0.0, 0.5, 1.0)),
         constraints=(Constraint("mass_kg", mass, mass),),
     )
     r = optimize(
@@ -193,24 +192,6 @@ def test_series_string_stiffness_matches_simulate():
     np.testing.assert_allclose(m.apparent_cor[1:], cor, atol=2e-5)
 
 
-def test_batched_evaluation_matches_design_by_design():
-    """evaluate_batch (all designs' impacts in one engine call, every mode given) against
-    evaluate_design (one engine call per design, modes above 24 through static solves)."""
-    p = design_problem(
-        objectives=("cor", "ball_speed", "power_region"),
-        racket_speed=20.0,
-        vary=("ei", "rhoa", "mass", "position"),
-        mass_positions=(0.9,),
-        mass_start=0.01,
-        zone_points=5,
-    )
-    x = p.from_unit(np.random.default_rng(3).random((6, p.n_var)))
-    batch = evaluate_batch(p, x)
-    for i, xi in enumerate(x):
-        one = evaluate_design(p, xi)
-        assert batch[i] == pytest.approx([one[n] for n in output_names(p)], rel=1e-8, abs=1e-9)
-
-
 @pytest.mark.parametrize(
     ("kwargs", "needle"),
     [
@@ -220,6 +201,10 @@ def test_batched_evaluation_matches_design_by_design():
         ({"vary": ("position",), "mass_positions": (0.8,), "position_bounds": (-0.1, 1)}, "pos_1"),
         ({"vary": ("string_cubic",)}, "string_cubic"),
         ({"vary": ("string",), "law": get_law("hysteretic")}, "string"),
+        (
+            {"zone_point": 3},
+            "'zone_point' is not known to design_problem; did you mean 'zone_points'",
+        ),
     ],
 )
 def test_bad_new_variables(kwargs, needle):

@@ -1,0 +1,72 @@
+"""``fem-racket simulate`` with an incidence and a string bed: the oblique impact on the bed.
+
+The oblique options (:mod:`fem_racket.cli.options.oblique`) with any string option run the ball's
+own law on the bed for the normal impact (:func:`fem_racket.cli.options.strings.strung_from_args`)
+and the tangential contact over its force history (:func:`fem_racket.impact.oblique.
+solve_oblique`, called unchanged); printed and written as the oblique impact's, with the bed's
+rows. The strung racket is free and at rest, so ``--clamped`` and a stroke's face and path angles
+are refused in one line, as is a hand.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from fem_racket.cli.options.oblique import oblique_histories, oblique_rows
+from fem_racket.cli.options.output import (
+    print_json,
+    print_written,
+    run_parameters,
+    write_result_files,
+)
+from fem_racket.cli.options.strings import strung_from_args
+from fem_racket.cli.text import significant
+from fem_racket.impact.incidence import Incidence
+from fem_racket.outputs import provenance
+from fem_racket.strings.bed import StringBed
+from fem_racket.validation import InputError
+
+__all__ = ["run_strung_oblique"]
+
+#: Oblique options the strung racket (free, at rest) does not take.
+REFUSED = ("clamped", "face_angle", "path_angle")
+
+
+def run_strung_oblique(
+    args: argparse.Namespace, strings: StringBed, incidence: Incidence, hand: Any, model, files
+) -> int:
+    """The oblique impact of ``incidence`` on ``strings`` and the frame ``model``: run, write
+    ``--out`` (``files``: list of Path), print."""
+    if hand is not None:
+        raise InputError("a hand is not allowed with a string bed: give one of them")
+    for dest in REFUSED:
+        if getattr(args, dest, None):
+            raise InputError(
+                f"--{dest.replace('_', '-')} is not allowed with a string bed: the strung racket "
+                "is free and at rest"
+            )
+    result = strung_from_args(args, strings, model, incidence)
+    summary = {
+        **result.summary(),
+        "ball_law": "kawazoe-1997-ball" if args.law == "linear" else args.law,
+    }
+    if args.out:
+        meta = {**provenance(run_parameters(args)), "results": summary}
+        write_result_files(args, meta, summary, files, oblique_histories(result))
+    if args.json:
+        print_json(summary)
+        return 0
+    rows = [
+        *oblique_rows(summary),
+        ("string bed", f"{summary['pattern']} {summary['string']}", ""),
+        ("string tension", significant(summary["string_tension_n"], 4), "N"),
+        ("stringbed stiffness", significant(summary["stringbed_stiffness_n_m"], 4), "N/m"),
+        ("ball law", summary["ball_law"], ""),
+        ("solver", summary["solver"], ""),
+    ]
+    for name, value, unit in rows:
+        print(f"{name:<28} {value:>14} {unit}".rstrip())
+    print_written(Path(f) for f in files)
+    return 0

@@ -1,0 +1,146 @@
+"""The outcome of one impact on the strung racket (:func:`fem_racket.impact.strung_impact.
+strung_impact`): results, histories and the energy bookkeeping's totals.
+
+Every coordinate x of the strung racket's modal structure stores ``(x'^2 + omega^2 x^2) / 2``
+(the bed's coordinates the bed's energy relative to its edge, plus the strings' stretch
+potential when they stretch)::
+
+    ball's loss          m_B (V_B0^2 - v_B(t_c)^2) / 2    (= the work of the contact force on it)
+    energy to the racket E_frame(t_c) + E_bed(t_c)
+    lost in the ball     ball's loss - energy to the racket (the law's dissipation)
+    returned by the bed  max_t E_bed(t) - E_bed(t_c)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.law import ContactLaw
+from fem_racket.contact.linear import Ball
+from fem_racket.frame.model import FrameModel
+from fem_racket.impact.strung import StrungPoint
+
+__all__ = ["StrungImpact"]
+
+
+@dataclass(frozen=True, eq=False)
+class StrungImpact:
+    """An impact on the strung racket: results and histories (see the module docstring).
+
+    Attributes
+    ----------
+    cor : float
+        Apparent COR -v_B(t_c)/V_B0.
+    contact_time : float
+        t_c [s].
+    peak_force : float
+        Largest contact force [N].
+    t, ball_deflection, bed_deflection, force : ndarray
+        Times [s], the ball's compression (the law's deflection) [m], the bed's deflection at the
+        point relative to its edge [m] and the contact force [N].
+    ball_loss, racket_energy, bed_energy_left, bed_peak_energy : float
+        Energies [J] of the module docstring.
+    frame_momentum : float
+        Linear momentum of the frame at t_c [kg m/s] (its rigid translation).
+    point : StrungPoint
+        The structure used.
+    law : ContactLaw
+        The ball's law.
+    speed, ball_mass : float
+        V_B0 [m/s] and m_B [kg].
+    solver : str
+        The integrator that ran.
+    coordinates : ndarray, shape (nt, 1 + n)
+        u_B [m] and the structure's coordinates (:attr:`StrungPoint.omega` order) at ``t``.
+    rates : ndarray, shape (nt, 1 + n)
+        Their time derivatives (u_B' [m/s] first).
+    model : FrameModel or None
+        The frame (:func:`simulate_strung` sets it).
+
+    The attributes an oblique impact reads of its normal impact
+    (:func:`fem_racket.impact.oblique.free_normal`) are those of an
+    :class:`~fem_racket.impact.result.ImpactResult`: ``ball``, ``ball_velocity``,
+    ``ball_speed_out``, ``deflection`` (the ball law's, its compression) and ``contact`` (None:
+    no lumped K_CB; the normal stiffness of the tangential contact is then the ball law's secant
+    at its largest compression), ``model``, ``t`` and :meth:`summary`.
+    """
+
+    cor: float
+    contact_time: float
+    peak_force: float
+    t: np.ndarray
+    ball_deflection: np.ndarray
+    bed_deflection: np.ndarray
+    force: np.ndarray
+    ball_loss: float
+    racket_energy: float
+    bed_energy_left: float
+    bed_peak_energy: float
+    frame_momentum: float
+    point: StrungPoint
+    law: ContactLaw
+    speed: float
+    ball_mass: float
+    solver: str
+    coordinates: np.ndarray
+    rates: np.ndarray
+    model: FrameModel | None = None
+
+    @property
+    def ball(self) -> Ball:
+        """The ball (its mass)."""
+        return Ball(self.ball_mass)
+
+    @property
+    def ball_velocity(self) -> np.ndarray:
+        """u_B' at ``t`` [m/s] (towards the racket)."""
+        return self.rates[:, 0]
+
+    @property
+    def ball_speed_out(self) -> float:
+        """The ball's speed away from the racket after impact [m/s]."""
+        return -float(self.rates[-1, 0])
+
+    @property
+    def deflection(self) -> np.ndarray:
+        """The ball law's deflection (the ball's compression) at ``t`` [m]."""
+        return self.ball_deflection
+
+    @property
+    def contact(self) -> None:
+        """None: the ball's own law acts on the bed (no lumped K_CB)."""
+        return None
+
+    def summary(self) -> dict[str, Any]:
+        """The results, the bed and what the run used, JSON-ready, units in the keys."""
+        return {
+            "cor": self.cor,
+            "contact_time_s": self.contact_time,
+            "rebound_speed_m_s": self.cor * self.speed,
+            "peak_force_n": self.peak_force,
+            "position_x_over_l": self.point.position,
+            "speed_m_s": self.speed,
+            "ball_mass_kg": self.ball_mass,
+            "solver": self.solver,
+            **self.law.describe(),
+            **self.point.describe(),
+            "peak_bed_deflection_m": float(np.max(self.bed_deflection)),
+            "peak_ball_deflection_m": float(np.max(self.ball_deflection)),
+            "ball_energy_loss_j": self.ball_loss,
+            "energy_lost_in_ball_j": self.ball_loss - self.racket_energy,
+            "bed_energy_returned_j": self.bed_peak_energy - self.bed_energy_left,
+            "bed_energy_left_j": self.bed_energy_left,
+            "roll_rate_rad_s": self.roll_rate,
+        }
+
+    @property
+    def roll_rate(self) -> float:
+        """The racket's rigid roll rate about its long axis after impact [rad/s] (0 on the
+        axis): the roll coordinate's rate times its value per unit offset, 1/sqrt(I_p)."""
+        p = self.point
+        if p.rigid_count < 3:
+            return 0.0
+        return float(self.rates[-1, 3] * p.a[2] / p.lateral_m)

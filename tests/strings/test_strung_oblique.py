@@ -1,0 +1,77 @@
+"""An oblique, spinning ball on the strung racket: the tangential contact over the bed's normal
+force history (issue 26 item 3 with issue 25's bed)."""
+
+import math
+
+import pytest
+
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.simulate import simulate
+from fem_racket.strings.bed import StringBed
+
+V = 25.0
+ANGLE = 40.0
+SPIN = -3820.0  # rpm: backspin, as issue 26's "done when" example
+
+
+@pytest.fixture(scope="module")
+def head_on(standard_model):
+    v_n = V * math.cos(math.radians(ANGLE))
+    return simulate(standard_model, strings=StringBed(), position=0.76, speed=v_n)
+
+
+def _oblique(model, friction):
+    inc = Incidence(angle=ANGLE, spin=SPIN, friction=friction)
+    return simulate(model, strings=StringBed(), position=0.76, speed=V, incidence=inc)
+
+
+def test_frictionless_is_the_head_on_impact(standard_model, head_on):
+    # mu = 0: the spin is unchanged and the normal outcome is the head-on strung impact at the
+    # normal speed V cos(angle), exactly (issue 26 checks: 1e-12)
+    out = _oblique(standard_model, 0.0)
+    s = out.summary()
+    assert s["spin_out_rpm"] == SPIN and s["contact_regime"] == "slide"
+    assert s["cor"] == pytest.approx(head_on.cor, abs=1e-12)
+    assert s["contact_time_s"] == pytest.approx(head_on.contact_time, abs=1e-15)
+    assert s["stringbed_stiffness_n_m"] == head_on.point.bed_stiffness
+    v_t = V * math.sin(math.radians(ANGLE))
+    assert s["ball_speed_out_m_s"] == pytest.approx(math.hypot(head_on.ball_speed_out, v_t))
+
+
+def test_friction_turns_backspin_to_topspin_without_creating_energy(standard_model):
+    # mu = 0.4 (Cross 2003, ball on strings): the incoming backspin reverses to topspin, and the
+    # ball leaves with less kinetic energy (translation and spin) than it came with
+    out = _oblique(standard_model, 0.4)
+    s = out.summary()
+    assert s["spin_out_rpm"] > 0.0
+    inc = out.tangential.incidence
+    m, R = out.tangential.ball.mass, inc.radius
+    inertia = inc.ball_inertia * m * R * R
+    w_in, w_out = (x * 2 * math.pi / 60 for x in (SPIN, s["spin_out_rpm"]))
+    e_in = 0.5 * m * V * V + 0.5 * inertia * w_in**2
+    e_out = 0.5 * m * s["ball_speed_out_m_s"] ** 2 + 0.5 * inertia * w_out**2
+    assert e_out < e_in
+    assert s["structure"] == "free racket" and s["law"] == "linear"
+
+
+def test_cli_angle_and_spin_with_strings(capsys, tmp_path):
+    # issue 26's example on the bed: the outgoing spin, angle and regime with the bed's rows;
+    # the JSON is the library's summary; --clamped (a rigid head) is refused with a bed
+    import json
+
+    from tests.clirun import run
+
+    args = ("simulate", "--angle", ANGLE, "--spin", SPIN, "--speed", V, "--string-tension", 246)
+    code, out, err = run(capsys, *args)
+    assert code == 0, err
+    for row in ("spin out", "angle out", "contact regime", "stringbed stiffness"):
+        assert row in out
+    code, text, _ = run(capsys, *args, "--json", "--out", tmp_path / "o.json")
+    s = json.loads(text[: text.rindex("}") + 1])
+    assert s["spin_out_rpm"] > 0 and s["stringbed_stiffness_n_m"] > 0
+    written = json.loads((tmp_path / "o.json").read_text())
+    assert written["summary"]["spin_out_rpm"] == s["spin_out_rpm"]
+    history = written["history"]
+    assert len(history["contact force [N]"]) == len(history["time [s]"]) > 100
+    code, _, err = run(capsys, *args, "--clamped")
+    assert code == 2 and "--clamped is not allowed with a string bed" in err
