@@ -38,7 +38,7 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
     "frame.torsion": ("TorsionModel", "TorsionModes"),
     "frame.twist_fit": ("fit_torsion",),
     "impact.analytic.coupled": ("CoupledModes", "coupled_modes"),
-    "impact.exact.engine": ("ImpactBatch", "impacts", "modal_impacts"),
+    "impact.exact.engine": ("EngineOptions", "ImpactBatch", "impacts", "modal_impacts"),
     "impact.held.grip": ("simulate_held",),
     "impact.held.modal": ("HeldContact", "held_contact"),
     "impact.held.run": ("HeldRun", "held_impact"),

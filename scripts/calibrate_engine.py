@@ -21,7 +21,7 @@ import numpy as np
 
 from fem_racket import Frame, FrameModel, Segment
 from fem_racket.contact.linear import kcb_from_speed
-from fem_racket.impact.exact.batch import solve_cases
+from fem_racket.impact.exact.batch import Cases, SolveOptions, solve_cases
 from fem_racket.impact.point import frame_modal_data
 
 BETAS = (4.0, 6.0, 8.0, 12.0, 16.0, 24.0, 32.0, 48.0, 64.0, 96.0, 128.0, 192.0, 256.0, 384.0, 512.0)
@@ -60,11 +60,11 @@ def errors(rng: np.random.Generator, frames: int, cases: int) -> dict[str, np.nd
         omega = data.omega[None, :] * np.sqrt(scale)[:, None]
         zero = np.zeros(cases)
         for sep in ("displacement", "force"):
-            args = (omega, data.values, data.rigid, zero, zero, k, c, mb)
-            ref = solve_cases(*args, np.inf, sep, False)
+            cs = Cases(omega, data.values, data.rigid, zero, zero, k, c, mb)
+            ref = solve_cases(cs, SolveOptions(np.inf, sep))
             ok = np.isfinite(ref[0])
             for i, beta in enumerate(BETAS):
-                cor, tc, _, _ = solve_cases(*args, beta, sep, False)
+                cor, tc, _, _ = solve_cases(cs, SolveOptions(beta, sep))
                 e = out[sep][:, i]
                 e[0] = max(e[0], np.nanmax(np.abs(cor - ref[0])[ok]))
                 e[1] = max(e[1], np.nanmax(np.abs(tc / ref[1] - 1.0)[ok]))

@@ -140,7 +140,7 @@ def strung_engine(
     """The linear ball (spring ``kcb`` [N/m], damping ratio ``zeta``) on the strung racket
     through the exact batched engine: an :class:`~fem_racket.impact.exact.engine.ImpactBatch`
     (arrays broadcast)."""
-    from fem_racket.impact.exact.engine import modal_impacts
+    from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 
     w, a = point.flexible
     return modal_impacts(
@@ -151,9 +151,7 @@ def strung_engine(
         kcb=kcb,
         zeta=zeta,
         ball_mass=ball_mass,
-        separation=separation,
-        tolerance=tolerance,
-        peak_force=True,
+        options=EngineOptions(separation, tolerance, peak_force=True),
     )
 
 

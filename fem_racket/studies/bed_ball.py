@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.exact.engine import modal_impacts
+from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.strung import clamped_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.calibrate import TARGET_SETS
@@ -68,7 +68,7 @@ def fit_bed_ball(bed: StringBed | None = None, ball_mass: float = 0.057) -> BedB
 
     def run(k: float, zeta: float, speed: Any):
         return modal_impacts(w, a, 0.0, speed=speed, kcb=k, zeta=zeta, ball_mass=ball_mass,
-                             tolerance=None)  # fmt: skip
+                             options=EngineOptions(tolerance=None))  # fmt: skip
 
     def residual(x: np.ndarray) -> list[float]:
         out = run(math.exp(x[0]), x[1], 20.0)

@@ -7,7 +7,7 @@ from fem_racket.contact.linear import PAPER_CLAMPED_COR, kcb_from_speed, zeta_fr
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, Segment, standard_frame
-from fem_racket.impact.exact.engine import impacts
+from fem_racket.impact.exact.engine import EngineOptions, impacts
 from fem_racket.validation import InputError
 
 MESH = frame_mesh(standard_frame(), 20)
@@ -57,7 +57,7 @@ def test_rigid_limit_matches_the_effective_mass_closed_form():
     # (measured 2.4e-8; the bending error falls as 1/EI: 8e-5 at x 1e3, 8e-7 at x 1e5)
     model = FrameModel.build(MESH.scaled(3.5e6).with_torsion(MESH.GJ * 1e9, MESH.rhoIp))
     xx, yy = _face(model)
-    b = impacts(model, position=xx, offset=yy, speed=30.0, tolerance=None)
+    b = impacts(model, position=xx, offset=yy, speed=30.0, options=EngineOptions(tolerance=None))
     np.testing.assert_allclose(b.cor, _rigid_ea(model, xx, yy, 30.0), rtol=0, atol=1e-7)
 
 

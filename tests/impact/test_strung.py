@@ -9,12 +9,13 @@ from scipy.integrate import simpson
 
 from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.linear import LinearContact, kcb_from_speed, zeta_from_cor
-from fem_racket.impact.exact.engine import modal_impacts
+from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.strung import strung_point
 from fem_racket.impact.strung_impact import strung_engine, strung_impact
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError
 
+EVERY = EngineOptions(tolerance=None)
 MB = 0.057
 V = 30.0
 POS = 0.76
@@ -34,7 +35,7 @@ def test_very_stiff_bed_is_the_papers_model(standard_model):
     # i.e. 2.5e-13 at f = 1e12 (the exact engine, every mode).
     fm = standard_model.modes(None)
     a = fm.all_shapes.T @ standard_model.fe.point_vector(POS * standard_model.mesh.length)
-    ref = modal_impacts(fm.omega, a[2:], np.sum(a[:2] ** 2), speed=V, ball_mass=MB, tolerance=None)
+    ref = modal_impacts(fm.omega, a[2:], np.sum(a[:2] ** 2), speed=V, ball_mass=MB, options=EVERY)
     errs = []
     for f in (1e8, 1e12):
         p = strung_point(standard_model, StringBed(tension_n=246.0 * f), POS)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from fem_racket.contact.bed_ball import BALL_STIFFNESS, BALL_ZETA
-from fem_racket.impact.exact.engine import modal_impacts
+from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.offaxis import combined_modes, combined_point_vector
 from fem_racket.impact.strung import kawazoe_ball, strung_point
 from fem_racket.impact.strung_exact import strung_exact_states
@@ -51,7 +51,8 @@ def test_twist_basis_at_zero_offset_is_the_bending_one(standard_model):
     order = np.argsort(w, kind="stable")
     values = np.concatenate([a[3:], p.a[p.bed]])[order]
     ref = modal_impacts(w[order], values, float(np.sum(a[:3] ** 2)), speed=V, kcb=BALL_STIFFNESS,
-                        zeta=BALL_ZETA, ball_mass=MB, tolerance=None)  # fmt: skip
+                        zeta=BALL_ZETA, ball_mass=MB,
+                        options=EngineOptions(tolerance=None))  # fmt: skip
     cor, tc = _engine(p)
     assert float(ref.cor) == pytest.approx(cor, abs=1e-12)
     assert float(ref.contact_time) == pytest.approx(tc, rel=1e-12)

@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SUM_RULE_TOL", "RootSet", "coupled_roots"]
+__all__ = ["SUM_RULE_TOL", "RootSet", "coupled_roots", "eigen_roots"]
 
 #: Relative tolerance of the sum rules that check every case's residues.
 SUM_RULE_TOL = 1e-9
@@ -158,7 +158,7 @@ def _sum_rules(lam: np.ndarray, res: np.ndarray, mult: float) -> np.ndarray:
     return r0 & r1
 
 
-def _by_eig(d: np.ndarray, v: np.ndarray, k: float, c: float) -> tuple[np.ndarray, np.ndarray]:
+def eigen_roots(d: np.ndarray, v: np.ndarray, k: float, c: float) -> tuple[np.ndarray, np.ndarray]:
     """Every root and delta-residue of one case from the reduced state matrix (eigenvectors).
 
     State z = [delta, eta_f, delta', eta_f'] with delta'' = -mu F + sum a_f w_f^2 eta_f,
@@ -208,6 +208,6 @@ def coupled_roots(
         L = np.empty((bad.size, R2), complex)
         Z = np.empty((bad.size, R2), complex)
         for row, i in enumerate(bad):
-            L[row], Z[row] = _by_eig(d[i], v[i], float(k[i]), float(c[i]))
+            L[row], Z[row] = eigen_roots(d[i], v[i], float(k[i]), float(c[i]))
         out.append((bad, RootSet(L, Z, 1.0)))
     return out

@@ -33,7 +33,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.exact.engine import modal_impacts
+from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.general.batches import stack_laws, stack_receptances
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.held.basis import held_basis
@@ -104,7 +104,7 @@ def apparent_cor(solver: Solver, runs: Sequence[DesignCases]) -> np.ndarray:
             ball_mass=np.concatenate(
                 [np.full(k, d[4].ball.mass) for d, k in zip(group, n, strict=True)]
             ),
-            tolerance=settings.tolerance,
+            options=EngineOptions(tolerance=settings.tolerance),
         )
         parts = np.split(batch.cor, np.cumsum(n)[:-1])
         for i, part in zip(np.flatnonzero(counts == m), parts, strict=True):

@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from strategies import frames
 
 from fem_racket import FrameModel, InputError, LinearContact
-from fem_racket.impact.exact.engine import impacts, modal_impacts
+from fem_racket.impact.exact.engine import EngineOptions, impacts, modal_impacts
 from fem_racket.impact.exact.outcome import exact_outcome
 from fem_racket.impact.system import modal_system
 
@@ -47,9 +47,8 @@ def _exact(model, p, v, z, m, separation):
 def test_every_mode_matches_the_exact_path(frame, case, separation):
     model = FrameModel.build(frame, 20)
     p, v, z, m = (np.array(c) for c in zip(*case, strict=True))
-    b = impacts(
-        model, position=p, speed=v, zeta=z, ball_mass=m, separation=separation, tolerance=None
-    )
+    every = EngineOptions(separation, tolerance=None)
+    b = impacts(model, position=p, speed=v, zeta=z, ball_mass=m, options=every)
     for i in range(p.size):
         cor, tc = _exact(model, p[i], v[i], z[i], m[i], separation)
         assert b.cor[i] == pytest.approx(cor, abs=1e-9)  # both exact: ~1e-11 measured
@@ -74,15 +73,14 @@ def test_error_stays_within_the_tolerance(frame, ei, seed, tolerance, separation
         zeta=rng.uniform(0.0, 0.2, n),
         ball_mass=rng.uniform(0.05, 0.065, n),
         ei_factor=ei * np.exp(rng.uniform(-1.0, 1.0, n)),
-        separation=separation,
     )
     if separation == "force":
         # Heavily damped impacts on very soft frames can end, with every FE mode, at a brief
         # dip of the force below zero made by the highest modes' ripple (C_CB delta'): only
         # every mode reproduces that (tolerance None). zeta <= 0.1 keeps clear of it.
         kw["zeta"] = kw["zeta"] / 2.0
-    every = impacts(model, tolerance=None, **kw)
-    fast = impacts(model, tolerance=tolerance, **kw)
+    every = impacts(model, options=EngineOptions(separation, None), **kw)
+    fast = impacts(model, options=EngineOptions(separation, tolerance), **kw)
     assert np.max(np.abs(fast.cor - every.cor)) <= tolerance
     assert np.all(fast.modes <= every.modes)
 
@@ -94,8 +92,8 @@ def test_graded_mesh_and_fine_mesh_use_static_totals():
 
     model = FrameModel.build(graded_mesh(standard_frame(), 160, 3.0))
     p = np.array([0.5123, 0.7531, 0.9017])
-    fast = impacts(model, position=p, speed=30.0, tolerance=1e-6)
-    every = impacts(model, position=p, speed=30.0, tolerance=None)
+    fast = impacts(model, position=p, speed=30.0, options=EngineOptions(tolerance=1e-6))
+    every = impacts(model, position=p, speed=30.0, options=EngineOptions(tolerance=None))
     assert model.modes(None).omega.size == 320
     assert np.max(np.abs(fast.cor - every.cor)) <= 1e-6
     assert np.max(fast.modes) < 40
@@ -113,7 +111,9 @@ def test_ball_against_a_wall_is_eqs_1_to_4():
 
 def test_heavy_damping_falls_back_to_the_eigen_solution(standard_model):
     """zeta = 0.9 makes the contact roots real: solved by eigen-decomposition, same answer."""
-    b = impacts(standard_model, position=[0.6, 0.8], zeta=0.9, tolerance=None)
+    b = impacts(
+        standard_model, position=[0.6, 0.8], zeta=0.9, options=EngineOptions(tolerance=None)
+    )
     for i, p in enumerate([0.6, 0.8]):
         cor, tc = _exact(standard_model, p, 20.0, 0.9, 0.057, "displacement")
         assert b.cor[i] == pytest.approx(cor, abs=1e-9)
@@ -121,7 +121,8 @@ def test_heavy_damping_falls_back_to_the_eigen_solution(standard_model):
 
 
 def test_peak_force_with_every_mode_matches_the_exact_path(standard_model):
-    b = impacts(standard_model, position=0.75, speed=[20.0, 40.0], peak_force=True, tolerance=None)
+    every = EngineOptions(tolerance=None, peak_force=True)
+    b = impacts(standard_model, position=0.75, speed=[20.0, 40.0], options=every)
     fm = standard_model.modes(None)
     g = standard_model.fe.point_vector(0.75 * standard_model.mesh.length)
     for i, v in enumerate([20.0, 40.0]):
@@ -135,7 +136,11 @@ def test_peak_force_with_every_mode_matches_the_exact_path(standard_model):
 
 def test_broadcasting_and_speed_scaling(standard_model):
     b = impacts(
-        standard_model, position=[[0.6], [0.8]], speed=[20.0, 30.0, 40.0], kcb=3e4, peak_force=True
+        standard_model,
+        position=[[0.6], [0.8]],
+        speed=[20.0, 30.0, 40.0],
+        kcb=3e4,
+        options=EngineOptions(peak_force=True),
     )
     assert b.cor.shape == (2, 3)
     # At fixed K_CB the impact is linear in the speed: same COR and t_c, force x speed.
@@ -147,8 +152,9 @@ def test_broadcasting_and_speed_scaling(standard_model):
 
 
 def test_ei_factor_equals_a_scaled_model(standard_model):
-    a = impacts(standard_model, position=0.7, ei_factor=3.0, tolerance=None)
-    b = impacts(standard_model.scaled(3.0), position=0.7, tolerance=None)
+    every = EngineOptions(tolerance=None)
+    a = impacts(standard_model, position=0.7, ei_factor=3.0, options=every)
+    b = impacts(standard_model.scaled(3.0), position=0.7, options=every)
     assert float(a.cor) == pytest.approx(float(b.cor), abs=1e-12)
 
 
@@ -160,16 +166,18 @@ def test_ei_factor_equals_a_scaled_model(standard_model):
         ({"position": 0.7, "zeta": 1.0}, "zeta = 1.0 is not allowed"),
         ({"position": 0.7, "tolerance": -1e-6}, "tolerance = -1e-06 is not allowed"),
         ({"position": 0.7, "separation": "time"}, "separation = 'time' is not allowed"),
+        ({"position": 0.7, "modes": 2.5}, "modes = 2.5 is not allowed"),
         ({"position": 0.7, "ball_mass": 0.0}, "ball_mass = 0.0 kg is not allowed"),
     ],
 )
 def test_bad_input(standard_model, kwargs, match):
+    options = {k: kwargs.pop(k) for k in ("tolerance", "separation", "modes") if k in kwargs}
     with pytest.raises(InputError, match=match):
-        impacts(standard_model, **kwargs)
+        impacts(standard_model, **kwargs, options=EngineOptions(**options))
 
 
 def test_tolerance_zero_means_every_mode(standard_model):
-    a = impacts(standard_model, position=0.7, tolerance=0)
+    a = impacts(standard_model, position=0.7, options=EngineOptions(tolerance=0))
     assert a.tolerance is None and int(a.modes) == 40
     assert math.isfinite(float(a.cor))
 
