@@ -25,11 +25,11 @@ contact work int F delta' dt and impulse over the whole steps up to the separati
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from fem_racket.impact.general import kernel_laws as kl
 from fem_racket.impact.general import kernel_modes as km
 from fem_racket.impact.general import kernel_node as kn
+from fem_racket.impact.general.jit import njit
 
 __all__ = ["RESULTS", "march_cases"]
 

@@ -13,7 +13,7 @@ is heavy); compiled code is cached on disk.
 
 from __future__ import annotations
 
-from numba import njit
+from fem_racket.impact.general.jit import njit
 
 __all__ = [
     "LAW_IDS",

@@ -16,7 +16,8 @@ B_2 + e^{i theta} B_3, so a node costs one pass over the modes.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from fem_racket.impact.general.jit import njit
 
 __all__ = [
     "advance",
