@@ -20,9 +20,8 @@ import importlib
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from types import ModuleType
 
-__all__ = ["INTERPRETED_NODES", "lone_solve", "march_cases", "njit"]
+__all__ = ["INTERPRETED_NODES", "lone_solve", "njit", "prepare"]
 
 #: The most nodes a run of an interpreted lone impact has (~0.1 ms a node at ~30 modes);
 #: a longer run compiles.
@@ -59,19 +58,11 @@ def lone_solve(ncase: int) -> Iterator[None]:
         _STATE["interpreted"] = False
 
 
-def march_cases(nodes: int) -> Callable:
-    """:func:`fem_racket.impact.general.kernel.march_cases` for a run of ``nodes`` nodes per
-    case: interpreted inside a lone first solve (up to :data:`INTERPRETED_NODES`), else
-    compiled."""
+def prepare(nodes: int) -> None:
+    """Before a run of ``nodes`` nodes per case: the kernels stay interpreted inside a lone
+    first solve (up to :data:`INTERPRETED_NODES`), else they are compiled."""
     if not (_STATE["interpreted"] and nodes <= INTERPRETED_NODES):
         _compile()
-    return _kernel().march_cases
-
-
-def _kernel() -> ModuleType:
-    from fem_racket.impact.general import kernel
-
-    return kernel
 
 
 def _compile() -> None:
