@@ -12,8 +12,10 @@ per case on the law's own end condition inside its step.
 
 The laws of :mod:`fem_racket.contact` march compiled (:mod:`fem_racket.impact.general.kernel`,
 numba): every case with its own modes and its own step h = t_c / N, so a batch may span frames
-and a case's answer does not depend on the batch it is in. A COR tolerance sets N and the mode
-cut-off (:func:`settings`), and each answer is vouched for against it
+and a case's answer does not depend on the batch it is in. A lone impact that is a process's
+first solve (``fem-racket simulate --law``) runs the same kernels' code interpreted instead,
+which costs less than loading numba (:mod:`fem_racket.impact.general.jit`). A COR tolerance
+sets N and the mode cut-off (:func:`settings`), and each answer is vouched for against it
 (:mod:`fem_racket.impact.general.vouch`: step halving, state resolution, energy balance; N
 doubled where it fails, refused where it still fails; where the law's estimate of t_c is far
 too long, the contact time found replaces it). A law without a kernel (a
