@@ -4,7 +4,7 @@ impacts and spin").
 A ball at 25 m/s without spin strikes a clamped head (eqs 1-3) and the free standard racket at
 0.75 L (exact solver), at 0-85 deg from the face normal, with friction 0.2 and 0.4 (ball on
 strings ~0.4, Cross 2003) and the defaults of fem_racket.impact.incidence (I/(m R^2) = 0.6,
-R = 33 mm, eta^2 = 1.5). Writes the figure (PNG, SVG or PDF by suffix) with its provenance.
+R = 33 mm, eta^2 = 0.14). Writes the figure (PNG, SVG or PDF by suffix) with its provenance.
 
 Run time here: ~8 s (--quick, for the tests: 4 angles, ~2 s).
 

@@ -4,10 +4,18 @@ The normal impact is today's, at the normal speed V cos(angle): any contact law,
 the free racket (:func:`fem_racket.impact.incidence.head_on`, solved by the problem's solver)
 or on a clamped head (:func:`clamped_normal`: eqs 1-3 in closed form, the paper's linear law).
 The tangential contact (:mod:`fem_racket.impact.tangential`) is then marched over its normal
-force history, with the racket's tangential effective mass: the free racket recoils along its
-long axis as a rigid body, M_t = M (the string plane lies on the beam's axis, so the tangential
-force neither bends nor turns it, and the beam is rigid along itself); a clamped head does not
-move (M_t infinite).
+force history, with the racket's tangential response: the free racket moves rigidly in the
+plane of its face (the string plane lies on the beam's axis, so the tangential force neither
+bends nor twists it, and the frame is taken as rigid in that plane), translating with its mass
+M and turning about the face normal through its centre of gravity (its yaw, inertia
+I_n = I_cg + I_p for a flat racket, the perpendicular-axis theorem; I_p the polar moment of
+:mod:`fem_racket.impact.offaxis`): on the long axis and in its plane that is M_t = M; across
+the face, or off the axis, the impact point's 2x2 compliance couples the two directions
+(:class:`~fem_racket.impact.tangential.oblique.BallMotion`). The racket's roll about its long
+axis, from the normal force off the axis, moves the face point only along the normal (the
+face contains the roll axis), so it enters the normal impact (:mod:`fem_racket.impact.offaxis`)
+and not the tangential one; the tangential force, applied in the face, exerts no roll moment.
+A clamped head does not move.
 
 Assumed (stated in the README): the tangential force does not change the normal impact (so with
 mu = 0, or head-on without spin, the normal outcome is exactly the head-on impact's at the
@@ -26,11 +34,23 @@ import numpy as np
 
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.impact.analytic.rigid import ClampedImpact, clamped_impact
+from fem_racket.impact.held.run import HeldRun
 from fem_racket.impact.incidence import Incidence, head_on
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.result import ImpactResult
-from fem_racket.impact.tangential.normal import ClampedNormal, NormalHistory, SampledNormal
-from fem_racket.impact.tangential.oblique import BallMotion, ObliqueOutcome, tangential_impact
+from fem_racket.impact.tangential.normal import (
+    ClampedNormal,
+    NormalHistory,
+    SampledNormal,
+    peak_force,
+)
+from fem_racket.impact.tangential.oblique import (
+    BallMotion,
+    ObliqueOutcome,
+    RacketYaw,
+    tangential_impact,
+)
+from fem_racket.impact.tangential.result_history import normal_history
 from fem_racket.validation import InputError, check_choice
 
 __all__ = [
@@ -39,6 +59,7 @@ __all__ = [
     "ObliqueResult",
     "clamped_normal",
     "free_normal",
+    "held_normal",
     "normal_history",
     "oblique_on",
     "solve_oblique",
@@ -67,7 +88,7 @@ class ObliqueResult:
         (:mod:`fem_racket.impact.oblique_stroke`), units in the keys.
     """
 
-    normal: ImpactResult | ClampedImpact
+    normal: ImpactResult | ClampedImpact | HeldRun
     tangential: ObliqueOutcome
     speed: float
     contact: LinearContact | None = None
@@ -77,10 +98,14 @@ class ObliqueResult:
     def clamped(self) -> bool:
         return isinstance(self.normal, ClampedImpact)
 
+    @property
+    def held(self) -> bool:
+        return isinstance(self.normal, HeldRun)
+
     def histories(self) -> dict[str, np.ndarray]:
         """Time histories of the tangential contact at the normal impact's output times (over
-        the force's contact for a clamped head), units in the names."""
-        if self.clamped:
+        the force's contact for a clamped head or a hand-held racket), units in the names."""
+        if self.clamped or self.held:
             t = self.tangential.solution.normal.grid
             return {"time [s]": t, **self.tangential.histories(t)}
         return {"time [s]": self.normal.t, **self.tangential.histories(self.normal.t)}
@@ -95,7 +120,7 @@ class ObliqueResult:
                 "cor": n.cor,
                 "contact_time_s": n.contact_time,
                 "rebound_speed_m_s": -n.rebound_velocity,
-                "peak_force_n": _clamped_peak(self.tangential.solution.normal),
+                "peak_force_n": peak_force(self.tangential.solution.normal),
                 "structure": "clamped head",
                 "ball_mass_kg": self.tangential.ball.mass,
                 "law": "linear",
@@ -103,7 +128,8 @@ class ObliqueResult:
                 "zeta": c.zeta,
             }
         else:
-            base = {**self.normal.summary(), "structure": "free racket"}
+            where = "hand-held racket" if self.held else "free racket"
+            base = {**self.normal.summary(), "structure": where}
         normal_speed = self.tangential.incidence.components(self.speed)[0]
         return {
             **base,
@@ -112,35 +138,6 @@ class ObliqueResult:
             **self.tangential.summary(),
             **(self.stroke or {}),
         }
-
-
-def _clamped_peak(normal: NormalHistory) -> float:
-    from scipy.optimize import minimize_scalar
-
-    res = minimize_scalar(lambda t: -normal.force(t), bounds=(0.0, normal.end), method="bounded")
-    return float(-res.fun)
-
-
-def normal_history(result: ImpactResult) -> SampledNormal:
-    """The normal force history of a computed impact (needs its output times).
-
-    The stiffness k_n is K_CB for the paper's linear law, else the secant F / delta at the
-    output time of maximum compression.
-    """
-    if result.t.size < 5:
-        raise InputError(
-            f"an oblique impact needs the normal impact's histories: {result.t.size} output "
-            "times given; simulate with an output_step"
-        )
-    v = result.ball_velocity
-    impulse = result.ball.mass * (v[0] - v)
-    force = result.force
-    if result.contact is not None:
-        k_n = result.contact.stiffness
-    else:
-        i = int(np.argmax(result.deflection))
-        k_n = float(force[i] / result.deflection[i])
-    return SampledNormal(result.t, impulse, force, k_n)
 
 
 @dataclass(frozen=True, eq=False)
@@ -159,6 +156,10 @@ class NormalImpact:
         M_t [kg], the tangential effective mass (``math.inf``: clamped head).
     contact : LinearContact or None
         A clamped head's K_CB and zeta.
+    model : FrameModel or None
+        The free racket (its yaw inertia); None: clamped, or no yaw (a hand).
+    point : (float, float)
+        The impact point: along the frame from the butt and across from the long axis [m].
     """
 
     result: ImpactResult | ClampedImpact
@@ -166,6 +167,22 @@ class NormalImpact:
     ball_mass: float
     racket_mass: float
     contact: LinearContact | None = None
+    model: Any = None
+    point: tuple[float, float] = (0.0, 0.0)
+    held: bool = False
+
+    @property
+    def offset(self) -> float:
+        return self.point[1]
+
+    def racket_yaw(self) -> RacketYaw | None:
+        """The free racket's yaw about the face normal (None for a clamped head); needs the
+        frame's polar moment (torsion data)."""
+        if self.model is None:
+            return None
+        props = self.model.props
+        inertia = props.inertia + self.model.torsion.polar_moment
+        return RacketYaw(inertia, self.point[0] - props.cg, self.point[1])
 
     @property
     def rebound_speed(self) -> float:
@@ -177,23 +194,66 @@ class NormalImpact:
 
 def oblique_on(normal: NormalImpact, incidence: Incidence, speed: float) -> ObliqueResult:
     """The oblique impact of ``incidence`` at ``speed`` [m/s] over its computed normal impact
-    (at the normal speed ``speed cos(angle)``)."""
+    (at the normal speed ``speed cos(side) cos(angle)``); the racket's yaw enters when
+    anything crosses the face or the point is off the axis (else M_t alone, as in the plane)."""
     v_t = incidence.components(speed)[1]
-    motion = BallMotion(normal.ball_mass, v_t, normal.rebound_speed, normal.racket_mass)
+    if normal.held and incidence.lateral:
+        raise InputError(
+            "side_angle and side_spin are not allowed with a hand: the hand holds the racket in "
+            "the plane of its long axis only (the held racket's yaw is not modelled)"
+        )
+    yaw = normal.racket_yaw() if incidence.lateral or normal.offset != 0.0 else None
+    motion = BallMotion(
+        normal.ball_mass, v_t, normal.rebound_speed, normal.racket_mass,
+        lateral_speed=incidence.lateral_speed(speed), yaw=yaw,
+    )  # fmt: skip
     out = tangential_impact(incidence, normal.history, motion)
     return ObliqueResult(normal.result, out, speed, normal.contact)
 
 
 def free_normal(result: ImpactResult) -> NormalImpact:
     """The normal impact of a free racket, computed with histories."""
-    return NormalImpact(result, normal_history(result), result.ball.mass, result.model.props.mass)
+    m_b, model = result.ball.mass, result.model
+    point = (result.x_impact, result.offset)
+    return NormalImpact(result, normal_history(result), m_b, model.props.mass, None, model, point)
+
+
+def held_normal(run: HeldRun, problem: ImpactProblem) -> NormalImpact:
+    """The normal impact of a hand-held racket, computed with histories.
+
+    The impulse P(t) is the integral of the contact force's samples over the contact (a cubic
+    spline's, fourth order in the output step); k_n is K_CB. Along the face the held racket
+    recoils with the frame's mass M: the hand model's grip layer acts across the handle, in
+    the swing plane, and nothing joins it along the long axis (a hand rigidly joined there
+    would make it M + m_h; README "Oblique impacts and spin" gives the difference).
+    """
+    from scipy.interpolate import CubicSpline
+
+    if run.histories is None:
+        raise InputError(
+            "an oblique impact needs the normal impact's histories: give an output_step"
+        )
+    t, f = run.histories["time [s]"], run.histories["contact force [N]"]
+    on = t <= run.contact_time
+    t, f = t[on], f[on]
+    impulse = CubicSpline(t, f).antiderivative()(t)
+    history = SampledNormal(t, impulse, f, run.used["kcb_n_m"])
+    model = problem.structure.model
+    point = (problem.impact.position * model.mesh.length, 0.0)
+    return NormalImpact(
+        run, history, problem.ball.mass, model.props.mass, None, None, point, held=True
+    )
 
 
 def solve_oblique(solver: Any, problem: ImpactProblem) -> ObliqueResult:
     """Solve an oblique ``problem`` with ``solver`` (a :class:`~fem_racket.impact.solvers.Solver`,
     which calls this for a problem with an incidence): its normal impact
     (:func:`fem_racket.impact.incidence.head_on`), then the tangential contact over it."""
-    normal = free_normal(solver.solve(head_on(problem)))
+    result = solver.solve(head_on(problem))
+    if isinstance(result, HeldRun):
+        normal = held_normal(result, problem)
+    else:
+        normal = free_normal(result)
     return oblique_on(normal, problem.incidence, problem.impact.speed)
 
 

@@ -40,8 +40,8 @@ def simulate_stroke(
     frame : optional
         The racket (as :func:`fem_racket.impact.simulate.simulate`); None with ``clamped``.
     incidence : Incidence
-        Spin, friction, ball inertia and radius, eta^2; its ``angle`` must be 0 (the stroke
-        sets the incidence).
+        Spin (and side spin), friction, ball inertia and radius, eta^2; its ``angle`` and
+        ``side_angle`` must be 0 (the stroke sets the incidence).
     stroke : Stroke
         Face and path angles.
     speed : float
@@ -52,11 +52,12 @@ def simulate_stroke(
     **kwargs
         The normal impact's other arguments (``clamped``, ``position``, ``elements``, ...).
     """
-    if incidence.angle != 0.0:
-        raise InputError(
-            f"angle = {incidence.angle!r} deg is not allowed with a stroke: the face and path "
-            "angles set the incidence"
-        )
+    for name in ("angle", "side_angle"):
+        if getattr(incidence, name) != 0.0:
+            raise InputError(
+                f"{name} = {getattr(incidence, name)!r} deg is not allowed with a stroke: the "
+                "face and path angles set the incidence"
+            )
     v = check_positive("speed", speed, "m/s")
     s = 0.0
     if swing is not None:
@@ -74,9 +75,10 @@ def simulate_stroke(
     k = math.sin(math.radians(stroke.face_angle - stroke.path_angle))
     extra = {} if swing is None else {"swing": Swing(swing.velocity * k, swing.omega * k)}
     normal = normal_impact(frame, c.ball_normal, **extra, **kwargs)
+    yaw = normal.racket_yaw() if incidence.lateral or normal.offset != 0.0 else None
     motion = BallMotion(
         normal.ball_mass, c.ball_tangential, normal.rebound_speed, normal.racket_mass,
-        c.racket_tangential,
+        c.racket_tangential, yaw=yaw,
     )  # fmt: skip
     out = tangential_impact(incidence, normal.history, motion)
     slip = c.ball_tangential - c.racket_tangential

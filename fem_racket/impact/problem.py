@@ -187,7 +187,7 @@ class ImpactProblem:
                 )
             if self.strings is None:  # on the bed: checked against the bed's head
                 check_offsets(self.model, self.impact.position, self.offset)
-        check_incidence(self.incidence, self.held)  # on the bed: its normal history
+        check_incidence(self.incidence, strung=self.strings is not None)
 
     def ball_law(self) -> ContactLaw:
         """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""

@@ -15,9 +15,13 @@ from fem_racket.impact.oblique import (
     ObliqueResult,
     clamped_normal,
     free_normal,
+    held_normal,
     oblique_on,
 )
+from fem_racket.impact.problem import ImpactProblem
+from fem_racket.impact.settings import SolverOptions
 from fem_racket.impact.simulate import simulate
+from fem_racket.impact.solvers import make_solver
 from fem_racket.validation import InputError, check_positive
 
 __all__ = ["normal_impact", "simulate_oblique"]
@@ -63,9 +67,15 @@ def simulate_oblique(
 def normal_impact(
     frame: Any = None, normal_speed: float = 20.0, *, clamped: bool = False, **kwargs: Any
 ) -> NormalImpact:
-    """The normal impact at ``normal_speed`` [m/s] with its force history: the free racket by
-    :func:`~fem_racket.impact.simulate.simulate` (``kwargs``), or a clamped head by eqs 1-3
-    (``kwargs``: only ``ball_mass``, ``kcb``, ``zeta``, ``separation``)."""
+    """The normal impact at ``normal_speed`` [m/s] with its force history: the free or
+    hand-held racket by :func:`~fem_racket.impact.simulate.simulate`'s problem and solver
+    (``kwargs``), or a clamped head by eqs 1-3 (``kwargs``: only ``ball_mass``, ``kcb``,
+    ``zeta``, ``separation``)."""
     if clamped:
         return clamped_normal(frame, normal_speed, kwargs)
-    return free_normal(simulate(frame, speed=normal_speed, **kwargs))
+    if kwargs.get("hand") is None:
+        return free_normal(simulate(frame, speed=normal_speed, **kwargs))
+    given = {k: kwargs.pop(k) for k in SolverOptions.names() if k in kwargs}
+    solver = make_solver(kwargs.pop("solver", "auto"), **given)
+    problem = ImpactProblem.build(frame, speed=normal_speed, **kwargs)
+    return held_normal(solver.solve(problem), problem)

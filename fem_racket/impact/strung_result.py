@@ -63,9 +63,10 @@ class StrungImpact:
     The attributes an oblique impact reads of its normal impact
     (:func:`fem_racket.impact.oblique.free_normal`) are those of an
     :class:`~fem_racket.impact.result.ImpactResult`: ``ball``, ``ball_velocity``,
-    ``ball_speed_out``, ``deflection`` (the ball law's, its compression) and ``contact`` (None:
-    no lumped K_CB; the normal stiffness of the tangential contact is then the ball law's secant
-    at its largest compression), ``model``, ``t`` and :meth:`summary`.
+    ``ball_speed_out``, ``x_impact``, ``offset``, ``deflection`` (the ball law's, its
+    compression) and ``contact`` (None: no lumped K_CB; the normal stiffness of the tangential
+    contact is then the ball law's secant at its largest compression), ``model``, ``t`` and
+    :meth:`summary`.
     """
 
     cor: float
@@ -108,6 +109,16 @@ class StrungImpact:
     def deflection(self) -> np.ndarray:
         """The ball law's deflection (the ball's compression) at ``t`` [m]."""
         return self.ball_deflection
+
+    @property
+    def x_impact(self) -> float:
+        """The impact point's distance from the grip end x_i [m] (``model`` must be set)."""
+        return self.point.position * self.model.mesh.length
+
+    @property
+    def offset(self) -> float:
+        """The impact point's lateral offset from the long axis y [m]."""
+        return self.point.lateral_m
 
     @property
     def contact(self) -> None:

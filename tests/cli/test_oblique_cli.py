@@ -76,7 +76,11 @@ def test_out_writes_the_tangential_histories(capsys, tmp_path):
         (("--friction", "-1"), "friction = -1.0 is not allowed"),
         (("--clamped", "--position", "0.6"), "--position is not allowed with --clamped"),
         (("--clamped", "--output-step", "1e-6"), "--output-step is not allowed with --clamped"),
-        (("--angle", "30", "--grip", "firm"), "a hand is not allowed with an oblique impact"),
+        (
+            ("--angle", "30", "--grip", "firm", "--side-spin", "300"),
+            "side_angle and side_spin are not allowed with a hand",
+        ),
+        (("--clamped", "--grip", "firm"), "a hand is not allowed with --clamped"),
         (("--ball-inertia", "0.9"), "ball_inertia = 0.9 is not allowed"),
         (("--path-angle", "19"), "path_angle = 19.0 deg is not allowed without a swing"),
         (("--face-angle", "80", "--angle", "5"), "angle = 5.0 deg is not allowed with a stroke"),

@@ -56,7 +56,14 @@ OBLIQUE_OPTIONS = {
                     f"{DEFAULT_BALL_RADIUS:g})"),
     "compliance_ratio": ("--compliance-ratio", "compliance_ratio", "ETA2", "normal over "
                          "tangential contact stiffness eta^2 = k_n/k_t [-], >= 0 (default "
-                         f"{DEFAULT_COMPLIANCE_RATIO:g}, an assumption; 0: rigid)"),
+                         f"{DEFAULT_COMPLIANCE_RATIO:g}, fitted to clamped-head spins; 0: rigid)"),
+    "side_angle": ("--side-angle", "side_angle", "DEG", "angle of the ball's path from the plane "
+                   "of the long axis and the face normal [deg], -90..90, positive toward the "
+                   "side of a positive --offset (default 0)"),
+    "side_spin": ("--side-spin", "side_spin", "RPM", "incoming side spin [rpm], about the long "
+                  "axis's direction: positive = the ball's surface on the strings' side moving "
+                  "toward the negative side, the sense of rolling toward the positive side "
+                  "(default 0)"),
 }  # fmt: skip
 
 #: argparse dest -> (option, Stroke field, help): a stroke's geometry.
@@ -124,8 +131,8 @@ def stroke_from_args(args: argparse.Namespace) -> Stroke | None:
 
 
 def _check(args: argparse.Namespace, hand: Any) -> None:
-    if hand is not None:
-        raise InputError("a hand is not allowed with an oblique impact: the racket is free")
+    if hand is not None and args.clamped:
+        raise InputError("a hand is not allowed with --clamped: give one of them")
     if args.clamped:
         given = set(getattr(args, "explicit_options", ())) - CLAMPED_TAKES
         if given:
@@ -140,7 +147,7 @@ def oblique_histories(result) -> dict[str, Any]:
     """The tangential contact's histories (and the normal ones on the free racket), units in
     the names."""
     out = result.histories()
-    if not result.clamped:
+    if not result.clamped and not result.held:
         n = result.normal
         out["ball normal velocity [m/s]"] = n.ball_velocity
         out["contact force [N]"] = n.force
@@ -153,7 +160,7 @@ def oblique_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
     where = (
         "clamped head"
         if s["structure"] == "clamped head"
-        else (f"free racket at {significant(s['position_x_over_l'], 4)} x/L")
+        else (f"{s['structure']} at {significant(s['position_x_over_l'], 4)} x/L")
     )
     return [
         ("ball speed out", significant(s["ball_speed_out_m_s"], 5), "m/s"),
@@ -163,6 +170,7 @@ def oblique_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("grip", grips, "ms" if s["grip_times_s"] else ""),
         ("friction reversal", flips, "ms" if s["friction_reversal_times_s"] else ""),
         ("tangential COR", significant(s["tangential_cor"], 5), "-"),
+        *_side_rows(s),
         ("normal COR", significant(s["cor"], 6), "-"),
         ("contact time", significant(s["contact_time_s"] * 1e3, 5), "ms"),
         ("normal rebound speed", significant(s["rebound_speed_m_s"], 5), "m/s"),
@@ -174,7 +182,36 @@ def oblique_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
         ("ball inertia", significant(s["ball_inertia_i_over_mr2"], 4), "I/(m R^2)"),
         ("compliance ratio", significant(s["compliance_ratio_eta2"], 4), "eta^2 = k_n/k_t"),
         ("structure", where, ""),
+        *_offset_rows(s),
         *_stroke_rows(s),
+    ]
+
+
+def _side_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """Across the face: shown when anything crosses it (else the rows of the plane only)."""
+    keys = ("side_angle_deg", "side_spin_rpm", "side_spin_out_rpm", "side_angle_out_deg")
+    if not any(s[k] for k in keys):
+        return []
+    return [
+        (
+            "side angle out",
+            significant(s["side_angle_out_deg"], 5),
+            "deg from the long axis' plane",
+        ),
+        ("side spin out", significant(s["side_spin_out_rpm"], 5), "rpm (positive: rolling to +y)"),
+        ("racket yaw rate", significant(s["racket_yaw_rate_rad_s"], 5), "rad/s"),
+        ("side angle in", significant(s["side_angle_deg"], 5), "deg"),
+        ("side spin in", significant(s["side_spin_rpm"], 5), "rpm"),
+    ]
+
+
+def _offset_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """Off the axis: the offset and the racket's roll rate (from the normal impact)."""
+    if not s.get("offset_m"):
+        return []
+    return [
+        ("offset from the axis", significant(s["offset_m"], 4), "m"),
+        ("roll rate", significant(s["roll_rate_rad_s"], 5), "rad/s"),
     ]
 
 
@@ -204,6 +241,8 @@ def oblique_from_args(args: argparse.Namespace, incidence: Incidence, hand: Any)
     kw = impact_kwargs(args)
     kw.update(incidence=incidence, output_step=args.output_step)
     swing = swing_from_args(args, model.mesh.length)
+    if hand is not None:
+        kw.update(hand=hand, shock_window=args.hand_shock_window)
     if stroke:
         return simulate_stroke(model, stroke=stroke, swing=swing, **kw)
     return simulate_oblique(model, swing=swing, **kw)

@@ -23,7 +23,13 @@ from typing import Protocol
 
 import numpy as np
 
-__all__ = ["ClampedNormal", "NormalHistory", "SampledNormal", "StrongeNormal"]
+__all__ = [
+    "ClampedNormal",
+    "NormalHistory",
+    "SampledNormal",
+    "StrongeNormal",
+    "peak_force",
+]
 
 
 class NormalHistory(Protocol):
@@ -40,6 +46,10 @@ class NormalHistory(Protocol):
     def rate(self, t: np.ndarray | float) -> np.ndarray: ...
 
     def impulse(self, t: np.ndarray | float) -> np.ndarray: ...
+
+    def slope(self, t: np.ndarray | float) -> np.ndarray: ...
+
+    def smooth_force(self, t: np.ndarray | float) -> np.ndarray: ...
 
 
 @dataclass(frozen=True, eq=False)
@@ -63,11 +73,12 @@ class SampledNormal:
     force_samples: np.ndarray
     stiffness: float
     _spline: object = field(init=False, repr=False)
+    force_spline: object = field(init=False, repr=False)
     end: float = field(init=False)
     grid: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        from scipy.interpolate import CubicHermiteSpline
+        from scipy.interpolate import CubicHermiteSpline, CubicSpline
 
         t = np.asarray(self.t, dtype=float)
         # an output time repeated (the contact time on the output grid) is one sample
@@ -76,6 +87,7 @@ class SampledNormal:
         p = np.asarray(self.impulse_samples, dtype=float)[keep]
         spline = CubicHermiteSpline(t, p, f)
         object.__setattr__(self, "_spline", spline)
+        object.__setattr__(self, "force_spline", CubicSpline(t, f))
         grid = t
         for i in range(1, len(t)):
             if f[i - 1] > 0.0 >= f[i]:
@@ -89,6 +101,19 @@ class SampledNormal:
 
     def rate(self, t):
         return self._spline(t, 2)
+
+    def smooth_force(self, t):
+        """F [N] from a C2 cubic spline through the force samples (``force_spline``): the
+        vector contact (:mod:`fem_racket.impact.tangential.plane_ode`) integrates its slides
+        over it, where :meth:`force` (P' of the Hermite spline) has a corner at every sample
+        that an adaptive integrator would creep through; the two differ by O(h^4)."""
+        return self.force_spline(t)
+
+    def slope(self, t):
+        """F' [N/s] of :meth:`smooth_force`: continuous, where :meth:`rate` (P'' of the
+        Hermite spline) jumps at the samples; the vector contact stops its slides by it (the
+        jumps would switch a slider moving near zero speed at every sample)."""
+        return self.force_spline(t, 1)
 
     def impulse(self, t):
         return self._spline(t) - self._spline(0.0)
@@ -159,6 +184,14 @@ class ClampedNormal:
         _, v, a = self._states(t)
         return self.stiffness * v + 2.0 * self.zeta * math.sqrt(self.stiffness * self.mass) * a
 
+    def slope(self, t):
+        """F' [N/s] (:meth:`rate`, exact)."""
+        return self.rate(t)
+
+    def smooth_force(self, t):
+        """F [N] (:meth:`force`, exact)."""
+        return self.force(t)
+
     def impulse(self, t):
         return self.mass * (self.speed - self._states(t)[1])
 
@@ -228,7 +261,23 @@ class StrongeNormal:
         phi, scale = self._phase(t)
         return self.mass * self.speed * self.omega**2 * scale * np.cos(phi)
 
+    def slope(self, t):
+        """F' [N/s] (:meth:`rate`, exact)."""
+        return self.rate(t)
+
+    def smooth_force(self, t):
+        """F [N] (:meth:`force`, exact)."""
+        return self.force(t)
+
     def impulse(self, t):
         phi, scale = self._phase(t)
         e = np.where(scale == 1.0, 1.0, self.restitution)
         return self.mass * self.speed * (1.0 - e * np.cos(phi))
+
+
+def peak_force(normal: NormalHistory) -> float:
+    """The largest normal force over the contact [N] (bounded search)."""
+    from scipy.optimize import minimize_scalar
+
+    res = minimize_scalar(lambda t: -normal.force(t), bounds=(0.0, normal.end), method="bounded")
+    return float(-res.fun)
