@@ -5,8 +5,10 @@ The kernel modules (:mod:`~fem_racket.impact.general.kernel_laws`,
 :mod:`~fem_racket.impact.general.kernel`) take their decorator from here: numba's ``njit`` once
 the process compiles them, the function itself until then. Loading numba and its cached code costs
 ~0.5 s CPU per process (numba's import with its scipy.linalg check, its target registries, the
-cache), ~5-10 times what one impact costs when interpreted (~40-100 ms, the same code and
-floating-point operations, so the same answers; ``tests/impact/general/test_jit.py``). So
+cache), ~5-10 times what one impact costs when interpreted (~40-100 ms). Interpreted, the kernels
+do the same floating-point operations (integer powers, square roots and complex divisions are
+written out as numba computes them), so the answers are the same, bit for bit
+(``tests/impact/general/test_jit.py``). So
 the first solve of a process, when it is a lone impact (``fem-racket simulate --law``, one
 :func:`fem_racket.simulate`), runs interpreted, run by run while a run has at most
 :data:`INTERPRETED_NODES` nodes; any other solve, and any run longer than that, loads the compiled
