@@ -131,6 +131,7 @@ IMPACT_ROOMS = {
     "top": 4,
 }
 IMPACT_TOP = {
+    "batch_solve",
     "law_impact",
     "oblique",
     "oblique_stroke",
@@ -138,6 +139,7 @@ IMPACT_TOP = {
     "simulate_law",
     "simulate_linear",
     "simulate_oblique",
+    "solver_base",
     "solvers",
     "strung_exact",
     "strung_impact",

@@ -20,149 +20,29 @@ A hand-held racket (:class:`~fem_racket.impact.problem.HeldRacket`) is a structu
 frame; ``exact``, ``cvode`` and ``bdf`` solve it (:mod:`fem_racket.impact.held`) and return a
 :class:`~fem_racket.impact.held.run.HeldRun`. An option a solver does not use, for the problem
 it is given, is refused naming the option and why; none is ever ignored.
+
+Studies (sweeps, maps) state their impacts as one
+:class:`~fem_racket.impact.problem_batch.ProblemBatch` and ask ``solve_many``; each solver
+answers it its own way (:mod:`fem_racket.impact.batch_solve`): ``exact`` by the batched engine,
+``general`` by one call of the general integrator over every case (whatever their frames),
+``cvode`` and ``bdf`` case by case. The protocol itself is :mod:`fem_racket.impact.solver_base`.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-from typing import Any, ClassVar
+from typing import Any
 
-from fem_racket.impact.held.run import HeldSettings, held_impact
-from fem_racket.impact.oblique import solve_oblique
+from fem_racket.impact.batch_solve import each_batch, engine_batch, law_batch
 from fem_racket.impact.problem import ImpactProblem
-from fem_racket.impact.settings import DEFAULTS, SolverOptions
+from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
+from fem_racket.impact.settings import SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
 from fem_racket.impact.simulate_linear import simulate_linear
+from fem_racket.impact.solver_base import Solver
 from fem_racket.impact.strung_solve import check_strung, solve_strung
-from fem_racket.validation import InputError, check_choice, show, work_begins
+from fem_racket.validation import InputError, check_choice
 
 __all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "make_solver"]
-
-
-class Solver:
-    """Base of the solvers (module docstring): options bound at construction.
-
-    Parameters
-    ----------
-    **options
-        The options of :class:`~fem_racket.impact.settings.SolverOptions` this solver takes
-        (:attr:`takes`); others are refused.
-    """
-
-    #: Registry name.
-    name: ClassVar[str] = ""
-    #: Options this solver uses (on some problem).
-    takes: ClassVar[tuple[str, ...]] = ()
-    #: Values of options this solver does not take that ask for what it does anyway.
-    neutral: ClassVar[dict[str, tuple]] = {}
-    #: Why an option this solver does not take is refused, where more than its list helps.
-    hints: ClassVar[dict[str, str]] = {}
-    #: Options it does not use on a hand-held racket, and why.
-    held_refuses: ClassVar[tuple[str, ...]] = ("modes", "basis", "t_max")
-
-    def __init__(self, **options: Any) -> None:
-        unknown = sorted(set(options) - set(SolverOptions.names()))
-        if unknown:
-            raise InputError(
-                f"solver option {unknown[0]!r} is not known: must be one of "
-                f"{', '.join(SolverOptions.names())}"
-            )
-        checked = SolverOptions(**options).given()
-        for key, value in checked.items():
-            if key not in self.takes and not self._neutral(key, value):
-                why = self.hints.get(key, f"it takes {', '.join(self.takes)}")
-                raise InputError(
-                    f"{key} = {show(value)} is not allowed with solver {self.name!r}: {why}"
-                )
-        self.options = SolverOptions(**{k: v for k, v in checked.items() if k in self.takes})
-
-    @classmethod
-    def _neutral(cls, key: str, value: Any) -> bool:
-        """True when ``value`` of an option this solver does not take asks for nothing it
-        does not do anyway: the option's default, or a value in :attr:`neutral`."""
-        return value == getattr(DEFAULTS, key) or value in cls.neutral.get(key, ())
-
-    def __repr__(self) -> str:
-        given = ", ".join(f"{k}={v!r}" for k, v in self.options.given().items())
-        return f"{type(self).__name__}({given})"
-
-    # -- the protocol -------------------------------------------------------------------------
-
-    def check(self, problem: ImpactProblem) -> None:
-        """Refuse, in one line, a problem (or an option for it) this solver cannot do."""
-        if problem.strings is not None:
-            check_strung(problem, self.name, self.options)
-            return
-        if problem.held:
-            self._refuse_options(
-                self.held_refuses,
-                "with a hand: the held racket keeps its "
-                "modes by tolerance (exact) or all its DOFs (cvode, bdf)",
-            )
-
-    def solve(self, problem: ImpactProblem) -> Any:
-        """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
-        StrungImpact with a string bed)."""
-        self.check(problem)
-        work_begins()  # fem-racket config --check stops here: every check has passed
-        return self._outcome(problem)
-
-    def solve_many(self, problems: Iterable[ImpactProblem]) -> list[Any]:
-        """The outcomes of ``problems``, in order (each checked before any is solved)."""
-        problems = list(problems)
-        for p in problems:
-            self.check(p)
-        work_begins()
-        return [self._outcome(p) for p in problems]
-
-    def _outcome(self, problem: ImpactProblem) -> Any:
-        """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
-        the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
-        if problem.incidence is not None:
-            return solve_oblique(self, problem)
-        return self._solve(problem)
-
-    # -- helpers ------------------------------------------------------------------------------
-
-    def _solve(self, problem: ImpactProblem) -> Any:
-        raise NotImplementedError
-
-    def _refuse_options(self, names: Iterable[str], why: str) -> None:
-        given = self.options.given()
-        for key in names:
-            if key in given:
-                raise InputError(
-                    f"{key} = {show(given[key])} is not allowed with solver {self.name!r} {why}"
-                )
-
-    def _refuse_law(self, problem: ImpactProblem) -> None:
-        if problem.law is not None:
-            raise InputError(
-                f"solver = {self.name!r} is not allowed with contact law {problem.law.name!r}: "
-                "it solves the paper's linear law; use 'general' or 'cvode'"
-            )
-        if problem.frame_velocity is not None:
-            raise InputError(
-                f"solver = {self.name!r} is not allowed with a frame_velocity: use 'general' "
-                "or 'cvode' (or give the racket's motion as a swing)"
-            )
-
-    def _held(self, problem: ImpactProblem) -> Any:
-        """The hand-held racket by this solver (:func:`fem_racket.impact.held.run.held_impact`):
-        every mode unless a tolerance is asked (the modes the COR tolerance drops still move
-        the hand, and the held racket has few DOFs); histories when output times are asked."""
-        given = self.options.given()
-        s = self.options.settings()
-        step = given.get("output_step", s.output_step)
-        settings = HeldSettings(
-            solver=self.name,
-            output_step=1e-5 if step is None else step,
-            histories=step is not None,
-            tolerance=given.get("tolerance"),
-            rtol=s.rtol,
-            atol=s.atol,
-        )
-        return held_impact(problem, settings)
 
 
 class ExactSolver(Solver):
@@ -177,6 +57,16 @@ class ExactSolver(Solver):
         super().check(problem)
         if problem.strings is None:
             self._refuse_law(problem)
+
+    def _check_batch(self, batch: ProblemBatch) -> None:
+        super()._check_batch(batch)
+        if not batch.per_case:  # a string bed's ball law: checked case by case
+            self._refuse_law(batch)
+
+    def _batch(self, batch: ProblemBatch) -> BatchOutcome:
+        if batch.per_case:
+            return each_batch(self, batch)
+        return engine_batch(batch, self.options.settings())
 
     def _solve(self, problem: ImpactProblem) -> Any:
         if problem.strings is not None:
@@ -199,6 +89,19 @@ class GeneralSolver(Solver):
             raise InputError(
                 "solver = 'general' is not allowed with a hand: must be one of exact, cvode, bdf"
             )
+
+    def _check_batch(self, batch: ProblemBatch) -> None:
+        super()._check_batch(batch)
+        if batch.law is None and not batch.per_case:
+            raise InputError(
+                "solver = 'general' is not allowed with a ProblemBatch under the paper's law: "
+                "use 'exact' (its batched engine)"
+            )
+
+    def _batch(self, batch: ProblemBatch) -> BatchOutcome:
+        if batch.per_case:
+            return each_batch(self, batch)
+        return law_batch(batch, self.options.settings())
 
     def _solve(self, problem: ImpactProblem) -> Any:
         if problem.strings is not None:
@@ -225,6 +128,12 @@ class _OdeSolver(Solver):
                 "under a contact law other than the paper's or a racket moving as given: it "
                 "integrates every frame mode",
             )
+
+    def _check_batch(self, batch: ProblemBatch) -> None:
+        """Each case is checked as its problem (:func:`.batch_solve.each_batch`)."""
+
+    def _batch(self, batch: ProblemBatch) -> BatchOutcome:
+        return each_batch(self, batch)
 
     def _solve(self, problem: ImpactProblem) -> Any:
         if problem.strings is not None:
@@ -271,12 +180,15 @@ class AutoSolver(Solver):
     name = "auto"
     takes = SolverOptions.names()
 
-    def pick(self, problem: ImpactProblem) -> Solver:
-        """The solver this one stands for on ``problem``."""
+    def pick(self, problem: ImpactProblem | ProblemBatch) -> Solver:
+        """The solver this one stands for on ``problem`` (or a batch)."""
         linear = problem.linear
-        if problem.strings is not None:  # the ball's own law on the bed
-            linear = problem.ball_law().name == "linear"
-        name = auto_method(linear and problem.frame_velocity is None)
+        if isinstance(problem, ProblemBatch):
+            name = auto_method(linear)
+        elif problem.strings is not None:  # the ball's own law on the bed
+            name = auto_method(problem.ball_law().name == "linear")
+        else:
+            name = auto_method(linear and problem.frame_velocity is None)
         try:
             return SOLVERS[name](**self.options.given())
         except InputError as err:
@@ -284,6 +196,12 @@ class AutoSolver(Solver):
 
     def check(self, problem: ImpactProblem) -> None:
         self.pick(problem).check(problem)
+
+    def _check_batch(self, batch: ProblemBatch) -> None:
+        self.pick(batch)._check_batch(batch)
+
+    def _batch(self, batch: ProblemBatch) -> BatchOutcome:
+        return self.pick(batch)._batch(batch)
 
     def _solve(self, problem: ImpactProblem) -> Any:
         return self.pick(problem)._solve(problem)

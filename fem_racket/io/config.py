@@ -9,6 +9,9 @@ A run file has fixed *core* tables, each key with its unit in its name::
     [impact]   position_x_over_l, speed_m_s
     [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string
                (any key: the string bed replaces the lumped K_CB; simulate)
+    [oblique]  angle_deg, spin_rpm, friction, ball_inertia, ball_radius_m, compliance_ratio,
+               clamped, face_angle_deg, path_angle_deg
+               (any key: the oblique, spinning ball; simulate, and the axes of sweep and map)
     [solver]   name, separation, basis, modes, rtol, atol, t_max_s
     [output]   out, overwrite
 
@@ -130,6 +133,37 @@ class RunConfig:
         from fem_racket.io.config_run import sweep_file
 
         return sweep_file(self, backend=backend, workers=workers)
+
+    def map(self) -> list[Any]:
+        """The maps ``fem-racket map --config FILE`` computes (no file written): a RacketMap
+        per racket (a FaceMap with ``offsets``, a SpinMap with an oblique ball); see
+        :func:`fem_racket.io.config_studies.map_file`."""
+        from fem_racket.io.config_studies import map_file
+
+        return map_file(self)
+
+    def refine(self) -> dict[str, Any]:
+        """The refinement studies ``fem-racket refine --config FILE`` computes (no file
+        written): family -> RefinementStudy; see
+        :func:`fem_racket.io.config_studies.refine_file`."""
+        from fem_racket.io.config_studies import refine_file
+
+        return refine_file(self)
+
+    def export_vtk(self, out: str | os.PathLike | None = None) -> Path:
+        """Write the VTK series ``fem-racket export-vtk --config FILE`` writes (into ``out``,
+        else ``[vtk] out``); the ``.pvd`` path. See
+        :func:`fem_racket.io.config_drawings.vtk_file`."""
+        from fem_racket.io.config_drawings import vtk_file
+
+        return vtk_file(self, out)
+
+    def animate(self, out: str | os.PathLike | None = None) -> Path:
+        """Render the animation ``fem-racket animate --config FILE`` renders (to ``out``, else
+        ``[animate] out``); its path. See :func:`fem_racket.io.config_drawings.animate_file`."""
+        from fem_racket.io.config_drawings import animate_file
+
+        return animate_file(self, out)
 
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None

@@ -205,6 +205,27 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         "string": Key(_choice(tuple(STRINGS)), "string_material", "string material"),
         "edge": Key(_choice(EDGES), "bed_edge", "head ring follows the frame: point or hoop"),
     },
+    "oblique": {  # any key runs the oblique impact (simulate; sweep and map: its axes)
+        "angle_deg": Key(
+            _interval(0.0, 90.0, include_high=False), "angle", "ball's path from the face normal"
+        ),
+        "spin_rpm": Key(_number("rpm", check_finite), "spin", "incoming spin, + topspin"),
+        "friction": Key(_interval(0.0, math.inf), "friction", "sliding friction ball/strings"),
+        "ball_inertia": Key(
+            _interval(0.0, 2.0 / 3.0, include_low=False), "ball_inertia", "ball's I/(m R^2)"
+        ),
+        "ball_radius_m": Key(_positive("m"), "ball_radius", "ball radius R"),
+        "compliance_ratio": Key(
+            _interval(0.0, math.inf), "compliance_ratio", "eta^2 = k_n/k_t of the contact"
+        ),
+        "clamped": Key(_boolean, "clamped", "a rigid, immovable head (eqs 1-3)"),
+        "face_angle_deg": Key(
+            _number("deg", check_finite), "face_angle", "string plane to the horizontal"
+        ),
+        "path_angle_deg": Key(
+            _number("deg", check_finite), "path_angle", "racket path above the horizontal"
+        ),
+    },
     "solver": {
         "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),
         "separation": Key(_choice(SEPARATION_EVENTS), "separation", "end of contact"),

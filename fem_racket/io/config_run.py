@@ -107,7 +107,16 @@ def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
     frame = cfg.frame()
     if frame is None:
         frame = standard_frame(d.get("ei1", PAPER_EI1), d.get("ei2"))
-    model = FrameModel.build(frame, d.get("elements", 20))
+    elements = d.get("elements", 20)
+    if d.get("add_mass"):  # [[frame.lead]], as --add-mass: added last, on the meshed frame
+        from fem_racket.frame.head import DEFAULT_HEAD
+        from fem_racket.frame.lead import add_lead
+        from fem_racket.frame.mesh import frame_mesh
+        from fem_racket.frame.segments import Frame
+
+        mesh = frame_mesh(frame, elements) if isinstance(frame, Frame) else frame
+        frame = add_lead(mesh, d["add_mass"], DEFAULT_HEAD.on_frame(mesh.length))
+    model = FrameModel.build(frame, elements)
     length = model.mesh.length
     speed = d.get("racket_speed", 0.0)
     reference, pivot = d.get("reference", DEFAULT_REFERENCE), d.get("pivot")
@@ -126,7 +135,9 @@ def _check_hand(cfg: RunConfig, d: dict[str, Any]) -> None:
             )
 
 
-def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
+def simulate_file(
+    cfg: RunConfig, *, histories: bool | None = None, output_step: float | None = None
+) -> Any:
     """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it.
 
     Parameters
@@ -135,6 +146,8 @@ def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     histories : bool, optional
         Compute the time histories (at ``[simulate] output_step``, 1e-5 s by default); by
         default when the file names an output, as the command does.
+    output_step : float, optional
+        The histories' step [s] instead of ``[simulate] output_step`` (export-vtk, animate).
 
     Returns
     -------
@@ -143,6 +156,11 @@ def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     from fem_racket.impact.simulate import simulate
 
     d = cfg.defaults()
+    if cfg.values.get("strings"):
+        raise InputError(
+            f"[strings] ({cfg.source}) is not allowed in RunConfig.simulate yet: run "
+            "fem-racket simulate --config for the string bed"
+        )
     if histories is None:
         histories = bool(cfg.table("simulate").get("out") or d.get("out"))
     hand = _hand(cfg)
@@ -161,13 +179,68 @@ def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     law = _law(cfg)
     if law is not None:
         kwargs["law"] = law
-    step = _output_step(cfg) if histories else None
+    if cfg.values.get("oblique"):  # the oblique impact, as simulate's --angle ...
+        return _oblique(cfg, d, hand, model, swing, kwargs)
+    step = (output_step or _output_step(cfg)) if histories else None
     if hand is not None:
         window = d.get("hand_shock_window")
         return simulate(
             model, hand=hand, shock_window=window, swing=swing, output_step=step, **kwargs
         )
     return simulate(model, output_step=step, swing=swing, **kwargs)
+
+
+#: ``[oblique]`` dests -> :class:`~fem_racket.impact.incidence.Incidence` fields.
+INCIDENCE_FIELDS = {
+    "angle": "angle",
+    "spin": "spin",
+    "friction": "friction",
+    "ball_inertia": "ball_inertia",
+    "ball_radius": "radius",
+    "compliance_ratio": "compliance_ratio",
+}
+#: What a clamped head takes from the core tables (besides ``[oblique]``).
+CLAMPED_TAKES = ("speed", "ball_mass", "kcb", "zeta", "separation")
+
+
+def _oblique(cfg: RunConfig, d: dict, hand: Any, model: Any, swing: Any, kwargs: dict) -> Any:
+    """The oblique impact of an ``[oblique]`` table, as ``simulate --angle ...`` runs it
+    (:func:`fem_racket.impact.simulate_oblique.simulate_oblique`, or a stroke with
+    ``face_angle_deg``/``path_angle_deg``): an ObliqueResult."""
+    from fem_racket.impact.incidence import Incidence
+    from fem_racket.impact.oblique_stroke import simulate_stroke
+    from fem_racket.impact.simulate_oblique import simulate_oblique
+    from fem_racket.impact.stroke import Stroke
+
+    if hand is not None:
+        raise InputError(f"[hand] ({cfg.source}) is not allowed with [oblique]: the racket is free")
+    inc = Incidence(**{f: d[k] for k, f in INCIDENCE_FIELDS.items() if k in d})
+    stroke_given = {k: d[k] for k in ("face_angle", "path_angle") if k in d}
+    if "path_angle" in stroke_given and swing is None:
+        raise InputError(
+            f"oblique.path_angle_deg = {show(d['path_angle'])} ({cfg.source}) is not allowed "
+            "without a swing: give impact.racket_speed_m_s"
+        )
+    stroke = Stroke(**stroke_given) if stroke_given else None
+    if d.get("clamped"):
+        others = sorted(
+            key for dest, key in CORE_DEST_KEYS.items()
+            if dest in d and dest not in CLAMPED_TAKES and dest not in ("clamped", "out")
+            and not key.startswith("oblique.") and dest != "overwrite"
+        )  # fmt: skip
+        if others:
+            raise InputError(
+                f"{others[0]} ({cfg.source}) is not allowed with oblique.clamped: a clamped head "
+                "takes impact.speed_m_s, ball.mass_kg, contact.kcb_n_m, contact.zeta and "
+                "solver.separation"
+            )
+        kw = {k: d.get(k, DEFAULTS.get(k)) for k in ("ball_mass", "kcb", "zeta", "separation")}
+        kw.update(incidence=inc, speed=d.get("speed", 20.0), clamped=True)
+        return simulate_stroke(stroke=stroke, **kw) if stroke else simulate_oblique(**kw)
+    kw = {**kwargs, "incidence": inc, "output_step": _output_step(cfg)}
+    if stroke is not None:
+        return simulate_stroke(model, stroke=stroke, swing=swing, **kw)
+    return simulate_oblique(model, swing=swing, **kw)
 
 
 #: ``[sweep]`` keys that set how the sweep runs or what it prints, not its values.

@@ -64,6 +64,17 @@ LABELS: dict[str, Label] = {
     "zeta": Label("damping ratio zeta", "-", "ball/string damping ratio"),
     "kcb": Label("stiffness K_CB", "N/m", "ball/string stiffness K_CB"),
     "elements": Label("elements", "-", "number of beam elements"),
+    # the string-bed and oblique-ball axes (fem_racket.studies.sweep_physics)
+    "string_tension": Label("string tension T", "N", "tension per string"),
+    "pattern": Label("string pattern", "-", "mains*100 + crosses (1619: 16 mains x 19 crosses)"),
+    "angle": Label("incidence angle", "deg", "ball's path from the face normal"),
+    "spin": Label("spin in", "rpm", "incoming spin, positive = topspin"),
+    "friction": Label("friction mu", "-", "Coulomb friction coefficient ball/strings"),
+    "ball_inertia": Label("ball I/(m R^2)", "-", "ball's moment of inertia I/(m R^2)"),
+    "ball_radius": Label("ball radius R", "m"),
+    "compliance_ratio": Label(
+        "compliance ratio eta^2", "-", "normal over tangential contact stiffness eta^2"
+    ),
     # contact-law parameters (fem_racket.contact.registry.LAW_PARAMETERS)
     "hc_stiffness": Label(
         "HC stiffness k", "N/m^n", "Hunt-Crossley stiffness k of F = k delta^n (1 + alpha delta')"
@@ -91,6 +102,17 @@ LABELS: dict[str, Label] = {
     "kcb_n_m": Label("stiffness K_CB", "N/m", "ball/string stiffness K_CB used"),
     "racket_speed_at_impact_m_s": Label(
         "racket speed v_r", "m/s", "impact point's speed towards the ball before impact"
+    ),
+    # with a string bed or an oblique ball (fem_racket.studies.cases.AXIS_VARIABLES)
+    "stringbed_stiffness_n_m": Label(
+        "bed stiffness k_bed", "N/m", "string bed's static stiffness at the impact point"
+    ),
+    "stringbed_frequency_hz": Label("bed frequency f_1", "Hz", "string bed's first frequency"),
+    "angle_out_deg": Label("angle out", "deg", "ball's outgoing angle from the face normal"),
+    "spin_out_rpm": Label("spin out", "rpm", "ball's outgoing spin, positive = topspin"),
+    "tangential_cor": Label("tangential COR", "-", "tangential coefficient of restitution"),
+    "contact_regime": Label(
+        "contact regime", "-", "phases of the contact, negative when the first grips"
     ),
     # power maps (fem_racket.io.map_files)
     "apparent_cor": Label(

@@ -1,44 +1,56 @@
-"""A chunk of sweep cases -> their result values, with the frames cached per process.
+"""A chunk of sweep cases -> their result values: the chunk as problems, solved by the solver.
+
+Each chunk of a sweep becomes one :class:`~fem_racket.impact.problem_batch.ProblemBatch` (its
+frames, EI factors, impact points, speeds, ball masses, the paper's K_CB and zeta or the law's
+parameters, swings) that the sweep's solver solves
+(:meth:`fem_racket.impact.solvers.Solver.solve_many`): the exact solver by the batched engine
+to the sweep's COR tolerance, the general solver by one integrator call over the chunk, the
+ODE solvers case by case with 1 us output steps (the peak force the largest over them). The
+study chooses no method: the solver does.
 
 Each process (the caller, a pool worker or a Dask worker) keeps the assembled frame and its
-free-free modes per mesh (``FrameModel``); EI changes that scale every segment reuse them
-(omega ~ sqrt(factor), no eigen-solve).
+free-free modes per mesh (``FrameModel``); EI changes that scale every segment are the batch's
+EI factors on it (omega ~ sqrt(factor), no eigen-solve).
 
-Exact solver: the batched engine (:func:`fem_racket.impact.exact.engine.impacts`) on all the chunk's
-cases of one frame at once, to the sweep's COR tolerance; every case is solved at
-V_B0 = 1 m/s (the system is linear), so results do not depend on how cases are chunked.
-Another contact law: the chunk's cases batched per frame, the law's parameters per case
-(:mod:`fem_racket.studies.law_cases`).
-BDF solvers: :func:`fem_racket.simulate` per case with 1 us output steps, the peak force being
-the largest over them.
-
-A swing (racket_speed, reference, pivot; :mod:`fem_racket.impact.swing`) enters through the
-closing speed v_in + v_r of each case, at which the stationary racket is struck (K_CB follows
-it), and the ball leaves at v_out = e_A v_in + (1 + e_A) v_r; under any contact law too
-(:mod:`fem_racket.studies.law_cases` derives it). The BDF solvers start from the swing's
-velocity field instead.
+A swing (racket_speed, reference, pivot; :mod:`fem_racket.impact.swing`) enters as each case's
+rigid racket motion: the exact and general solvers strike the stationary racket at the closing
+speed v_in + v_r (K_CB follows it) and the ball leaves at v_out = e_A v_in + (1 + e_A) v_r,
+under any contact law (:mod:`fem_racket.studies.law_cases` derives it); the ODE solvers start
+from the swing's velocity field.
 """
 
 from __future__ import annotations
 
 import logging
-from collections import OrderedDict
 from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
-from fem_racket.impact.exact.engine import impacts
-from fem_racket.impact.simulate import simulate
-from fem_racket.impact.swing import ball_speed_out, closing_speed
-from fem_racket.impact.system import NoSeparationError
-from fem_racket.studies.grid import SweepSpec
-from fem_racket.studies.law_cases import case_swing, law_chunk
-from fem_racket.validation import AccuracyError
+from fem_racket.impact.problem_batch import ProblemBatch
+from fem_racket.impact.solvers import Solver, make_solver
+from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec
+from fem_racket.studies.law_cases import case_swings
+from fem_racket.studies.sweep_physics import (
+    OBLIQUE_AXES,
+    STRING_AXES,
+    case_beds,
+    case_incidences,
+    given,
+    regime_code,
+)
 
-__all__ = ["COLUMNS", "MODES_COLUMN", "VARIABLES", "clear_caches", "result_variables", "run_chunk"]
+__all__ = [
+    "ALL_VARIABLES",
+    "AXIS_VARIABLES",
+    "COLUMNS",
+    "MODES_COLUMN",
+    "VARIABLES",
+    "clear_caches",
+    "result_variables",
+    "run_chunk",
+]
 
 log = logging.getLogger(__name__)
 
@@ -51,55 +63,78 @@ VARIABLES: dict[str, tuple[str, str]] = {
     "kcb_n_m": ("N/m", "ball/string stiffness K_CB used"),
     "racket_speed_at_impact_m_s": ("m/s", "impact point's speed towards the ball before impact"),
 }
-#: Column of the peak force in a chunk's results (computed only when asked).
-PEAK_COLUMN = list(VARIABLES).index("peak_force_n")
+#: Result variables of the string-bed and oblique axes (only with them): name -> (units,
+#: description).
+AXIS_VARIABLES: dict[str, tuple[str, str]] = {
+    # with a string bed (string_tension, pattern)
+    "stringbed_stiffness_n_m": ("N/m", "string bed's static stiffness at the impact point"),
+    "stringbed_frequency_hz": ("Hz", "string bed's first frequency"),
+    # with an oblique ball (angle, spin, friction); cor ... peak_force_n: its normal impact
+    "ball_speed_out_m_s": ("m/s", "ball speed after an oblique impact (normal and tangential)"),
+    "angle_out_deg": ("deg", "ball's outgoing angle from the face normal"),
+    "spin_out_rpm": ("rpm", "ball's outgoing spin, positive = topspin"),
+    "tangential_cor": ("1", "tangential coefficient of restitution"),
+    "contact_regime": ("1", "contact regime: phases, negative when the first grips"),
+}
+#: The variables of a string bed, and of an oblique ball (only with their axes).
+STRUNG_VARIABLES = ("stringbed_stiffness_n_m", "stringbed_frequency_hz")
+OBLIQUE_VARIABLES = (
+    "ball_speed_out_m_s",
+    "angle_out_deg",
+    "spin_out_rpm",
+    "tangential_cor",
+    "contact_regime",
+)
 #: Columns of a chunk's results: the :data:`VARIABLES`, then the flexible modes the solver kept
 #: for each case (the dataset's ``modes_kept`` attribute, not a variable; NaN for the physical
 #: basis and for a failed case).
-COLUMNS = (*VARIABLES, "modes_kept")
+COLUMNS = (*VARIABLES, *AXIS_VARIABLES, "modes_kept")
+#: Every result variable, in column order.
+ALL_VARIABLES = {**VARIABLES, **AXIS_VARIABLES}
 MODES_COLUMN = COLUMNS.index("modes_kept")
 
 
 def result_variables(spec: SweepSpec) -> list[str]:
-    """The variables a sweep's dataset holds (the peak force only when asked)."""
-    return [v for v in VARIABLES if spec.peak_force or v != "peak_force_n"]
+    """The variables a sweep's dataset holds (the peak force only when asked, those of a
+    string bed or an oblique ball only with their axes)."""
+    left_out = set()
+    if not spec.peak_force:
+        left_out.add("peak_force_n")
+    if not given(spec.values, STRING_AXES):
+        left_out.update(STRUNG_VARIABLES)
+    else:  # the bed replaces the lumped K_CB
+        left_out.add("kcb_n_m")
+    if not given(spec.values, OBLIQUE_AXES):
+        left_out.update(OBLIQUE_VARIABLES)
+    return [v for v in ALL_VARIABLES if v not in left_out]
 
 
 #: Output step of the BDF solvers in sweeps [s] (their peak force is the maximum over it).
 BDF_OUTPUT_STEP = 1e-6
 
-# Per-process caches (each pool or Dask worker fills its own).
+# Per-process cache (each pool or Dask worker fills its own).
 _BASE: dict[tuple, FrameModel] = {}
-_SCALED: OrderedDict[tuple, FrameModel] = OrderedDict()
-
-
-def _remember(cache: OrderedDict, key: tuple, value: Any, size: int) -> Any:
-    cache[key] = value
-    if len(cache) > size:
-        cache.popitem(last=False)
-    return value
 
 
 def clear_caches() -> None:
     """Forget the models cached in this process."""
-    for cache in (_BASE, _SCALED):
-        cache.clear()
+    _BASE.clear()
 
 
-def _base(spec: SweepSpec, elements: int, ei1: float | None) -> tuple[tuple, FrameModel]:
-    """(key, model) of the unscaled frame of a case, assembled once per process."""
+def _base(spec: SweepSpec, elements: int, ei1: float | None) -> FrameModel:
+    """The unscaled frame of a case, assembled once per process."""
     if spec.frame is None and spec.ei2 is not None:  # EI2 fixed: not a scaling of EI1
-        base_key = (spec.frame_key, elements, ei1, spec.ei2)
+        key = (spec.frame_key, elements, ei1, spec.ei2)
     else:
-        base_key = (spec.frame_key, elements)
-    base = _BASE.get(base_key)
+        key = (spec.frame_key, elements)
+    base = _BASE.get(key)
     if base is None:
         if spec.frame is None:
             frame = standard_frame(PAPER_EI1 if spec.ei2 is None else ei1, spec.ei2)
         else:
             frame = spec.frame
-        base = _BASE[base_key] = FrameModel.build(frame, elements)
-    return base_key, base
+        base = _BASE[key] = FrameModel.build(frame, elements)
+    return base
 
 
 def _factor(spec: SweepSpec, ei1: Any, ei_factor: Any) -> Any:
@@ -109,148 +144,61 @@ def _factor(spec: SweepSpec, ei1: Any, ei_factor: Any) -> Any:
     return ei_factor
 
 
-def _model(spec: SweepSpec, elements: int, ei1: float | None, ei_factor: float) -> tuple:
-    """(key, model) of a case's frame, built from cached assembly and modes (BDF solvers)."""
-    base_key, base = _base(spec, elements, ei1)
-    factor = _factor(spec, ei1, ei_factor)
-    base.modes(spec.modes)
-    if factor == 1.0:
-        return base_key + (1.0,), base
-    key = base_key + (factor,)
-    model = _SCALED.get(key)
-    if model is None:
-        model = _remember(_SCALED, key, base.scaled(factor), 256)
-    return key, model
-
-
-def _case(spec: SweepSpec, p: dict[str, Any]) -> tuple[float, ...]:
-    """The result values (in :data:`VARIABLES` order) of one case of a BDF solver."""
-    speed, mass = p["speed"], p["ball_mass"]
-    _, model = _model(spec, p["elements"], p["ei1"], p["ei_factor"])
-    swing = case_swing(p, model.mesh.length)
-    v_r = float(swing.speed_at(p["position"] * model.mesh.length))
-    if spec.law is not None:  # any contact law: one impact by CVODE, from the swing's motion
-        closing_speed(speed, v_r)  # ball and racket must close
-        r = simulate(
-            model,
-            position=p["position"],
-            offset=p["offset"],
-            speed=speed,
-            ball_mass=mass,
-            law=spec.case_law(p),
-            solver=spec.solver,
-            output_step=None,
-            rtol=spec.rtol,
-            atol=spec.atol,
-            swing=swing if swing.velocity or swing.omega else None,
-        )
-        return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, np.nan, v_r, r.n_modes
-    law = LinearContact.for_speed(closing_speed(speed, v_r), kcb=p["kcb"], zeta=p["zeta"])
-    kcb, zeta = law.stiffness, law.zeta
-    r = simulate(
-        model,
-        position=p["position"],
-        offset=p["offset"],
-        speed=speed,
-        ball_mass=mass,
-        kcb=kcb,
-        zeta=zeta,
-        solver=spec.solver,
-        separation=spec.separation,
-        basis=spec.basis,
-        modes=spec.modes,
-        output_step=BDF_OUTPUT_STEP,
-        rtol=spec.rtol,
-        atol=spec.atol,
-        swing=swing,
-    )
-    kept = np.nan if r.n_modes is None else r.n_modes  # None: the physical basis
-    return r.cor, r.contact_time, r.ball_speed_out, r.peak_force, kcb, v_r, kept
-
-
-def _racket_speeds(p: dict[str, Any], rows: np.ndarray, length: float) -> np.ndarray:
-    """v_r [m/s] of the cases ``rows`` of ``case_arrays`` values ``p`` (swept or fixed)."""
-    names = ("racket_speed", "reference", "pivot", "position")
-    cols = [
-        np.broadcast_to(np.asarray(p[k], dtype=object), (rows.size,))
-        if np.ndim(p[k]) == 0
-        else np.asarray(p[k])[rows]
-        for k in names
-    ]
-    out = np.empty(rows.size)
-    for i, (v, ref, piv, pos) in enumerate(zip(*cols, strict=True)):
-        swing = case_swing({"racket_speed": v, "reference": ref, "pivot": piv}, length)
-        out[i] = swing.speed_at(float(pos) * length)
-    return out
-
-
-def _engine_chunk(spec: SweepSpec, chunk: np.ndarray) -> np.ndarray:
-    """Results of the exact solver for the cases ``chunk``: one engine call per frame."""
+def chunk_problems(spec: SweepSpec, chunk: np.ndarray) -> ProblemBatch:
+    """The cases ``chunk`` (flat indices) of a sweep as one batch of problems."""
     p = spec.case_arrays(chunk)
     n = len(chunk)
-    out = np.full((n, len(COLUMNS)), np.nan)
     elements = np.broadcast_to(p["elements"], n)
-    ei1 = np.broadcast_to(np.nan if p["ei1"] is None else p["ei1"], n)
-    # One group per base frame: per element count, and per EI1 when EI2 is fixed.
+    ei1 = np.broadcast_to(np.nan if p["ei1"] is None else np.asarray(p["ei1"], float), n)
+    # one frame per element count, and per EI1 when EI2 is fixed; EI1 otherwise scales it
     split_ei1 = spec.frame is None and spec.ei2 is not None
     keys = np.column_stack([elements, ei1 if split_ei1 else np.zeros(n)])
-    uniq, group = np.unique(keys, axis=0, return_inverse=True)
-    group = group.ravel()
-    for g, (cells, e1) in enumerate(uniq):
-        rows = np.flatnonzero(group == g)
-        try:
-            out[rows] = _engine_group(spec, p, rows, int(cells), float(e1) if split_ei1 else None)
-        except (AccuracyError, np.linalg.LinAlgError) as exc:  # the frame cannot be solved
-            log.warning("%d cases failed (NaN in the results): %s", rows.size, exc)
-    # a failed case (any computed value not finite) is NaN in every variable
-    computed = [k for k in range(len(VARIABLES)) if spec.peak_force or k != PEAK_COLUMN]
-    out[~np.all(np.isfinite(out[:, computed]), axis=1)] = np.nan
-    failed = np.flatnonzero(np.isnan(out[:, 0]))
-    if failed.size:
-        log.warning(
-            "%d cases failed (NaN in the results: no separation within 20 contact times, or "
-            "the frame failed its accuracy check), first: case %d",
-            failed.size,
-            chunk[failed[0]],
-        )
-    return out
-
-
-def _engine_group(
-    spec: SweepSpec, p: dict[str, Any], rows: np.ndarray, cells: int, ei1: float | None
-) -> np.ndarray:
-    """Results of the cases ``rows`` of one base frame (``cells`` elements, EI1 when EI2 is
-    fixed) by one engine call, shape (len(rows), len(COLUMNS))."""
-
-    def take(value: Any, rows: np.ndarray) -> Any:
-        return value if np.ndim(value) == 0 else np.asarray(value)[rows]
-
-    out = np.full((rows.size, len(COLUMNS)), np.nan)
-    _, model = _base(spec, cells, ei1)
-    factor = _factor(spec, take(p["ei1"], rows), take(p["ei_factor"], rows))
-    v_in = np.broadcast_to(np.asarray(take(p["speed"], rows), dtype=float), rows.shape)
-    v_r = _racket_speeds(p, rows, model.mesh.length)
-    closing = np.array([closing_speed(vi, vr) for vi, vr in zip(v_in, v_r, strict=True)])
-    b = impacts(
-        model,
-        position=take(p["position"], rows),
-        offset=take(p["offset"], rows),
-        speed=closing,
-        kcb=take(p["kcb"], rows),
-        zeta=take(p["zeta"], rows),
-        ball_mass=take(p["ball_mass"], rows),
-        ei_factor=factor,
-        separation=spec.separation,
-        tolerance=spec.tolerance,
+    uniq, frame = np.unique(keys, axis=0, return_inverse=True)
+    models = tuple(_base(spec, int(cells), float(e1) if split_ei1 else None) for cells, e1 in uniq)
+    frame = frame.ravel()
+    lengths = np.array([m.mesh.length for m in models])[frame]
+    law = None
+    if spec.law is not None:
+        named = {k: p[k] for k in LAW_PARAMETERS if k in spec.values}
+        law = spec.case_law(named, n)
+    return ProblemBatch(
+        models,
+        position=p["position"],
+        speed=p["speed"],
+        frame=frame,
+        ei_factor=_factor(spec, ei1, p["ei_factor"]),
+        offset=p["offset"],
+        ball_mass=p["ball_mass"],
+        kcb=p["kcb"],
+        zeta=p["zeta"],
+        law=law,
+        separation=spec.separation if spec.law is None else None,
+        swing=case_swings(p, n, lengths),
         peak_force=spec.peak_force,
-        modes=spec.modes,
+        strings=case_beds(p, n),
+        incidence=case_incidences(p, n),
     )
-    v_out = ball_speed_out(b.cor, v_in, v_r)
-    cols = [b.cor, b.contact_time, v_out, b.peak_force, b.kcb, v_r, b.modes]
-    for k, col in enumerate(cols):
-        if col is not None:
-            out[:, k] = np.broadcast_to(col, rows.shape)
-    return out
+
+
+def sweep_solver(spec: SweepSpec) -> Solver:
+    """The solver of a sweep, with the sweep's options."""
+    if given(spec.values, STRING_AXES):  # the strung racket keeps every mode
+        return make_solver(spec.solver, **_strung_options(spec))
+    if spec.solver == "exact":
+        return make_solver("exact", tolerance=spec.tolerance, modes=spec.modes)
+    if spec.solver == "general":
+        return make_solver("general", tolerance=spec.tolerance)
+    options: dict[str, Any] = {"rtol": spec.rtol, "atol": spec.atol, "output_step": None}
+    if spec.law is None:  # the paper's law: its modes, basis, and the peak force over 1 us
+        options.update(basis=spec.basis, modes=spec.modes, output_step=BDF_OUTPUT_STEP)
+    return make_solver(spec.solver, **options)
+
+
+def _strung_options(spec: SweepSpec) -> dict[str, Any]:
+    """The options of the sweep's solver on the strung racket (:mod:`.sweep_physics`)."""
+    if spec.solver == "general":
+        return {"tolerance": spec.tolerance}
+    return {"rtol": spec.rtol, "atol": spec.atol} if spec.solver == "cvode" else {}
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
@@ -261,21 +209,30 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     it (:class:`~fem_racket.validation.AccuracyError`), or any of whose values is not finite,
     gets NaN in every variable (the sweep reports how many); any other error stops the sweep.
     """
-    if spec.law is not None and spec.solver == "general":
-        return law_chunk(spec, chunk, _model)
-    if spec.solver == "exact" and spec.law is None:
-        return _engine_chunk(spec, np.asarray(chunk))
-    out = np.empty((len(chunk), len(COLUMNS)))
-    # K_CB is NaN under another contact law than the paper's (it has none)
-    checked = [k for k, v in enumerate(VARIABLES) if spec.law is None or v != "kcb_n_m"]
-    for row, index in enumerate(chunk):
-        try:
-            out[row] = _case(spec, spec.case(int(index)))
-        except (NoSeparationError, AccuracyError, RuntimeError, np.linalg.LinAlgError) as exc:
-            log.warning("case %d failed (NaN in the results): %s", index, exc)
-            out[row] = np.nan
-            continue
-        if not np.all(np.isfinite(out[row, checked])):
-            log.warning("case %d failed (NaN in the results): a result is not finite", index)
-            out[row] = np.nan
+    chunk = np.asarray(chunk)
+    outcome = sweep_solver(spec).solve_many(chunk_problems(spec, chunk))
+    out = np.full((chunk.size, len(COLUMNS)), np.nan)
+    base = outcome.columns()
+    out[:, : len(VARIABLES)] = base[:, :-1]
+    out[:, MODES_COLUMN] = base[:, -1]
+    for name, values in outcome.extra.items():
+        if name == "contact_regime":
+            values = [regime_code(v) for v in values]
+        out[:, COLUMNS.index(name)] = values
+    # K_CB is NaN under another contact law than the paper's (it has none); the tangential
+    # COR is NaN without tangential speed (head-on without spin: 0/0)
+    computed = [
+        COLUMNS.index(v)
+        for v in result_variables(spec)
+        if (spec.law is None or v != "kcb_n_m") and v != "tangential_cor"
+    ]
+    out[~np.all(np.isfinite(out[:, computed]), axis=1)] = np.nan
+    failed = np.flatnonzero(np.isnan(out[:, 0]))
+    if failed.size:
+        log.warning(
+            "%d cases failed (NaN in the results: no separation within 20 contact times, or "
+            "the frame failed its accuracy check), first: case %d",
+            failed.size,
+            chunk[failed[0]],
+        )
     return out

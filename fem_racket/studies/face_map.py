@@ -5,7 +5,8 @@ Every grid point (x along the frame, y across it) on the head outline
 swing is a rigid motion in the bending plane, so v_r does not depend on y); the frame bends and
 twists (:mod:`fem_racket.impact.offaxis`), and the ball leaves at
 v_out = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11). The whole face is one
-call of the batched engine. Points off the face are NaN.
+:class:`~fem_racket.impact.problem_batch.ProblemBatch`, which the exact solver answers by one
+call of its batched engine. Points off the face are NaN.
 
 Power area: the area of the face where e_A >= ``power_fraction`` x its maximum (Hatze 1994's
 "effective power region"; quality rackets > 100 cm^2), in cm^2. Each grid node stands for the
@@ -23,7 +24,9 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
 from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, impacts
+from fem_racket.impact.problem_batch import ProblemBatch
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.impact.solvers import make_solver
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
 from fem_racket.studies.sweetspots import centre_of_percussion, mode_node_positions
 from fem_racket.validation import InputError, check_positive, check_range
@@ -159,7 +162,7 @@ def face_map(
         As for :func:`fem_racket.studies.racket_map.racket_map`.
     options : dict, optional
         ``ball_mass``, ``kcb``, ``zeta``, ``separation``, ``modes``, ``tolerance`` (as for
-        :func:`fem_racket.impact.exact.engine.impacts`), ``elements``, ``head``
+        :func:`fem_racket.simulate`), ``elements``, ``head``
         (:class:`HeadOutline`, the 100 in^2 default) and ``power_fraction`` (default 0.9).
     """
     opts = dict(options or {})
@@ -176,8 +179,8 @@ def face_map(
     opts.setdefault("tolerance", DEFAULT_TOLERANCE)
     opts["ball_mass"] = Ball(opts.get("ball_mass") or DEFAULT_BALL_MASS).mass
     speed = check_positive("speed", speed, "m/s")
-    x = _increasing("positions", positions, 2)
-    y = _increasing("offsets", offsets, 2)
+    x = increasing("positions", positions, 2)
+    y = increasing("offsets", offsets, 2)
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
     length = model.mesh.length
     head = head.on_frame(length)
@@ -189,8 +192,9 @@ def face_map(
     e = np.full(X.shape, np.nan)
     if np.any(face):
         cols = np.nonzero(face)[1]
-        batch = impacts(model, position=X[face], offset=Y[face], speed=closing[cols], **opts)
-        e[face] = batch.cor
+        solver = make_solver("exact", tolerance=opts.pop("tolerance"), modes=opts.pop("modes"))
+        batch = ProblemBatch((model,), X[face], closing[cols], offset=Y[face], **opts)
+        e[face] = solver.solve_many(batch).cor
     vo = ball_speed_out(e, speed, v_r[None, :])
     k = np.unravel_index(int(np.nanargmax(e)), e.shape) if np.any(face) else None
     best = (float(x[k[1]]), float(y[k[0]]), float(e[k])) if k else (np.nan, np.nan, np.nan)
@@ -203,7 +207,8 @@ def face_map(
     )  # fmt: skip
 
 
-def _increasing(name: str, values: Any, minimum: int) -> np.ndarray:
+def increasing(name: str, values: Any, minimum: int) -> np.ndarray:
+    """``values`` as an array of at least ``minimum`` increasing finite numbers, or refused."""
     v = np.atleast_1d(np.asarray(values, dtype=float))
     if v.size < minimum or not np.all(np.isfinite(v)) or np.any(np.diff(v) <= 0.0):
         raise InputError(

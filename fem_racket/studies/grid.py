@@ -20,27 +20,22 @@ import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.contact.presets import check_linear_options
-from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import (
-    EI_RATIO,
     PAPER_EI1,
-    RHOA1,
-    RHOA2,
     Frame,
-    check_ei_factor,
-    check_stiffness,
-    standard_ei1_range,
     standard_frame,
 )
 from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
 from fem_racket.impact.solvers import auto_method
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
+from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.studies.grid_checks import check_offsets, check_rigidity, check_swings
 from fem_racket.studies.grid_values import (
     LAW_PARAMETERS,
+    OPTIONAL,
     PARAMETERS,
     Parameter,
     as_values,
@@ -50,12 +45,12 @@ from fem_racket.studies.grid_values import (
 )
 from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
+from fem_racket.studies.sweep_physics import check_physics
 from fem_racket.validation import (
     InputError,
     check_choice,
     check_integer,
     check_positive,
-    check_range,
     show,
 )
 
@@ -191,70 +186,17 @@ class SweepSpec:
         check_solver_settings(
             spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
         )
-        spec._check_rigidity()
-        spec._check_swings()
-        spec._check_offsets()
+        check_rigidity(spec)
+        frame_length = float((frame if frame is not None else standard_frame()).length)
+        options = {k: getattr(spec, k) for k in ("solver", "separation", "basis", "modes")}
+        check_physics(values, spec.law, {**options, "tolerance": spec.tolerance}, frame_length)
+        check_swings(spec)
+        check_offsets(spec)
         check_grid_size(spec.shape, spec.dims)
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         if not isinstance(spec.peak_force, bool):
             raise InputError(f"peak_force = {spec.peak_force!r} is not allowed: must be a bool")
         return spec
-
-    def _check_rigidity(self) -> None:
-        """Every frame of the grid (EI1, EI2 or the custom frame's EI, times ei_factor) with
-        EI / rhoA within EI_RANGE, so that no case fails on it mid-sweep."""
-        if isinstance(self.frame, FrameMesh):
-            ratio = self.frame.EI / self.frame.rhoA
-        elif isinstance(self.frame, Frame):
-            ratio = [s.EI / s.rhoA for s in self.frame.segments]
-        else:
-            ei1 = np.atleast_1d(self.values["ei1"])
-            if self.ei2 is None:
-                for v in (ei1.min(), ei1.max()):
-                    check_range("ei1", float(v), *standard_ei1_range(), unit="N m^2")
-                ei2 = ei1 * EI_RATIO
-            else:
-                for v in (ei1.min(), ei1.max()):
-                    check_stiffness("ei1", float(v), RHOA1)
-                ei2 = np.atleast_1d(check_stiffness("ei2", self.ei2, RHOA2))
-            ratio = np.concatenate([ei1 / RHOA1, ei2 / RHOA2])
-        factors = np.atleast_1d(self.values["ei_factor"])
-        for f in (float(np.min(factors)), float(np.max(factors))):
-            check_ei_factor(f, ratio)
-
-    def _check_offsets(self) -> None:
-        """Every (position, offset) of the grid on the head outline (or on the axis), and a
-        frame with torsion data when any offset is not 0, so that no case fails mid-sweep."""
-        y = np.atleast_1d(self.values["offset"])
-        if np.all(y == 0.0):
-            return
-        frame = self.frame if self.frame is not None else standard_frame()
-        if not (frame.torsion if isinstance(frame, Frame) else frame.has_torsion):
-            raise InputError(
-                "offset is not allowed with this frame: it has no torsion data (GJ, rhoIp) and "
-                "takes impacts on the long axis only"
-            )
-        head = DEFAULT_HEAD.on_frame(float(frame.length))
-        for x in np.atleast_1d(self.values["position"]):
-            for v in y:
-                head.check(float(x) * head.frame_length_m, float(v))
-
-    def _check_swings(self) -> None:
-        """Every swing of the grid valid (no pivot at its reference point) and closing on the
-        slowest ball at every impact point, so that no case fails on it mid-sweep."""
-        v = self.values
-        if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
-            return
-        frame = self.frame if self.frame is not None else standard_frame()
-        length = float(frame.length)
-        x = np.atleast_1d(v["position"]) * length
-        slowest = float(np.min(v["speed"]))
-        pivots = [None] if v["pivot"] is None else np.atleast_1d(v["pivot"]).tolist()
-        for speed in np.atleast_1d(v["racket_speed"]).tolist():
-            for ref in np.atleast_1d(v["reference"]).tolist():
-                for pivot in pivots:
-                    swing = Swing.from_speed(speed, length, reference=ref, pivot=pivot)
-                    closing_speed(slowest, float(np.min(swing.speed_at(x))))
 
     # -- the grid ----------------------------------------------------------------------------
     @cached_property
@@ -315,8 +257,10 @@ class SweepSpec:
         def plain(v: Any) -> Any:
             return v.tolist() if isinstance(v, np.ndarray) else v
 
-        return {
-            "values": {k: plain(v) for k, v in self.values.items()},
+        return {  # the string-bed and oblique axes only when given (digests stay as they were)
+            "values": {
+                k: plain(v) for k, v in self.values.items() if not (k in OPTIONAL and v is None)
+            },
             "ei2": self.ei2,
             "frame": self.frame_key,
             "solver": self.solver,

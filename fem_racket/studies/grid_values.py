@@ -19,6 +19,7 @@ from fem_racket.contact.linear import LinearContact, check_ball_mass
 from fem_racket.contact.registry import LAW_PARAMETERS as DECLARED
 from fem_racket.contact.registry import LiveView
 from fem_racket.frame.mesh import MAX_ELEMENTS
+from fem_racket.strings.bed import parse_pattern
 from fem_racket.studies.law_axes import check_law_value
 from fem_racket.studies.limits import MAX_CASES
 from fem_racket.validation import (
@@ -37,6 +38,8 @@ __all__ = [
     "as_values",
     "parameter",
     "parse_values",
+    "pattern_code",
+    "pattern_label",
     "value_count",
 ]
 
@@ -66,7 +69,32 @@ PARAMETERS: dict[str, Parameter] = {
     "zeta": Parameter("1", "ball/string damping ratio", "zeta"),
     "kcb": Parameter("N/m", "ball/string stiffness K_CB", "kcb_n_m"),
     "elements": Parameter("1", "number of beam elements", "elements"),
+    # the string bed (issue 25): with either, the bed replaces the lumped K_CB
+    "string_tension": Parameter("N", "tension per string", "string_tension_n"),
+    "pattern": Parameter(
+        "1", "string pattern as mains*100 + crosses (1619: 16 mains x 19 crosses)", "pattern"
+    ),
+    # the oblique, spinning ball (issue 26)
+    "angle": Parameter("deg", "incidence angle from the face normal", "angle_deg"),
+    "spin": Parameter("rpm", "incoming spin, positive = topspin", "spin_rpm"),
+    "friction": Parameter("1", "Coulomb friction coefficient ball/strings", "friction"),
+    "ball_inertia": Parameter("1", "ball's moment of inertia I/(m R^2)", "ball_inertia_i_over_mr2"),
+    "ball_radius": Parameter("m", "ball radius R", "ball_radius_m"),
+    "compliance_ratio": Parameter(
+        "1", "normal over tangential contact stiffness eta^2", "compliance_ratio_eta2"
+    ),
 }
+#: The parameters that are None unless given: they add physics (a string bed, an incidence).
+OPTIONAL = (
+    "string_tension",
+    "pattern",
+    "angle",
+    "spin",
+    "friction",
+    "ball_inertia",
+    "ball_radius",
+    "compliance_ratio",
+)
 
 #: Sweepable parameters of the contact law families (a sweep holds those of its law's family):
 #: the attribute is the run file's [contact] key with ``contact_`` before it (live, from the
@@ -84,10 +112,31 @@ def parameter(name: str) -> Parameter:
     return PARAMETERS[name] if name in PARAMETERS else LAW_PARAMETERS[name]
 
 
+def pattern_code(text: str) -> int:
+    """``"16x19"`` -> 1619: a pattern as one number, mains*100 + crosses (both 4..40)."""
+    mains, crosses = parse_pattern(text)
+    return 100 * mains + crosses
+
+
+def pattern_label(code: float) -> str:
+    """1619 -> ``"16x19"``."""
+    return f"{int(code) // 100}x{int(code) % 100}"
+
+
 def _check_value(name: str, value: object) -> float | int:
     if name in LAW_PARAMETERS:
         return check_law_value(name, value)
     unit = PARAMETERS[name].unit
+    if name == "pattern":  # a code mains*100 + crosses, or the text
+        return pattern_code(value if isinstance(value, str) else pattern_label(value))
+    if name == "angle":
+        return check_range(name, value, 0.0, 90.0, unit=unit, include_high=False)
+    if name == "spin":
+        return check_finite(name, value, unit)
+    if name in ("friction", "compliance_ratio"):
+        return check_range(name, value, 0.0, math.inf, unit="")
+    if name == "ball_inertia":
+        return check_range(name, value, 0.0, 2.0 / 3.0, include_low=False)
     if name in ("position", "reference"):
         return check_range(name, value, 0.0, 1.0, unit=unit)
     if name in ("racket_speed", "pivot", "offset"):  # any sign: towards/away, either side
@@ -108,6 +157,8 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
     Raises :class:`InputError` with a one-line message on malformed text or bad values.
     """
     text = str(text).strip()
+    if name == "pattern":  # 16x19 or a comma list of them
+        return as_values(name, [pattern_code(t) for t in text.split(",")] if "," in text else text)
     form = "a number, a comma list or start:stop:num[:log]"
     if ":" in text:
         parts = [p.strip() for p in text.split(":")]
@@ -170,14 +221,14 @@ def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
         raise InputError(f"parameter = {show(name)} is not allowed: must be one of {known}")
     if value is None:
         return None
-    if isinstance(value, str):
+    if isinstance(value, str) and not (name == "pattern" and "," not in value):
         return parse_values(name, value)
     if np.ndim(value) == 0:
         return _check_value(name, value)
     if np.ndim(value) != 1 or len(value) == 0:
         raise InputError(f"{name} = {show(value)} is not allowed: must be a number or a 1-D list")
     checked = [_check_value(name, v) for v in value]
-    arr = np.array(checked, dtype=np.int64 if name == "elements" else float)
+    arr = np.array(checked, dtype=np.int64 if name in ("elements", "pattern") else float)
     if np.unique(arr).size != arr.size:
         raise InputError(f"{name} = {show(arr.tolist())} is not allowed: values must be distinct")
     return arr

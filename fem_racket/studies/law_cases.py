@@ -1,12 +1,11 @@
-"""Sweep cases under a contact law: a chunk of cases, whatever their frames, in one batch.
+"""The swing of sweep cases, and why a swinging racket is the stationary one at the closing speed.
 
-The cases of a chunk run as one batch of
-:func:`fem_racket.impact.general.integrator.solve_general`: each case's frame (mesh, EI
-scaling) at its impact point (:func:`fem_racket.impact.general.batches.stack_receptances`),
-positions, speeds, ball masses and the law's parameters (:mod:`fem_racket.studies.law_axes`)
-as arrays of one value per case, which is what makes the general integrator cheap per impact
-(``scripts/bench_kernels.py``). Every case has its own step and modes, so its result does not
-depend on the chunk (nor on the backend or a resume).
+Each case's swing (racket_speed, reference, pivot: :class:`fem_racket.impact.swing.Swing`)
+becomes its rigid racket motion in the :class:`~fem_racket.impact.problem_batch.ProblemBatch`
+of its chunk (:func:`case_swings`). Under a contact law the solver runs a chunk as one batch of
+the general integrator (:func:`fem_racket.impact.batch_solve.law_batch`): each case with its
+frame's receptance, its step and modes, so its result does not depend on the chunk (nor on the
+backend or a resume).
 
 **A swinging racket.** The free frame is linear, so its motion is the rigid swing (the point x
 moving towards the ball at s(x) = v + omega x, :mod:`fem_racket.impact.swing`) plus the
@@ -32,23 +31,13 @@ the sweep's ``cor``. The tests check v_out against CVODE started from the swing'
 
 from __future__ import annotations
 
-import logging
-from collections.abc import Callable
-from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.general.batches import stack_receptances
-from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.law_impact import receptance
-from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
-from fem_racket.impact.system import NoSeparationError
-from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec
+from fem_racket.impact.swing import Swing
 
-__all__ = ["case_swing", "law_chunk"]
-
-log = logging.getLogger(__name__)
+__all__ = ["case_swing", "case_swings"]
 
 
 def case_swing(p: dict[str, Any], length: float) -> Swing:
@@ -56,68 +45,16 @@ def case_swing(p: dict[str, Any], length: float) -> Swing:
     return Swing.from_speed(p["racket_speed"], length, reference=p["reference"], pivot=p["pivot"])
 
 
-def law_chunk(spec: SweepSpec, chunk: np.ndarray, model_of: Callable[..., tuple]) -> np.ndarray:
-    """Results (cor, t_c, v_out, peak force, NaN for K_CB, v_r, flexible modes) of the cases
-    ``chunk``; the modes are those given to the integrator (every mode of the frame's mesh, as
-    :func:`fem_racket.simulate` reports under a law).
-
-    ``model_of(spec, elements, ei1, ei_factor) -> (key, FrameModel)`` gives each case's frame
-    (cached by the caller). Every case of the chunk, whatever its frame, goes to one call of
-    the general integrator at the sweep's COR tolerance; each case is computed on its own (its
-    frame, its step), so its result does not depend on the chunk it is in. A case the
-    integrator cannot vouch for, or whose ball does not separate within its time limit, gives
-    NaN, with a warning.
-    """
-    cases = [spec.case(int(i)) for i in chunk]
-    groups: dict[tuple, list[int]] = {}
-    models: dict[tuple, Any] = {}
-    for row, p in enumerate(cases):
-        key, model = model_of(spec, p["elements"], p["ei1"], p["ei_factor"])
-        key = (key, float(p["offset"]))  # off axis the frame twists too: its own receptance
-        groups.setdefault(key, []).append(row)
-        models[key] = model
-    order = np.array([r for rows in groups.values() for r in rows])
-    frame = [models[k] for k, rows in groups.items() for _ in rows]  # in the order of ``order``
-    parts = []
-    for key, rows in groups.items():
-        mass = np.array([cases[r]["ball_mass"] for r in rows])
-        pos = [cases[r]["position"] for r in rows]
-        parts.append(receptance(models[key], pos, mass, None, key[1]))
-    rec = stack_receptances(_same_rigid(parts))
-    length = np.array([m.mesh.length for m in frame])
-    swings = [case_swing(cases[r], ln) for r, ln in zip(order, length, strict=True)]
-    pos = np.array([cases[r]["position"] for r in order])
-    speed = np.array([cases[r]["speed"] for r in order])
-    v_r = np.array([sw.speed_at(x * ln) for sw, x, ln in zip(swings, pos, length, strict=True)])
-    closing = np.array([closing_speed(v, w) for v, w in zip(speed, v_r, strict=True)])
-    named = {k: [cases[r][k] for r in order] for k in LAW_PARAMETERS if k in spec.values}
-    law = spec.case_law(named, len(order))
-    out = np.full((len(cases), 7), np.nan)
-    try:
-        o = solve_general(law, rec, closing, tolerance=spec.tolerance, refused="nan")
-    except (NoSeparationError, RuntimeError) as exc:
-        log.warning("%d cases failed (NaN in the results): %s", len(cases), exc)
-        return out
-    bad = int(np.sum(~np.isfinite(o.ball_velocity)))
-    if bad:
-        log.warning(
-            "%d cases could not be computed within tolerance %s or did not separate (NaN in "
-            "the results)",
-            bad,
-            spec.tolerance,
-        )
-    e_a = -o.ball_velocity / closing
-    out[order, 0] = e_a
-    out[order, 1] = o.contact_time
-    out[order, 2] = ball_speed_out(e_a, speed, v_r)
-    out[order, 3] = o.peak_force
-    out[order, 5] = v_r
-    out[order, 6] = [p.a.shape[1] for p in parts for _ in range(p.a.shape[0])]
+def case_swings(p: dict[str, Any], n: int, lengths: np.ndarray) -> np.ndarray | None:
+    """The swings (butt speed [m/s], turning rate [rad/s]) of ``n`` cases with parameter values
+    ``p`` (swept ones arrays of one value per case, fixed ones numbers) on rackets of
+    ``lengths`` [m]; None when no case's racket moves."""
+    names = ("racket_speed", "reference", "pivot")
+    if np.ndim(p["racket_speed"]) == 0 and p["racket_speed"] == 0.0:
+        return None
+    cols = [np.broadcast_to(np.asarray(p[k], dtype=object), (n,)) for k in names]
+    out = np.empty((n, 2))
+    for i, (v, ref, piv) in enumerate(zip(*cols, strict=True)):
+        s = case_swing({"racket_speed": v, "reference": ref, "pivot": piv}, float(lengths[i]))
+        out[i] = s.velocity, s.omega
     return out
-
-
-def _same_rigid(parts: list) -> list:
-    """Receptances with as many rigid modes each: on-axis cases get the roll as a zero column
-    when off-axis ones (translation, rotation, roll) share their batch (it adds exactly 0)."""
-    n = max(p.rigid.shape[1] for p in parts)
-    return [replace(p, rigid=np.pad(p.rigid, ((0, 0), (0, n - p.rigid.shape[1])))) for p in parts]

@@ -1,9 +1,13 @@
 """Oblique impacts over a grid of incidence angle, incoming spin and friction.
 
-Each incidence angle sets one normal speed V cos(angle), so its normal impact
-(:func:`fem_racket.impact.simulate_oblique.normal_impact`) is computed once and every spin and
-friction at that angle marches only the tangential contact over its force history (milliseconds
-each).
+Each incidence angle sets one normal speed V cos(angle), so its normal impact is computed once
+and every spin and friction at that angle marches only the tangential contact over its force
+history (milliseconds each). On the free racket the grid is one
+:class:`~fem_racket.impact.problem_batch.ProblemBatch` that the solver answers, as
+``fem-racket sweep --angle ... --spin ... --friction ...`` does
+(:func:`fem_racket.impact.batch_solve.each_batch` shares the normal impacts); a clamped head
+(eqs 1-3 in closed form, not a solver's structure) by
+:func:`fem_racket.impact.simulate_oblique.normal_impact`.
 """
 
 from __future__ import annotations
@@ -16,7 +20,11 @@ import numpy as np
 
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.oblique import oblique_on
+from fem_racket.impact.problem import ImpactProblem
+from fem_racket.impact.problem_batch import ProblemBatch
+from fem_racket.impact.simulate import PROBLEM_OPTIONS
 from fem_racket.impact.simulate_oblique import normal_impact
+from fem_racket.impact.solvers import make_solver
 from fem_racket.validation import InputError, check_positive
 
 __all__ = ["OUTPUTS", "ObliqueSweep", "oblique_map", "oblique_sweep"]
@@ -102,6 +110,15 @@ def oblique_sweep(
     out = {k: np.empty(shape) for k in OUTPUTS}
     regime = np.empty(shape, dtype=object)
     cases = [dataclasses.replace(base, angle=x) for x in a]  # checks every angle first
+    if not clamped:
+        incidences = [
+            dataclasses.replace(inc, spin=spin, friction=mu) for inc in cases for spin in s
+            for mu in f
+        ]  # fmt: skip
+        got = _solved(frame, incidences, v, kwargs)
+        for key in (*OUTPUTS, "contact_regime"):
+            got[key] = got[key].reshape(shape)
+        return ObliqueSweep(a, s, f, got)
     for i, inc in enumerate(cases):
         normal = normal_impact(frame, inc.components(v)[0], clamped=clamped, **kwargs)
         for j, spin in enumerate(s):
@@ -145,11 +162,25 @@ def oblique_map(
     """
     x = _axis("positions", positions)
     v = check_positive("speed", speed, "m/s")
-    v_n = incidence.components(v)[0]
-    rows = [
-        oblique_on(normal_impact(frame, v_n, position=p, **kwargs), incidence, v).summary()
-        for p in x
-    ]
-    out = {key: np.array([r[key] for r in rows]) for key in OUTPUTS}
-    regime = np.array([r["contact_regime"] for r in rows], dtype=object)
-    return {"position_x_over_l": x, **out, "contact_regime": regime}
+    if "position" in kwargs:
+        raise InputError("position is not allowed with positions: give the impact points once")
+    return {"position_x_over_l": x, **_solved(frame, [incidence] * x.size, v, kwargs, x)}
+
+
+def _solved(
+    frame: Any, incidences: list, speed: float, kwargs: dict, positions: Any = None
+) -> dict[str, np.ndarray]:
+    """The oblique outcomes of ``incidences`` at ``speed`` (and ``positions``) on the free
+    racket, by the solver of ``kwargs`` (``simulate``'s options) over one ProblemBatch."""
+    problem_kw = {k: w for k, w in kwargs.items() if k in PROBLEM_OPTIONS}
+    solver_kw = {k: w for k, w in kwargs.items() if k not in PROBLEM_OPTIONS}
+    problem = ImpactProblem.build(frame, speed=speed, **problem_kw)
+    per_case: dict[str, Any] = {"incidence": incidences}
+    if positions is not None:
+        per_case["position"] = positions
+    batch = ProblemBatch.of(problem, **per_case)
+    out = make_solver(solver_kw.pop("solver", "auto"), **solver_kw).solve_many(batch)
+    got = {k: np.asarray(out.extra[k], dtype=float) for k in OUTPUTS if k in out.extra}
+    got.update(cor=out.cor, contact_time_s=out.contact_time)
+    got["contact_regime"] = np.asarray(out.extra["contact_regime"], dtype=object)
+    return got

@@ -7,11 +7,11 @@ stationary free racket's COR there is e_A(x), and the ball leaves at
 v_out(x) = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey 2002, ch. 11; exact for the linear
 law, :mod:`fem_racket.impact.swing`). Sweet spots: :mod:`fem_racket.studies.sweetspots`.
 
-:func:`apparent_cor_along` is the one place the impacts are solved: one call of the batched
-engine (:func:`fem_racket.impact.exact.engine.impacts`) for the whole grid, frame modes computed
-once; under a contact law other than the paper's, one batch of the general integrator
-(:func:`fem_racket.impact.general.integrator.solve_general`, every mode available, those far above
-the contact frequency as one residual mode). The identity for v_out holds for any law: the impact
+:func:`apparent_cor_along` is the one place the impacts are solved: the whole grid as one
+:class:`~fem_racket.impact.problem_batch.ProblemBatch` that the solver answers (the exact
+solver's batched engine, frame modes computed once; under a contact law other than the paper's,
+the general solver's one integrator call, every mode available, those far above the contact
+frequency as one residual mode). The identity for v_out holds for any law: the impact
 of a swinging free racket is the stationary one at the closing speed
 (:mod:`fem_racket.studies.law_cases` derives it), e_A depending on that speed.
 """
@@ -19,20 +19,27 @@ of a swinging free racket is the stationary one at the closing speed
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball, kcb_from_speed
+from fem_racket.contact.linear import Ball, kcb_from_speed
 from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
-from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE, impacts
-from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.law_impact import receptance
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
+from fem_racket.impact.problem_batch import ProblemBatch
+from fem_racket.impact.solvers import make_solver
+from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.studies.map_options import (
+    DEFAULT_POSITIONS,
+    DEFAULT_POWER_FRACTION,
+    MapImpact,
+    MapSetup,
+)
+from fem_racket.studies.options import take
 from fem_racket.studies.sweetspots import (
     SweetSpots,
     centre_of_percussion,
@@ -51,27 +58,25 @@ from fem_racket.validation import (
     work_begins,
 )
 
-__all__ = ["DEFAULT_POSITIONS", "RacketMap", "apparent_cor_along", "racket_map"]
+__all__ = [
+    "DEFAULT_POSITIONS",
+    "DEFAULT_POWER_FRACTION",
+    "RacketMap",
+    "apparent_cor_along",
+    "racket_map",
+]
 
-#: Default grid: the string face from its throat end to the tip, x/L (start, stop, points).
-DEFAULT_POSITIONS = (0.5, 1.0, 200)
-#: Default fraction of the maximum v_out bounding the power region.
-DEFAULT_POWER_FRACTION = 0.95
+
+@lru_cache(maxsize=16)
+def _solver(name: str, tolerance: float | None, modes: int | None = None) -> Any:
+    """The map's solver, made once per options (a map asks it again for each refined point)."""
+    if name == "general":
+        return make_solver(name, tolerance=tolerance)
+    return make_solver(name, tolerance=tolerance, modes=modes)
 
 
 def apparent_cor_along(
-    model: FrameModel,
-    positions: np.ndarray,
-    speeds: np.ndarray,
-    *,
-    ball_mass: float = DEFAULT_BALL_MASS,
-    kcb: float | None = None,
-    zeta: float | None = None,
-    separation: str = "displacement",
-    modes: int | None = DEFAULT_MODES,
-    tolerance: float | None = DEFAULT_TOLERANCE,
-    law: Any = None,
-    kcb_factor: float = 1.0,
+    model: FrameModel, positions: np.ndarray, speeds: np.ndarray, **options: Any
 ) -> np.ndarray:
     """e_A of the stationary free frame struck at each position (x/L) at each closing speed.
 
@@ -82,44 +87,42 @@ def apparent_cor_along(
         Impact points x/L.
     speeds : array of float
         Closing speed v_in + v_r at each point [m/s] (sets K_CB unless ``kcb`` is given).
-    ball_mass, kcb, zeta, separation, modes, tolerance
-        As for :func:`fem_racket.simulate` (``tolerance``: the batched engine's COR tolerance,
-        or the general integrator's under a law).
-    law : ContactLaw, optional
-        A contact law other than the paper's: the general integrator, the law's own end
-        condition (``kcb``, ``zeta``, ``separation`` and ``modes`` do not apply).
-    kcb_factor : float
-        Factor on the linear law's K_CB (``kcb``, or the paper's K_CB of each closing speed):
-        a stiffer or softer string bed, as the design studies vary it.
+    **options
+        The fields of :class:`~fem_racket.studies.map_options.MapImpact`: ``ball_mass``,
+        ``kcb``, ``zeta``, ``separation``, ``modes``, ``tolerance``, ``law`` (a ContactLaw:
+        the general integrator and the law's own end condition; ``kcb``, ``zeta``,
+        ``separation`` and ``modes`` do not apply) and ``kcb_factor`` (on the linear law's
+        K_CB, or the paper's K_CB of each closing speed: a stiffer or softer string bed).
 
     Returns
     -------
     ndarray
         e_A = -v_B(t_c) / V_B0 at each point (NaN where the ball does not separate).
     """
+    o = take(options, "an option of apparent_cor_along", MapImpact)[0]
+    ball_mass, kcb, zeta, separation = o.ball_mass, o.kcb, o.zeta, o.separation
+    modes, tolerance, law, kcb_factor = o.modes, o.tolerance, o.law, o.kcb_factor
     check_choice("separation", separation, SEPARATION_EVENTS)
     x = np.atleast_1d(np.asarray(positions, dtype=float))
     v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
     if law is not None:
-        out = solve_general(law, receptance(model, x, ball_mass), v, tolerance=tolerance)
-        return -out.ball_velocity / v
+        batch = ProblemBatch((model,), x.ravel(), v.ravel(), ball_mass=ball_mass, law=law)
+        return _solver("general", tolerance).solve_many(batch).cor.reshape(x.shape)
     if kcb_factor != 1.0:
         check_positive("kcb_factor", kcb_factor, "")
         if kcb is None:
             kcb = np.array([kcb_from_speed(s) for s in v.ravel()]).reshape(v.shape)
         kcb = kcb * kcb_factor
-    batch = impacts(
-        model,
-        position=x,
-        speed=v,
-        kcb=kcb,
-        zeta=zeta,
+    batch = ProblemBatch(
+        (model,),
+        x.ravel(),
+        v.ravel(),
         ball_mass=ball_mass,
+        kcb=None if kcb is None else np.broadcast_to(kcb, x.shape).ravel(),
+        zeta=zeta,
         separation=separation,
-        tolerance=tolerance,
-        modes=modes,
     )
-    return np.asarray(batch.cor, dtype=float).reshape(x.shape)
+    return _solver("exact", tolerance, modes).solve_many(batch).cor.reshape(x.shape)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -192,32 +195,17 @@ def _grid(positions: Any) -> np.ndarray:
     return x
 
 
-def racket_map(
-    frame: Frame | FrameMesh | FrameModel | None = None,
-    *,
-    name: str = "racket",
-    speed: float = 20.0,
-    racket_speed: float = 0.0,
-    reference: float = DEFAULT_REFERENCE,
-    pivot: float | None = None,
-    positions: Any = None,
-    ball_mass: float = DEFAULT_BALL_MASS,
-    kcb: float | None = None,
-    zeta: float | None = None,
-    separation: str = "displacement",
-    modes: int | None = DEFAULT_MODES,
-    elements: int = 20,
-    power_fraction: float = DEFAULT_POWER_FRACTION,
-    tolerance: float | None = DEFAULT_TOLERANCE,
-    law: Any = None,
-    kcb_factor: float = 1.0,
-) -> RacketMap:
+def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: Any) -> RacketMap:
     """e_A and v_out along a racket, and its sweet spots.
 
     Parameters
     ----------
     frame : Frame, FrameMesh or FrameModel, optional
         The racket (the paper's standard one when None).
+    **options
+        The fields of :class:`~fem_racket.studies.map_options.MapSetup` and
+        :class:`~fem_racket.studies.map_options.MapImpact` (checked with a "did you mean"):
+
     name : str
         Its label in tables and plots.
     speed : float
@@ -243,6 +231,12 @@ def racket_map(
     -------
     RacketMap
     """
+    setup, o, _ = take(options, "an option of racket_map", MapSetup, MapImpact)
+    name, speed, positions, elements = setup.name, setup.speed, setup.positions, setup.elements
+    racket_speed, reference, pivot = setup.racket_speed, setup.reference, setup.pivot
+    power_fraction = setup.power_fraction
+    ball_mass, kcb, zeta, separation = o.ball_mass, o.kcb, o.zeta, o.separation
+    modes, tolerance, law, kcb_factor = o.modes, o.tolerance, o.law, o.kcb_factor
     speed = check_positive("speed", speed, "m/s")
     law = get_law(law) if isinstance(law, str) else law
     if law is not None:

@@ -26,29 +26,33 @@ import numpy as np
 
 from fem_racket.frame.continuous import free_free_frequencies
 from fem_racket.frame.mesh import FrameMesh, frame_mesh, graded_mesh
-from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.simulate import simulate
 from fem_racket.progress import progress_bar
+from fem_racket.studies.options import take
 from fem_racket.studies.refine_meshes import refinable
+from fem_racket.studies.refine_options import (
+    DEFAULT_ELEMENTS,
+    DEFAULT_GRADING,
+    DEFAULT_POSITIONS,
+    FAMILIES,
+    RefineOptions,
+)
 from fem_racket.validation import InputError, check_choice, check_integer, check_range
 
 __all__ = [
     "DEFAULT_ELEMENTS",
+    "DEFAULT_GRADING",
     "DEFAULT_POSITIONS",
     "FAMILIES",
+    "RefineOptions",
     "RefinementStudy",
     "refinement_study",
 ]
 
 log = logging.getLogger(__name__)
 
-DEFAULT_ELEMENTS = (5, 10, 20, 40, 80, 160, 320)
-#: The paper's three impact points (Figs 5-7): grip side, middle (near the node), top side.
-DEFAULT_POSITIONS = (0.6, 0.75, 0.9)
-FAMILIES = ("uniform", "graded")
-#: Cell-size ratio of graded meshes (largest / smallest in a segment).
-DEFAULT_GRADING = 4.0
 #: Convergence order of cubic Hermite beam elements (frequencies, and COR through them).
 THEORETICAL_ORDER = 4.0
 #: Observed orders within which a Richardson extrapolation of order 4 is trusted.
@@ -194,16 +198,7 @@ def _orders(elements: np.ndarray, errors: np.ndarray) -> np.ndarray:
 def refinement_study(
     frame: Frame | FrameMesh | None = None,
     elements: Sequence[int] = DEFAULT_ELEMENTS,
-    *,
-    family: str = "uniform",
-    n_modes: int = 4,
-    positions: Sequence[float] = DEFAULT_POSITIONS,
-    speed: float = 20.0,
-    grading: float = DEFAULT_GRADING,
-    impact_nodes: bool = False,
-    impact_modes: int = DEFAULT_MODES,
-    progress: bool | None = None,
-    **impact: Any,
+    **options: Any,
 ) -> RefinementStudy:
     """Refine the frame over ``elements`` and compare with the exact solution.
 
@@ -229,10 +224,19 @@ def refinement_study(
         Flexible modes in the impact's modal basis (80 by default, as :func:`simulate`).
     progress : bool or None
         A progress bar over the meshes on stderr (None: when stderr is a terminal).
-    **impact
-        Further keyword arguments of :func:`fem_racket.simulate` (ball_mass, kcb, zeta,
-        separation).
+    ball_mass, kcb, zeta, separation
+        As for :func:`fem_racket.simulate` (its defaults when None).
+
+    The keywords after ``elements`` are the fields of :class:`RefineOptions`, checked with a
+    "did you mean".
     """
+    o = take(options, "an option of refinement_study", RefineOptions)[0]
+    family, n_modes, positions, speed = o.family, o.n_modes, o.positions, o.speed
+    grading, impact_nodes, impact_modes, progress = (
+        o.grading, o.impact_nodes, o.impact_modes, o.progress
+    )  # fmt: skip
+    impact = {k: getattr(o, k) for k in ("ball_mass", "kcb", "zeta", "separation")}
+    impact = {k: v for k, v in impact.items() if v is not None}
     check_choice("family", family, FAMILIES)
     check_integer("modes", n_modes)
     pos = np.array([check_range("position", p, 0.0, 1.0, unit="x/L") for p in positions])

@@ -2,25 +2,28 @@
 
 For each pattern (mains x crosses) and tension per string, the ``kawazoe-1997-ball``
 (:data:`fem_racket.impact.strung.BALL_STIFFNESS`, :data:`~fem_racket.impact.strung.BALL_ZETA`)
-strikes the free strung racket at rest (:mod:`fem_racket.impact.strung`), solved by the exact
-engine (every mode). The bed's modes are computed once per pattern (a tension only scales them,
-:mod:`fem_racket.strings.membrane`).
+strikes the free strung racket at rest (:mod:`fem_racket.impact.strung`), solved exactly
+(every mode): the sweep grid's ``string_tension`` and ``pattern`` axes
+(:func:`fem_racket.studies.sweep.sweep_result`, as ``fem-racket sweep --string-tension ...
+--pattern ...``) as a table. The bed's modes are computed once per pattern (a tension only
+scales them, :mod:`fem_racket.strings.membrane`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import replace
 
 import numpy as np
 
-from fem_racket.frame.model import FrameModel
-from fem_racket.impact.strung import BALL_STIFFNESS, BALL_ZETA, strung_point
-from fem_racket.impact.strung_impact import strung_engine
-from fem_racket.strings.bed import StringBed, parse_pattern
-from fem_racket.validation import check_positive
+from fem_racket.studies.cases import COLUMNS as SWEEP_COLUMNS
+from fem_racket.studies.cases import STRUNG_VARIABLES
+from fem_racket.studies.grid_values import pattern_code
+from fem_racket.studies.sweep import sweep_result
 
 __all__ = ["COLUMNS", "tension_sweep"]
+
+#: Sweep column of each variable.
+COLUMN_OF = {name: k for k, name in enumerate(SWEEP_COLUMNS)}
 
 #: Columns of :func:`tension_sweep`'s rows (units in the names).
 COLUMNS = (
@@ -41,10 +44,8 @@ def tension_sweep(
     position: float = 0.74,
     speed: float = 30.0,
     ball_mass: float = 0.057,
-    model: FrameModel | None = None,
-    bed: StringBed | None = None,
 ) -> np.ndarray:
-    """Rows of :data:`COLUMNS`, one per (pattern, tension).
+    """Rows of :data:`COLUMNS`, one per (pattern, tension), from the sweep grid.
 
     Parameters
     ----------
@@ -58,30 +59,23 @@ def tension_sweep(
         Ball speed [m/s].
     ball_mass : float
         m_B [kg].
-    model : FrameModel, optional
-        The racket (the paper's standard one, 20 elements, when None).
-    bed : StringBed, optional
-        Head size, string and load radius (its tension and pattern are replaced).
     """
-    check_positive("speed", speed, "m/s")
-    model = FrameModel.build(None, 20) if model is None else model
-    base = StringBed() if bed is None else bed
+    r = sweep_result(
+        string_tension=list(map(float, tensions)) if len(tensions) > 1 else float(tensions[0]),
+        pattern=list(patterns) if len(patterns) > 1 else patterns[0],
+        position=position,
+        speed=speed,
+        ball_mass=ball_mass,
+        backend="serial",
+    )
+    cols = [COLUMN_OF[k] for k in ("cor", "contact_time_s", *STRUNG_VARIABLES)]
+    found = {}
+    for i in range(r.spec.size):
+        case = r.spec.case(i)
+        found[(int(case["pattern"]), case["string_tension"])] = r.values[i, cols]
     rows = []
     for pattern in patterns:
-        mains, crosses = parse_pattern(pattern)
+        code = pattern_code(pattern)
         for tension in tensions:
-            b = replace(base, tension_n=float(tension), mains=mains, crosses=crosses)
-            point = strung_point(model, b, position)
-            out = strung_engine(point, BALL_STIFFNESS, BALL_ZETA, ball_mass, speed, tolerance=None)
-            rows.append(
-                (
-                    mains,
-                    crosses,
-                    float(tension),
-                    float(out.cor),
-                    float(out.contact_time),
-                    point.bed_stiffness,
-                    float(point.bed_frequencies_hz[0]),
-                )
-            )
+            rows.append((code // 100, code % 100, float(tension), *found[(code, float(tension))]))
     return np.array(rows, dtype=float)

@@ -28,18 +28,19 @@ import numpy as np
 
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.frame.mesh import FrameMesh
-from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.outputs import atomic_output, check_output_path
+from fem_racket.outputs import atomic_output, atomic_outputs, check_output_path, sidecar_path
 from fem_racket.studies.cases import COLUMNS, VARIABLES, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, SweepSpec, chunks
+from fem_racket.studies.options import field_names, take
+from fem_racket.studies.sweep_options import SweepRun, SweepSolving
+from fem_racket.studies.sweep_physics import OBLIQUE_AXES, STRING_AXES, given
 from fem_racket.studies.sweep_result import SweepResult
 from fem_racket.validation import InputError, check_choice, check_integer, show, work_begins
 
-__all__ = ["VARIABLES", "sweep", "sweep_result"]
+__all__ = ["VARIABLES", "run_sweep", "sweep", "sweep_result"]
 
 log = logging.getLogger(__name__)
 
@@ -53,9 +54,14 @@ EXACT_CHUNK = 32768
 #: depend on the chunk; the size is fixed all the same, so every backend and a resumed run
 #: make the same batches and checkpoint files.
 LAW_CHUNK = 512
+#: Chunk of the string-bed and oblique cases (solved one by one; oblique cases at one angle
+#: share their normal impact within a chunk, which does not change their results).
+PER_CASE_CHUNK = 32
 
 
 def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
+    if given(spec.values, (*STRING_AXES, *OBLIQUE_AXES)):  # solved case by case
+        return PER_CASE_CHUNK
     if spec.solver == "general":  # batches of the general integrator (see LAW_CHUNK)
         return LAW_CHUNK
     # the engine (exact solver) takes big chunks
@@ -63,41 +69,7 @@ def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
     return max(1, min(cap, math.ceil(todo / (4 * workers))))
 
 
-def sweep(
-    frame: Frame | FrameMesh | None = None,
-    *,
-    position: Any = None,
-    speed: Any = None,
-    ei1: Any = None,
-    ei2: float | None = None,
-    ei_factor: Any = None,
-    ball_mass: Any = None,
-    zeta: Any = None,
-    kcb: Any = None,
-    racket_speed: Any = None,
-    reference: Any = None,
-    pivot: Any = None,
-    elements: Any = None,
-    solver: str = "auto",
-    separation: str = "displacement",
-    basis: str = "modal",
-    modes: int | None = DEFAULT_MODES,
-    rtol: float = 1e-10,
-    atol: float = 1e-12,
-    law: Any = None,
-    tolerance: float | None = DEFAULT_TOLERANCE,
-    peak_force: bool = False,
-    output: str | os.PathLike | None = None,
-    overwrite: bool = False,
-    restart: bool = False,
-    backend: str | None = None,
-    workers: int | None = None,
-    scheduler: str | None = None,
-    chunk_size: int | None = None,
-    progress: bool | None = None,
-    parameters: dict[str, Any] | None = None,
-    **law_parameters: Any,
-) -> Any:
+def sweep(frame: Frame | FrameMesh | None = None, **options: Any) -> Any:
     """Simulate every combination of the given parameter values.
 
     Parameters
@@ -116,6 +88,14 @@ def sweep(
         the butt] or translating when None (:class:`fem_racket.impact.swing.Swing`). K_CB
         follows the closing speed; ``rebound_speed_m_s`` is then the ball's v_out and ``cor``
         the apparent COR.
+    string_tension, pattern
+        A string bed on every case (:mod:`fem_racket.studies.sweep_physics`): tension per
+        string [N] and ``"16x19"``-style patterns, fixed or swept; the bed replaces K_CB and
+        gives ``stringbed_stiffness_n_m`` and ``stringbed_frequency_hz``.
+    angle, spin, friction
+        An oblique, spinning ball on every case: angle from the face normal [deg], incoming
+        spin [rpm] (+ topspin), Coulomb friction; gives ``ball_speed_out_m_s``,
+        ``angle_out_deg``, ``spin_out_rpm``, ``tangential_cor`` and ``contact_regime``.
     ei2 : float, optional
         Fixed top-side EI2 of the standard frame [N m^2]; 0.88 EI1 when None.
     solver, separation, basis, modes, rtol, atol
@@ -131,7 +111,8 @@ def sweep(
     peak_force : bool
         Also compute the largest contact force (variable ``peak_force_n``; costs more).
     output : path, optional
-        netCDF file to write (atomically). With it the sweep is resumable: finished cases are
+        netCDF file to write (atomically; a .csv path: a CSV table and its JSON sidecar).
+        With it the sweep is resumable: finished cases are
         kept in ``<output>.checkpoint/`` and a rerun with the same arguments continues.
     overwrite : bool
         Replace an existing ``output``.
@@ -165,57 +146,50 @@ def sweep(
         flexible modes kept (``modes_kept``; ``modes`` is the request), the package version
         (provenance).
     """
-    options = dict(locals())
-    options.update(options.pop("law_parameters"))
-    return sweep_result(**options).to_xarray()
+    return sweep_result(frame, **options).to_xarray()
 
 
-#: The keywords of :meth:`SweepSpec.build` besides the parameters.
-_SPEC_OPTIONS = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
+def _write(result: SweepResult, path: Path, overwrite: bool) -> None:
+    """The result file: CSV (+ its JSON sidecar) for a .csv path, else netCDF."""
+    if path.suffix.lower() == ".csv":
+        with atomic_outputs([path, sidecar_path(path)], overwrite=overwrite) as (tmp, side):
+            result.write_csv(tmp, side)
+    else:
+        with atomic_output(path, overwrite=overwrite) as tmp:
+            result.write(tmp)
 
 
-def sweep_result(
-    frame: Frame | FrameMesh | None = None,
-    *,
-    law: Any = None,
-    peak_force: bool = False,
-    output: str | os.PathLike | None = None,
-    overwrite: bool = False,
-    restart: bool = False,
-    backend: str | None = None,
-    workers: int | None = None,
-    scheduler: str | None = None,
-    chunk_size: int | None = None,
-    progress: bool | None = None,
-    parameters: dict[str, Any] | None = None,
-    **grid: Any,
-) -> SweepResult:
-    """:func:`sweep` (the same keywords) as plain arrays, the netCDF file written without
-    xarray: what the command line runs (xarray's imports cost it more than the Fig 13 sweep's
-    1 260 impacts).
+def sweep_result(frame: Frame | FrameMesh | None = None, **options: Any) -> SweepResult:
+    """:func:`sweep` (the same keywords, checked with a "did you mean") as plain arrays, the
+    netCDF file written without xarray: what the command line runs (xarray's imports cost it
+    more than the Fig 13 sweep's 1 260 impacts).
 
     Returns
     -------
     SweepResult
         The values of every case, the attributes; ``to_xarray()`` gives :func:`sweep`'s dataset.
     """
-    law_parameters = {k: v for k, v in grid.items() if k not in (*PARAMETERS, *_SPEC_OPTIONS)}
-    for name in law_parameters:
-        if name not in LAW_PARAMETERS:
-            raise InputError(
-                f"{name} is not a sweep parameter: must be one of the impact's or a law's "
-                f"({', '.join(LAW_PARAMETERS)})"
-            )
-    given = sorted(k for k, v in law_parameters.items() if v is not None)
+    solving, run, grid = take(
+        options, "a sweep parameter", SweepSolving, SweepRun, extra=(*PARAMETERS, *LAW_PARAMETERS)
+    )
+    return run_sweep(frame, grid, solving, run)
+
+
+def run_sweep(
+    frame: Frame | FrameMesh | None, grid: dict[str, Any], solving: SweepSolving, run: SweepRun
+) -> SweepResult:
+    """The sweep of ``grid`` (parameter name -> values) on ``frame``, solved as ``solving``
+    says and run as ``run`` says (:func:`sweep`)."""
+    law = solving.law
+    given = sorted(k for k, v in grid.items() if k in LAW_PARAMETERS and v is not None)
     if isinstance(law, str) and given and law in ("linear", *PRESETS):
         why = "it is built from kcb and zeta" if law == "linear" else "it is a preset"
         raise InputError(f"law parameters {given} are not allowed with law {show(law)}: {why}")
-    spec = SweepSpec.build(
-        frame,
-        **grid,
-        law=get_law(law) if isinstance(law, str) else law,
-        peak_force=peak_force,
-    )
+    spec_options = {k: getattr(solving, k) for k in field_names(SweepSolving)}
+    spec_options["law"] = get_law(law) if isinstance(law, str) else law
+    spec = SweepSpec.build(frame, **grid, **spec_options)
+    output, overwrite, backend, workers = run.output, run.overwrite, run.backend, run.workers
+    scheduler, chunk_size = run.scheduler, run.chunk_size
     if backend is not None:
         check_choice("backend", backend, BACKENDS)
     for name, value in (("workers", workers), ("chunk_size", chunk_size)):
@@ -231,7 +205,9 @@ def sweep_result(
     done = np.zeros(spec.size, dtype=bool)
     ckpt = None
     if output is not None:
-        ckpt = Checkpoint(output, spec.digest, spec.describe(), spec.size, n_vars, restart=restart)
+        ckpt = Checkpoint(
+            output, spec.digest, spec.describe(), spec.size, n_vars, restart=run.restart
+        )
     try:
         if ckpt is not None:
             done, values = ckpt.load()
@@ -262,16 +238,15 @@ def sweep_result(
             backend=backend,
             workers=workers,
             scheduler=scheduler,
-            progress=progress,
+            progress=run.progress,
             total=spec.size,
             initial=spec.size - todo.size,
         )
-        result = SweepResult(spec, values, backend, parameters)
+        result = SweepResult(spec, values, backend, run.parameters)
         if result.failed:
             log.warning("%d of %d cases failed: NaN in the dataset", result.failed, spec.size)
         if output is not None:
-            with atomic_output(Path(output), overwrite=overwrite) as tmp:
-                result.write(tmp)
+            _write(result, Path(output), overwrite)
             ckpt.remove()
             log.info("wrote %s", output)
     except BaseException as exc:

@@ -26,9 +26,11 @@ import numpy as np
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.outputs import provenance
 from fem_racket.outputs.labels import label
-from fem_racket.studies.cases import MODES_COLUMN, VARIABLES, result_variables
+from fem_racket.studies.cases import ALL_VARIABLES, MODES_COLUMN, result_variables
 from fem_racket.studies.grid import SweepSpec, parameter
+from fem_racket.studies.grid_values import pattern_label
 from fem_racket.studies.law_axes import family_of
+from fem_racket.studies.sweep_physics import STRING_AXES, fixed_label, given, regime_label
 
 __all__ = ["KCB_LAW", "SweepResult"]
 
@@ -49,7 +51,7 @@ def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
         elif value is None and name == "zeta":
             value = zeta_from_cor(PAPER_CLAMPED_COR)
         if value is not None:
-            params[attr] = value
+            params[attr] = fixed_label(name, value)
     if spec.frame is None:
         params["ei2_n_m2"] = "0.88 ei1" if spec.ei2 is None else spec.ei2
     desc = spec.describe()
@@ -83,6 +85,15 @@ def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
     return attrs
 
 
+def _cell(name: str, value: Any) -> str:
+    """A CSV cell: a pattern and a contact regime by their labels, numbers by repr."""
+    if name == "pattern":
+        return pattern_label(value)
+    if name == "contact_regime":
+        return "" if not np.isfinite(value) else regime_label(value)
+    return repr(float(value))
+
+
 def _attrs(name: str, units: str, description: str) -> dict[str, str]:
     """A variable's attributes: short ``long_name``, ``units`` (``-`` when dimensionless) and
     ``description`` (:mod:`fem_racket.outputs.labels`)."""
@@ -93,6 +104,8 @@ def modes_kept(spec: SweepSpec, kept: np.ndarray) -> int | str:
     """The ``modes_kept`` attribute: the flexible modes the solver kept, one number when every
     case kept the same, else their range (the engine's COR tolerance chooses them per case)."""
     kept = kept[np.isfinite(kept)]
+    if given(spec.values, STRING_AXES):
+        return "all (string bed: every frame mode)"
     if kept.size == 0:
         return "none (physical basis)" if spec.basis == "physical" else "none (no case solved)"
     low, high = int(kept.min()), int(kept.max())
@@ -139,21 +152,36 @@ class SweepResult:
 
     def coordinates(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
         """Each swept parameter's values: name -> ((name,), values, attributes of its
-        :func:`~fem_racket.outputs.labels.label`)."""
-        return {
-            name: ((name,), vals, _attrs(name, parameter(name).unit, parameter(name).description))
-            for name, vals in self.spec.axes.items()
-        }
+        :func:`~fem_racket.outputs.labels.label`; a pattern's labels as CF flags)."""
+        out = {}
+        for name, vals in self.spec.axes.items():
+            attrs: dict[str, Any] = _attrs(name, parameter(name).unit, parameter(name).description)
+            if name == "pattern":
+                attrs["flag_values"] = [int(v) for v in vals]
+                attrs["flag_meanings"] = " ".join(pattern_label(v) for v in vals)
+            out[name] = ((name,), vals, attrs)
+        return out
 
     def data_variables(self) -> dict[str, tuple[tuple[str, ...], np.ndarray, dict[str, str]]]:
         """The result variables: name -> (dimensions, values, attributes of its
         :func:`~fem_racket.outputs.labels.label`)."""
         spec, keep = self.spec, result_variables(self.spec)
-        return {
+        out = {
             name: (spec.dims, self.values[:, k].reshape(spec.shape), _attrs(name, u, t))
-            for k, (name, (u, t)) in enumerate(VARIABLES.items())
+            for k, (name, (u, t)) in enumerate(ALL_VARIABLES.items())
             if name in keep
         }
+        if "contact_regime" in out:  # CF flags naming the codes present
+            dims, values, attrs = out["contact_regime"]
+            codes = sorted({float(c) for c in values.ravel() if np.isfinite(c)})
+            if codes:
+                attrs = {
+                    **attrs,
+                    "flag_values": codes,
+                    "flag_meanings": " ".join(regime_label(c) for c in codes),
+                }
+            out["contact_regime"] = (dims, values, attrs)
+        return out
 
     def write(self, path: str | os.PathLike) -> None:
         """Write the netCDF file (no xarray; inside an ``atomic_output``)."""
@@ -161,6 +189,29 @@ class SweepResult:
 
         # variables before coordinates, as xarray writes a dataset made like to_xarray's
         write_netcdf(path, {**self.data_variables(), **self.coordinates()}, self.attrs)
+
+    def write_csv(self, path: str | os.PathLike, sidecar: str | os.PathLike) -> None:
+        """Write the CSV table (one row per case: the swept values, then the variables; units
+        in the headers; a pattern and a contact regime by their labels) and its JSON sidecar
+        (the attributes), inside an ``atomic_outputs``."""
+        import csv
+
+        spec, keep = self.spec, result_variables(self.spec)
+        names = list(spec.axes)
+        header = [f"{n} [{label(n, parameter(n).unit).units}]" for n in names]
+        header += [f"{v} [{label(v, ALL_VARIABLES[v][0]).units}]" for v in keep]
+        cols = [list(ALL_VARIABLES).index(v) for v in keep]
+        where = np.unravel_index(np.arange(spec.size), spec.shape) if names else ()
+        with open(path, "w", newline="", encoding="utf-8") as fh:
+            w = csv.writer(fh)
+            w.writerow(header)
+            for i in range(spec.size):
+                row = [_cell(n, spec.axes[n][k[i]]) for n, k in zip(names, where, strict=True)]
+                row += [_cell(v, self.values[i, c]) for v, c in zip(keep, cols, strict=True)]
+                w.writerow(row)
+        with open(sidecar, "w", encoding="utf-8") as fh:
+            json.dump(self.attrs, fh, indent=2, default=str, allow_nan=True)
+            fh.write("\n")
 
     def to_xarray(self) -> Any:
         """The labelled :class:`xarray.Dataset` (what :func:`fem_racket.sweep` returns)."""

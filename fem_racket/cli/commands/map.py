@@ -7,6 +7,8 @@ format from the suffix: .png (curves with the sweet spots marked), .nc (netCDF) 
 (:mod:`fem_racket.cli.options.rerun`). ``--json`` prints the sweet spots and curves and writes
 only what ``--out`` names; ``--no-files`` writes nothing.
 ``--law NAME`` (and its parameters) maps under another ball/string law than the paper's.
+``--offsets`` maps e_A over the whole face, ``--angle``/``--spin``/``--friction`` the oblique
+ball's outgoing spin and angle over it (:mod:`fem_racket.cli.options.faces`).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
+from fem_racket.cli.options.faces import add_face_options, face_asked, run_face
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
@@ -105,15 +108,6 @@ def register(sub: argparse._SubParsersAction) -> None:
         f"(default {start}:{stop}:{num})",
     )
     g.add_argument(
-        "--offsets",
-        default=None,
-        metavar="VALUES",
-        help="lateral offsets y [m] from the long axis (start:stop:num or a comma list): map "
-        "the whole string face over (x, y), the frame bending and twisting; points off the "
-        "head outline (100 in^2 ellipse, 0.326 x 0.252 m) are left blank; prints the power "
-        "area (default: along the axis only)",
-    )
-    g.add_argument(
         "--ball-mass", type=float, default=0.057, metavar="KG", help="m_B [kg] (default 0.057)"
     )
     g.add_argument(
@@ -151,6 +145,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="COR error [-] the batched engine may make: modes far above the contact frequency "
         f"become one residual mode (default {DEFAULT_TOLERANCE:g}; 0: every mode)",
     )
+    add_face_options(g)
     add_swing_options(p)
     add_law_options(p)
     o = p.add_argument_group("output")
@@ -206,8 +201,8 @@ def run(args: argparse.Namespace) -> int:
     check_map_outputs(outs, overwrite=overwrite)  # also: no path given twice
     positions = as_values("position", args.positions)
     law = law_from_args(args)
-    if args.offsets is not None:
-        return _run_face(args, outs, positions, law)
+    if face_asked(args):  # the whole face: e_A (--offsets) or the spin (--angle ...)
+        return run_face(args, outs, positions, law, _rackets(args))
     if args.power_fraction is None:
         args.power_fraction = DEFAULT_POWER_FRACTION
     maps = [
@@ -251,61 +246,4 @@ def run(args: argparse.Namespace) -> int:
             text = "-" if value != value else significant(value, 4)
             print(f"  {label:<26} {text:>10} x/L")
     print_written(files)
-    return 0
-
-
-def _run_face(args: argparse.Namespace, outs: list[Path], positions: Any, law: Any) -> int:
-    """``--offsets``: the power map of the whole face (:mod:`fem_racket.studies.face_map`)."""
-    from fem_racket.io.face_files import write_face
-    from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
-    from fem_racket.validation import InputError
-
-    if law is not None:
-        raise InputError(
-            f"law = {law.name!r} is not allowed with --offsets: the face map runs the paper's "
-            "linear law (the batched engine)"
-        )
-    offsets = as_values("offset", args.offsets)
-    if args.power_fraction is None:
-        args.power_fraction = DEFAULT_AREA_FRACTION
-    options = dict(
-        ball_mass=args.ball_mass,
-        kcb=args.kcb,
-        zeta=args.zeta,
-        separation=args.separation,
-        modes=args.modes,
-        tolerance=args.tolerance,
-        power_fraction=args.power_fraction,
-    )
-    maps = [
-        face_map(
-            FrameModel.build(frame, args.elements),
-            positions=positions,
-            offsets=offsets,
-            name=name,
-            speed=args.speed,
-            racket_speed=args.racket_speed,
-            reference=args.reference,
-            pivot=args.pivot,
-            options=options,
-        )
-        for name, frame in _rackets(args)
-    ]
-    for path in outs:
-        write_face(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
-    if args.json:
-        objs = [m.summary() for m in maps]
-        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
-        return 0
-    for m in maps:
-        x, y, e = m.max_apparent_cor
-        print(m.name)
-        print(f"  {'power area':<26} {significant(m.power_area_cm2, 4):>10} cm^2")
-        print(f"  {'max apparent COR':<26} {significant(e, 4):>10}")
-        print(f"  {'  at':<26} {significant(x, 4):>10} x/L, y = {y:g} m")
-        print(f"  {'mode-1 node':<26} {significant(m.node, 4):>10} x/L")
-        cop = "-" if m.cop != m.cop else significant(m.cop, 4)
-        print(f"  {'centre of percussion':<26} {cop:>10} x/L")
-    for path in outs:
-        print(f"{'written':<28} {path}")
     return 0

@@ -28,6 +28,11 @@ from fem_racket.contact.presets import law_parameters
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import Frame, standard_frame
+from fem_racket.impact.incidence import (
+    DEFAULT_BALL_INERTIA,
+    DEFAULT_BALL_RADIUS,
+    DEFAULT_COMPLIANCE_RATIO,
+)
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
 from fem_racket.studies.sweep import sweep_result
 from fem_racket.validation import InputError, show
@@ -48,6 +53,18 @@ _HELP = {
     "zeta": "ball/string damping ratio [-], 0..1 (default 0.0592: clamped COR 0.83)",
     "kcb": "ball/string stiffness K_CB [N/m] (default: from the speed)",
     "elements": "number of beam elements (default 20)",
+    "string_tension": "tension per string [N]: a string bed replaces the lumped K_CB "
+    "(default: none; with --pattern alone 246)",
+    "pattern": "string pattern MAINSxCROSSES [-], e.g. 16x19,18x20 (default: none; with "
+    "--string-tension alone 16x19)",
+    "angle": "incidence angle [deg] from the face normal: an oblique ball (default: head-on)",
+    "spin": "incoming spin [rpm], positive = topspin (default 0 with an oblique ball)",
+    "friction": "Coulomb friction ball/strings [-] (default 0.4 with an oblique ball)",
+    "ball_inertia": f"ball's I/(m R^2) [-], 0..2/3 (default {DEFAULT_BALL_INERTIA:g} with an "
+    "oblique ball)",
+    "ball_radius": f"ball radius R [m] (default {DEFAULT_BALL_RADIUS:g} with an oblique ball)",
+    "compliance_ratio": "normal over tangential contact stiffness eta^2 [-] (default "
+    f"{DEFAULT_COMPLIANCE_RATIO:g} with an oblique ball)",
 }
 
 #: Plural spellings, as the commands taking one list of these spell them (map, optimize).
@@ -101,7 +118,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=Path,
         default=DEFAULT_OUTPUT,
         metavar="FILE",
-        help=f"output file: the netCDF result (default {DEFAULT_OUTPUT}, replacing the sweep an "
+        help=f"output file: the netCDF result, or a CSV table (+ JSON sidecar) for a .csv name "
+        f"(default {DEFAULT_OUTPUT}, replacing the sweep an "
         "earlier run wrote there)",
     )
     r.add_argument("--overwrite", action="store_true", help="replace an existing result file")

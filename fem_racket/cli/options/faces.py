@@ -1,0 +1,186 @@
+"""``fem-racket map`` over the whole string face: e_A (``--offsets``) or the oblique ball's
+outgoing spin and angle (``--angle``, ``--spin``, ``--friction``).
+
+``--offsets`` maps e_A and v_out over (x, y) (:mod:`fem_racket.studies.face_map`);
+any of ``--angle``/``--spin``/``--friction`` maps the outgoing spin ``spin_out_rpm`` and angle
+``angle_out_deg`` of an oblique, spinning ball over the face
+(:mod:`fem_racket.studies.spin_map`), on the grid of ``--positions`` and ``--offsets``
+(defaults :data:`fem_racket.studies.spin_map.SPIN_POSITIONS` and ``SPIN_OFFSETS``: each point
+is one oblique impact).
+Options the spin map cannot use are refused in one line.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from fem_racket.cli.common import print_json, run_parameters, significant
+from fem_racket.cli.options.output import print_written
+from fem_racket.cli.options.runfile import given_options
+from fem_racket.frame.model import FrameModel
+from fem_racket.studies.grid import as_values
+from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS
+from fem_racket.validation import InputError
+
+__all__ = ["add_face_options", "face_asked", "run_face"]
+
+#: The oblique ball's options: dest -> (option, metavar, help).
+OBLIQUE = {
+    "angle": ("--angle", "DEG", "incidence angle [deg] from the face normal, in the plane of the "
+              "long axis: map the outgoing spin and angle over the face (default: none)"),
+    "spin": ("--spin", "RPM", "incoming spin [rpm], positive = topspin (default 0 with --angle)"),
+    "friction": ("--friction", "MU", "Coulomb friction ball/strings [-] (default 0.4 with "
+                 "--angle)"),
+}  # fmt: skip
+#: Options the spin map does not use (a swing is a stroke: simulate --face-angle/--path-angle).
+SPIN_REFUSES = {
+    "power_fraction": "the spin map has no power area",
+    "racket_speed": "the spin map strikes the racket at rest (simulate --path-angle strokes)",
+    "pivot": "the spin map strikes the racket at rest",
+    "reference": "the spin map strikes the racket at rest",
+}
+
+
+def add_face_options(g: argparse._ArgumentGroup) -> None:
+    """``--offsets`` and the oblique ball's options of ``map``."""
+    g.add_argument(
+        "--offsets",
+        default=None,
+        metavar="VALUES",
+        help="lateral offsets y [m] from the long axis (start:stop:num or a comma list): map "
+        "the whole string face over (x, y), the frame bending and twisting; points off the "
+        "head outline (100 in^2 ellipse, 0.326 x 0.252 m) are left blank; prints the power "
+        f"area (default: along the axis only; {SPIN_OFFSETS} with --angle)",
+    )
+    for dest, (option, metavar, text) in OBLIQUE.items():
+        g.add_argument(option, dest=dest, type=float, default=None, metavar=metavar, help=text)
+
+
+def _oblique(args: argparse.Namespace) -> bool:
+    return any(getattr(args, d, None) is not None for d in OBLIQUE)
+
+
+def face_asked(args: argparse.Namespace) -> bool:
+    """True when the map is over the whole face."""
+    return args.offsets is not None or _oblique(args)
+
+
+def run_face(
+    args: argparse.Namespace, outs: list[Path], positions: Any, law: Any, rackets: list
+) -> int:
+    """The face map the options ask for, its files and its printed summary."""
+    if _oblique(args):
+        return _run_spin(args, outs, law, rackets)
+    return _run_power(args, outs, positions, law, rackets)
+
+
+def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: list) -> int:
+    """``--angle`` ...: the oblique ball's spin over the face."""
+    from fem_racket.impact.incidence import Incidence
+    from fem_racket.io.spin_map_files import write_spin_map
+    from fem_racket.studies.spin_map import spin_map
+
+    given = given_options(args)
+    for dest, why in SPIN_REFUSES.items():
+        if dest in given:
+            raise InputError(f"{dest} is not allowed with --angle, --spin or --friction: {why}")
+    inc = Incidence(**{d: getattr(args, d) for d in OBLIQUE if getattr(args, d) is not None})
+    positions = as_values("position", args.positions if "positions" in given else SPIN_POSITIONS)
+    offsets = as_values("offset", args.offsets or SPIN_OFFSETS)
+    options = dict(
+        ball_mass=args.ball_mass, kcb=args.kcb, zeta=args.zeta, separation=args.separation,
+        modes=args.modes, tolerance=args.tolerance, law=law,
+    )  # fmt: skip
+    if law is not None:
+        for dest in ("kcb", "zeta", "separation", "modes"):
+            if dest in given:
+                raise InputError(f"{dest} is not allowed with --law {law.name}: the law's own")
+            del options[dest]
+    maps = [
+        spin_map(
+            FrameModel.build(frame, args.elements),
+            positions=positions,
+            offsets=offsets,
+            incidence=inc,
+            speed=args.speed,
+            name=name,
+            options=options,
+        )
+        for name, frame in rackets
+    ]
+    for path in outs:
+        write_spin_map(maps, path, parameters=run_parameters(args))
+    if args.json:
+        objs = [m.summary() for m in maps]
+        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+        return 0
+    for m in maps:
+        lo, x_lo, hi, x_hi, y_hi = m.extreme()
+        a_lo, _, a_hi, _, _ = m.extreme("angle_out_deg")
+        print(m.name)
+        print(f"  {'spin out min':<26} {significant(lo, 4):>10} rpm at {significant(x_lo, 4)} x/L")
+        print(f"  {'spin out max':<26} {significant(hi, 4):>10} rpm at {significant(x_hi, 4)} x/L,"
+              f" y = {y_hi:g} m")  # fmt: skip
+        print(f"  {'angle out':<26} {significant(a_lo, 4):>10} to {significant(a_hi, 4)} deg")
+        print(f"  {'contact regimes':<26} {', '.join(m.summary()['contact_regimes'])}")
+    print_written(outs)
+    return 0
+
+
+def _run_power(
+    args: argparse.Namespace, outs: list[Path], positions: Any, law: Any, rackets: list
+) -> int:
+    """``--offsets``: the power map of the whole face (:mod:`fem_racket.studies.face_map`)."""
+    from fem_racket.io.face_files import write_face
+    from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
+
+    if law is not None:
+        raise InputError(
+            f"law = {law.name!r} is not allowed with --offsets: the face map runs the paper's "
+            "linear law (the batched engine)"
+        )
+    offsets = as_values("offset", args.offsets)
+    if args.power_fraction is None:
+        args.power_fraction = DEFAULT_AREA_FRACTION
+    options = dict(
+        ball_mass=args.ball_mass,
+        kcb=args.kcb,
+        zeta=args.zeta,
+        separation=args.separation,
+        modes=args.modes,
+        tolerance=args.tolerance,
+        power_fraction=args.power_fraction,
+    )
+    maps = [
+        face_map(
+            FrameModel.build(frame, args.elements),
+            positions=positions,
+            offsets=offsets,
+            name=name,
+            speed=args.speed,
+            racket_speed=args.racket_speed,
+            reference=args.reference,
+            pivot=args.pivot,
+            options=options,
+        )
+        for name, frame in rackets
+    ]
+    for path in outs:
+        write_face(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
+    if args.json:
+        objs = [m.summary() for m in maps]
+        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+        return 0
+    for m in maps:
+        x, y, e = m.max_apparent_cor
+        print(m.name)
+        print(f"  {'power area':<26} {significant(m.power_area_cm2, 4):>10} cm^2")
+        print(f"  {'max apparent COR':<26} {significant(e, 4):>10}")
+        print(f"  {'  at':<26} {significant(x, 4):>10} x/L, y = {y:g} m")
+        print(f"  {'mode-1 node':<26} {significant(m.node, 4):>10} x/L")
+        cop = "-" if m.cop != m.cop else significant(m.cop, 4)
+        print(f"  {'centre of percussion':<26} {cop:>10} x/L")
+    print_written(outs)
+    return 0

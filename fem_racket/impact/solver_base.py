@@ -1,0 +1,164 @@
+"""The :class:`Solver` protocol: options bound when made, ``check``, ``solve``, ``solve_many``.
+
+The methods and their registry are in :mod:`fem_racket.impact.solvers`; this module holds what
+every solver shares: the options it takes and refuses (:class:`~fem_racket.impact.settings.
+SolverOptions`), the checks common to every method (a string bed, a hand), the oblique hook
+(an incidence solved as its normal impact, then the tangential contact) and the batch
+protocol (:class:`~fem_racket.impact.problem_batch.ProblemBatch` in, a
+:class:`~fem_racket.impact.problem_batch.BatchOutcome` out).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any, ClassVar
+
+from fem_racket.impact.held.run import HeldSettings, held_impact
+from fem_racket.impact.oblique import solve_oblique
+from fem_racket.impact.problem import ImpactProblem
+from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
+from fem_racket.impact.settings import DEFAULTS, SolverOptions
+from fem_racket.impact.strung_solve import check_strung
+from fem_racket.validation import InputError, show, work_begins
+
+__all__ = ["Solver"]
+
+
+class Solver:
+    """Base of the solvers (module docstring): options bound at construction.
+
+    Parameters
+    ----------
+    **options
+        The options of :class:`~fem_racket.impact.settings.SolverOptions` this solver takes
+        (:attr:`takes`); others are refused.
+    """
+
+    #: Registry name.
+    name: ClassVar[str] = ""
+    #: Options this solver uses (on some problem).
+    takes: ClassVar[tuple[str, ...]] = ()
+    #: Values of options this solver does not take that ask for what it does anyway.
+    neutral: ClassVar[dict[str, tuple]] = {}
+    #: Why an option this solver does not take is refused, where more than its list helps.
+    hints: ClassVar[dict[str, str]] = {}
+    #: Options it does not use on a hand-held racket, and why.
+    held_refuses: ClassVar[tuple[str, ...]] = ("modes", "basis", "t_max")
+
+    def __init__(self, **options: Any) -> None:
+        unknown = sorted(set(options) - set(SolverOptions.names()))
+        if unknown:
+            raise InputError(
+                f"solver option {unknown[0]!r} is not known: must be one of "
+                f"{', '.join(SolverOptions.names())}"
+            )
+        checked = SolverOptions(**options).given()
+        for key, value in checked.items():
+            if key not in self.takes and not self._neutral(key, value):
+                why = self.hints.get(key, f"it takes {', '.join(self.takes)}")
+                raise InputError(
+                    f"{key} = {show(value)} is not allowed with solver {self.name!r}: {why}"
+                )
+        self.options = SolverOptions(**{k: v for k, v in checked.items() if k in self.takes})
+
+    @classmethod
+    def _neutral(cls, key: str, value: Any) -> bool:
+        """True when ``value`` of an option this solver does not take asks for nothing it
+        does not do anyway: the option's default, or a value in :attr:`neutral`."""
+        return value == getattr(DEFAULTS, key) or value in cls.neutral.get(key, ())
+
+    def __repr__(self) -> str:
+        given = ", ".join(f"{k}={v!r}" for k, v in self.options.given().items())
+        return f"{type(self).__name__}({given})"
+
+    # -- the protocol -------------------------------------------------------------------------
+
+    def check(self, problem: ImpactProblem) -> None:
+        """Refuse, in one line, a problem (or an option for it) this solver cannot do."""
+        if problem.strings is not None:
+            check_strung(problem, self.name, self.options)
+            return
+        if problem.held:
+            self._refuse_options(
+                self.held_refuses,
+                "with a hand: the held racket keeps its "
+                "modes by tolerance (exact) or all its DOFs (cvode, bdf)",
+            )
+
+    def solve(self, problem: ImpactProblem) -> Any:
+        """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
+        StrungImpact with a string bed)."""
+        self.check(problem)
+        work_begins()  # fem-racket config --check stops here: every check has passed
+        return self._outcome(problem)
+
+    def solve_many(self, problems: Iterable[ImpactProblem] | ProblemBatch) -> Any:
+        """The outcomes of ``problems``, in order (each checked before any is solved); of a
+        :class:`~fem_racket.impact.problem_batch.ProblemBatch`, its
+        :class:`~fem_racket.impact.problem_batch.BatchOutcome` (:mod:`.batch_solve`: the
+        exact solver's batched engine, the general solver's one integrator call)."""
+        if isinstance(problems, ProblemBatch):
+            self._check_batch(problems)
+            work_begins()
+            return self._batch(problems)
+        problems = list(problems)
+        for p in problems:
+            self.check(p)
+        work_begins()
+        return [self._outcome(p) for p in problems]
+
+    def _outcome(self, problem: ImpactProblem) -> Any:
+        """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
+        the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
+        if problem.incidence is not None:
+            return solve_oblique(self, problem)
+        return self._solve(problem)
+
+    # -- helpers ------------------------------------------------------------------------------
+
+    def _check_batch(self, batch: ProblemBatch) -> None:
+        """Refuse, in one line, a batch (or an option for it) this solver cannot do."""
+        self._refuse_options(("output_step", "t_max"), "on a ProblemBatch: it returns no histories")
+
+    def _batch(self, batch: ProblemBatch) -> BatchOutcome:
+        raise NotImplementedError
+
+    def _solve(self, problem: ImpactProblem) -> Any:
+        raise NotImplementedError
+
+    def _refuse_options(self, names: Iterable[str], why: str) -> None:
+        given = self.options.given()
+        for key in names:
+            if key in given:
+                raise InputError(
+                    f"{key} = {show(given[key])} is not allowed with solver {self.name!r} {why}"
+                )
+
+    def _refuse_law(self, problem: ImpactProblem | ProblemBatch) -> None:
+        if problem.law is not None:
+            raise InputError(
+                f"solver = {self.name!r} is not allowed with contact law {problem.law.name!r}: "
+                "it solves the paper's linear law; use 'general' or 'cvode'"
+            )
+        if getattr(problem, "frame_velocity", None) is not None:
+            raise InputError(
+                f"solver = {self.name!r} is not allowed with a frame_velocity: use 'general' "
+                "or 'cvode' (or give the racket's motion as a swing)"
+            )
+
+    def _held(self, problem: ImpactProblem) -> Any:
+        """The hand-held racket by this solver (:func:`fem_racket.impact.held.run.held_impact`):
+        every mode unless a tolerance is asked (the modes the COR tolerance drops still move
+        the hand, and the held racket has few DOFs); histories when output times are asked."""
+        given = self.options.given()
+        s = self.options.settings()
+        step = given.get("output_step", s.output_step)
+        settings = HeldSettings(
+            solver=self.name,
+            output_step=1e-5 if step is None else step,
+            histories=step is not None,
+            tolerance=given.get("tolerance"),
+            rtol=s.rtol,
+            atol=s.atol,
+        )
+        return held_impact(problem, settings)

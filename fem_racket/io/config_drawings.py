@@ -1,0 +1,118 @@
+"""A run file's VTK series and animation in Python: :meth:`RunConfig.export_vtk` =
+``fem-racket export-vtk --config`` and :meth:`RunConfig.animate` = ``fem-racket animate
+--config``.
+
+Both commands draw the impact of the file's core tables (frame, ball, contact law, impact and
+swing, solver) at the output step of their own table (``[vtk]``, ``[animate]``: the long
+options, ``--output-step`` -> ``output_step``), with that table's drawing options; these
+functions do the same and write the same files. Their defaults are :data:`VTK_DEFAULTS` and
+:data:`ANIMATE_DEFAULTS` (checked against the parsers by ``tests/io/test_config_commands.py``).
+A table or key the commands take no option of (``[hand]``, ``[oblique]``, ``[strings]``, the
+swing's keys of ``[impact]``) is refused here rather than dropped.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from fem_racket.io.config_keys import reject_unknown
+from fem_racket.validation import InputError
+
+__all__ = ["ANIMATE_DEFAULTS", "VTK_DEFAULTS", "animate_file", "vtk_file"]
+
+#: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
+RunConfig = Any
+
+#: ``fem-racket export-vtk``'s drawing options and defaults.
+VTK_DEFAULTS: dict[str, Any] = {
+    "out": Path("output") / "impact_vtk",
+    "subdivide": 8,
+    "frames": None,
+    "scale": 1.0,
+    "field": "deflection",
+    "output_step": 1e-5,
+    "overwrite": False,
+}
+#: ``fem-racket animate``'s drawing options and defaults.
+ANIMATE_DEFAULTS: dict[str, Any] = {
+    **VTK_DEFAULTS,
+    "out": Path("output") / "impact.gif",
+    "frames": 100,
+    "scale": 10.0,
+    "fps": 25.0,
+    "size": (960, 400),
+}
+#: Keys of the command tables that only set how the command prints.
+_PRINT_KEYS = ("quiet",)
+
+
+def _drawing(cfg: RunConfig, table: str, defaults: dict[str, Any], refused: tuple) -> dict:
+    for name in refused:
+        if cfg.values.get(name):
+            raise InputError(
+                f"[{name}] ({cfg.source}) is not allowed with fem-racket "
+                f"{'export-vtk' if table == 'vtk' else table}: it draws the head-on impact "
+                "of the free racket at rest"
+            )
+    swing = [k for k in ("racket_speed_m_s", "reference_x_over_l", "pivot_m")]
+    swing = [k for k in swing if k in cfg.values.get("impact", {})]
+    if swing:  # the commands take no swing options
+        raise InputError(
+            f"impact.{swing[0]} ({cfg.source}) is not allowed with fem-racket "
+            f"{'export-vtk' if table == 'vtk' else table}: it draws the racket at rest"
+        )
+    own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
+    reject_unknown(own, [*defaults, *_PRINT_KEYS], table)
+    out = {**defaults, **{k: v for k, v in own.items() if k not in _PRINT_KEYS}}
+    if isinstance(out.get("size"), str):
+        w, h = out["size"].lower().split("x")
+        out["size"] = (int(w), int(h))
+    return out
+
+
+def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) -> Path:
+    """Write the VTK series ``export-vtk --config`` writes (into ``out``, else the file's
+    ``[vtk] out``); return the ``.pvd`` path."""
+    from fem_racket.io.config_run import simulate_file
+    from fem_racket.io.vtk import write_vtk_series
+
+    o = _drawing(cfg, "vtk", VTK_DEFAULTS, ("hand", "oblique", "strings"))
+    result = simulate_file(cfg, histories=True, output_step=o["output_step"])
+    return write_vtk_series(
+        result,
+        out or o["out"],
+        subdivide=o["subdivide"],
+        frames=o["frames"],
+        scale=o["scale"],
+        field=o["field"],
+        overwrite=o["overwrite"],
+        parameters=parameters,
+        progress=False,
+    )
+
+
+def animate_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) -> Path:
+    """Render the animation ``animate --config`` renders (to ``out``, else the file's
+    ``[animate] out``); return its path."""
+    from fem_racket.io.animate import AnimationOptions, render_animation
+    from fem_racket.io.config_run import simulate_file
+
+    o = _drawing(cfg, "animate", ANIMATE_DEFAULTS, ("hand", "oblique", "strings"))
+    result = simulate_file(cfg, histories=True, output_step=o["output_step"])
+    options = AnimationOptions(
+        field=o["field"],
+        frames=o["frames"],
+        fps=o["fps"],
+        scale=o["scale"],
+        subdivide=o["subdivide"],
+        size=o["size"],
+    )
+    return render_animation(
+        result,
+        out or o["out"],
+        options,
+        overwrite=o["overwrite"],
+        parameters=parameters,
+        progress=False,
+    )

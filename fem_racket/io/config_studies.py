@@ -1,0 +1,201 @@
+"""A run file's map and refinement study in Python: :meth:`RunConfig.map` = ``fem-racket map
+--config`` and :meth:`RunConfig.refine` = ``fem-racket refine --config``.
+
+Each command reads the core tables it has options for and its own table (``[map]``,
+``[refine]``: the long options, ``--power-fraction`` -> ``power_fraction``); these functions do
+the same from the same file and return what the command computes (and prints), without writing
+files. The commands' defaults are :data:`MAP_DEFAULTS` and :data:`REFINE_DEFAULTS`
+(``tests/io/test_config_commands.py`` checks them against the parsers). A key of the command's
+table that is not one of its options is refused with a "did you mean", as the command refuses
+it; ``[map]``/``[refine]`` keys that only say where the command writes or how it prints
+(:data:`RUN_KEYS`) are the command's.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.io.config_keys import PRESETS, reject_unknown
+from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS
+from fem_racket.validation import InputError, show
+
+__all__ = ["MAP_DEFAULTS", "REFINE_DEFAULTS", "map_file", "refine_file"]
+
+#: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
+RunConfig = Any
+
+#: Keys of a command table that set where the command writes or how it prints.
+RUN_KEYS = ("out", "overwrite", "no_files", "json", "quiet", "csv", "plot", "dpi", "no_plot")
+#: ``fem-racket map``'s options (argparse dests) and defaults.
+MAP_DEFAULTS: dict[str, Any] = {
+    "preset": None,
+    "elements": 20,
+    "add_mass": None,
+    "speed": 20.0,
+    "positions": "0.5:1.0:200",
+    "offsets": None,
+    "angle": None,
+    "spin": None,
+    "friction": None,
+    "ball_mass": DEFAULT_BALL_MASS,
+    "kcb": None,
+    "zeta": None,
+    "separation": "displacement",
+    "modes": DEFAULT_MODES,
+    "tolerance": DEFAULT_TOLERANCE,
+    "racket_speed": 0.0,
+    "reference": DEFAULT_REFERENCE,
+    "pivot": None,
+    "law": "linear",
+    "power_fraction": None,
+}
+#: ``fem-racket refine``'s options (argparse dests) and defaults.
+REFINE_DEFAULTS: dict[str, Any] = {
+    "elements": list(DEFAULT_ELEMENTS),
+    "family": "both",
+    "grading": DEFAULT_GRADING,
+    "count": 4,
+    "positions": list(DEFAULT_POSITIONS),
+    "speed": 20.0,
+    "ball_mass": None,
+    "kcb": None,
+    "zeta": None,
+    "separation": "displacement",
+    "impact_modes": DEFAULT_MODES,
+    "impact_nodes": False,
+}
+
+
+def _options(cfg: RunConfig, command: str, defaults: dict[str, Any]) -> dict[str, Any]:
+    """The command's options from the file: its defaults, the core tables' values of its
+    options, then its own table (checked against its options)."""
+    from fem_racket.studies.grid_values import LAW_PARAMETERS
+
+    core = cfg.defaults()
+    out = dict(defaults)
+    out.update({k: v for k, v in core.items() if k in defaults or k in LAW_PARAMETERS})
+    table = {k.replace("-", "_"): v for k, v in cfg.table(command).items()}
+    reject_unknown(table, [*defaults, *LAW_PARAMETERS, *RUN_KEYS], command)
+    out.update({k: v for k, v in table.items() if k not in RUN_KEYS})
+    return out
+
+
+def _law(o: dict[str, Any], cfg: RunConfig) -> Any:
+    from fem_racket.contact.presets import check_linear_options, get_law, law_parameters
+
+    if o["law"] != "linear":
+        for key in ("kcb_n_m", "zeta", "clamped_cor"):
+            if key in cfg.values.get("contact", {}):
+                raise InputError(
+                    f"contact.{key} = {show(cfg.values['contact'][key])} ({cfg.source}) is not "
+                    f"allowed with contact law {show(o['law'])}: it sets the paper's linear "
+                    "law's K_CB and zeta only"
+                )
+    check_linear_options(o["law"], kcb=o["kcb"], zeta=o["zeta"])
+    return get_law(o["law"], **law_parameters(o))
+
+
+def _rackets(o: dict[str, Any]) -> list[tuple[str, Any]]:
+    """(name, FrameModel) of the ``preset`` list (the standard racket when none), each with the
+    file's lead."""
+    from fem_racket.frame.head import DEFAULT_HEAD
+    from fem_racket.frame.lead import add_lead
+    from fem_racket.frame.mesh import frame_mesh
+    from fem_racket.frame.model import FrameModel
+    from fem_racket.frame.segments import standard_frame
+
+    names = o["preset"] or ["standard"]
+    if isinstance(names, str):
+        names = [names]
+    out = []
+    for name in names:
+        if name not in PRESETS:
+            raise InputError(f"map.preset = {show(name)} is not allowed: must be one of {PRESETS}")
+        frame = standard_frame(PRESETS[name])
+        if o["add_mass"]:
+            mesh = frame_mesh(frame, o["elements"])
+            frame = add_lead(mesh, o["add_mass"], DEFAULT_HEAD.on_frame(mesh.length))
+        out.append((name, FrameModel.build(frame, o["elements"])))
+    return out
+
+
+def map_file(cfg: RunConfig) -> list[Any]:
+    """The maps ``fem-racket map --config`` computes from ``cfg``: a RacketMap per racket,
+    a FaceMap with ``offsets``, a SpinMap with ``angle``/``spin``/``friction`` (the grids of
+    :mod:`fem_racket.cli.options.faces` unless given)."""
+    from fem_racket.impact.incidence import Incidence
+    from fem_racket.studies.grid_values import as_values
+    from fem_racket.studies.racket_map import DEFAULT_POWER_FRACTION, racket_map
+
+    o = _options(cfg, "map", MAP_DEFAULTS)
+    law = _law(o, cfg)
+    swing = {k: o[k] for k in ("racket_speed", "reference", "pivot")}
+    impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation", "modes", "tolerance")}
+    oblique = {k: o[k] for k in ("angle", "spin", "friction") if o[k] is not None}
+    if oblique:
+        from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, spin_map
+
+        table = cfg.table("map")
+        positions = o["positions"] if "positions" in table else SPIN_POSITIONS
+        grid = {
+            "positions": as_values("position", positions),
+            "offsets": as_values("offset", o["offsets"] or SPIN_OFFSETS),
+        }
+        if law is not None:
+            impact = {k: impact[k] for k in ("ball_mass", "tolerance")}
+        inc = Incidence(**oblique)
+        return [
+            spin_map(model, **grid, incidence=inc, speed=o["speed"], name=name,
+                     options={**impact, "law": law})
+            for name, model in _rackets(o)
+        ]  # fmt: skip
+    positions = as_values("position", o["positions"])
+    if o["offsets"] is not None:
+        from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
+
+        fraction = o["power_fraction"] or DEFAULT_AREA_FRACTION
+        return [
+            face_map(model, positions=positions, offsets=as_values("offset", o["offsets"]),
+                     name=name, speed=o["speed"], **swing,
+                     options={**impact, "power_fraction": fraction})
+            for name, model in _rackets(o)
+        ]  # fmt: skip
+    fraction = o["power_fraction"] or DEFAULT_POWER_FRACTION
+    return [
+        racket_map(model, name=name, speed=o["speed"], **swing, positions=positions, **impact,
+                   power_fraction=fraction, law=law)
+        for name, model in _rackets(o)
+    ]  # fmt: skip
+
+
+def refine_file(cfg: RunConfig) -> dict[str, Any]:
+    """The refinement studies ``fem-racket refine --config`` computes from ``cfg``: family ->
+    :class:`~fem_racket.studies.refine.RefinementStudy` (both families by default)."""
+    from fem_racket.studies.refine import (
+        FAMILIES,
+        refinement_study,
+    )
+
+    o = _options(cfg, "refine", REFINE_DEFAULTS)
+    families = FAMILIES if o["family"] == "both" else (o["family"],)
+    impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation")}
+    return {
+        fam: refinement_study(
+            cfg.frame(),
+            o["elements"],
+            family=fam,
+            n_modes=o["count"],
+            positions=o["positions"],
+            speed=o["speed"],
+            grading=o["grading"],
+            impact_nodes=o["impact_nodes"],
+            impact_modes=o["impact_modes"],
+            progress=False,
+            **impact,
+        )
+        for fam in families
+    }

@@ -1,0 +1,130 @@
+"""Spin-map outputs: netCDF (dims racket, offset, position), CSV (+ JSON sidecar) and a PNG of
+filled contours of the outgoing spin and angle inside the head outline.
+
+The maps of :func:`fem_racket.studies.spin_map.spin_map` (``fem-racket map --angle``); several
+rackets must share one grid. Every file is written atomically with its provenance
+(:mod:`fem_racket.outputs`), as the e_A face maps (:mod:`fem_racket.io.face_files`).
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from fem_racket.outputs import (
+    add_png_provenance,
+    atomic_output,
+    atomic_outputs,
+    provenance,
+    sidecar_path,
+)
+from fem_racket.studies.spin_map import SPIN_FIELDS, SpinMap
+from fem_racket.validation import InputError
+
+__all__ = ["write_spin_map"]
+
+#: The fields drawn in the PNG, in rows.
+DRAWN = ("spin_out_rpm", "angle_out_deg")
+
+
+def _grid(maps: Sequence[SpinMap]) -> tuple[np.ndarray, np.ndarray]:
+    x, y = maps[0].positions, maps[0].offsets
+    for m in maps[1:]:
+        if not (np.array_equal(m.positions, x) and np.array_equal(m.offsets, y)):
+            raise InputError("maps = several face grids is not allowed: must share one grid")
+    return x, y
+
+
+def _netcdf(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
+    from fem_racket.outputs.netcdf import write_netcdf
+
+    x, y = _grid(maps)
+    dims = ("racket", "offset", "position")
+    variables: dict[str, Any] = {
+        key: (dims, np.stack([m.fields[key] for m in maps]), {"units": u, "long_name": text})
+        for key, (u, text) in SPIN_FIELDS.items()
+    }
+    variables["racket"] = (("racket",), np.arange(len(maps)), {"long_name": "racket index"})
+    variables["offset"] = (("offset",), y, {"units": "m", "long_name": "lateral offset"})
+    variables["position"] = (("position",), x, {"units": "x/L", "long_name": "impact point"})
+    inc = maps[0].incidence.summary()
+    attrs: dict[str, Any] = {"rackets": " ".join(m.name for m in maps)}
+    attrs.update({k: float(v) for k, v in inc.items()}, speed_m_s=maps[0].speed)
+    prov = provenance(parameters)
+    attrs.update({k: v for k, v in prov.items() if k != "parameters"})
+    attrs["run_parameters"] = json.dumps(prov.get("parameters", {}), sort_keys=True, default=str)
+    with atomic_output(path, overwrite=True) as tmp:
+        write_netcdf(tmp, variables, attrs)
+
+
+def _png(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
+    from matplotlib.figure import Figure
+
+    n = len(maps)
+    fig = Figure(figsize=(max(2.4 * n + 1.4, 5.2), 3.9 * len(DRAWN) + 0.4), layout="constrained")
+    axes = np.atleast_2d(fig.subplots(len(DRAWN), n, squeeze=False))
+    t = np.linspace(0.0, 2.0 * np.pi, 200)
+    for row, key in enumerate(DRAWN):
+        values = np.stack([m.fields[key] for m in maps])
+        lo, hi = np.nanmin(values), np.nanmax(values)
+        levels = np.linspace(lo, hi if hi > lo else lo + 1.0, 15)
+        for col, m in enumerate(maps):
+            ax = axes[row, col]
+            h, L = m.head, m.length
+            X, Y = m.offsets * 100, m.positions * L * 100  # cm: y across, x up the page
+            cs = ax.contourf(X, Y, m.fields[key].T, levels=levels, cmap="coolwarm")
+            ax.plot(50 * h.width_m * np.cos(t), 100 * h.centre_m + 50 * h.length_m * np.sin(t), "k")
+            ax.set_aspect("equal")
+            ax.set_xlabel("offset y [cm]")
+            ax.set_title(m.name, fontsize=9)
+        axes[row, 0].set_ylabel("x from the butt [cm]")
+        fig.colorbar(cs, ax=list(axes[row]), label=SPIN_FIELDS[key][1], shrink=0.9)
+    inc = maps[0].incidence
+    fig.suptitle(
+        f"ball at {maps[0].speed:g} m/s, {inc.angle:g} deg from the normal, spin "
+        f"{inc.spin:g} rpm, friction {inc.friction:g}",
+        fontsize=9,
+    )
+    with atomic_output(path, overwrite=True) as tmp:
+        fig.savefig(tmp, dpi=96, format="png")
+        add_png_provenance(tmp, provenance(parameters))
+
+
+def _csv(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
+    cols = ["racket", "position [x/L]", "offset [m]"]
+    cols += ["spin out [rpm]", "angle out [deg]", "ball speed out [m/s]", "contact regime [-]"]
+    meta = provenance(parameters)
+    meta["spin_map"] = {m.name: m.summary() for m in maps}
+    with atomic_outputs([path, sidecar_path(path)], overwrite=True) as (tmp, side):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            w = csv.writer(f)
+            w.writerow(cols)
+            for m in maps:
+                for j, y in enumerate(m.offsets):
+                    for i, x in enumerate(m.positions):
+                        vals = [m.fields[k][j, i] for k in SPIN_FIELDS]
+                        if np.isfinite(vals[0]):
+                            w.writerow(
+                                [m.name, *(repr(float(a)) for a in (x, y, *vals)), m.regimes[j, i]]
+                            )
+        side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
+
+
+def write_spin_map(
+    maps: Sequence[SpinMap],
+    path: str | os.PathLike,
+    *,
+    parameters: Mapping[str, Any] | None = None,
+) -> Path:
+    """Write the spin maps to ``path``: .nc (netCDF), .csv (+ ``<file>.json``) or .png (the
+    caller has checked the paths; an existing file is replaced)."""
+    path = Path(path)
+    writer = {".png": _png, ".csv": _csv}.get(path.suffix.lower(), _netcdf)
+    writer(maps, path, parameters)
+    return path

@@ -1,0 +1,84 @@
+"""Whole-grid checks of a sweep: every case valid before any work, so that none fails on its
+input mid-sweep (:class:`fem_racket.studies.grid.SweepSpec` calls them when it is built)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from fem_racket.frame.head import DEFAULT_HEAD
+from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.segments import (
+    EI_RATIO,
+    RHOA1,
+    RHOA2,
+    Frame,
+    check_ei_factor,
+    check_stiffness,
+    standard_ei1_range,
+    standard_frame,
+)
+from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.validation import InputError, check_range
+
+__all__ = ["check_offsets", "check_rigidity", "check_swings"]
+
+
+def check_rigidity(spec: Any) -> None:
+    """Every frame of the grid (EI1, EI2 or the custom frame's EI, times ei_factor) with
+    EI / rhoA within EI_RANGE, so that no case fails on it mid-sweep."""
+    if isinstance(spec.frame, FrameMesh):
+        ratio = spec.frame.EI / spec.frame.rhoA
+    elif isinstance(spec.frame, Frame):
+        ratio = [s.EI / s.rhoA for s in spec.frame.segments]
+    else:
+        ei1 = np.atleast_1d(spec.values["ei1"])
+        if spec.ei2 is None:
+            for v in (ei1.min(), ei1.max()):
+                check_range("ei1", float(v), *standard_ei1_range(), unit="N m^2")
+            ei2 = ei1 * EI_RATIO
+        else:
+            for v in (ei1.min(), ei1.max()):
+                check_stiffness("ei1", float(v), RHOA1)
+            ei2 = np.atleast_1d(check_stiffness("ei2", spec.ei2, RHOA2))
+        ratio = np.concatenate([ei1 / RHOA1, ei2 / RHOA2])
+    factors = np.atleast_1d(spec.values["ei_factor"])
+    for f in (float(np.min(factors)), float(np.max(factors))):
+        check_ei_factor(f, ratio)
+
+
+def check_offsets(spec: Any) -> None:
+    """Every (position, offset) of the grid on the head outline (or on the axis), and a
+    frame with torsion data when any offset is not 0, so that no case fails mid-sweep."""
+    y = np.atleast_1d(spec.values["offset"])
+    if np.all(y == 0.0):
+        return
+    frame = spec.frame if spec.frame is not None else standard_frame()
+    if not (frame.torsion if isinstance(frame, Frame) else frame.has_torsion):
+        raise InputError(
+            "offset is not allowed with this frame: it has no torsion data (GJ, rhoIp) and "
+            "takes impacts on the long axis only"
+        )
+    head = DEFAULT_HEAD.on_frame(float(frame.length))
+    for x in np.atleast_1d(spec.values["position"]):
+        for v in y:
+            head.check(float(x) * head.frame_length_m, float(v))
+
+
+def check_swings(spec: Any) -> None:
+    """Every swing of the grid valid (no pivot at its reference point) and closing on the
+    slowest ball at every impact point, so that no case fails on it mid-sweep."""
+    v = spec.values
+    if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
+        return
+    frame = spec.frame if spec.frame is not None else standard_frame()
+    length = float(frame.length)
+    x = np.atleast_1d(v["position"]) * length
+    slowest = float(np.min(v["speed"]))
+    pivots = [None] if v["pivot"] is None else np.atleast_1d(v["pivot"]).tolist()
+    for speed in np.atleast_1d(v["racket_speed"]).tolist():
+        for ref in np.atleast_1d(v["reference"]).tolist():
+            for pivot in pivots:
+                swing = Swing.from_speed(speed, length, reference=ref, pivot=pivot)
+                closing_speed(slowest, float(np.min(swing.speed_at(x))))

@@ -1,0 +1,38 @@
+"""The options of a mesh-refinement study (:func:`fem_racket.studies.refine.refinement_study`):
+its defaults and :class:`RefineOptions`."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from fem_racket.frame.model import DEFAULT_MODES
+
+__all__ = ["DEFAULT_ELEMENTS", "DEFAULT_GRADING", "DEFAULT_POSITIONS", "FAMILIES", "RefineOptions"]
+
+#: Element counts of the meshes compared.
+DEFAULT_ELEMENTS = (5, 10, 20, 40, 80, 160, 320)
+#: The paper's three impact points (Figs 5-7): grip side, middle (near the node), top side.
+DEFAULT_POSITIONS = (0.6, 0.75, 0.9)
+FAMILIES = ("uniform", "graded")
+#: Cell-size ratio of graded meshes (largest / smallest in a segment).
+DEFAULT_GRADING = 4.0
+
+
+@dataclass(frozen=True)
+class RefineOptions:
+    """The options of :func:`refinement_study` besides the frame and the element counts (see
+    there)."""
+
+    family: str = "uniform"
+    n_modes: int = 4
+    positions: Sequence[float] = DEFAULT_POSITIONS
+    speed: float = 20.0
+    grading: float = DEFAULT_GRADING
+    impact_nodes: bool = False
+    impact_modes: int = DEFAULT_MODES
+    progress: bool | None = None
+    ball_mass: float | None = None
+    kcb: float | None = None
+    zeta: float | None = None
+    separation: str | None = None

@@ -1,0 +1,170 @@
+"""Spin over the face: the oblique ball's outgoing spin and angle at every point of the strings.
+
+Every grid point (x along the frame, y across it) on the head outline
+(:class:`~fem_racket.frame.head.HeadOutline`) is struck by the same oblique, spinning ball
+(:class:`~fem_racket.impact.incidence.Incidence`: angle from the face normal in the plane of the
+long axis, spin, friction), as ``fem-racket simulate --angle ... --offset ...`` strikes one
+point: its normal impact at V cos(angle) (the frame bending and twisting off the axis,
+:mod:`fem_racket.impact.offaxis`), then the tangential contact over it
+(:mod:`fem_racket.impact.oblique`; the free racket recoils along its axis as a rigid body, so
+the spin varies over the face only through the normal impact). The grid is one
+:class:`~fem_racket.impact.problem_batch.ProblemBatch` the solver answers. Points off the face
+are NaN.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
+from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.problem_batch import ProblemBatch
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.impact.solvers import make_solver
+from fem_racket.studies.face_map import increasing
+from fem_racket.validation import InputError, check_positive
+
+__all__ = ["SPIN_FIELDS", "SPIN_OFFSETS", "SPIN_POSITIONS", "SpinMap", "spin_map"]
+
+#: The spin map's grid unless given: x/L along the head and y [m] across it (each point is one
+#: oblique impact).
+SPIN_POSITIONS = "0.52:0.96:12"
+SPIN_OFFSETS = "-0.12:0.12:9"
+
+#: The mapped outputs: field -> (unit, label).
+SPIN_FIELDS = {
+    "spin_out_rpm": ("rpm", "outgoing spin [rpm] (+ topspin)"),
+    "angle_out_deg": ("deg", "outgoing angle from the face normal [deg]"),
+    "ball_speed_out_m_s": ("m/s", "outgoing ball speed [m/s]"),
+}
+
+
+@dataclass(frozen=True, eq=False)
+class SpinMap:
+    """The oblique outcome over the string face of one racket.
+
+    Attributes
+    ----------
+    name : str
+    positions : ndarray, shape (nx,)
+        x/L of the grid.
+    offsets : ndarray, shape (ny,)
+        y [m] of the grid.
+    fields : dict of str to ndarray, shape (ny, nx)
+        :data:`SPIN_FIELDS` (NaN off the face).
+    regimes : ndarray of str, shape (ny, nx)
+        The contact regime at each point ("" off the face).
+    incidence : Incidence
+    speed : float
+        Incident ball speed [m/s].
+    head : HeadOutline
+    length : float
+        L [m].
+    """
+
+    name: str
+    positions: np.ndarray
+    offsets: np.ndarray
+    fields: dict[str, np.ndarray]
+    regimes: np.ndarray
+    incidence: Incidence
+    speed: float
+    head: HeadOutline
+    length: float
+
+    def extreme(self, key: str = "spin_out_rpm") -> tuple[float, float, float, float, float]:
+        """(min, its x/L, max, its x/L, its y [m]) of a field over the face."""
+        v = self.fields[key]
+        lo = np.unravel_index(int(np.nanargmin(v)), v.shape)
+        hi = np.unravel_index(int(np.nanargmax(v)), v.shape)
+        return (
+            float(v[lo]),
+            float(self.positions[lo[1]]),
+            float(v[hi]),
+            float(self.positions[hi[1]]),
+            float(self.offsets[hi[0]]),
+        )
+
+    def summary(self) -> dict[str, Any]:
+        """JSON-ready, units in the keys."""
+        out: dict[str, Any] = {"racket": self.name, "speed_m_s": self.speed}
+        out.update(self.incidence.summary())
+        for key in SPIN_FIELDS:
+            lo, x_lo, hi, x_hi, y_hi = self.extreme(key)
+            out[f"{key}_min"], out[f"{key}_max"] = lo, hi
+        lo, x_lo, hi, x_hi, y_hi = self.extreme()
+        out.update(max_spin_x_over_l=x_hi, max_spin_offset_m=y_hi)
+        out["contact_regimes"] = sorted({str(r) for r in self.regimes.ravel() if r})
+        return out
+
+
+def spin_map(
+    model: FrameModel,
+    *,
+    positions: Any,
+    offsets: Any,
+    incidence: Incidence,
+    speed: float = 20.0,
+    name: str = "racket",
+    options: dict[str, Any] | None = None,
+) -> SpinMap:
+    """The oblique outcome over the string face (module docstring).
+
+    Parameters
+    ----------
+    model : FrameModel
+        The racket, with torsion data when an offset is not 0.
+    positions, offsets : array of float
+        x/L and y [m] of the grid (increasing, at least 2 each).
+    incidence : Incidence
+        Angle, spin and friction of the ball (and its inertia, radius, eta^2).
+    speed : float
+        Incident ball speed [m/s].
+    name : str
+        Label of the racket.
+    options : dict, optional
+        ``ball_mass``, ``kcb``, ``zeta``, ``separation``, ``modes``, ``tolerance``, ``law``
+        (a ContactLaw: solved by the general solver) and ``head`` (the 100 in^2 outline).
+    """
+    opts = dict(options or {})
+    head = (opts.pop("head", None) or DEFAULT_HEAD).on_frame(model.mesh.length)
+    unknown = set(opts) - {"ball_mass", "kcb", "zeta", "separation", "modes", "tolerance", "law"}
+    if unknown:
+        raise InputError(f"options = {sorted(unknown)} is not allowed: unknown spin-map options")
+    law = opts.pop("law", None)
+    solver_options = {
+        "tolerance": opts.pop("tolerance", DEFAULT_TOLERANCE),
+        **({} if law is not None else {"modes": opts.pop("modes", DEFAULT_MODES)}),
+    }
+    speed = check_positive("speed", speed, "m/s")
+    x = increasing("positions", positions, 2)
+    y = increasing("offsets", offsets, 2)
+    X, Y = np.meshgrid(x, y)
+    face = head.contains(X * model.mesh.length, Y)
+    fields = {k: np.full(X.shape, np.nan) for k in SPIN_FIELDS}
+    regimes = np.full(X.shape, "", dtype=object)
+    if np.any(face):
+        n = int(np.count_nonzero(face))
+        batch = ProblemBatch(
+            (model,),
+            X[face],
+            speed,
+            offset=Y[face],
+            ball_mass=opts.get("ball_mass") or DEFAULT_BALL_MASS,
+            kcb=opts.get("kcb"),
+            zeta=opts.get("zeta"),
+            law=law,
+            separation=opts.get("separation") if law is None else None,
+            incidence=(incidence,) * n,
+        )
+        name_ = "exact" if law is None else "general"
+        out = make_solver(name_, **solver_options).solve_many(batch)
+        for key in SPIN_FIELDS:
+            fields[key][face] = out.extra[key]
+        regimes[face] = out.extra["contact_regime"]
+    return SpinMap(name, x, y, fields, regimes, incidence, speed, head, model.mesh.length)

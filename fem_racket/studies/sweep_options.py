@@ -1,0 +1,80 @@
+"""The options of a sweep besides its grid: how the cases are solved and where the sweep runs.
+
+:func:`fem_racket.sweep` and :func:`fem_racket.studies.sweep.sweep_result` take them as
+keywords (checked with a "did you mean", :func:`fem_racket.studies.options.take`); the sweep
+itself (:func:`fem_racket.studies.sweep.run_sweep`) takes these two small dataclasses.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Any
+
+from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+
+__all__ = ["SweepRun", "SweepSolving"]
+
+
+@dataclass(frozen=True)
+class SweepSolving:
+    """How the cases are solved (see :func:`fem_racket.sweep`).
+
+    Attributes
+    ----------
+    ei2 : float or None
+        Fixed top-side EI2 of the standard frame [N m^2] (0.88 EI1 when None).
+    solver, separation, basis, modes, rtol, atol
+        As for :func:`fem_racket.simulate`.
+    law : ContactLaw, str or None
+        A contact law other than the paper's.
+    tolerance : float or None
+        COR tolerance of the exact solver's batched engine (None: every mode).
+    peak_force : bool
+        Also compute the largest contact force.
+    """
+
+    ei2: float | None = None
+    solver: str = "auto"
+    separation: str = "displacement"
+    basis: str = "modal"
+    modes: int | None = DEFAULT_MODES
+    rtol: float = 1e-10
+    atol: float = 1e-12
+    law: Any = None
+    tolerance: float | None = DEFAULT_TOLERANCE
+    peak_force: bool = False
+
+
+@dataclass(frozen=True)
+class SweepRun:
+    """Where the sweep runs and what it writes (see :func:`fem_racket.sweep`).
+
+    Attributes
+    ----------
+    output : path or None
+        netCDF (or .csv) file to write; with it the sweep is resumable.
+    overwrite, restart : bool
+        Replace an existing ``output``; discard an existing checkpoint.
+    backend : {"serial", "processes", "dask"} or None
+    workers : int or None
+    scheduler : str or None
+        Dask scheduler address ``tcp://HOST:PORT``.
+    chunk_size : int or None
+        Cases per task and checkpoint file.
+    progress : bool or None
+        Progress bar on stderr (None: when stderr is a terminal).
+    parameters : dict or None
+        Extra provenance (the attribute ``run_parameters``).
+    """
+
+    output: str | os.PathLike | None = None
+    overwrite: bool = False
+    restart: bool = False
+    backend: str | None = None
+    workers: int | None = None
+    scheduler: str | None = None
+    chunk_size: int | None = None
+    progress: bool | None = None
+    parameters: dict[str, Any] | None = None

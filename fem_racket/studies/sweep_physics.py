@@ -1,0 +1,156 @@
+"""The sweep's string-bed and oblique-ball axes: what they combine with, and their cases.
+
+``string_tension`` [N] and ``pattern`` (issue 25) put a string bed
+(:class:`~fem_racket.strings.bed.StringBed`, the paper's racket strung at 246 N with 16 x 19
+nylon unless given) on every case: the bed replaces the lumped K_CB and the ball strikes it with
+its own law (the ``kawazoe-1997-ball`` unless ``law`` is given). ``angle`` [deg], ``spin``
+[rpm] and ``friction`` (issue 26), and the ball's ``ball_inertia`` (I/(m R^2)), ``ball_radius``
+[m] and the contact's ``compliance_ratio`` (eta^2), make every case an oblique, spinning ball
+(:class:`~fem_racket.impact.incidence.Incidence`; its defaults, angle 0, spin 0 and friction
+0.4, unless given), solved as its normal impact at V cos(angle) and the tangential contact over
+it. What the problems refuse (a string bed on a swinging racket, an incidence on a strung
+one ...) is refused here for the whole grid, in one line, before any work.
+
+The contact regime of an oblique impact (``slide``, ``grip``, ``slide-grip-slide`` ...: the
+phases in order) is a number in the dataset (:func:`regime_code`): the count of phases, negative
+when the first is a grip (1: slide, 3: slide-grip-slide, -1: grip), with CF ``flag_values`` and
+``flag_meanings`` naming the codes present.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.impact.strung import bed_coordinates
+from fem_racket.strings.bed import StringBed
+from fem_racket.studies.grid_values import pattern_label
+from fem_racket.validation import InputError, show
+
+__all__ = [
+    "OBLIQUE_AXES",
+    "STRING_AXES",
+    "case_beds",
+    "case_incidences",
+    "check_physics",
+    "fixed_label",
+    "given",
+    "regime_code",
+    "regime_label",
+]
+
+STRING_AXES = ("string_tension", "pattern")
+OBLIQUE_AXES = ("angle", "spin", "friction", "ball_inertia", "ball_radius", "compliance_ratio")
+#: The Incidence field of each oblique axis.
+INCIDENCE_FIELD = {a: a for a in OBLIQUE_AXES} | {"ball_radius": "radius"}
+
+
+def given(values: dict[str, Any], names: tuple[str, ...]) -> list[str]:
+    """The ``names`` with a value in ``values``."""
+    return [n for n in names if values.get(n) is not None]
+
+
+def _nonzero(values: dict[str, Any], name: str) -> bool:
+    return bool(np.any(np.atleast_1d(values[name]) != 0.0))
+
+
+def check_physics(values: dict[str, Any], law: Any, options: dict[str, Any], length: float) -> None:
+    """Refuse, in one line, a string-bed or oblique axis with what it cannot combine with.
+
+    ``values``: the sweep's parameter values; ``law``: its contact law (None: the paper's);
+    ``options``: its solver, separation, basis, modes and tolerance; ``length``: the racket's
+    length [m] (the string bed's head is placed on it).
+    """
+    strings, oblique = given(values, STRING_AXES), given(values, OBLIQUE_AXES)
+    if strings and oblique:
+        raise InputError(
+            f"{oblique[0]} is not allowed with {strings[0]}: the sweep's oblique cases take the "
+            "lumped ball/string law, not a string bed (simulate takes both)"
+        )
+    if not strings:
+        return
+    what = f"with {strings[0]} (a string bed)"
+    lumped = "the bed replaces the lumped K_CB (give the ball's own law with law)"
+    for name in ("kcb", "zeta"):
+        if values[name] is not None:
+            raise InputError(f"{name} is not allowed {what}: {lumped}")
+    rest = {"racket_speed": "the strung racket is free and at rest"}
+    rest["offset"] = "the strung racket is struck on its long axis"
+    for name, why in rest.items():
+        if _nonzero(values, name):
+            raise InputError(f"{name} = {show(values[name])} is not allowed {what}: {why}")
+    solver = options["solver"]
+    linear_ball = law is None or law.name == "linear"
+    takes = {"exact": (), "general": ("tolerance",), "cvode": ("rtol", "atol")}
+    if solver not in takes:
+        raise InputError(
+            f"solver = {solver!r} is not allowed {what}: must be one of exact, general, cvode"
+        )
+    if solver == "exact" and not linear_ball:
+        raise InputError(f"solver = 'exact' is not allowed {what} and ball law {law.name!r}")
+    defaults = {"modes": DEFAULT_MODES, "basis": "modal"}
+    if solver != "general":
+        defaults["tolerance"] = DEFAULT_TOLERANCE
+    for name, default in defaults.items():
+        if options[name] != default:
+            raise InputError(
+                f"{name} = {show(options[name])} is not allowed {what} and solver {solver!r}: "
+                f"it takes {', '.join(takes[solver]) or 'none'} (every frame mode is used)"
+            )
+    bed = StringBed()
+    for x in np.atleast_1d(values["position"]):
+        bed_coordinates(bed, float(x), 0.0, length, bed.head_centre)
+
+
+def case_beds(p: dict[str, Any], n: int) -> tuple[StringBed, ...] | None:
+    """The string beds of ``n`` cases with parameter values ``p`` (None: no bed)."""
+    if not given(p, STRING_AXES):
+        return None
+    base = StringBed()
+    tension = p["string_tension"]
+    tension = np.broadcast_to(base.tension_n if tension is None else tension, n)
+    code = p["pattern"]
+    code = np.broadcast_to(100 * base.mains + base.crosses if code is None else code, n)
+    return tuple(
+        StringBed(tension_n=float(t), mains=int(c) // 100, crosses=int(c) % 100)
+        for t, c in zip(tension, code, strict=True)
+    )
+
+
+def case_incidences(p: dict[str, Any], n: int) -> tuple[Incidence, ...] | None:
+    """The incidences of ``n`` cases with parameter values ``p`` (None: head-on)."""
+    if not given(p, OBLIQUE_AXES):
+        return None
+    base = Incidence()
+    fields = [INCIDENCE_FIELD[k] for k in OBLIQUE_AXES]
+    cols = [
+        np.broadcast_to(getattr(base, f) if p[k] is None else p[k], n)
+        for k, f in zip(OBLIQUE_AXES, fields, strict=True)
+    ]
+    return tuple(
+        Incidence(**{f: float(v) for f, v in zip(fields, values, strict=True)})
+        for values in zip(*cols, strict=True)
+    )
+
+
+def regime_code(label: str) -> float:
+    """The number of a contact regime (module docstring); NaN for none (a failed case)."""
+    if not label:
+        return np.nan
+    phases = label.split("-")
+    return float(len(phases) if phases[0] == "slide" else -len(phases))
+
+
+def regime_label(code: float) -> str:
+    """The contact regime of a :func:`regime_code`."""
+    first, other = ("slide", "grip") if code > 0 else ("grip", "slide")
+    return "-".join(first if k % 2 == 0 else other for k in range(int(abs(code))))
+
+
+def fixed_label(name: str, value: Any) -> Any:
+    """A fixed value as an attribute: a pattern by its label."""
+    return pattern_label(value) if name == "pattern" else value
