@@ -1,7 +1,9 @@
 """Compiled kernels: issue 27's table of costs and accuracy, in one run (20 elements, 1 thread).
 
-- ``fem-racket simulate --law kawazoe-1997-nonlinear`` in a new process, compiling the
-  kernels (an empty numba cache), then with them cached;
+- a batch of two law impacts in a new process, compiling the kernels (an empty numba cache),
+  then with them cached; ``fem-racket simulate --law kawazoe-1997-nonlinear`` (a lone impact:
+  the kernels' code interpreted, numba not loaded) and a linear ``simulate`` in new processes,
+  best of 5 (wall and CPU);
 - CPU us per impact: the linear engine (``impacts``, tolerance 1e-6; reference), each law
   batched (positions 0.45-0.95 L, 20-40 m/s, tolerance 1e-6, vouched; max |dCOR| against CVODE
   at rtol 1e-10 on the first cases) and the OpenSeesPy peer (Newmark, average acceleration,
@@ -43,26 +45,41 @@ from fem_racket.contact.series import SeriesBallString  # noqa: E402
 from fem_racket.impact.general.integrator import solve_general  # noqa: E402
 from fem_racket.impact.law_impact import LawOptions, receptance, solve_law_impact  # noqa: E402
 
-SIMULATE = "from fem_racket.cli import main; main(['simulate', '--law', 'kawazoe-1997-nonlinear'])"
+SIMULATE = "from fem_racket.cli import main; main(['simulate'{}])"
+#: A batch of two impacts in a new process: the kernels compiled (or loaded from the cache).
+BATCH = (
+    "from fem_racket import FrameModel; from fem_racket.contact.presets import PRESETS; "
+    "from fem_racket.impact.general.integrator import solve_general; "
+    "from fem_racket.impact.law_impact import receptance; "
+    "solve_general(PRESETS['kawazoe-1997-nonlinear'], "
+    "receptance(FrameModel.build(None, 20), [0.6, 0.8], 0.057), 30.0)"
+)
 
 
-def first_runs() -> list[tuple[float, float]]:
-    """(wall s, CPU s) of ``fem-racket simulate --law kawazoe-1997-nonlinear`` in a new
-    process: compiling the kernels (an empty numba cache), then loading them from it."""
+def _process(code: str, env: dict[str, str]) -> tuple[float, float]:
+    """(wall s, CPU s) of ``python -c code`` in a new process."""
     import resource
 
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    w0 = time.perf_counter()
+    subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, check=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+    return time.perf_counter() - w0, cpu
+
+
+def first_runs(repeat: int = 5) -> dict[str, tuple[float, float]]:
+    """(wall s, CPU s) in new processes: a batch compiling the kernels (an empty numba cache)
+    and loading them from it; the best of ``repeat`` of ``fem-racket simulate --law
+    kawazoe-1997-nonlinear`` (a lone impact: the kernels interpreted) and of a linear
+    ``simulate``."""
     with tempfile.TemporaryDirectory() as cache:
         env = dict(os.environ, NUMBA_CACHE_DIR=cache)
-        times = []
-        for _ in range(2):
-            before = resource.getrusage(resource.RUSAGE_CHILDREN)
-            w0 = time.perf_counter()
-            run = [sys.executable, "-c", SIMULATE]
-            subprocess.run(run, env=env, capture_output=True, check=True)
-            after = resource.getrusage(resource.RUSAGE_CHILDREN)
-            cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
-            times.append((time.perf_counter() - w0, cpu))
-    return times
+        out = {"compile": _process(BATCH, env), "cached": _process(BATCH, env)}
+        for key, args in (("law", ", '--law', 'kawazoe-1997-nonlinear'"), ("linear", "")):
+            runs = [_process(SIMULATE.format(args), env) for _ in range(repeat)]
+            out[key] = (min(r[0] for r in runs), min(r[1] for r in runs))
+    return out
 
 
 def cvode_cor(law, model, position, speed) -> float:
@@ -247,10 +264,16 @@ def main(argv: list[str] | None = None) -> list[tuple[str, float, str]]:
     model.modes(None)
     print(f"load: {os.getloadavg()[0]:.1f} (2 cores shared)")
     if not args.only_accuracy:
-        (c_wall, c_cpu), (l_wall, l_cpu) = first_runs()
+        t = first_runs()
         print(
-            f"simulate --law, a new process: compiling the kernels (empty numba cache) "
-            f"{c_wall:.1f} s wall, {c_cpu:.1f} s CPU; cached {l_wall:.2f} s wall, {l_cpu:.2f} s CPU"
+            "a batch in a new process: compiling the kernels (empty numba cache) "
+            f"{t['compile'][0]:.1f} s wall, {t['compile'][1]:.1f} s CPU; cached "
+            f"{t['cached'][0]:.2f} s wall, {t['cached'][1]:.2f} s CPU"
+        )
+        print(
+            "simulate --law kawazoe-1997-nonlinear (a lone impact, interpreted), best of 5: "
+            f"{t['law'][0]:.2f} s wall, {t['law'][1]:.2f} s CPU; linear simulate "
+            f"{t['linear'][0]:.2f} s wall, {t['linear'][1]:.2f} s CPU"
         )
         n = 200 if args.quick else 2000
         count, us = linear_engine(model, (7, 3, 60) if args.quick else (70, 30, 60))

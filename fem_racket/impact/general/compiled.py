@@ -149,7 +149,7 @@ def march_compiled(
     contact at t_max, 2 Newton did not converge; the outcome is NaN where it is not 0).
     ``extend``: see :func:`fem_racket.impact.general.kernel.march_cases` (False: the numpy
     march's equations, to round-off)."""
-    from fem_racket.impact.general.kernel import march_cases
+    from fem_racket.impact.general import jit
 
     W, A2, nmode, kept = _modes(rec, omega_c, beta)
     kind = (law.law, law.state, law.end, int(extend))
@@ -164,6 +164,9 @@ def march_compiled(
         fdv = _free(sub, speed[todo], None if frame_velocity is None else frame_velocity[todo],
                     h[todo], nsteps)  # fmt: skip
         cases = (sub.compliance, h[todo], nsteps, speed[todo], scale)
+        jit.prepare(int(nsteps.max()))  # interpreted or compiled (a lone first impact)
+        from fem_racket.impact.general.kernel import march_cases
+
         H, res = march_cases(
             kind, law.params[todo], (W[todo], A2[todo], nmode[todo]), cases, fdv, STENCILS
         )

@@ -12,8 +12,10 @@ per case on the law's own end condition inside its step.
 
 The laws of :mod:`fem_racket.contact` march compiled (:mod:`fem_racket.impact.general.kernel`,
 numba): every case with its own modes and its own step h = t_c / N, so a batch may span frames
-and a case's answer does not depend on the batch it is in. A COR tolerance sets N and the mode
-cut-off (:func:`settings`), and each answer is vouched for against it
+and a case's answer does not depend on the batch it is in. A lone impact that is a process's
+first solve (``fem-racket simulate --law``) runs the same kernels' code interpreted instead,
+which costs less than loading numba (:mod:`fem_racket.impact.general.jit`). A COR tolerance
+sets N and the mode cut-off (:func:`settings`), and each answer is vouched for against it
 (:mod:`fem_racket.impact.general.vouch`: step halving, state resolution, energy balance; N
 doubled where it fails, refused where it still fails; where the law's estimate of t_c is far
 too long, the contact time found replaces it). A law without a kernel (a
@@ -39,6 +41,7 @@ import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.impact.general.compiled import kernel_law, march_compiled
+from fem_racket.impact.general.jit import lone_solve
 from fem_racket.impact.general.march import GeneralOutcome, march
 from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
@@ -160,17 +163,19 @@ def solve_general(
     omega_c = contact_frequency(t_case, exponent) + 0.0 * t_case
     limits = (np.minimum(SPAN * t_case, limit), limit)
     if given:
-        out, _, status = march_compiled(
-            kernel, rec, speed, frame_velocity, omega_c, beta, t_case / steps, *limits
-        )
+        with lone_solve(ncase):
+            out, _, status = march_compiled(
+                kernel, rec, speed, frame_velocity, omega_c, beta, t_case / steps, *limits
+            )
         _check_status(status, limit)
         return out
     target = NONE_TOLERANCE if tol is None else tol
     if beta_given is None and tol is not None:  # the cut-off's share of the tolerance
         beta = cutoff_factor(tol * (1.0 - STEP_SHARE))
-    parts, where, run = vouched(
-        kernel, rec, speed, frame_velocity, omega_c, beta, t_case, steps, target, limits
-    )
+    with lone_solve(ncase):
+        parts, where, run = vouched(
+            kernel, rec, speed, frame_velocity, omega_c, beta, t_case, steps, target, limits
+        )
     out = _merge(parts, where, ncase)
     if refused == "raise":
         _check_status(np.where(run.no_separation, 1, 0), limit)

@@ -25,11 +25,11 @@ contact work int F delta' dt and impulse over the whole steps up to the separati
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from fem_racket.impact.general import kernel_laws as kl
 from fem_racket.impact.general import kernel_modes as km
 from fem_racket.impact.general import kernel_node as kn
+from fem_racket.impact.general.jit import njit
 
 __all__ = ["RESULTS", "march_cases"]
 
@@ -108,10 +108,13 @@ def _integrals(H, at, h, cs, c1, res):
     k = last - 1
     s, b = (k + 1, 0) if k < 2 else (0, k - 2)
     part = 0.0
+    # frac^(j + 1) as numba multiplies an integer power, written out: the same bits interpreted
+    f2 = frac * frac
+    powers = (frac, f2, frac * f2, f2 * f2)
     for r in range(4):
         q = 0.0
         for j in range(4):
-            q += cs[s, r, j] * (frac ** (j + 1) / (j + 1.0))
+            q += cs[s, r, j] * (powers[j] / (j + 1.0))
         part += q * H[_F, b + r]
     res[5], res[7], res[8] = before + h * part, work, imp
     top = 0
@@ -123,7 +126,8 @@ def _integrals(H, at, h, cs, c1, res):
     mid = H[_F, i] if i <= last else -np.inf
     c = H[_F, i + 1] if i + 1 <= last else -np.inf
     den = a - 2.0 * mid + c
-    res[6] = mid - 0.125 * (c - a) ** 2 / den if np.isfinite(den) and den < 0.0 else H[_F, top]
+    top_f, rise = H[_F, top], c - a
+    res[6] = mid - 0.125 * (rise * rise) / den if np.isfinite(den) and den < 0.0 else top_f
 
 
 @njit(**_JIT)
@@ -188,7 +192,7 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
             for j in range(nm):
                 if a2[j] > 0:
                     yr, yi = Y[0, j] + Bw[10, j] * own, Y[1, j] + Bw[11, j] * own
-                    energy += 0.5 * (yr**2 + yi**2) / a2[j]
+                    energy += 0.5 * (yr * yr + yi * yi) / a2[j]
             res[4] = energy
             _integrals(H, (m, res[1], n), h, cs, c1, res)
             return

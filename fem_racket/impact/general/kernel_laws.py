@@ -13,7 +13,9 @@ is heavy); compiled code is cached on disk.
 
 from __future__ import annotations
 
-from numba import njit
+import math
+
+from fem_racket.impact.general.jit import njit
 
 __all__ = [
     "LAW_IDS",
@@ -53,7 +55,7 @@ def force(law, p, d, v, z):
         if d >= z:
             return p[0] * max(d, 0.0) ** p[2]
         return p[1] * max(d - end_value(law, p, z), 0.0) ** p[2]
-    return p[2] * z + p[3] * z**3
+    return p[2] * z + p[3] * (z * (z * z))
 
 
 @njit(**_JIT)
@@ -76,20 +78,20 @@ def force_partials(law, p, d, v, z):
         s = base ** (n - 1.0)
         unload = n * p[1] * s
         return p[1] * (s * base), unload, 0.0, -unload * (1.0 - p[3])
-    return p[2] * z + p[3] * z**3, 0.0, 0.0, p[2] + 3.0 * p[3] * z**2
+    return p[2] * z + p[3] * (z * (z * z)), 0.0, 0.0, p[2] + 3.0 * p[3] * (z * z)
 
 
 @njit(**_JIT)
 def rate(law, p, d, v, z):
     """z' of an ODE state (the series law's string bed) [m/s]."""
-    return v - (p[2] * z + p[3] * z**3 - p[0] * (d - z)) / p[1]
+    return v - (p[2] * z + p[3] * (z * (z * z)) - p[0] * (d - z)) / p[1]
 
 
 @njit(**_JIT)
 def rate_partials(law, p, d, v, z):
     """(dz'/d delta, dz'/d delta', dz'/dz)."""
     c = p[1]
-    ds = p[2] + 3.0 * p[3] * z**2
+    ds = p[2] + 3.0 * p[3] * (z * z)
     return p[0] / c, 1.0, -(ds + p[0]) / c
 
 
@@ -110,7 +112,7 @@ def turn_max(d0, v0, d1, v1, h):
     m0, m1, dd = h * v0, h * v1, d0 - d1
     qa = 6.0 * dd + 3.0 * m0 + 3.0 * m1
     qb = -6.0 * dd - 4.0 * m0 - 2.0 * m1
-    disc = max(qb * qb - 4.0 * qa * m0, 0.0) ** 0.5
+    disc = math.sqrt(max(qb * qb - 4.0 * qa * m0, 0.0))  # numba's x ** 0.5, as interpreted
     den = -qb + disc
     s = min(max(2.0 * m0 / (den if den > 0 else 1.0), 0.0), 1.0)
     return max(hermite_value(s, d0, m0, d1, m1), top)

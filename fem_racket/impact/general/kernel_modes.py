@@ -16,7 +16,8 @@ B_2 + e^{i theta} B_3, so a node costs one pass over the modes.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from fem_racket.impact.general.jit import njit
 
 __all__ = [
     "advance",
@@ -36,6 +37,13 @@ _TERM = 1e-19
 _RECIPROCAL = 1.0 / np.arange(1.0, _SERIES + 5.0)
 
 
+@njit(inline="always", **_JIT)
+def _over_ix(z, x):
+    """z / (i x), written out as numba divides it (CPython's algorithm, for a divisor whose
+    real part is zero): the same bits when the kernels run interpreted."""
+    return complex(z.imag / x, -z.real / x)
+
+
 @njit(**_JIT)
 def moments(x, out):
     """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``.
@@ -47,10 +55,10 @@ def moments(x, out):
     ix = 1j * x
     e = np.exp(ix)
     if abs(x) >= 2.0:
-        prev = (e - 1.0) / ix
+        prev = _over_ix(e - 1.0, x)
         out[0] = prev
         for q in range(1, 4):
-            prev = (e - q * prev) / ix
+            prev = _over_ix(e - q * prev, x)
             out[q] = prev
         return
     tr, ti = 1.0, 0.0

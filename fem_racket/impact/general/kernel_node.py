@@ -11,9 +11,9 @@ contact in a step on the law's own end condition. A case's histories are the row
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from fem_racket.impact.general import kernel_laws as kl
+from fem_racket.impact.general.jit import njit
 
 __all__ = ["D", "F", "G", "NEWTON_ITER", "V", "Z", "ended", "fraction", "newton", "solve_node"]
 
