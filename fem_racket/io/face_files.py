@@ -150,21 +150,22 @@ def plot_face(
     return path
 
 
+#: The CSV's columns: one row per face point with a result.
+_CSV_COLUMNS = (
+    "racket",
+    "position [x/L]",
+    "offset [m]",
+    "apparent COR [-]",
+    "ball speed out [m/s]",
+)
+
+
 def _cell_row(m: FaceMap, j: int, i: int) -> list[Any] | None:
     x, y = m.positions[i], m.offsets[j]
     e, v = m.apparent_cor[j, i], m.ball_speed_out[j, i]
     if not np.isfinite(e):
         return None
     return [m.name, *(repr(float(a)) for a in (x, y, e, v))]
-
-
-def _write_csv(
-    maps: Sequence[FaceMap], path: Path, overwrite: bool, parameters: Mapping[str, Any] | None
-) -> None:
-    cols = ["racket", "position [x/L]", "offset [m]", "apparent COR [-]", "ball speed out [m/s]"]
-    meta = provenance(parameters)
-    meta["face"] = {m.name: m.summary() for m in maps}
-    write_cells_csv(maps, path, cols, _cell_row, meta, overwrite=overwrite)
 
 
 def write_face(
@@ -181,7 +182,15 @@ def write_face(
     if suffix == ".png":
         return plot_face(maps, path, overwrite=overwrite, parameters=parameters)
     if suffix == ".csv":
-        _write_csv(maps, path, overwrite, parameters)
+        write_cells_csv(
+            maps,
+            path,
+            _CSV_COLUMNS,
+            _cell_row,
+            summary_key="face",
+            parameters=parameters,
+            overwrite=overwrite,
+        )
         return path
     ds = face_dataset(maps, parameters)
     with atomic_output(path, overwrite=overwrite) as tmp:

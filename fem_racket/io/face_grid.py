@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.outputs import atomic_outputs, sidecar_path
+from fem_racket.outputs import atomic_outputs, provenance, sidecar_path
 from fem_racket.validation import InputError
 
 
@@ -29,12 +29,16 @@ def write_cells_csv(
     path: Path,
     columns: Sequence[str],
     row: Callable[[Any, int, int], list[Any] | None],
-    meta: Mapping[str, Any],
     *,
+    summary_key: str,
+    parameters: Mapping[str, Any] | None,
     overwrite: bool,
 ) -> None:
     """Write one CSV row per cell of each map (``row(map, j, i)`` for offset j and position i;
-    None skips the cell) and ``meta`` as the sidecar ``<file>.json``, atomically."""
+    None skips the cell) and the sidecar ``<file>.json``: the provenance of ``parameters`` and,
+    under ``summary_key``, each map's ``summary()`` by name; both atomically."""
+    meta = provenance(parameters)
+    meta[summary_key] = {m.name: m.summary() for m in maps}
     with atomic_outputs([path, sidecar_path(path)], overwrite=overwrite) as (tmp, side):
         with open(tmp, "w", newline="", encoding="utf-8") as f:
             w = csv.writer(f)

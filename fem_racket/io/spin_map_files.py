@@ -96,9 +96,9 @@ def _cell_row(m: SpinMap, j: int, i: int) -> list[Any] | None:
 def _csv(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
     cols = ["racket", "position [x/L]", "offset [m]"]
     cols += ["spin out [rpm]", "angle out [deg]", "ball speed out [m/s]", "contact regime [-]"]
-    meta = provenance(parameters)
-    meta["spin_map"] = {m.name: m.summary() for m in maps}
-    write_cells_csv(maps, path, cols, _cell_row, meta, overwrite=True)
+    write_cells_csv(
+        maps, path, cols, _cell_row, summary_key="spin_map", parameters=parameters, overwrite=True
+    )
 
 
 def write_spin_map(

@@ -39,9 +39,10 @@ __all__ = ["Phase", "TangentialContact", "TangentialSolution", "march"]
 MAX_PHASES = 200
 
 
-@dataclass(frozen=True)
-class TangentialContact:
-    """The tangential contact's mechanics.
+@dataclass(frozen=True, eq=False)
+class FrictionSpring:
+    """Coulomb friction and the tangential spring: what the scalar contact
+    (:class:`TangentialContact`) and the vector one (``plane_ode.PlaneContact``) share.
 
     Parameters
     ----------
@@ -49,17 +50,29 @@ class TangentialContact:
         mu >= 0.
     stiffness : float
         k_t [N/m], > 0; ``math.inf`` for a rigid tangential contact.
-    effective_mass : float
-        m* [kg]: 1/m* = beta_t / m + 1/M_t.
     """
 
     friction: float
     stiffness: float
-    effective_mass: float
 
     @property
     def rigid(self) -> bool:
         return math.isinf(self.stiffness)
+
+
+@dataclass(frozen=True)
+class TangentialContact(FrictionSpring):
+    """The tangential contact's mechanics.
+
+    Parameters
+    ----------
+    friction, stiffness : float
+        As :class:`FrictionSpring`.
+    effective_mass : float
+        m* [kg]: 1/m* = beta_t / m + 1/M_t.
+    """
+
+    effective_mass: float
 
     @property
     def omega(self) -> float:

@@ -29,6 +29,7 @@ import numpy as np
 
 from fem_racket.impact.tangential.march import (
     MAX_PHASES,
+    FrictionSpring,
     PhaseSummary,
     TangentialContact,
     _first_crossing,
@@ -46,26 +47,18 @@ FLOOR = 1e-6
 
 
 @dataclass(frozen=True, eq=False)
-class PlaneContact:
+class PlaneContact(FrictionSpring):
     """The tangential contact's mechanics on the face.
 
     Parameters
     ----------
-    friction : float
-        mu >= 0.
-    stiffness : float
-        k_t [N/m], > 0; ``math.inf`` for a rigid tangential contact.
+    friction, stiffness : float
+        As :class:`fem_racket.impact.tangential.march.FrictionSpring`.
     compliance : ndarray, shape (2, 2)
         A [1/kg]: s' = A f (symmetric, positive definite).
     """
 
-    friction: float
-    stiffness: float
     compliance: np.ndarray
-
-    @property
-    def rigid(self) -> bool:
-        return math.isinf(self.stiffness)
 
     def line(self, direction: np.ndarray) -> TangentialContact:
         """The 1-D contact along the unit ``direction``: y when it is (0, 1), else x (A
