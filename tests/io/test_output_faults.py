@@ -197,9 +197,8 @@ def _full_disk_cases(folder: Path) -> list[list[str]]:
 
 @contextlib.contextmanager
 def _tmpfs(tmp_path: Path, size: str):
-    """A tmpfs of ``size`` (mount's ``size=`` form) at ``tmp_path/mnt``, unmounted on exit, or
-    skip where mounting is not permitted (not root, no tmpfs, a container without
-    CAP_SYS_ADMIN)."""
+    """A tmpfs of ``size`` at ``tmp_path/mnt``, or skip where mounting is not permitted (not
+    root, no tmpfs, a container without CAP_SYS_ADMIN)."""
     mnt = tmp_path / "mnt"
     mnt.mkdir()
     res = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(mnt)],
@@ -214,8 +213,7 @@ def _tmpfs(tmp_path: Path, size: str):
 
 @pytest.fixture
 def tiny_tmpfs(tmp_path):
-    """A 64 KiB tmpfs (too small for any of these outputs) holding ``old.txt``, or skip where
-    mounting is not permitted (see ``_tmpfs``)."""
+    """A 64 KiB tmpfs (too small for any of these outputs) with ``old.txt`` (see ``_tmpfs``)."""
     with _tmpfs(tmp_path, "64k") as mnt:
         (mnt / "old.txt").write_text("kept")
         yield mnt
