@@ -7,7 +7,8 @@ A run file has fixed *core* tables, each key with its unit in its name::
     [contact]  kcb_n_m, zeta | clamped_cor      (the compound ball/string law, eqs 1-4)
                law, and that law's parameters (hc_alpha_s_m, k1_n_m_n, ... as in JSON outputs)
     [impact]   position_x_over_l, speed_m_s
-    [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string
+    [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string, edge,
+               stretch
                (any key: the string bed replaces the lumped K_CB; simulate)
     [oblique]  angle_deg, spin_rpm, friction, ball_inertia, ball_radius_m, compliance_ratio,
                clamped, face_angle_deg, path_angle_deg

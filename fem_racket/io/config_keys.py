@@ -204,6 +204,7 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         "head_width_m": Key(_positive("m"), "head_width", "string-bed width across the racket"),
         "string": Key(_choice(tuple(STRINGS)), "string_material", "string material"),
         "edge": Key(_choice(EDGES), "bed_edge", "head ring follows the frame: point or hoop"),
+        "stretch": Key(_boolean, "string_stretch", "strings stretch with the deflection (cvode)"),
     },
     "oblique": {  # any key runs the oblique impact (simulate; sweep and map: its axes)
         "angle_deg": Key(
