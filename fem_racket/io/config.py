@@ -11,7 +11,7 @@ A run file has fixed *core* tables, each key with its unit in its name::
                stretch
                (any key: the string bed replaces the lumped K_CB; simulate)
     [oblique]  angle_deg, spin_rpm, friction, ball_inertia, ball_radius_m, compliance_ratio,
-               clamped, face_angle_deg, path_angle_deg
+               side_angle_deg, side_spin_rpm, clamped, face_angle_deg, path_angle_deg
                (any key: the oblique, spinning ball; simulate, and the axes of sweep and map)
     [solver]   name, separation, basis, modes, rtol, atol, t_max_s
     [output]   out, overwrite

@@ -198,6 +198,8 @@ INCIDENCE_FIELDS = {
     "ball_inertia": "ball_inertia",
     "ball_radius": "radius",
     "compliance_ratio": "compliance_ratio",
+    "side_angle": "side_angle",
+    "side_spin": "side_spin",
 }
 #: What a clamped head takes from the core tables (besides ``[oblique]``).
 CLAMPED_TAKES = ("speed", "ball_mass", "kcb", "zeta", "separation")

@@ -53,3 +53,40 @@ def test_auto_picks_cvode_for_a_stretching_bed():
     assert (a.cor, a.contact_time) == (c.cor, c.contact_time)
     with pytest.raises(InputError, match="modes = 10 is not allowed .* solver 'cvode'"):
         make_solver("auto", modes=10).solve(stretch)  # cvode's own refusal, named
+
+
+SIDE = """
+[oblique]
+angle_deg = 20.0
+spin_rpm = 1500.0
+side_angle_deg = 15.0
+side_spin_rpm = -800.0
+[impact]
+position_x_over_l = 0.7
+offset_m = 0.03
+speed_m_s = 30.0
+[frame]
+elements = 10
+"""
+
+
+def test_side_keys_in_python_are_the_command(capsys, tmp_path):
+    # load_config(f).simulate() = simulate --config f = the options, number for number
+    from fem_racket.outputs.jsonable import json_ready
+
+    path = tmp_path / "run.toml"
+    path.write_text(SIDE)
+    file = _json(capsys, "simulate", "--config", path)
+    cli = _json(capsys, "simulate", "--angle", 20, "--spin", 1500, "--side-angle", 15,
+                "--side-spin", -800, "--position", 0.7, "--offset", 0.03, "--speed", 30,
+                "--elements", 10)  # fmt: skip
+    assert file == cli
+    assert file["side_angle_deg"] == 15.0 and file["side_spin_rpm"] == -800.0
+    result = load_config(path).simulate()
+    assert json.loads(json.dumps(json_ready(result.summary()), default=str)) == file
+    path.write_text(SIDE.replace("side_angle_deg = 15.0\nside_spin_rpm = -800.0\n", ""))
+    plain = load_config(path).simulate().summary()  # the keys change the outcome (not ignored)
+    assert plain["side_spin_out_rpm"] != file["side_spin_out_rpm"]
+    path.write_text(SIDE.replace("15.0", "90.0"))
+    with pytest.raises(InputError, match=r"oblique\.side_angle_deg = 90"):
+        load_config(path)
