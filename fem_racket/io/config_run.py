@@ -255,10 +255,13 @@ def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | Non
     command line), ``peak_force`` and ``chunk_size``. Returns the dataset the command writes
     (without writing it; ``[sweep]``'s run keys :data:`SWEEP_RUN_KEYS` are the command's)."""
     from fem_racket.contact.presets import law_parameters
+    from fem_racket.io.config_unused import refuse_unused
     from fem_racket.studies.grid_values import LAW_PARAMETERS, PARAMETERS
     from fem_racket.studies.sweep import sweep_result
 
     d = cfg.defaults()
+    options = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
+    refuse_unused(cfg, "sweep", {*PARAMETERS, *LAW_PARAMETERS, *options, "mesh", "segments", "law"})
     table = {k.replace("-", "_"): v for k, v in cfg.table("sweep").items()}
     settings = {**d, **{k: v for k, v in table.items() if k not in SWEEP_RUN_KEYS}}
     frame = cfg.frame() if "mesh" in d or "segments" in d else None
@@ -267,7 +270,6 @@ def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | Non
         grid.pop("ei1", None)
         if "mesh" in d:
             grid.pop("elements", None)
-    options = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
     kwargs = {k: settings[k] for k in options if k in settings and not (frame and k == "ei2")}
     laws = {k: v for k, v in law_parameters(settings).items() if k in LAW_PARAMETERS}
     result = sweep_result(
