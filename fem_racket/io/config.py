@@ -107,8 +107,7 @@ class RunConfig:
         return self.source.parent / p
 
     def simulate_kwargs(self) -> dict[str, Any]:
-        """Keyword arguments of :func:`fem_racket.simulate` that the core tables set (no frame,
-        swing or hand: :meth:`simulate` runs the whole file)."""
+        """Keywords of :func:`fem_racket.simulate` the core tables set (no frame, swing, hand)."""
         d = self.defaults()
         names = ("position", "speed", "ball_mass", "kcb", "zeta", "elements", "solver")
         names += ("separation", "basis", "modes", "rtol", "atol", "t_max")
@@ -165,6 +164,19 @@ class RunConfig:
         from fem_racket.io.config_drawings import animate_file
 
         return animate_file(self, out)
+
+    def optimize(self, out: str | os.PathLike | None = None) -> Any:
+        """The optimisation ``fem-racket optimize --config FILE`` runs (files into ``out``,
+        else ``[design] out``, else output/design); see :func:`.config_design.optimize_file`."""
+        from fem_racket.io.config_design import optimize_file
+
+        return optimize_file(self, out)
+
+    def sensitivity(self, out: str | os.PathLike | None = None) -> Any:
+        """The Sobol indices of ``fem-racket sensitivity --config FILE`` (chart in ``out``)."""
+        from fem_racket.io.config_design import sensitivity_file
+
+        return sensitivity_file(self, out)
 
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None

@@ -24,7 +24,7 @@ from fem_racket.validation import InputError, show
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
 
-__all__ = ["HAND_KEYS", "NOT_WITH_HAND", "simulate_file"]
+__all__ = ["HAND_KEYS", "NOT_WITH_HAND", "file_frame", "simulate_file"]
 
 #: ``[hand]`` keys -> :class:`~fem_racket.frame.hand.Hand` fields (``grip`` picks the preset).
 HAND_KEYS = {
@@ -98,10 +98,10 @@ def _output_step(cfg: RunConfig) -> float:
     return float(step)
 
 
-def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
-    from fem_racket.frame.model import FrameModel
+def file_frame(cfg: RunConfig) -> Any:
+    """The frame of ``cfg``'s ``[frame]`` as the commands build it: a Frame or FrameMesh, with
+    its ``[[frame.lead]]`` added last on the meshed frame (as ``--add-mass``)."""
     from fem_racket.frame.segments import PAPER_EI1, standard_frame
-    from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 
     d = cfg.defaults()
     frame = cfg.frame()
@@ -116,7 +116,15 @@ def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
 
         mesh = frame_mesh(frame, elements) if isinstance(frame, Frame) else frame
         frame = add_lead(mesh, d["add_mass"], DEFAULT_HEAD.on_frame(mesh.length))
-    model = FrameModel.build(frame, elements)
+    return frame
+
+
+def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
+    from fem_racket.frame.model import FrameModel
+    from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+
+    d = cfg.defaults()
+    model = FrameModel.build(file_frame(cfg), d.get("elements", 20))
     length = model.mesh.length
     speed = d.get("racket_speed", 0.0)
     reference, pivot = d.get("reference", DEFAULT_REFERENCE), d.get("pivot")
