@@ -15,3 +15,22 @@ def standard_model() -> FrameModel:
 def rigid_model() -> FrameModel:
     """The paper's 'rigid' racket, EI1 = 9999 N m^2, 20 elements."""
     return FrameModel.build(rigid_frame(), 20)
+
+
+@pytest.fixture
+def local_cluster():
+    """Make a local Dask cluster: one single-threaded worker process on 127.0.0.1, no dashboard
+    (a factory, so that a test can make it inside its own ``dask.config.set``); skip without
+    ``distributed``."""
+    distributed = pytest.importorskip("distributed")
+
+    def make():
+        return distributed.LocalCluster(
+            n_workers=1,
+            threads_per_worker=1,
+            processes=True,
+            host="127.0.0.1",
+            dashboard_address=None,
+        )
+
+    return make

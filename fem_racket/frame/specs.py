@@ -196,14 +196,8 @@ def fit_racket(
 
     Parameters
     ----------
-    length : float
-        L [m].
-    mass : float
-        M [kg].
-    balance : float
-        Balance point from the butt [m].
-    swing_weight : float
-        Inertia about the axis 0.10 m from the butt [kg m^2] (kg cm^2 x 1e-4).
+    length, mass, balance, swing_weight : float
+        As :class:`RacketSpec` (SI: m, kg, m, kg m^2).
     f1 : float, optional
         First free-free frequency [Hz]; the paper's EI1 = 146 N m^2 shape when None.
     elements : int

@@ -31,7 +31,7 @@ import numpy as np
 
 from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.point import FIRST_MODES, ModalData
+from fem_racket.impact.point import ModalData, modes_past
 from fem_racket.validation import check_finite
 
 __all__ = [
@@ -137,11 +137,7 @@ def torsion_modal_data(
     if limit is not None or cutoff is None or tors.ndof <= DENSE_LIMIT:
         tm = tors.modes(None if limit is None else min(int(limit), n_flex))
     else:
-        n = min(FIRST_MODES, n_flex)
-        tm = tors.modes(n)
-        while tm.omega.size < n_flex and tm.omega[-1] < cutoff:
-            n = min(2 * n, n_flex)
-            tm = tors.modes(n)
+        tm = modes_past(tors.modes, n_flex, cutoff)
     x = np.asarray(positions, dtype=float) * model.mesh.length
     y = np.asarray(offsets, dtype=float)
     theta = tors.point_matrix(x) @ tm.shapes

@@ -21,7 +21,9 @@ the data here is for the model as given; the engine applies s per case.
 from __future__ import annotations
 
 import weakref
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -102,6 +104,17 @@ def _totals(model: FrameModel, positions: np.ndarray, R: np.ndarray) -> np.ndarr
     return np.array([cache[float(p)] for p in positions])
 
 
+def modes_past(modes: Callable[[int], Any], cap: int, cutoff: float) -> Any:
+    """``modes(n)`` for n = :data:`FIRST_MODES`, doubled (at most ``cap``) until the highest
+    angular frequency ``omega[-1]`` reaches ``cutoff`` [rad/s] or all ``cap`` modes are in."""
+    n = min(FIRST_MODES, cap)
+    found = modes(n)
+    while found.omega.size < cap and found.omega[-1] < cutoff:
+        n = min(2 * n, cap)
+        found = modes(n)
+    return found
+
+
 def frame_modal_data(
     model: FrameModel, positions: np.ndarray, cutoff: float | None, limit: int | None = None
 ) -> ModalData:
@@ -122,14 +135,11 @@ def frame_modal_data(
     positions = np.asarray(positions, dtype=float)
     n_flex = model.fe.ndof - 2
     cap = n_flex if limit is None else min(int(limit), n_flex)
-    if cutoff is None or limit is not None:
-        fm = model.modes(cap)
-    else:
-        n = min(FIRST_MODES, cap)
-        fm = model.modes(n)
-        while fm.omega.size < cap and fm.omega[-1] < cutoff:
-            n = min(2 * n, cap)
-            fm = model.modes(n)
+    fm = (
+        model.modes(cap)
+        if cutoff is None or limit is not None
+        else modes_past(model.modes, cap, cutoff)
+    )
     x = positions * model.mesh.length
     values = model.fe.field_values(x, fm.shapes)
     rigid = (model.fe.field_values(x, fm.rigid) ** 2).sum(axis=1)

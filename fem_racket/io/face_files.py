@@ -8,7 +8,6 @@ power maps (:mod:`fem_racket.io.map_files`).
 
 from __future__ import annotations
 
-import csv
 import json
 import os
 from collections.abc import Mapping, Sequence
@@ -17,17 +16,15 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.io.face_grid import shared_grid, write_cells_csv
 from fem_racket.io.map_files import check_map_outputs
 from fem_racket.outputs import (
     add_png_provenance,
     atomic_output,
-    atomic_outputs,
     provenance,
-    sidecar_path,
 )
 from fem_racket.outputs.labels import LABELS
 from fem_racket.studies.face_map import FaceMap
-from fem_racket.validation import InputError
 
 __all__ = ["face_dataset", "plot_face", "write_face"]
 
@@ -43,19 +40,11 @@ PER_RACKET = (
 )
 
 
-def _grid(maps: Sequence[FaceMap]) -> tuple[np.ndarray, np.ndarray]:
-    x, y = maps[0].positions, maps[0].offsets
-    for m in maps[1:]:
-        if not (np.array_equal(m.positions, x) and np.array_equal(m.offsets, y)):
-            raise InputError("maps = several face grids is not allowed: must share one grid")
-    return x, y
-
-
 def face_dataset(maps: Sequence[FaceMap], parameters: Mapping[str, Any] | None = None) -> Any:
     """The face maps as an :class:`xarray.Dataset` (dims racket, offset, position)."""
     import xarray as xr
 
-    x, y = _grid(maps)
+    x, y = shared_grid(maps)
     dims = ("racket", "offset", "position")
     data = {
         "apparent_cor": (
@@ -161,23 +150,22 @@ def plot_face(
     return path
 
 
-def _write_csv(
-    maps: Sequence[FaceMap], path: Path, overwrite: bool, parameters: Mapping[str, Any] | None
-) -> None:
-    cols = ["racket", "position [x/L]", "offset [m]", "apparent COR [-]", "ball speed out [m/s]"]
-    meta = provenance(parameters)
-    meta["face"] = {m.name: m.summary() for m in maps}
-    with atomic_outputs([path, sidecar_path(path)], overwrite=overwrite) as (tmp, side):
-        with open(tmp, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(cols)
-            for m in maps:
-                for j, y in enumerate(m.offsets):
-                    for i, x in enumerate(m.positions):
-                        e, v = m.apparent_cor[j, i], m.ball_speed_out[j, i]
-                        if np.isfinite(e):
-                            w.writerow([m.name, *(repr(float(a)) for a in (x, y, e, v))])
-        side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
+#: The CSV's columns: one row per face point with a result.
+_CSV_COLUMNS = (
+    "racket",
+    "position [x/L]",
+    "offset [m]",
+    "apparent COR [-]",
+    "ball speed out [m/s]",
+)
+
+
+def _cell_row(m: FaceMap, j: int, i: int) -> list[Any] | None:
+    x, y = m.positions[i], m.offsets[j]
+    e, v = m.apparent_cor[j, i], m.ball_speed_out[j, i]
+    if not np.isfinite(e):
+        return None
+    return [m.name, *(repr(float(a)) for a in (x, y, e, v))]
 
 
 def write_face(
@@ -194,7 +182,15 @@ def write_face(
     if suffix == ".png":
         return plot_face(maps, path, overwrite=overwrite, parameters=parameters)
     if suffix == ".csv":
-        _write_csv(maps, path, overwrite, parameters)
+        write_cells_csv(
+            maps,
+            path,
+            _CSV_COLUMNS,
+            _cell_row,
+            summary_key="face",
+            parameters=parameters,
+            overwrite=overwrite,
+        )
         return path
     ds = face_dataset(maps, parameters)
     with atomic_output(path, overwrite=overwrite) as tmp:

@@ -8,7 +8,6 @@ rackets must share one grid. Every file is written atomically with its provenanc
 
 from __future__ import annotations
 
-import csv
 import json
 import os
 from collections.abc import Mapping, Sequence
@@ -17,15 +16,13 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.io.face_grid import shared_grid, write_cells_csv
 from fem_racket.outputs import (
     add_png_provenance,
     atomic_output,
-    atomic_outputs,
     provenance,
-    sidecar_path,
 )
 from fem_racket.studies.spin_map import SPIN_FIELDS, SpinMap
-from fem_racket.validation import InputError
 
 __all__ = ["write_spin_map"]
 
@@ -33,18 +30,10 @@ __all__ = ["write_spin_map"]
 DRAWN = ("spin_out_rpm", "angle_out_deg")
 
 
-def _grid(maps: Sequence[SpinMap]) -> tuple[np.ndarray, np.ndarray]:
-    x, y = maps[0].positions, maps[0].offsets
-    for m in maps[1:]:
-        if not (np.array_equal(m.positions, x) and np.array_equal(m.offsets, y)):
-            raise InputError("maps = several face grids is not allowed: must share one grid")
-    return x, y
-
-
 def _netcdf(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
     from fem_racket.outputs.netcdf import write_netcdf
 
-    x, y = _grid(maps)
+    x, y = shared_grid(maps)
     dims = ("racket", "offset", "position")
     variables: dict[str, Any] = {
         key: (dims, np.stack([m.fields[key] for m in maps]), {"units": u, "long_name": text})
@@ -96,24 +85,20 @@ def _png(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | No
         add_png_provenance(tmp, provenance(parameters))
 
 
+def _cell_row(m: SpinMap, j: int, i: int) -> list[Any] | None:
+    vals = [m.fields[k][j, i] for k in SPIN_FIELDS]
+    if not np.isfinite(vals[0]):
+        return None
+    x, y = m.positions[i], m.offsets[j]
+    return [m.name, *(repr(float(a)) for a in (x, y, *vals)), m.regimes[j, i]]
+
+
 def _csv(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
     cols = ["racket", "position [x/L]", "offset [m]"]
     cols += ["spin out [rpm]", "angle out [deg]", "ball speed out [m/s]", "contact regime [-]"]
-    meta = provenance(parameters)
-    meta["spin_map"] = {m.name: m.summary() for m in maps}
-    with atomic_outputs([path, sidecar_path(path)], overwrite=True) as (tmp, side):
-        with open(tmp, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(cols)
-            for m in maps:
-                for j, y in enumerate(m.offsets):
-                    for i, x in enumerate(m.positions):
-                        vals = [m.fields[k][j, i] for k in SPIN_FIELDS]
-                        if np.isfinite(vals[0]):
-                            w.writerow(
-                                [m.name, *(repr(float(a)) for a in (x, y, *vals)), m.regimes[j, i]]
-                            )
-        side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
+    write_cells_csv(
+        maps, path, cols, _cell_row, summary_key="spin_map", parameters=parameters, overwrite=True
+    )
 
 
 def write_spin_map(

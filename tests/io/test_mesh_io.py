@@ -1,12 +1,12 @@
 """Mesh files: round trip, validation of bad meshes, graded meshes, --mesh on the CLI."""
 
-import importlib.util
 import json
 from pathlib import Path
 
 import meshio
 import numpy as np
 import pytest
+from script_loader import load_script
 
 from fem_racket import FrameMesh, FrameModel, frame_mesh, read_mesh, standard_frame, write_mesh
 from fem_racket.cli import main
@@ -16,13 +16,6 @@ from fem_racket.validation import InputError
 
 ROOT = Path(__file__).resolve().parents[2]
 MESHES = ROOT / "meshes"
-
-
-def _script(name):
-    spec = importlib.util.spec_from_file_location(name, ROOT / "scripts" / f"{name}.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
 
 
 def _write_raw(path, x, cells, cell_data=None, y=None):
@@ -189,7 +182,7 @@ def test_graded_mesh_ratio_and_bad_grading():
 
 
 def test_committed_meshes_equal_the_script_output():
-    mod = _script("make_meshes")
+    mod = load_script("make_meshes")
     built = mod.build_meshes()
     assert sorted(built) == sorted(p.name for p in MESHES.glob("*.vtu"))
     for name, mesh in built.items():

@@ -10,6 +10,7 @@ without mounting by an ``OSError(ENOSPC)`` injected at the write.
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import subprocess
@@ -194,21 +195,28 @@ def _full_disk_cases(folder: Path) -> list[list[str]]:
     ]  # fmt: skip
 
 
-@pytest.fixture
-def tiny_tmpfs(tmp_path):
-    """A 64 KiB tmpfs (too small for any of these outputs), or skip where mounting is not
-    permitted (not root, no tmpfs, a container without CAP_SYS_ADMIN)."""
+@contextlib.contextmanager
+def _tmpfs(tmp_path: Path, size: str):
+    """A tmpfs of ``size`` at ``tmp_path/mnt``, or skip where mounting is not permitted (not
+    root, no tmpfs, a container without CAP_SYS_ADMIN)."""
     mnt = tmp_path / "mnt"
     mnt.mkdir()
-    res = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(mnt)],
+    res = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(mnt)],
                          capture_output=True, text=True)  # fmt: skip
     if res.returncode != 0:
         pytest.skip(f"cannot mount a tmpfs here: {res.stderr.strip() or res.returncode}")
     try:
-        (mnt / "old.txt").write_text("kept")
         yield mnt
     finally:
         subprocess.run(["umount", str(mnt)], check=True)
+
+
+@pytest.fixture
+def tiny_tmpfs(tmp_path):
+    """A 64 KiB tmpfs (too small for any of these outputs) with ``old.txt`` (see ``_tmpfs``)."""
+    with _tmpfs(tmp_path, "64k") as mnt:
+        (mnt / "old.txt").write_text("kept")
+        yield mnt
 
 
 @pytest.mark.parametrize(
@@ -251,17 +259,9 @@ def test_full_disk_without_mounting(capsys, tmp_path, monkeypatch):
 # -- round 3 (issue 22.5): every command's outputs as one set, faults named as what they are ---
 @pytest.fixture
 def small_tmpfs(tmp_path):
-    """A 128 KiB tmpfs, or skip where mounting is not permitted (see ``tiny_tmpfs``)."""
-    mnt = tmp_path / "mnt"
-    mnt.mkdir()
-    res = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=128k", "tmpfs", str(mnt)],
-                         capture_output=True, text=True)  # fmt: skip
-    if res.returncode != 0:
-        pytest.skip(f"cannot mount a tmpfs here: {res.stderr.strip() or res.returncode}")
-    try:
+    """A 128 KiB tmpfs, or skip where mounting is not permitted (see ``_tmpfs``)."""
+    with _tmpfs(tmp_path, "128k") as mnt:
         yield mnt
-    finally:
-        subprocess.run(["umount", str(mnt)], check=True)
 
 
 def _fill(folder: Path, leave: int) -> None:

@@ -1,23 +1,15 @@
 """Every script in scripts/ runs (figure scripts at reduced resolution with --quick)."""
 
 import csv
-import importlib.util
 import json
 import re
 from pathlib import Path
 
 import pytest
+from script_loader import SCRIPTS, load_script
 
-SCRIPTS = Path(__file__).resolve().parents[2] / "scripts"
 FIGURE_SCRIPTS = sorted(SCRIPTS.glob("fig*.py"))
 UNIT = re.compile(r".+ \[[^\]]*\]$")  # "name [unit]"
-
-
-def load(path: Path):
-    spec = importlib.util.spec_from_file_location(path.stem, path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_there_is_a_script_per_paper_figure():
@@ -28,7 +20,7 @@ def test_there_is_a_script_per_paper_figure():
 
 @pytest.mark.parametrize("path", FIGURE_SCRIPTS, ids=lambda p: p.stem)
 def test_figure_script_writes_data_and_png(path, tmp_path, capsys):
-    files = load(path).main(["--out", str(tmp_path), "--quick"])
+    files = load_script(path.stem).main(["--out", str(tmp_path), "--quick"])
     out = capsys.readouterr().out
     assert all(str(p) in out for p in files)
     assert {p.name for p in files} == {p.name for p in tmp_path.iterdir()}
@@ -59,13 +51,13 @@ def test_figure_script_writes_data_and_png(path, tmp_path, capsys):
 
 
 def test_bench_script_runs(capsys):
-    rows = load(SCRIPTS / "bench_impact.py").main(["--quick", "--repeat", "1"])
+    rows = load_script("bench_impact").main(["--quick", "--repeat", "1"])
     assert rows and all(r["wall_s"] > 0 for r in rows)
     assert "COR" in capsys.readouterr().out
 
 
 def test_bench_map_script_runs(capsys):
-    rows = load(SCRIPTS / "bench_map.py").main(["--quick"])
+    rows = load_script("bench_map").main(["--quick"])
     assert rows and all(r["wall_s"] > 0 for r in rows)
     assert "racket_map" in capsys.readouterr().out
 
@@ -73,7 +65,7 @@ def test_bench_map_script_runs(capsys):
 def test_bench_cli_script_runs(capsys):
     # start-up of the command line (issue 13): wall times are printed, not asserted (a loaded
     # machine); tests/cli/test_startup.py checks what each command imports
-    rows = load(SCRIPTS / "bench_cli.py").main(["--quick"])
+    rows = load_script("bench_cli").main(["--quick"])
     assert [r["command"] for r in rows] == ["--help", "simulate"]
     assert all(r["wall_s"] >= r["fastest_s"] > 0 and r["imports_s"] for r in rows)
     assert "numpy" in rows[1]["imports_s"] and "skfem" not in rows[1]["imports_s"]
@@ -81,7 +73,7 @@ def test_bench_cli_script_runs(capsys):
 
 
 def test_figure_script_refuses_to_overwrite(tmp_path, capsys):
-    main = load(SCRIPTS / "fig04_frame_modes.py").main
+    main = load_script("fig04_frame_modes").main
     first = main(["--out", str(tmp_path)])
     before = {p: p.stat().st_mtime_ns for p in first}
     with pytest.raises(SystemExit) as exc:
@@ -105,7 +97,7 @@ def test_every_script_is_run_by_a_test():
 
 def test_bench_docs_script_runs(capsys):
     # The README's stated run times are measured by scripts/bench_docs.py (here its quick set).
-    rows = load(SCRIPTS / "bench_docs.py").main(["--quick"])
+    rows = load_script("bench_docs").main(["--quick"])
     assert [r["command"] for r in rows] == ["fem-racket --help", "fem-racket simulate",
                                             "fem-racket config --example"]  # fmt: skip
     assert all(0 < s < 120 for r in rows for s in r["seconds"])
@@ -115,7 +107,7 @@ def test_bench_docs_script_runs(capsys):
 def test_bench_kernels_script_runs(capsys):
     # issue 27's benchmark, its accuracy part (one random law per family against CVODE): the
     # general integrator within its default COR tolerance 1e-6
-    rows = load(SCRIPTS / "bench_kernels.py").main(["--only-accuracy", "--accuracy", "1"])
+    rows = load_script("bench_kernels").main(["--only-accuracy", "--accuracy", "1"])
     assert [r[0] for r in rows] == ["hunt-crossley", "hysteretic", "series"]
     assert all(r[1] <= 1e-6 for r in rows)
     assert "worst |dCOR| vs CVODE" in capsys.readouterr().out
@@ -124,7 +116,7 @@ def test_bench_kernels_script_runs(capsys):
 def test_bench_laws_script_runs(capsys):
     # the general integrator's benchmark (issue 15) in its quick variant: every law within the
     # 1e-5 COR target against CVODE (DESIGN section 9)
-    rows = load(SCRIPTS / "bench_laws.py").main(["--quick"])
+    rows = load_script("bench_laws").main(["--quick"])
     assert {r["law"] for r in rows} >= {"kawazoe-1997-nonlinear", "series"}
     assert all(r["dcor"] <= 1e-5 for r in rows)
     assert "CVODE" in capsys.readouterr().out
@@ -148,7 +140,7 @@ def test_tour_runs_as_a_script(tmp_path, capsys, monkeypatch):
 def test_bench_held_script_runs(capsys):
     # the held racket's exact path against CVODE: every mode agrees to round-off (measured
     # ~1e-11 in COR), the default cut-off to its COR tolerance 1e-6 (x1.5, reduction.py)
-    rows = load(SCRIPTS / "bench_held.py").main(["--quick"])
+    rows = load_script("bench_held").main(["--quick"])
     every, cut = rows[1], rows[2]
     assert every["cor_diff"] < 1e-9 and every["peak_grip_rel_diff"] < 1e-6
     assert cut["cor_diff"] < 1.5e-6 and cut["speedup"] > 1.0

@@ -53,7 +53,7 @@ def test_pool_workers_run_one_blas_thread(monkeypatch):
 
 
 @needs_two_cores
-def test_dask_tasks_run_one_blas_thread(monkeypatch):
+def test_dask_tasks_run_one_blas_thread(monkeypatch, local_cluster):
     distributed = pytest.importorskip("distributed")
     import dask
 
@@ -63,13 +63,7 @@ def test_dask_tasks_run_one_blas_thread(monkeypatch):
     for name, value in two.items():
         monkeypatch.setenv(name, str(value))
     with dask.config.set({"distributed.nanny.pre-spawn-environ": two}):
-        with distributed.LocalCluster(
-            n_workers=1,
-            threads_per_worker=1,
-            processes=True,
-            host="127.0.0.1",
-            dashboard_address=None,
-        ) as cluster:
+        with local_cluster() as cluster:
             with distributed.Client(cluster) as client:
                 # Without the pin the worker would use both threads: the test can fail.
                 before = client.submit(_blas_threads, np.arange(1), pure=False).result()

@@ -1,21 +1,14 @@
 """The nonlinear power map's jump near 0.963 L is a second contact (scripts/map_jump.py, README
 "Power maps and sweet spots"): located, both sides pinned, CVODE agreeing."""
 
-import importlib.util
-from pathlib import Path
-
 import numpy as np
 import pytest
-
-SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "map_jump.py"
+from script_loader import load_script
 
 
 @pytest.fixture(scope="module")
 def jump():
-    spec = importlib.util.spec_from_file_location("map_jump", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load_script("map_jump")
 
 
 def test_the_jump_lies_at_0_96267_L(jump):

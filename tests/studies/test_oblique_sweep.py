@@ -1,17 +1,13 @@
 """Oblique sweeps over angle, spin and friction (fem_racket.studies.oblique_sweep) and the README
 figure's script (scripts/oblique_spin.py)."""
 
-import importlib.util
-from pathlib import Path
-
 import pytest
+from script_loader import load_script
 
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.simulate_oblique import simulate_oblique
 from fem_racket.studies.oblique_sweep import oblique_sweep
 from fem_racket.validation import InputError
-
-SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "oblique_spin.py"
 
 
 @pytest.mark.parametrize("clamped", [True, False])
@@ -43,10 +39,7 @@ def test_bad_axes_are_refused():
 
 
 def test_the_readme_figure_script_quick(tmp_path):
-    spec = importlib.util.spec_from_file_location("oblique_spin", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    path = module.main(["--quick", "--out", str(tmp_path / "spin.png")])
+    path = load_script("oblique_spin").main(["--quick", "--out", str(tmp_path / "spin.png")])
     assert path.is_file() and path.stat().st_size > 10_000
 
 

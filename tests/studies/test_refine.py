@@ -1,12 +1,12 @@
 """Mesh-refinement study: observed order, COR convergence, CLI and script."""
 
-import importlib.util
 import json
 import time
 from pathlib import Path
 
 import numpy as np
 import pytest
+from script_loader import load_script
 
 from fem_racket import FrameModel, frame_mesh, simulate, standard_frame
 from fem_racket.cli import main
@@ -134,9 +134,7 @@ def test_cli_refine_table_and_mesh(capsys):
 
 
 def test_convergence_script_quick(tmp_path):
-    spec = importlib.util.spec_from_file_location("convergence", ROOT / "scripts/convergence.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
+    mod = load_script("convergence")
     out = mod.main(["--quick", "--out", str(tmp_path)])
     assert (tmp_path / "convergence.csv").is_file() and (tmp_path / "convergence.png").is_file()
     # 10 -> 20 elements is nearly asymptotic: orders 3.8-4.0 (measured on both families).
@@ -146,9 +144,7 @@ def test_convergence_script_quick(tmp_path):
 @pytest.mark.slow
 def test_default_study_and_large_mesh_timing(tmp_path):
     # The default study (5-320 elements, both families) in well under a minute, clean order.
-    spec = importlib.util.spec_from_file_location("convergence", ROOT / "scripts/convergence.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
+    mod = load_script("convergence")
     t0 = time.perf_counter()
     out = mod.main(["--timing", "--out", str(tmp_path)])
     assert time.perf_counter() - t0 < 60.0

@@ -1,19 +1,13 @@
 """The tension study: its script writes a table and a figure; the physics runs the right way."""
 
 import csv
-import importlib.util
-from pathlib import Path
 
 import numpy as np
-
-SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "strings_tension.py"
+from script_loader import load_script
 
 
 def test_script_and_trends(tmp_path, capsys):
-    spec = importlib.util.spec_from_file_location("strings_tension", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    files = module.main(["--out", str(tmp_path), "--quick"])
+    files = load_script("strings_tension").main(["--out", str(tmp_path), "--quick"])
     out = capsys.readouterr().out
     assert all(str(p) in out for p in files) and len(files) == 3
     assert files[2].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

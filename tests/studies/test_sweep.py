@@ -178,17 +178,10 @@ def test_process_pool_equals_serial():
     xr.testing.assert_equal(pool[RESULTS], serial[RESULTS])
 
 
-def test_dask_cluster_equals_serial():
-    distributed = pytest.importorskip("distributed")
+def test_dask_cluster_equals_serial(local_cluster):
     grid = {"position": [0.6, 0.8, 0.95], "ei1": "50:3000:4:log", "speed": [20.0, 40.0]}
     serial = sweep(**grid, backend="serial", progress=False)
-    with distributed.LocalCluster(
-        n_workers=1,
-        threads_per_worker=1,
-        processes=True,
-        host="127.0.0.1",
-        dashboard_address=None,
-    ) as cluster:
+    with local_cluster() as cluster:
         assert cluster.scheduler_address.startswith("tcp://127.0.0.1:")
         dask = sweep(**grid, scheduler=cluster.scheduler_address, chunk_size=5, progress=False)
     xr.testing.assert_equal(dask[RESULTS], serial[RESULTS])

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from script_loader import load_script
 
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.frame.model import FrameModel
@@ -195,14 +196,7 @@ def test_a_swing_under_a_law_with_cvode_cases_agrees_with_the_batch():
 
 
 def test_bench_law_studies_script_runs(capsys):
-    import importlib.util
-    from pathlib import Path
-
-    path = Path(__file__).resolve().parents[2] / "scripts" / "bench_law_studies.py"
-    spec = importlib.util.spec_from_file_location("bench_law_studies", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    rows = module.main(["--quick"])
+    rows = load_script("bench_law_studies").main(["--quick"])
     assert all(r["wall_s"] > 0 for r in rows if "wall_s" in r)
     # batched sweep and one simulate per case: the same impacts within the integrator's error
     assert rows[-1]["value"] <= GENERAL_COR

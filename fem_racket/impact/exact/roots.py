@@ -33,6 +33,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from fem_racket.impact.exact.closed_form import reduced_matrix
+
 __all__ = ["SUM_RULE_TOL", "RootSet", "coupled_roots", "eigen_roots"]
 
 #: Relative tolerance of the sum rules that check every case's residues.
@@ -159,7 +161,8 @@ def _sum_rules(lam: np.ndarray, res: np.ndarray, mult: float) -> np.ndarray:
 
 
 def eigen_roots(d: np.ndarray, v: np.ndarray, k: float, c: float) -> tuple[np.ndarray, np.ndarray]:
-    """Every root and delta-residue of one case from the reduced state matrix (eigenvectors).
+    """Every root and delta-residue of one case from the eigenvectors of the reduced state matrix
+    (:func:`fem_racket.impact.exact.closed_form.reduced_matrix`).
 
     State z = [delta, eta_f, delta', eta_f'] with delta'' = -mu F + sum a_f w_f^2 eta_f,
     eta_f'' = -w_f^2 eta_f + a_f F, F = k delta + c delta', mu = sum v (signs of a_f do not
@@ -168,13 +171,7 @@ def eigen_roots(d: np.ndarray, v: np.ndarray, k: float, c: float) -> tuple[np.nd
     af, w2 = np.sqrt(v[1:]), d[1:]
     m = af.size + 1
     mu = float(v.sum())
-    A = np.zeros((2 * m, 2 * m))
-    A[:m, m:] = np.eye(m)
-    A[m, 0], A[m, m] = -mu * k, -mu * c
-    A[m, 1:m] = af * w2
-    A[m + 1 :, 0], A[m + 1 :, m] = af * k, af * c
-    A[m + 1 :, 1:m] = -np.diag(w2)
-    lam, V = np.linalg.eig(A)
+    lam, V = np.linalg.eig(reduced_matrix(af, w2, mu, k, c))
     z0 = np.zeros(2 * m)
     z0[m] = 1.0
     return lam, V[0] * np.linalg.solve(V, z0)

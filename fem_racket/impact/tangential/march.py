@@ -39,9 +39,10 @@ __all__ = ["Phase", "TangentialContact", "TangentialSolution", "march"]
 MAX_PHASES = 200
 
 
-@dataclass(frozen=True)
-class TangentialContact:
-    """The tangential contact's mechanics.
+@dataclass(frozen=True, eq=False)
+class FrictionSpring:
+    """Coulomb friction and the tangential spring: what the scalar contact
+    (:class:`TangentialContact`) and the vector one (``plane_ode.PlaneContact``) share.
 
     Parameters
     ----------
@@ -49,17 +50,29 @@ class TangentialContact:
         mu >= 0.
     stiffness : float
         k_t [N/m], > 0; ``math.inf`` for a rigid tangential contact.
-    effective_mass : float
-        m* [kg]: 1/m* = beta_t / m + 1/M_t.
     """
 
     friction: float
     stiffness: float
-    effective_mass: float
 
     @property
     def rigid(self) -> bool:
         return math.isinf(self.stiffness)
+
+
+@dataclass(frozen=True)
+class TangentialContact(FrictionSpring):
+    """The tangential contact's mechanics.
+
+    Parameters
+    ----------
+    friction, stiffness : float
+        As :class:`FrictionSpring`.
+    effective_mass : float
+        m* [kg]: 1/m* = beta_t / m + 1/M_t.
+    """
+
+    effective_mass: float
 
     @property
     def omega(self) -> float:
@@ -97,8 +110,32 @@ def _slide(c, p: Phase, normal: NormalHistory, t: np.ndarray) -> tuple[np.ndarra
     return s, -mu * np.maximum(normal.force(t), 0.0)
 
 
+class PhaseSummary:
+    """The regime and grip intervals of a marched solution with ``contact`` (``friction``),
+    ``normal`` (``end``) and ``phases`` (``kind``, ``start``, ``end``): shared by the scalar and
+    the vector march."""
+
+    @property
+    def regime(self) -> str:
+        """``slide`` when the ball slides throughout, else the phases joined by ``-`` (e.g.
+        ``slide-grip-slide``)."""
+        if self.contact.friction == 0.0:
+            return "slide"
+        # a phase of zero length (a start exactly on a regime boundary) is not a regime
+        short = 1e-9 * self.normal.end
+        kinds = [p.kind for p in self.phases if p.end - p.start > short] or [self.phases[0].kind]
+        return "-".join(k for i, k in enumerate(kinds) if i == 0 or kinds[i - 1] != k)
+
+    @property
+    def grip_intervals(self) -> list[tuple[float, float]]:
+        """(start, end) of each grip [s]."""
+        if self.contact.friction == 0.0:
+            return []
+        return [(p.start, p.end) for p in self.phases if p.kind == "grip"]
+
+
 @dataclass(frozen=True)
-class TangentialSolution:
+class TangentialSolution(PhaseSummary):
     """The marched tangential contact: its phases, and the slip velocity and force at any time."""
 
     contact: TangentialContact
@@ -130,24 +167,6 @@ class TangentialSolution:
     def impulse(self) -> float:
         """Tangential impulse on the ball int F_t dt [N s] = m* (s_end - s_0)."""
         return self.contact.effective_mass * (self.final_slip - self.phases[0].slip)
-
-    @property
-    def regime(self) -> str:
-        """``slide`` when the ball slides throughout, else the phases joined by ``-`` (e.g.
-        ``slide-grip-slide``)."""
-        if self.contact.friction == 0.0:
-            return "slide"
-        # a phase of zero length (a start exactly on a regime boundary) is not a regime
-        short = 1e-9 * self.normal.end
-        kinds = [p.kind for p in self.phases if p.end - p.start > short] or [self.phases[0].kind]
-        return "-".join(k for i, k in enumerate(kinds) if i == 0 or kinds[i - 1] != k)
-
-    @property
-    def grip_intervals(self) -> list[tuple[float, float]]:
-        """(start, end) of each grip [s]."""
-        if self.contact.friction == 0.0:
-            return []
-        return [(p.start, p.end) for p in self.phases if p.kind == "grip"]
 
     @property
     def reversal_times(self) -> list[float]:

@@ -27,7 +27,13 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.tangential.march import MAX_PHASES, TangentialContact, _first_crossing
+from fem_racket.impact.tangential.march import (
+    MAX_PHASES,
+    FrictionSpring,
+    PhaseSummary,
+    TangentialContact,
+    _first_crossing,
+)
 from fem_racket.impact.tangential.normal import NormalHistory
 from fem_racket.impact.tangential.scalar import scalar_force
 
@@ -41,26 +47,18 @@ FLOOR = 1e-6
 
 
 @dataclass(frozen=True, eq=False)
-class PlaneContact:
+class PlaneContact(FrictionSpring):
     """The tangential contact's mechanics on the face.
 
     Parameters
     ----------
-    friction : float
-        mu >= 0.
-    stiffness : float
-        k_t [N/m], > 0; ``math.inf`` for a rigid tangential contact.
+    friction, stiffness : float
+        As :class:`fem_racket.impact.tangential.march.FrictionSpring`.
     compliance : ndarray, shape (2, 2)
         A [1/kg]: s' = A f (symmetric, positive definite).
     """
 
-    friction: float
-    stiffness: float
     compliance: np.ndarray
-
-    @property
-    def rigid(self) -> bool:
-        return math.isinf(self.stiffness)
 
     def line(self, direction: np.ndarray) -> TangentialContact:
         """The 1-D contact along the unit ``direction``: y when it is (0, 1), else x (A
@@ -113,7 +111,7 @@ def _slide(c: PlaneContact, p: PlanePhase, normal, t) -> tuple[np.ndarray, np.nd
 
 
 @dataclass(frozen=True, eq=False)
-class PlaneSolution:
+class PlaneSolution(PhaseSummary):
     """The marched vector contact: its phases, and the slip and force at any time."""
 
     contact: PlaneContact
@@ -148,21 +146,6 @@ class PlaneSolution:
     def impulse(self) -> np.ndarray:
         """Tangential impulse on the ball [N s] = A^-1 (s_end - s_0)."""
         return np.linalg.solve(self.contact.compliance, self.final_slip - self.slip_in)
-
-    @property
-    def regime(self) -> str:
-        """As :attr:`fem_racket.impact.tangential.march.TangentialSolution.regime`."""
-        if self.contact.friction == 0.0:
-            return "slide"
-        short = 1e-9 * self.normal.end
-        kinds = [p.kind for p in self.phases if p.end - p.start > short] or [self.phases[0].kind]
-        return "-".join(k for i, k in enumerate(kinds) if i == 0 or kinds[i - 1] != k)
-
-    @property
-    def grip_intervals(self) -> list[tuple[float, float]]:
-        if self.contact.friction == 0.0:
-            return []
-        return [(p.start, p.end) for p in self.phases if p.kind == "grip"]
 
     @property
     def reversal_times(self) -> list[float]:

@@ -23,7 +23,7 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, standard_frame
 from fem_racket.impact.simulate import ImpactResult, simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
-from fem_racket.paper.figures.law_runs import law_title
+from fem_racket.paper.figures.law_runs import law_figure
 
 __all__ = ["FIG_05", "FIG_06", "FIG_07", "impact_behaviour"]
 
@@ -132,11 +132,9 @@ def impact_behaviour(
         "standard minus rigid deflection [m]": diff.ravel(),
     }
     values["max_difference_m"] = float(np.max(np.abs(diff)))
-    name = "" if law is None else law_title(law)
-    return FigureData(
+    return law_figure(
         f"fig{fig:02d}_impact_{round(position * 100):d}L",
-        f"Fig. {fig}: impact behaviour at {position:.2f} L, 20 m/s"
-        + (f", {name} law" if name else ""),
+        f"Fig. {fig}: impact behaviour at {position:.2f} L, 20 m/s",
         {
             "histories": {k: np.concatenate(v) for k, v in hist.items()},
             "shapes": {k: np.concatenate(v) for k, v in shapes.items()},
@@ -144,7 +142,7 @@ def impact_behaviour(
             "difference": difference,
         },
         values,
-        law=name,
+        law,
     )
 
 

@@ -32,6 +32,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.law_impact import receptance
+from fem_racket.paper.figures.data import FigureData
 
 __all__ = [
     "equivalent_kcb",
@@ -46,6 +47,20 @@ def law_title(law: ContactLaw) -> str:
     from fem_racket.contact.presets import PRESETS
 
     return next((name for name, p in PRESETS.items() if p is law), law.name)
+
+
+def law_figure(
+    name: str,
+    title: str,
+    tables: dict[str, dict[str, np.ndarray]],
+    values: dict[str, float],
+    law: ContactLaw | None,
+) -> FigureData:
+    """A figure drawn with ``law``: its name after the ``title`` (``", NAME law"``) and in
+    :attr:`FigureData.law`; None: the paper's linear K_CB, the title as given."""
+    if law is None:
+        return FigureData(name, title, tables, values)
+    return FigureData(name, f"{title}, {law_title(law)} law", tables, values, law=law_title(law))
 
 
 def free_impacts(

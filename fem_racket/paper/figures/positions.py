@@ -24,7 +24,7 @@ from fem_racket.impact.simulate import simulate
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (
     free_impacts,
-    law_title,
+    law_figure,
     rigid_contact_time,
 )
 
@@ -99,10 +99,6 @@ def position_sweep(
     return out, refs
 
 
-def _title(text: str, law: ContactLaw | None) -> str:
-    return text if law is None else f"{text}, {law_title(law)} law"
-
-
 def cor_position(quick: bool = False, law: ContactLaw | None = None) -> FigureData:
     """COR against impact position (Fig 8)."""
     data, refs = position_sweep(quick, law)
@@ -141,13 +137,8 @@ def cor_position(quick: bool = False, law: ContactLaw | None = None) -> FigureDa
         for key in ("vibration_loss_undamped_argmin_x_over_l", "eq16_max_excess",
                     "eq12_vs_rigid_fe_max_diff"):  # fmt: skip
             values[key] = nan
-    return FigureData(
-        "fig08_cor_position",
-        _title("Fig. 8: coefficient of restitution against impact position, 20 m/s", law),
-        {"cor": cols},
-        values,
-        law="" if law is None else law_title(law),
-    )
+    title = "Fig. 8: coefficient of restitution against impact position, 20 m/s"
+    return law_figure("fig08_cor_position", title, {"cor": cols}, values, law)
 
 
 def contact_time_position(quick: bool = False, law: ContactLaw | None = None) -> FigureData:
@@ -191,13 +182,8 @@ def contact_time_position(quick: bool = False, law: ContactLaw | None = None) ->
         for key in ("tc_damping_max_rel_diff", "tc_fe_vs_eq11_max_rel_diff",
                     "tc_rigid_undamped_vs_eq11_max_rel_diff"):  # fmt: skip
             values[key] = nan
-    return FigureData(
-        "fig09_contact_time_position",
-        _title("Fig. 9: contact time against impact position, 20 m/s", law),
-        {"contact_time": cols},
-        values,
-        law="" if law is None else law_title(law),
-    )
+    title = "Fig. 9: contact time against impact position, 20 m/s"
+    return law_figure("fig09_contact_time_position", title, {"contact_time": cols}, values, law)
 
 
 FIG_08 = FigureSpec("fig08_cor_position", ("cor",), cor_position, "cor_position")

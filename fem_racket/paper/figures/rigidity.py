@@ -28,7 +28,7 @@ from fem_racket.impact.exact.engine import impacts
 from fem_racket.paper.figures.data import FigureData, FigureSpec
 from fem_racket.paper.figures.law_runs import (
     free_impacts,
-    law_title,
+    law_figure,
 )
 from fem_racket.studies.calibrate import clamped_impacts
 
@@ -133,13 +133,8 @@ def cor_rigidity(quick: bool = False, law: ContactLaw | None = None) -> FigureDa
         values["kcb_ratio_40_20"] = float((tc[0] / tc[1]) ** 2)
     values["ei_ratio_step"] = float(ei[1] / ei[0])
     title = "Fig. 13: coefficient of restitution against frame rigidity EI1 (EI2 = 0.88 EI1)"
-    return FigureData(
-        "fig13_cor_rigidity",
-        title if law is None else f"{title}, {law_title(law)} law",
-        {"cor": {k: np.concatenate(v) for k, v in cols.items()}},
-        values,
-        law="" if law is None else law_title(law),
-    )
+    tables = {"cor": {k: np.concatenate(v) for k, v in cols.items()}}
+    return law_figure("fig13_cor_rigidity", title, tables, values, law)
 
 
 FIG_13 = FigureSpec("fig13_cor_rigidity", ("cor",), cor_rigidity, "cor_rigidity")

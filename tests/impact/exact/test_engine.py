@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from script_loader import load_script
 from strategies import frames
 
 from fem_racket import FrameModel, InputError, LinearContact
@@ -182,19 +183,8 @@ def test_tolerance_zero_means_every_mode(standard_model):
     assert math.isfinite(float(a.cor))
 
 
-def _script(name: str):
-    import importlib.util
-    from pathlib import Path
-
-    path = Path(__file__).resolve().parents[3] / "scripts" / f"{name}.py"
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 def test_calibrate_engine_script_quick(capsys):
-    table = _script("calibrate_engine").main(["--quick"])
+    table = load_script("calibrate_engine").main(["--quick"])
     out = capsys.readouterr().out
     assert "|dCOR| displ" in out and "|dCOR| force" in out
     # Two frames cannot calibrate, but even they must need a finite beta for 1e-3.
@@ -202,7 +192,7 @@ def test_calibrate_engine_script_quick(capsys):
 
 
 def test_bench_engine_script_quick(capsys):
-    rows = _script("bench_engine").main(["--quick"])
+    rows = load_script("bench_engine").main(["--quick"])
     out = capsys.readouterr().out
     assert "per-case exact" in out and "engine 1e-06" in out and "fem-racket simulate" in out
     engine = [r for r in rows if r.get("path", "").startswith("engine")]

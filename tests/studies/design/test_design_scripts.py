@@ -1,28 +1,20 @@
 """The design commands and scripts: fem-racket optimize / sensitivity in-process, run files with
 a [design] table, scripts/design_study.py and scripts/bench_design.py in their quick variants."""
 
-import importlib.util
 import json
 from pathlib import Path
 
 import pytest
+from script_loader import load_script
 
 from fem_racket.cli import main
 from fem_racket.io.mesh_files import read_mesh
 
-SCRIPTS = Path(__file__).resolve().parents[3] / "scripts"
 SMALL = ["--boundaries", "0.3", "--speeds", "30", "--zone-points", "3", "--backend", "serial"]
 
 
-def load(path: Path):
-    spec = importlib.util.spec_from_file_location(path.stem, path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 def test_design_study_quick_writes_the_mean_cor_study(tmp_path, capsys):
-    rows = load(SCRIPTS / "design_study.py").main(["--quick", "--out", str(tmp_path / "d")])
+    rows = load_script("design_study").main(["--quick", "--out", str(tmp_path / "d")])
     assert [r["study"] for r in rows] == [
         "cor",
         "same_specs",
@@ -117,7 +109,7 @@ def test_sensitivity_json(tmp_path, capsys):
 
 
 def test_bench_design_quick(capsys):
-    rows = load(SCRIPTS / "bench_design.py").main(["--quick"])
+    rows = load_script("bench_design").main(["--quick"])
     assert [r["task"] for r in rows] == ["SLSQP 8 variables", "NSGA-II", "Sobol"]
     assert all(r["designs"] > 0 and r["wall_s"] > 0 for r in rows)
     assert "us/impact" in capsys.readouterr().out
