@@ -13,7 +13,7 @@ and ``solve_many(problems)`` of several. The methods:
 ``cvode``    SUNDIALS CVODE BDF on the coupled ODE, for any law (:mod:`fem_racket.impact.ode`)
 ``bdf``      scipy's BDF on the coupled ODE, for the paper's linear law
 ``auto``     ``exact`` for the paper's law on a racket at rest or swinging (held or free),
-             ``general`` otherwise
+             ``cvode`` on a stretching string bed, ``general`` otherwise
 ===========  ==============================================================================
 
 A hand-held racket (:class:`~fem_racket.impact.problem.HeldRacket`) is a structure like the free
@@ -175,7 +175,8 @@ def auto_method(linear: bool) -> str:
 
 
 class AutoSolver(Solver):
-    """``exact`` for the paper's law on a racket at rest or swinging, ``general`` otherwise."""
+    """``exact`` for the paper's law on a racket at rest or swinging, ``cvode`` on a stretching
+    string bed (``strings.stretch``), ``general`` otherwise."""
 
     name = "auto"
     takes = SolverOptions.names()
@@ -184,9 +185,11 @@ class AutoSolver(Solver):
         """The solver this one stands for on ``problem`` (or a batch)."""
         linear = problem.linear
         if isinstance(problem, ProblemBatch):
-            name = auto_method(linear)
-        elif problem.strings is not None:  # the ball's own law on the bed
-            name = auto_method(problem.ball_law().name == "linear")
+            stretch = any(s is not None and s.stretch for s in problem.strings or ())
+            name = "cvode" if stretch else auto_method(linear)
+        elif problem.strings is not None:  # the ball's own law on the bed; a stretching bed:
+            linear = problem.ball_law().name == "linear"  # CVODE alone integrates it
+            name = "cvode" if problem.strings.stretch else auto_method(linear)
         else:
             name = auto_method(linear and problem.frame_velocity is None)
         try:

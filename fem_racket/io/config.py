@@ -7,10 +7,11 @@ A run file has fixed *core* tables, each key with its unit in its name::
     [contact]  kcb_n_m, zeta | clamped_cor      (the compound ball/string law, eqs 1-4)
                law, and that law's parameters (hc_alpha_s_m, k1_n_m_n, ... as in JSON outputs)
     [impact]   position_x_over_l, speed_m_s
-    [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string
+    [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string, edge,
+               stretch
                (any key: the string bed replaces the lumped K_CB; simulate)
     [oblique]  angle_deg, spin_rpm, friction, ball_inertia, ball_radius_m, compliance_ratio,
-               clamped, face_angle_deg, path_angle_deg
+               side_angle_deg, side_spin_rpm, clamped, face_angle_deg, path_angle_deg
                (any key: the oblique, spinning ball; simulate, and the axes of sweep and map)
     [solver]   name, separation, basis, modes, rtol, atol, t_max_s
     [output]   out, overwrite
@@ -106,8 +107,7 @@ class RunConfig:
         return self.source.parent / p
 
     def simulate_kwargs(self) -> dict[str, Any]:
-        """Keyword arguments of :func:`fem_racket.simulate` that the core tables set (no frame,
-        swing or hand: :meth:`simulate` runs the whole file)."""
+        """Keywords of :func:`fem_racket.simulate` the core tables set (no frame, swing, hand)."""
         d = self.defaults()
         names = ("position", "speed", "ball_mass", "kcb", "zeta", "elements", "solver")
         names += ("separation", "basis", "modes", "rtol", "atol", "t_max")
@@ -164,6 +164,19 @@ class RunConfig:
         from fem_racket.io.config_drawings import animate_file
 
         return animate_file(self, out)
+
+    def optimize(self, out: str | os.PathLike | None = None) -> Any:
+        """The optimisation ``fem-racket optimize --config FILE`` runs (files into ``out``,
+        else ``[design] out``, else output/design); see :func:`.config_design.optimize_file`."""
+        from fem_racket.io.config_design import optimize_file
+
+        return optimize_file(self, out)
+
+    def sensitivity(self, out: str | os.PathLike | None = None) -> Any:
+        """The Sobol indices of ``fem-racket sensitivity --config FILE`` (chart in ``out``)."""
+        from fem_racket.io.config_design import sensitivity_file
+
+        return sensitivity_file(self, out)
 
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None

@@ -172,9 +172,7 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
     "contact": LiveView(lambda: _contact_keys()),
     "impact": {
         "position_x_over_l": Key(_interval(0.0, 1.0), "position", "impact point x/L"),
-        "offset_m": Key(
-            _number("m", check_finite), "offset", "impact point's offset from the long axis"
-        ),
+        "offset_m": Key(_number("m", check_finite), "offset", "offset from the long axis"),
         "speed_m_s": Key(_positive("m/s"), "speed", "incident ball speed V_B0"),
         "racket_speed_m_s": Key(
             _number("m/s", check_finite), "racket_speed", "racket speed towards the ball"
@@ -204,6 +202,7 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         "head_width_m": Key(_positive("m"), "head_width", "string-bed width across the racket"),
         "string": Key(_choice(tuple(STRINGS)), "string_material", "string material"),
         "edge": Key(_choice(EDGES), "bed_edge", "head ring follows the frame: point or hoop"),
+        "stretch": Key(_boolean, "string_stretch", "strings stretch with the deflection (cvode)"),
     },
     "oblique": {  # any key runs the oblique impact (simulate; sweep and map: its axes)
         "angle_deg": Key(
@@ -218,6 +217,12 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         "compliance_ratio": Key(
             _interval(0.0, math.inf), "compliance_ratio", "eta^2 = k_n/k_t of the contact"
         ),
+        "side_angle_deg": Key(
+            _interval(-90.0, 90.0, include_low=False, include_high=False),
+            "side_angle",
+            "ball's path from the plane of the long axis and the normal, + toward +y",
+        ),
+        "side_spin_rpm": Key(_number("rpm", check_finite), "side_spin", "side spin, + rolls to +y"),
         "clamped": Key(_boolean, "clamped", "a rigid, immovable head (eqs 1-3)"),
         "face_angle_deg": Key(
             _number("deg", check_finite), "face_angle", "string plane to the horizontal"

@@ -24,7 +24,7 @@ from fem_racket.validation import InputError, show
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
 
-__all__ = ["HAND_KEYS", "NOT_WITH_HAND", "simulate_file"]
+__all__ = ["HAND_KEYS", "NOT_WITH_HAND", "file_frame", "simulate_file"]
 
 #: ``[hand]`` keys -> :class:`~fem_racket.frame.hand.Hand` fields (``grip`` picks the preset).
 HAND_KEYS = {
@@ -98,10 +98,10 @@ def _output_step(cfg: RunConfig) -> float:
     return float(step)
 
 
-def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
-    from fem_racket.frame.model import FrameModel
+def file_frame(cfg: RunConfig) -> Any:
+    """The frame of ``cfg``'s ``[frame]`` as the commands build it: a Frame or FrameMesh, with
+    its ``[[frame.lead]]`` added last on the meshed frame (as ``--add-mass``)."""
     from fem_racket.frame.segments import PAPER_EI1, standard_frame
-    from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 
     d = cfg.defaults()
     frame = cfg.frame()
@@ -116,7 +116,15 @@ def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
 
         mesh = frame_mesh(frame, elements) if isinstance(frame, Frame) else frame
         frame = add_lead(mesh, d["add_mass"], DEFAULT_HEAD.on_frame(mesh.length))
-    model = FrameModel.build(frame, elements)
+    return frame
+
+
+def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
+    from fem_racket.frame.model import FrameModel
+    from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+
+    d = cfg.defaults()
+    model = FrameModel.build(file_frame(cfg), d.get("elements", 20))
     length = model.mesh.length
     speed = d.get("racket_speed", 0.0)
     reference, pivot = d.get("reference", DEFAULT_REFERENCE), d.get("pivot")
@@ -198,6 +206,8 @@ INCIDENCE_FIELDS = {
     "ball_inertia": "ball_inertia",
     "ball_radius": "radius",
     "compliance_ratio": "compliance_ratio",
+    "side_angle": "side_angle",
+    "side_spin": "side_spin",
 }
 #: What a clamped head takes from the core tables (besides ``[oblique]``).
 CLAMPED_TAKES = ("speed", "ball_mass", "kcb", "zeta", "separation")
@@ -253,10 +263,13 @@ def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | Non
     command line), ``peak_force`` and ``chunk_size``. Returns the dataset the command writes
     (without writing it; ``[sweep]``'s run keys :data:`SWEEP_RUN_KEYS` are the command's)."""
     from fem_racket.contact.presets import law_parameters
+    from fem_racket.io.config_unused import refuse_unused
     from fem_racket.studies.grid_values import LAW_PARAMETERS, PARAMETERS
     from fem_racket.studies.sweep import sweep_result
 
     d = cfg.defaults()
+    options = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
+    refuse_unused(cfg, "sweep", {*PARAMETERS, *LAW_PARAMETERS, *options, "mesh", "segments", "law"})
     table = {k.replace("-", "_"): v for k, v in cfg.table("sweep").items()}
     settings = {**d, **{k: v for k, v in table.items() if k not in SWEEP_RUN_KEYS}}
     frame = cfg.frame() if "mesh" in d or "segments" in d else None
@@ -265,7 +278,6 @@ def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | Non
         grid.pop("ei1", None)
         if "mesh" in d:
             grid.pop("elements", None)
-    options = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
     kwargs = {k: settings[k] for k in options if k in settings and not (frame and k == "ei2")}
     laws = {k: v for k, v in law_parameters(settings).items() if k in LAW_PARAMETERS}
     result = sweep_result(

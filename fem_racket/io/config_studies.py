@@ -72,9 +72,13 @@ REFINE_DEFAULTS: dict[str, Any] = {
 
 def _options(cfg: RunConfig, command: str, defaults: dict[str, Any]) -> dict[str, Any]:
     """The command's options from the file: its defaults, the core tables' values of its
-    options, then its own table (checked against its options)."""
+    options, then its own table (checked against its options). A key of the impact's tables
+    it takes no option for is refused, as the command refuses it."""
+    from fem_racket.io.config_unused import refuse_unused
     from fem_racket.studies.grid_values import LAW_PARAMETERS
 
+    frame = ("ei1", "ei2", "mesh", "segments") if command == "refine" else ()  # cfg.frame()
+    refuse_unused(cfg, command, {*defaults, *frame, *(LAW_PARAMETERS if "law" in defaults else ())})
     core = cfg.defaults()
     out = dict(defaults)
     out.update({k: v for k, v in core.items() if k in defaults or k in LAW_PARAMETERS})

@@ -94,6 +94,7 @@ def test_map_equals_the_command(cwd, capsys):
 
 def test_spin_map_equals_the_command(cwd, capsys):
     text = CORE.replace("racket_speed_m_s = 10\npivot_m = 0.1\n", "")
+    text = text.replace('[[frame.lead]]\nplace = "12"\nmass_g = 3\n', "")  # sweep: no lead
     text += '[oblique]\nangle_deg = 40\nspin_rpm = -3820\n[map]\npositions = "0.6,0.8"\n'
     text += 'offsets = "-0.04,0.04"\n'
     (cwd / "run.toml").write_text(text)
@@ -149,6 +150,7 @@ def test_sweep_axes_from_a_run_file_equal_the_command(cwd, capsys):
     import xarray as xr
 
     text = CORE.replace("racket_speed_m_s = 10\npivot_m = 0.1\n", "")
+    text = text.replace('[[frame.lead]]\nplace = "12"\nmass_g = 3\n', "")  # sweep: no lead
     text += '[oblique]\nfriction = 0.3\n[sweep]\nangle = "20,40"\nspin = [0, 2000]\nout = "s.nc"\n'
     (cwd / "run.toml").write_text(text)
     ds = load_config(cwd / "run.toml").sweep(backend="serial")

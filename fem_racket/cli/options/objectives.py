@@ -9,18 +9,11 @@ import argparse
 from fem_racket.cli.options.lists import number_list
 from fem_racket.frame.hand import GRIPS
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
+from fem_racket.io.config_design import CONSTRAINTS
 from fem_racket.studies.design.options import ObjectiveOptions
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
 
 __all__ = ["CONSTRAINTS", "add_objective_options", "objectives_from_args"]
-
-#: Constraint options: dest -> (quantity, help).
-CONSTRAINTS = {
-    "mass_range": ("mass_kg", "total mass [kg]"),
-    "balance_range": ("balance_m", "balance point from the butt [m]"),
-    "swing_weight_range": ("swing_weight_kg_cm2", "swing weight about 0.10 m [kg cm^2]"),
-    "f1_range": ("f1_hz", "first free-free frequency [Hz]"),
-}
 
 
 def _bounds(text: str) -> tuple:

@@ -10,7 +10,9 @@ command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
 (``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key, unless
 the command declares them its ``own`` (sweep's grids) or ``private`` (refine's list of element
 counts; the ``out`` of commands writing another kind of file than simulate's JSON), see
-:func:`add_config_option`. A command takes from the core tables only what it has options for.
+:func:`add_config_option`. A command takes from the core tables only what it has options for; a
+command computing impacts refuses a key of the impact's tables it has no option for
+(:mod:`fem_racket.io.config_unused`).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from typing import Any
 
 from fem_racket.io.config import RunConfig, load_config
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
+from fem_racket.io.config_unused import refuse_unused
 from fem_racket.validation import InputError, show
 
 __all__ = [
@@ -229,6 +232,8 @@ def apply_config(
     args.config_raw.update({f"{t}.{k}": v for t, ks in cfg.tables.items() for k, v in ks.items()})
     try:
         values = config_values(sub, args.command, cfg, given)
+        dests = {a.dest for a in sub._actions} - getattr(sub, "config_private", frozenset())
+        refuse_unused(cfg, args.command, dests | ({"segments"} if "mesh" in dests else set()))
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
     frame_file = {"segments", "mesh"} & set(values)

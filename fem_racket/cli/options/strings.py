@@ -230,9 +230,10 @@ def strung_from_args(
     auto = getattr(args, "solver", "auto") == "auto"
     kwargs = impact_kwargs(args)
     if auto:  # on the bed a linear ball (a preset of the linear law too) is solved exactly,
-        law = kwargs.get("law")  # a stretching bed by CVODE
+        law = kwargs.get("law")  # a stretching bed by CVODE (the library's "auto" picks it)
         linear = law is None or law.name == "linear"
-        args.solver = kwargs["solver"] = "cvode" if strings.stretch else auto_method(linear)
+        args.solver = "cvode" if strings.stretch else auto_method(linear)  # printed
+        kwargs["solver"] = "auto" if strings.stretch else args.solver
     if "output_step" in getattr(args, "explicit_options", ()):
         kwargs["output_step"] = args.output_step  # refused there, not ignored here
     if hasattr(args, "racket_speed"):  # commands with the swing options
