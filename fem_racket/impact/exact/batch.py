@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -75,6 +76,9 @@ class SolveOptions:
 
 def solve_cases(cases: Cases, options: SolveOptions) -> tuple[np.ndarray, ...]:
     """COR, t_c [s], peak force per unit speed [N s/m] and flexible modes kept of the cases."""
+    from fem_racket.impact.kernel_cache import guard
+
+    guard(Path(__file__).parent, ("kernel_roots", "kernel_events", "kernel_cases"))
     from fem_racket.impact.exact.kernel_cases import events_cases
     from fem_racket.impact.exact.kernel_cases import solve_cases as kernel
 

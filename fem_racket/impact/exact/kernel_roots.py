@@ -9,10 +9,10 @@ loops instead of the numpy path's batched matrix products (the same operations, 
 sums reordered as :data:`_FAST` allows). Imported only where a batch runs
 (:mod:`fem_racket.impact.exact.batch`).
 
-numba's disk cache keys a compiled function on its own file only: after editing this module or
-:mod:`fem_racket.impact.exact.kernel_events`, remove the ``*.nbi``/``*.nbc`` files of
-``fem_racket/impact/exact/__pycache__`` (or touch :mod:`~fem_racket.impact.exact.kernel_cases`),
-else the case loop keeps the old code. An installed release changes every file at once.
+numba's disk cache keys a compiled function on its own file only; the case loop calls this
+module and :mod:`fem_racket.impact.exact.kernel_events`, so
+:func:`fem_racket.impact.kernel_cache.guard` removes the room's cached code whenever any of the
+three files changed, before anything compiles.
 """
 
 from __future__ import annotations

@@ -22,6 +22,7 @@ import importlib
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from pathlib import Path
 
 __all__ = ["INTERPRETED_NODES", "lone_solve", "njit", "prepare"]
 
@@ -71,6 +72,9 @@ def _compile() -> None:
     """Decorate the kernels with numba's njit from now on (reloading those imported)."""
     if _STATE["compiled"]:
         return
+    from fem_racket.impact.kernel_cache import guard
+
+    guard(Path(__file__).parent, tuple(name.rsplit(".", 1)[1] for name in _MODULES))
     _STATE["compiled"] = True
     _STATE["interpreted"] = False
     for name in _MODULES:
