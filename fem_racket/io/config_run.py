@@ -1,8 +1,8 @@
 """A run file's impact in Python: :meth:`RunConfig.simulate` = ``fem-racket simulate --config``.
 
 :func:`simulate_file` runs what the command runs on the same file, with the same checks: every
-table of the file applies (frame, ball, contact law, impact and swing, hand, solver, the
-``[simulate]`` table's ``output_step``), and a key the run cannot use is refused as the command
+table of the file applies (frame, ball, contact law, impact and swing, hand, string bed, oblique
+ball, solver, ``[simulate] output_step``), and a key the run cannot use is refused as the command
 refuses it (a hand with ``solver.modes``, ``contact.kcb_n_m`` under another law ...). Histories
 are computed as the command computes them: when the file names an output (``output.out`` or
 ``[simulate] out``), unless ``histories`` says otherwise. The command-line defaults are the
@@ -19,6 +19,7 @@ from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.io.config_keys import CORE_KEYS
+from fem_racket.strings.options import STRING_OPTIONS, bed_from_options
 from fem_racket.validation import InputError, show
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
@@ -164,11 +165,7 @@ def simulate_file(
     from fem_racket.impact.simulate import simulate
 
     d = cfg.defaults()
-    if cfg.values.get("strings"):
-        raise InputError(
-            f"[strings] ({cfg.source}) is not allowed in RunConfig.simulate yet: run "
-            "fem-racket simulate --config for the string bed"
-        )
+    strings = bed_from_options({k: d.get(k) for k in STRING_OPTIONS})
     if histories is None:
         histories = bool(cfg.table("simulate").get("out") or d.get("out"))
     hand = _hand(cfg)
@@ -178,18 +175,24 @@ def simulate_file(
             "give --grip or a hand parameter"
         )
     if hand is not None:
+        if strings is not None:
+            raise InputError(f"[hand] ({cfg.source}) is not allowed with [strings]: give one")
         _check_hand(cfg, d)
     model, swing = _model_and_swing(cfg)
     # as the command: the impact point and speed, and every other option the file sets to
     # other than its default (one at its default is left to the library)
     kwargs: dict[str, Any] = {"position": d.get("position", 0.75), "speed": d.get("speed", 20.0)}
     kwargs.update({k: d[k] for k, v in DEFAULTS.items() if k in d and d[k] != v})
-    law = _law(cfg)
-    if law is not None:
-        kwargs["law"] = law
+    kwargs.update({} if (law := _law(cfg)) is None else {"law": law})
+    if strings is not None:  # on the bed (its histories have their own samples: a step only
+        kwargs["strings"] = strings  # when the file gives one), as simulate --string-tension
+        given = output_step or cfg.table("simulate").get("output_step")
+        kwargs.update({"output_step": given} if given else {})
     if cfg.values.get("oblique"):  # the oblique impact, as simulate's --angle ...
         return _oblique(cfg, d, hand, model, swing, kwargs)
     step = (output_step or _output_step(cfg)) if histories else None
+    if strings is not None:
+        return simulate(model, swing=swing, **kwargs)
     if hand is not None:
         window = d.get("hand_shock_window")
         return simulate(
@@ -247,7 +250,9 @@ def _oblique(cfg: RunConfig, d: dict, hand: Any, model: Any, swing: Any, kwargs:
         kw = {k: d.get(k, DEFAULTS.get(k)) for k in ("ball_mass", "kcb", "zeta", "separation")}
         kw.update(incidence=inc, speed=d.get("speed", 20.0), clamped=True)
         return simulate_stroke(stroke=stroke, **kw) if stroke else simulate_oblique(**kw)
-    kw = {**kwargs, "incidence": inc, "output_step": _output_step(cfg)}
+    kw = {**kwargs, "incidence": inc}
+    if "strings" not in kw:  # (the bed's histories have their own samples)
+        kw["output_step"] = _output_step(cfg)
     if stroke is not None:
         return simulate_stroke(model, stroke=stroke, swing=swing, **kw)
     return simulate_oblique(model, swing=swing, **kw)

@@ -20,7 +20,6 @@ its solver).
 from __future__ import annotations
 
 import argparse
-import math
 from pathlib import Path
 from typing import Any
 
@@ -36,9 +35,9 @@ from fem_racket.impact.simulate import simulate
 from fem_racket.impact.solvers import auto_method
 from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.outputs import provenance
-from fem_racket.strings.bed import EDGES, StringBed, parse_pattern
+from fem_racket.strings.bed import EDGES, StringBed
 from fem_racket.strings.materials import STRINGS
-from fem_racket.validation import InputError, check_positive, show
+from fem_racket.strings.options import STRING_OPTIONS, bed_from_options
 
 __all__ = [
     "STRING_DESTS",
@@ -49,16 +48,7 @@ __all__ = [
 ]
 
 #: The argparse destinations of the string-bed options.
-STRING_DESTS = (
-    "string_tension",
-    "pattern",
-    "head_area",
-    "head_length",
-    "head_width",
-    "string_material",
-    "bed_edge",
-    "string_stretch",
-)
+STRING_DESTS = STRING_OPTIONS
 
 
 def add_strings_options(parser: argparse.ArgumentParser) -> None:
@@ -125,48 +115,9 @@ def add_strings_options(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
-    """The head's axes [m] from the options (see the module docstring)."""
-    d = StringBed()
-    if area is None:
-        return (
-            d.head_length_m if length is None else check_positive("head length", length, "m"),
-            d.head_width_m if width is None else check_positive("head width", width, "m"),
-        )
-    a = check_positive("head area", area, "cm^2") * 1e-4 * 4.0 / math.pi  # L W [m^2]
-    if length is not None and width is not None:
-        raise InputError(
-            f"head area = {show(area)} cm^2 is not allowed with both --head-length and "
-            "--head-width: give two of the three"
-        )
-    if length is not None:
-        return float(length), a / check_positive("head length", length, "m")
-    if width is not None:
-        return a / check_positive("head width", width, "m"), float(width)
-    s = math.sqrt(a / (d.head_length_m * d.head_width_m))
-    return d.head_length_m * s, d.head_width_m * s
-
-
 def strings_from_args(args: argparse.Namespace) -> StringBed | None:
     """The string bed the options ask for, or None when no string option is given."""
-    values = {k: getattr(args, k, None) for k in STRING_DESTS}
-    if all(v is None for v in values.values()):
-        return None
-    d = StringBed()
-    length, width = _axes(values["head_area"], values["head_length"], values["head_width"])
-    mains, crosses = (
-        (d.mains, d.crosses) if values["pattern"] is None else parse_pattern(values["pattern"])
-    )
-    return StringBed(
-        tension_n=d.tension_n if values["string_tension"] is None else values["string_tension"],
-        mains=mains,
-        crosses=crosses,
-        head_length_m=length,
-        head_width_m=width,
-        string=d.string if values["string_material"] is None else values["string_material"],
-        edge=d.edge if values["bed_edge"] is None else values["bed_edge"],
-        stretch=bool(values["string_stretch"]),
-    )
+    return bed_from_options({k: getattr(args, k, None) for k in STRING_DESTS})
 
 
 def _histories(result: StrungImpact) -> dict[str, Any]:
