@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import json
 import os
+from contextlib import nullcontext
 from pathlib import Path
 from typing import Any
 
@@ -32,7 +33,7 @@ from fem_racket.impact.strung_impact import StrungImpact
 from fem_racket.io.vtk import PROVENANCE_NAME, PVD_NAME, write_pvd, write_vtu
 from fem_racket.io.vtk_series import BALL_RADIUS, check_scale
 from fem_racket.io.vtk_steps import sample_steps
-from fem_racket.outputs import atomic_folder, provenance
+from fem_racket.outputs import atomic_folder, deferred_interrupts, provenance
 from fem_racket.strings.membrane import bed_mesh
 
 __all__ = ["frame_twist", "strung_fields", "write_strung_vtk"]
@@ -129,33 +130,35 @@ def write_strung_vtk(
     x_nodes = np.asarray(model.mesh.points, dtype=float).ravel()
     line = np.concatenate([[nodes.shape[1]], np.arange(nodes.shape[1])])
     x_i, y_i = p.position * L, p.lateral_m
-    sphere = pv.Sphere(radius=BALL_RADIUS, center=(0.0, 0.0, 0.0)).cast_to_unstructured_grid()
+    with deferred_interrupts():  # pyvista imports VTK's modules: one interrupted crashes VTK
+        sphere = pv.Sphere(radius=BALL_RADIUS, center=(0.0, 0.0, 0.0)).cast_to_unstructured_grid()
     meta = provenance({**result.summary(), "steps": int(steps.size), "scale": scale,
                        **(parameters or {})})  # fmt: skip
     entries = []
     with atomic_folder(folder, overwrite=overwrite, marker=PROVENANCE_NAME) as tmp:
-        for i in steps:
-            t = float(result.t[i])
-            frame = pv.UnstructuredGrid(
-                line, np.array([pv.CellType.POLY_LINE]),
-                np.column_stack([x_nodes, np.zeros_like(x_nodes), scale * nodes[i]]),
-            )  # fmt: skip
-            frame.point_data["deflection [m]"] = nodes[i]
-            if twist is not None:
-                frame.point_data["twist [rad]"] = twist[i]
-            surf = pv.UnstructuredGrid(
-                bed_cells, np.full(len(tri), pv.CellType.TRIANGLE),
-                np.column_stack([bed_xy, scale * bed[i]]),
-            )  # fmt: skip
-            surf.point_data["deflection [m]"] = bed[i]
-            u_b = float(result.coordinates[i, 0])
-            ball = sphere.translate((x_i, y_i, scale * u_b - BALL_RADIUS), inplace=False)
-            ball.point_data["displacement [m]"] = np.full(ball.n_points, u_b)
-            for part, (name, grid) in enumerate((("frame", frame), ("ball", ball),
-                                                 ("strings", surf))):  # fmt: skip
-                grid.field_data["TimeValue"] = np.array([t])
-                write_vtu(grid, tmp / f"{name}_{i:04d}.vtu")
-                entries.append((t, part, name, f"{name}_{i:04d}.vtu"))
+        for n, i in enumerate(steps):
+            with deferred_interrupts() if n == 0 else nullcontext():  # (the same, writing)
+                t = float(result.t[i])
+                frame = pv.UnstructuredGrid(
+                    line, np.array([pv.CellType.POLY_LINE]),
+                    np.column_stack([x_nodes, np.zeros_like(x_nodes), scale * nodes[i]]),
+                )  # fmt: skip
+                frame.point_data["deflection [m]"] = nodes[i]
+                if twist is not None:
+                    frame.point_data["twist [rad]"] = twist[i]
+                surf = pv.UnstructuredGrid(
+                    bed_cells, np.full(len(tri), pv.CellType.TRIANGLE),
+                    np.column_stack([bed_xy, scale * bed[i]]),
+                )  # fmt: skip
+                surf.point_data["deflection [m]"] = bed[i]
+                u_b = float(result.coordinates[i, 0])
+                ball = sphere.translate((x_i, y_i, scale * u_b - BALL_RADIUS), inplace=False)
+                ball.point_data["displacement [m]"] = np.full(ball.n_points, u_b)
+                for part, (name, grid) in enumerate((("frame", frame), ("ball", ball),
+                                                     ("strings", surf))):  # fmt: skip
+                    grid.field_data["TimeValue"] = np.array([t])
+                    write_vtu(grid, tmp / f"{name}_{i:04d}.vtu")
+                    entries.append((t, part, name, f"{name}_{i:04d}.vtu"))
         write_pvd(tmp / PVD_NAME, entries)
         (tmp / PROVENANCE_NAME).write_text(json.dumps(meta, indent=2, default=str) + "\n")
     return Path(folder) / PVD_NAME

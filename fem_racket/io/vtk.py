@@ -18,13 +18,14 @@ import json
 import logging
 import os
 import xml.etree.ElementTree as ET
+from contextlib import nullcontext
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from fem_racket.extras import require
 from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.io.vtk_series import BALL_FIELDS, FRAME_FIELDS, field_name, impact_series
-from fem_racket.outputs import atomic_folder
+from fem_racket.outputs import atomic_folder, deferred_interrupts
 from fem_racket.progress import progress_bar
 
 if TYPE_CHECKING:
@@ -104,7 +105,8 @@ def write_vtk_series(
     progress : bool or None
         A progress bar over the steps on stderr (None: when stderr is a terminal).
     """
-    require("pyvista", "write_vtk_series (export-vtk)")
+    with deferred_interrupts():  # an interrupted import of VTK crashes its module loader
+        require("pyvista", "write_vtk_series (export-vtk)")
     field = field_name(field)
     series = impact_series(result, subdivide=subdivide, frames=frames, scale=scale)
     settings = {
@@ -128,20 +130,23 @@ def write_vtk_series(
         steps = progress_bar(
             range(series.n_steps), desc="export-vtk", unit="step", enabled=progress
         )
-        for i in steps:
-            frame = series.frame_grid(i)
-            if field in series.cell_fields:  # readers colour by the active point scalars first
-                frame.point_data.active_scalars_name = None
-            frame.set_active_scalars(field)
-            write_vtu(frame, tmp / f"frame_{i:04d}.vtu")
-            write_vtu(series.ball_grid(i), tmp / f"ball_{i:04d}.vtu")
-            entries += [
-                (series.t[i], 0, "frame", f"frame_{i:04d}.vtu"),
-                (series.t[i], 1, "ball", f"ball_{i:04d}.vtu"),
-            ]
-            if face is not None:
-                write_vtu(face.grid(i), tmp / f"face_{i:04d}.vtu")
-                entries.append((series.t[i], 2, "face", f"face_{i:04d}.vtu"))
+        for n, i in enumerate(steps):
+            # the first step makes pyvista import VTK's modules; one interrupted by a signal
+            # crashes VTK's module loader, so a signal waits for that step's end
+            with deferred_interrupts() if n == 0 else nullcontext():
+                frame = series.frame_grid(i)
+                if field in series.cell_fields:  # readers colour by the active point scalars first
+                    frame.point_data.active_scalars_name = None
+                frame.set_active_scalars(field)
+                write_vtu(frame, tmp / f"frame_{i:04d}.vtu")
+                write_vtu(series.ball_grid(i), tmp / f"ball_{i:04d}.vtu")
+                entries += [
+                    (series.t[i], 0, "frame", f"frame_{i:04d}.vtu"),
+                    (series.t[i], 1, "ball", f"ball_{i:04d}.vtu"),
+                ]
+                if face is not None:
+                    write_vtu(face.grid(i), tmp / f"face_{i:04d}.vtu")
+                    entries.append((series.t[i], 2, "face", f"face_{i:04d}.vtu"))
         write_pvd(tmp / PVD_NAME, entries)
         (tmp / PROVENANCE_NAME).write_text(json.dumps(meta, indent=2) + "\n")
     log.info("wrote %d steps to %s", series.n_steps, folder)
