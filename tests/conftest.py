@@ -1,8 +1,13 @@
 """Shared fixtures: the paper's standard and rigid frames, assembled once per session."""
 
 import pytest
+from threadpoolctl import threadpool_limits
 
 from fem_racket import FrameModel, rigid_frame, standard_frame
+
+# One BLAS thread in the test process, as the CLI and every pool worker pin it: results then do
+# not depend on how many threads OpenBLAS picked (a dense product's sums split differently).
+threadpool_limits(limits=1, user_api="blas")
 
 
 @pytest.fixture(scope="session")

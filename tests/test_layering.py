@@ -24,6 +24,7 @@ LAYERS = {
     "progress": 0,
     "display": 0,
     "extras": 0,
+    "lanczos": 0,
     "frame": 1,
     "contact": 1,
     "strings": 1,

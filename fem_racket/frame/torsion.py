@@ -25,6 +25,7 @@ from functools import cached_property
 import numpy as np
 
 from fem_racket.frame.mesh import FrameMesh
+from fem_racket.lanczos import start_vector
 from fem_racket.validation import InputError, check_choice, check_integer
 
 __all__ = ["ORDERS", "TorsionModel", "TorsionModes"]
@@ -143,7 +144,9 @@ class TorsionModel:
             from scipy.sparse.linalg import eigsh
 
             w0 = np.sqrt(np.min(self.mesh.GJ / self.mesh.rhoIp)) / self.mesh.length
-            w2, vec = eigsh(K.tocsc(), n + 1, M.tocsc(), sigma=-(w0**2), which="LM")
+            w2, vec = eigsh(
+                K.tocsc(), n + 1, M.tocsc(), sigma=-(w0**2), which="LM", v0=start_vector(K.shape[0])
+            )
             order = np.argsort(w2)[1:]
             w2, vec = w2[order], vec[:, order]
         # mass-normalise again (eigsh's normalisation is looser) and fix signs: tip twist > 0

@@ -27,6 +27,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from fem_racket.lanczos import start_vector
+
 __all__ = ["BedMesh", "bed_mesh", "disk_load", "unit_modes"]
 
 #: Radial Gauss points and angles of the disk quadrature. Not exact for the P2 field's kinks
@@ -141,7 +143,8 @@ def unit_modes(
     mesh = bed_mesh(length_m, width_m, refine)
     K = (ratio * mesh.Kxx + mesh.Kyy).tocsc()
     count = min(count, K.shape[0] - 2)
-    lam, phi = eigsh(K, k=count, M=mesh.M1.tocsc(), sigma=0.0, which="LM")
+    v0 = start_vector(K.shape[0])
+    lam, phi = eigsh(K, k=count, M=mesh.M1.tocsc(), sigma=0.0, which="LM", v0=v0)
     order = np.argsort(lam)
     lam, phi = lam[order], phi[:, order]
     phi /= np.sqrt(np.einsum("ij,ij->j", phi, mesh.M1 @ phi))
