@@ -23,6 +23,11 @@ from fem_racket.validation import InputError, show, work_begins
 
 __all__ = ["Solver"]
 
+#: Why a held racket refuses :attr:`Solver.held_refuses`.
+_HELD_WHY = (
+    "with a hand: the held racket keeps its modes by tolerance (exact) or all its DOFs (cvode, bdf)"
+)
+
 
 class Solver:
     """Base of the solvers (module docstring): options bound at construction.
@@ -79,11 +84,7 @@ class Solver:
             check_strung(problem, self.name, self.options)
             return
         if problem.held:
-            self._refuse_options(
-                self.held_refuses,
-                "with a hand: the held racket keeps its "
-                "modes by tolerance (exact) or all its DOFs (cvode, bdf)",
-            )
+            self._refuse_options(self.held_refuses, _HELD_WHY)
 
     def solve(self, problem: ImpactProblem) -> Any:
         """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
@@ -117,8 +118,15 @@ class Solver:
     # -- helpers ------------------------------------------------------------------------------
 
     def _check_batch(self, batch: ProblemBatch) -> None:
-        """Refuse, in one line, a batch (or an option for it) this solver cannot do."""
-        self._refuse_options(("output_step", "t_max"), "on a ProblemBatch: it returns no histories")
+        """Refuse, in one line, a batch (or an option for it) this solver cannot do: output
+        times or a time limit (None, no histories, is what a batch does), and with a hand the
+        options a held racket does not use."""
+        given = self.options.given()
+        for key in ("output_step", "t_max"):
+            if given.get(key) is not None:
+                self._refuse_options((key,), "on a ProblemBatch: it returns no histories")
+        if batch.held:
+            self._refuse_options(self.held_refuses, _HELD_WHY)
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         raise NotImplementedError

@@ -33,6 +33,7 @@ from __future__ import annotations
 from typing import Any
 
 from fem_racket.impact.batch_solve import each_batch, engine_batch, law_batch
+from fem_racket.impact.held.batch import held_batch
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import SolverOptions
@@ -66,6 +67,8 @@ class ExactSolver(Solver):
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         if batch.per_case:
             return each_batch(self, batch)
+        if batch.held:  # every mode unless a tolerance is asked, as a single held run
+            return held_batch(batch, self.options.given().get("tolerance"))
         return engine_batch(batch, self.options.settings())
 
     def _solve(self, problem: ImpactProblem) -> Any:
