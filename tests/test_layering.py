@@ -133,6 +133,7 @@ IMPACT_ROOMS = {
 }
 IMPACT_TOP = {
     "batch_solve",
+    "clamped_solve",
     "law_impact",
     "oblique",
     "oblique_stroke",

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any, ClassVar
 
+from fem_racket.impact.clamped_solve import solve_clamped
 from fem_racket.impact.held.run import HeldSettings, held_impact
 from fem_racket.impact.oblique import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
@@ -49,6 +50,10 @@ class Solver:
     hints: ClassVar[dict[str, str]] = {}
     #: Options it does not use on a hand-held racket, and why.
     held_refuses: ClassVar[tuple[str, ...]] = ("modes", "basis", "t_max")
+    #: Whether it solves impacts on a clamped head (:mod:`fem_racket.impact.clamped_solve`).
+    clamps: ClassVar[bool] = False
+    #: Options it does not use on a clamped head (whose modes are all kept).
+    clamped_refuses: ClassVar[tuple[str, ...]] = ("modes", "output_step", "t_max")
 
     def __init__(self, **options: Any) -> None:
         unknown = sorted(set(options) - set(SolverOptions.names()))
@@ -80,6 +85,14 @@ class Solver:
 
     def check(self, problem: ImpactProblem) -> None:
         """Refuse, in one line, a problem (or an option for it) this solver cannot do."""
+        if problem.clamped:
+            if not self.clamps:
+                raise InputError(
+                    f"solver = {self.name!r} is not allowed with a clamped head: use 'exact' "
+                    "(the paper's law) or 'general'"
+                )
+            self._refuse_options(self.clamped_refuses, "on a clamped head: it keeps its modes")
+            return
         if problem.strings is not None:
             check_strung(problem, self.name, self.options)
             return
@@ -88,7 +101,7 @@ class Solver:
 
     def solve(self, problem: ImpactProblem) -> Any:
         """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
-        StrungImpact with a string bed)."""
+        StrungImpact with a string bed, a ClampedImpact on a clamped head)."""
         self.check(problem)
         work_begins()  # fem-racket config --check stops here: every check has passed
         return self._outcome(problem)
@@ -106,11 +119,19 @@ class Solver:
         for p in problems:
             self.check(p)
         work_begins()
+        return self._many(problems)
+
+    def _many(self, problems: list[ImpactProblem]) -> list:
+        """Solve checked problems; on clamped heads all in one call per head."""
+        if problems and self.clamps and all(p.clamped for p in problems):
+            return solve_clamped(self.name, problems, self.options.settings())
         return [self._outcome(p) for p in problems]
 
     def _outcome(self, problem: ImpactProblem) -> Any:
         """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
         the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
+        if problem.clamped:
+            return solve_clamped(self.name, [problem], self.options.settings())[0]
         if problem.incidence is not None:
             return solve_oblique(self, problem)
         return self._solve(problem)

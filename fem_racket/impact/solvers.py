@@ -52,6 +52,7 @@ class ExactSolver(Solver):
 
     name = "exact"
     takes = ("tolerance", "modes", "output_step", "t_max")
+    clamps = True
     hints = {"basis": "must be 'modal' (the exact solution is in free-free modes)"}
 
     def check(self, problem: ImpactProblem) -> None:
@@ -84,9 +85,13 @@ class GeneralSolver(Solver):
 
     name = "general"
     takes = ("tolerance", "output_step", "t_max")
+    clamps = True
+    clamped_refuses = ("output_step",)  # its histories are at the integrator's steps
 
     def check(self, problem: ImpactProblem) -> None:
-        if problem.strings is not None:
+        if problem.clamped:
+            super().check(problem)
+        elif problem.strings is not None:
             check_strung(problem, self.name, self.options)
         elif problem.held:
             raise InputError(
@@ -208,6 +213,12 @@ class AutoSolver(Solver):
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         return self.pick(batch)._batch(batch)
+
+    def _many(self, problems: list[ImpactProblem]) -> list:
+        if problems and all(p.clamped for p in problems):  # one call per head and method
+            if len({self.pick(p).name for p in problems}) == 1:
+                return self.pick(problems[0])._many(problems)
+        return super()._many(problems)
 
     def _solve(self, problem: ImpactProblem) -> Any:
         return self.pick(problem)._solve(problem)
