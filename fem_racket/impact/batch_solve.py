@@ -1,8 +1,9 @@
 """How each solver answers a :class:`~fem_racket.impact.problem_batch.ProblemBatch`.
 
-- :func:`engine_batch` (``exact``): the batched engine
-  (:func:`fem_racket.impact.exact.engine.impacts`), one call per frame of the batch, each case
-  at its closing speed v_in + v_r (the system is linear; K_CB follows the closing speed).
+- :func:`engine_batch` (``exact``): the batched engine, one call per frame of the batch or, when
+  the frames' modes go to it whole, one per group of frames with as many modes
+  (:mod:`fem_racket.impact.engine_calls`), each case at its closing speed v_in + v_r (the
+  system is linear; K_CB follows the closing speed).
 - :func:`law_batch` (``general``): every case of the batch, whatever its frame, in one call of
   the general integrator (:func:`fem_racket.impact.general.integrator.solve_general`), each
   case with its own frame receptance, step and modes, so its result does not depend on the
@@ -28,8 +29,7 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
-from fem_racket.impact.exact.engine import impacts
-from fem_racket.impact.exact.inputs import EngineOptions
+from fem_racket.impact.engine_calls import grouped, per_frame, whole_modes
 from fem_racket.impact.general.batches import stack_receptances
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.held.batch import HELD_EXTRA
@@ -89,28 +89,8 @@ def engine_batch(batch: ProblemBatch, settings: Settings) -> BatchOutcome:
     out = _nan(len(batch))
     v_r = batch.racket_speed()
     closing = _closing(batch, v_r)
-    for k in np.unique(batch.frame):
-        rows = np.flatnonzero(batch.frame == k)
-        try:
-            b = impacts(
-                batch.models[k],
-                position=batch.position[rows],
-                offset=batch.offset[rows],
-                speed=closing[rows],
-                kcb=None if batch.kcb is None else batch.kcb[rows],
-                zeta=None if batch.zeta is None else batch.zeta[rows],
-                ball_mass=batch.ball_mass[rows],
-                ei_factor=batch.ei_factor[rows],
-                options=EngineOptions(
-                    batch.separation or "displacement",
-                    settings.tolerance,
-                    batch.peak_force,
-                    settings.modes,
-                ),
-            )
-        except (AccuracyError, np.linalg.LinAlgError) as exc:  # the frame cannot be solved
-            log.warning("%d cases failed (NaN in the results): %s", rows.size, exc)
-            continue
+    calls = grouped if whole_modes(batch, settings) else per_frame
+    for rows, b in calls(batch, settings, closing):
         out["cor"][rows] = b.cor
         out["contact_time"][rows] = b.contact_time
         out["ball_speed_out"][rows] = ball_speed_out(b.cor, batch.speed[rows], v_r[rows])

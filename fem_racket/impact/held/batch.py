@@ -74,6 +74,7 @@ def held_batch(batch: ProblemBatch, tolerance: float | None) -> BatchOutcome:
     if bad.size:
         closing_speed(batch.speed[bad[0]], v_r[bad[0]])  # raises, naming the case's speeds
     bases: dict[tuple, object] = {}
+    stiffness: dict[tuple, float] = {}
     for (k, f, mb, kcb, zeta), rows in _groups(batch).items():
         if (k, f) not in bases:
             model = batch.models[int(k)]
@@ -92,13 +93,12 @@ def held_batch(batch: ProblemBatch, tolerance: float | None) -> BatchOutcome:
         except (NoSeparationError, AccuracyError, RuntimeError, np.linalg.LinAlgError) as exc:
             log.warning("%d cases failed (NaN in the results): %s", len(rows), exc)
             continue
-        stiffness: dict[float, float] = {}
         for i, c in zip(rows, contacts, strict=True):
             out["cor"][i], out["contact_time"][i], out["modes"][i] = c.cor, c.contact_time, c.modes
-            if closing[i] not in stiffness:  # K_CB of each closing speed, once
-                law = LinearContact.for_speed(closing[i], kcb=kcb, zeta=zeta)
-                stiffness[closing[i]] = law.stiffness
-            out["kcb"][i] = stiffness[closing[i]]
+            key = (closing[i], kcb)
+            if key not in stiffness:  # K_CB of each closing speed, once
+                stiffness[key] = LinearContact.for_speed(closing[i], kcb=kcb, zeta=zeta).stiffness
+            out["kcb"][i] = stiffness[key]
             extra["grip_vibration_rms_n"][i] = vibration_rms(c, window)
             if batch.peak_force:
                 out["peak_force"][i] = contact_peak(c)
