@@ -15,7 +15,7 @@ structure of such an :class:`~fem_racket.impact.problem.ImpactProblem`:
 
 The ball strikes the head's centre: the problem's impact position (x/L along a frame) does not
 apply and is left at the problem's default :data:`CENTRE`; no swing, hand, offset or incidence
-(:func:`fem_racket.impact.problem_checks.check_clamped`).
+(:func:`fem_racket.impact.problem_checks.check_structure`).
 """
 
 from __future__ import annotations
