@@ -88,7 +88,7 @@ def solve_clamped(
 ) -> list[ClampedImpact]:
     """The outcomes of ``problems`` (each on a clamped head, checked) by ``method`` ("exact" or
     "general"), in order (module docstring)."""
-    solve = _exact if method == "exact" else _general
+    solve = {"exact": _exact, "general": _general}[method]
     groups: dict[tuple, list[int]] = {}
     for i, p in enumerate(problems):
         law = p.separation if method == "exact" else (i if p.law is None else id(p.law))

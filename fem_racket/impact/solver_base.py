@@ -91,7 +91,11 @@ class Solver:
                     f"solver = {self.name!r} is not allowed with a clamped head: use 'exact' "
                     "(the paper's law) or 'general'"
                 )
-            self._refuse_options(self.clamped_refuses, "on a clamped head: it keeps its modes")
+            self._refuse_options(
+                self.clamped_refuses,
+                "on a clamped head: every mode of the head is kept, and histories come only "
+                "from 'general', at its steps",
+            )
             return
         if problem.strings is not None:
             check_strung(problem, self.name, self.options)
@@ -131,7 +135,7 @@ class Solver:
         """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
         the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
         if problem.clamped:
-            return solve_clamped(self.name, [problem], self.options.settings())[0]
+            return self._many([problem])[0]
         if problem.incidence is not None:
             return solve_oblique(self, problem)
         return self._solve(problem)

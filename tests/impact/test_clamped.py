@@ -82,6 +82,10 @@ def test_many_is_each_one(bed):
     for p, r in zip(problems, many, strict=True):
         one = make_solver("general").solve(p)
         assert (r.cor, r.contact_time) == pytest.approx((one.cor, one.contact_time), rel=1e-12)
+    # auto picks the exact solution for the paper's law, one problem or many
+    p = _problem(RIGID, 30.0)
+    assert make_solver("auto").solve(p).time is None
+    assert make_solver("auto").solve_many([p])[0].cor == make_solver("exact").solve(p).cor
     # the ball's own law is allowed on the clamped bed (it is fitted there)
     r = make_solver("general").solve(_problem(bed, 20.0, law=kawazoe_ball(0.057)))
     assert 0.0 < r.cor < 1.0
@@ -106,7 +110,10 @@ def test_what_a_clamped_head_refuses(bed):
     for name in ("cvode", "bdf"):
         with pytest.raises(InputError, match=f"solver = '{name}' is not allowed with a clamped"):
             make_solver(name).solve(p)
-    with pytest.raises(InputError, match="modes = 10 is not allowed with solver 'exact' on a"):
+    with pytest.raises(
+        InputError,
+        match="modes = 10 is not allowed with solver 'exact' on a clamped head: every mode",
+    ):
         make_solver("exact", modes=10).solve(p)
     with pytest.raises(InputError, match="output_step = 0.0001 is not allowed with solver 'gen"):
         make_solver("general", output_step=1e-4).solve(p)
