@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +19,7 @@ from fem_racket.outputs.jsonable import json_ready
 __all__ = [
     "add_output_options",
     "print_json",
+    "print_result",
     "print_written",
     "print_written_folder",
     "run_parameters",
@@ -43,6 +45,24 @@ def print_json(data: Any) -> None:
     """Print ``data`` as JSON (NaN and inf become null)."""
     json.dump(json_ready(data), sys.stdout, indent=2)
     sys.stdout.write("\n")
+
+
+def print_result(
+    args: argparse.Namespace,
+    summary: dict[str, Any],
+    rows: Callable[[dict[str, Any]], Iterable[tuple[str, str, str]]],
+    files: Iterable[Any],
+) -> int:
+    """Print one impact's result, the last step of ``simulate``'s runs: ``summary`` as JSON
+    with ``--json``, else the table of ``rows(summary)`` (name, value, unit), a line each, and
+    the ``wrote`` line of each of ``files``. Returns the exit code, 0."""
+    if args.json:
+        print_json(summary)
+        return 0
+    for name, value, unit in rows(summary):
+        print(f"{name:<28} {value:>14} {unit}".rstrip())
+    print_written(files)
+    return 0
 
 
 def add_output_options(
