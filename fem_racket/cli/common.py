@@ -36,6 +36,7 @@ from fem_racket.cli.options.impact import (
     check_output_step,
     impact_kwargs,
     swing_from_args,
+    swing_kwargs,
 )
 from fem_racket.cli.options.lists import number_list
 from fem_racket.cli.options.output import (
@@ -76,6 +77,7 @@ __all__ = [
     "run_parameters",
     "significant",
     "swing_from_args",
+    "swing_kwargs",
     "write_json",
     "write_text",
 ]

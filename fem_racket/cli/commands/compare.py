@@ -18,6 +18,7 @@ from fem_racket.cli.common import (
     print_json,
     print_written,
     run_parameters,
+    swing_kwargs,
 )
 from fem_racket.cli.options.lead import add_lead_option, leads_of
 
@@ -123,13 +124,11 @@ def run(args: argparse.Namespace) -> int:
     ]
     play = Play(
         speed=args.speed,
-        racket_speed=args.racket_speed,
-        reference=args.reference,
-        pivot=args.pivot,
         positions=as_values("position", args.positions),
         position=args.point,
         grip=args.grip,
         offsets=None if args.offsets is None else as_values("offset", args.offsets),
+        **swing_kwargs(args),
     )
     work_begins()
     reports = compare(setups, play)

@@ -23,6 +23,7 @@ from fem_racket.cli.common import (
     print_written,
     run_parameters,
     significant,
+    swing_kwargs,
 )
 from fem_racket.cli.options.targets import (
     add_target_options,
@@ -96,9 +97,8 @@ def run(args: argparse.Namespace) -> int:
     targets = targets_from_args(args, catalogue(mesh, f1=False))
     work_begins()
     result = customise(mesh, targets, places)
-    swing = {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
     maps = [
-        racket_map(m, name=name, speed=args.speed, **swing)
+        racket_map(m, name=name, speed=args.speed, **swing_kwargs(args))
         for name, m in (("before", mesh), ("customised", result.mesh))
     ]
     summary = result.summary()

@@ -13,6 +13,7 @@ import json
 from pathlib import Path
 
 from fem_racket.cli.common import add_config_option, print_json, run_parameters, significant
+from fem_racket.cli.options.lists import add_options
 from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.mesh import frame_mesh
@@ -32,6 +33,22 @@ from fem_racket.validation import InputError, check_integer, work_begins
 #: Where the mesh goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "racket.vtu"
 
+#: The racket's specification: (option name, default, metavar, help) of each ``--option``.
+SPECIFICATION = (
+    ("length", None, "M", "length L [m] (required; no default)"),
+    ("mass", None, "KG", "mass [kg] (required; no default)"),
+    ("balance", None, "M", "balance point from the butt [m] (required; no default)"),
+    ("swing_weight", None, "KG_CM2", "moment of inertia about an axis 0.10 m from the butt "
+     "[kg cm^2] (required; no default)"),
+    ("f1", None, "HZ", "first free-free bending frequency [Hz] (default: none, EI1 = 146 N m^2 "
+     "kept)"),
+    ("twist_weight", None, "KG_CM2", "polar moment about the long axis [kg cm^2]: writes cell "
+     "data GJ and rhoIp (the standard racket's torsion profile scaled) so the frame takes "
+     "off-axis impacts (default: none, no torsion data)"),
+    ("torsion_frequency", None, "HZ", "first free-free torsion frequency [Hz], with "
+     "--twist-weight (default: the profile's own, 380 Hz on a 0.68 m frame)"),
+)  # fmt: skip
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``fit`` command."""
@@ -44,55 +61,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--balance 0.320 --swing-weight 316 --f1 150 --out racket.vtu",
     )
     g = p.add_argument_group("specification")
-    g.add_argument(
-        "--length",
-        type=float,
-        default=None,
-        metavar="M",
-        help="length L [m] (required; no default)",
-    )
-    g.add_argument(
-        "--mass", type=float, default=None, metavar="KG", help="mass [kg] (required; no default)"
-    )
-    g.add_argument(
-        "--balance",
-        type=float,
-        default=None,
-        metavar="M",
-        help="balance point from the butt [m] (required; no default)",
-    )
-    g.add_argument(
-        "--swing-weight",
-        type=float,
-        default=None,
-        metavar="KG_CM2",
-        help="moment of inertia about an axis 0.10 m from the butt [kg cm^2] (required; no "
-        "default)",
-    )
-    g.add_argument(
-        "--f1",
-        type=float,
-        default=None,
-        metavar="HZ",
-        help="first free-free bending frequency [Hz] (default: none, EI1 = 146 N m^2 kept)",
-    )
-    g.add_argument(
-        "--twist-weight",
-        type=float,
-        default=None,
-        metavar="KG_CM2",
-        help="polar moment about the long axis [kg cm^2]: writes cell data GJ and rhoIp (the "
-        "standard racket's torsion profile scaled) so the frame takes off-axis impacts "
-        "(default: none, no torsion data)",
-    )
-    g.add_argument(
-        "--torsion-frequency",
-        type=float,
-        default=None,
-        metavar="HZ",
-        help="first free-free torsion frequency [Hz], with --twist-weight (default: the "
-        "profile's own, 380 Hz on a 0.68 m frame)",
-    )
+    add_options(g, SPECIFICATION, type=float)
     g.add_argument(
         "--elements",
         type=int,

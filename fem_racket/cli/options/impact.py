@@ -32,6 +32,7 @@ __all__ = [
     "hand_from_args",
     "impact_kwargs",
     "swing_from_args",
+    "swing_kwargs",
 ]
 
 
@@ -115,6 +116,13 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
         "shoulder], so the impact point moves at V (x_i - P)/(x_ref - P) (default: none, the "
         "racket translates at V)",
     )
+
+
+def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
+    """The swing's options as the keywords ``racket_speed``, ``reference`` and ``pivot`` of the
+    maps (:func:`fem_racket.studies.racket_map.racket_map`, ``face_map``) and of compare's
+    ``Play``, which build the swing themselves."""
+    return {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
 
 
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
