@@ -21,6 +21,7 @@ from fem_racket.cli.common import (
     swing_kwargs,
 )
 from fem_racket.cli.options.lead import add_lead_option, leads_of
+from fem_racket.cli.options.output import add_overwrite_json
 
 #: Where the figure goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "compare.png"
@@ -94,10 +95,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="FILE",
         help=f"file(s): a figure .png/.svg/.pdf and/or maps .nc (default {DEFAULT_OUTPUT})",
     )
-    o.add_argument(
-        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
-    )
-    o.add_argument("--json", action="store_true", help="print a JSON object (default: a table)")
+    add_overwrite_json(o, "a JSON object")
     add_config_option(p, private=("out",), requires=("rackets",))
     p.set_defaults(func=run)
 

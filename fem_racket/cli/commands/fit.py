@@ -14,20 +14,18 @@ from pathlib import Path
 
 from fem_racket.cli.common import add_config_option, print_json, run_parameters, significant
 from fem_racket.cli.options.lists import add_options
-from fem_racket.cli.options.output import print_written
+from fem_racket.cli.options.output import (
+    add_overwrite_json,
+    mesh_files,
+    print_written,
+    write_mesh_files,
+)
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2, fit_racket, racket_spec
 from fem_racket.frame.torsion import TorsionModel
 from fem_racket.frame.twist_fit import fit_torsion
-from fem_racket.io.mesh_files import write_mesh
-from fem_racket.outputs import (
-    atomic_outputs,
-    check_output_path,
-    json_ready,
-    provenance,
-    sidecar_path,
-)
+from fem_racket.outputs import check_output_path, json_ready, provenance
 from fem_racket.validation import InputError, check_integer, work_begins
 
 #: Where the mesh goes unless --out is given.
@@ -77,10 +75,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help=f"mesh file to write (.vtu recommended; default {DEFAULT_OUTPUT}, replacing "
         "the mesh an earlier run wrote there); the specification and provenance go to FILE.json",
     )
-    o.add_argument(
-        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
-    )
-    o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
+    add_overwrite_json(o)
     add_config_option(
         p, private=("out", "elements"), requires=("length", "mass", "balance", "swing_weight")
     )
@@ -95,8 +90,9 @@ def run(args: argparse.Namespace) -> int:
             flag = "--" + name.replace("_", "-")
             raise InputError(f"{name} is required: give {flag} (or {name} in the run file's [fit])")
     out = Path(args.out)
-    overwrite = replace_own(args, out == DEFAULT_OUTPUT, [out, sidecar_path(out)])
-    for f in (out, sidecar_path(out)):
+    files = mesh_files(out)
+    overwrite = replace_own(args, out == DEFAULT_OUTPUT, files)
+    for f in files:
         check_output_path(f, overwrite=overwrite)
     work_begins()
     frame = fit_racket(
@@ -134,11 +130,8 @@ def run(args: argparse.Namespace) -> int:
     ]
     summary = {"target": target, "fitted": got, "segments": segments, "mesh": str(out)}
     meta = provenance(run_parameters(args))
-    # the mesh and its sidecar as one set: both or neither
-    with atomic_outputs([out, sidecar_path(out)], overwrite=overwrite) as (tmp, side):
-        write_mesh(mesh, tmp, overwrite=True)
-        text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
-        side.write_text(text + "\n", encoding="utf-8")
+    text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
+    write_mesh_files(mesh, out, text + "\n", overwrite=overwrite)
     if args.json:
         print_json(summary)
         return 0
@@ -151,5 +144,5 @@ def run(args: argparse.Namespace) -> int:
             f"segment {k + 1}: {s['length_m']:.4f} m, EI {significant(s['ei_n_m2'], 5)} N m^2, "
             f"rhoA {significant(s['rhoa_kg_m'], 5)} kg/m"
         )
-    print_written([out, sidecar_path(out)])
+    print_written(files)
     return 0
