@@ -14,6 +14,7 @@ from pathlib import Path
 
 from fem_racket.cli.common import (
     add_config_option,
+    add_speed_option,
     add_swing_options,
     print_json,
     print_written,
@@ -54,9 +55,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_lead_option(r)
     g = p.add_argument_group("play (the same for every racket)")
-    g.add_argument(
-        "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
-    )
+    add_speed_option(g, "ball speed [m/s] (default 20)")
     g.add_argument(
         "--point",
         type=float,

@@ -17,6 +17,7 @@ from pathlib import Path
 from fem_racket.cli.common import (
     add_config_option,
     add_frame_options,
+    add_speed_option,
     add_swing_options,
     frame_from_args,
     print_json,
@@ -52,9 +53,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_frame_options(p)
     add_target_options(p)
     m = p.add_argument_group("maps before and after")
-    m.add_argument(
-        "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
-    )
+    add_speed_option(m, "ball speed [m/s] (default 20)")
     add_swing_options(p)
     o = p.add_argument_group("output")
     o.add_argument(

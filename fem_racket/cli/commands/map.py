@@ -19,6 +19,7 @@ from typing import Any
 
 from fem_racket.cli.common import (
     add_config_option,
+    add_speed_option,
     add_swing_options,
     print_written,
     run_parameters,
@@ -97,13 +98,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_lead_option(r)
     g = p.add_argument_group("impact")
-    g.add_argument(
-        "--speed",
-        type=float,
-        default=20.0,
-        metavar="M_S",
-        help="incoming ball speed [m/s] (default 20)",
-    )
+    add_speed_option(g, "incoming ball speed [m/s] (default 20)")
     start, stop, num = DEFAULT_POSITIONS
     g.add_argument(
         "--positions",
