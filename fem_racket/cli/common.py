@@ -22,6 +22,7 @@ from __future__ import annotations
 from fem_racket.cli.options.frame import (
     MESH_EXCLUSIVE,
     add_ei_options,
+    add_elements_option,
     add_frame_options,
     add_mesh_option,
     build_model,
@@ -58,6 +59,7 @@ __all__ = [
     "OneLineErrorParser",
     "add_config_option",
     "add_ei_options",
+    "add_elements_option",
     "add_frame_options",
     "add_impact_options",
     "add_mesh_option",

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from fem_racket.cli.common import (
     add_config_option,
+    add_elements_option,
     add_speed_option,
     add_swing_options,
     print_json,
@@ -46,13 +47,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "+LOCATION:GRAMS (lead); at least two",
     )
     r = p.add_argument_group("rackets")
-    r.add_argument(
-        "--elements",
-        type=int,
-        default=20,
-        metavar="N",
-        help="beam elements of presets and segment frames (default 20)",
-    )
+    add_elements_option(r, "beam elements of presets and segment frames (default 20)")
     add_lead_option(r)
     g = p.add_argument_group("play (the same for every racket)")
     add_speed_option(g, "ball speed [m/s] (default 20)")

@@ -19,6 +19,7 @@ from typing import Any
 
 from fem_racket.cli.common import (
     add_config_option,
+    add_elements_option,
     add_speed_option,
     add_swing_options,
     print_written,
@@ -89,13 +90,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="mesh file(s) with cell data EI [N m^2] and rhoA [kg/m], e.g. from fem-racket fit "
         "(default: none)",
     )
-    r.add_argument(
-        "--elements",
-        type=int,
-        default=20,
-        metavar="N",
-        help="beam elements of a preset (default 20)",
-    )
+    add_elements_option(r, "beam elements of a preset (default 20)")
     add_lead_option(r)
     g = p.add_argument_group("impact")
     add_speed_option(g, "incoming ball speed [m/s] (default 20)")

@@ -11,6 +11,7 @@ from typing import Any
 from fem_racket.cli.options.frame import add_frame_options
 from fem_racket.cli.options.hand import HAND_OPTIONS, add_hand_options, hand_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
+from fem_racket.cli.options.lists import add_options
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
@@ -72,33 +73,21 @@ def add_speed_option(
     group.add_argument("--speed", type=float, default=20.0, metavar="M_S", help=text)
 
 
+#: (name, default, metavar, help) of the paper's linear ball/string law's options.
+LINEAR_LAW = (
+    ("kcb", None, "N_M", "ball/string stiffness K_CB [N/m] (default: from the speed)"),
+    ("zeta", None, "ZETA", "ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR "
+     "0.83)"),
+)  # fmt: skip
+
+
 def add_ball_options(
     group: argparse._ArgumentGroup, ball_mass: float | None = DEFAULT_BALL_MASS
 ) -> None:
-    """--ball-mass, --kcb and --zeta: the ball and the paper's linear ball/string law (the
-    commands of one impact, refine); ``ball_mass`` the default of --ball-mass (None: the
-    study's own)."""
-    group.add_argument(
-        "--ball-mass",
-        type=float,
-        default=ball_mass,
-        metavar="KG",
-        help=f"ball mass m_B [kg] (default {DEFAULT_BALL_MASS}; not stated in the paper)",
-    )
-    group.add_argument(
-        "--kcb",
-        type=float,
-        default=None,
-        metavar="N_M",
-        help="ball/string stiffness K_CB [N/m] (default: from the speed)",
-    )
-    group.add_argument(
-        "--zeta",
-        type=float,
-        default=None,
-        metavar="ZETA",
-        help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
-    )
+    """--ball-mass and the paper's linear ball/string law (--kcb, --zeta) of the commands of
+    one impact and refine; ``ball_mass`` the default of --ball-mass (None: the study's own)."""
+    text = f"ball mass m_B [kg] (default {DEFAULT_BALL_MASS}; not stated in the paper)"
+    add_options(group, [("ball_mass", ball_mass, "KG", text), *LINEAR_LAW], type=float)
 
 
 def add_separation_option(group: argparse._ArgumentGroup) -> None:
