@@ -16,11 +16,7 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
-from fem_racket.cli.options.impact import (
-    add_ball_options,
-    add_separation_option,
-    add_speed_option,
-)
+from fem_racket.cli.options.impact import add_ball_options, add_separation_option, add_speed_option
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.io.figure_files import check_dpi, figure_format
@@ -89,7 +85,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         + ")",
     )
     add_speed_option(i)
-    add_ball_options(i, ball_mass=None)  # None: the study's default, as in its provenance
+    add_ball_options(i, ball_mass=None)  # None: the study's own default
     add_separation_option(i)
     i.add_argument(
         "--impact-modes",

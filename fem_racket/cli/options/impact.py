@@ -40,6 +40,13 @@ __all__ = [
     "swing_kwargs",
 ]
 
+#: (name, default, metavar, help) of the paper's linear ball/string law's options.
+LINEAR_LAW = (
+    ("kcb", None, "N_M", "ball/string stiffness K_CB [N/m] (default: from the speed)"),
+    ("zeta", None, "ZETA", "ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR "
+     "0.83)"),
+)  # fmt: skip
+
 
 def add_impact_options(parser: argparse.ArgumentParser) -> None:
     """Frame options plus the ball, the ball/string law, the impact and the solver."""
@@ -71,14 +78,6 @@ def add_speed_option(
 ) -> None:
     """--speed M_S: the ball's speed before impact [m/s], 20 by default; ``text`` its help."""
     group.add_argument("--speed", type=float, default=20.0, metavar="M_S", help=text)
-
-
-#: (name, default, metavar, help) of the paper's linear ball/string law's options.
-LINEAR_LAW = (
-    ("kcb", None, "N_M", "ball/string stiffness K_CB [N/m] (default: from the speed)"),
-    ("zeta", None, "ZETA", "ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR "
-     "0.83)"),
-)  # fmt: skip
 
 
 def add_ball_options(
