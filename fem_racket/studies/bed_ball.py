@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
-from fem_racket.impact.strung import clamped_point
+from fem_racket.impact.strung.point import clamped_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.calibrate import TARGET_SETS
 
