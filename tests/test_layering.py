@@ -138,6 +138,8 @@ IMPACT_ROOMS = {
 }
 IMPACT_TOP = {
     "batch_solve",
+    "clamped_solve",
+    "engine_calls",
     "law_impact",
     "simulate",
     "simulate_law",
