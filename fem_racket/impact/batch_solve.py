@@ -35,7 +35,7 @@ from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.held.batch import HELD_EXTRA
 from fem_racket.impact.incidence import head_on
 from fem_racket.impact.law_impact import receptance
-from fem_racket.impact.oblique import free_normal, oblique_on
+from fem_racket.impact.oblique.solve import free_normal, oblique_on
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import Settings
 from fem_racket.impact.swing import ball_speed_out, closing_speed

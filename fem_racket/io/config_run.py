@@ -221,9 +221,9 @@ def _oblique(cfg: RunConfig, d: dict, hand: Any, model: Any, swing: Any, kwargs:
     (:func:`fem_racket.impact.simulate_oblique.simulate_oblique`, or a stroke with
     ``face_angle_deg``/``path_angle_deg``): an ObliqueResult."""
     from fem_racket.impact.incidence import Incidence
-    from fem_racket.impact.oblique_stroke import simulate_stroke
+    from fem_racket.impact.oblique.stroke import Stroke
     from fem_racket.impact.simulate_oblique import simulate_oblique
-    from fem_racket.impact.stroke import Stroke
+    from fem_racket.impact.simulate_stroke import simulate_stroke
 
     if hand is not None:
         raise InputError(f"[hand] ({cfg.source}) is not allowed with [oblique]: the racket is free")

@@ -1,7 +1,7 @@
 """The oblique impact's options of ``fem-racket simulate`` (``--angle``, ``--spin``,
 ``--friction``, ..., ``--clamped``, ``--face-angle``, ``--path-angle``): the run they ask for
 (:func:`fem_racket.impact.simulate_oblique.simulate_oblique` or
-:func:`fem_racket.impact.oblique_stroke.simulate_stroke`), its histories and its printed rows.
+:func:`fem_racket.impact.simulate_stroke.simulate_stroke`), its histories and its printed rows.
 
 Without any of these options ``simulate`` runs today's head-on impact, unchanged.
 """
@@ -26,7 +26,7 @@ from fem_racket.impact.incidence import (
     DEFAULT_FRICTION,
     Incidence,
 )
-from fem_racket.impact.stroke import Stroke
+from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.outputs import provenance
 from fem_racket.validation import InputError
 
@@ -228,8 +228,8 @@ def _stroke_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
 
 def oblique_from_args(args: argparse.Namespace, incidence: Incidence, hand: Any):
     """Check the options against the oblique impact and run it: an ``ObliqueResult``."""
-    from fem_racket.impact.oblique_stroke import simulate_stroke
     from fem_racket.impact.simulate_oblique import simulate_oblique
+    from fem_racket.impact.simulate_stroke import simulate_stroke
 
     _check(args, hand)
     stroke = stroke_from_args(args)

@@ -28,7 +28,7 @@ from fem_racket.cli.options.output import print_result, run_parameters, write_re
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.solvers import auto_method
-from fem_racket.impact.strung_impact import StrungImpact
+from fem_racket.impact.strung.impact import StrungImpact
 from fem_racket.outputs import provenance
 from fem_racket.strings.bed import EDGES, StringBed
 from fem_racket.strings.materials import STRINGS

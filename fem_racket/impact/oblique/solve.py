@@ -85,7 +85,7 @@ class ObliqueResult:
         The clamped head's K_CB and zeta (None on the free racket: in ``normal``).
     stroke : dict or None
         A stroke's face and path angles, the incidence they give and the launch angle
-        (:mod:`fem_racket.impact.oblique_stroke`), units in the keys.
+        (:mod:`fem_racket.impact.simulate_stroke`), units in the keys.
     """
 
     normal: ImpactResult | ClampedImpact | HeldRun
