@@ -4,7 +4,7 @@
 :func:`fem_racket.impact.reduction.split_modes` and its residual pseudo-mode), runs the
 compiled march (:mod:`fem_racket.impact.general.kernel`, numba, imported here only), which also
 integrates the outcome from the nodal histories as :mod:`fem_racket.impact.general.march` does. A
-case still in contact at the end of its span runs again with twice the span (up to ``t_max``).
+case marches on until it separates, up to ``t_max``.
 Laws of :mod:`fem_racket.contact` have kernels (:func:`kernel_law`); another law (a user's
 subclass) marches in numpy.
 """
@@ -26,7 +26,7 @@ from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
 from fem_racket.impact.reduction import split_modes
 
-__all__ = ["KernelLaw", "Checks", "kernel_law", "march_compiled"]
+__all__ = ["Checks", "KernelLaw", "MarchOptions", "kernel_law", "march_compiled"]
 
 #: Parameters of each law with a kernel, in the kernel's order (the kernel_laws.LAW_IDS list).
 _PARAMETERS = {
@@ -58,6 +58,17 @@ class KernelLaw:
     def take(self, idx: np.ndarray) -> KernelLaw:
         """The law of the cases ``idx``."""
         return KernelLaw(self.law, self.state, self.end, self.params[idx])
+
+
+@dataclass(frozen=True)
+class MarchOptions:
+    """How :func:`march_compiled` marches: ``extend`` (see
+    :func:`fem_racket.impact.general.kernel.march_cases`; False: the numpy march's equations,
+    to round-off) and whether the outcome has the nodal ``histories`` (False: none, a coarse
+    run whose COR alone is wanted)."""
+
+    extend: bool = True
+    histories: bool = True
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,33 +153,45 @@ def march_compiled(
     h: np.ndarray,
     span: np.ndarray,
     t_max: np.ndarray,
-    extend: bool = True,
+    options: MarchOptions = MarchOptions(),
 ) -> tuple[GeneralOutcome, Checks, np.ndarray]:
-    """Every case with its step ``h`` [s] over ``span`` [s] (doubled up to ``t_max`` while in
+    """Every case with its step ``h`` [s] over ``span`` [s] (on, up to ``t_max``, while in
     contact); returns the outcome, the checks and a status per case (0 separated, 1 still in
     contact at t_max, 2 Newton did not converge; the outcome is NaN where it is not 0).
-    ``extend``: see :func:`fem_racket.impact.general.kernel.march_cases` (False: the numpy
-    march's equations, to round-off)."""
+
+    A frame at rest: each case marches up to ``t_max`` at once (the kernel stops at its
+    separation). A moving frame: over ``span``, then twice the span (up to ``t_max``) for the
+    cases still in contact, whose free motion is tabulated per span. Newton's force scale and
+    whether the kernels run interpreted are set by ``span`` (the same in both).
+    """
     from fem_racket.impact.general import jit
 
     W, A2, nmode, kept = _modes(rec, omega_c, beta)
-    kind = (law.law, law.state, law.end, int(extend))
+    kind = (law.law, law.state, law.end, int(options.extend))
     ncase = speed.size
     runs = []
     todo = np.arange(ncase)
     span = span.copy()
+    scale = np.abs(speed) / (rec.compliance * span)
+    jit.prepare(int(np.max(np.ceil(span / h)).astype(np.int64) + 1))  # interpreted or compiled
+    if frame_velocity is None:
+        span = np.maximum(span, t_max)
     while todo.size:
         nsteps = np.maximum(np.ceil(span[todo] / h[todo]).astype(np.int64) + 1, ORDER + 2)
         sub = per_case(rec, ncase, todo)
-        scale = np.abs(speed[todo]) / (sub.compliance * span[todo])
         fdv = _free(sub, speed[todo], None if frame_velocity is None else frame_velocity[todo],
                     h[todo], nsteps)  # fmt: skip
-        cases = (sub.compliance, h[todo], nsteps, speed[todo], scale)
-        jit.prepare(int(nsteps.max()))  # interpreted or compiled (a lone first impact)
+        cases = (sub.compliance, h[todo], nsteps, speed[todo], scale[todo])
         from fem_racket.impact.general.kernel import march_cases
 
         H, res = march_cases(
-            kind, law.params[todo], (W[todo], A2[todo], nmode[todo]), cases, fdv, STENCILS
+            kind,
+            law.params[todo],
+            (W[todo], A2[todo], nmode[todo]),
+            cases,
+            fdv,
+            STENCILS,
+            options.histories,
         )
         again = (res[:, 2] == 1) & (span[todo] < t_max[todo])
         if np.any(again):
@@ -185,7 +208,7 @@ def march_compiled(
     ok = status == 0
     last = np.where(ok, res[:, 0], H.shape[2] - 1).astype(int)
     frac = np.where(ok, res[:, 1], 1.0)
-    width = int(last.max()) + 1
+    width = min(int(last.max()) + 1, H.shape[2])
     out = GeneralOutcome(
         contact_time=(last - 1 + frac) * h,
         ball_velocity=speed - res[:, 5] / rec.ball_mass,

@@ -142,10 +142,11 @@ def _continue_branch(H, m, kd0, kv0):
 @njit(**_JIT)
 def _case(kind, p, modes, grid, fdv, cs, H, res):
     """March one case (histories H = F, D, V, Z, G; ``modes`` = (omega, a^2) of the modes kept,
-    ``grid`` = (mu0, h, nodes, force scale), free motion fdv (2, >= nodes)) into ``res``."""
+    ``grid`` = (mu0, h, nodes, force scale, speed), free motion fdv (2, >= nodes): given, or
+    (speed NaN) the ball at ``speed`` on a frame at rest, filled node by node) into ``res``."""
     law, state, end, extend = kind
     w, a2 = modes
-    mu0, h, n, scale = grid
+    mu0, h, n, scale, v = grid
     e = np.exp(1j * w * h)
     Gw, c1, c2 = km.weights(w, h, cs)
     rigid = (mu0, h, c1, c2)
@@ -166,6 +167,8 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
         b = max(m - 3, 0)
         s = 0 if m >= 3 else m
         if m >= 4:
+            if v == v:  # at rest: the free motion up to node m only (the march stops early)
+                fdv[0, m], fdv[1, m] = v * (m * h), v
             f0, f1, f2 = H[_F, b], H[_F, b + 1], H[_F, b + 2]
             fd = f0 * c2[0, 0] + f1 * c2[0, 1] + f2 * c2[0, 2]
             fv = f0 * c1[0, 0] + f1 * c1[0, 1] + f2 * c1[0, 2]
@@ -200,7 +203,7 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
 
 
 @njit(**_JIT)
-def march_cases(kind, P, modes, cases, fdv, cs):
+def march_cases(kind, P, modes, cases, fdv, cs, keep):
     """March every case; see the module docstring.
 
     Parameters
@@ -218,30 +221,56 @@ def march_cases(kind, P, modes, cases, fdv, cs):
         (C,) compliance [1/kg], step [s], nodes, speed [m/s] and Newton's force scale [N].
     fdv : (C, 2, N) free delta and delta' (empty: the ball at ``speed`` on a frame at rest)
     cs : (3, 4, 4) Lagrange coefficients (cubic_force.STENCILS)
+    keep : bool
+        Return the histories (False: H has no columns).
 
     Returns
     -------
-    H : ndarray (C, 5, N)
-        F, delta, delta', z, z' at the nodes.
+    H : ndarray (C, 5, W)
+        F, delta, delta', z, z' at the nodes each case marched (zeros after them; W the most).
     res : ndarray (C, len(RESULTS))
         One row of :data:`RESULTS` per case.
+
+    Each case marches in one work array (zeroed after it where it wrote: every case starts as
+    if alone) and only as far as it needs, so ``nsteps`` may be generous (t_max) at no cost.
     """
     W, A2, nmode = modes
     mu0, h, nsteps, speed, scale = cases
     ncase, N = h.size, int(nsteps.max())
-    H = np.zeros((ncase, 5, N))
+    work = np.zeros((5, N))
     res = np.zeros((ncase, len(RESULTS)))
     res[:, 0] = -1.0
     given = fdv.shape[0] > 0
     free = np.empty((2, N))
+    used = np.zeros(ncase, dtype=np.int64)
+    start = np.zeros(ncase + 1, dtype=np.int64)
+    store = np.empty((5, 0))
     for c in range(ncase):
         n = nsteps[c]
-        for m in range(n):
-            if given:
+        v = np.nan
+        if given:
+            for m in range(n):
                 free[0, m], free[1, m] = fdv[c, 0, m], fdv[c, 1, m]
-            else:
-                free[0, m], free[1, m] = speed[c] * (m * h[c]), speed[c]
+        else:
+            v = speed[c]
+            for m in range(4):
+                free[0, m], free[1, m] = v * (m * h[c]), v
         k = nmode[c]
         p = (P[c, 0], P[c, 1], P[c, 2], P[c, 3])  # a tuple: no reference counts per node
-        _case(kind, p, (W[c, :k], A2[c, :k]), (mu0[c], h[c], n, scale[c]), free, cs, H[c], res[c])
+        grid = (mu0[c], h[c], n, scale[c], v)
+        _case(kind, p, (W[c, :k], A2[c, :k]), grid, free, cs, work, res[c])
+        u = min(max(int(res[c, 0]) + 1, 4), n) if res[c, 2] == 0.0 else n
+        used[c] = u
+        if keep:
+            start[c + 1] = start[c] + u
+            if start[c + 1] > store.shape[1]:  # grow the store of every case's histories
+                more = np.empty((5, max(2 * store.shape[1], start[c + 1], 64 * ncase)))
+                more[:, : start[c]] = store[:, : start[c]]
+                store = more
+            store[:, start[c] : start[c + 1]] = work[:, :u]
+        work[:, :u] = 0.0
+    H = np.zeros((ncase, 5, used.max() if keep else 0))
+    if keep:
+        for c in range(ncase):
+            H[c, :, : used[c]] = store[:, start[c] : start[c + 1]]
     return H, res

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.impact.general.compiled import Checks, KernelLaw, march_compiled
+from fem_racket.impact.general.compiled import Checks, KernelLaw, MarchOptions, march_compiled
 from fem_racket.impact.general.march import GeneralOutcome
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.general.step import per_case
@@ -143,8 +143,9 @@ def vouched(
         sub = per_case(rec, ncase, idx)
         fv = None if frame_velocity is None else frame_velocity[idx]
         h = t_case[idx] / (n_case[idx] * scale)
+        options = MarchOptions(histories=scale == 1.0)  # a coarse run: its COR alone
         out = march_compiled(law.take(idx), sub, speed[idx], fv, omega_c[idx], beta, h, span[idx],
-                             t_max[idx])  # fmt: skip
+                             t_max[idx], options)  # fmt: skip
         return sub, out
 
     quarter = np.zeros(ncase, dtype=bool)  # cors[:, 0] holds the run at a quarter of the steps
