@@ -24,6 +24,7 @@ from fem_racket.impact.general.cubic_force import ORDER, STENCILS
 from fem_racket.impact.general.march import GeneralOutcome
 from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
+from fem_racket.impact.general.stored import Stored, joined
 from fem_racket.impact.reduction import split_modes
 
 __all__ = ["Checks", "KernelLaw", "MarchOptions", "kernel_law", "march_compiled"]
@@ -154,10 +155,12 @@ def march_compiled(
     span: np.ndarray,
     t_max: np.ndarray,
     options: MarchOptions = MarchOptions(),
-) -> tuple[GeneralOutcome, Checks, np.ndarray]:
+) -> tuple[GeneralOutcome, Checks, np.ndarray, Stored]:
     """Every case with its step ``h`` [s] over ``span`` [s] (on, up to ``t_max``, while in
-    contact); returns the outcome, the checks and a status per case (0 separated, 1 still in
-    contact at t_max, 2 Newton did not converge; the outcome is NaN where it is not 0).
+    contact); returns the outcome (its histories empty), the checks, a status per case (0
+    separated, 1 still in contact at t_max, 2 Newton did not converge; the outcome is NaN where
+    it is not 0) and the nodal histories as stored (none without ``options.histories``; lay
+    them out with :func:`fem_racket.impact.general.stored.laid_out`).
 
     A frame at rest: each case marches up to ``t_max`` at once (the kernel stops at its
     separation). A moving frame: over ``span``, then twice the span (up to ``t_max``) for the
@@ -184,7 +187,7 @@ def march_compiled(
         cases = (sub.compliance, h[todo], nsteps, speed[todo], scale[todo])
         from fem_racket.impact.general.kernel import march_cases
 
-        H, res = march_cases(
+        store, start, res = march_cases(
             kind,
             law.params[todo],
             (W[todo], A2[todo], nmode[todo]),
@@ -194,38 +197,37 @@ def march_compiled(
             options.histories,
         )
         again = (res[:, 2] == 1) & (span[todo] < t_max[todo])
-        if np.any(again):
-            H, res = H[~again], res[~again]
-        runs.append((todo[~again], H, res))
+        here = np.flatnonzero(~again)
+        part = Stored(store, start[:-1], np.diff(start)).take(here)
+        runs.append((todo[here], part, res[here]))
         span[todo[again]] = np.minimum(2.0 * span[todo[again]], t_max[todo[again]])
         todo = todo[again]
-    if len(runs) > 1:  # cases that ran again: their longer histories
-        H = np.zeros((ncase, 5, max(r[1].shape[2] for r in runs)))
-        res = np.zeros((ncase, runs[0][2].shape[1]))
-        for idx, Hc, rc in runs:
-            H[idx, :, : Hc.shape[2]], res[idx] = Hc, rc
+    stored = joined([(idx, part) for idx, part, _ in runs], ncase)
+    res = np.zeros((ncase, runs[0][2].shape[1]))
+    for idx, _, rc in runs:
+        res[idx] = rc
     status = res[:, 2].astype(int)
     ok = status == 0
-    last = np.where(ok, res[:, 0], H.shape[2] - 1).astype(int)
+    last = np.where(ok, res[:, 0], np.maximum(stored.length - 1, 0)).astype(int)
     frac = np.where(ok, res[:, 1], 1.0)
-    width = min(int(last.max()) + 1, H.shape[2])
+    none = np.zeros((ncase, 0))  # the histories are laid out once, for the answers (stored)
     out = GeneralOutcome(
         contact_time=(last - 1 + frac) * h,
         ball_velocity=speed - res[:, 5] / rec.ball_mass,
         impulse=res[:, 5],
         peak_force=res[:, 6],
         step=h.copy(),
-        force=H[:, 0, :width],
-        deflection=H[:, 1, :width],
-        rate=H[:, 2, :width],
-        state=H[:, 3, :width],
+        force=none,
+        deflection=none,
+        rate=none,
+        state=none,
         last=last,
         fraction=frac,
         kept=kept,
     )
     if not np.all(ok):
         out = _blank(out, ~ok)
-    return out, Checks(res[:, 3], res[:, 4], res[:, 7], res[:, 8]), status
+    return out, Checks(res[:, 3], res[:, 4], res[:, 7], res[:, 8]), status, stored
 
 
 def _blank(out: GeneralOutcome, bad: np.ndarray) -> GeneralOutcome:

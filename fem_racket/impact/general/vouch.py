@@ -34,6 +34,7 @@ from fem_racket.impact.general.compiled import Checks, KernelLaw, MarchOptions, 
 from fem_racket.impact.general.march import GeneralOutcome
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.general.step import per_case
+from fem_racket.impact.general.stored import Stored
 from fem_racket.validation import show
 
 __all__ = ["MAX_DOUBLINGS", "STEP_SHARE", "STIFF_LIMIT", "Run", "energy_residual", "vouched"]
@@ -118,7 +119,7 @@ def vouched(
     steps: int,
     tol: float,
     limits: tuple[np.ndarray, np.ndarray],
-) -> tuple[list[GeneralOutcome], list[np.ndarray], Run]:
+) -> tuple[list[GeneralOutcome], list[np.ndarray], Run, list[tuple[np.ndarray, Stored]]]:
     """Every case at ``steps`` per contact time ``t_case`` [s] (and a quarter and half of it),
     doubled until accepted.
 
@@ -127,7 +128,9 @@ def vouched(
     by the contact time found (or an eighth of it) and the case starts again: the steps are
     set per contact time, so a law whose estimate is far too long (a ball much softer than its
     string bed) would otherwise be stepped too coarsely to resolve. Returns the outcomes and
-    the case indices they hold (every case once; NaN where refused) and the :class:`Run`.
+    the case indices they hold (every case once; NaN where refused), the :class:`Run`, and the
+    histories of the answers as stored (case indices,
+    :class:`~fem_racket.impact.general.stored.Stored`).
     """
     ncase = speed.size
     span, t_max = limits[0].copy(), limits[1]
@@ -156,9 +159,9 @@ def vouched(
 
     todo = np.arange(ncase)
     level(todo, 1)
-    parts, where = [], []
+    parts, where, histories = [], [], []
     for doubling in range(MAX_DOUBLINGS + 1):
-        sub, (out, chk, status) = run(todo, 1.0)
+        sub, (out, chk, status, stored) = run(todo, 1.0)
         cors[todo, 2] = -out.ball_velocity / speed[todo]
         short = ((status == 0) & (out.contact_time < 0.25 * t_case[todo])) | (status == 2)
         # twice the last difference bounds the estimate at any order p >= 1: where it passes,
@@ -181,6 +184,7 @@ def vouched(
             out = _refuse(out, ~ok)
         parts.append(per_case(out, todo.size, np.flatnonzero(done)))
         where.append(todo[done])
+        histories.append((todo[done], stored.take(np.flatnonzero(done))))
         n_case[todo[done & ~ok]] = 0
         if np.all(done):
             break
@@ -197,7 +201,7 @@ def vouched(
         if again.size:
             level(again, 1)
         todo = todo[~done]
-    return parts, where, Run(n_case, est, res, stiff, stuck)
+    return parts, where, Run(n_case, est, res, stiff, stuck), histories
 
 
 def _refuse(out: GeneralOutcome, bad: np.ndarray) -> GeneralOutcome:

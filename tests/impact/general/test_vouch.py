@@ -67,7 +67,7 @@ def test_compiled_march_solves_the_numpy_equations(standard_model, law):
     t_est = float(np.min(law.contact_time_estimate(1.0 / rec.compliance, 30.0)))
     h, span, oc = t_est / 150, 2 * t_est, np.array([np.pi / t_est])
     ref = march(law, rec, np.array([30.0]), None, oc, 12.0, span, h, False)
-    out, _, status = march_compiled(
+    out, _, status, _ = march_compiled(
         kernel_law(law, 1), rec, np.array([30.0]), None, oc, 12.0, np.array([h]),
         np.array([span]), np.array([16 * t_est]), MarchOptions(extend=False),
     )  # fmt: skip
