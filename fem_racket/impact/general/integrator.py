@@ -46,7 +46,7 @@ from fem_racket.impact.general.march import GeneralOutcome, march
 from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
 from fem_racket.impact.general.stored import laid_out
-from fem_racket.impact.general.vouch import STEP_SHARE, vouched
+from fem_racket.impact.general.vouch import STEP_SHARE, first_steps, vouched
 from fem_racket.impact.reduction import (
     DEFAULT_TOLERANCE,
     check_tolerance,
@@ -174,8 +174,9 @@ def solve_general(
     if beta_given is None and tol is not None:  # the cut-off's share of the tolerance
         beta = cutoff_factor(tol * (1.0 - STEP_SHARE))
     with lone_solve(ncase):
+        first = first_steps(steps, exponent, ncase)
         parts, where, run, stored = vouched(
-            kernel, rec, speed, frame_velocity, omega_c, beta, t_case, steps, target, limits
+            kernel, rec, speed, frame_velocity, omega_c, beta, t_case, first, target, limits
         )
     out = replace(_merge(parts, where, ncase), **laid_out(stored, ncase))
     if refused == "raise":

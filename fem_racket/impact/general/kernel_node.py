@@ -53,11 +53,12 @@ def newton(kind, p, lin, guess, prev, step):
     zp, zb, zc, d0, v0 = prev
     h, scale = step
     F, z = guess, zp
+    near = (0.0, 0.0)
     for _ in range(NEWTON_ITER):
         d, v = A - kd0 * F, B - kv0 * F
         if state == 1:
             z = max(zp, kl.turn_max(d0, v0, d, v, h))
-        f, fd, fv, fz = kl.force_partials(law, p, d, v, z)
+        f, fd, fv, fz, near = kl.force_partials(law, p, d, v, z, near)
         r1 = F - f
         tol = 1e-12 * (abs(F) + scale)
         if state == 2:
