@@ -158,12 +158,8 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
                 er, ei = Bw[0, j], Bw[1, j]
                 Y[0, j] = er * yr - ei * yi + Bw[2, j] * f0 + Bw[4, j] * f1 + Bw[k2, j] * f2
                 Y[1, j] = er * yi + ei * yr + Bw[3, j] * f0 + Bw[5, j] * f1 + Bw[k2 + 1, j] * f2
-            d0, d1, v0, v1 = (
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-            )  # two fixed partial sums: the same bits in any batch
+            # two fixed partial sums: the same bits in any batch
+            d0, d1, v0, v1 = 0.0, 0.0, 0.0, 0.0
             for j in range(half):
                 d0 += Y[1, 2 * j] * Bw[12, 2 * j]
                 d1 += Y[1, 2 * j + 1] * Bw[12, 2 * j + 1]
