@@ -128,9 +128,9 @@ class RunConfig:
 
     def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
         """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
-        ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_run.sweep_file`.
+        ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_sweep.sweep_file`.
         ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`)."""
-        from fem_racket.io.config_run import sweep_file
+        from fem_racket.io.config_sweep import sweep_file
 
         return sweep_file(self, backend=backend, workers=workers)
 
