@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from fem_racket.io.config_defaults import DEFAULT_STEP, given
 from fem_racket.io.config_keys import CORE_KEYS
 from fem_racket.validation import InputError, show
 
@@ -49,11 +50,15 @@ def _clamped(cfg: RunConfig, d: dict, hand: Any, inc: Any, stroke: Any) -> Any:
         raise InputError(
             f"[hand] ({cfg.source}) is not allowed with oblique.clamped: give one of them"
         )
+    changed = given(d)  # (a key at simulate's default changes nothing, as on the command line)
     others = sorted(
         key for dest, key in CORE_DEST_KEYS.items()
-        if dest in d and dest not in CLAMPED_TAKES and dest not in _OUTPUT
+        if dest in changed and dest not in CLAMPED_TAKES and dest not in _OUTPUT
         and not key.startswith("oblique.")
     )  # fmt: skip
+    step = cfg.table("simulate").get("output_step")
+    if step is not None and step != DEFAULT_STEP:
+        others.insert(0, f"simulate.output_step = {show(step)}")  # its histories: 400 times
     if others:
         raise InputError(
             f"{others[0]} ({cfg.source}) is not allowed with oblique.clamped: a clamped head "

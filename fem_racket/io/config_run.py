@@ -15,9 +15,7 @@ import dataclasses
 import math
 from typing import Any
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.io.config_defaults import DEFAULT_STEP, DEFAULTS
 from fem_racket.io.config_oblique import CORE_DEST_KEYS, oblique_file
 from fem_racket.strings.options import STRING_OPTIONS, bed_from_options
 from fem_racket.validation import InputError, show
@@ -39,26 +37,6 @@ HAND_KEYS = {
 #: Options (argparse dests) the hand-held racket does not take: it keeps its modes by the
 #: tolerance or all its DOFs and ends contact when the spring deflection falls to zero.
 NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
-#: The options of :func:`fem_racket.simulate` a file or the command line may set, with their
-#: defaults (the command line's parser states them too; ``tests/io/test_config_run.py`` compares
-#: them): an option at its default that was not given is left to the library.
-DEFAULTS: dict[str, Any] = {
-    "ball_mass": DEFAULT_BALL_MASS,
-    "kcb": None,
-    "zeta": None,
-    "solver": "auto",
-    "separation": "displacement",
-    "basis": "modal",
-    "modes": DEFAULT_MODES,
-    "tolerance": DEFAULT_TOLERANCE,
-    "t_max": None,
-    "rtol": 1e-10,
-    "atol": 1e-12,
-    "offset": 0.0,
-}
-#: The histories' output step [s] without ``output_step`` (the command's
-#: ``--output-step`` default, :class:`fem_racket.impact.settings.Settings`'s).
-DEFAULT_STEP = 1e-5
 
 
 def file_law(cfg: RunConfig) -> Any:

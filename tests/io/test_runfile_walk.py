@@ -74,6 +74,18 @@ TABLE_KEYS = {
     "animate.subdivide": "[animate]\nsubdivide = 2\n",
     "map.power_fraction": "[map]\npower_fraction = 0.8\n",
 }
+#: Keys at simulate's defaults: they change nothing, on the command line as in Python.
+AT_DEFAULT = {
+    "default.elements": "[frame]\nelements = 20\n",
+    "default.preset": '[frame]\npreset = "standard"\n',
+    "default.position": "[impact]\nposition_x_over_l = 0.75\n",
+    "default.swing": "[impact]\nracket_speed_m_s = 0.0\n",
+    "default.offset": "[impact]\noffset_m = 0.0\n",
+    "default.law": '[contact]\nlaw = "linear"\n',
+    "default.modes": "[solver]\nmodes = 80\n",
+    "default.solver": '[solver]\nname = "auto"\nseparation = "displacement"\n',
+    "default.step": "[simulate]\noutput_step = 1e-5\n",
+}
 #: Combinations of more than two that one run brings together.
 TRIPLES = [
     ("hand.window", "oblique.angle", "impact.swing"),
@@ -108,7 +120,7 @@ NEEDS = {"export-vtk": "pyvista", "animate": "imageio", "sensitivity": "SALib"}
 
 def merged(names) -> str:
     """The run file of the snippets ``names``, their tables merged."""
-    snippets = {**KEYS, **TABLE_KEYS}
+    snippets = {**KEYS, **TABLE_KEYS, **AT_DEFAULT}
     tables: dict[str, list[str]] = {}
     for name in names:
         head = None
@@ -168,6 +180,14 @@ def cwd(tmp_path, monkeypatch):
 @pytest.mark.parametrize("command", list(METHODS))
 def test_every_key_alone_and_the_meeting_combinations(cwd, command):
     combos = [(n,) for n in [*KEYS, *TABLE_KEYS]] + TRIPLES
+    assert walk(command, cwd, combos) == []
+
+
+@pytest.mark.parametrize("command", ["simulate", "export-vtk", "map", "refine"])
+def test_keys_at_their_defaults_change_nothing(cwd, command):
+    # alone, and with what refuses options given (a clamped head, a hand, a bed)
+    others = [(), ("oblique.clamped",), ("hand.grip",), ("strings.tension",)]
+    combos = [(n, *o) for n in AT_DEFAULT for o in others]
     assert walk(command, cwd, combos) == []
 
 
