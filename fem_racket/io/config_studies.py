@@ -151,10 +151,15 @@ def _key(cfg: RunConfig, command: str, dest: str) -> str:
     """The file's key setting option ``dest`` of ``command``, with its value, for a message."""
     from fem_racket.io.config_keys import CORE_KEYS
 
-    if dest in cfg.table(command):
-        return f"{command}.{dest} = {show(cfg.table(command)[dest])} ({cfg.source})"
-    key = next(f"{t}.{k}" for t, ks in CORE_KEYS.items() for k in ks if ks[k].dest == dest)
-    return f"{key} = {show(cfg.get(key))} ({cfg.source})"
+    named = {
+        keys[key].dest: f"{table}.{key} = {show(value)}"
+        for table, keys in CORE_KEYS.items()
+        for key, value in cfg.values.get(table, {}).items()
+    }
+    named.update(  # the command's table wins
+        {k.replace("-", "_"): f"{command}.{k} = {show(v)}" for k, v in cfg.table(command).items()}
+    )
+    return f"{named.get(dest, dest)} ({cfg.source})"
 
 
 def _refuse_spin(cfg: RunConfig, o: dict[str, Any], law: Any) -> None:

@@ -54,7 +54,7 @@ def test_strings_table_in_python_equals_the_command(capsys, tmp_path, extra):
 
 def test_a_hand_with_strings_is_refused_alike(capsys, tmp_path):
     path = tmp_path / "run.toml"
-    path.write_text(BED + '[hand]\ngrip = "firm"\n')
+    path.write_text(BED + "[hand]\ngrip = \"firm\"\n")
     with pytest.raises(InputError, match="not allowed with"):
         load_config(path).simulate()
     assert main(["simulate", "--config", str(path)]) == 2
