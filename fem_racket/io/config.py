@@ -9,10 +9,10 @@ A run file has fixed *core* tables, each key with its unit in its name::
     [impact]   position_x_over_l, speed_m_s
     [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string, edge,
                stretch
-               (any key: the string bed replaces the lumped K_CB; simulate)
+               (any key: the string bed replaces the lumped K_CB; simulate, export-vtk, animate)
     [oblique]  angle_deg, spin_rpm, friction, ball_inertia, ball_radius_m, compliance_ratio,
                side_angle_deg, side_spin_rpm, clamped, face_angle_deg, path_angle_deg
-               (any key: the oblique, spinning ball; simulate, and the axes of sweep and map)
+               (any key: the oblique, spinning ball; simulate, held too; the axes of sweep, map)
     [solver]   name, separation, basis, modes, rtol, atol, t_max_s
     [output]   out, overwrite
 
