@@ -43,8 +43,8 @@ _OUTPUT = ("clamped", "out", "overwrite")
 
 def _clamped(cfg: RunConfig, d: dict, hand: Any, inc: Any, stroke: Any) -> Any:
     """The clamped head of ``oblique.clamped = true``, as ``simulate --clamped``."""
-    from fem_racket.impact.simulate_stroke import simulate_stroke
     from fem_racket.impact.simulate_oblique import simulate_oblique
+    from fem_racket.impact.simulate_stroke import simulate_stroke
 
     if hand is not None:
         raise InputError(
@@ -93,9 +93,9 @@ def oblique_file(
         samples, unless the file gives one).
     """
     from fem_racket.impact.incidence import Incidence
-    from fem_racket.impact.simulate_stroke import simulate_stroke
-    from fem_racket.impact.simulate_oblique import simulate_oblique
     from fem_racket.impact.oblique.stroke import Stroke
+    from fem_racket.impact.simulate_oblique import simulate_oblique
+    from fem_racket.impact.simulate_stroke import simulate_stroke
 
     d = cfg.defaults()
     inc = Incidence(**{f: d[k] for k, f in INCIDENCE_FIELDS.items() if k in d})
