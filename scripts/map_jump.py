@@ -16,7 +16,6 @@ Usage: python scripts/map_jump.py [--out FILE] [--quick] [--overwrite] [--dpi N]
 
 from __future__ import annotations
 
-import argparse
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -26,6 +25,7 @@ import fem_racket as fr
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.io.figure_files import save_figure
 from fem_racket.outputs import provenance
+from fem_racket.paper.figures.script import figure_script_options
 
 LAW = "kawazoe-1997-nonlinear"
 #: The README's map: ball at 20 m/s, the racket turning about 0.1 m from the butt with its
@@ -67,17 +67,9 @@ def jump_position(low: float = 0.960, high: float = 0.965, tol: float = 1e-5) ->
 
 def main(argv: Sequence[str] | None = None) -> Path:
     """Compute the curve and the two histories, write the figure; returns its path."""
-    import matplotlib
-
-    matplotlib.use("Agg")
+    args = figure_script_options(__doc__.splitlines()[0], "output/paper/map_jump.png", argv)
     import matplotlib.pyplot as plt
 
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--out", default="output/paper/map_jump.png")
-    p.add_argument("--quick", action="store_true")
-    p.add_argument("--overwrite", action="store_true")
-    p.add_argument("--dpi", type=float, default=150)
-    args = p.parse_args(argv)
     grid = np.linspace(0.90, 1.0, 26 if args.quick else 201)
     m = fr.racket_map(speed=SPEED, racket_speed=RACKET_SPEED, pivot=PIVOT, law=LAW, positions=grid)
     x_jump = jump_position()

@@ -13,7 +13,6 @@ Usage: python scripts/oblique_spin.py [--out FILE] [--quick] [--overwrite] [--dp
 
 from __future__ import annotations
 
-import argparse
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -21,6 +20,7 @@ import numpy as np
 
 from fem_racket.io.figure_files import save_figure
 from fem_racket.outputs import provenance
+from fem_racket.paper.figures.script import figure_script_options
 from fem_racket.studies.oblique_sweep import oblique_sweep
 
 FRICTIONS = (0.2, 0.4)
@@ -29,17 +29,9 @@ SPEED = 25.0
 
 def main(argv: Sequence[str] | None = None) -> Path:
     """Compute the sweeps and write the figure; returns its path."""
-    import matplotlib
-
-    matplotlib.use("Agg")
+    args = figure_script_options(__doc__.splitlines()[0], "output/paper/oblique_spin.png", argv)
     import matplotlib.pyplot as plt
 
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--out", default="output/paper/oblique_spin.png")
-    p.add_argument("--quick", action="store_true")
-    p.add_argument("--overwrite", action="store_true")
-    p.add_argument("--dpi", type=float, default=150)
-    args = p.parse_args(argv)
     angles = np.linspace(0, 85, 4) if args.quick else np.arange(0.0, 86.0, 2.5)
     runs = {
         "clamped head": oblique_sweep(

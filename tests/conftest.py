@@ -26,7 +26,9 @@ def rigid_model() -> FrameModel:
 def local_cluster():
     """Make a local Dask cluster: one single-threaded worker process on 127.0.0.1, no dashboard
     (a factory, so that a test can make it inside its own ``dask.config.set``); skip without
-    ``distributed``."""
+    ``distributed``. The scheduler's HTTP server (metrics) still starts without a dashboard, on
+    port 8787 unless told otherwise: it takes a free port, so that another cluster on the
+    machine cannot make the test fail ("Port 8787 is already in use", a warning made an error)."""
     distributed = pytest.importorskip("distributed")
 
     def make():
@@ -36,6 +38,7 @@ def local_cluster():
             processes=True,
             host="127.0.0.1",
             dashboard_address=None,
+            scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
         )
 
     return make

@@ -235,37 +235,26 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
     name, speed, positions, elements = setup.name, setup.speed, setup.positions, setup.elements
     racket_speed, reference, pivot = setup.racket_speed, setup.reference, setup.pivot
     power_fraction = setup.power_fraction
-    ball_mass, kcb, zeta, separation = o.ball_mass, o.kcb, o.zeta, o.separation
-    modes, tolerance, law, kcb_factor = o.modes, o.tolerance, o.law, o.kcb_factor
     speed = check_positive("speed", speed, "m/s")
-    law = get_law(law) if isinstance(law, str) else law
+    law = get_law(o.law) if isinstance(o.law, str) else o.law
     if law is not None:
-        for key, value in (("kcb", kcb), ("zeta", zeta), ("kcb_factor", kcb_factor)):
+        for key, value in (("kcb", o.kcb), ("zeta", o.zeta), ("kcb_factor", o.kcb_factor)):
             if value is not None and not (key == "kcb_factor" and value == 1.0):
                 raise InputError(
                     f"{key} = {show(value)} is not allowed with contact law {show(law.name)}: "
                     "it sets the linear law's K_CB and zeta only"
                 )
-    ball_mass = Ball(ball_mass).mass
+    ball_mass = Ball(o.ball_mass).mass
     check_range("power_fraction", power_fraction, 0.0, 1.0, include_low=False)
-    if modes is not None:
-        check_integer("modes", modes)
+    if o.modes is not None:
+        check_integer("modes", o.modes)
     x = _grid(positions)
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
     length = model.mesh.length
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
     v_r = swing.speed_at(x * length)
     closing = np.array([closing_speed(speed, v) for v in v_r])
-    kwargs = dict(
-        ball_mass=ball_mass,
-        kcb=kcb,
-        zeta=zeta,
-        separation=separation,
-        modes=modes,
-        tolerance=tolerance,
-        law=law,
-        kcb_factor=kcb_factor,
-    )
+    kwargs = dict(vars(o), ball_mass=ball_mass, law=law)  # MapImpact, the mass and law resolved
 
     def e_a(s: float) -> float:
         v = closing_speed(speed, swing.speed_at(s * length))

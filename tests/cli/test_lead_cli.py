@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import catalogue
@@ -15,9 +15,7 @@ from fem_racket.frame.specs import KG_CM2
 
 
 def modes_json(capsys, *argv):
-    code, out, err = run(capsys, "modes", "--json", "--count", "1", *argv)
-    assert code == 0, err
-    return json.loads(out)
+    return run_json(capsys, "modes", "--count", "1", *argv)
 
 
 def test_modes_reports_swing_weight_and_the_lead(capsys):

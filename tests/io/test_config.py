@@ -4,22 +4,14 @@ provenance. Bad files are catalogued in test_bad_input.py."""
 import json
 
 import pytest
+from clirun import run, run_json
 
 from fem_racket import Frame, Segment, frame_mesh, load_config, standard_frame, write_mesh
-from fem_racket.cli import main
 from fem_racket.io.config import example_config, parse_config
 
 
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
 def simulate_json(capsys, *argv):
-    code, out, err = run(capsys, "simulate", "--json", *argv)
-    assert code == 0, err
-    return json.loads(out)
+    return run_json(capsys, "simulate", *argv)
 
 
 @pytest.fixture

@@ -6,8 +6,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from clirun import run
 
-from fem_racket.cli import main
 from fem_racket.io.config import example_config, parse_config
 from fem_racket.validation import InputError
 
@@ -144,20 +144,14 @@ def cwd(tmp_path, monkeypatch):
     return tmp_path
 
 
-def _run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_check_fails_where_the_command_fails(capsys, cwd, case):
     (cwd / "run.toml").write_text(case.toml)
-    code, out, err = _run(capsys, case.command, "--config", "run.toml")
+    code, out, err = run(capsys, case.command, "--config", "run.toml")
     assert code == 2 and out == "" and len(err.splitlines()) == 1, err
     for words in case.says:
         assert words in err, err
-    code, out, check = _run(capsys, "config", "--check", "run.toml")
+    code, out, check = run(capsys, "config", "--check", "run.toml")
     assert code == 2 and out == "" and len(check.splitlines()) == 1, check
     assert "run.toml: fem-racket " in check and "would refuse it" in check
     for words in case.says:
@@ -167,7 +161,7 @@ def test_check_fails_where_the_command_fails(capsys, cwd, case):
 
 def test_the_check_creates_nothing_and_lists_what_each_command_takes(capsys, cwd):
     (cwd / "run.toml").write_text(example_config())
-    code, out, err = _run(capsys, "config", "--check", "run.toml")
+    code, out, err = run(capsys, "config", "--check", "run.toml")
     assert code == 0, err
     lines = out.splitlines()
     assert lines[0] == "run.toml: ok"
@@ -182,8 +176,8 @@ def test_an_existing_output_is_the_folders_state_not_the_files(capsys, cwd):
     # The command refuses to replace it without --overwrite; the file itself is fine.
     (cwd / "run.toml").write_text("[simulate]\nout = 'r.json'\n")
     (cwd / "r.json").write_text("{}")
-    assert _run(capsys, "config", "--check", "run.toml")[0] == 0
-    code, _, err = _run(capsys, "simulate", "--config", "run.toml")
+    assert run(capsys, "config", "--check", "run.toml")[0] == 0
+    code, _, err = run(capsys, "simulate", "--config", "run.toml")
     assert code == 2 and "already exists" in err
 
 
@@ -213,12 +207,12 @@ def test_a_file_for_one_command_notes_what_another_would_refuse(capsys, cwd):
         '[contact]\nlaw = "hunt-crossley"\nhc_stiffness_n_m_n = 1e7\n'
         "[sweep]\nhc_exponent = [1.5, 2.0]\n"
     )
-    code, out, err = _run(capsys, "config", "--check", "run.toml")
+    code, out, err = run(capsys, "config", "--check", "run.toml")
     assert code == 0, err
     line = next(ln for ln in out.splitlines() if ln.startswith("[simulate]"))
     assert line.startswith("[simulate] not for this command: fem-racket simulate would refuse it")
     assert any(ln.startswith("[sweep] ") and "hc_exponent" in ln for ln in out.splitlines())
     # the same file with a [sweep] the sweep refuses fails
     (cwd / "run.toml").write_text('[contact]\nlaw = "series"\n[sweep]\nhc_exponent = [1.5, 2.0]\n')
-    code, _, err = _run(capsys, "config", "--check", "run.toml")
+    code, _, err = run(capsys, "config", "--check", "run.toml")
     assert code == 2 and "fem-racket sweep would refuse it" in err

@@ -5,6 +5,7 @@ file with the core tables a design reads (frame, ball, contact, the swing) and a
 import json
 
 import pytest
+from clirun import run_json
 
 from fem_racket import load_config
 from fem_racket.cli import main
@@ -32,18 +33,11 @@ backend = "serial"
 """
 
 
-def _cli(capsys, *argv):
-    code = main([str(a) for a in argv] + ["--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
-
-
 def test_optimize_in_python_is_the_command(capsys, tmp_path):
     path = tmp_path / "run.toml"
     path.write_text(DESIGN.format(table="design", extra='method = "SLSQP"\nmaxiter = 2'))
     r = load_config(path).optimize(tmp_path / "py")
-    cli = _cli(capsys, "optimize", "--config", path, "--out", tmp_path / "cli")
+    cli = run_json(capsys, "optimize", "--config", path, "--out", tmp_path / "cli")
     assert r.objective == cli["objective"] and r.start_objective == cli["start_objective"]
     # (the command prints 15 significant digits: 145.99999999999997 as 146.0)
     assert float(r.x[0]) == pytest.approx(cli["variables"]["ei"], rel=1e-14)
@@ -63,7 +57,7 @@ def test_sensitivity_in_python_is_the_command(capsys, tmp_path):
     text = DESIGN.format(table="sensitivity", extra="designs = 16\nseed = 3")
     path.write_text(text.replace("link_ei = true\n", ""))
     s = load_config(path).sensitivity()
-    cli = _cli(capsys, "sensitivity", "--config", path)
+    cli = run_json(capsys, "sensitivity", "--config", path)
     assert json.loads(json.dumps(sobol_json(s))) == cli
 
 

@@ -7,6 +7,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from clirun import run_json
 
 from fem_racket import load_config
 from fem_racket.cli import build_parser, main
@@ -78,18 +79,11 @@ def cwd(tmp_path, monkeypatch):
     return tmp_path
 
 
-def _cli_json(capsys, path):
-    code = main(["simulate", "--config", str(path), "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
-
-
 @pytest.mark.parametrize("name", list(FILES))
 def test_python_gives_the_clis_result_for_every_table(capsys, cwd, name):
     path = cwd / "run.toml"
     path.write_text(FILES[name])
-    cli = _cli_json(capsys, path)
+    cli = run_json(capsys, "simulate", "--config", path)
     (cwd / "r.json").unlink(missing_ok=True)
     result = load_config(path).simulate()
     # the same computation: every number bit for bit, once printed by the command's rule

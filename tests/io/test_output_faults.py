@@ -19,6 +19,7 @@ import time
 from pathlib import Path
 
 import pytest
+from clirun import run
 
 from fem_racket import InputError
 from fem_racket.cli import main
@@ -31,12 +32,6 @@ from fem_racket.outputs import (
 )
 
 NAME_MAX = os.pathconf("/", "PC_NAME_MAX") if hasattr(os, "pathconf") else 255
-
-
-def run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def listing(folder: Path) -> list[str]:

@@ -5,17 +5,11 @@
 import json
 
 import pytest
+from clirun import run_json
 
 from fem_racket import load_config
 from fem_racket.cli import main
 from fem_racket.validation import InputError
-
-
-def _json(capsys, *argv):
-    code = main([str(a) for a in argv] + ["--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
 
 
 def test_strings_stretch_key_is_the_option(capsys, tmp_path):
@@ -23,13 +17,13 @@ def test_strings_stretch_key_is_the_option(capsys, tmp_path):
     # which the library's "auto" picks for a stretching bed); stretch = false is the linear bed.
     path = tmp_path / "run.toml"
     path.write_text("[strings]\nstretch = true\n[impact]\nspeed_m_s = 40.0\n")
-    file = _json(capsys, "simulate", "--config", path, "--elements", 8)
-    cli = _json(capsys, "simulate", "--string-stretch", "--speed", 40, "--elements", 8)
+    file = run_json(capsys, "simulate", "--config", path, "--elements", 8)
+    cli = run_json(capsys, "simulate", "--string-stretch", "--speed", 40, "--elements", 8)
     assert file == cli
     assert file["string_stretch"] is True and file["solver"] == "cvode"
     path.write_text("[strings]\nstretch = false\n[impact]\nspeed_m_s = 40.0\n")
-    linear = _json(capsys, "simulate", "--config", path, "--elements", 8)
-    plain = _json(capsys, "simulate", "--string-tension", 246, "--speed", 40, "--elements", 8)
+    linear = run_json(capsys, "simulate", "--config", path, "--elements", 8)
+    plain = run_json(capsys, "simulate", "--string-tension", 246, "--speed", 40, "--elements", 8)
     assert linear == plain and linear["string_stretch"] is False
     assert linear["solver"] == "exact" and linear["contact_time_s"] > file["contact_time_s"]
     path.write_text('[strings]\nstretch = "yes"\n')
@@ -76,10 +70,10 @@ def test_side_keys_in_python_are_the_command(capsys, tmp_path):
 
     path = tmp_path / "run.toml"
     path.write_text(SIDE)
-    file = _json(capsys, "simulate", "--config", path)
-    cli = _json(capsys, "simulate", "--angle", 20, "--spin", 1500, "--side-angle", 15,
-                "--side-spin", -800, "--position", 0.7, "--offset", 0.03, "--speed", 30,
-                "--elements", 10)  # fmt: skip
+    file = run_json(capsys, "simulate", "--config", path)
+    cli = run_json(capsys, "simulate", "--angle", 20, "--spin", 1500, "--side-angle", 15,
+                   "--side-spin", -800, "--position", 0.7, "--offset", 0.03, "--speed", 30,
+                   "--elements", 10)  # fmt: skip
     assert file == cli
     assert file["side_angle_deg"] == 15.0 and file["side_spin_rpm"] == -800.0
     result = load_config(path).simulate()

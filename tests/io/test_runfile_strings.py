@@ -5,6 +5,7 @@ the axis and oblique, and a hand with a bed is refused alike."""
 import json
 
 import pytest
+from clirun import run_json
 
 from fem_racket import load_config
 from fem_racket.cli import main
@@ -20,13 +21,6 @@ pattern = "18x20"
 position_x_over_l = 0.76
 speed_m_s = 25.0
 """
-
-
-def _cli(capsys, path):
-    code = main(["simulate", "--config", str(path), "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
 
 
 def _same(python: dict, cli: dict) -> None:
@@ -47,14 +41,14 @@ def test_strings_table_in_python_equals_the_command(capsys, tmp_path, extra):
     path = tmp_path / "run.toml"
     path.write_text(BED + extra)
     python = load_config(path).simulate().summary()
-    cli = _cli(capsys, path)
+    cli = run_json(capsys, "simulate", "--config", path)
     _same(json.loads(json.dumps(python, default=str)), cli)
     assert cli["pattern"] == "18x20" and cli["string_tension_n"] == 270.0
 
 
 def test_a_hand_with_strings_is_refused_alike(capsys, tmp_path):
     path = tmp_path / "run.toml"
-    path.write_text(BED + "[hand]\ngrip = \"firm\"\n")
+    path.write_text(BED + '[hand]\ngrip = "firm"\n')
     with pytest.raises(InputError, match="not allowed with"):
         load_config(path).simulate()
     assert main(["simulate", "--config", str(path)]) == 2

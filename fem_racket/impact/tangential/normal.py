@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Protocol
 
 import numpy as np
@@ -126,8 +127,29 @@ def _piece_root(fun, a: float, b: float) -> float:
     return float(brentq(fun, a, b, xtol=1e-15 * max(b, 1e-300), rtol=4 * np.finfo(float).eps))
 
 
+class _ClosedFormNormal:
+    """What the closed-form histories share: the event-search grid of ``samples`` points over
+    [0, ``end``], and F, F' already smooth (``smooth_force`` and ``slope`` are exact)."""
+
+    samples: int
+    end: float
+
+    @cached_property
+    def grid(self) -> np.ndarray:
+        """Times [s] of the event search over the contact."""
+        return np.linspace(0.0, self.end, self.samples)
+
+    def slope(self, t):
+        """F' [N/s] (:meth:`rate`, exact)."""
+        return self.rate(t)
+
+    def smooth_force(self, t):
+        """F [N] (:meth:`force`, exact)."""
+        return self.force(t)
+
+
 @dataclass(frozen=True, eq=False)
-class ClampedNormal:
+class ClampedNormal(_ClosedFormNormal):
     """The paper's spring-dashpot on a clamped head (eqs 1-3), in closed form.
 
     delta(t) = V/omega_d exp(-zeta Omega t) sin(omega_d t); F = K delta + C delta' = -m delta''.
@@ -151,16 +173,14 @@ class ClampedNormal:
     zeta: float
     speed: float
     samples: int = 400
-    end: float = field(init=False)
-    grid: np.ndarray = field(init=False, repr=False)
 
-    def __post_init__(self) -> None:
+    @cached_property
+    def end(self) -> float:
+        """The force's return to zero [s]: where tan(omega_d t) = -2 zeta sqrt(1 - zeta^2) /
+        (1 - 2 zeta^2), in (pi/2, pi] / omega_d."""
         z = self.zeta
         wd = self._omega * math.sqrt(1.0 - z * z)
-        # F = 0 where tan(omega_d t) = -2 zeta sqrt(1 - zeta^2) / (1 - 2 zeta^2), in (pi/2, pi]
-        end = (math.pi - math.atan2(2.0 * z * math.sqrt(1.0 - z * z), 1.0 - 2.0 * z * z)) / wd
-        object.__setattr__(self, "end", end)
-        object.__setattr__(self, "grid", np.linspace(0.0, end, self.samples))
+        return (math.pi - math.atan2(2.0 * z * math.sqrt(1.0 - z * z), 1.0 - 2.0 * z * z)) / wd
 
     @property
     def _omega(self) -> float:
@@ -184,14 +204,6 @@ class ClampedNormal:
         _, v, a = self._states(t)
         return self.stiffness * v + 2.0 * self.zeta * math.sqrt(self.stiffness * self.mass) * a
 
-    def slope(self, t):
-        """F' [N/s] (:meth:`rate`, exact)."""
-        return self.rate(t)
-
-    def smooth_force(self, t):
-        """F [N] (:meth:`force`, exact)."""
-        return self.force(t)
-
     def impulse(self, t):
         return self.mass * (self.speed - self._states(t)[1])
 
@@ -201,7 +213,7 @@ class ClampedNormal:
 
 
 @dataclass(frozen=True, eq=False)
-class StrongeNormal:
+class StrongeNormal(_ClosedFormNormal):
     """Stronge's normal spring: k_n in compression, k_n / e^2 in restitution, from rest.
 
     F = m V omega_n sin(phi) with phi = omega_n t up to t_c = pi / (2 omega_n), then
@@ -227,13 +239,11 @@ class StrongeNormal:
     restitution: float
     speed: float
     samples: int = 400
-    end: float = field(init=False)
-    grid: np.ndarray = field(init=False, repr=False)
 
-    def __post_init__(self) -> None:
-        end = (1.0 + self.restitution) * self.compression_time
-        object.__setattr__(self, "end", end)
-        object.__setattr__(self, "grid", np.linspace(0.0, end, self.samples))
+    @cached_property
+    def end(self) -> float:
+        """t_f = (1 + e) t_c [s]."""
+        return (1.0 + self.restitution) * self.compression_time
 
     @property
     def omega(self) -> float:
@@ -260,14 +270,6 @@ class StrongeNormal:
     def rate(self, t):
         phi, scale = self._phase(t)
         return self.mass * self.speed * self.omega**2 * scale * np.cos(phi)
-
-    def slope(self, t):
-        """F' [N/s] (:meth:`rate`, exact)."""
-        return self.rate(t)
-
-    def smooth_force(self, t):
-        """F [N] (:meth:`force`, exact)."""
-        return self.force(t)
 
     def impulse(self, t):
         phi, scale = self._phase(t)

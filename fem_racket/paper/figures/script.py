@@ -1,4 +1,6 @@
-"""The shared ``main`` of the figure scripts in ``scripts/``: parse, compute one figure, write."""
+"""The shared start of the figure scripts in ``scripts/``: :func:`figure_main` parses, computes
+and writes one of the paper's figures; :func:`figure_script_options` starts a script that draws
+its own figure."""
 
 from __future__ import annotations
 
@@ -11,7 +13,7 @@ from fem_racket.io.figure_files import DEFAULT_DPI, FIGURE_FORMATS
 from fem_racket.outputs import OutputError
 from fem_racket.validation import InputError
 
-__all__ = ["figure_main"]
+__all__ = ["figure_main", "figure_script_options"]
 
 
 def figure_main(
@@ -71,3 +73,21 @@ def figure_main(
     for p in paths:
         print(p)
     return paths
+
+
+def figure_script_options(
+    description: str, default_out: str, argv: Sequence[str] | None
+) -> argparse.Namespace:
+    """The options of a script drawing one figure of its own, parsed from ``argv``: ``--out
+    FILE`` (default ``default_out``), ``--quick``, ``--overwrite`` and ``--dpi N`` (default
+    :data:`~fem_racket.io.figure_files.DEFAULT_DPI`). Selects matplotlib's Agg backend (the
+    scripts only write files), so the script imports ``matplotlib.pyplot`` after this call."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    p = argparse.ArgumentParser(description=description)
+    p.add_argument("--out", default=default_out)
+    p.add_argument("--quick", action="store_true")
+    p.add_argument("--overwrite", action="store_true")
+    p.add_argument("--dpi", type=float, default=DEFAULT_DPI)
+    return p.parse_args(argv)
