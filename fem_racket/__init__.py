@@ -52,6 +52,7 @@ _PUBLIC: dict[str, tuple[str, ...]] = {
         "rigid_impact",
         "rigid_impact_at",
     ),
+    "impact.clamped": ("ClampedHead", "ClampedImpact"),
     "impact.incidence": ("Incidence",),
     "impact.oblique": ("ObliqueResult", "solve_oblique"),
     "impact.simulate_oblique": ("simulate_oblique",),

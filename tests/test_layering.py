@@ -133,6 +133,8 @@ IMPACT_ROOMS = {
 }
 IMPACT_TOP = {
     "batch_solve",
+    "clamped_solve",
+    "engine_calls",
     "law_impact",
     "oblique",
     "oblique_stroke",

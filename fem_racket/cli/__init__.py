@@ -46,26 +46,19 @@ from fem_racket.validation import InputError, show
 
 __all__ = ["main"]
 
+#: Sub-commands whose module of :mod:`fem_racket.cli.commands` is not named after them.
+_MODULES = {"export-vtk": "vtk", "animate": "vtk"}
+
 #: Sub-command -> its module of :mod:`fem_racket.cli.commands` (which has ``register(sub)``), in
 #: the order ``--help`` lists them.
 COMMANDS = {
-    "simulate": "simulate",
-    "modes": "modes",
-    "sweep": "sweep",
-    "map": "map",
-    "fit": "fit",
-    "customise": "customise",
-    "closest": "closest",
-    "compare": "compare",
-    "export-vtk": "vtk",
-    "animate": "vtk",
-    "refine": "refine",
-    "reproduce": "reproduce",
-    "calibrate": "calibrate",
-    "optimize": "optimize",
-    "sensitivity": "sensitivity",
-    "config": "config",
-}
+    name: _MODULES.get(name, name)
+    for name in (
+        "simulate", "modes", "sweep", "map", "fit", "customise", "closest", "compare",
+        "export-vtk", "animate", "refine", "reproduce", "calibrate", "optimize", "sensitivity",
+        "config",
+    )
+}  # fmt: skip
 
 
 def _command_named(argv: Sequence[str]) -> str | None:

@@ -22,6 +22,7 @@ from __future__ import annotations
 from fem_racket.cli.options.frame import (
     MESH_EXCLUSIVE,
     add_ei_options,
+    add_elements_option,
     add_frame_options,
     add_mesh_option,
     build_model,
@@ -32,10 +33,12 @@ from fem_racket.cli.options.impact import (
     add_impact_options,
     add_output_step_option,
     add_solver_options,
+    add_speed_option,
     add_swing_options,
     check_output_step,
     impact_kwargs,
     swing_from_args,
+    swing_kwargs,
 )
 from fem_racket.cli.options.lists import number_list
 from fem_racket.cli.options.output import (
@@ -56,11 +59,13 @@ __all__ = [
     "OneLineErrorParser",
     "add_config_option",
     "add_ei_options",
+    "add_elements_option",
     "add_frame_options",
     "add_impact_options",
     "add_mesh_option",
     "add_output_options",
     "add_solver_options",
+    "add_speed_option",
     "add_swing_options",
     "add_output_step_option",
     "apply_config",
@@ -76,6 +81,7 @@ __all__ = [
     "run_parameters",
     "significant",
     "swing_from_args",
+    "swing_kwargs",
     "write_json",
     "write_text",
 ]

@@ -1,14 +1,16 @@
 """How each solver answers a :class:`~fem_racket.impact.problem_batch.ProblemBatch`.
 
-- :func:`engine_batch` (``exact``): the batched engine
-  (:func:`fem_racket.impact.exact.engine.impacts`), one call per frame of the batch, each case
-  at its closing speed v_in + v_r (the system is linear; K_CB follows the closing speed).
+- :func:`engine_batch` (``exact``): the batched engine, one call per frame of the batch or, when
+  the frames' modes go to it whole, one per group of frames with as many modes
+  (:mod:`fem_racket.impact.engine_calls`), each case at its closing speed v_in + v_r (the
+  system is linear; K_CB follows the closing speed).
 - :func:`law_batch` (``general``): every case of the batch, whatever its frame, in one call of
   the general integrator (:func:`fem_racket.impact.general.integrator.solve_general`), each
   case with its own frame receptance, step and modes, so its result does not depend on the
   batch it is in.
 - :func:`each_batch` (``cvode``, ``bdf``): one :class:`~fem_racket.impact.problem.ImpactProblem`
   after the other.
+- a batch of rackets held in a hand (``exact``): :func:`fem_racket.impact.held.batch.held_batch`.
 
 A swinging free racket struck at v_in is the stationary one struck at the closing speed
 v_c = v_in + v_r, and the ball leaves at v_out = e_A v_in + (1 + e_A) v_r for any contact law
@@ -27,11 +29,11 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
-from fem_racket.impact.exact.engine import impacts
-from fem_racket.impact.exact.inputs import EngineOptions
+from fem_racket.impact.engine_calls import grouped, per_frame, whole_modes
 from fem_racket.impact.general.batches import stack_receptances
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
+from fem_racket.impact.held.batch import HELD_EXTRA
 from fem_racket.impact.incidence import head_on
 from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.oblique import free_normal, oblique_on
@@ -88,28 +90,8 @@ def engine_batch(batch: ProblemBatch, settings: Settings) -> BatchOutcome:
     out = _nan(len(batch))
     v_r = batch.racket_speed()
     closing = _closing(batch, v_r)
-    for k in np.unique(batch.frame):
-        rows = np.flatnonzero(batch.frame == k)
-        try:
-            b = impacts(
-                batch.models[k],
-                position=batch.position[rows],
-                offset=batch.offset[rows],
-                speed=closing[rows],
-                kcb=None if batch.kcb is None else batch.kcb[rows],
-                zeta=None if batch.zeta is None else batch.zeta[rows],
-                ball_mass=batch.ball_mass[rows],
-                ei_factor=batch.ei_factor[rows],
-                options=EngineOptions(
-                    batch.separation or "displacement",
-                    settings.tolerance,
-                    batch.peak_force,
-                    settings.modes,
-                ),
-            )
-        except (AccuracyError, np.linalg.LinAlgError) as exc:  # the frame cannot be solved
-            log.warning("%d cases failed (NaN in the results): %s", rows.size, exc)
-            continue
+    calls = grouped if whole_modes(batch, settings) else per_frame
+    for rows, b in calls(batch, settings, closing):
         out["cor"][rows] = b.cor
         out["contact_time"][rows] = b.contact_time
         out["ball_speed_out"][rows] = ball_speed_out(b.cor, batch.speed[rows], v_r[rows])
@@ -245,11 +227,14 @@ def _solve_case(solver: Any, batch: ProblemBatch, i: int, model: Any, normals: d
 def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
     """Every case of a batch as its own problem by ``solver`` (checked; the ODE solvers, and
     every solver on a string bed or an oblique ball), the peak force the largest over the
-    solver's output times; oblique cases at one angle share their normal impact."""
+    solver's output times; oblique cases at one angle share their normal impact. A held
+    racket's modes kept are NaN (its integrators keep every DOF)."""
     n = len(batch)
     out = _nan(n)
-    names = (STRUNG_EXTRA if batch.strings is not None else ()) + (
-        OBLIQUE_EXTRA if batch.incidence is not None else ()
+    names = (
+        (STRUNG_EXTRA if batch.strings is not None else ())
+        + (OBLIQUE_EXTRA if batch.incidence is not None else ())
+        + (HELD_EXTRA if batch.held else ())
     )
     extra = {k: np.full(n, np.nan) for k in names}
     if batch.incidence is not None:
@@ -273,6 +258,11 @@ def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
             row = (r.cor, r.contact_time, r.cor * r.speed, r.peak_force, np.nan, np.nan)
             extra["stringbed_stiffness_n_m"][i] = r.point.bed_stiffness
             extra["stringbed_frequency_hz"][i] = r.point.bed_frequencies_hz[0]
+        elif problem.held:  # a HeldRun
+            row = (r.apparent_cor, r.contact_time, r.ball_speed_out, r.peak_force)
+            row += (problem.contact().stiffness, np.nan)
+            extra["grip_vibration_rms_n"][i] = r.grip_vibration_rms
+            extra["peak_grip_force_n"][i] = r.peak_grip_force
         else:
             kcb = problem.contact().stiffness if problem.linear else np.nan
             kept = np.nan if normal.n_modes is None else normal.n_modes  # None: physical basis

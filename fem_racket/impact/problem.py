@@ -2,8 +2,8 @@
 
 An impact problem states everything about one impact that does not depend on how it is solved:
 
-- the structure: a free frame (:class:`~fem_racket.frame.model.FrameModel`) or a frame held in a
-  hand (:class:`HeldRacket`);
+- the structure: a free frame (:class:`~fem_racket.frame.model.FrameModel`), a frame held in a
+  hand (:class:`HeldRacket`) or a clamped head (:class:`~fem_racket.impact.clamped.ClampedHead`);
 - the impact point x/L and the ball's speed V_B0 [m/s] towards the racket (:class:`Impact`),
   and the point's lateral offset from the long axis [m] (off axis the frame also twists,
   :mod:`fem_racket.impact.offaxis`; checked against the head outline);
@@ -33,10 +33,11 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import get_law
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.clamped import ClampedHead
 from fem_racket.impact.incidence import Incidence, check_incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.offaxis import check_offsets
-from fem_racket.impact.problem_checks import check_held, check_law
+from fem_racket.impact.problem_checks import check_held, check_law, check_structure
 from fem_racket.impact.strung import check_strung_problem, kawazoe_ball
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.strings.bed import StringBed
@@ -110,8 +111,8 @@ class ImpactProblem:
 
     Parameters
     ----------
-    structure : FrameModel or HeldRacket
-        What is struck: a free frame, or a frame held in a hand.
+    structure : FrameModel, HeldRacket or ClampedHead
+        What is struck: a free frame, a frame held in a hand, or a clamped head.
     impact : Impact
         Impact point x/L and ball speed V_B0 [m/s].
     ball : Ball
@@ -143,7 +144,7 @@ class ImpactProblem:
         An oblique, spinning ball; ``impact`` gives its full speed. None: head-on, no spin.
     """
 
-    structure: FrameModel | HeldRacket
+    structure: FrameModel | HeldRacket | ClampedHead
     impact: Impact = field(default_factory=lambda: Impact(0.75, 20.0))
     ball: Ball = field(default_factory=Ball)
     law: ContactLaw | None = None
@@ -157,11 +158,7 @@ class ImpactProblem:
     incidence: Incidence | None = None
 
     def __post_init__(self) -> None:
-        if not isinstance(self.structure, FrameModel | HeldRacket):
-            raise InputError(
-                f"structure = {self.structure!r} is not allowed: must be a FrameModel or a "
-                "HeldRacket"
-            )
+        check_structure(self)
         if self.separation is not None:
             check_choice("separation", self.separation, SEPARATIONS)
         if self.law is not None:
@@ -229,6 +226,11 @@ class ImpactProblem:
         return isinstance(self.structure, HeldRacket)
 
     @property
+    def clamped(self) -> bool:
+        """True when the head is clamped (no frame moves)."""
+        return isinstance(self.structure, ClampedHead)
+
+    @property
     def model(self) -> FrameModel:
         """The frame model (of the held racket too)."""
         return self.structure.model if self.held else self.structure
@@ -270,8 +272,10 @@ class ImpactProblem:
         return replace(self, **changes)
 
     def __repr__(self) -> str:
-        where = "held" if self.held else "free"
         law = "linear (paper)" if self.law is None else self.law.name
+        if self.clamped:
+            return f"ImpactProblem({self.structure!r}; {self.impact.speed:.4g} m/s; law {law})"
+        where = "held" if self.held else "free"
         if self.strings is not None and self.law is None:
             law = "kawazoe-1997-ball"
         motion = "at rest"

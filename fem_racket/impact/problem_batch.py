@@ -7,9 +7,10 @@ law's parameters, and the racket's rigid swing. A :class:`ProblemBatch` states t
 of one value per case; case ``i`` is the :class:`~fem_racket.impact.problem.ImpactProblem`
 :meth:`ProblemBatch.problem` returns, so a batch means exactly what its problems mean. A solver
 (:meth:`fem_racket.impact.solvers.Solver.solve_many`) answers a batch with a
-:class:`BatchOutcome` (arrays of one value per case, NaN where a case failed), choosing how:
-the exact solver by the batched engine, the general solver by one call of the general
-integrator over every case, the ODE solvers case by case.
+:class:`~fem_racket.impact.batch_outcome.BatchOutcome` (arrays of one value per case, NaN where
+a case failed), choosing how: the exact solver by the batched engine (by the held racket's modal
+path with a hand), the general solver by one call of the general integrator over every case, the
+ODE solvers case by case.
 
 The swing enters as each case's rigid racket motion :class:`~fem_racket.impact.swing.Swing`
 (butt speed and turning rate towards the ball); the impact point then moves at
@@ -18,21 +19,23 @@ v_r = v + omega x.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball
+from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.batch_outcome import BatchOutcome
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.problem import SEPARATIONS, Impact, ImpactProblem
+from fem_racket.impact.problem import SEPARATIONS, HeldRacket, Impact, ImpactProblem
 from fem_racket.impact.swing import Swing
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, check_choice
 
-__all__ = ["BatchOutcome", "ProblemBatch"]
+__all__ = ["BatchOutcome", "ProblemBatch"]  # BatchOutcome: from .batch_outcome
 
 #: The fields of one value per case (or one shared), besides the swing.
 _PER_CASE = ("position", "speed", "frame", "ei_factor", "offset", "ball_mass", "kcb", "zeta")
@@ -78,11 +81,16 @@ class ProblemBatch:
         ball; at rest when None.
     peak_force : bool
         Whether the outcome holds the largest contact force (the engine computes it only when
-        asked).
+        asked), and with a hand the largest grip force.
     strings : sequence of StringBed, or None
         Each case's string bed (:attr:`ImpactProblem.strings`); None: the lumped K_CB.
     incidence : sequence of Incidence, or None
         Each case's oblique, spinning ball (:attr:`ImpactProblem.incidence`); None: head-on.
+    hand : Hand or None
+        Every frame held in this hand (:class:`~fem_racket.impact.problem.HeldRacket`); None:
+        free rackets. Only with the paper's law, on the long axis, head-on and unstrung.
+    shock_window : float or None
+        Window of the held racket's shock measures [s] (its default when None); with a hand.
     """
 
     models: tuple[FrameModel, ...]
@@ -100,6 +108,8 @@ class ProblemBatch:
     peak_force: bool = False
     strings: Any = None
     incidence: Any = None
+    hand: Hand | None = None
+    shock_window: float | None = None
 
     def __post_init__(self) -> None:
         models = tuple(self.models)
@@ -145,6 +155,30 @@ class ProblemBatch:
             if len(value) != n or not all(isinstance(v, kind) for v in value):
                 raise InputError(f"{name} is not allowed: must be {n} {kind.__name__}s, one a case")
             set_(self, name, value)
+        if self.hand is not None or self.shock_window is not None:
+            self._check_held()
+
+    def _check_held(self) -> None:
+        """Refuse what a hand cannot take (one line); each frame's first case checked as its
+        problem (the grip on the handle, :func:`~fem_racket.impact.problem_checks.check_held`)."""
+        if self.hand is None:
+            raise InputError(
+                f"shock_window = {self.shock_window!r} s is not allowed without a hand: give a hand"
+            )
+        if not isinstance(self.hand, Hand):
+            raise InputError(f"hand = {self.hand!r} is not allowed: must be a Hand")
+        for name in ("law", "strings", "incidence"):
+            if getattr(self, name) is not None:
+                raise InputError(f"{name} is not allowed in a ProblemBatch with a hand")
+        if np.any(self.offset != 0.0):
+            raise InputError("offset is not allowed in a ProblemBatch with a hand: on the axis")
+        for k in np.unique(self.frame):
+            self.problem(int(np.flatnonzero(self.frame == k)[0]))
+
+    @property
+    def held(self) -> bool:
+        """True when the frames are held in a hand."""
+        return self.hand is not None
 
     @property
     def per_case(self) -> bool:
@@ -153,12 +187,12 @@ class ProblemBatch:
 
     @classmethod
     def of(cls, problem: ImpactProblem, **per_case: Any) -> ProblemBatch:
-        """Copies of the free racket's ``problem`` that differ in ``per_case`` fields (numbers
-        or arrays; ``strings`` and ``incidence`` sequences of one object per case)."""
-        if problem.held or problem.frame_velocity is not None:
+        """Copies of ``problem`` that differ in ``per_case`` fields (numbers or arrays;
+        ``strings`` and ``incidence`` sequences of one object per case)."""
+        if problem.frame_velocity is not None:
             raise InputError(
-                "problem is not allowed in a ProblemBatch: it takes a free racket at rest or "
-                "swinging (no hand, no frame_velocity)"
+                "problem is not allowed in a ProblemBatch: it takes a racket at rest or "
+                "swinging (no frame_velocity)"
             )
         swing = problem.swing
         fields: dict[str, Any] = {
@@ -180,6 +214,8 @@ class ProblemBatch:
         for name in ("strings", "incidence"):
             if name not in per_case and getattr(problem, name) is not None:
                 fields[name] = (getattr(problem, name),) * n
+        if problem.held:
+            fields.update(hand=problem.structure.hand, shock_window=problem.structure.shock_window)
         return cls((problem.model,), **fields)
 
     def __len__(self) -> int:
@@ -187,7 +223,8 @@ class ProblemBatch:
 
     def __repr__(self) -> str:
         law = "linear (paper)" if self.law is None else self.law.name
-        return f"ProblemBatch({len(self)} cases on {len(self.models)} frames; law {law})"
+        held = " held in a hand" if self.held else ""
+        return f"ProblemBatch({len(self)} cases on {len(self.models)} frames{held}; law {law})"
 
     # -- what the cases are -----------------------------------------------------------------
 
@@ -228,6 +265,8 @@ class ProblemBatch:
         swing = None
         if self.swing is not None and np.any(self.swing[i] != 0.0):
             swing = Swing(float(self.swing[i, 0]), float(self.swing[i, 1]))
+        if self.hand is not None:
+            model = HeldRacket(model, self.hand, self.shock_window)
         return ImpactProblem(
             model,
             Impact(float(self.position[i]), float(self.speed[i])),
@@ -240,55 +279,4 @@ class ProblemBatch:
             strings=None if self.strings is None else self.strings[i],
             offset=float(self.offset[i]),
             incidence=None if self.incidence is None else self.incidence[i],
-        )
-
-
-@dataclass(frozen=True, eq=False)
-class BatchOutcome:
-    """The outcome of a :class:`ProblemBatch`, one value per case (NaN where a case failed).
-
-    Attributes
-    ----------
-    cor : ndarray
-        Apparent COR e_A = (v_out - v_r) / (v_in + v_r) (the paper's COR at rest).
-    contact_time : ndarray
-        t_c [s].
-    ball_speed_out : ndarray
-        Ball speed after impact away from the racket, v_out [m/s].
-    peak_force : ndarray
-        Largest contact force [N] (NaN when not computed).
-    kcb : ndarray
-        K_CB used [N/m] (NaN under another law).
-    racket_speed : ndarray
-        v_r [m/s].
-    modes : ndarray
-        Flexible modes kept (NaN for the physical basis).
-    extra : dict of str to ndarray
-        Outputs of the string bed (``stringbed_stiffness_n_m``, ``stringbed_frequency_hz``) or
-        of the oblique impact (``ball_speed_out_m_s``, ``angle_out_deg``, ``spin_out_rpm``,
-        ``tangential_cor``, ``contact_regime`` as strings); empty otherwise. With an incidence
-        the fields above are the normal impact's (at V cos(angle)).
-    """
-
-    cor: np.ndarray
-    contact_time: np.ndarray
-    ball_speed_out: np.ndarray
-    peak_force: np.ndarray
-    kcb: np.ndarray
-    racket_speed: np.ndarray
-    modes: np.ndarray
-    extra: dict = field(default_factory=dict)
-
-    def columns(self) -> np.ndarray:
-        """The fields as columns, shape (cases, 7), in the order of the attributes."""
-        return np.column_stack(
-            [
-                self.cor,
-                self.contact_time,
-                self.ball_speed_out,
-                self.peak_force,
-                self.kcb,
-                self.racket_speed,
-                self.modes,
-            ]
         )

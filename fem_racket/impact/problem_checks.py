@@ -1,6 +1,7 @@
-"""The checks of an :class:`~fem_racket.impact.problem.ImpactProblem` that concern its contact
-law and its hand: each refuses, in one line, a field the rest of the problem cannot use. The
-problem is typed ``Any`` here: importing its class would make an import cycle (it calls these)."""
+"""The checks of an :class:`~fem_racket.impact.problem.ImpactProblem` that concern its structure
+(a clamped head), its contact law and its hand: each refuses, in one line, a field the rest of
+the problem cannot use. The problem is typed ``Any`` here: importing its class would make an
+import cycle (it calls these)."""
 
 from __future__ import annotations
 
@@ -10,9 +11,11 @@ from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.hand import check_grip
+from fem_racket.frame.model import FrameModel
+from fem_racket.impact.clamped import CENTRE, ClampedHead
 from fem_racket.validation import InputError, show
 
-__all__ = ["check_held", "check_law"]
+__all__ = ["check_held", "check_law", "check_structure"]
 
 
 def check_law(problem: Any) -> None:
@@ -20,7 +23,8 @@ def check_law(problem: Any) -> None:
     if not isinstance(problem.law, ContactLaw):
         raise InputError(f"law = {problem.law!r} is not allowed: must be a ContactLaw or None")
     check_linear_options(problem.law, kcb=problem.kcb, zeta=problem.zeta)
-    if problem.law is KAWAZOE_BALL and problem.strings is None:
+    bed = isinstance(problem.structure, ClampedHead) and problem.structure.strings is not None
+    if problem.law is KAWAZOE_BALL and problem.strings is None and not bed:
         raise InputError(
             "law = 'kawazoe-1997-ball' is not allowed without a string bed: it is the "
             "ball's own law, fitted in series with the bed (give strings, e.g. "
@@ -52,3 +56,35 @@ def check_held(problem: Any) -> None:
             "racket ends contact by the spring deflection (the paper's criterion)"
         )
     check_grip(problem.structure.hand, problem.model.mesh.length)
+
+
+def check_structure(problem: Any) -> None:
+    """Refuse a structure that is not a FrameModel, a HeldRacket or a ClampedHead, and on a
+    :class:`~fem_racket.impact.clamped.ClampedHead` what does not apply to a head that does not
+    move, struck head-on at its centre (one line)."""
+    if not (isinstance(problem.structure, FrameModel | ClampedHead) or problem.held):
+        raise InputError(
+            f"structure = {problem.structure!r} is not allowed: must be a FrameModel, a "
+            "HeldRacket or a ClampedHead"
+        )
+    if not problem.clamped:
+        return
+    why = {
+        "swing": "it does not move",
+        "frame_velocity": "it does not move",
+        "strings": "give the bed to the ClampedHead (ClampedHead(strings))",
+        "incidence": "it is struck head-on",
+    }
+    for name, reason in why.items():
+        if getattr(problem, name) is not None:
+            raise InputError(f"{name} is not allowed with a clamped head: {reason}")
+    if problem.offset != 0.0:
+        raise InputError(
+            f"offset = {show(problem.offset)} m is not allowed with a clamped head: it is struck "
+            "at its centre"
+        )
+    if problem.impact.position != CENTRE:
+        raise InputError(
+            f"position = {show(problem.impact.position)} x/L is not allowed with a clamped head: "
+            f"it is struck at its centre (leave the position at {CENTRE}, the default)"
+        )

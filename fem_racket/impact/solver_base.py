@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any, ClassVar
 
+from fem_racket.impact.clamped_solve import solve_clamped
 from fem_racket.impact.held.run import HeldSettings, held_impact
 from fem_racket.impact.oblique import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
@@ -22,6 +23,11 @@ from fem_racket.impact.strung_solve import check_strung
 from fem_racket.validation import InputError, show, work_begins
 
 __all__ = ["Solver"]
+
+#: Why a held racket refuses :attr:`Solver.held_refuses`.
+_HELD_WHY = (
+    "with a hand: the held racket keeps its modes by tolerance (exact) or all its DOFs (cvode, bdf)"
+)
 
 
 class Solver:
@@ -44,6 +50,10 @@ class Solver:
     hints: ClassVar[dict[str, str]] = {}
     #: Options it does not use on a hand-held racket, and why.
     held_refuses: ClassVar[tuple[str, ...]] = ("modes", "basis", "t_max")
+    #: Whether it solves impacts on a clamped head (:mod:`fem_racket.impact.clamped_solve`).
+    clamps: ClassVar[bool] = False
+    #: Options it does not use on a clamped head (whose modes are all kept).
+    clamped_refuses: ClassVar[tuple[str, ...]] = ("modes", "output_step", "t_max")
 
     def __init__(self, **options: Any) -> None:
         unknown = sorted(set(options) - set(SolverOptions.names()))
@@ -75,19 +85,27 @@ class Solver:
 
     def check(self, problem: ImpactProblem) -> None:
         """Refuse, in one line, a problem (or an option for it) this solver cannot do."""
+        if problem.clamped:
+            if not self.clamps:
+                raise InputError(
+                    f"solver = {self.name!r} is not allowed with a clamped head: use 'exact' "
+                    "(the paper's law) or 'general'"
+                )
+            self._refuse_options(
+                self.clamped_refuses,
+                "on a clamped head: every mode of the head is kept, and histories come only "
+                "from 'general', at its steps",
+            )
+            return
         if problem.strings is not None:
             check_strung(problem, self.name, self.options)
             return
         if problem.held:
-            self._refuse_options(
-                self.held_refuses,
-                "with a hand: the held racket keeps its "
-                "modes by tolerance (exact) or all its DOFs (cvode, bdf)",
-            )
+            self._refuse_options(self.held_refuses, _HELD_WHY)
 
     def solve(self, problem: ImpactProblem) -> Any:
         """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
-        StrungImpact with a string bed)."""
+        StrungImpact with a string bed, a ClampedImpact on a clamped head)."""
         self.check(problem)
         work_begins()  # fem-racket config --check stops here: every check has passed
         return self._outcome(problem)
@@ -105,11 +123,19 @@ class Solver:
         for p in problems:
             self.check(p)
         work_begins()
+        return self._many(problems)
+
+    def _many(self, problems: list[ImpactProblem]) -> list:
+        """Solve checked problems; on clamped heads all in one call per head."""
+        if problems and self.clamps and all(p.clamped for p in problems):
+            return solve_clamped(self.name, problems, self.options.settings())
         return [self._outcome(p) for p in problems]
 
     def _outcome(self, problem: ImpactProblem) -> Any:
         """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
         the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
+        if problem.clamped:
+            return self._many([problem])[0]
         if problem.incidence is not None:
             return solve_oblique(self, problem)
         return self._solve(problem)
@@ -117,8 +143,15 @@ class Solver:
     # -- helpers ------------------------------------------------------------------------------
 
     def _check_batch(self, batch: ProblemBatch) -> None:
-        """Refuse, in one line, a batch (or an option for it) this solver cannot do."""
-        self._refuse_options(("output_step", "t_max"), "on a ProblemBatch: it returns no histories")
+        """Refuse, in one line, a batch (or an option for it) this solver cannot do: output
+        times or a time limit (None, no histories, is what a batch does), and with a hand the
+        options a held racket does not use."""
+        given = self.options.given()
+        for key in ("output_step", "t_max"):
+            if given.get(key) is not None:
+                self._refuse_options((key,), "on a ProblemBatch: it returns no histories")
+        if batch.held:
+            self._refuse_options(self.held_refuses, _HELD_WHY)
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         raise NotImplementedError

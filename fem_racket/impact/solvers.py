@@ -33,6 +33,7 @@ from __future__ import annotations
 from typing import Any
 
 from fem_racket.impact.batch_solve import each_batch, engine_batch, law_batch
+from fem_racket.impact.held.batch import held_batch
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import SolverOptions
@@ -51,6 +52,7 @@ class ExactSolver(Solver):
 
     name = "exact"
     takes = ("tolerance", "modes", "output_step", "t_max")
+    clamps = True
     hints = {"basis": "must be 'modal' (the exact solution is in free-free modes)"}
 
     def check(self, problem: ImpactProblem) -> None:
@@ -66,6 +68,8 @@ class ExactSolver(Solver):
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         if batch.per_case:
             return each_batch(self, batch)
+        if batch.held:  # every mode unless a tolerance is asked, as a single held run
+            return held_batch(batch, self.options.given().get("tolerance"))
         return engine_batch(batch, self.options.settings())
 
     def _solve(self, problem: ImpactProblem) -> Any:
@@ -81,9 +85,13 @@ class GeneralSolver(Solver):
 
     name = "general"
     takes = ("tolerance", "output_step", "t_max")
+    clamps = True
+    clamped_refuses = ("output_step",)  # its histories are at the integrator's steps
 
     def check(self, problem: ImpactProblem) -> None:
-        if problem.strings is not None:
+        if problem.clamped:
+            super().check(problem)
+        elif problem.strings is not None:
             check_strung(problem, self.name, self.options)
         elif problem.held:
             raise InputError(
@@ -205,6 +213,12 @@ class AutoSolver(Solver):
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         return self.pick(batch)._batch(batch)
+
+    def _many(self, problems: list[ImpactProblem]) -> list:
+        if problems and all(p.clamped for p in problems):  # one call per head and method
+            if len({self.pick(p).name for p in problems}) == 1:
+                return self.pick(problems[0])._many(problems)
+        return super()._many(problems)
 
     def _solve(self, problem: ImpactProblem) -> Any:
         return self.pick(problem)._solve(problem)

@@ -4,7 +4,8 @@ The paper's compound ball/string spring K_CB becomes a ball in series with the s
 (:mod:`fem_racket.impact.strung`). The ball here is linear (Kelvin-Voigt: spring k_b, damping
 ratio zeta_b = c_b / (2 sqrt(m_B k_b))), so the exact engine carries it. It is fitted on the
 paper's racket as strung (246 N = 55 lb, 16 x 19, nylon, the default 645 cm^2 head; issue 25),
-clamped (the bed's edge fixed), the ball at the head's centre, to the paper's clamped targets of
+clamped (the bed's edge fixed: :class:`~fem_racket.impact.clamped.ClampedHead`, solved exactly
+with every bed mode), the ball at the head's centre, to the paper's clamped targets of
 :data:`fem_racket.studies.calibrate.TARGET_SETS` ``kawazoe-1997``: contact time 4.53 ms at 20 m/s
 and COR 0.83 (two equations, two unknowns, solved to ~1e-14).
 
@@ -28,8 +29,10 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
-from fem_racket.impact.strung import clamped_point
+from fem_racket.contact.linear import Ball
+from fem_racket.impact.clamped import CENTRE, ClampedHead
+from fem_racket.impact.problem import Impact, ImpactProblem
+from fem_racket.impact.solvers import make_solver
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.calibrate import TARGET_SETS
 
@@ -59,20 +62,20 @@ def fit_bed_ball(bed: StringBed | None = None, ball_mass: float = 0.057) -> BedB
     """Fit the linear ball on ``bed`` (the paper's racket as strung when None), clamped."""
     from scipy.optimize import fsolve
 
-    bed = StringBed() if bed is None else bed
-    point = clamped_point(bed)
-    w, a = point.flexible
+    head = ClampedHead(StringBed() if bed is None else bed)
+    point = head.point
+    ball, solver = Ball(ball_mass), make_solver("exact", tolerance=None)  # every bed mode
     targets = TARGET_SETS["kawazoe-1997"]
     tc20 = next(t.value for t in targets if t.quantity == "contact_time" and t.condition == 20.0)
     cor = next(t.value for t in targets if t.quantity == "cor")
 
-    def run(k: float, zeta: float, speed: Any):
-        return modal_impacts(w, a, 0.0, speed=speed, kcb=k, zeta=zeta, ball_mass=ball_mass,
-                             options=EngineOptions(tolerance=None))  # fmt: skip
+    def run(k: float, zeta: float, speeds: Any) -> list:
+        problems = [ImpactProblem(head, Impact(CENTRE, v), ball, kcb=k, zeta=zeta) for v in speeds]
+        return solver.solve_many(problems)
 
     def residual(x: np.ndarray) -> list[float]:
-        out = run(math.exp(x[0]), x[1], 20.0)
-        return [float(out.contact_time) / tc20 - 1.0, float(out.cor) - cor]
+        (out,) = run(math.exp(x[0]), x[1], [20.0])
+        return [out.contact_time / tc20 - 1.0, out.cor - cor]
 
     # start: the series spring giving the paper's K_CB at 20 m/s, a moderate damping ratio
     k0 = 1.0 / (1.0 / 2.74e4 - 1.0 / point.bed_stiffness)
@@ -83,7 +86,7 @@ def fit_bed_ball(bed: StringBed | None = None, ball_mass: float = 0.057) -> BedB
     rows = []
     for t in targets:
         i = int(np.flatnonzero(speeds == t.condition)[0])
-        model = float(out.cor[i] if t.quantity == "cor" else out.contact_time[i])
+        model = out[i].cor if t.quantity == "cor" else out[i].contact_time
         rows.append(
             {
                 "quantity": t.quantity,

@@ -14,7 +14,8 @@ Two target sets:
 
 Each family's parameters are fitted in log space by scipy ``least_squares`` on residuals scaled
 by the targets' tolerances, so a fit meets every target when all scaled residuals are within 1.
-Impacts are computed by the general integrator on a rigid support (no frame modes).
+Impacts are problems on a rigid support (:class:`~fem_racket.impact.clamped.ClampedHead`, no
+mode of its own) solved by the ``general`` solver (the general integrator).
 """
 
 from __future__ import annotations
@@ -28,12 +29,13 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.linear import LinearContact, check_ball_mass
+from fem_racket.contact.linear import Ball, LinearContact, check_ball_mass
 from fem_racket.contact.parameters import LawFit
 from fem_racket.contact.registry import FAMILIES as REGISTERED
 from fem_racket.contact.registry import LiveView
-from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.general.receptance import Receptance
+from fem_racket.impact.clamped import CENTRE, ClampedHead, ClampedImpact
+from fem_racket.impact.problem import Impact, ImpactProblem
+from fem_racket.impact.solvers import make_solver
 from fem_racket.studies.views import CalibrationView
 from fem_racket.validation import InputError, check_choice, work_begins
 
@@ -109,14 +111,21 @@ FAMILIES: Mapping[str, LawFit] = LiveView(
 )
 
 
+def _clamped(law: ContactLaw, speeds: Any, ball_mass: float) -> list[ClampedImpact]:
+    """A ball of ``ball_mass`` [kg] under ``law`` on a rigid support at each speed [m/s], by
+    the general solver (every speed in one integrator call)."""
+    head, ball = ClampedHead(), Ball(ball_mass)
+    problems = [
+        ImpactProblem(head, Impact(CENTRE, v), ball, law)
+        for v in np.atleast_1d(np.asarray(speeds, dtype=float))
+    ]
+    return make_solver("general").solve_many(problems)
+
+
 def clamped_impacts(law: ContactLaw, speeds: Any, ball_mass: float = 0.057) -> tuple[Any, Any]:
     """COR and contact time [s] of a ball of ``ball_mass`` [kg] on a rigid support."""
-    v = np.atleast_1d(np.asarray(speeds, dtype=float))
-    rec = Receptance(
-        np.zeros(0), np.zeros((v.size, 0)), np.zeros((v.size, 2)), np.full(v.size, ball_mass)
-    )
-    out = solve_general(law, rec, v, beta=None)
-    return -out.ball_velocity / v, out.contact_time
+    out = _clamped(law, speeds, ball_mass)
+    return np.array([r.cor for r in out]), np.array([r.contact_time for r in out])
 
 
 def _model_values(law: ContactLaw, targets: tuple[Target, ...], ball_mass: float) -> np.ndarray:
@@ -207,16 +216,7 @@ def clamped_histories(
     law: ContactLaw, speeds: Any, ball_mass: float = 0.057
 ) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
     """(time [s], deflection [m], force [N]) of a ball on a rigid support at each speed."""
-    v = np.atleast_1d(np.asarray(speeds, dtype=float))
-    rec = Receptance(
-        np.zeros(0), np.zeros((v.size, 0)), np.zeros((v.size, 2)), np.full(v.size, ball_mass)
-    )
-    out = solve_general(law, rec, v, beta=None)
-    rows = []
-    for i in range(v.size):
-        n = int(out.last[i]) + 1
-        rows.append((np.arange(n) * out.step[i], out.deflection[i, :n], out.force[i, :n]))
-    return rows
+    return [(r.time, r.deflection, r.force) for r in _clamped(law, speeds, ball_mass)]
 
 
 def run_file_table(law: ContactLaw) -> str:

@@ -108,3 +108,35 @@ def test_a_malformed_batch_is_refused(models, fields, words):
     fields.setdefault("speed", 20.0)
     with pytest.raises(InputError, match=words):
         ProblemBatch(models, position=[0.7, 0.8], **fields)
+
+
+@pytest.mark.parametrize("modes, tolerance", [(80, 1e-6), (7, 1e-6), (None, None), (12, None)])
+def test_frames_in_one_engine_call_give_each_case_its_own_bits(
+    models, monkeypatch, modes, tolerance
+):
+    # frames whose modes go whole to the engine share modal_impacts calls (engine_calls.grouped):
+    # every case as one engine call per frame gives it, to the bit, EI factors and swings too
+    import fem_racket.impact.batch_solve as batch_solve
+    from fem_racket.impact.engine_calls import whole_modes
+
+    rng = np.random.default_rng(2)
+    n = 30
+    frames = (*models, FrameModel.build(None, 20))  # two frames of 40 modes, one of 24
+    batch = ProblemBatch(
+        frames,
+        position=rng.uniform(0.5, 0.95, n),
+        speed=rng.uniform(15.0, 40.0, n),
+        frame=rng.integers(0, 3, n),
+        ei_factor=rng.choice([1.0, 0.7, 1.9], n),
+        swing=np.column_stack([rng.uniform(0.0, 3.0, n), rng.uniform(0.0, 20.0, n)]),
+        zeta=rng.uniform(0.0, 0.2, n),
+        peak_force=True,
+    )
+    solver = make_solver("exact", modes=modes, tolerance=tolerance)
+    assert whole_modes(batch, solver.options.settings())
+    together = solver.solve_many(batch)
+    monkeypatch.setattr(batch_solve, "whole_modes", lambda *args: False)
+    apart = solver.solve_many(batch)
+    assert np.array_equal(together.columns(), apart.columns())
+    # with static totals (a tolerance, every mode) or off the axis: one call per frame
+    assert not whole_modes(batch, make_solver("exact", modes=None).options.settings())

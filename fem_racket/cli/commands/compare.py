@@ -14,12 +14,16 @@ from pathlib import Path
 
 from fem_racket.cli.common import (
     add_config_option,
+    add_elements_option,
+    add_speed_option,
     add_swing_options,
     print_json,
     print_written,
     run_parameters,
+    swing_kwargs,
 )
 from fem_racket.cli.options.lead import add_lead_option, leads_of
+from fem_racket.cli.options.output import add_overwrite_json
 
 #: Where the figure goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "compare.png"
@@ -43,18 +47,10 @@ def register(sub: argparse._SubParsersAction) -> None:
         "+LOCATION:GRAMS (lead); at least two",
     )
     r = p.add_argument_group("rackets")
-    r.add_argument(
-        "--elements",
-        type=int,
-        default=20,
-        metavar="N",
-        help="beam elements of presets and segment frames (default 20)",
-    )
+    add_elements_option(r, "beam elements of presets and segment frames (default 20)")
     add_lead_option(r)
     g = p.add_argument_group("play (the same for every racket)")
-    g.add_argument(
-        "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
-    )
+    add_speed_option(g, "ball speed [m/s] (default 20)")
     g.add_argument(
         "--point",
         type=float,
@@ -93,10 +89,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="FILE",
         help=f"file(s): a figure .png/.svg/.pdf and/or maps .nc (default {DEFAULT_OUTPUT})",
     )
-    o.add_argument(
-        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
-    )
-    o.add_argument("--json", action="store_true", help="print a JSON object (default: a table)")
+    add_overwrite_json(o, "a JSON object")
     add_config_option(p, private=("out",), requires=("rackets",))
     p.set_defaults(func=run)
 
@@ -123,13 +116,11 @@ def run(args: argparse.Namespace) -> int:
     ]
     play = Play(
         speed=args.speed,
-        racket_speed=args.racket_speed,
-        reference=args.reference,
-        pivot=args.pivot,
         positions=as_values("position", args.positions),
         position=args.point,
         grip=args.grip,
         offsets=None if args.offsets is None else as_values("offset", args.offsets),
+        **swing_kwargs(args),
     )
     work_begins()
     reports = compare(setups, play)

@@ -17,13 +17,16 @@ from pathlib import Path
 from fem_racket.cli.common import (
     add_config_option,
     add_frame_options,
+    add_speed_option,
     add_swing_options,
     frame_from_args,
     print_json,
     print_written,
     run_parameters,
     significant,
+    swing_kwargs,
 )
+from fem_racket.cli.options.output import add_overwrite_json, mesh_files, write_mesh_files
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
@@ -50,9 +53,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_frame_options(p)
     add_target_options(p)
     m = p.add_argument_group("maps before and after")
-    m.add_argument(
-        "--speed", type=float, default=20.0, metavar="M_S", help="ball speed [m/s] (default 20)"
-    )
+    add_speed_option(m, "ball speed [m/s] (default 20)")
     add_swing_options(p)
     o = p.add_argument_group("output")
     o.add_argument(
@@ -67,10 +68,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="FILE",
         help=f"maps before and after: .png, .nc or .csv (default {DEFAULT_MAPS})",
     )
-    o.add_argument(
-        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
-    )
-    o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
+    add_overwrite_json(o)
     add_config_option(p, private=("out",), requires=("a target: swing_weight, balance, mass",))
     p.set_defaults(func=run)
 
@@ -79,15 +77,15 @@ def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
-    from fem_racket.io.mesh_files import write_mesh
-    from fem_racket.outputs import atomic_outputs, check_output_path, provenance, sidecar_path
+    from fem_racket.outputs import check_output_path, provenance
     from fem_racket.studies.customise import customise
     from fem_racket.studies.racket_map import racket_map
     from fem_racket.validation import work_begins
 
     places = places_of(args)
     out, maps_path = Path(args.out), Path(args.maps)
-    for f in (out, sidecar_path(out)):
+    files = mesh_files(out)
+    for f in files:
         check_output_path(f, overwrite=args.overwrite)
     check_map_outputs([maps_path], overwrite=args.overwrite)
     map_files = [t.path for t in map_targets([maps_path])]
@@ -96,9 +94,8 @@ def run(args: argparse.Namespace) -> int:
     targets = targets_from_args(args, catalogue(mesh, f1=False))
     work_begins()
     result = customise(mesh, targets, places)
-    swing = {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
     maps = [
-        racket_map(m, name=name, speed=args.speed, **swing)
+        racket_map(m, name=name, speed=args.speed, **swing_kwargs(args))
         for name, m in (("before", mesh), ("customised", result.mesh))
     ]
     summary = result.summary()
@@ -106,9 +103,8 @@ def run(args: argparse.Namespace) -> int:
     summary["maps"] = {m.name: m.summary(curves=False) for m in maps}
     summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
     meta = provenance(run_parameters(args))
-    with atomic_outputs([out, sidecar_path(out)], overwrite=args.overwrite) as (tmp, side):
-        write_mesh(result.mesh, tmp, overwrite=True)
-        side.write_text(json.dumps({**meta, **summary}, indent=2, default=str) + "\n")
+    text = json.dumps({**meta, **summary}, indent=2, default=str)
+    write_mesh_files(result.mesh, out, text + "\n", overwrite=args.overwrite)
     write_maps(maps, [maps_path], overwrite=args.overwrite, parameters=run_parameters(args))
     if args.json:
         print_json(summary)
@@ -125,5 +121,5 @@ def run(args: argparse.Namespace) -> int:
         spots = summary["maps"][name]
         best = significant(spots["max_apparent_cor_x_over_l"], 4)
         print(f"{'max e_A ' + name:<24} {best:>12} x/L")
-    print_written([out, sidecar_path(out), *map_files])
+    print_written([*files, *map_files])
     return 0

@@ -13,24 +13,39 @@ import json
 from pathlib import Path
 
 from fem_racket.cli.common import add_config_option, print_json, run_parameters, significant
-from fem_racket.cli.options.output import print_written
+from fem_racket.cli.options.lists import add_options
+from fem_racket.cli.options.output import (
+    add_overwrite_json,
+    mesh_files,
+    print_written,
+    write_mesh_files,
+)
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2, fit_racket, racket_spec
 from fem_racket.frame.torsion import TorsionModel
 from fem_racket.frame.twist_fit import fit_torsion
-from fem_racket.io.mesh_files import write_mesh
-from fem_racket.outputs import (
-    atomic_outputs,
-    check_output_path,
-    json_ready,
-    provenance,
-    sidecar_path,
-)
+from fem_racket.outputs import check_output_path, json_ready, provenance
 from fem_racket.validation import InputError, check_integer, work_begins
 
 #: Where the mesh goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "racket.vtu"
+
+#: The racket's specification: (option name, default, metavar, help) of each ``--option``.
+SPECIFICATION = (
+    ("length", None, "M", "length L [m] (required; no default)"),
+    ("mass", None, "KG", "mass [kg] (required; no default)"),
+    ("balance", None, "M", "balance point from the butt [m] (required; no default)"),
+    ("swing_weight", None, "KG_CM2", "moment of inertia about an axis 0.10 m from the butt "
+     "[kg cm^2] (required; no default)"),
+    ("f1", None, "HZ", "first free-free bending frequency [Hz] (default: none, EI1 = 146 N m^2 "
+     "kept)"),
+    ("twist_weight", None, "KG_CM2", "polar moment about the long axis [kg cm^2]: writes cell "
+     "data GJ and rhoIp (the standard racket's torsion profile scaled) so the frame takes "
+     "off-axis impacts (default: none, no torsion data)"),
+    ("torsion_frequency", None, "HZ", "first free-free torsion frequency [Hz], with "
+     "--twist-weight (default: the profile's own, 380 Hz on a 0.68 m frame)"),
+)  # fmt: skip
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -44,55 +59,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--balance 0.320 --swing-weight 316 --f1 150 --out racket.vtu",
     )
     g = p.add_argument_group("specification")
-    g.add_argument(
-        "--length",
-        type=float,
-        default=None,
-        metavar="M",
-        help="length L [m] (required; no default)",
-    )
-    g.add_argument(
-        "--mass", type=float, default=None, metavar="KG", help="mass [kg] (required; no default)"
-    )
-    g.add_argument(
-        "--balance",
-        type=float,
-        default=None,
-        metavar="M",
-        help="balance point from the butt [m] (required; no default)",
-    )
-    g.add_argument(
-        "--swing-weight",
-        type=float,
-        default=None,
-        metavar="KG_CM2",
-        help="moment of inertia about an axis 0.10 m from the butt [kg cm^2] (required; no "
-        "default)",
-    )
-    g.add_argument(
-        "--f1",
-        type=float,
-        default=None,
-        metavar="HZ",
-        help="first free-free bending frequency [Hz] (default: none, EI1 = 146 N m^2 kept)",
-    )
-    g.add_argument(
-        "--twist-weight",
-        type=float,
-        default=None,
-        metavar="KG_CM2",
-        help="polar moment about the long axis [kg cm^2]: writes cell data GJ and rhoIp (the "
-        "standard racket's torsion profile scaled) so the frame takes off-axis impacts "
-        "(default: none, no torsion data)",
-    )
-    g.add_argument(
-        "--torsion-frequency",
-        type=float,
-        default=None,
-        metavar="HZ",
-        help="first free-free torsion frequency [Hz], with --twist-weight (default: the "
-        "profile's own, 380 Hz on a 0.68 m frame)",
-    )
+    add_options(g, SPECIFICATION, type=float)
     g.add_argument(
         "--elements",
         type=int,
@@ -108,10 +75,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help=f"mesh file to write (.vtu recommended; default {DEFAULT_OUTPUT}, replacing "
         "the mesh an earlier run wrote there); the specification and provenance go to FILE.json",
     )
-    o.add_argument(
-        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
-    )
-    o.add_argument("--json", action="store_true", help="print a JSON summary (default: a table)")
+    add_overwrite_json(o)
     add_config_option(
         p, private=("out", "elements"), requires=("length", "mass", "balance", "swing_weight")
     )
@@ -126,8 +90,9 @@ def run(args: argparse.Namespace) -> int:
             flag = "--" + name.replace("_", "-")
             raise InputError(f"{name} is required: give {flag} (or {name} in the run file's [fit])")
     out = Path(args.out)
-    overwrite = replace_own(args, out == DEFAULT_OUTPUT, [out, sidecar_path(out)])
-    for f in (out, sidecar_path(out)):
+    files = mesh_files(out)
+    overwrite = replace_own(args, out == DEFAULT_OUTPUT, files)
+    for f in files:
         check_output_path(f, overwrite=overwrite)
     work_begins()
     frame = fit_racket(
@@ -165,11 +130,8 @@ def run(args: argparse.Namespace) -> int:
     ]
     summary = {"target": target, "fitted": got, "segments": segments, "mesh": str(out)}
     meta = provenance(run_parameters(args))
-    # the mesh and its sidecar as one set: both or neither
-    with atomic_outputs([out, sidecar_path(out)], overwrite=overwrite) as (tmp, side):
-        write_mesh(mesh, tmp, overwrite=True)
-        text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
-        side.write_text(text + "\n", encoding="utf-8")
+    text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
+    write_mesh_files(mesh, out, text + "\n", overwrite=overwrite)
     if args.json:
         print_json(summary)
         return 0
@@ -182,5 +144,5 @@ def run(args: argparse.Namespace) -> int:
             f"segment {k + 1}: {s['length_m']:.4f} m, EI {significant(s['ei_n_m2'], 5)} N m^2, "
             f"rhoA {significant(s['rhoa_kg_m'], 5)} kg/m"
         )
-    print_written([out, sidecar_path(out)])
+    print_written(files)
     return 0

@@ -19,13 +19,21 @@ from typing import Any
 
 from fem_racket.cli.common import (
     add_config_option,
+    add_elements_option,
+    add_speed_option,
     add_swing_options,
-    print_json,
     print_written,
     run_parameters,
     significant,
+    swing_kwargs,
 )
-from fem_racket.cli.options.faces import add_face_options, face_asked, run_face
+from fem_racket.cli.options.faces import (
+    add_face_options,
+    face_asked,
+    map_impact,
+    print_maps_json,
+    run_face,
+)
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
@@ -82,22 +90,10 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="mesh file(s) with cell data EI [N m^2] and rhoA [kg/m], e.g. from fem-racket fit "
         "(default: none)",
     )
-    r.add_argument(
-        "--elements",
-        type=int,
-        default=20,
-        metavar="N",
-        help="beam elements of a preset (default 20)",
-    )
+    add_elements_option(r, "beam elements of a preset (default 20)")
     add_lead_option(r)
     g = p.add_argument_group("impact")
-    g.add_argument(
-        "--speed",
-        type=float,
-        default=20.0,
-        metavar="M_S",
-        help="incoming ball speed [m/s] (default 20)",
-    )
+    add_speed_option(g, "incoming ball speed [m/s] (default 20)")
     start, stop, num = DEFAULT_POSITIONS
     g.add_argument(
         "--positions",
@@ -210,26 +206,18 @@ def run(args: argparse.Namespace) -> int:
             FrameModel.build(frame, args.elements),
             name=name,
             speed=args.speed,
-            racket_speed=args.racket_speed,
-            reference=args.reference,
-            pivot=args.pivot,
             positions=positions,
-            ball_mass=args.ball_mass,
-            kcb=args.kcb,
-            zeta=args.zeta,
-            separation=args.separation,
-            modes=args.modes,
             power_fraction=args.power_fraction,
-            tolerance=args.tolerance,
             law=law,
+            **swing_kwargs(args),
+            **map_impact(args),
         )
         for name, frame in _rackets(args)
     ]
     if outs:  # as one set: all of them or none
         write_maps(maps, outs, overwrite=overwrite, parameters=run_parameters(args))
     if args.json:
-        objs = [m.summary() for m in maps]
-        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+        print_maps_json(maps)
         return 0
     for m in maps:
         s = m.spots

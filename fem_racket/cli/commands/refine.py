@@ -16,10 +16,9 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
+from fem_racket.cli.options.impact import add_ball_options, add_separation_option, add_speed_option
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.figure_files import check_dpi, figure_format
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
 from fem_racket.validation import InputError, show, work_begins
@@ -85,41 +84,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         + ",".join(map(str, DEFAULT_POSITIONS))
         + ")",
     )
-    i.add_argument(
-        "--speed",
-        type=float,
-        default=20.0,
-        metavar="M_S",
-        help="incident ball speed V_B0 [m/s] (default 20)",
-    )
-    i.add_argument(
-        "--ball-mass",
-        type=float,
-        default=None,
-        metavar="KG",
-        help=f"ball mass m_B [kg] (default {DEFAULT_BALL_MASS}; not stated in the paper)",
-    )
-    i.add_argument(
-        "--kcb",
-        type=float,
-        default=None,
-        metavar="N_M",
-        help="ball/string stiffness K_CB [N/m] (default: from the speed)",
-    )
-    i.add_argument(
-        "--zeta",
-        type=float,
-        default=None,
-        metavar="ZETA",
-        help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
-    )
-    i.add_argument(
-        "--separation",
-        default="displacement",
-        choices=SEPARATION_EVENTS,
-        help="end of contact: spring deflection or force back to zero "
-        "(default displacement, the paper's)",
-    )
+    add_speed_option(i)
+    add_ball_options(i, ball_mass=None)  # None: the study's own default
+    add_separation_option(i)
     i.add_argument(
         "--impact-modes",
         type=int,

@@ -19,6 +19,7 @@ force histories over that window, the hand in the provenance's ``"used"``.
 from __future__ import annotations
 
 import argparse
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -32,14 +33,13 @@ from fem_racket.cli.common import (
     check_output_step,
     impact_kwargs,
     note_modes,
-    print_json,
     run_parameters,
     significant,
     swing_from_args,
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
-from fem_racket.cli.options.output import print_written, write_result_files
+from fem_racket.cli.options.output import print_result, write_result_files
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.cli.options.strings_oblique import run_strung_oblique
@@ -165,13 +165,15 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
     summary = result.summary()
     if args.out:
         _write(args, result, summary, files, result.histories)
-    if args.json:
-        print_json(summary)
-        return 0
+    return print_result(args, summary, partial(_held_rows, window=window), files)
+
+
+def _held_rows(summary: dict[str, Any], window: float) -> list[tuple[str, str, str]]:
+    """The held racket's rows: the outcome, the grip force over ``window`` [s], the hand."""
     h = summary["hand"]
     exact = summary["solver"] == "exact"
     modes = f"{summary['modes']} modes" if exact else f"{summary['modes']} DOFs"
-    rows = [
+    return [
         *_outcome_rows(summary, summary["racket_speed_at_impact_m_s"] != 0.0),
         ("peak grip force", significant(summary["peak_grip_force_n"], 4), "N"),
         (
@@ -188,8 +190,6 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
         ("zeta", significant(summary["zeta"], 3), "-"),
         ("solver", f"{summary['solver']} (held, {summary['elements']} elements, {modes})", ""),
     ]
-    _print(rows, files)
-    return 0
 
 
 def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str, str]]:
@@ -224,12 +224,6 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
     ]
 
 
-def _print(rows: list[tuple[str, str, str]], files: list[Path]) -> None:
-    for name, value, unit in rows:
-        print(f"{name:<28} {value:>14} {unit}".rstrip())
-    print_written(files)
-
-
 def run(args: argparse.Namespace) -> int:
     """Simulate and print the result (and write it with ``--out``)."""
     check_output_step(args.output_step)
@@ -256,13 +250,13 @@ def run(args: argparse.Namespace) -> int:
     summary = result.summary()
     if args.out:
         _write(args, result, summary, files, _histories(result))
-    if args.json:
-        print_json(summary)
-        return 0
-    rows = [
-        *_outcome_rows(summary, swing is not None),
+    return print_result(args, summary, partial(_head_on_rows, swinging=swing is not None), files)
+
+
+def _head_on_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str, str]]:
+    """The head-on impact's rows: the outcome, the law and the solver."""
+    return [
+        *_outcome_rows(summary, swinging),
         *_law_rows(summary),
         ("solver", f"{summary['solver']} ({summary['basis']}, {summary['elements']} elements)", ""),
     ]
-    _print(rows, files)
-    return 0

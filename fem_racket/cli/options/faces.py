@@ -16,7 +16,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from fem_racket.cli.common import print_json, run_parameters, significant
+from fem_racket.cli.common import print_json, run_parameters, significant, swing_kwargs
 from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.runfile import given_options
 from fem_racket.frame.model import FrameModel
@@ -24,7 +24,18 @@ from fem_racket.studies.grid import as_values
 from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS
 from fem_racket.validation import InputError
 
-__all__ = ["add_face_options", "face_asked", "run_face"]
+__all__ = [
+    "MAP_IMPACT",
+    "add_face_options",
+    "face_asked",
+    "map_impact",
+    "print_maps_json",
+    "run_face",
+]
+
+#: The ball, law and solver options of ``map``, passed on as they are to the maps along the axis,
+#: over the face and of the spin.
+MAP_IMPACT = ("ball_mass", "kcb", "zeta", "separation", "modes", "tolerance")
 
 #: The oblique ball's options: dest -> (option, metavar, help).
 OBLIQUE = {
@@ -58,6 +69,17 @@ def add_face_options(g: argparse._ArgumentGroup) -> None:
         g.add_argument(option, dest=dest, type=float, default=None, metavar=metavar, help=text)
 
 
+def map_impact(args: argparse.Namespace) -> dict[str, Any]:
+    """The options of :data:`MAP_IMPACT` as keywords of the maps."""
+    return {dest: getattr(args, dest) for dest in MAP_IMPACT}
+
+
+def print_maps_json(maps: list) -> None:
+    """``map --json``: the summary of the one racket's map, or ``{"rackets": [...]}``."""
+    objs = [m.summary() for m in maps]
+    print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+
+
 def _oblique(args: argparse.Namespace) -> bool:
     return any(getattr(args, d, None) is not None for d in OBLIQUE)
 
@@ -89,10 +111,7 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
     inc = Incidence(**{d: getattr(args, d) for d in OBLIQUE if getattr(args, d) is not None})
     positions = as_values("position", args.positions if "positions" in given else SPIN_POSITIONS)
     offsets = as_values("offset", args.offsets or SPIN_OFFSETS)
-    options = dict(
-        ball_mass=args.ball_mass, kcb=args.kcb, zeta=args.zeta, separation=args.separation,
-        modes=args.modes, tolerance=args.tolerance, law=law,
-    )  # fmt: skip
+    options = {**map_impact(args), "law": law}
     if law is not None:
         for dest in ("kcb", "zeta", "separation", "modes"):
             if dest in given:
@@ -113,8 +132,7 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
     for path in outs:
         write_spin_map(maps, path, parameters=run_parameters(args))
     if args.json:
-        objs = [m.summary() for m in maps]
-        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+        print_maps_json(maps)
         return 0
     for m in maps:
         lo, x_lo, hi, x_hi, y_hi = m.extreme()
@@ -144,15 +162,7 @@ def _run_power(
     offsets = as_values("offset", args.offsets)
     if args.power_fraction is None:
         args.power_fraction = DEFAULT_AREA_FRACTION
-    options = dict(
-        ball_mass=args.ball_mass,
-        kcb=args.kcb,
-        zeta=args.zeta,
-        separation=args.separation,
-        modes=args.modes,
-        tolerance=args.tolerance,
-        power_fraction=args.power_fraction,
-    )
+    options = {**map_impact(args), "power_fraction": args.power_fraction}
     maps = [
         face_map(
             FrameModel.build(frame, args.elements),
@@ -160,18 +170,15 @@ def _run_power(
             offsets=offsets,
             name=name,
             speed=args.speed,
-            racket_speed=args.racket_speed,
-            reference=args.reference,
-            pivot=args.pivot,
             options=options,
+            **swing_kwargs(args),
         )
         for name, frame in rackets
     ]
     for path in outs:
         write_face(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
     if args.json:
-        objs = [m.summary() for m in maps]
-        print_json(objs[0] if len(objs) == 1 else {"rackets": objs})
+        print_maps_json(maps)
         return 0
     for m in maps:
         x, y, e = m.max_apparent_cor

@@ -15,6 +15,7 @@ from fem_racket.validation import InputError
 __all__ = [
     "MESH_EXCLUSIVE",
     "add_ei_options",
+    "add_elements_option",
     "add_frame_options",
     "add_mesh_option",
     "build_model",
@@ -73,17 +74,20 @@ def add_ei_options(group: argparse._ArgumentGroup) -> None:
     )
 
 
+def add_elements_option(
+    group: argparse._ArgumentGroup,
+    text: str = "number of beam elements (default 20, as in the paper)",
+) -> None:
+    """--elements N: the cells a frame of segments is meshed with, 20 by default (the paper's);
+    ``text`` its help."""
+    group.add_argument("--elements", type=int, default=20, metavar="N", help=text)
+
+
 def add_frame_options(parser: argparse.ArgumentParser) -> None:
     """Frame options: --ei1, --ei2, --elements, --mesh, --add-mass."""
     g = parser.add_argument_group("frame")
     add_ei_options(g)
-    g.add_argument(
-        "--elements",
-        type=int,
-        default=20,
-        metavar="N",
-        help="number of beam elements (default 20, as in the paper)",
-    )
+    add_elements_option(g)
     add_mesh_option(g)
     add_lead_option(g)
 

@@ -11,6 +11,8 @@ from typing import Any
 from fem_racket.cli.options.frame import add_frame_options
 from fem_racket.cli.options.hand import HAND_OPTIONS, add_hand_options, hand_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
+from fem_racket.cli.options.lists import add_options
+from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.settings import BASES
@@ -23,29 +25,34 @@ from fem_racket.validation import InputError, show
 __all__ = [
     "DEFAULT_OUTPUT_STEP",
     "HAND_OPTIONS",
+    "add_ball_options",
     "add_hand_options",
     "add_impact_options",
     "add_output_step_option",
+    "add_separation_option",
     "add_solver_options",
+    "add_speed_option",
     "add_swing_options",
     "check_output_step",
     "hand_from_args",
     "impact_kwargs",
     "swing_from_args",
+    "swing_kwargs",
 ]
+
+#: (name, default, metavar, help) of the paper's linear ball/string law's options.
+LINEAR_LAW = (
+    ("kcb", None, "N_M", "ball/string stiffness K_CB [N/m] (default: from the speed)"),
+    ("zeta", None, "ZETA", "ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR "
+     "0.83)"),
+)  # fmt: skip
 
 
 def add_impact_options(parser: argparse.ArgumentParser) -> None:
     """Frame options plus the ball, the ball/string law, the impact and the solver."""
     add_frame_options(parser)
     g = parser.add_argument_group("impact")
-    g.add_argument(
-        "--speed",
-        type=float,
-        default=20.0,
-        metavar="M_S",
-        help="incident ball speed V_B0 [m/s] (default 20)",
-    )
+    add_speed_option(g)
     g.add_argument(
         "--position",
         type=float,
@@ -61,29 +68,36 @@ def add_impact_options(parser: argparse.ArgumentParser) -> None:
         help="lateral offset [m] of the impact point from the long axis, on the head outline "
         "(100 in^2 ellipse, 0.326 x 0.252 m): the frame also twists (default 0: on the axis)",
     )
-    g.add_argument(
-        "--ball-mass",
-        type=float,
-        default=0.057,
-        metavar="KG",
-        help="ball mass m_B [kg] (default 0.057; not stated in the paper)",
-    )
-    g.add_argument(
-        "--kcb",
-        type=float,
-        default=None,
-        metavar="N_M",
-        help="ball/string stiffness K_CB [N/m] (default: from the speed)",
-    )
-    g.add_argument(
-        "--zeta",
-        type=float,
-        default=None,
-        metavar="ZETA",
-        help="ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR 0.83)",
-    )
+    add_ball_options(g)
     add_law_options(parser)
     add_solver_options(parser)
+
+
+def add_speed_option(
+    group: argparse._ArgumentGroup, text: str = "incident ball speed V_B0 [m/s] (default 20)"
+) -> None:
+    """--speed M_S: the ball's speed before impact [m/s], 20 by default; ``text`` its help."""
+    group.add_argument("--speed", type=float, default=20.0, metavar="M_S", help=text)
+
+
+def add_ball_options(
+    group: argparse._ArgumentGroup, ball_mass: float | None = DEFAULT_BALL_MASS
+) -> None:
+    """--ball-mass and the paper's linear ball/string law (--kcb, --zeta) of the commands of
+    one impact and refine; ``ball_mass`` the default of --ball-mass (None: the study's own)."""
+    text = f"ball mass m_B [kg] (default {DEFAULT_BALL_MASS}; not stated in the paper)"
+    add_options(group, [("ball_mass", ball_mass, "KG", text), *LINEAR_LAW], type=float)
+
+
+def add_separation_option(group: argparse._ArgumentGroup) -> None:
+    """--separation: the event that ends the contact (the paper's: the spring's deflection)."""
+    group.add_argument(
+        "--separation",
+        default="displacement",
+        choices=SEPARATION_EVENTS,
+        help="end of contact: spring deflection or force back to zero "
+        "(default displacement, the paper's)",
+    )
 
 
 def add_swing_options(parser: argparse.ArgumentParser) -> None:
@@ -117,6 +131,13 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
+    """The swing's options as the keywords ``racket_speed``, ``reference`` and ``pivot`` of the
+    maps (:func:`fem_racket.studies.racket_map.racket_map`, ``face_map``) and of compare's
+    ``Play``, which build the swing themselves."""
+    return {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
+
+
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
     """The swing the options give for a racket of ``length`` [m]; None for a racket at rest."""
     if args.racket_speed == 0.0:
@@ -136,13 +157,7 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
         "(any contact law or racket motion), cvode, bdf, or auto: exact for the paper's law, "
         "general otherwise (default auto)",
     )
-    s.add_argument(
-        "--separation",
-        default="displacement",
-        choices=SEPARATION_EVENTS,
-        help="end of contact: spring deflection or force back to zero "
-        "(default displacement, the paper's)",
-    )
+    add_separation_option(s)
     s.add_argument(
         "--basis",
         default="modal",

@@ -14,12 +14,11 @@ from typing import Any
 from fem_racket.cli.common import (
     build_model,
     impact_kwargs,
-    print_json,
     run_parameters,
     significant,
     swing_from_args,
 )
-from fem_racket.cli.options.output import print_written, write_result_files
+from fem_racket.cli.options.output import print_result, write_result_files
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
@@ -39,6 +38,7 @@ __all__ = [
     "oblique_rows",
     "run_oblique",
     "stroke_from_args",
+    "write_oblique",
 ]
 
 #: argparse dest -> (option, Incidence field, metavar, help).
@@ -248,17 +248,17 @@ def oblique_from_args(args: argparse.Namespace, incidence: Incidence, hand: Any)
     return simulate_oblique(model, swing=swing, **kw)
 
 
+def write_oblique(args: argparse.Namespace, result, summary: dict[str, Any], files: list) -> None:
+    """Write ``--out`` (``files``) of an oblique impact: its histories, ``summary`` and the
+    provenance with the summary as its ``"results"``."""
+    meta = {**provenance(run_parameters(args)), "results": summary}
+    write_result_files(args, meta, summary, files, oblique_histories(result))
+
+
 def run_oblique(args: argparse.Namespace, incidence: Incidence, hand: Any, files: list) -> int:
     """``simulate``'s oblique impact: run, write ``--out`` (``files``), print."""
     result = oblique_from_args(args, incidence, hand)
     summary = result.summary()
     if args.out:
-        meta = {**provenance(run_parameters(args)), "results": summary}
-        write_result_files(args, meta, summary, files, oblique_histories(result))
-    if args.json:
-        print_json(summary)
-        return 0
-    for name, value, unit in oblique_rows(summary):
-        print(f"{name:<28} {value:>14} {unit}".rstrip())
-    print_written(files)
-    return 0
+        write_oblique(args, result, summary, files)
+    return print_result(args, summary, oblique_rows, files)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
@@ -17,11 +18,15 @@ from fem_racket.outputs.jsonable import json_ready
 
 __all__ = [
     "add_output_options",
+    "add_overwrite_json",
+    "mesh_files",
     "print_json",
+    "print_result",
     "print_written",
     "print_written_folder",
     "run_parameters",
     "write_json",
+    "write_mesh_files",
     "write_result_files",
     "write_text",
 ]
@@ -45,6 +50,24 @@ def print_json(data: Any) -> None:
     sys.stdout.write("\n")
 
 
+def print_result(
+    args: argparse.Namespace,
+    summary: dict[str, Any],
+    rows: Callable[[dict[str, Any]], Iterable[tuple[str, str, str]]],
+    files: Iterable[Any],
+) -> int:
+    """Print one impact's result, the last step of ``simulate``'s runs: ``summary`` as JSON
+    with ``--json``, else the table of ``rows(summary)`` (name, value, unit), a line each, and
+    the ``wrote`` line of each of ``files``. Returns the exit code, 0."""
+    if args.json:
+        print_json(summary)
+        return 0
+    for name, value, unit in rows(summary):
+        print(f"{name:<28} {value:>14} {unit}".rstrip())
+    print_written(files)
+    return 0
+
+
 def add_output_options(
     parser: argparse.ArgumentParser, default: str | None = None, what: str = "output file"
 ) -> argparse._ArgumentGroup:
@@ -56,6 +79,16 @@ def add_output_options(
     g.add_argument("--out", default=default, metavar="FILE", help=f"{what} ({where})")
     g.add_argument("--overwrite", action="store_true", help="replace the output file if it exists")
     return g
+
+
+def add_overwrite_json(group: argparse._ArgumentGroup, printed: str = "a JSON summary") -> None:
+    """``--overwrite`` (existing files are refused by default) and ``--json`` (printing
+    ``printed`` instead of the table): the end of the output group of the commands that write
+    files and print a table (fit, customise, compare)."""
+    group.add_argument(
+        "--overwrite", action="store_true", help="replace existing files (default: refuse)"
+    )
+    group.add_argument("--json", action="store_true", help=f"print {printed} (default: a table)")
 
 
 def run_parameters(args: argparse.Namespace) -> dict[str, Any]:
@@ -89,6 +122,25 @@ def write_text(path: str | Path, text: str, *, overwrite: bool = False) -> Path:
 def write_json(path: str | Path, data: Any, *, overwrite: bool = False) -> Path:
     """Write ``data`` as JSON to ``path`` atomically (NaN and inf become null)."""
     return write_text(path, json.dumps(json_ready(data), indent=2) + "\n", overwrite=overwrite)
+
+
+def mesh_files(out: Path) -> list[Path]:
+    """A racket written as a mesh file (fit, customise): the mesh ``out`` and its JSON sidecar,
+    to check before the work and write as one set with :func:`write_mesh_files`."""
+    from fem_racket.outputs import sidecar_path
+
+    return [out, sidecar_path(out)]
+
+
+def write_mesh_files(mesh: Any, out: Path, sidecar: str, *, overwrite: bool = False) -> None:
+    """Write ``mesh`` (a FrameMesh) to ``out`` and the text ``sidecar`` (its JSON) beside it,
+    as one set: both or, on any fault, neither."""
+    from fem_racket.io.mesh_files import write_mesh
+    from fem_racket.outputs import atomic_outputs
+
+    with atomic_outputs(mesh_files(out), overwrite=overwrite) as (tmp, side):
+        write_mesh(mesh, tmp, overwrite=True)
+        side.write_text(sidecar, encoding="utf-8")
 
 
 def write_result_files(

@@ -24,12 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
-from fem_racket.cli.options.output import (
-    print_json,
-    print_written,
-    run_parameters,
-    write_result_files,
-)
+from fem_racket.cli.options.output import print_result, run_parameters, write_result_files
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.solvers import auto_method
@@ -204,10 +199,4 @@ def run_strung(args: argparse.Namespace, strings: StringBed, model, files: list[
     }
     if args.out:
         _write(args, result, summary, files)
-    if args.json:
-        print_json(summary)
-        return 0
-    for name, value, unit in _rows(summary):
-        print(f"{name:<28} {value:>14} {unit}".rstrip())
-    print_written(files)
-    return 0
+    return print_result(args, summary, _rows, files)

@@ -11,20 +11,13 @@ are refused in one line, as is a hand.
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 from typing import Any
 
-from fem_racket.cli.options.oblique import oblique_histories, oblique_rows
-from fem_racket.cli.options.output import (
-    print_json,
-    print_written,
-    run_parameters,
-    write_result_files,
-)
+from fem_racket.cli.options.oblique import oblique_rows, write_oblique
+from fem_racket.cli.options.output import print_result
 from fem_racket.cli.options.strings import strung_from_args
 from fem_racket.cli.text import significant
 from fem_racket.impact.incidence import Incidence
-from fem_racket.outputs import provenance
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError
 
@@ -53,12 +46,13 @@ def run_strung_oblique(
         "ball_law": "kawazoe-1997-ball" if args.law == "linear" else args.law,
     }
     if args.out:
-        meta = {**provenance(run_parameters(args)), "results": summary}
-        write_result_files(args, meta, summary, files, oblique_histories(result))
-    if args.json:
-        print_json(summary)
-        return 0
-    rows = [
+        write_oblique(args, result, summary, files)
+    return print_result(args, summary, _rows, files)
+
+
+def _rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """The oblique impact's rows, then the bed's."""
+    return [
         *oblique_rows(summary),
         ("string bed", f"{summary['pattern']} {summary['string']}", ""),
         ("string tension", significant(summary["string_tension_n"], 4), "N"),
@@ -66,7 +60,3 @@ def run_strung_oblique(
         ("ball law", summary["ball_law"], ""),
         ("solver", summary["solver"], ""),
     ]
-    for name, value, unit in rows:
-        print(f"{name:<28} {value:>14} {unit}".rstrip())
-    print_written(Path(f) for f in files)
-    return 0

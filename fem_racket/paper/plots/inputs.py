@@ -22,17 +22,10 @@ def ball_string(data: FigureData) -> Figure:
     """Figs 2-3 inputs: K_CB and C_CB, clamped COR and contact times against speed."""
     if data.law:
         return _ball_string_law(data)
-    plt = pyplot()
-    c, pts = data.tables["curve"], data.tables["paper_points"]
+    fig, ax, c = _panels(data)
     v = c["speed [m/s]"]
-    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6), layout="constrained")
     ax[0].plot(v, c["K_CB [N/m]"] / 1e4, "C0-", label="interpolation (piecewise power law)")
-    ax[0].plot(pts["speed [m/s]"], pts["K_CB [N/m]"] / 1e4, "ko", label="paper, section 2.1.1")
-    ax[0].set(
-        xlabel="impact speed V_B0 [m/s]",
-        ylabel="K_CB [10⁴ N/m]",
-        title="(a) ball/string stiffness (Fig. 2)",
-    )
+    _stiffness_panel(ax[0], data, "(a) ball/string stiffness (Fig. 2)")
     tw = ax[0].twinx()
     tw.plot(v, c["C_CB [N s/m]"], "C1--", label="C_CB (right axis)")
     tw.set_ylabel("C_CB [N s/m]", color="C1")
@@ -47,24 +40,30 @@ def ball_string(data: FigureData) -> Figure:
 def _ball_string_law(data: FigureData) -> Figure:
     """Figs 2-3 under a contact law: its equivalent K_CB, clamped COR and contact times beside
     the paper's linear K_CB, with the paper's 6-3 ms for real impacts."""
-    plt = pyplot()
-    c, pts = data.tables["curve"], data.tables["paper_points"]
+    fig, ax, c = _panels(data)
     v = c["speed [m/s]"]
-    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6), layout="constrained")
     ax[0].plot(v, c["equivalent K_CB [N/m]"] / 1e4, "C0-", label=f"{data.law}: m_B (π/T_c)²")
     ax[0].plot(v, c["paper K_CB [N/m]"] / 1e4, "k:", label="paper's interpolation")
-    ax[0].plot(pts["speed [m/s]"], pts["K_CB [N/m]"] / 1e4, "ko", label="paper, section 2.1.1")
-    ax[0].set(
-        xlabel="impact speed V_B0 [m/s]",
-        ylabel="K_CB [10⁴ N/m]",
-        title="(a) equivalent ball/string stiffness (Fig. 2)",
-    )
+    _stiffness_panel(ax[0], data, "(a) equivalent ball/string stiffness (Fig. 2)")
     ax[0].legend(loc="upper left", fontsize=8)
     _cor_panel(ax[1], v, c["clamped COR [-]"], data.law)
     ax[2].axhspan(3.0, 6.0, color="0.9", label="paper: 6-3 ms for real impacts")
     ax[2].plot(v, c["paper clamped contact time [s]"] * 1e3, "k:", label="paper's K_CB, clamped")
     ax[2].plot(v, c["clamped contact time [s]"] * 1e3, "k-", label=f"{data.law}, clamped")
     return _finish(fig, ax, data, f"{data.law}, free standard frame")
+
+
+def _panels(data: FigureData) -> tuple[Figure, np.ndarray, dict[str, np.ndarray]]:
+    """The figure of Figs 2-3, its three panels (a)-(c) and the table of its curves."""
+    fig, ax = pyplot().subplots(1, 3, figsize=(15, 4.6), layout="constrained")
+    return fig, ax, data.tables["curve"]
+
+
+def _stiffness_panel(ax, data: FigureData, title: str) -> None:
+    """Panel (a), after its curves: the paper's K_CB points (section 2.1.1) and the labels."""
+    pts = data.tables["paper_points"]
+    ax.plot(pts["speed [m/s]"], pts["K_CB [N/m]"] / 1e4, "ko", label="paper, section 2.1.1")
+    ax.set(xlabel="impact speed V_B0 [m/s]", ylabel="K_CB [10⁴ N/m]", title=title)
 
 
 def _cor_panel(ax, v: np.ndarray, cor: np.ndarray, label: str) -> None:

@@ -11,8 +11,9 @@ The method is the solver's: :func:`design_solver` makes the ``auto`` solver with
 COR tolerance and no histories.
 
 A design has ~60 impacts and a batch thousands: each problem is made (and validated, ~25 us)
-when it is read, so a batch solver that takes the cases' arrays
-(:mod:`.impacts`) pays for one problem per design.
+when it is read, so the batch (:mod:`.impacts`: one
+:class:`~fem_racket.impact.problem_batch.ProblemBatch` of every design's cases) pays for one
+problem per design.
 """
 
 from __future__ import annotations
@@ -87,14 +88,19 @@ class DesignCases(Sequence[ImpactProblem]):
         return (self[k] for k in range(len(self)))
 
 
-def design_solver(problem: DesignProblem, *, held: bool = False) -> Solver:
+def design_solver(
+    problem: DesignProblem, *, held: bool = False, flexible: int | None = None
+) -> Solver:
     """The solver of ``problem``'s impacts: ``auto`` (the exact solution under the paper's law,
-    the general integrator under another), its COR tolerance, no histories; the modes kept
-    (``problem.modes``, every mode when None) under the paper's law on the free racket, where
-    they apply (the held racket keeps its modes by the tolerance, a law's integrator its own)."""
+    the general integrator under another), its COR tolerance, no histories; under the paper's
+    law on the free racket the modes kept, ``problem.modes`` or, when None, every one of the
+    ``flexible`` modes of the designs' frames (the tolerance then drops those it does not need;
+    when ``flexible`` is None too the engine's own choice, static totals for the modes above
+    its cut-off). The held racket keeps its modes by the tolerance, a law's integrator its own.
+    """
     options = {"tolerance": problem.tolerance, "output_step": None}
     if problem.law is None and not held:
-        options["modes"] = problem.modes
+        options["modes"] = flexible if problem.modes is None else problem.modes
     return make_solver("auto", **options)
 
 

@@ -112,7 +112,8 @@ def _free_cor(
     cases = [
         free_cases(problem, d.model, positions, speed[i], contact[i]) for i, d in enumerate(built)
     ]
-    return apparent_cor(design_solver(problem), cases).reshape(speed.shape)
+    every = max(d.model.fe.ndof - 2 for d in built)  # flexible modes of the largest frame
+    return apparent_cor(design_solver(problem, flexible=every), cases).reshape(speed.shape)
 
 
 def _shock(

@@ -86,7 +86,8 @@ class DesignProblem(ParameterLayout, ProblemDescription):
     elements : int
         Cells of each design's mesh (before the added masses' strip nodes).
     modes : int or None
-        Flexible modes kept per impact (None: the engine's choice by ``tolerance``).
+        Flexible modes kept per impact under the paper's law (None: every mode, the engine
+        keeping those ``tolerance`` needs and the others as one pseudo-mode).
     tolerance : float or None
         COR tolerance of the impact engine (:mod:`fem_racket.impact.exact.engine`; None: every
         mode).

@@ -1,6 +1,6 @@
-"""A design's impacts as ImpactProblems: the design's stand-in for ``solve_many``
-(:mod:`fem_racket.studies.design.impacts`) against the solvers' own ``solve_many``, one problem
-at a time, on the same problems."""
+"""A design's impacts as ImpactProblems: the design's batch (:mod:`fem_racket.studies.design.
+impacts`, one ProblemBatch by ``solve_many``) against the solvers' ``solve_many`` one problem at
+a time, on the same problems."""
 
 from itertools import chain
 
