@@ -14,15 +14,23 @@ Python's bytecode cache is written to a temporary folder (``PYTHONPYCACHEPREFIX`
 trees are not touched) and warmed by one untimed run, as after ``pip install``; ``--no-cache``
 compiles every module at every start instead (what ``PYTHONDONTWRITEBYTECODE=1`` costs).
 
-Targets (issue 13): ``--help`` <= 0.3 s, ``simulate`` <= 0.35 s, the Fig 13 sweep <= 0.8 s.
+Beside the wall time, the CPU time [s] of the run with every process it started (its pool's
+workers), the median over the runs, and the load average before and after.
+
+Targets (issue 13): ``--help`` <= 0.3 s, ``simulate`` <= 0.35 s, the Fig 13 sweep <= 0.8 s;
+(issue 27) the 4 200-impact, 200-frame law sweep <= ~0.2 ms per impact (0.84 s), and with
+``--million`` the 10^6-impact sweep (``--speed 20:40:1000 --position 0.5:0.95:1000``, run
+``--repeat`` times like the others) <= 10 s.
 
 Usage: python scripts/bench_cli.py [--quick] [--repeat N] [--tree DIR ...] [--no-cache]
+       [--million]
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -32,12 +40,19 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 FIG13 = ["--position", "0.55:0.95:7", "--speed", "20,30,40", "--ei1", "50:3000:60:log"]
+LAW = ["--law", "kawazoe-1997-nonlinear", "--position", "0.6:0.9:7", "--speed", "20,30,40"]
+LAW += ["--ei1", "50:3000:200:log"]
+BIG = ["--speed", "20:40:1000", "--position", "0.5:0.95:1000"]
 #: label -> (arguments, target wall time [s] or None); {out} is a fresh temporary folder.
 COMMANDS = {
     "--help": (["--help"], 0.3),
     "simulate": (["simulate", "--speed", "20", "--position", "0.75"], 0.35),
     "simulate --out (histories)": (["simulate", "--out", "{out}/r.json"], None),
     "sweep Fig 13 (1 260 impacts)": (["sweep", *FIG13, "--out", "{out}/s.nc", "--quiet"], 0.8),
+    "law sweep (4 200, 200 frames)": (["sweep", *LAW, "--out", "{out}/l.nc", "--quiet"], 0.84),
+}
+MILLION = {
+    "sweep of 10^6 impacts": (["sweep", *BIG, "--out", "{out}/m.nc", "--quiet"], 10.0),
 }
 QUICK = {"--help": COMMANDS["--help"], "simulate": COMMANDS["simulate"]}
 
@@ -55,12 +70,20 @@ def environment(tree: Path, cache: Path | None) -> dict[str, str]:
     return env
 
 
+def _children_cpu() -> float:
+    """CPU time [s] (user + system) of this process's finished children so far."""
+    use = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return use.ru_utime + use.ru_stime
+
+
 def run(
     args: list[str], env: dict[str, str], scratch: Path, flags: tuple[str, ...] = ()
-) -> tuple[float, str]:
-    """(wall time [s], stderr) of ``python FLAGS -m fem_racket ARGS`` in a fresh output folder."""
+) -> tuple[float, str, float]:
+    """(wall time [s], stderr, CPU time [s] of the run and its own children) of
+    ``python FLAGS -m fem_racket ARGS`` in a fresh output folder."""
     with tempfile.TemporaryDirectory(dir=scratch) as out:
         argv = [a.format(out=out) for a in args]
+        cpu0 = _children_cpu()
         t0 = time.perf_counter()
         done = subprocess.run(
             [sys.executable, *flags, "-m", "fem_racket", *argv],
@@ -70,9 +93,10 @@ def run(
             text=True,
         )
         wall = time.perf_counter() - t0
+        cpu = _children_cpu() - cpu0
     if done.returncode != 0:
         raise SystemExit(f"bench_cli: {' '.join(argv)} failed:\n{done.stderr}")
-    return wall, done.stderr
+    return wall, done.stderr, cpu
 
 
 def import_costs(stderr: str) -> dict[str, float]:
@@ -107,9 +131,13 @@ def main(argv: list[str] | None = None) -> list[dict]:
     )
     parser.add_argument("--no-cache", action="store_true", help="no bytecode cache")
     parser.add_argument("--top", type=int, default=6, help="packages listed per command")
+    parser.add_argument(
+        "--million", action="store_true", help="also the 10^6-impact sweep (~10-40 s a run)"
+    )
     args = parser.parse_args(argv)
     trees = [t.resolve() for t in args.tree or [ROOT]]
-    commands = QUICK if args.quick else COMMANDS
+    commands = QUICK if args.quick else {**COMMANDS, **(MILLION if args.million else {})}
+    load_before = os.getloadavg()
     repeat = 0 if args.quick else args.repeat or 7
     rows: list[dict] = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -130,41 +158,48 @@ def main(argv: list[str] | None = None) -> list[dict]:
             for cmd, _ in () if args.quick else commands.values():  # writes the bytecode cache
                 run(cmd, envs[tree], scratch)
         walls: dict[tuple[str, Path], list[float]] = {}
+        cpus: dict[tuple[str, Path], list[float]] = {}
         costs: dict[tuple[str, Path], dict[str, float]] = {}
         for _ in range(repeat):
             for label, (cmd, _) in commands.items():
                 for tree in trees:
-                    walls.setdefault((label, tree), []).append(run(cmd, envs[tree], scratch)[0])
+                    wall, _, cpu = run(cmd, envs[tree], scratch)
+                    walls.setdefault((label, tree), []).append(wall)
+                    cpus.setdefault((label, tree), []).append(cpu)
         for label, (cmd, _) in commands.items():
             for tree in trees:
-                wall, err = run(cmd, envs[tree], scratch, ("-X", "importtime"))
+                wall, err, cpu = run(cmd, envs[tree], scratch, ("-X", "importtime"))
                 costs[(label, tree)] = import_costs(err)
                 if args.quick:  # the smoke test times this run alone
-                    walls[(label, tree)] = [wall]
+                    walls[(label, tree)], cpus[(label, tree)] = [wall], [cpu]
     cache = "no bytecode cache" if args.no_cache else "bytecode cached"
     if args.quick and not args.no_cache:
         cache = "bytecode cache not warmed up"
     runs = "1 run under -X importtime" if args.quick else f"median (fastest) of {repeat}"
-    print(f"wall time [s] of python -m fem_racket, {runs}, {cache}")
+    load = os.getloadavg()
+    print(f"load average (1 min) {load_before[0]:.1f} before, {load[0]:.1f} after")
+    print(f"wall time [s] of python -m fem_racket, {runs}, {cache}; CPU [s] median, all processes")
     for i, tree in enumerate(trees):
         print(f"  [{i}] {tree}")
-    head = "".join(f"{f'[{i}]':>16}" for i in range(len(trees)))
+    head = "".join(f"{f'[{i}]':>28}" for i in range(len(trees)))
     print(f"{'command':<30}{head}{'target':>8}")
     for label, (_, target) in commands.items():
         cells = ""
         for tree in trees:
             w = walls[(label, tree)]
+            cpu = statistics.median(cpus[(label, tree)])
             rows.append(
                 dict(
                     command=label,
                     tree=str(tree),
                     wall_s=statistics.median(w),
                     fastest_s=min(w),
+                    cpu_s=cpu,
                     target_s=target,
                     imports_s=costs[(label, tree)],
                 )
             )
-            cells += f"{statistics.median(w):9.3f} ({min(w):.3f})"[-16:].rjust(16)
+            cells += f"{statistics.median(w):9.3f} ({min(w):.3f}) cpu {cpu:.3f}"[-28:].rjust(28)
         print(f"{label:<30}{cells}{'' if target is None else f'{target:8.2f}'}")
     print(f"\nimport time [s] by package, own time of its modules (one -X importtime run; {cache})")
     for label in commands:

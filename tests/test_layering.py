@@ -115,12 +115,15 @@ def test_no_import_cycle():
             visit(m)
 
 
-#: The rooms of impact/, lowest first: the base modules (the problem, the coupled system, the mode
-#: reduction, the swing, the result) at the root; the methods (closed forms, the exact solution,
-#: the general integrator) independent of each other; the ODE integrators (which take the exact
-#: solution's modal form) and the tangential contact of oblique impacts (which may take the closed
-#: forms); the hand-held racket (built on both); and at the top the dispatch
-#: (solvers, simulate, the law path), which alone chooses a method.
+#: The rooms of impact/, lowest first: the base modules (the problem and its checks, the coupled
+#: system, the mode reduction, the modal data at impact points on and off the axis, the swing, the
+#: incidence, the result) at the root; the methods (closed forms, the exact solution, the general
+#: integrator) independent of each other; the ODE integrators (which take the exact solution's
+#: modal form) and the tangential contact of oblique impacts (on a given normal force history);
+#: the structures built on the methods, independent of each other: the hand-held racket and the
+#: strung racket (frame and string bed); the oblique ball (its normal impact on any of them, then
+#: the tangential contact); and at the top the dispatch (solvers, simulate and its paths, the law
+#: path, the oblique entry points), which alone chooses a method.
 IMPACT_ROOMS = {
     "base": 0,
     "analytic": 1,
@@ -129,25 +132,36 @@ IMPACT_ROOMS = {
     "ode": 2,
     "tangential": 2,
     "held": 3,
-    "top": 4,
+    "strung": 3,
+    "oblique": 4,
+    "top": 5,
 }
 IMPACT_TOP = {
     "batch_solve",
     "clamped_solve",
     "engine_calls",
     "law_impact",
-    "oblique",
-    "oblique_stroke",
     "simulate",
     "simulate_law",
     "simulate_linear",
     "simulate_oblique",
+    "simulate_stroke",
     "solver_base",
     "solvers",
-    "strung_exact",
-    "strung_impact",
-    "strung_solve",
-    "strung_stretch",
+}
+#: Which rooms of impact/ each room may import besides the base modules and itself (stricter
+#: than the ranks above: a room takes only what it is built on). Only the dispatch takes them all.
+IMPACT_MAY_IMPORT = {
+    "base": set(),
+    "analytic": set(),
+    "exact": set(),
+    "general": set(),
+    "ode": {"exact"},
+    "tangential": set(),
+    "held": {"exact", "ode"},
+    "strung": {"exact", "general", "ode"},
+    "oblique": {"analytic", "held", "tangential"},
+    "top": set(IMPACT_ROOMS) - {"base", "top"},
 }
 
 
@@ -189,6 +203,24 @@ def test_impact_rooms(module):
         )
         if there != here and IMPACT_ROOMS[there] == IMPACT_ROOMS[here] > 0:
             pytest.fail(f"{module} imports {target}: the rooms {here} and {there} are independent")
+
+
+@pytest.mark.parametrize("module", IMPACT)
+def test_impact_room_imports_only_what_it_is_built_on(module):
+    here = room(module)
+    for target in inner_imports(module, "impact"):
+        there = room(target)
+        assert there in {"base", here} | IMPACT_MAY_IMPORT[here], (
+            f"{module} ({here}) imports {target} ({there}): {here} may import only "
+            f"{sorted(IMPACT_MAY_IMPORT[here]) or 'the base modules'}"
+        )
+
+
+def test_impact_room_rules_agree_with_the_ranks():
+    # Every allowed import goes down (so the rules have no cycle), and every room has its rule.
+    assert set(IMPACT_MAY_IMPORT) == set(IMPACT_ROOMS)
+    for here, allowed in IMPACT_MAY_IMPORT.items():
+        assert all(IMPACT_ROOMS[there] < IMPACT_ROOMS[here] for there in allowed), here
 
 
 def test_the_layering_test_sees_an_upward_import(tmp_path):

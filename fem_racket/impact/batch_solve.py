@@ -32,10 +32,11 @@ import numpy as np
 from fem_racket.impact.engine_calls import grouped, per_frame, whole_modes
 from fem_racket.impact.general.batches import stack_receptances
 from fem_racket.impact.general.integrator import solve_general
+from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.held.batch import HELD_EXTRA
 from fem_racket.impact.incidence import head_on
 from fem_racket.impact.law_impact import receptance
-from fem_racket.impact.oblique import free_normal, oblique_on
+from fem_racket.impact.oblique.solve import free_normal, oblique_on
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import Settings
 from fem_racket.impact.swing import ball_speed_out, closing_speed
@@ -106,7 +107,35 @@ def _same_rigid(parts: list) -> list:
     """Receptances with as many rigid modes each: on-axis cases get the roll as a zero column
     when off-axis ones (translation, rotation, roll) share their batch (it adds exactly 0)."""
     n = max(p.rigid.shape[1] for p in parts)
-    return [replace(p, rigid=np.pad(p.rigid, ((0, 0), (0, n - p.rigid.shape[1])))) for p in parts]
+    return [
+        replace(p, rigid=np.pad(p.rigid, ((0, 0), (0, n - p.rigid.shape[1]))))
+        if p.rigid.shape[1] < n
+        else p
+        for p in parts
+    ]
+
+
+def _receptances(batch: ProblemBatch, groups: dict[tuple, list[int]]) -> list[Receptance]:
+    """The receptance of each group of cases (frame, EI factor, offset). On the axis a frame's
+    mode shapes at its cases' points are computed once for every EI factor (a scaled frame
+    keeps its shapes; only the frequencies scale), each point's values as if asked alone."""
+    parts = []
+    shapes: dict[float, tuple[np.ndarray, Receptance]] = {}  # frame -> its on-axis cases
+    for (k, f, y), rows in groups.items():
+        base = batch.models[int(k)]
+        base.modes(None)  # once per frame: its scalings reuse them
+        model = scaled(base, f)
+        if y != 0.0:
+            parts.append(receptance(model, batch.position[rows], batch.ball_mass[rows], None, y))
+            continue
+        if k not in shapes:
+            on = np.flatnonzero((batch.frame == k) & (batch.offset == 0.0))
+            shapes[k] = on, receptance(base, batch.position[on], batch.ball_mass[on])
+        on, whole = shapes[k]
+        at = np.searchsorted(on, rows)
+        omega = model.modes(None).omega
+        parts.append(Receptance(omega, whole.a[at], whole.rigid[at], whole.ball_mass[at]))
+    return parts
 
 
 def _in_order(law: Any, order: np.ndarray) -> Any:
@@ -128,12 +157,7 @@ def law_batch(batch: ProblemBatch, settings: Settings) -> BatchOutcome:
     groups: dict[tuple, list[int]] = {}  # one receptance per frame, EI factor and offset
     for i, key in enumerate(zip(batch.frame, batch.ei_factor, batch.offset, strict=True)):
         groups.setdefault(tuple(float(v) for v in key), []).append(i)
-    parts = []
-    for (k, f, y), rows in groups.items():
-        base = batch.models[int(k)]
-        base.modes(None)  # once per frame: its scalings reuse them
-        model = scaled(base, f)
-        parts.append(receptance(model, batch.position[rows], batch.ball_mass[rows], None, y))
+    parts = _receptances(batch, groups)
     order = np.array([r for rows in groups.values() for r in rows], dtype=np.int64)
     v_r = batch.racket_speed()
     closing = _closing(batch, v_r)[order]

@@ -10,8 +10,10 @@ structure of such an :class:`~fem_racket.impact.problem.ImpactProblem`:
 - without strings, a rigid support: no mode of its own, the contact law alone between the ball
   and an immovable surface;
 - with a :class:`~fem_racket.strings.bed.StringBed`, the bed on a clamped frame (its edge fixed;
-  :func:`fem_racket.impact.strung.clamped_point`), struck at the head's centre: its membrane
-  modes, no rigid mode.
+  :func:`fem_racket.impact.strung.point.clamped_point`), struck at the head's centre: its
+  membrane modes, no rigid mode (built by the solvers,
+  :func:`fem_racket.impact.clamped_solve.head_modes`: this module, a base of impact/, imports no
+  room of it).
 
 The ball strikes the head's centre: the problem's impact position (x/L along a frame) does not
 apply and is left at the problem's default :data:`CENTRE`; no swing, hand, offset or incidence
@@ -21,7 +23,6 @@ apply and is left at the problem's default :data:`CENTRE`; no swing, hand, offse
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cached_property
 
 import numpy as np
 
@@ -51,23 +52,6 @@ class ClampedHead:
     def __post_init__(self) -> None:
         if self.strings is not None and not isinstance(self.strings, StringBed):
             raise InputError(f"strings = {self.strings!r} is not allowed: must be a StringBed")
-
-    @cached_property
-    def point(self):  # -> StrungPoint | None
-        """The clamped bed at the head's centre (:func:`~fem_racket.impact.strung.
-        clamped_point`; built once), None on a rigid support."""
-        if self.strings is None:
-            return None
-        from fem_racket.impact.strung import clamped_point
-
-        return clamped_point(self.strings)
-
-    def flexible(self) -> tuple[np.ndarray, np.ndarray]:
-        """(omega [rad/s], mass-normalised values at the point [1/sqrt(kg)]) of the head's
-        modes: the clamped bed's, none on a rigid support. No rigid mode."""
-        if self.point is None:
-            return np.zeros(0), np.zeros(0)
-        return self.point.flexible
 
     def __repr__(self) -> str:
         if self.strings is None:

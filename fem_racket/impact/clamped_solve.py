@@ -16,23 +16,35 @@ own: its numbers do not depend on the others asked with it. The ODE solvers refu
 from __future__ import annotations
 
 from collections.abc import Sequence
+from functools import lru_cache
 
 import numpy as np
 
-from fem_racket.impact.clamped import ClampedImpact
+from fem_racket.impact.clamped import ClampedHead, ClampedImpact
 from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.settings import Settings
+from fem_racket.impact.strung.point import clamped_point
 
-__all__ = ["solve_clamped"]
+__all__ = ["head_modes", "solve_clamped"]
+
+
+@lru_cache(maxsize=8)
+def head_modes(head: ClampedHead) -> tuple[np.ndarray, np.ndarray]:
+    """(omega [rad/s], mass-normalised values at the point [1/sqrt(kg)]) of the head's modes:
+    the clamped bed's at its centre (:func:`~fem_racket.impact.strung.point.clamped_point`),
+    none on a rigid support; no rigid mode. Built once per head (heads compare by identity)."""
+    if head.strings is None:
+        return np.zeros(0), np.zeros(0)
+    return clamped_point(head.strings).flexible
 
 
 def _exact(problems: list[ImpactProblem], settings: Settings) -> list[ClampedImpact]:
     """The paper's law on one clamped head: the engine, every case in one call."""
     first = problems[0]
-    w, a = first.structure.flexible()
+    w, a = head_modes(first.structure)
     n = len(problems)
     contacts = [p.contact() for p in problems]
     kcb = None if all(p.kcb is None for p in problems) else [c.stiffness for c in contacts]
@@ -57,7 +69,7 @@ def _exact(problems: list[ImpactProblem], settings: Settings) -> list[ClampedImp
 def _general(problems: list[ImpactProblem], settings: Settings) -> list[ClampedImpact]:
     """One law on one clamped head (the paper's: one problem): the general integrator, every
     case in one call."""
-    w, a = problems[0].structure.flexible()
+    w, a = head_modes(problems[0].structure)
     n = len(problems)
     law = problems[0].contact() if problems[0].law is None else problems[0].law
     speed = np.array([p.impact.speed for p in problems])

@@ -187,7 +187,7 @@ def check_incidence(incidence: object, *, strung: bool) -> None:
     crossing the face on a strung racket (the bed's oblique impact runs over its normal history
     in the plane of the long axis; the strings' lateral motion and the yaw on the bed are not
     modelled). A hand-held racket takes one in the plane of its long axis
-    (:func:`fem_racket.impact.oblique.oblique_on`)."""
+    (:func:`fem_racket.impact.oblique.solve.oblique_on`)."""
     if incidence is None:
         return
     if not isinstance(incidence, Incidence):

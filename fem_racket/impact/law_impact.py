@@ -29,9 +29,7 @@ __all__ = [
     "LAW_SOLVERS",
     "LawOptions",
     "LawRun",
-    "law_histories",
     "modal_velocity",
-    "ode_state_at",
     "receptance",
     "solve_law_impact",
 ]

@@ -28,6 +28,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from fem_racket.contact.bed_ball import kawazoe_ball
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.contact.presets import get_law
@@ -37,8 +38,7 @@ from fem_racket.impact.clamped import ClampedHead
 from fem_racket.impact.incidence import Incidence, check_incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.offaxis import check_offsets
-from fem_racket.impact.problem_checks import check_held, check_law, check_structure
-from fem_racket.impact.strung import check_strung_problem, kawazoe_ball
+from fem_racket.impact.problem_checks import check_held, check_law, check_strings, check_structure
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import (
@@ -174,7 +174,7 @@ class ImpactProblem:
         if self.held:
             check_held(self)
         if self.strings is not None:
-            check_strung_problem(self)
+            check_strings(self)
         object.__setattr__(self, "offset", check_finite("offset", self.offset, "m"))
         if self.offset != 0.0:
             if self.held:

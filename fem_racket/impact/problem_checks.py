@@ -1,11 +1,15 @@
 """The checks of an :class:`~fem_racket.impact.problem.ImpactProblem` that concern its structure
-(a clamped head), its contact law and its hand: each refuses, in one line, a field the rest of
-the problem cannot use. The problem is typed ``Any`` here: importing its class would make an
-import cycle (it calls these)."""
+(a clamped head), its contact law, its hand and its string bed: each refuses, in one line, a
+field the rest of the problem cannot use. The problem is typed ``Any`` here: importing its class
+would make an import cycle (it calls these). The bed's check lives here, not in the string bed's
+room (:mod:`fem_racket.impact.strung`), so that the problem, a base module of impact/, does not
+import a method's room; the room takes :func:`bed_coordinates` from here."""
 
 from __future__ import annotations
 
 from typing import Any
+
+import numpy as np
 
 from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.law import ContactLaw
@@ -13,9 +17,10 @@ from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.hand import check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import CENTRE, ClampedHead
+from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, show
 
-__all__ = ["check_held", "check_law", "check_structure"]
+__all__ = ["bed_coordinates", "check_held", "check_law", "check_strings", "check_structure"]
 
 
 def check_law(problem: Any) -> None:
@@ -88,3 +93,43 @@ def check_structure(problem: Any) -> None:
             f"position = {show(problem.impact.position)} x/L is not allowed with a clamped head: "
             f"it is struck at its centre (leave the position at {CENTRE}, the default)"
         )
+
+
+def bed_coordinates(
+    bed: StringBed, position: float, lateral_m: float, frame_length_m: float, centre: float
+) -> np.ndarray:
+    """The impact point on the bed [m, from the head's centre], checked to lie on the head."""
+    x, y = (position - centre) * frame_length_m, lateral_m
+    ax, ay = 0.5 * bed.head_length_m, 0.5 * bed.head_width_m
+    if (x / ax) ** 2 + (y / ay) ** 2 >= 1.0:
+        lo, hi = centre - ax / frame_length_m, centre + ax / frame_length_m
+        raise InputError(
+            f"position = {show(position)} x/L, lateral {show(lateral_m)} m is not allowed with "
+            f"the string bed: must lie on the head ({lo:.3f} to {hi:.3f} x/L on the axis)"
+        )
+    return np.array([x, y])
+
+
+def check_strings(problem: Any) -> None:
+    """Refuse, in one line, what an impact problem with a string bed cannot take: a hand, a
+    racket moving before impact, the lumped K_CB's kcb and zeta, a point off the head."""
+    if not isinstance(problem.strings, StringBed):
+        raise InputError(f"strings = {problem.strings!r} is not allowed: must be a StringBed")
+    at_rest = "the strung racket is free and at rest"
+    lumped = "the bed replaces the lumped K_CB (give the ball's own law as law)"
+    refused = {
+        "hand": (problem.held, at_rest),
+        "swing": (problem.swing is not None, at_rest),
+        "frame_velocity": (problem.frame_velocity is not None, at_rest),
+        "kcb": (problem.kcb is not None, lumped),
+        "zeta": (problem.zeta is not None, lumped),
+    }
+    for key, (given, why) in refused.items():
+        if given:
+            raise InputError(f"{key} is not allowed with a string bed: {why}")
+    bed = problem.strings
+    offset = float(problem.offset)
+    L = problem.model.mesh.length
+    bed_coordinates(bed, problem.impact.position, offset, L, bed.head_centre)
+    if offset != 0.0:
+        _ = problem.model.torsion  # refuses a frame without torsion data

@@ -102,7 +102,7 @@ class ImpactResult:
 
     swing: Swing | None = None
     #: Lateral offset of the impact point from the long axis [m]; off axis (!= 0) the twist
-    #: histories on the torsion DOFs [rad], [rad/s] (:mod:`fem_racket.impact.twist_result`),
+    #: histories on the torsion DOFs [rad], [rad/s] (:mod:`fem_racket.impact.result_twist`),
     #: None on the axis.
     offset: float = 0.0
     twist: np.ndarray | None = None
@@ -241,7 +241,7 @@ class ImpactResult:
     def _twist_summary(self) -> dict[str, Any]:
         if self.twist is None:
             return {}
-        from fem_racket.impact.twist_result import twist_summary
+        from fem_racket.impact.result_twist import twist_summary
 
         return twist_summary(self)
 

@@ -35,7 +35,7 @@ def impact_energies(result: Any) -> dict[str, np.ndarray]:
         "frame_strain": 0.5 * strain_energy(fe, q.T),
     }
     if result.twist is not None:
-        from fem_racket.impact.twist_result import torsion_energies
+        from fem_racket.impact.result_twist import torsion_energies
 
         out.update(torsion_energies(result))
     if result.law is not None:

@@ -65,7 +65,7 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
         ``strings`` (a StringBed: the string bed replaces the lumped K_CB, ``law`` is the
         ball's own; returns a StrungImpact), ``elements`` (cells when meshing a Frame; 20),
         ``incidence`` (an Incidence: an oblique, spinning ball at ``speed``; returns an
-        ObliqueResult, :mod:`fem_racket.impact.oblique`).
+        ObliqueResult, :mod:`fem_racket.impact.oblique.solve`).
         The solver: ``solver`` ("auto" (default), "exact", "general", "cvode", "bdf") and its
         options ``tolerance`` (COR tolerance choosing modes and steps; 1e-6), ``modes``
         (flexible modes kept; 80), ``basis`` ("modal" or "physical", BDF only),
@@ -77,7 +77,7 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
     -------
     ImpactResult
         (a :class:`~fem_racket.impact.held.run.HeldRun` for a hand-held racket, a
-        :class:`~fem_racket.impact.strung_impact.StrungImpact` with a string bed)
+        :class:`~fem_racket.impact.strung.impact.StrungImpact` with a string bed)
     """
     known = (*PROBLEM_OPTIONS, "solver", *SolverOptions.names())
     for key in options:

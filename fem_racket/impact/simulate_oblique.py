@@ -1,8 +1,8 @@
 """``simulate_oblique(frame, incidence=..., speed=..., clamped=...)``: an oblique, spinning ball on
 the free racket (an :class:`~fem_racket.impact.problem.ImpactProblem` with an incidence, solved
-by any solver, :func:`fem_racket.impact.oblique.solve_oblique`) or on a clamped head (eqs 1-3,
-:func:`fem_racket.impact.oblique.clamped_normal`); and :func:`normal_impact`, the normal impact
-alone, which sweeps and strokes share across spins and frictions.
+by any solver, :func:`fem_racket.impact.oblique.solve.solve_oblique`) or on a clamped head
+(eqs 1-3, :func:`fem_racket.impact.oblique.solve.clamped_normal`); and :func:`normal_impact`, the
+normal impact alone, which sweeps and strokes share across spins and frictions.
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.oblique import (
+from fem_racket.impact.oblique.solve import (
     NormalImpact,
     ObliqueResult,
     clamped_normal,

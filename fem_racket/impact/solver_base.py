@@ -15,11 +15,11 @@ from typing import Any, ClassVar
 
 from fem_racket.impact.clamped_solve import solve_clamped
 from fem_racket.impact.held.run import HeldSettings, held_impact
-from fem_racket.impact.oblique import solve_oblique
+from fem_racket.impact.oblique.solve import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import DEFAULTS, SolverOptions
-from fem_racket.impact.strung_solve import check_strung
+from fem_racket.impact.strung.solve import check_strung
 from fem_racket.validation import InputError, show, work_begins
 
 __all__ = ["Solver"]
@@ -133,7 +133,7 @@ class Solver:
 
     def _outcome(self, problem: ImpactProblem) -> Any:
         """Solve a checked problem; an oblique one (an incidence) as its normal impact, then
-        the tangential contact over it (:func:`fem_racket.impact.oblique.solve_oblique`)."""
+        the tangential contact over it (:func:`fem_racket.impact.oblique.solve.solve_oblique`)."""
         if problem.clamped:
             return self._many([problem])[0]
         if problem.incidence is not None:

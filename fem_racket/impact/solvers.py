@@ -40,7 +40,7 @@ from fem_racket.impact.settings import SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
 from fem_racket.impact.simulate_linear import simulate_linear
 from fem_racket.impact.solver_base import Solver
-from fem_racket.impact.strung_solve import check_strung, solve_strung
+from fem_racket.impact.strung.solve import check_strung, solve_strung
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "make_solver"]

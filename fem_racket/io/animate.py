@@ -4,7 +4,7 @@ The scene (:mod:`fem_racket.io.animate_scene`): a side view of the racket, the f
 one of :data:`~fem_racket.io.vtk_series.FRAME_FIELDS`, the ball as a sphere (see
 :func:`~fem_racket.io.vtk_series.impact_series` for how it is placed when the deflection is
 exaggerated) and, for an impact on the string bed
-(:class:`~fem_racket.impact.strung_impact.StrungImpact`), the bed as a deforming surface beside
+(:class:`~fem_racket.impact.strung.impact.StrungImpact`), the bed as a deforming surface beside
 it (:mod:`fem_racket.io.strung_series`). Each image carries the time in ms, the exaggeration
 factors, the contact force and the impact settings. GIFs are written by imageio (Pillow), MP4
 (H.264) by imageio-ffmpeg (through pyvista's ``open_movie``, ffmpeg's own messages silenced: a
@@ -31,7 +31,7 @@ from fem_racket.validation import InputError, check_range, show
 if TYPE_CHECKING:
     from fem_racket.frame.model import FrameModel
     from fem_racket.impact.simulate import ImpactResult
-    from fem_racket.impact.strung_impact import StrungImpact
+    from fem_racket.impact.strung.impact import StrungImpact
 
 __all__ = [
     "ANIMATION_SUFFIXES",
@@ -156,7 +156,7 @@ def render_animation(
     ----------
     result : ImpactResult or StrungImpact
         A simulation with histories; on the string bed
-        (:func:`fem_racket.impact.strung_impact.strung_impact`) the bed is drawn beside the frame.
+        (:func:`fem_racket.impact.strung.impact.strung_impact`) the bed is drawn beside the frame.
     path : path
         Output file, ``.gif`` or ``.mp4``.
     options : AnimationOptions, optional
@@ -171,7 +171,7 @@ def render_animation(
     progress : bool or None
         A progress bar over the frames on stderr (None: when stderr is a terminal).
     """
-    from fem_racket.impact.strung_impact import StrungImpact
+    from fem_racket.impact.strung.impact import StrungImpact
 
     opts = AnimationOptions() if options is None else options
     if not isinstance(opts, AnimationOptions):

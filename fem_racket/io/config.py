@@ -9,10 +9,10 @@ A run file has fixed *core* tables, each key with its unit in its name::
     [impact]   position_x_over_l, speed_m_s
     [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string, edge,
                stretch
-               (any key: the string bed replaces the lumped K_CB; simulate)
+               (any key: the string bed replaces the lumped K_CB; simulate, export-vtk, animate)
     [oblique]  angle_deg, spin_rpm, friction, ball_inertia, ball_radius_m, compliance_ratio,
                side_angle_deg, side_spin_rpm, clamped, face_angle_deg, path_angle_deg
-               (any key: the oblique, spinning ball; simulate, and the axes of sweep and map)
+               (any key: the oblique, spinning ball; simulate, held too; the axes of sweep, map)
     [solver]   name, separation, basis, modes, rtol, atol, t_max_s
     [output]   out, overwrite
 
@@ -128,9 +128,9 @@ class RunConfig:
 
     def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
         """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
-        ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_run.sweep_file`.
+        ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_sweep.sweep_file`.
         ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`)."""
-        from fem_racket.io.config_run import sweep_file
+        from fem_racket.io.config_sweep import sweep_file
 
         return sweep_file(self, backend=backend, workers=workers)
 

@@ -80,8 +80,7 @@ def _group(kind: type, values: dict[str, Any], table: str) -> Any:
 
 def _problem(cfg: RunConfig, command: str, table: str, rest: dict[str, Any]) -> tuple:
     """The design problem of ``cfg`` and the table's values of ``rest`` (search, run keys)."""
-    from fem_racket.contact.presets import get_law, law_parameters
-    from fem_racket.io.config_run import file_frame
+    from fem_racket.io.config_run import file_frame, file_law
     from fem_racket.io.config_unused import refuse_unused
     from fem_racket.studies.design.build import build_problem
     from fem_racket.studies.design.options import (
@@ -114,7 +113,7 @@ def _problem(cfg: RunConfig, command: str, table: str, rest: dict[str, Any]) -> 
         variables=_group(VariableOptions, values, table),
         zone_options=_group(ZoneOptions, values, table),
         goals=objectives,
-        law=get_law(d.get("law", "linear"), **law_parameters(d)),
+        law=file_law(cfg),
         elements=d.get("elements", 20),
     )
     problem = build_problem(file_frame(cfg), options)

@@ -2,13 +2,17 @@
 ``fem-racket export-vtk --config`` and :meth:`RunConfig.animate` = ``fem-racket animate
 --config``.
 
-Both commands draw the impact of the file's core tables (frame, ball, contact law, impact and
-swing, solver) at the output step of their own table (``[vtk]``, ``[animate]``: the long
-options, ``--output-step`` -> ``output_step``), with that table's drawing options; these
-functions do the same and write the same files. Their defaults are :data:`VTK_DEFAULTS` and
+Both commands draw the impact of the file's core tables (frame, ball, contact law, impact,
+solver, and a ``[strings]`` bed) at the output step of their own table (``[vtk]``,
+``[animate]``: the long options, ``--output-step`` -> ``output_step``), with that table's
+drawing options; these functions do the same and write the same files. With a string bed the
+series is the strung one (:func:`fem_racket.io.strung_vtk.write_strung_vtk`: frame, ball and
+the bed's surface, 101 steps unless ``frames`` says, no ``subdivide`` or ``field``; the
+animation draws the bed beside the frame), the bed's histories at their own samples unless the
+table gives ``output_step``. Their defaults are :data:`VTK_DEFAULTS` and
 :data:`ANIMATE_DEFAULTS` (checked against the parsers by ``tests/io/test_config_commands.py``).
-A table or key the commands take no option of (``[hand]``, ``[oblique]``, ``[strings]``, the
-swing's keys of ``[impact]``) is refused here rather than dropped.
+A table or key the commands take no option of (``[hand]``, ``[oblique]``, the swing's keys of
+``[impact]``) is refused here rather than dropped.
 """
 
 from __future__ import annotations
@@ -17,7 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.io.config_keys import reject_unknown
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["ANIMATE_DEFAULTS", "VTK_DEFAULTS", "animate_file", "vtk_file"]
 
@@ -43,6 +47,8 @@ ANIMATE_DEFAULTS: dict[str, Any] = {
     "fps": 25.0,
     "size": (960, 400),
 }
+#: Steps of the strung series unless ``frames`` says (its histories have 801 output times).
+STRUNG_FRAMES = 101
 #: Keys of the command tables that only set how the command prints.
 _PRINT_KEYS = ("quiet",)
 
@@ -55,11 +61,9 @@ def _drawing(cfg: RunConfig, table: str, defaults: dict[str, Any], refused: tupl
                 f"{'export-vtk' if table == 'vtk' else table}: it draws the head-on impact "
                 "of the free racket at rest"
             )
-    swing = [k for k in ("racket_speed_m_s", "reference_x_over_l", "pivot_m")]
-    swing = [k for k in swing if k in cfg.values.get("impact", {})]
-    if swing:  # the commands take no swing options
-        raise InputError(
-            f"impact.{swing[0]} ({cfg.source}) is not allowed with fem-racket "
+    if cfg.get("impact.racket_speed_m_s", 0.0) != 0.0:  # the commands take no swing options
+        raise InputError(  # (a swing of 0 m/s, and its point without one, change nothing)
+            f"impact.racket_speed_m_s ({cfg.source}) is not allowed with fem-racket "
             f"{'export-vtk' if table == 'vtk' else table}: it draws the racket at rest"
         )
     own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
@@ -71,14 +75,41 @@ def _drawing(cfg: RunConfig, table: str, defaults: dict[str, Any], refused: tupl
     return out
 
 
+def _strung(cfg: RunConfig, table: str, o: dict[str, Any]) -> bool:
+    """Whether the file strings the racket; refuse what the strung series does not draw, as
+    ``export-vtk`` refuses ``--subdivide`` and ``--field`` with a string bed."""
+    if not cfg.values.get("strings"):
+        return False
+    for key in ("subdivide", "field") if table == "vtk" else ():
+        if o[key] != VTK_DEFAULTS[key]:  # (a key at its default changes nothing)
+            raise InputError(
+                f"{table}.{key} = {show(o[key])} ({cfg.source}) is not allowed with a string bed: "
+                "the strung series draws the deflection at the frame's nodes and the bed's vertices"
+            )
+    return True
+
+
 def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) -> Path:
     """Write the VTK series ``export-vtk --config`` writes (into ``out``, else the file's
     ``[vtk] out``); return the ``.pvd`` path."""
-    from fem_racket.io.config_run import simulate_file
+    from fem_racket.io.config_run import run_file
     from fem_racket.io.vtk import write_vtk_series
 
-    o = _drawing(cfg, "vtk", VTK_DEFAULTS, ("hand", "oblique", "strings"))
-    result = simulate_file(cfg, histories=True, output_step=o["output_step"])
+    o = _drawing(cfg, "vtk", VTK_DEFAULTS, ("hand", "oblique"))
+    strung = _strung(cfg, "vtk", o)
+    model, result = run_file(cfg, histories=True, table="vtk")
+    if strung:
+        from fem_racket.io.strung_vtk import write_strung_vtk
+
+        return write_strung_vtk(
+            result,
+            model,
+            out or o["out"],
+            frames=STRUNG_FRAMES if o["frames"] is None else o["frames"],
+            scale=o["scale"],
+            overwrite=o["overwrite"],
+            parameters=parameters,
+        )
     return write_vtk_series(
         result,
         out or o["out"],
@@ -94,12 +125,13 @@ def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) ->
 
 def animate_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) -> Path:
     """Render the animation ``animate --config`` renders (to ``out``, else the file's
-    ``[animate] out``); return its path."""
+    ``[animate] out``; with a string bed, the bed beside the frame); return its path."""
     from fem_racket.io.animate import AnimationOptions, render_animation
-    from fem_racket.io.config_run import simulate_file
+    from fem_racket.io.config_run import run_file
 
-    o = _drawing(cfg, "animate", ANIMATE_DEFAULTS, ("hand", "oblique", "strings"))
-    result = simulate_file(cfg, histories=True, output_step=o["output_step"])
+    o = _drawing(cfg, "animate", ANIMATE_DEFAULTS, ("hand", "oblique"))
+    strung = _strung(cfg, "animate", o)
+    model, result = run_file(cfg, histories=True, table="animate")
     options = AnimationOptions(
         field=o["field"],
         frames=o["frames"],
@@ -112,6 +144,7 @@ def animate_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None
         result,
         out or o["out"],
         options,
+        model=model if strung else None,
         overwrite=o["overwrite"],
         parameters=parameters,
         progress=False,

@@ -15,17 +15,15 @@ import dataclasses
 import math
 from typing import Any
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.io.config_keys import CORE_KEYS
+from fem_racket.io.config_defaults import DEFAULT_STEP, DEFAULTS
+from fem_racket.io.config_oblique import CORE_DEST_KEYS, oblique_file
 from fem_racket.strings.options import STRING_OPTIONS, bed_from_options
 from fem_racket.validation import InputError, show
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
 
-__all__ = ["HAND_KEYS", "NOT_WITH_HAND", "file_frame", "simulate_file"]
+__all__ = ["HAND_KEYS", "NOT_WITH_HAND", "file_frame", "file_law", "run_file", "simulate_file"]
 
 #: ``[hand]`` keys -> :class:`~fem_racket.frame.hand.Hand` fields (``grip`` picks the preset).
 HAND_KEYS = {
@@ -39,28 +37,11 @@ HAND_KEYS = {
 #: Options (argparse dests) the hand-held racket does not take: it keeps its modes by the
 #: tolerance or all its DOFs and ends contact when the spring deflection falls to zero.
 NOT_WITH_HAND = ("basis", "modes", "t_max", "separation")
-#: The options of :func:`fem_racket.simulate` a file or the command line may set, with their
-#: defaults (the command line's parser states them too; ``tests/io/test_config_run.py`` compares
-#: them): an option at its default that was not given is left to the library.
-DEFAULTS: dict[str, Any] = {
-    "ball_mass": DEFAULT_BALL_MASS,
-    "kcb": None,
-    "zeta": None,
-    "solver": "auto",
-    "separation": "displacement",
-    "basis": "modal",
-    "modes": DEFAULT_MODES,
-    "tolerance": DEFAULT_TOLERANCE,
-    "t_max": None,
-    "rtol": 1e-10,
-    "atol": 1e-12,
-    "offset": 0.0,
-}
-#: argparse dest -> the core key that sets it (for messages).
-CORE_DEST_KEYS = {k.dest: f"{t}.{name}" for t, ks in CORE_KEYS.items() for name, k in ks.items()}
 
 
-def _law(cfg: RunConfig) -> Any:
+def file_law(cfg: RunConfig) -> Any:
+    """The contact law of ``cfg``'s ``[contact]`` (None: the paper's linear law); the linear
+    law's keys with another law are refused, as the commands refuse them."""
     from fem_racket.contact.presets import get_law, law_parameters
 
     d = cfg.defaults()
@@ -86,15 +67,13 @@ def _hand(cfg: RunConfig) -> Any:
     return dataclasses.replace(GRIPS[table.get("grip", "loose")], **fields)
 
 
-def _output_step(cfg: RunConfig) -> float:
-    from fem_racket.impact.settings import Settings
-
-    step = cfg.table("simulate").get("output_step")
+def _output_step(cfg: RunConfig, table: str) -> float:
+    step = cfg.table(table).get("output_step")
     if step is None:
-        return Settings().output_step
+        return DEFAULT_STEP
     if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step < math.inf:
         raise InputError(
-            f"simulate.output_step = {show(step)} s is not allowed: must be a finite number > 0"
+            f"{table}.output_step = {show(step)} s is not allowed: must be a finite number > 0"
         )
     return float(step)
 
@@ -144,10 +123,15 @@ def _check_hand(cfg: RunConfig, d: dict[str, Any]) -> None:
             )
 
 
-def simulate_file(
-    cfg: RunConfig, *, histories: bool | None = None, output_step: float | None = None
-) -> Any:
-    """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it.
+def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
+    """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it: the
+    result of :func:`run_file` on ``[simulate]``."""
+    return run_file(cfg, histories=histories)[1]
+
+
+def run_file(cfg: RunConfig, *, histories: bool | None = None, table: str = "simulate") -> Any:
+    """The frame model and the impact ``cfg`` describes, as ``fem-racket simulate --config``
+    computes it.
 
     Parameters
     ----------
@@ -155,12 +139,16 @@ def simulate_file(
     histories : bool, optional
         Compute the time histories (at ``[simulate] output_step``, 1e-5 s by default); by
         default when the file names an output, as the command does.
-    output_step : float, optional
-        The histories' step [s] instead of ``[simulate] output_step`` (export-vtk, animate).
+    table : str
+        The command table whose ``output_step`` sets the histories' step: ``"vtk"`` and
+        ``"animate"`` for the drawings of ``export-vtk`` and ``animate``.
 
     Returns
     -------
-    ImpactResult, or HeldRun with a ``[hand]`` table
+    model : FrameModel
+        The file's frame.
+    result : ImpactResult, HeldRun with a ``[hand]`` table, StrungImpact with ``[strings]``, or
+        ObliqueResult with ``[oblique]``
     """
     from fem_racket.impact.simulate import simulate
 
@@ -183,118 +171,16 @@ def simulate_file(
     # other than its default (one at its default is left to the library)
     kwargs: dict[str, Any] = {"position": d.get("position", 0.75), "speed": d.get("speed", 20.0)}
     kwargs.update({k: d[k] for k, v in DEFAULTS.items() if k in d and d[k] != v})
-    kwargs.update({} if (law := _law(cfg)) is None else {"law": law})
+    kwargs.update({} if (law := file_law(cfg)) is None else {"law": law})
     if strings is not None:  # on the bed (its histories have their own samples: a step only
         kwargs["strings"] = strings  # when the file gives one), as simulate --string-tension
-        given = output_step or cfg.table("simulate").get("output_step")
-        kwargs.update({"output_step": given} if given else {})
+        given = cfg.table(table).get("output_step")
+        if given is not None and _output_step(cfg, table) != DEFAULT_STEP:
+            kwargs["output_step"] = given  # (a step at the default changes nothing)
     if cfg.values.get("oblique"):  # the oblique impact, as simulate's --angle ...
-        return _oblique(cfg, d, hand, model, swing, kwargs)
-    step = (output_step or _output_step(cfg)) if histories else None
-    if strings is not None:
-        return simulate(model, swing=swing, **kwargs)
+        return model, oblique_file(cfg, hand, model, swing, kwargs, _output_step(cfg, table))
+    if strings is None:
+        kwargs["output_step"] = _output_step(cfg, table) if histories else None
     if hand is not None:
-        window = d.get("hand_shock_window")
-        return simulate(
-            model, hand=hand, shock_window=window, swing=swing, output_step=step, **kwargs
-        )
-    return simulate(model, output_step=step, swing=swing, **kwargs)
-
-
-#: ``[oblique]`` dests -> :class:`~fem_racket.impact.incidence.Incidence` fields.
-INCIDENCE_FIELDS = {
-    "angle": "angle",
-    "spin": "spin",
-    "friction": "friction",
-    "ball_inertia": "ball_inertia",
-    "ball_radius": "radius",
-    "compliance_ratio": "compliance_ratio",
-    "side_angle": "side_angle",
-    "side_spin": "side_spin",
-}
-#: What a clamped head takes from the core tables (besides ``[oblique]``).
-CLAMPED_TAKES = ("speed", "ball_mass", "kcb", "zeta", "separation")
-
-
-def _oblique(cfg: RunConfig, d: dict, hand: Any, model: Any, swing: Any, kwargs: dict) -> Any:
-    """The oblique impact of an ``[oblique]`` table, as ``simulate --angle ...`` runs it
-    (:func:`fem_racket.impact.simulate_oblique.simulate_oblique`, or a stroke with
-    ``face_angle_deg``/``path_angle_deg``): an ObliqueResult."""
-    from fem_racket.impact.incidence import Incidence
-    from fem_racket.impact.oblique_stroke import simulate_stroke
-    from fem_racket.impact.simulate_oblique import simulate_oblique
-    from fem_racket.impact.stroke import Stroke
-
-    if hand is not None:
-        raise InputError(f"[hand] ({cfg.source}) is not allowed with [oblique]: the racket is free")
-    inc = Incidence(**{f: d[k] for k, f in INCIDENCE_FIELDS.items() if k in d})
-    stroke_given = {k: d[k] for k in ("face_angle", "path_angle") if k in d}
-    if "path_angle" in stroke_given and swing is None:
-        raise InputError(
-            f"oblique.path_angle_deg = {show(d['path_angle'])} ({cfg.source}) is not allowed "
-            "without a swing: give impact.racket_speed_m_s"
-        )
-    stroke = Stroke(**stroke_given) if stroke_given else None
-    if d.get("clamped"):
-        others = sorted(
-            key for dest, key in CORE_DEST_KEYS.items()
-            if dest in d and dest not in CLAMPED_TAKES and dest not in ("clamped", "out")
-            and not key.startswith("oblique.") and dest != "overwrite"
-        )  # fmt: skip
-        if others:
-            raise InputError(
-                f"{others[0]} ({cfg.source}) is not allowed with oblique.clamped: a clamped head "
-                "takes impact.speed_m_s, ball.mass_kg, contact.kcb_n_m, contact.zeta and "
-                "solver.separation"
-            )
-        kw = {k: d.get(k, DEFAULTS.get(k)) for k in ("ball_mass", "kcb", "zeta", "separation")}
-        kw.update(incidence=inc, speed=d.get("speed", 20.0), clamped=True)
-        return simulate_stroke(stroke=stroke, **kw) if stroke else simulate_oblique(**kw)
-    kw = {**kwargs, "incidence": inc}
-    if "strings" not in kw:  # (the bed's histories have their own samples)
-        kw["output_step"] = _output_step(cfg)
-    if stroke is not None:
-        return simulate_stroke(model, stroke=stroke, swing=swing, **kw)
-    return simulate_oblique(model, swing=swing, **kw)
-
-
-#: ``[sweep]`` keys that set how the sweep runs or what it prints, not its values.
-SWEEP_RUN_KEYS = ("out", "overwrite", "restart", "serial", "workers", "scheduler", "quiet", "json")
-
-
-def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | None = None) -> Any:
-    """The sweep ``cfg`` describes, as ``fem-racket sweep --config`` computes it: the core tables
-    fix what ``[sweep]`` does not sweep, ``[sweep]`` gives the grids (arrays or strings as on the
-    command line), ``peak_force`` and ``chunk_size``. Returns the dataset the command writes
-    (without writing it; ``[sweep]``'s run keys :data:`SWEEP_RUN_KEYS` are the command's)."""
-    from fem_racket.contact.presets import law_parameters
-    from fem_racket.io.config_unused import refuse_unused
-    from fem_racket.studies.grid_values import LAW_PARAMETERS, PARAMETERS
-    from fem_racket.studies.sweep import sweep_result
-
-    d = cfg.defaults()
-    options = ("ei2", "solver", "separation", "basis", "modes", "rtol", "atol", "tolerance")
-    refuse_unused(cfg, "sweep", {*PARAMETERS, *LAW_PARAMETERS, *options, "mesh", "segments", "law"})
-    table = {k.replace("-", "_"): v for k, v in cfg.table("sweep").items()}
-    settings = {**d, **{k: v for k, v in table.items() if k not in SWEEP_RUN_KEYS}}
-    frame = cfg.frame() if "mesh" in d or "segments" in d else None
-    grid = {n: settings[n] for n in PARAMETERS if n in settings}
-    if frame is not None:  # the file's frame replaces EI1/EI2 (scale it with ei_factor)
-        grid.pop("ei1", None)
-        if "mesh" in d:
-            grid.pop("elements", None)
-    kwargs = {k: settings[k] for k in options if k in settings and not (frame and k == "ei2")}
-    laws = {k: v for k, v in law_parameters(settings).items() if k in LAW_PARAMETERS}
-    result = sweep_result(
-        frame,
-        **grid,
-        **kwargs,
-        law=settings.get("law", "linear"),
-        peak_force=settings.get("peak_force", False),
-        chunk_size=settings.get("chunk_size"),
-        backend=backend,
-        workers=workers,
-        progress=False,
-        **laws,
-    )
-    return result.to_xarray()
+        kwargs.update(hand=hand, shock_window=d.get("hand_shock_window"))
+    return model, simulate(model, swing=swing, **kwargs)

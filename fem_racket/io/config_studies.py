@@ -30,6 +30,9 @@ RunConfig = Any
 
 #: Keys of a command table that set where the command writes or how it prints.
 RUN_KEYS = ("out", "overwrite", "no_files", "json", "quiet", "csv", "plot", "dpi", "no_plot")
+#: Options only the command's table sets (its ``add_config_option(private=...)``): refine's
+#: ``elements`` is its list of element counts, not ``frame.elements``.
+PRIVATE = {"refine": ("elements",)}
 #: ``fem-racket map``'s options (argparse dests) and defaults.
 MAP_DEFAULTS: dict[str, Any] = {
     "preset": None,
@@ -81,7 +84,14 @@ def _options(cfg: RunConfig, command: str, defaults: dict[str, Any]) -> dict[str
     refuse_unused(cfg, command, {*defaults, *frame, *(LAW_PARAMETERS if "law" in defaults else ())})
     core = cfg.defaults()
     out = dict(defaults)
-    out.update({k: v for k, v in core.items() if k in defaults or k in LAW_PARAMETERS})
+    private = PRIVATE.get(command, ())  # the command's own, not the core table's
+    out.update(
+        {
+            k: v
+            for k, v in core.items()
+            if (k in defaults or k in LAW_PARAMETERS) and k not in private
+        }
+    )
     table = {k.replace("-", "_"): v for k, v in cfg.table(command).items()}
     reject_unknown(table, [*defaults, *LAW_PARAMETERS, *RUN_KEYS], command)
     out.update({k: v for k, v in table.items() if k not in RUN_KEYS})
@@ -127,6 +137,44 @@ def _rackets(o: dict[str, Any]) -> list[tuple[str, Any]]:
     return out
 
 
+#: Options the spin map does not use, as ``map --angle`` refuses them (a swing is a stroke:
+#: simulate's face and path angles).
+SPIN_REFUSES = {
+    "power_fraction": "the spin map has no power area",
+    "racket_speed": "the spin map strikes the racket at rest (simulate --path-angle strokes)",
+    "pivot": "the spin map strikes the racket at rest",
+    "reference": "the spin map strikes the racket at rest",
+}
+
+
+def _key(cfg: RunConfig, command: str, dest: str) -> str:
+    """The file's key setting option ``dest`` of ``command``, with its value, for a message."""
+    from fem_racket.io.config_keys import CORE_KEYS
+
+    named = {
+        keys[key].dest: f"{table}.{key} = {show(value)}"
+        for table, keys in CORE_KEYS.items()
+        for key, value in cfg.values.get(table, {}).items()
+    }
+    named.update(  # the command's table wins
+        {k.replace("-", "_"): f"{command}.{k} = {show(v)}" for k, v in cfg.table(command).items()}
+    )
+    return f"{named.get(dest, dest)} ({cfg.source})"
+
+
+def _refuse_spin(cfg: RunConfig, o: dict[str, Any], law: Any) -> None:
+    """Refuse what the spin map would drop (a key at the command's default changes nothing)."""
+    given = {k for k, v in MAP_DEFAULTS.items() if o[k] != v}
+    why = dict(SPIN_REFUSES)
+    if law is not None:  # the law's own parameters replace the paper's law's
+        why.update(dict.fromkeys(("kcb", "zeta", "separation", "modes"), f"law {law.name}'s own"))
+    for dest, reason in why.items():
+        if dest in given:
+            raise InputError(
+                f"{_key(cfg, 'map', dest)} is not allowed with an oblique ball: {reason}"
+            )
+
+
 def map_file(cfg: RunConfig) -> list[Any]:
     """The maps ``fem-racket map --config`` computes from ``cfg``: a RacketMap per racket,
     a FaceMap with ``offsets``, a SpinMap with ``angle``/``spin``/``friction`` (the grids of
@@ -142,6 +190,8 @@ def map_file(cfg: RunConfig) -> list[Any]:
     oblique = {k: o[k] for k in ("angle", "spin", "friction") if o[k] is not None}
     if oblique:
         from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, spin_map
+
+        _refuse_spin(cfg, o, law)
 
         table = cfg.table("map")
         positions = o["positions"] if "positions" in table else SPIN_POSITIONS

@@ -1,6 +1,6 @@
 """The strung impact sampled for drawing: the frame and ball as an impact series, and the bed.
 
-The frame and the ball of a :class:`~fem_racket.impact.strung_impact.StrungImpact` become an
+The frame and the ball of a :class:`~fem_racket.impact.strung.impact.StrungImpact` become an
 :class:`~fem_racket.io.vtk_series.ImpactSeries` (the same fields and drawing conventions as an
 impact on the paper's racket: the frame's fields from its Hermite DOFs on a refined polyline, the
 ball drawn at ``scale w_ring + (u_B - w_ring) - R_B``, w_ring the head ring's motion at the
@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.strung_impact import StrungImpact
+from fem_racket.impact.strung.impact import StrungImpact
 from fem_racket.io.strung_vtk import strung_fields
 from fem_racket.io.vtk_series import BALL_RADIUS, ImpactSeries, check_scale
 from fem_racket.io.vtk_steps import sample_steps

@@ -11,7 +11,7 @@ Three parts in ``impact.pvd`` (ParaView opens it; each step at its physical time
   head's ellipse, centred on the frame at the head's centre), z = its deflection: its edge's
   motion (edge ``"point"``: the frame's motion at the impact point everywhere; ``"hoop"``:
   the frame's deflection and twist y theta at each edge point, extended statically inside, as
-  the coupling assumes, :mod:`fem_racket.impact.strung`) plus the bed's modes (and its
+  the coupling assumes, :mod:`fem_racket.impact.strung.point`) plus the bed's modes (and its
   pseudo-mode's static shape); point field ``deflection [m]``.
 
 Written as :mod:`fem_racket.io.vtk` writes the frame's series (one ``.vtu`` per step and part,
@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.strung_impact import StrungImpact
+from fem_racket.impact.strung.impact import StrungImpact
 from fem_racket.io.vtk import PROVENANCE_NAME, PVD_NAME, write_pvd, write_vtu
 from fem_racket.io.vtk_series import BALL_RADIUS, check_scale
 from fem_racket.io.vtk_steps import sample_steps
@@ -102,7 +102,7 @@ def write_strung_vtk(
     Parameters
     ----------
     result : StrungImpact
-        From :func:`fem_racket.impact.strung_impact.strung_impact` (on a free frame).
+        From :func:`fem_racket.impact.strung.impact.strung_impact` (on a free frame).
     model : FrameModel
         The frame it was computed on.
     folder : path

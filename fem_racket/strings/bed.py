@@ -36,7 +36,7 @@ from fem_racket.validation import (
 
 __all__ = ["EDGES", "StringBed", "parse_pattern"]
 
-#: How the head ring follows the frame (:mod:`fem_racket.impact.strung`): uniformly with the
+#: How the head ring follows the frame (:mod:`fem_racket.impact.strung.point`): uniformly with the
 #: impact point, or each edge point with the frame at its own x (bending along the hoop).
 EDGES = ("point", "hoop")
 
@@ -78,7 +78,7 @@ class StringBed:
         How the head ring follows the frame (:data:`EDGES`).
     stretch : bool
         The strings stretch as the bed deflects, their tension rising in the dynamics
-        (:mod:`fem_racket.impact.strung_stretch`; integrated by CVODE); False: the linear bed.
+        (:mod:`fem_racket.impact.strung.stretch`; integrated by CVODE); False: the linear bed.
     """
 
     tension_n: float = 246.0

@@ -33,6 +33,7 @@ from fem_racket.contact.linear import Ball
 from fem_racket.impact.clamped import CENTRE, ClampedHead
 from fem_racket.impact.problem import Impact, ImpactProblem
 from fem_racket.impact.solvers import make_solver
+from fem_racket.impact.strung.point import clamped_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.calibrate import TARGET_SETS
 
@@ -63,7 +64,7 @@ def fit_bed_ball(bed: StringBed | None = None, ball_mass: float = 0.057) -> BedB
     from scipy.optimize import fsolve
 
     head = ClampedHead(StringBed() if bed is None else bed)
-    point = head.point
+    point = clamped_point(head.strings)
     ball, solver = Ball(ball_mass), make_solver("exact", tolerance=None)  # every bed mode
     targets = TARGET_SETS["kawazoe-1997"]
     tc20 = next(t.value for t in targets if t.quantity == "contact_time" and t.condition == 20.0)

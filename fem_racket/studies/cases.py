@@ -153,7 +153,10 @@ def chunk_problems(spec: SweepSpec, chunk: np.ndarray) -> ProblemBatch:
     # one frame per element count, and per EI1 when EI2 is fixed; EI1 otherwise scales it
     split_ei1 = spec.frame is None and spec.ei2 is not None
     keys = np.column_stack([elements, ei1 if split_ei1 else np.zeros(n)])
-    uniq, frame = np.unique(keys, axis=0, return_inverse=True)
+    if np.all(keys == keys[:1]):  # one frame (np.unique along an axis sorts rows: slow)
+        uniq, frame = keys[:1], np.zeros(n, dtype=np.intp)
+    else:
+        uniq, frame = np.unique(keys, axis=0, return_inverse=True)
     models = tuple(_base(spec, int(cells), float(e1) if split_ei1 else None) for cells, e1 in uniq)
     frame = frame.ravel()
     lengths = np.array([m.mesh.length for m in models])[frame]

@@ -133,6 +133,7 @@ def run_chunks(
     progress: bool | None = None,
     total: int | None = None,
     initial: int = 0,
+    prepare: Callable[[], Any] | None = None,
 ) -> None:
     """Run ``work(chunk, **kwargs)`` on every chunk and pass each result to ``done``.
 
@@ -147,6 +148,9 @@ def run_chunks(
         Show a progress bar (rate, ETA) on stderr; None: only when stderr is a terminal.
     total, initial : int
         Cases in the whole sweep and already finished (for the bar).
+    prepare : callable, optional
+        Run in this process before a local pool forks its workers, which then inherit what it
+        loaded (:func:`fem_racket.studies.pool.run_pool`); not run by the other backends.
     """
     check_choice("backend", backend, BACKENDS)
     kwargs = kwargs or {}
@@ -157,7 +161,7 @@ def run_chunks(
             _serial(work, chunks, kwargs, done, bar)
         elif backend == "processes":
             n = (os.cpu_count() or 1) if workers is None else workers
-            run_pool(work, chunks, kwargs, done, bar, max(1, min(n, len(chunks))))
+            run_pool(work, chunks, kwargs, done, bar, max(1, min(n, len(chunks))), prepare)
         else:
             if scheduler is None:
                 raise InputError(

@@ -123,8 +123,9 @@ def pattern_label(code: float) -> str:
     return f"{int(code) // 100}x{int(code) % 100}"
 
 
-def _check_value(name: str, value: object) -> float | int:
-    if name in LAW_PARAMETERS:
+def _check_value(name: str, value: object, law: bool) -> float | int:
+    """One value of parameter ``name`` checked; ``law``: it is a contact law's."""
+    if law:
         return check_law_value(name, value)
     unit = PARAMETERS[name].unit
     if name == "pattern":  # a code mains*100 + crosses, or the text
@@ -223,11 +224,12 @@ def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
         return None
     if isinstance(value, str) and not (name == "pattern" and "," not in value):
         return parse_values(name, value)
+    law = name in LAW_PARAMETERS  # once: the live registry is rebuilt at every look-up
     if np.ndim(value) == 0:
-        return _check_value(name, value)
+        return _check_value(name, value, law)
     if np.ndim(value) != 1 or len(value) == 0:
         raise InputError(f"{name} = {show(value)} is not allowed: must be a number or a 1-D list")
-    checked = [_check_value(name, v) for v in value]
+    checked = [_check_value(name, v, law) for v in value]
     arr = np.array(checked, dtype=np.int64 if name in ("elements", "pattern") else float)
     if np.unique(arr).size != arr.size:
         raise InputError(f"{name} = {show(arr.tolist())} is not allowed: values must be distinct")

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.oblique import oblique_on
+from fem_racket.impact.oblique.solve import oblique_on
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.simulate import PROBLEM_OPTIONS
@@ -29,7 +29,8 @@ from fem_racket.validation import InputError, check_positive
 
 __all__ = ["OUTPUTS", "ObliqueSweep", "oblique_map", "oblique_sweep"]
 
-#: Scalar outputs of each case (keys of :meth:`fem_racket.impact.oblique.ObliqueResult.summary`).
+#: Scalar outputs of each case (keys of
+#: :meth:`fem_racket.impact.oblique.solve.ObliqueResult.summary`).
 OUTPUTS = (
     "ball_speed_out_m_s",
     "angle_out_deg",

@@ -126,13 +126,21 @@ def run_pool(
     done: Done,
     bar: Any,
     workers: int,
+    prepare: Callable[[], Any] | None = None,
 ) -> None:
+    """``work(chunk, **kwargs)`` of every chunk on ``workers`` processes, each result passed to
+    ``done`` (and the progress ``bar``) as it arrives. ``prepare`` (optional) runs here first
+    when the workers are forked, so that they inherit what it loads (compiled kernels) instead
+    of each loading it; under forkserver or spawn they would not, and it does not run."""
     import queue
     from concurrent.futures import ProcessPoolExecutor
 
+    context = _pool_context()
+    if prepare is not None and context.get_start_method() == "fork":
+        prepare()
     pool = ProcessPoolExecutor(
         max_workers=workers,
-        mp_context=_pool_context(),
+        mp_context=context,
         initializer=_worker_init,
         initargs=(os.getpid(),),
     )

@@ -6,7 +6,7 @@ Every grid point (x along the frame, y across it) on the head outline
 long axis, spin, friction), as ``fem-racket simulate --angle ... --offset ...`` strikes one
 point: its normal impact at V cos(angle) (the frame bending and twisting off the axis,
 :mod:`fem_racket.impact.offaxis`), then the tangential contact over it
-(:mod:`fem_racket.impact.oblique`; the free racket recoils along its axis as a rigid body, so
+(:mod:`fem_racket.impact.oblique.solve`; the free racket recoils along its axis as a rigid body, so
 the spin varies over the face only through the normal impact). The grid is one
 :class:`~fem_racket.impact.problem_batch.ProblemBatch` the solver answers. Points off the face
 are NaN.

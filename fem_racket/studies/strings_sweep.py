@@ -1,7 +1,7 @@
 """The string bed's tension and pattern as study axes: apparent COR and contact time.
 
 For each pattern (mains x crosses) and tension per string, the ``kawazoe-1997-ball``
-(:data:`fem_racket.impact.strung.BALL_STIFFNESS`, :data:`~fem_racket.impact.strung.BALL_ZETA`)
+(:data:`fem_racket.contact.bed_ball.BALL_STIFFNESS`, :data:`~fem_racket.contact.bed_ball.BALL_ZETA`)
 strikes the free strung racket at rest (:mod:`fem_racket.impact.strung`), solved exactly
 (every mode): the sweep grid's ``string_tension`` and ``pattern`` axes
 (:func:`fem_racket.studies.sweep.sweep_result`, as ``fem-racket sweep --string-tension ...

@@ -21,6 +21,9 @@ from __future__ import annotations
 import logging
 import math
 import os
+import warnings
+from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -67,6 +70,31 @@ def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
     # the engine (exact solver) takes big chunks
     cap = EXACT_CHUNK if spec.solver == "exact" else 4
     return max(1, min(cap, math.ceil(todo / (4 * workers))))
+
+
+def _warm_up(spec: SweepSpec, chunk: np.ndarray) -> None:
+    """Solve the cases ``chunk`` here and drop them, saying nothing: a forked pool's workers
+    then inherit the compiled kernels (numba's import, its target and cached code: ~0.7 s CPU
+    a process) and the frame's modes instead of each loading them. Every case is computed on
+    its own, so the workers' results do not change."""
+    previous = logging.root.manager.disable
+    logging.disable(logging.CRITICAL)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            run_chunk(chunk, spec=spec)
+    finally:
+        logging.disable(previous)
+
+
+def _prepare(spec: SweepSpec, todo: np.ndarray) -> Callable[[], None] | None:
+    """What a forked pool runs first (:func:`_warm_up` of two cases) when the sweep's cases run
+    compiled kernels (the engine, the general integrator); None otherwise (string beds and
+    oblique balls, solved case by case; the ODE solvers)."""
+    per_case = given(spec.values, (*STRING_AXES, *OBLIQUE_AXES))
+    if spec.solver not in ("exact", "general") or per_case or todo.size < 2:
+        return None
+    return partial(_warm_up, spec, todo[:2])
 
 
 def sweep(frame: Frame | FrameMesh | None = None, **options: Any) -> Any:
@@ -241,6 +269,7 @@ def run_sweep(
             progress=run.progress,
             total=spec.size,
             initial=spec.size - todo.size,
+            prepare=_prepare(spec, todo),
         )
         result = SweepResult(spec, values, backend, run.parameters)
         if result.failed:

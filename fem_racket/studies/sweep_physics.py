@@ -25,8 +25,8 @@ import numpy as np
 
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.problem_checks import bed_coordinates
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.strung import bed_coordinates
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.grid_values import pattern_label
 from fem_racket.validation import InputError, show

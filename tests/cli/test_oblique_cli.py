@@ -6,9 +6,9 @@ import math
 import pytest
 
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.oblique_stroke import simulate_stroke
+from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.impact.simulate_oblique import simulate_oblique
-from fem_racket.impact.stroke import Stroke
+from fem_racket.impact.simulate_stroke import simulate_stroke
 from fem_racket.impact.swing import Swing
 from tests.clirun import run
 

@@ -99,9 +99,13 @@ def test_simulate_with_histories_writes_without_file_libraries(tmp_path):
     assert not loaded(modules, ("skfem", *FILES, *PLOTTING, *OTHERS))
 
 
-def test_sweep_writes_without_xarray_or_dask(tmp_path):
+@pytest.mark.parametrize(
+    "law", [[], ["--law", "kawazoe-1997-nonlinear"]], ids=["engine", "law-kernels"]
+)
+def test_sweep_writes_without_xarray_or_dask(law, tmp_path):
     out = tmp_path / "s.nc"
-    modules = imported(["sweep", "--position", "0.6,0.8", "--out", str(out), "--quiet"], tmp_path)
+    argv = ["sweep", "--position", "0.6,0.8", *law, "--out", str(out), "--quiet"]
+    modules = imported(argv, tmp_path)
     assert out.is_file() and "netCDF4" in modules
     # numba (the engine's compiled kernels, issue 27) imports scipy and scipy.linalg itself (its
     # version check and LAPACK bindings); the rest of scipy stays out

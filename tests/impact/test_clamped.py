@@ -7,6 +7,7 @@ import math
 
 import pytest
 
+from fem_racket.contact.bed_ball import kawazoe_ball
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, Ball, LinearContact, zeta_from_cor
 from fem_racket.contact.presets import get_law
 from fem_racket.frame.model import FrameModel
@@ -15,7 +16,7 @@ from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem import Impact, ImpactProblem
 from fem_racket.impact.solvers import make_solver
-from fem_racket.impact.strung import clamped_point, kawazoe_ball
+from fem_racket.impact.strung.point import clamped_point
 from fem_racket.impact.swing import Swing
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError

@@ -6,8 +6,8 @@ import pytest
 
 from fem_racket import simulate
 from fem_racket.impact.exact.engine import impacts
+from fem_racket.impact.result_twist import roll_momentum
 from fem_racket.impact.swing import Swing
-from fem_racket.impact.twist_result import roll_momentum
 from fem_racket.validation import InputError
 
 X, Y, V = 0.74, 0.05, 30.0

@@ -104,7 +104,7 @@ def test_strung_animation_draws_the_bed_beside_the_frame(standard_model, tmp_pat
     # issue 25 item 6: with a string bed the image is split, the frame's side view on the left
     # and the bed's surface on the right; both halves are drawn and the bed moves (its right
     # half changes between frames while the ball pushes it in).
-    from fem_racket.impact.strung_impact import simulate_strung
+    from fem_racket.impact.strung.impact import simulate_strung
     from fem_racket.io.animate_scene import SIDE_SHARE
     from fem_racket.strings.bed import StringBed
 

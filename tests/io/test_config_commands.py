@@ -202,3 +202,45 @@ def test_a_table_the_drawing_does_not_take_is_refused(cwd):
         InputError, match=r"^\[oblique\] \(.*\) is not allowed with fem-racket export"
     ):
         load_config(cwd / "run.toml").export_vtk(out=cwd / "b")
+
+
+def test_simulate_oblique_table_with_a_hand_equals_the_command(cwd, capsys):
+    # [oblique] with [hand]: the held racket struck obliquely, as simulate --grip ... --angle ...
+    # (it was refused in Python); every printed number and the hand's shock window applied
+    text = (
+        '[frame]\nelements = 10\n[hand]\ngrip = "firm"\nshock_window_s = 0.02\n'
+        "[oblique]\nangle_deg = 30.0\nspin_rpm = 1500.0\n"
+        "[impact]\nposition_x_over_l = 0.7\nspeed_m_s = 25.0\nracket_speed_m_s = 8.0\n"
+    )
+    (cwd / "run.toml").write_text(text)
+    cli = _cli_json(capsys, "simulate", "--config", "run.toml")
+    result = load_config(cwd / "run.toml").simulate()
+    assert result.held and _py_json(result.summary()) == cli
+    assert cli["shock_window_s"] == 0.02 and cli["hand"]["grip"] == "firm"
+    options = _cli_json(capsys, "simulate", "--grip", "firm", "--shock-window", "0.02",
+                        "--angle", "30", "--spin", "1500", "--elements", "10", "--position",
+                        "0.7", "--speed", "25", "--racket-speed", "8")  # fmt: skip
+    assert options == cli
+
+
+def test_clamped_oblique_table_refuses_alike_what_a_clamped_head_cannot_take(cwd, capsys):
+    # the command dropped a run file's frame and swing with oblique.clamped (it refused them
+    # on the command line only); it now refuses them as the method does
+    from fem_racket.validation import InputError
+
+    for text, key in [
+        ("[frame]\nelements = 16\n", "frame.elements = 16"),
+        ("[impact]\nracket_speed_m_s = 10.0\n", "impact.racket_speed_m_s = 10.0"),
+        ('[solver]\nname = "cvode"\n', "solver.name = 'cvode'"),
+    ]:
+        (cwd / "run.toml").write_text(text + "[oblique]\nangle_deg = 30\nclamped = true\n")
+        assert main(["simulate", "--config", "run.toml"]) == 2
+        err = capsys.readouterr().err
+        assert f"{key} (run.toml) is not allowed with --clamped" in err, err
+        with pytest.raises(InputError, match=key.split(" =")[0].replace(".", r"\.")):
+            load_config(cwd / "run.toml").simulate()
+    (cwd / "run.toml").write_text(
+        "[ball]\nmass_kg = 0.056\n[oblique]\nangle_deg = 30\nclamped = true\n"
+    )
+    cli = _cli_json(capsys, "simulate", "--config", "run.toml")
+    assert _py_json(load_config(cwd / "run.toml").simulate().summary()) == cli

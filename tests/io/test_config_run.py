@@ -127,10 +127,12 @@ def test_python_refuses_what_the_command_refuses(capsys, cwd):
 def test_the_run_files_defaults_are_the_commands():
     # One table of defaults serves the run file and the command line: the parser's own
     # defaults must be those.
-    from fem_racket.io.config_run import DEFAULTS
+    from fem_racket.io.config_defaults import DEFAULT_STEP, DEFAULTS, SIMULATE_DEFAULTS
 
     args = build_parser(["simulate"]).parse_args(["simulate"])
     assert {k: getattr(args, k) for k in DEFAULTS} == DEFAULTS
+    assert {k: getattr(args, k) for k in SIMULATE_DEFAULTS} == SIMULATE_DEFAULTS
+    assert args.output_step == DEFAULT_STEP
 
 
 def test_the_command_line_defaults_are_the_librarys():

@@ -5,7 +5,7 @@ import json
 import numpy as np
 import pytest
 
-from fem_racket.impact.strung_impact import simulate_strung
+from fem_racket.impact.strung.impact import simulate_strung
 from fem_racket.io.strung_vtk import strung_fields, write_strung_vtk
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.membrane import bed_mesh, disk_load

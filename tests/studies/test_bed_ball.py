@@ -4,7 +4,8 @@ import math
 
 import pytest
 
-from fem_racket.impact.strung import BALL_STIFFNESS, BALL_ZETA, clamped_point
+from fem_racket.contact.bed_ball import BALL_STIFFNESS, BALL_ZETA
+from fem_racket.impact.strung.point import clamped_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.bed_ball import fit_bed_ball
 

@@ -70,3 +70,39 @@ def test_dask_tasks_run_one_blas_thread(monkeypatch, local_cluster):
                 assert before[0] == 2
             threads = _collect("dask", scheduler=cluster.scheduler_address)
     assert np.all(threads == 1)
+
+
+#: Set by :func:`_prepare` in the process it runs in.
+_PREPARED: list[int] = []
+
+
+def _prepare() -> None:
+    _PREPARED.append(os.getpid())
+
+
+def _prepared_in(chunk: np.ndarray) -> np.ndarray:
+    """The process that ran :func:`_prepare` before this one's work (-1: none), per case."""
+    return np.full(len(chunk), _PREPARED[-1] if _PREPARED else -1)
+
+
+def test_prepare_runs_once_in_the_caller_before_a_forked_pool(monkeypatch):
+    import multiprocessing as mp
+
+    from fem_racket.studies import pool
+
+    if "fork" not in mp.get_all_start_methods():
+        pytest.skip("no fork here: prepare never runs")
+    monkeypatch.setattr(pool, "_pool_context", lambda: mp.get_context("fork"))
+    _PREPARED.clear()
+    seen: list[np.ndarray] = []
+    chunks = [np.arange(i, i + 2) for i in range(0, 6, 2)]
+    run_chunks(_prepared_in, chunks, lambda c, r: seen.append(r), workers=2, progress=False,
+               prepare=_prepare)  # fmt: skip
+    # once, here; the workers inherit it (they ran nothing of their own)
+    assert _PREPARED == [os.getpid()]
+    assert np.all(np.concatenate(seen) == os.getpid())
+    _PREPARED.clear()
+    seen.clear()
+    run_chunks(_prepared_in, chunks, lambda c, r: seen.append(r), backend="serial",
+               progress=False, prepare=_prepare)  # fmt: skip
+    assert _PREPARED == [] and np.all(np.concatenate(seen) == -1)  # serial: not needed

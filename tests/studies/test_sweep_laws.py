@@ -99,6 +99,37 @@ def test_law_sweeps_give_the_same_numbers_on_every_backend():
     assert np.all(np.isfinite(serial.cor.values))
 
 
+def test_a_law_sweep_over_frames_on_a_pool_equals_serial():
+    # several chunks, so a pool runs: the caller solves two cases first (the forked workers
+    # inherit the compiled kernels) and drops them; each case is computed on its own
+    kw = dict(law=KAWAZOE, position=[0.6, 0.8], speed=[20.0, 40.0], ei1="50:3000:6:log")
+    serial = sweep(**kw, backend="serial", progress=False)
+    pool = sweep(**kw, backend="processes", workers=2, chunk_size=5, progress=False)
+    np.testing.assert_array_equal(serial.cor.values, pool.cor.values)
+    np.testing.assert_array_equal(serial.contact_time_s.values, pool.contact_time_s.values)
+    assert np.all(np.isfinite(serial.cor.values))
+
+
+def test_the_warm_up_before_a_pool_says_nothing(monkeypatch, caplog):
+    import logging
+    import warnings
+
+    from fem_racket.studies import sweep as module
+
+    def noisy(chunk, *, spec):
+        logging.getLogger("fem_racket.studies.cases").warning("%d cases failed", len(chunk))
+        warnings.warn("noisy", RuntimeWarning, stacklevel=1)
+
+    monkeypatch.setattr(module, "run_chunk", noisy)
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        module._warm_up(None, np.arange(2))
+        noisy(np.arange(2), spec=None)  # the same outside the warm-up is heard
+    assert [r.getMessage() for r in caplog.records] == ["2 cases failed"]
+    assert [str(w.message) for w in seen] == ["noisy"]
+    assert not logging.root.manager.disable  # logging as it was
+
+
 def test_a_resumed_law_sweep_equals_an_uninterrupted_one(tmp_path):
     from fem_racket.studies.cases import COLUMNS
     from fem_racket.studies.checkpoint import Checkpoint

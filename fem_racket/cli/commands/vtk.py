@@ -18,9 +18,11 @@ from fem_racket.cli.common import (
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, strings_from_args, strung_from_args
 from fem_racket.extras import require
 from fem_racket.impact.simulate import simulate
+from fem_racket.io.config_drawings import STRUNG_FRAMES
 from fem_racket.validation import InputError
 
 #: Where export-vtk and animate write unless --out is given.
@@ -192,10 +194,15 @@ def _export_strung(args: argparse.Namespace, strings, overwrite: bool) -> int:
     steps unless --frames says (its histories have 801 output times)."""
     from fem_racket.io.strung_vtk import write_strung_vtk
 
-    for dest in ("subdivide", "field"):
-        if dest in getattr(args, "explicit_options", ()):
+    for dest in ("subdivide", "field"):  # on the command line or in the run file
+        if dest in given_options(args):
+            name = (
+                f"--{dest}"
+                if dest in getattr(args, "explicit_options", ())
+                else option_name(args, dest)
+            )
             raise InputError(
-                f"--{dest} is not allowed with a string bed: the strung series draws the "
+                f"{name} is not allowed with a string bed: the strung series draws the "
                 "deflection at the frame's nodes and the bed's vertices"
             )
     model = build_model(args)
@@ -204,7 +211,7 @@ def _export_strung(args: argparse.Namespace, strings, overwrite: bool) -> int:
         result,
         model,
         args.out,
-        frames=101 if args.frames is None else args.frames,
+        frames=STRUNG_FRAMES if args.frames is None else args.frames,
         scale=args.scale,
         overwrite=overwrite,
         parameters=run_parameters(args),

@@ -19,7 +19,7 @@ from fem_racket.impact.settings import BASES
 from fem_racket.impact.solvers import SOLVER_NAMES, auto_method
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.io.config_run import DEFAULTS as SIMULATE_DEFAULTS
+from fem_racket.io.config_defaults import DEFAULTS as SIMULATE_DEFAULTS
 from fem_racket.validation import InputError, show
 
 __all__ = [

@@ -1,7 +1,7 @@
 """The oblique impact's options of ``fem-racket simulate`` (``--angle``, ``--spin``,
 ``--friction``, ..., ``--clamped``, ``--face-angle``, ``--path-angle``): the run they ask for
 (:func:`fem_racket.impact.simulate_oblique.simulate_oblique` or
-:func:`fem_racket.impact.oblique_stroke.simulate_stroke`), its histories and its printed rows.
+:func:`fem_racket.impact.simulate_stroke.simulate_stroke`), its histories and its printed rows.
 
 Without any of these options ``simulate`` runs today's head-on impact, unchanged.
 """
@@ -19,6 +19,7 @@ from fem_racket.cli.common import (
     swing_from_args,
 )
 from fem_racket.cli.options.output import print_result, write_result_files
+from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
@@ -26,7 +27,7 @@ from fem_racket.impact.incidence import (
     DEFAULT_FRICTION,
     Incidence,
 )
-from fem_racket.impact.stroke import Stroke
+from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.outputs import provenance
 from fem_racket.validation import InputError
 
@@ -133,12 +134,16 @@ def stroke_from_args(args: argparse.Namespace) -> Stroke | None:
 def _check(args: argparse.Namespace, hand: Any) -> None:
     if hand is not None and args.clamped:
         raise InputError("a hand is not allowed with --clamped: give one of them")
-    if args.clamped:
-        given = set(getattr(args, "explicit_options", ())) - CLAMPED_TAKES
+    if args.clamped:  # on the command line or in the run file
+        given = sorted(given_options(args) - CLAMPED_TAKES)
         if given:
-            name = sorted(given)[0].replace("_", "-")
+            dest = given[0]
+            name = f"--{dest.replace('_', '-')}"
+            name = (
+                name if dest in getattr(args, "explicit_options", ()) else option_name(args, dest)
+            )
             raise InputError(
-                f"--{name} is not allowed with --clamped: a clamped head takes --speed, "
+                f"{name} is not allowed with --clamped: a clamped head takes --speed, "
                 "--ball-mass, --kcb, --zeta, --separation and the oblique options"
             )
 
@@ -228,8 +233,8 @@ def _stroke_rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
 
 def oblique_from_args(args: argparse.Namespace, incidence: Incidence, hand: Any):
     """Check the options against the oblique impact and run it: an ``ObliqueResult``."""
-    from fem_racket.impact.oblique_stroke import simulate_stroke
     from fem_racket.impact.simulate_oblique import simulate_oblique
+    from fem_racket.impact.simulate_stroke import simulate_stroke
 
     _check(args, hand)
     stroke = stroke_from_args(args)

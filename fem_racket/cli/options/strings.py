@@ -25,10 +25,11 @@ from typing import Any
 
 from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
 from fem_racket.cli.options.output import print_result, run_parameters, write_result_files
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.solvers import auto_method
-from fem_racket.impact.strung_impact import StrungImpact
+from fem_racket.impact.strung.impact import StrungImpact
 from fem_racket.outputs import provenance
 from fem_racket.strings.bed import EDGES, StringBed
 from fem_racket.strings.materials import STRINGS
@@ -180,7 +181,7 @@ def strung_from_args(
         linear = law is None or law.name == "linear"
         args.solver = "cvode" if strings.stretch else auto_method(linear)  # printed
         kwargs["solver"] = "auto" if strings.stretch else args.solver
-    if "output_step" in getattr(args, "explicit_options", ()):
+    if "output_step" in given_options(args):  # on the command line or in the run file:
         kwargs["output_step"] = args.output_step  # refused there, not ignored here
     if hasattr(args, "racket_speed"):  # commands with the swing options
         kwargs["swing"] = swing_from_args(args, model.mesh.length)

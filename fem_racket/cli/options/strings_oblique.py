@@ -2,7 +2,7 @@
 
 The oblique options (:mod:`fem_racket.cli.options.oblique`) with any string option run the ball's
 own law on the bed for the normal impact (:func:`fem_racket.cli.options.strings.strung_from_args`)
-and the tangential contact over its force history (:func:`fem_racket.impact.oblique.
+and the tangential contact over its force history (:func:`fem_racket.impact.oblique.solve.
 solve_oblique`, called unchanged); printed and written as the oblique impact's, with the bed's
 rows. The strung racket is free and at rest, so ``--clamped`` and a stroke's face and path angles
 are refused in one line, as is a hand.

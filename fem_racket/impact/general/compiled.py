@@ -4,7 +4,7 @@
 :func:`fem_racket.impact.reduction.split_modes` and its residual pseudo-mode), runs the
 compiled march (:mod:`fem_racket.impact.general.kernel`, numba, imported here only), which also
 integrates the outcome from the nodal histories as :mod:`fem_racket.impact.general.march` does. A
-case still in contact at the end of its span runs again with twice the span (up to ``t_max``).
+case marches on until it separates, up to ``t_max``.
 Laws of :mod:`fem_racket.contact` have kernels (:func:`kernel_law`); another law (a user's
 subclass) marches in numpy.
 """
@@ -24,9 +24,10 @@ from fem_racket.impact.general.cubic_force import ORDER, STENCILS
 from fem_racket.impact.general.march import GeneralOutcome
 from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
+from fem_racket.impact.general.stored import Stored, joined
 from fem_racket.impact.reduction import split_modes
 
-__all__ = ["KernelLaw", "Checks", "kernel_law", "march_compiled"]
+__all__ = ["Checks", "KernelLaw", "MarchOptions", "kernel_law", "march_compiled"]
 
 #: Parameters of each law with a kernel, in the kernel's order (the kernel_laws.LAW_IDS list).
 _PARAMETERS = {
@@ -58,6 +59,17 @@ class KernelLaw:
     def take(self, idx: np.ndarray) -> KernelLaw:
         """The law of the cases ``idx``."""
         return KernelLaw(self.law, self.state, self.end, self.params[idx])
+
+
+@dataclass(frozen=True)
+class MarchOptions:
+    """How :func:`march_compiled` marches: ``extend`` (see
+    :func:`fem_racket.impact.general.kernel.march_cases`; False: the numpy march's equations,
+    to round-off) and whether the outcome has the nodal ``histories`` (False: none, a coarse
+    run whose COR alone is wanted)."""
+
+    extend: bool = True
+    histories: bool = True
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,67 +154,80 @@ def march_compiled(
     h: np.ndarray,
     span: np.ndarray,
     t_max: np.ndarray,
-    extend: bool = True,
-) -> tuple[GeneralOutcome, Checks, np.ndarray]:
-    """Every case with its step ``h`` [s] over ``span`` [s] (doubled up to ``t_max`` while in
-    contact); returns the outcome, the checks and a status per case (0 separated, 1 still in
-    contact at t_max, 2 Newton did not converge; the outcome is NaN where it is not 0).
-    ``extend``: see :func:`fem_racket.impact.general.kernel.march_cases` (False: the numpy
-    march's equations, to round-off)."""
+    options: MarchOptions = MarchOptions(),
+) -> tuple[GeneralOutcome, Checks, np.ndarray, Stored]:
+    """Every case with its step ``h`` [s] over ``span`` [s] (on, up to ``t_max``, while in
+    contact); returns the outcome (its histories empty), the checks, a status per case (0
+    separated, 1 still in contact at t_max, 2 Newton did not converge; the outcome is NaN where
+    it is not 0) and the nodal histories as stored (none without ``options.histories``; lay
+    them out with :func:`fem_racket.impact.general.stored.laid_out`).
+
+    A frame at rest: each case marches up to ``t_max`` at once (the kernel stops at its
+    separation). A moving frame: over ``span``, then twice the span (up to ``t_max``) for the
+    cases still in contact, whose free motion is tabulated per span. Newton's force scale and
+    whether the kernels run interpreted are set by ``span`` (the same in both).
+    """
     from fem_racket.impact.general import jit
 
     W, A2, nmode, kept = _modes(rec, omega_c, beta)
-    kind = (law.law, law.state, law.end, int(extend))
+    kind = (law.law, law.state, law.end, int(options.extend))
     ncase = speed.size
     runs = []
     todo = np.arange(ncase)
     span = span.copy()
+    scale = np.abs(speed) / (rec.compliance * span)
+    jit.prepare(int(np.max(np.ceil(span / h)).astype(np.int64) + 1))  # interpreted or compiled
+    if frame_velocity is None:
+        span = np.maximum(span, t_max)
     while todo.size:
         nsteps = np.maximum(np.ceil(span[todo] / h[todo]).astype(np.int64) + 1, ORDER + 2)
         sub = per_case(rec, ncase, todo)
-        scale = np.abs(speed[todo]) / (sub.compliance * span[todo])
         fdv = _free(sub, speed[todo], None if frame_velocity is None else frame_velocity[todo],
                     h[todo], nsteps)  # fmt: skip
-        cases = (sub.compliance, h[todo], nsteps, speed[todo], scale)
-        jit.prepare(int(nsteps.max()))  # interpreted or compiled (a lone first impact)
+        cases = (sub.compliance, h[todo], nsteps, speed[todo], scale[todo])
         from fem_racket.impact.general.kernel import march_cases
 
-        H, res = march_cases(
-            kind, law.params[todo], (W[todo], A2[todo], nmode[todo]), cases, fdv, STENCILS
+        store, start, res = march_cases(
+            kind,
+            law.params[todo],
+            (W[todo], A2[todo], nmode[todo]),
+            cases,
+            fdv,
+            STENCILS,
+            options.histories,
         )
         again = (res[:, 2] == 1) & (span[todo] < t_max[todo])
-        if np.any(again):
-            H, res = H[~again], res[~again]
-        runs.append((todo[~again], H, res))
+        here = np.flatnonzero(~again)
+        part = Stored(store, start[:-1], np.diff(start)).take(here)
+        runs.append((todo[here], part, res[here]))
         span[todo[again]] = np.minimum(2.0 * span[todo[again]], t_max[todo[again]])
         todo = todo[again]
-    if len(runs) > 1:  # cases that ran again: their longer histories
-        H = np.zeros((ncase, 5, max(r[1].shape[2] for r in runs)))
-        res = np.zeros((ncase, runs[0][2].shape[1]))
-        for idx, Hc, rc in runs:
-            H[idx, :, : Hc.shape[2]], res[idx] = Hc, rc
+    stored = joined([(idx, part) for idx, part, _ in runs], ncase)
+    res = np.zeros((ncase, runs[0][2].shape[1]))
+    for idx, _, rc in runs:
+        res[idx] = rc
     status = res[:, 2].astype(int)
     ok = status == 0
-    last = np.where(ok, res[:, 0], H.shape[2] - 1).astype(int)
+    last = np.where(ok, res[:, 0], np.maximum(stored.length - 1, 0)).astype(int)
     frac = np.where(ok, res[:, 1], 1.0)
-    width = int(last.max()) + 1
+    none = np.zeros((ncase, 0))  # the histories are laid out once, for the answers (stored)
     out = GeneralOutcome(
         contact_time=(last - 1 + frac) * h,
         ball_velocity=speed - res[:, 5] / rec.ball_mass,
         impulse=res[:, 5],
         peak_force=res[:, 6],
         step=h.copy(),
-        force=H[:, 0, :width],
-        deflection=H[:, 1, :width],
-        rate=H[:, 2, :width],
-        state=H[:, 3, :width],
+        force=none,
+        deflection=none,
+        rate=none,
+        state=none,
         last=last,
         fraction=frac,
         kept=kept,
     )
     if not np.all(ok):
         out = _blank(out, ~ok)
-    return out, Checks(res[:, 3], res[:, 4], res[:, 7], res[:, 8]), status
+    return out, Checks(res[:, 3], res[:, 4], res[:, 7], res[:, 8]), status, stored
 
 
 def _blank(out: GeneralOutcome, bad: np.ndarray) -> GeneralOutcome:

@@ -45,7 +45,8 @@ from fem_racket.impact.general.jit import lone_solve
 from fem_racket.impact.general.march import GeneralOutcome, march
 from fem_racket.impact.general.receptance import Receptance, free_motion
 from fem_racket.impact.general.step import per_case
-from fem_racket.impact.general.vouch import STEP_SHARE, vouched
+from fem_racket.impact.general.stored import laid_out
+from fem_racket.impact.general.vouch import STEP_SHARE, first_steps, vouched
 from fem_racket.impact.reduction import (
     DEFAULT_TOLERANCE,
     check_tolerance,
@@ -164,19 +165,20 @@ def solve_general(
     limits = (np.minimum(SPAN * t_case, limit), limit)
     if given:
         with lone_solve(ncase):
-            out, _, status = march_compiled(
+            out, _, status, stored = march_compiled(
                 kernel, rec, speed, frame_velocity, omega_c, beta, t_case / steps, *limits
             )
         _check_status(status, limit)
-        return out
+        return replace(out, **laid_out([(np.arange(ncase), stored)], ncase))
     target = NONE_TOLERANCE if tol is None else tol
     if beta_given is None and tol is not None:  # the cut-off's share of the tolerance
         beta = cutoff_factor(tol * (1.0 - STEP_SHARE))
     with lone_solve(ncase):
-        parts, where, run = vouched(
-            kernel, rec, speed, frame_velocity, omega_c, beta, t_case, steps, target, limits
+        first = first_steps(steps, exponent, ncase)
+        parts, where, run, stored = vouched(
+            kernel, rec, speed, frame_velocity, omega_c, beta, t_case, first, target, limits
         )
-    out = _merge(parts, where, ncase)
+    out = replace(_merge(parts, where, ncase), **laid_out(stored, ncase))
     if refused == "raise":
         _check_status(np.where(run.no_separation, 1, 0), limit)
         bad = np.flatnonzero(run.steps == 0)

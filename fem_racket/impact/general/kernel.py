@@ -35,6 +35,9 @@ __all__ = ["RESULTS", "march_cases"]
 
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 _START_SWEEPS = 12
+#: Nodes per case the histories' store holds before it grows (its pages are touched only as
+#: written).
+_STORE = 1024
 _F, _D, _V, _Z, _G = kn.F, kn.D, kn.V, kn.Z, kn.G
 #: The columns of the kernel's result row per case.
 RESULTS = (
@@ -77,7 +80,10 @@ def _start(kind, p, modal, rigid, fdv, H, scale):
                     B -= Wv[m, j] * H[_F, j]
             s = m if m < 3 else 0
             lin = (A, B, Wd[m, m], Wv[m, m])
-            if not kn.solve_node(kind, p, H, (m, 0, s), lin, H[_F, m], (h, scale), c1):
+            prev = kn.node_base(kind, H, c1, (m, 0, s), h)
+            Fm, d, v, zm, ok = kn.solve_node(kind, p, prev, lin, H[_F, m], (h, scale))
+            _store(kind, p, H, m, (Fm, d, v, zm))
+            if not ok:
                 return False, np.zeros(0, dtype=np.complex128), 0.0, 0.0
             conv &= abs(H[_F, m] - fb) <= 1e-13 * (abs(H[_F, m]) + scale)
             conv &= abs(H[_Z, m] - zb) <= 1e-13 * (abs(H[_Z, m]) + 1e-9)
@@ -91,43 +97,12 @@ def _start(kind, p, modal, rigid, fdv, H, scale):
 
 
 @njit(**_JIT)
-def _integrals(H, at, h, cs, c1, res):
-    """The impulse up to separation (``at`` = (last, fraction, nodes)), the peak force, and
-    the contact work and impulse over the whole steps up to the last node, into ``res``."""
-    last, frac, n = at
-    imp, work, before = 0.0, 0.0, 0.0
-    for k in range(last):
-        s, b = (k + 1, 0) if k < 2 else (0, k - 2)
-        si, sw = 0.0, 0.0
-        for r in range(4):
-            si += c1[s, r] * H[_F, b + r]
-            sw += c1[s, r] * (H[_F, b + r] * H[_V, b + r])
-        before = imp
-        imp += h * si
-        work += h * sw
-    k = last - 1
-    s, b = (k + 1, 0) if k < 2 else (0, k - 2)
-    part = 0.0
-    # frac^(j + 1) as numba multiplies an integer power, written out: the same bits interpreted
-    f2 = frac * frac
-    powers = (frac, f2, frac * f2, f2 * f2)
-    for r in range(4):
-        q = 0.0
-        for j in range(4):
-            q += cs[s, r, j] * (powers[j] / (j + 1.0))
-        part += q * H[_F, b + r]
-    res[5], res[7], res[8] = before + h * part, work, imp
-    top = 0
-    for k in range(1, last + 1):
-        if H[_F, k] > H[_F, top]:
-            top = k
-    i = min(max(top, 1), n - 2)
-    a = H[_F, i - 1]
-    mid = H[_F, i] if i <= last else -np.inf
-    c = H[_F, i + 1] if i + 1 <= last else -np.inf
-    den = a - 2.0 * mid + c
-    top_f, rise = H[_F, top], c - a
-    res[6] = mid - 0.125 * (rise * rise) / den if np.isfinite(den) and den < 0.0 else top_f
+def _store(kind, p, H, m, node):
+    """Node m's F, delta, delta', z (and z' of an ODE state) into the histories."""
+    Fm, d, v, zm = node
+    H[_F, m], H[_D, m], H[_V, m], H[_Z, m] = Fm, d, v, zm
+    if kind[1] == 2:
+        H[_G, m] = kl.rate(kind[0], p, d, v, zm)
 
 
 @njit(**_JIT)
@@ -142,10 +117,11 @@ def _continue_branch(H, m, kd0, kv0):
 @njit(**_JIT)
 def _case(kind, p, modes, grid, fdv, cs, H, res):
     """March one case (histories H = F, D, V, Z, G; ``modes`` = (omega, a^2) of the modes kept,
-    ``grid`` = (mu0, h, nodes, force scale), free motion fdv (2, >= nodes)) into ``res``."""
+    ``grid`` = (mu0, h, nodes, force scale, speed), free motion fdv (2, >= nodes): given, or
+    (speed NaN) the ball at ``speed`` on a frame at rest, filled node by node) into ``res``."""
     law, state, end, extend = kind
     w, a2 = modes
-    mu0, h, n, scale = grid
+    mu0, h, n, scale, v = grid
     e = np.exp(1j * w * h)
     Gw, c1, c2 = km.weights(w, h, cs)
     rigid = (mu0, h, c1, c2)
@@ -162,18 +138,52 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
         kd0 += Bw[11, j] * Bw[12, j]
         kv0 += Bw[10, j]
     stiff = 0.0
+    half, odd = nm // 2, nm % 2 == 1
+    hc1 = (h * c1[0, 0], h * c1[0, 1], h * c1[0, 2], h * c1[0, 3])
     for m in range(1, n):
         b = max(m - 3, 0)
         s = 0 if m >= 3 else m
         if m >= 4:
+            if v == v:  # at rest: the free motion up to node m only (the march stops early)
+                fdv[0, m], fdv[1, m] = v * (m * h), v
             f0, f1, f2 = H[_F, b], H[_F, b + 1], H[_F, b + 2]
             fd = f0 * c2[0, 0] + f1 * c2[0, 1] + f2 * c2[0, 2]
             fv = f0 * c1[0, 0] + f1 * c1[0, 1] + f2 * c1[0, 2]
             R, Rv = R + h * Rv + mu0 * h * h * fd, Rv + mu0 * h * fv
-            md, mv = km.stride(Y, Bw, (f0, f1, f2), m == 4)
+            # the modes over the step (kernel_modes.backward_weights), written out here: an
+            # array passed to a function costs two atomic reference counts per node
+            k2 = 6 if m == 4 else 8
+            for j in range(nm):
+                yr, yi = Y[0, j], Y[1, j]
+                er, ei = Bw[0, j], Bw[1, j]
+                Y[0, j] = er * yr - ei * yi + Bw[2, j] * f0 + Bw[4, j] * f1 + Bw[k2, j] * f2
+                Y[1, j] = er * yi + ei * yr + Bw[3, j] * f0 + Bw[5, j] * f1 + Bw[k2 + 1, j] * f2
+            # two fixed partial sums: the same bits in any batch
+            d0, d1, v0, v1 = 0.0, 0.0, 0.0, 0.0
+            for j in range(half):
+                d0 += Y[1, 2 * j] * Bw[12, 2 * j]
+                d1 += Y[1, 2 * j + 1] * Bw[12, 2 * j + 1]
+                v0 += Y[0, 2 * j]
+                v1 += Y[0, 2 * j + 1]
+            if odd:
+                d0 += Y[1, nm - 1] * Bw[12, nm - 1]
+                v0 += Y[0, nm - 1]
+            md, mv = d0 + d1, v0 + v1
             guess = 3.0 * H[_F, m - 1] - 3.0 * H[_F, m - 2] + H[_F, m - 3]
             lin = (fdv[0, m] - (R + md), fdv[1, m] - (Rv + mv), kd0, kv0)
-            if not kn.solve_node(kind, p, H, (m, b, 0), lin, guess, (h, scale), c1):
+            zb, zc = H[_Z, m - 1], 0.0
+            if state == 2:  # Adams-Moulton on the step's cubic (kernel_node.node_base)
+                acc = 0.0
+                for r in range(4):
+                    acc += H[_G, b + r] * hc1[r]
+                zc = hc1[3]
+                zb = H[_Z, m - 1] + acc - zc * H[_G, m]
+            prev = (H[_Z, m - 1], zb, zc, H[_D, m - 1], H[_V, m - 1])
+            Fm, d, dv, zm, ok = kn.solve_node(kind, p, prev, lin, guess, (h, scale))
+            H[_F, m], H[_D, m], H[_V, m], H[_Z, m] = Fm, d, dv, zm
+            if state == 2:
+                H[_G, m] = kl.rate(law, p, d, dv, zm)
+            if not ok:
                 res[2] = 2.0
                 return
             R += mu0 * h * h * c2[0, 3] * H[_F, m]
@@ -181,7 +191,9 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
         if state == 2:
             gz = kl.rate_partials(law, p, H[_D, m], H[_V, m], H[_Z, m])[2]
             stiff = max(stiff, h * abs(gz))
-        if kn.ended(kind, p, H, m):
+        if kn.ended(
+            kind, p, (H[_F, m - 1], H[_D, m - 1], H[_Z, m - 1]), (H[_F, m], H[_D, m], H[_Z, m])
+        ):
             cut = extend and end == 0 and m >= 5
             if cut and kl.force(law, p, H[_D, m], H[_V, m], H[_Z, m]) == 0.0:
                 _continue_branch(H, m, kd0, kv0)
@@ -194,13 +206,13 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
                     yr, yi = Y[0, j] + Bw[10, j] * own, Y[1, j] + Bw[11, j] * own
                     energy += 0.5 * (yr * yr + yi * yi) / a2[j]
             res[4] = energy
-            _integrals(H, (m, res[1], n), h, cs, c1, res)
+            kn.integrals(H, (m, res[1], n), h, cs, c1, res)
             return
     res[2] = 1.0
 
 
 @njit(**_JIT)
-def march_cases(kind, P, modes, cases, fdv, cs):
+def march_cases(kind, P, modes, cases, fdv, cs, keep):
     """March every case; see the module docstring.
 
     Parameters
@@ -218,30 +230,54 @@ def march_cases(kind, P, modes, cases, fdv, cs):
         (C,) compliance [1/kg], step [s], nodes, speed [m/s] and Newton's force scale [N].
     fdv : (C, 2, N) free delta and delta' (empty: the ball at ``speed`` on a frame at rest)
     cs : (3, 4, 4) Lagrange coefficients (cubic_force.STENCILS)
+    keep : bool
+        Return the histories (False: H has no columns).
 
     Returns
     -------
-    H : ndarray (C, 5, N)
-        F, delta, delta', z, z' at the nodes.
+    store : ndarray (5, T)
+        F, delta, delta', z, z' at the nodes each case marched, case by case (none if not
+        ``keep``).
+    start : ndarray of int (C + 1,)
+        Case c's nodes are the columns start[c]:start[c + 1] of ``store``.
     res : ndarray (C, len(RESULTS))
         One row of :data:`RESULTS` per case.
+
+    Each case marches in one work array (zeroed after it where it wrote: every case starts as
+    if alone) and only as far as it needs, so ``nsteps`` may be generous (t_max) at no cost;
+    no array is padded to the longest case.
     """
     W, A2, nmode = modes
     mu0, h, nsteps, speed, scale = cases
     ncase, N = h.size, int(nsteps.max())
-    H = np.zeros((ncase, 5, N))
+    work = np.zeros((5, N))
     res = np.zeros((ncase, len(RESULTS)))
     res[:, 0] = -1.0
     given = fdv.shape[0] > 0
     free = np.empty((2, N))
+    start = np.zeros(ncase + 1, dtype=np.int64)
+    store = np.empty((5, ncase * min(N, _STORE) if keep else 0))  # grown if short
     for c in range(ncase):
         n = nsteps[c]
-        for m in range(n):
-            if given:
+        v = np.nan
+        if given:
+            for m in range(n):
                 free[0, m], free[1, m] = fdv[c, 0, m], fdv[c, 1, m]
-            else:
-                free[0, m], free[1, m] = speed[c] * (m * h[c]), speed[c]
+        else:
+            v = speed[c]
+            for m in range(4):
+                free[0, m], free[1, m] = v * (m * h[c]), v
         k = nmode[c]
         p = (P[c, 0], P[c, 1], P[c, 2], P[c, 3])  # a tuple: no reference counts per node
-        _case(kind, p, (W[c, :k], A2[c, :k]), (mu0[c], h[c], n, scale[c]), free, cs, H[c], res[c])
-    return H, res
+        grid = (mu0[c], h[c], n, scale[c], v)
+        _case(kind, p, (W[c, :k], A2[c, :k]), grid, free, cs, work, res[c])
+        u = min(max(int(res[c, 0]) + 1, 4), n) if res[c, 2] == 0.0 else n
+        if keep:
+            start[c + 1] = start[c] + u
+            if start[c + 1] > store.shape[1]:
+                more = np.empty((5, max(2 * store.shape[1], start[c + 1])))
+                more[:, : start[c]] = store[:, : start[c]]
+                store = more
+            store[:, start[c] : start[c + 1]] = work[:, :u]
+        work[:, :u] = 0.0
+    return store[:, : start[ncase]], start, res

@@ -24,6 +24,7 @@ __all__ = [
     "force",
     "force_partials",
     "hermite_root",
+    "power",
     "rate",
     "rate_partials",
     "turn_max",
@@ -59,26 +60,47 @@ def force(law, p, d, v, z):
 
 
 @njit(**_JIT)
-def force_partials(law, p, d, v, z):
-    """(F, dF/d delta, dF/d delta', dF/dz), one power per call (x^n = x^(n-1) x)."""
+def power(base, a, near):
+    """base^a [-]; from ``near`` = (b0, b0^a) by its Taylor series in e = base / b0 - 1 where
+    |e| (|a| + 4) <= 1e-4 (four terms: the rest < 1e-18 relative, below round-off), else by
+    ``pow``. A node's Newton iteration evaluates its law twice; the second time the deflection
+    moved by the first update alone, so one ``pow`` per node is enough."""
+    b0, s0 = near
+    if b0 > 0.0:
+        e = (base - b0) / b0
+        if abs(e) * (abs(a) + 4.0) <= 1e-4:
+            c4 = e * (a - 3.0) * 0.25
+            c3 = e * (a - 2.0) * (1.0 / 3.0) * (1.0 + c4)
+            c2 = e * (a - 1.0) * 0.5 * (1.0 + c3)
+            return s0 * (1.0 + e * a * (1.0 + c2))
+    return base**a
+
+
+@njit(**_JIT)
+def force_partials(law, p, d, v, z, near):
+    """(F, dF/d delta, dF/d delta', dF/dz, (base, base^(n - 1))) of a power law at most one
+    power per call (x^n = x^(n-1) x; :func:`power` from ``near``, the last call's base and
+    power, or (0, 0)); other laws return ``near`` as it was."""
     if law == 0:
-        return p[0] * d + p[1] * v, p[0], p[1], 0.0
+        return p[0] * d + p[1] * v, p[0], p[1], 0.0, near
     if law == 1:
         dp = max(d, 0.0)
-        s = dp ** (p[1] - 1.0)
+        s = power(dp, p[1] - 1.0, near)
         spring = p[0] * (s * dp)
-        return spring * (1.0 + p[2] * v), p[1] * p[0] * s * (1.0 + p[2] * v), p[2] * spring, 0.0
+        fd = p[1] * p[0] * s * (1.0 + p[2] * v)
+        return spring * (1.0 + p[2] * v), fd, p[2] * spring, 0.0, (dp, s)
     if law == 2:
         n = p[2]
         if d >= z:
             base = max(d, 0.0)
-            s = base ** (n - 1.0)
-            return p[0] * (s * base), n * p[0] * s, 0.0, 0.0
+            s = power(base, n - 1.0, near)
+            return p[0] * (s * base), n * p[0] * s, 0.0, 0.0, (base, s)
         base = max(d - end_value(law, p, z), 0.0)
-        s = base ** (n - 1.0)
+        s = power(base, n - 1.0, near)
         unload = n * p[1] * s
-        return p[1] * (s * base), unload, 0.0, -unload * (1.0 - p[3])
-    return p[2] * z + p[3] * (z * (z * z)), 0.0, 0.0, p[2] + 3.0 * p[3] * (z * z)
+        return p[1] * (s * base), unload, 0.0, -unload * (1.0 - p[3]), (base, s)
+    cubic = p[2] * z + p[3] * (z * (z * z))
+    return cubic, 0.0, 0.0, p[2] + 3.0 * p[3] * (z * z), near
 
 
 @njit(**_JIT)

@@ -7,7 +7,8 @@ theta = omega h (:mod:`fem_racket.impact.general.cubic_force`); the rigid modes 
 (compliance mu0) integrate the cubic twice. Used by :mod:`fem_racket.impact.general.kernel`.
 
 The starting steps use :func:`advance` (complex states, any stencil). After them every step has
-the backward stencil, and :func:`stride` carries the states as real and imaginary rows with the
+the backward stencil, and the march (:func:`fem_racket.impact.general.kernel._case`, where this
+loop is written out) carries the states as real and imaginary rows with the
 weights B_r = e^{i theta} a^2 h G_r folded per mode; a node's own weight B_3 (which multiplies
 the force still unknown while its node is solved) is carried into the next step as
 B_2 + e^{i theta} B_3, so a node costs one pass over the modes.
@@ -24,7 +25,6 @@ __all__ = [
     "backward_weights",
     "moments",
     "start_weights",
-    "stride",
     "weights",
 ]
 
@@ -146,9 +146,9 @@ def start_weights(modal, w, rigid):
 
 @njit(**_JIT)
 def backward_weights(e, a2, h, Gw, w):
-    """Rows (13, modes) for :func:`stride`: e^{i theta}, B_0, B_1, B_2, B_2 + e^{i theta} B_3,
-    B_3 (real and imaginary rows each) and 1 / omega (B_r = e^{i theta} a^2 h G_r, backward
-    stencil)."""
+    """Rows (13, modes) for the march's step over the modes: e^{i theta}, B_0, B_1, B_2,
+    B_2 + e^{i theta} B_3, B_3 (real and imaginary rows each) and 1 / omega
+    (B_r = e^{i theta} a^2 h G_r, backward stencil)."""
     nm = w.size
     out = np.empty((13, nm))
     for j in range(nm):
@@ -159,29 +159,3 @@ def backward_weights(e, a2, h, Gw, w):
             out[2 * k, j], out[2 * k + 1, j] = rows[k].real, rows[k].imag
         out[12, j] = 1.0 / w[j]
     return out
-
-
-@njit(inline="always", **_JIT)
-def stride(Y, Bw, f, first):
-    """States Y (2, modes: real, imaginary) over one backward step whose earlier nodes carry
-    forces f = (F_{m-3}, F_{m-2}, F_{m-1}), without node m's own weight (``first``: Y holds
-    node m - 1's; else it too was left out); returns the modes' delta and delta' at node m."""
-    f0, f1, f2 = f
-    k2 = 6 if first else 8
-    nm = Y.shape[1]
-    for j in range(nm):
-        yr, yi = Y[0, j], Y[1, j]
-        er, ei = Bw[0, j], Bw[1, j]
-        Y[0, j] = er * yr - ei * yi + Bw[2, j] * f0 + Bw[4, j] * f1 + Bw[k2, j] * f2
-        Y[1, j] = er * yi + ei * yr + Bw[3, j] * f0 + Bw[5, j] * f1 + Bw[k2 + 1, j] * f2
-    d0, d1, v0, v1 = 0.0, 0.0, 0.0, 0.0  # two fixed partial sums: the same bits in any batch
-    half = nm // 2
-    for j in range(half):
-        d0 += Y[1, 2 * j] * Bw[12, 2 * j]
-        d1 += Y[1, 2 * j + 1] * Bw[12, 2 * j + 1]
-        v0 += Y[0, 2 * j]
-        v1 += Y[0, 2 * j + 1]
-    if nm % 2:
-        d0 += Y[1, nm - 1] * Bw[12, nm - 1]
-        v0 += Y[0, nm - 1]
-    return d0 + d1, v0 + v1

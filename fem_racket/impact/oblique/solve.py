@@ -51,7 +51,7 @@ from fem_racket.impact.tangential.oblique import (
     tangential_impact,
 )
 from fem_racket.impact.tangential.result_history import normal_history
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, work_begins
 
 __all__ = [
     "CLAMPED_ARGS",
@@ -85,7 +85,7 @@ class ObliqueResult:
         The clamped head's K_CB and zeta (None on the free racket: in ``normal``).
     stroke : dict or None
         A stroke's face and path angles, the incidence they give and the launch angle
-        (:mod:`fem_racket.impact.oblique_stroke`), units in the keys.
+        (:mod:`fem_racket.impact.simulate_stroke`), units in the keys.
     """
 
     normal: ImpactResult | ClampedImpact | HeldRun
@@ -276,6 +276,7 @@ def clamped_normal(frame: Any, v_n: float, kwargs: dict) -> NormalImpact:
     )
     ball = Ball() if kwargs.get("ball_mass") is None else Ball(kwargs["ball_mass"])
     contact = LinearContact.for_speed(v_n, kcb=kwargs.get("kcb"), zeta=kwargs.get("zeta"))
+    work_begins()  # fem-racket config --check stops here: every check has passed
     history = ClampedNormal(ball.mass, contact.stiffness, contact.zeta, v_n)
     eqs = clamped_impact(ball.mass, contact.stiffness, contact.zeta, v_n)
     if separation == "force":  # contact ends as the force returns to zero (DESIGN.md section 1)

@@ -7,11 +7,11 @@ import numpy as np
 import pytest
 
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.oblique import free_normal, oblique_on
+from fem_racket.impact.oblique.solve import free_normal, oblique_on
+from fem_racket.impact.result_twist import roll_momentum
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.simulate_oblique import simulate_oblique
 from fem_racket.impact.tangential.march import TangentialContact, march
-from fem_racket.impact.twist_result import roll_momentum
 
 SIDE = Incidence(angle=30.0, spin=-1500.0, side_angle=20.0, side_spin=1200.0)
 
@@ -118,7 +118,7 @@ def test_solvers_agree_across_the_face(off_axis, solver, tol):
 
 def test_momentum_and_the_roll(off_axis):
     # linear momentum of ball + racket along and across the face; the roll: the normal impact
-    # off the axis keeps the angular momentum about the long axis (twist_result.roll_momentum),
+    # off the axis keeps the angular momentum about the long axis (result_twist.roll_momentum),
     # and the tangential force, in the face, adds none: the ball's side spin and lateral
     # momentum change together (I omega_s + m R v_y conserved), the frame's roll rate is the
     # head-on impact's at the normal speed

@@ -1,5 +1,6 @@
-"""Oblique, spinning impacts on the free racket and the clamped head (fem_racket.impact.oblique):
-the normal outcome is the head-on one, solvers agree, momentum and energy hold."""
+"""Oblique, spinning impacts on the free racket and the clamped head
+(fem_racket.impact.oblique.solve): the normal outcome is the head-on one, solvers agree, momentum
+and energy hold."""
 
 import math
 

@@ -10,12 +10,12 @@ import pytest
 
 from fem_racket.frame.hand import FIRM_GRIP
 from fem_racket.impact.incidence import DEFAULT_COMPLIANCE_RATIO, Incidence
-from fem_racket.impact.oblique import held_normal, oblique_on
-from fem_racket.impact.oblique_stroke import simulate_stroke
+from fem_racket.impact.oblique.solve import held_normal, oblique_on
+from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.simulate_oblique import simulate_oblique
-from fem_racket.impact.stroke import Stroke
+from fem_racket.impact.simulate_stroke import simulate_stroke
 from fem_racket.impact.swing import Swing
 from fem_racket.impact.tangential.stronge import gross_slip_bound
 

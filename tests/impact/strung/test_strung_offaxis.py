@@ -4,12 +4,12 @@ twist, symmetry, momentum and angular momentum, exact against CVODE."""
 import numpy as np
 import pytest
 
-from fem_racket.contact.bed_ball import BALL_STIFFNESS, BALL_ZETA
+from fem_racket.contact.bed_ball import BALL_STIFFNESS, BALL_ZETA, kawazoe_ball
 from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.offaxis import combined_modes, combined_point_vector
-from fem_racket.impact.strung import kawazoe_ball, strung_point
-from fem_racket.impact.strung_exact import strung_exact_states
-from fem_racket.impact.strung_impact import strung_engine, strung_impact
+from fem_racket.impact.strung.exact import strung_exact_states
+from fem_racket.impact.strung.impact import strung_engine, strung_impact
+from fem_racket.impact.strung.point import strung_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError
 
@@ -104,7 +104,7 @@ def test_offset_through_simulate_and_off_the_head(standard_model):
 def test_vtk_off_axis_ring_twists(standard_model):
     # The drawn bed's edge (edge "point") moves with the ring at the impact point, w + y theta;
     # the frame carries its twist (the roll is y J / I_p per unit time after the impact).
-    from fem_racket.impact.strung_impact import simulate_strung
+    from fem_racket.impact.strung.impact import simulate_strung
     from fem_racket.io.strung_vtk import frame_twist, strung_fields
     from fem_racket.strings.membrane import bed_mesh
 

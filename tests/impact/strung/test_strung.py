@@ -10,8 +10,8 @@ from scipy.integrate import simpson
 from fem_racket.contact.hunt_crossley import HuntCrossley
 from fem_racket.contact.linear import LinearContact, kcb_from_speed, zeta_from_cor
 from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
-from fem_racket.impact.strung import strung_point
-from fem_racket.impact.strung_impact import strung_engine, strung_impact
+from fem_racket.impact.strung.impact import strung_engine, strung_impact
+from fem_racket.impact.strung.point import strung_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError
 
@@ -112,7 +112,7 @@ def test_kawazoe_ball_exact_histories_against_cvode(standard_model):
     # closed-form histories (roots and residues, every mode) against CVODE (rtol 1e-10) and the
     # batched engine; COR and t_c to ~1e-10 (measured 3e-12 / 1e-13 s), the energies at t_c to
     # 1e-7; the peaks (801 samples, CVODE's interpolated linearly from its own grid) to 1e-4.
-    from fem_racket.impact.strung import BALL_STIFFNESS, BALL_ZETA, kawazoe_ball
+    from fem_racket.contact.bed_ball import BALL_STIFFNESS, BALL_ZETA, kawazoe_ball
 
     point = strung_point(standard_model, StringBed(tension_n=220.0), 0.75)
     law = kawazoe_ball(MB)
@@ -140,7 +140,7 @@ def test_hoop_edge(standard_model):
     # functions, so the rigid modes' values are the impact point's (to round-off) and the
     # momentum balance holds; the bending modes differ, and so does the COR (measured at 30 m/s:
     # 0.353 -> 0.393 at 0.60 L, 0.298 -> 0.283 at 0.80 L).
-    from fem_racket.impact.strung import BALL_STIFFNESS, BALL_ZETA
+    from fem_racket.contact.bed_ball import BALL_STIFFNESS, BALL_ZETA
 
     cors = {}
     for edge in ("point", "hoop"):
@@ -162,7 +162,7 @@ def test_impact_problem_with_strings(standard_model):
     from fem_racket.impact.problem import ImpactProblem
     from fem_racket.impact.simulate import simulate
     from fem_racket.impact.solvers import make_solver
-    from fem_racket.impact.strung_impact import simulate_strung
+    from fem_racket.impact.strung.impact import simulate_strung
 
     bed = StringBed(tension_n=230.0)
     direct = simulate_strung(standard_model, bed, position=0.8, speed=25.0)

@@ -1,6 +1,6 @@
 """A stroke: the ball met by a tilted face swung along an inclined path, :func:`simulate_stroke`.
 
-The stroke's geometry (:mod:`fem_racket.impact.stroke`) resolves the horizontal ball and the
+The stroke's geometry (:mod:`fem_racket.impact.oblique.stroke`) resolves the horizontal ball and the
 racket's path on the face: the normal impact is the swinging racket's
 (:func:`fem_racket.impact.simulate_oblique.normal_impact`) at ball speed V sin F with the swing
 scaled to its normal part S sin(F - P), and the tangential contact starts from the ball's and
@@ -14,9 +14,9 @@ from typing import Any
 
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.model_cache import frame_model
-from fem_racket.impact.oblique import ObliqueResult
+from fem_racket.impact.oblique.solve import ObliqueResult
+from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.impact.simulate_oblique import normal_impact
-from fem_racket.impact.stroke import Stroke
 from fem_racket.impact.swing import Swing
 from fem_racket.impact.tangential.oblique import BallMotion, tangential_impact
 from fem_racket.validation import InputError, check_positive

@@ -3,7 +3,7 @@
 The ball's own law acts between the ball and the bed at the impact point (x_i, y_i); the bed's
 edge moves with the frame. The coupling used (an assumption, stated here and in the README):
 
-1. **The head ring moves with the frame** (``edge``; :mod:`fem_racket.impact.strung_frame`).
+1. **The head ring moves with the frame** (``edge``; :mod:`fem_racket.impact.strung.frame`).
    ``"point"`` (default): the bed's edge is displaced uniformly by the frame's motion at the
    impact point, w(x_i) + y_i theta(x_i) (the static edge transmission to the point is then
    exactly 1: a uniformly displaced membrane translates rigidly); this is the paper's point
@@ -42,30 +42,13 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.bed_ball import (
-    BALL_DAMPING,
-    BALL_FIT_MASS,
-    BALL_STIFFNESS,
-    BALL_ZETA,
-    KAWAZOE_BALL,
-)
-from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.linear import LinearContact
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.strung_frame import FrameAtPoint, frame_at_point
+from fem_racket.impact.problem_checks import bed_coordinates
+from fem_racket.impact.strung.frame import FrameAtPoint, frame_at_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.point import DEFAULT_BED_MODES, DEFAULT_REFINE, bed_point_data
-from fem_racket.validation import InputError, check_positive, show
 
-__all__ = [
-    "BALL_STIFFNESS",
-    "BALL_ZETA",
-    "StrungPoint",
-    "check_strung_problem",
-    "clamped_point",
-    "kawazoe_ball",
-    "strung_point",
-]
+__all__ = ["StrungPoint", "clamped_point", "strung_point"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -139,35 +122,9 @@ class StrungPoint:
         return self.omega[self.rigid_count :], self.a[self.rigid_count :]
 
 
-def kawazoe_ball(ball_mass: float, separation: str = "displacement") -> ContactLaw:
-    """The ``kawazoe-1997-ball`` (:mod:`fem_racket.contact.bed_ball`) as a contact law for a
-    ball of ``ball_mass`` [kg]: the preset's spring k_b and dashpot c_b (the ball's own, whatever
-    its mass; at 0.057 kg the registry's preset itself)."""
-    mass = check_positive("ball_mass", ball_mass, "kg")
-    if mass == BALL_FIT_MASS and separation == KAWAZOE_BALL.separation:
-        return KAWAZOE_BALL
-    zeta = BALL_DAMPING / (2.0 * math.sqrt(mass * BALL_STIFFNESS))
-    return LinearContact(BALL_STIFFNESS, zeta, mass, separation)
-
-
 #: Bed modes whose value at the point is below this fraction of the largest are left out: in
 #: series with the frame they are never excited (antisymmetric modes at a point on an axis).
 SILENT = 1e-9
-
-
-def bed_coordinates(
-    bed: StringBed, position: float, lateral_m: float, frame_length_m: float, centre: float
-) -> np.ndarray:
-    """The impact point on the bed [m, from the head's centre], checked to lie on the head."""
-    x, y = (position - centre) * frame_length_m, lateral_m
-    ax, ay = 0.5 * bed.head_length_m, 0.5 * bed.head_width_m
-    if (x / ax) ** 2 + (y / ay) ** 2 >= 1.0:
-        lo, hi = centre - ax / frame_length_m, centre + ax / frame_length_m
-        raise InputError(
-            f"position = {show(position)} x/L, lateral {show(lateral_m)} m is not allowed with "
-            f"the string bed: must lie on the head ({lo:.3f} to {hi:.3f} x/L on the axis)"
-        )
-    return np.array([x, y])
 
 
 def _bed_modes(bed: StringBed, point: np.ndarray, bed_modes: int, refine: int):
@@ -212,31 +169,6 @@ def _assemble(frame: FrameAtPoint | None, w_bed, a_bed, shapes, data, where) -> 
         frame_shapes,
         nb,
     )
-
-
-def check_strung_problem(problem: Any) -> None:
-    """Refuse, in one line, what an impact problem with a string bed cannot take: a hand, a
-    racket moving before impact, the lumped K_CB's kcb and zeta, a point off the head."""
-    if not isinstance(problem.strings, StringBed):
-        raise InputError(f"strings = {problem.strings!r} is not allowed: must be a StringBed")
-    at_rest = "the strung racket is free and at rest"
-    lumped = "the bed replaces the lumped K_CB (give the ball's own law as law)"
-    refused = {
-        "hand": (problem.held, at_rest),
-        "swing": (problem.swing is not None, at_rest),
-        "frame_velocity": (problem.frame_velocity is not None, at_rest),
-        "kcb": (problem.kcb is not None, lumped),
-        "zeta": (problem.zeta is not None, lumped),
-    }
-    for key, (given, why) in refused.items():
-        if given:
-            raise InputError(f"{key} is not allowed with a string bed: {why}")
-    bed = problem.strings
-    offset = float(problem.offset)
-    L = problem.model.mesh.length
-    bed_coordinates(bed, problem.impact.position, offset, L, bed.head_centre)
-    if offset != 0.0:
-        _ = problem.model.torsion  # refuses a frame without torsion data
 
 
 def strung_point(

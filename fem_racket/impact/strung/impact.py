@@ -1,11 +1,11 @@
 """One impact of the ball on the strung racket: the ball's law against the string bed.
 
-The strung racket at the impact point (:mod:`fem_racket.impact.strung`: frame and bed in series,
+The strung racket at the impact point (:mod:`.point`: frame and bed in series,
 one modal structure) goes unchanged through the impact paths: the general integrator or CVODE
 for any ball law (:func:`strung_impact`, with histories), the exact batched engine for the linear
 ball (:func:`strung_engine`, COR and contact time only); a stretching bed CVODE alone
-(:mod:`fem_racket.impact.strung_stretch`). From the histories come the bed's and the ball's
-peak deflections and the energy bookkeeping (:class:`~fem_racket.impact.strung_result.
+(:mod:`fem_racket.impact.strung.stretch`). From the histories come the bed's and the ball's
+peak deflections and the energy bookkeeping (:class:`~fem_racket.impact.strung.result.
 StrungImpact`).
 """
 
@@ -17,17 +17,18 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.bed_ball import kawazoe_ball
 from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.general.histories import law_histories, ode_state_at
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
-from fem_racket.impact.law_impact import law_histories, ode_state_at
 from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.strung import StrungPoint, kawazoe_ball, strung_point
-from fem_racket.impact.strung_exact import strung_exact_states
-from fem_racket.impact.strung_result import StrungImpact
-from fem_racket.impact.strung_stretch import stretch_energy, stretch_states
+from fem_racket.impact.strung.exact import strung_exact_states
+from fem_racket.impact.strung.point import StrungPoint, strung_point
+from fem_racket.impact.strung.result import StrungImpact
+from fem_racket.impact.strung.stretch import stretch_energy, stretch_states
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, check_choice, check_positive, check_range
 
@@ -59,9 +60,9 @@ def strung_impact(
     """The ball (``ball_mass`` [kg], ``speed`` [m/s]) under ``law`` on the strung racket at rest.
 
     ``solver``: ``"exact"`` (the linear ball, every mode:
-    :mod:`fem_racket.impact.strung_exact`), ``"general"`` (COR ``tolerance``) or ``"cvode"``
+    :mod:`fem_racket.impact.strung.exact`), ``"general"`` (COR ``tolerance``) or ``"cvode"``
     (``rtol``, ``atol``, every mode); a stretching bed (``strings.stretch``) only ``"cvode"``
-    (:mod:`fem_racket.impact.strung_stretch`, a ball law without a state).
+    (:mod:`fem_racket.impact.strung.stretch`, a ball law without a state).
     """
     check_choice("solver", solver, STRUNG_SOLVERS)
     w, a = point.omega, point.a

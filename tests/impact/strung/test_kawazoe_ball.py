@@ -5,11 +5,17 @@ import math
 import numpy as np
 import pytest
 
-from fem_racket.contact.bed_ball import BALL_DAMPING, BALL_STIFFNESS, BALL_ZETA, KAWAZOE_BALL
+from fem_racket.contact.bed_ball import (
+    BALL_DAMPING,
+    BALL_STIFFNESS,
+    BALL_ZETA,
+    KAWAZOE_BALL,
+    kawazoe_ball,
+)
 from fem_racket.contact.linear import PAPER_KCB_POINTS
 from fem_racket.contact.presets import LAW_NAMES, get_law
-from fem_racket.impact.strung import clamped_point, kawazoe_ball
-from fem_racket.impact.strung_impact import strung_impact
+from fem_racket.impact.strung.impact import strung_impact
+from fem_racket.impact.strung.point import clamped_point
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.stiffening import stiffening
 from tests.clirun import run

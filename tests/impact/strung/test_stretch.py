@@ -5,9 +5,9 @@ import pytest
 
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.linear import LinearContact
-from fem_racket.impact.strung import clamped_point
-from fem_racket.impact.strung_impact import strung_impact
-from fem_racket.impact.strung_stretch import bed_stretch, solve_stretch
+from fem_racket.impact.strung.impact import strung_impact
+from fem_racket.impact.strung.point import clamped_point
+from fem_racket.impact.strung.stretch import bed_stretch, solve_stretch
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError
 
@@ -87,7 +87,7 @@ def test_stretching_bed_through_simulate():
     # elements: CVODE's dense Jacobian grows with the modes.)
     from fem_racket import FrameModel, standard_frame
     from fem_racket.impact.simulate import simulate
-    from fem_racket.impact.strung import strung_point
+    from fem_racket.impact.strung.point import strung_point
 
     standard_model = FrameModel.build(standard_frame(), 8)
     bed = StringBed(stretch=True)

@@ -4,10 +4,11 @@ contact falsely, and that, vouched, it agrees with the exact solution and CVODE.
 import numpy as np
 import pytest
 
+from fem_racket.contact.bed_ball import kawazoe_ball
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.receptance import Receptance
-from fem_racket.impact.strung import clamped_point, kawazoe_ball, strung_point
-from fem_racket.impact.strung_impact import strung_impact
+from fem_racket.impact.strung.impact import strung_impact
+from fem_racket.impact.strung.point import clamped_point, strung_point
 from fem_racket.strings.bed import StringBed
 
 MB = 0.057

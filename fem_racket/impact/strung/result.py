@@ -1,4 +1,4 @@
-"""The outcome of one impact on the strung racket (:func:`fem_racket.impact.strung_impact.
+"""The outcome of one impact on the strung racket (:func:`fem_racket.impact.strung.impact.
 strung_impact`): results, histories and the energy bookkeeping's totals.
 
 Every coordinate x of the strung racket's modal structure stores ``(x'^2 + omega^2 x^2) / 2``
@@ -21,7 +21,7 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.strung import StrungPoint
+from fem_racket.impact.strung.point import StrungPoint
 
 __all__ = ["StrungImpact"]
 
@@ -61,7 +61,7 @@ class StrungImpact:
         The frame (:func:`simulate_strung` sets it).
 
     The attributes an oblique impact reads of its normal impact
-    (:func:`fem_racket.impact.oblique.free_normal`) are those of an
+    (:func:`fem_racket.impact.oblique.solve.free_normal`) are those of an
     :class:`~fem_racket.impact.result.ImpactResult`: ``ball``, ``ball_velocity``,
     ``ball_speed_out``, ``x_impact``, ``offset``, ``deflection`` (the ball law's, its
     compression) and ``contact`` (None: no lumped K_CB; the normal stiffness of the tangential

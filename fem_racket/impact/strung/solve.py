@@ -1,7 +1,7 @@
 """An :class:`~fem_racket.impact.problem.ImpactProblem` with a string bed, by a solver.
 
-The strung racket (:mod:`fem_racket.impact.strung`) is solved by the methods of
-:func:`fem_racket.impact.strung_impact.strung_impact`: ``exact`` (the linear ball: the
+The strung racket (:mod:`.point`) is solved by the methods of
+:func:`fem_racket.impact.strung.impact.strung_impact`: ``exact`` (the linear ball: the
 ``kawazoe-1997-ball`` or a :class:`~fem_racket.contact.linear.LinearContact`; every mode, no
 options), ``general`` (any ball law; ``tolerance``) and ``cvode`` (any ball law; ``rtol``,
 ``atol``); ``auto`` picks ``exact`` for the linear ball and ``general`` otherwise. On the
@@ -11,7 +11,7 @@ c V_B0 at contact and ends the contact at a false early zero (the kawazoe-1997-b
 20 m/s: 0.09-0.21 ms against 4.53 ms); its vouch (:mod:`fem_racket.impact.general.vouch`: a
 contact shorter than a quarter of the estimate starts again on the time found, the steps
 doubled until the COR converges) catches it, and the answer agrees with the exact one
-(``tests/strings/test_general_on_bed.py``).
+(``tests/impact/strung/test_general_on_bed.py``).
 The histories have a fixed number of samples over the contact, and every frame mode is used,
 so the other options are refused in one line, as is ``bdf``.
 """
@@ -21,7 +21,7 @@ from __future__ import annotations
 from typing import Any
 
 from fem_racket.impact.settings import SolverOptions
-from fem_racket.impact.strung_impact import StrungImpact, simulate_strung
+from fem_racket.impact.strung.impact import StrungImpact, simulate_strung
 from fem_racket.validation import InputError, show
 
 __all__ = ["STRUNG_OPTIONS", "check_strung", "solve_strung"]

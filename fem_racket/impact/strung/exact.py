@@ -1,7 +1,7 @@
 """The linear ball on the strung racket, exactly: roots, separation and closed-form histories.
 
 The ball's spring-dashpot (k, c) on the strung racket's modal structure
-(:mod:`fem_racket.impact.strung`) is the engine's linear problem (:mod:`fem_racket.impact.exact`)
+(:mod:`.point`) is the engine's linear problem (:mod:`fem_racket.impact.exact`)
 with every mode kept. From its roots lambda_j and contact-force residues f_j = (k + c lambda_j) r_j
 (per unit speed; :mod:`fem_racket.impact.exact.single`) every coordinate follows in closed form::
 
@@ -24,7 +24,7 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.impact.exact.roots import RootSet, coupled_roots
 from fem_racket.impact.exact.separation import separation_time
-from fem_racket.impact.strung import StrungPoint
+from fem_racket.impact.strung.point import StrungPoint
 from fem_racket.impact.system import no_separation
 from fem_racket.validation import InputError, show
 

@@ -1,6 +1,6 @@
 """The strings' stretch in the impact: the bed's tension rising with its deflection (CVODE).
 
-The linear bed (:mod:`fem_racket.impact.strung`) keeps each string at its strung tension T. At a
+The linear bed (:mod:`.point`) keeps each string at its strung tension T. At a
 tennis impact's 20-40 mm the strings stretch and their tension rises (measured statically in
 :mod:`fem_racket.strings.stiffening`: +9.6 % nylon, +17.8 % polyester at 20 mm). Here the same
 averaged (Foeppl/Kirchhoff-Carrier type) stretch acts in the dynamics: with the bed's
@@ -20,7 +20,7 @@ the deflection relative to the edge (the ring's motion does not strain the strin
 rigid in its plane. EA is the string preset's (:mod:`fem_racket.strings.materials`, typical).
 
 The ball's law (without an internal state) acts between the ball and the bed's point as in
-:func:`fem_racket.impact.strung_impact.strung_impact`; CVODE (BDF, analytic Jacobian) integrates
+:func:`fem_racket.impact.strung.impact.strung_impact`; CVODE (BDF, analytic Jacobian) integrates
 to the law's end condition. With EA -> 0 this is the linear strung racket (``stretch=False``
 gives exactly :func:`fem_racket.impact.ode.law_cvode.solve_law_cvode`'s equations).
 """
@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.impact.strung import StrungPoint
+from fem_racket.impact.strung.point import StrungPoint
 from fem_racket.strings.membrane import bed_mesh
 from fem_racket.validation import InputError, show
 

@@ -1,13 +1,14 @@
-"""A stroke's face and path angles (fem_racket.impact.stroke, fem_racket.impact.oblique_stroke)."""
+"""A stroke's face and path angles (fem_racket.impact.oblique.stroke,
+fem_racket.impact.simulate_stroke)."""
 
 import math
 
 import pytest
 
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.oblique_stroke import simulate_stroke
+from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.impact.simulate_oblique import simulate_oblique
-from fem_racket.impact.stroke import Stroke
+from fem_racket.impact.simulate_stroke import simulate_stroke
 from fem_racket.impact.swing import Swing
 from fem_racket.validation import InputError
 

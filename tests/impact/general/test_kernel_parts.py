@@ -1,0 +1,63 @@
+"""Parts of the compiled march that issue 27's speed-ups changed.
+
+- a power law's x^(n-1) from a nearby one by its Taylor series is pow's to round-off, and pow
+  itself outside the series' range;
+- each case starts from its own law exponent's step count and keeps its own histories: in a
+  batch of laws with different exponents, every case's answer and histories are those it has
+  alone, bit for bit.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from fem_racket.contact.hunt_crossley import HuntCrossley
+from fem_racket.impact.general.integrator import settings, solve_general
+from fem_racket.impact.general.kernel_laws import power
+from fem_racket.impact.general.vouch import first_steps
+from fem_racket.impact.law_impact import receptance
+
+
+@pytest.mark.parametrize("a", [0.0, 0.3, 1.0, 7.9, 13.9])
+def test_power_from_a_nearby_power_is_pow_to_round_off(a):
+    for b0 in (1e-7, 2.4e-3, 0.05):
+        near = (b0, b0**a)
+        limit = 1e-4 / (a + 4.0)
+        for e in (1e-12, -3e-9, 2e-7, -0.999 * limit, 0.999 * limit):
+            base = b0 * (1.0 + e)
+            # the series' four terms: the rest is below 1e-18 relative
+            assert power(base, a, near) == pytest.approx(base**a, rel=4e-16, abs=0.0)
+        for e in (1.01 * limit, -0.5, 3.0):  # out of the series' range: pow itself
+            base = b0 * (1.0 + e)
+            assert power(base, a, near) == base**a
+    assert power(0.0, a, (1e-3, 1e-3**a)) == 0.0**a  # contact lost: pow, not the series
+    assert power(2e-3, a, (0.0, 0.0)) == 2e-3**a  # no earlier power
+
+
+def test_first_steps_grow_with_the_exponent():
+    steps = settings(1e-6)[0]
+    first = first_steps(steps, np.array([0.5, 1.0, 8.913, 14.87]), 4)
+    # n^(1/8): at most 1 (n <= 1), then 250 and 267 steps for the presets' exponents
+    assert first.tolist() == [steps, steps, 250, 267]
+
+
+def test_cases_of_different_exponents_are_each_as_alone(standard_model):
+    exponents = np.array([1.0, 2.5, 9.0])
+    stiffness = np.array([5e4, 2e7, 8e16])
+    law = HuntCrossley(stiffness, exponents, np.array([0.0, 0.05, 0.01]))
+    positions = [0.9, 0.6, 0.75]
+    speeds = np.array([30.0, 20.0, 40.0])
+    out = solve_general(law, receptance(standard_model, positions, 0.057), speeds)
+    for i in range(3):
+        one = solve_general(
+            HuntCrossley(stiffness[i], exponents[i], law.alpha[i]),
+            receptance(standard_model, positions[i], 0.057),
+            speeds[i],
+        )
+        assert out.ball_velocity[i] == one.ball_velocity[0]
+        assert out.step[i] == one.step[0]
+        n = int(one.last[0]) + 1
+        assert out.last[i] == one.last[0]
+        for key in ("force", "deflection", "rate", "state"):
+            assert np.array_equal(getattr(out, key)[i, :n], getattr(one, key)[0, :n]), key
