@@ -4,7 +4,7 @@ depend on what the process compiled before it.
 numba compiles many operations (complex products and quotients, integer powers, complex
 ``abs``, ...) as small internal functions (``BaseContext.compile_internal``) and keeps each in
 one table per process, ``cached_internal_func``, keyed by the function's code, its signature and
-the error model, but not by the fastmath flags it was compiled with (numba 0.60-0.62). So the
+the error model, but not by the fastmath flags it was compiled with (numba 0.68 still). So the
 first function of a process that needs a helper decides the helper's flags for every later
 function: after one compiled with ``fastmath`` (the linear engine's
 :func:`~fem_racket.impact.exact.kernel_roots.case_roots` with ``contract``, a library's
