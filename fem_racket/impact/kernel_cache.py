@@ -7,7 +7,10 @@ other file changes, e.g. after a ``git pull`` that edits ``kernel_node.py`` but 
 ``kernel.py``: silently stale answers. :func:`guard` keeps a SHA-256 of all the kernel files of a
 room in its ``__pycache__/kernels.sha256``; when it differs from the sources', the room's cached
 numba files (``*.nbi``, ``*.nbc``) are removed before anything compiles, so every kernel is
-compiled again from the current sources. Once per room and process.
+compiled again from the current sources. Once per room and process. It also keeps numba's
+internal helpers apart per fastmath setting (:func:`fem_racket.impact.kernel_fastmath.isolate`)
+before anything compiles, and stamps that recipe into the digest, so caches compiled without it
+are compiled again.
 """
 
 from __future__ import annotations
@@ -15,6 +18,8 @@ from __future__ import annotations
 import hashlib
 import os
 from pathlib import Path
+
+from fem_racket.impact.kernel_fastmath import RECIPE, isolate
 
 __all__ = ["guard"]
 
@@ -29,11 +34,12 @@ def guard(folder: str | os.PathLike, modules: tuple[str, ...]) -> bool:
     A folder that cannot be written (a read-only install) is left as it is: numba then caches
     elsewhere or not at all.
     """
+    isolate()
     folder = Path(folder)
     if folder in _CHECKED:
         return False
     _CHECKED.add(folder)
-    digest = hashlib.sha256()
+    digest = hashlib.sha256(RECIPE.encode())
     for name in modules:
         digest.update((folder / f"{name}.py").read_bytes())
     cache = folder / "__pycache__"
