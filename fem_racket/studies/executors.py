@@ -32,6 +32,7 @@ import os
 import re
 import sys
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from functools import partial
 from typing import Any
 
@@ -41,7 +42,7 @@ from fem_racket.extras import require
 from fem_racket.studies.pool import pin_blas_threads, run_pool
 from fem_racket.validation import InputError, check_choice, show
 
-__all__ = ["BACKENDS", "check_scheduler", "pin_blas_threads", "run_chunks"]
+__all__ = ["BACKENDS", "BarCounts", "check_scheduler", "pin_blas_threads", "run_chunks"]
 
 log = logging.getLogger(__name__)
 
@@ -121,6 +122,15 @@ def _dask(
         client.close()  # the scheduler then drops every task of this sweep not yet run
 
 
+@dataclass(frozen=True)
+class BarCounts:
+    """What the progress bar counts: the cases of the whole run and those already finished
+    before it (a resumed sweep)."""
+
+    total: int
+    initial: int = 0
+
+
 def run_chunks(
     work: Work,
     chunks: Sequence[np.ndarray],
@@ -131,8 +141,7 @@ def run_chunks(
     workers: int | None = None,
     scheduler: str | None = None,
     progress: bool | None = None,
-    total: int | None = None,
-    initial: int = 0,
+    counts: BarCounts | None = None,
     prepare: Callable[[], Any] | None = None,
 ) -> None:
     """Run ``work(chunk, **kwargs)`` on every chunk and pass each result to ``done``.
@@ -146,8 +155,9 @@ def run_chunks(
         Dask scheduler address (required by the ``dask`` backend).
     progress : bool, optional
         Show a progress bar (rate, ETA) on stderr; None: only when stderr is a terminal.
-    total, initial : int
-        Cases in the whole sweep and already finished (for the bar).
+    counts : BarCounts, optional
+        Cases in the whole run and already finished, for the bar (None: the chunks' cases,
+        none finished).
     prepare : callable, optional
         Run in this process before a local pool forks its workers, which then inherit what it
         loaded (:func:`fem_racket.studies.pool.run_pool`); not run by the other backends.
@@ -155,8 +165,8 @@ def run_chunks(
     check_choice("backend", backend, BACKENDS)
     kwargs = kwargs or {}
     todo = sum(len(c) for c in chunks)
-    total = todo + initial if total is None else total
-    with _progress(total, progress, initial) as bar:
+    counts = BarCounts(todo) if counts is None else counts
+    with _progress(counts.total, progress, counts.initial) as bar:
         if backend == "serial" or (backend == "processes" and len(chunks) <= 1):
             _serial(work, chunks, kwargs, done, bar)
         elif backend == "processes":

@@ -35,7 +35,7 @@ from fem_racket.frame.segments import Frame
 from fem_racket.outputs import atomic_output, atomic_outputs, check_output_path, sidecar_path
 from fem_racket.studies.cases import COLUMNS, VARIABLES, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
-from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
+from fem_racket.studies.executors import BACKENDS, BarCounts, check_scheduler, run_chunks
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, SweepSpec, chunks
 from fem_racket.studies.options import field_names, take
 from fem_racket.studies.sweep_options import SweepRun, SweepSolving
@@ -267,8 +267,7 @@ def run_sweep(
             workers=workers,
             scheduler=scheduler,
             progress=run.progress,
-            total=spec.size,
-            initial=spec.size - todo.size,
+            counts=BarCounts(spec.size, spec.size - todo.size),
             prepare=_prepare(spec, todo),
         )
         result = SweepResult(spec, values, backend, run.parameters)
