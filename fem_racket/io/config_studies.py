@@ -137,16 +137,6 @@ def _rackets(o: dict[str, Any]) -> list[tuple[str, Any]]:
     return out
 
 
-#: Options the spin map does not use, as ``map --angle`` refuses them (a swing is a stroke:
-#: simulate's face and path angles).
-SPIN_REFUSES = {
-    "power_fraction": "the spin map has no power area",
-    "racket_speed": "the spin map strikes the racket at rest (simulate --path-angle strokes)",
-    "pivot": "the spin map strikes the racket at rest",
-    "reference": "the spin map strikes the racket at rest",
-}
-
-
 def _key(cfg: RunConfig, command: str, dest: str) -> str:
     """The file's key setting option ``dest`` of ``command``, with its value, for a message."""
     from fem_racket.io.config_keys import CORE_KEYS
@@ -165,6 +155,8 @@ def _key(cfg: RunConfig, command: str, dest: str) -> str:
 def _refuse_spin(cfg: RunConfig, o: dict[str, Any], law: Any) -> None:
     """Refuse what the spin map would drop (a key at the command's default changes nothing)."""
     given = {k for k, v in MAP_DEFAULTS.items() if o[k] != v}
+    from fem_racket.studies.spin_map import SPIN_REFUSES
+
     why = dict(SPIN_REFUSES)
     if law is not None:  # the law's own parameters replace the paper's law's
         why.update(dict.fromkeys(("kcb", "zeta", "separation", "modes"), f"law {law.name}'s own"))

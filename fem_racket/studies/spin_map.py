@@ -29,12 +29,20 @@ from fem_racket.impact.solvers import make_solver
 from fem_racket.studies.face_map import increasing
 from fem_racket.validation import InputError, check_positive
 
-__all__ = ["SPIN_FIELDS", "SPIN_OFFSETS", "SPIN_POSITIONS", "SpinMap", "spin_map"]
+__all__ = ["SPIN_FIELDS", "SPIN_OFFSETS", "SPIN_POSITIONS", "SPIN_REFUSES", "SpinMap", "spin_map"]
 
 #: The spin map's grid unless given: x/L along the head and y [m] across it (each point is one
 #: oblique impact).
 SPIN_POSITIONS = "0.52:0.96:12"
 SPIN_OFFSETS = "-0.12:0.12:9"
+#: Options of a map that the spin map does not use, refused by ``map --angle`` and a run file's
+#: spin map alike (a swing is a stroke: simulate's face and path angles).
+SPIN_REFUSES = {
+    "power_fraction": "the spin map has no power area",
+    "racket_speed": "the spin map strikes the racket at rest (simulate --path-angle strokes)",
+    "pivot": "the spin map strikes the racket at rest",
+    "reference": "the spin map strikes the racket at rest",
+}
 
 #: The mapped outputs: field -> (unit, label).
 SPIN_FIELDS = {

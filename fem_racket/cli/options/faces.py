@@ -21,7 +21,7 @@ from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.runfile import given_options
 from fem_racket.frame.model import FrameModel
 from fem_racket.studies.grid import as_values
-from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS
+from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
 from fem_racket.validation import InputError
 
 __all__ = [
@@ -45,13 +45,6 @@ OBLIQUE = {
     "friction": ("--friction", "MU", "Coulomb friction ball/strings [-] (default 0.4 with "
                  "--angle)"),
 }  # fmt: skip
-#: Options the spin map does not use (a swing is a stroke: simulate --face-angle/--path-angle).
-SPIN_REFUSES = {
-    "power_fraction": "the spin map has no power area",
-    "racket_speed": "the spin map strikes the racket at rest (simulate --path-angle strokes)",
-    "pivot": "the spin map strikes the racket at rest",
-    "reference": "the spin map strikes the racket at rest",
-}
 
 
 def add_face_options(g: argparse._ArgumentGroup) -> None:
