@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_impact_options,
     add_output_options,
@@ -63,7 +64,7 @@ OUT_SUFFIXES = (".json", ".csv")
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``simulate`` command."""
-    p = sub.add_parser("simulate", help="simulate one ball impact on the racket")
+    p = add_command(sub, "simulate", "simulate one ball impact on the racket")
     add_impact_options(p)
     add_swing_options(p)
     add_hand_options(p)
