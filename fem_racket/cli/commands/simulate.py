@@ -40,7 +40,7 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
-from fem_racket.cli.options.output import print_result, write_result_files
+from fem_racket.cli.options.output import core_rows, print_result, write_result_files
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.cli.options.strings_oblique import run_strung_oblique
@@ -199,11 +199,7 @@ def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, st
     if summary["rebound_speed_m_s"] < 0:
         rebound += " (negative: the ball keeps moving forward, COR < 0)"
     return [
-        ("coefficient of restitution", significant(summary["cor"], 6), "-"),
-        ("contact time", significant(summary["contact_time_s"] * 1e3, 5), "ms"),
-        ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound),
-        ("peak force", significant(summary["peak_force_n"], 4), "N"),
-        ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+        *core_rows(summary, rebound),
         *_twist_rows(summary),
         *_swing_rows(summary, swinging),
         ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),

@@ -14,11 +14,13 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
+from fem_racket.cli.text import significant
 from fem_racket.outputs.jsonable import json_ready
 
 __all__ = [
     "add_output_options",
     "add_overwrite_json",
+    "core_rows",
     "mesh_files",
     "print_json",
     "print_result",
@@ -66,6 +68,19 @@ def print_result(
         print(f"{name:<28} {value:>14} {unit}".rstrip())
     print_written(files)
     return 0
+
+
+def core_rows(summary: dict[str, Any], rebound_unit: str = "m/s") -> list[tuple[str, str, str]]:
+    """The first rows of a head-on impact's table (``simulate``, on a frame or a string bed):
+    COR [-], contact time [ms], rebound speed [m/s] (its unit shown as ``rebound_unit``), peak
+    force [N] and impact point [x/L], as (name, value, unit) for :func:`print_result`."""
+    return [
+        ("coefficient of restitution", significant(summary["cor"], 6), "-"),
+        ("contact time", significant(summary["contact_time_s"] * 1e3, 5), "ms"),
+        ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound_unit),
+        ("peak force", significant(summary["peak_force_n"], 4), "N"),
+        ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+    ]
 
 
 def add_output_options(
