@@ -40,7 +40,12 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
-from fem_racket.cli.options.output import core_rows, print_result, write_result_files
+from fem_racket.cli.options.output import (
+    core_rows,
+    offset_rows,
+    print_result,
+    write_result_files,
+)
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.cli.options.strings_oblique import run_strung_oblique
@@ -211,8 +216,7 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
     if "offset_m" not in summary:
         return []
     return [
-        ("offset from the axis", significant(summary["offset_m"], 4), "m"),
-        ("roll rate after impact", significant(summary["roll_rate_rad_s"], 4), "rad/s"),
+        *offset_rows(summary),
         (
             "lost energy in torsion",
             significant(100 * summary["torsion_energy_share"], 3),

@@ -22,6 +22,7 @@ __all__ = [
     "add_overwrite_json",
     "core_rows",
     "mesh_files",
+    "offset_rows",
     "print_json",
     "print_result",
     "print_written",
@@ -80,6 +81,15 @@ def core_rows(summary: dict[str, Any], rebound_unit: str = "m/s") -> list[tuple[
         ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound_unit),
         ("peak force", significant(summary["peak_force_n"], 4), "N"),
         ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+    ]
+
+
+def offset_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """The rows of an off-axis head-on impact (``simulate --offset``, on a frame or a string
+    bed): the offset from the long axis [m] and the racket's roll rate after impact [rad/s]."""
+    return [
+        ("offset from the axis", significant(summary["offset_m"], 4), "m"),
+        ("roll rate after impact", significant(summary["roll_rate_rad_s"], 4), "rad/s"),
     ]
 
 

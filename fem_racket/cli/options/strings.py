@@ -26,6 +26,7 @@ from typing import Any
 from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
 from fem_racket.cli.options.output import (
     core_rows,
+    offset_rows,
     print_result,
     run_parameters,
     write_result_files,
@@ -140,14 +141,7 @@ def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
     freqs = ", ".join(f"{f:.0f}" for f in s["stringbed_frequencies_hz"])
     return [
         *core_rows(s),
-        *(
-            [
-                ("offset from the axis", significant(s["offset_m"], 4), "m"),
-                ("roll rate after impact", significant(s["roll_rate_rad_s"], 4), "rad/s"),
-            ]
-            if s["offset_m"]
-            else []
-        ),
+        *(offset_rows(s) if s["offset_m"] else []),
         ("impact speed", significant(s["speed_m_s"], 5), "m/s"),
         ("string bed", f"{s['pattern']} {s['string']}", ""),
         ("string tension", significant(s["string_tension_n"], 4), "N"),
