@@ -44,7 +44,20 @@ OBLIQUE = {
     "spin": ("--spin", "RPM", "incoming spin [rpm], positive = topspin (default 0 with --angle)"),
     "friction": ("--friction", "MU", "Coulomb friction ball/strings [-] (default 0.4 with "
                  "--angle)"),
+    "side_angle": ("--side-angle", "DEG", "angle [deg] of the ball's path from the plane of the "
+                   "long axis, -90..90 (+: toward +y): a 3-D oblique ball; maps the outgoing "
+                   "side spin and angle too (default 0)"),
+    "side_spin": ("--side-spin", "RPM", "incoming side spin [rpm] about the long axis's "
+                  "direction, + rolling toward +y (default 0)"),
 }  # fmt: skip
+
+
+#: The printed ranges over the face of a ball crossing it: field, label, unit.
+_SIDE_ROWS = (
+    ("side_spin_out_rpm", "side spin out", "rpm"),
+    ("side_angle_out_deg", "side angle out", "deg"),
+    ("racket_yaw_rate_rad_s", "racket yaw rate", "rad/s"),
+)
 
 
 def add_face_options(g: argparse._ArgumentGroup) -> None:
@@ -135,6 +148,9 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
         print(f"  {'spin out max':<26} {significant(hi, 4):>10} rpm at {significant(x_hi, 4)} x/L,"
               f" y = {y_hi:g} m")  # fmt: skip
         print(f"  {'angle out':<26} {significant(a_lo, 4):>10} to {significant(a_hi, 4)} deg")
+        for key, label, unit in _SIDE_ROWS if inc.lateral else ():
+            lo, _, hi, _, _ = m.extreme(key)
+            print(f"  {label:<26} {significant(lo, 4):>10} to {significant(hi, 4)} {unit}")
         print(f"  {'contact regimes':<26} {', '.join(m.summary()['contact_regimes'])}")
     print_written(outs)
     return 0
