@@ -68,14 +68,8 @@ def _config(checked: RunFile) -> RunConfig:
 def parse_config(
     text: str, source: str | os.PathLike | None = None, *, command_tables: Any = None
 ) -> RunConfig:
-    """Check the TOML ``text`` of a run file (``source`` names it in errors and anchors paths).
-
-    Parameters
-    ----------
-    command_tables : iterable of str, optional
-        Table names accepted besides the core ones; the commands' tables by default
-        (:data:`~fem_racket.io.config_keys.COMMAND_TABLES`).
-    """
+    """The :class:`RunConfig` of the TOML ``text`` of a run file, checked (``source`` names it
+    in errors and anchors paths); see :func:`~fem_racket.io.config_file.parse_run_file`."""
     return _config(parse_run_file(text, source, command_tables=command_tables))
 
 

@@ -39,24 +39,25 @@ def _refuse(where: str, value: Any, why: str) -> InputError:
     return InputError(f"{where} = {show(value)} is not allowed: {why}")
 
 
-def number(where: str, value: Any) -> float:
-    """A number option (``type=float``): a TOML number, or a text holding one."""
-    if isinstance(value, bool) or not isinstance(value, (int, float, str)):
-        raise _refuse(where, value, "must be a number")
-    try:
-        return float(value)
-    except ValueError:
-        raise _refuse(where, value, "must be a number") from None
+def _typed(kind: type, refused: tuple[type, ...], what: str) -> Option:
+    """The conversion of an option of ``type=kind``: a TOML value of that kind, or a text
+    holding one; ``refused`` kinds (a bool for a number, a float for an integer) refused."""
+
+    def conv(where: str, value: Any) -> Any:
+        if isinstance(value, refused) or not isinstance(value, (int, float, str)):
+            raise _refuse(where, value, f"must be {what}")
+        try:
+            return kind(value)
+        except ValueError:
+            raise _refuse(where, value, f"must be {what}") from None
+
+    return conv
 
 
-def integer(where: str, value: Any) -> int:
-    """An integer option (``type=int``): a TOML integer, or a text holding one."""
-    if isinstance(value, (bool, float)) or not isinstance(value, (int, str)):
-        raise _refuse(where, value, "must be an integer")
-    try:
-        return int(value)
-    except ValueError:
-        raise _refuse(where, value, "must be an integer") from None
+#: A number option (``type=float``).
+number = _typed(float, (bool,), "a number")
+#: An integer option (``type=int``).
+integer = _typed(int, (bool, float), "an integer")
 
 
 def flag(where: str, value: Any) -> bool:
