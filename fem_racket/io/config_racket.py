@@ -24,7 +24,11 @@ from fem_racket.studies.target_values import RANKED, TARGETS, parse_target
 from fem_racket.validation import InputError, check_integer, show, work_begins
 
 __all__ = [
+    "CLOSEST_OPTIONS",
     "CUSTOMISE_MAPS",
+    "CUSTOMISE_OPTIONS",
+    "FIT_OPTIONS",
+    "MODES_OPTIONS",
     "closest_file",
     "customise_file",
     "fit_file",
@@ -54,6 +58,17 @@ def _targets(ranked: bool) -> dict[str, tuple[Any, Option]]:
     return {**dict.fromkeys(names, (None, _target)), "places": (",".join(PLACES), text)}
 
 
+#: The options of each command's table: dest -> (default, conversion); the commands' defaults
+#: but ``out`` (no file unless given).
+_FILES = {"out": (None, text), "overwrite": (False, flag)}
+_SPEC = ("length", "mass", "balance", "swing_weight", "f1", "twist_weight", "torsion_frequency")
+MODES_OPTIONS: dict[str, tuple[Any, Option]] = {"count": (4, integer)}
+FIT_OPTIONS = {**dict.fromkeys(_SPEC, (None, number)), "elements": (DEFAULT_ELEMENTS, integer),
+               **_FILES}  # fmt: skip
+CUSTOMISE_OPTIONS = {**_targets(False), **_FILES, "maps": (CUSTOMISE_MAPS, text)}
+CLOSEST_OPTIONS = {**_targets(True), "count": (3, integer)}
+
+
 def _overwrite(cfg: RunConfig) -> dict[str, Any]:
     d = cfg.defaults()
     return {"overwrite": d["overwrite"]} if "overwrite" in d else {}
@@ -65,7 +80,7 @@ def modes_file(cfg: RunConfig) -> Any:
     from fem_racket.frame.model import FrameModel
     from fem_racket.io.config_run import file_frame
 
-    o = table_options(cfg, "modes", {"count": (4, integer)})
+    o = table_options(cfg, "modes", MODES_OPTIONS)
     if o["count"] < 1:
         raise InputError(f"count = {o['count']} is not allowed: must be an integer >= 1")
     model = FrameModel.build(file_frame(cfg), cfg.defaults().get("elements", 20))
@@ -80,10 +95,7 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.io.racket_files import FitSpec, fit_files, fit_frame, mesh_files
     from fem_racket.outputs import check_output_path
 
-    spec = {n: (None, number) for n in ("length", "mass", "balance", "swing_weight", "f1")}
-    spec.update(twist_weight=(None, number), torsion_frequency=(None, number))
-    options = {**spec, "elements": (DEFAULT_ELEMENTS, integer), "out": (None, text)}
-    o = table_options(cfg, "fit", {**options, "overwrite": (False, flag)}, _overwrite(cfg))
+    o = table_options(cfg, "fit", FIT_OPTIONS, _overwrite(cfg))
     elements = check_integer("elements", o["elements"], minimum=3)
     for name in ("length", "mass", "balance", "swing_weight"):
         if o[name] is None:
@@ -91,7 +103,7 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
             raise InputError(
                 f"{name} is required: give {flag_name} (or {name} in the run file's [fit])"
             )
-    fit = FitSpec(**{k: o[k] for k in spec}, elements=elements)
+    fit = FitSpec(**{k: o[k] for k in _SPEC}, elements=elements)
     out = out or o["out"]
     if out is None:
         work_begins()
@@ -116,10 +128,9 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.studies.customise import customise
     from fem_racket.studies.target_values import place_list, targets_from
 
-    files = {"out": (None, text), "maps": (CUSTOMISE_MAPS, text), "overwrite": (False, flag)}
     d = cfg.defaults()
     core = {**_PLAY, **{k: d[k] for k in _PLAY if k in d}, **_overwrite(cfg)}
-    o = table_options(cfg, "customise", {**_targets(False), **files}, core)
+    o = table_options(cfg, "customise", CUSTOMISE_OPTIONS, core)
     places, out = place_list(o["places"]), out or o["out"]
     paths = (Path(out), Path(o["maps"])) if out is not None else None
     if paths is not None:
@@ -146,7 +157,7 @@ def closest_file(cfg: RunConfig, rackets: Any) -> list[Any]:
     from fem_racket.studies.closest import closest
     from fem_racket.studies.target_values import place_list, targets_from
 
-    o = table_options(cfg, "closest", {**_targets(True), "count": (3, integer)})
+    o = table_options(cfg, "closest", CLOSEST_OPTIONS)
     if rackets is None:
         raise InputError("rackets = none is not allowed: give the racket list, a CSV file")
     targets = targets_from(o)

@@ -19,14 +19,32 @@ from typing import Any
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.io.config_tables import choice, flag, number, table_options, text, texts
+from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS
 from fem_racket.validation import InputError, work_begins
 
-__all__ = ["calibrate_file", "compare_file"]
+__all__ = ["CALIBRATE_OPTIONS", "COMPARE_OPTIONS", "calibrate_file", "compare_file"]
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
 #: ``compare``'s play from the core tables: argparse dest -> the command's default.
 _PLAY = {"speed": 20.0, "racket_speed": 0.0, "reference": DEFAULT_REFERENCE, "pivot": None}
+
+
+#: The options of each command's table: dest -> (default, conversion); the commands' defaults.
+COMPARE_OPTIONS = {
+    "point": (0.75, number),
+    "positions": ("0.5:1.0:200", text),
+    "offsets": (None, text),
+    "grip": ("firm", choice(("firm", "loose"))),
+    "out": (None, texts),
+    "overwrite": (False, flag),
+}
+CALIBRATE_OPTIONS = {
+    "family": ("hysteretic", choice(tuple(sorted(FAMILIES)))),
+    "targets": ("kawazoe-1997", choice(tuple(sorted(TARGET_SETS)))),
+    "out": (None, text),
+    "overwrite": (False, flag),
+}
 
 
 def _core(cfg: RunConfig, defaults: dict[str, Any]) -> dict[str, Any]:
@@ -45,16 +63,8 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     from fem_racket.io.setups import compare_play, read_setups
     from fem_racket.studies.compare import compare, differences
 
-    options = {
-        "point": (0.75, number),
-        "positions": ("0.5:1.0:200", text),
-        "offsets": (None, text),
-        "grip": ("firm", choice(("firm", "loose"))),
-        "out": (None, texts),
-        "overwrite": (False, flag),
-    }
     core = _core(cfg, {**_PLAY, "elements": 20, "add_mass": None, "overwrite": False})
-    o = table_options(cfg, "compare", options, core)
+    o = table_options(cfg, "compare", COMPARE_OPTIONS, core)
     rackets = [str(r) for r in rackets]
     if len(rackets) < 2:
         raise InputError(f"rackets = {len(rackets)} given is not allowed: need at least 2")
@@ -80,16 +90,10 @@ def calibrate_file(cfg: RunConfig, out: Any = None) -> Any:
     its .toml, .json and .png written into that folder, as the command writes them."""
     from fem_racket.io.calibration_files import calibration_files, write_calibration
     from fem_racket.outputs import Target, check_targets
-    from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS, calibrate
+    from fem_racket.studies.calibrate import calibrate
 
-    options = {
-        "family": ("hysteretic", choice(tuple(sorted(FAMILIES)))),
-        "targets": ("kawazoe-1997", choice(tuple(sorted(TARGET_SETS)))),
-        "out": (None, text),
-        "overwrite": (False, flag),
-    }
     core = _core(cfg, {"ball_mass": DEFAULT_BALL_MASS, "out": None, "overwrite": False})
-    o = table_options(cfg, "calibrate", options, core)
+    o = table_options(cfg, "calibrate", CALIBRATE_OPTIONS, core)
     folder = out or o["out"]
     files = [] if folder is None else calibration_files(folder, o["family"], o["targets"])
     check_targets([Target(f) for f in files], overwrite=o["overwrite"])

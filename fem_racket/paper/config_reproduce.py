@@ -14,13 +14,29 @@ from __future__ import annotations
 import os
 from typing import Any
 
+from fem_racket.io.config_tables import choice, flag, number, table_options, text
 from fem_racket.io.figure_files import DEFAULT_DPI, FIGURE_FORMATS
 
-__all__ = ["DEFAULT_OUT", "DEFAULT_REPORT", "destinations", "reproduce_file"]
+__all__ = [
+    "DEFAULT_OUT",
+    "DEFAULT_REPORT",
+    "REPRODUCE_OPTIONS",
+    "destinations",
+    "reproduce_file",
+]
 
 #: Where the figures and the report go by default.
 DEFAULT_OUT = "output/paper"
 DEFAULT_REPORT = "REPRODUCTION.md"
+#: ``[reproduce]``'s options: dest -> (default, conversion), the command's defaults.
+REPRODUCE_OPTIONS = {
+    "out": (None, text),
+    "report": (None, text),
+    "quick": (False, flag),
+    "overwrite": (False, flag),
+    "format": (None, choice(FIGURE_FORMATS)),
+    "dpi": (DEFAULT_DPI, number),
+}
 
 
 def destinations(law: str, out: str | None, report: str | None) -> tuple[str, str]:
@@ -48,20 +64,13 @@ def reproduce_file(
         seconds each figure took.
     """
     from fem_racket.contact.presets import get_law, law_parameters
-    from fem_racket.io.config_tables import choice, flag, number, table_options, text
     from fem_racket.paper.reproduce import reproduce
 
-    options = {
-        "out": (None, text),
-        "report": (None, text),
-        "quick": (False, flag),
-        "overwrite": (False, flag),
-        "format": (None, choice(FIGURE_FORMATS)),
-        "dpi": (DEFAULT_DPI, number),
-    }
     d = cfg.defaults()
     core = {"law": d.get("law", "linear"), **law_parameters(d)}
-    o = table_options(cfg, "reproduce", options, {**core, "overwrite": d.get("overwrite", False)})
+    o = table_options(
+        cfg, "reproduce", REPRODUCE_OPTIONS, {**core, "overwrite": d.get("overwrite", False)}
+    )
     law = get_law(o["law"], **law_parameters(o))
     given = (str(out) if out else o["out"], str(report) if report else o["report"])
     folder, where = destinations(o["law"], *given)

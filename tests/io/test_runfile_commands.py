@@ -180,6 +180,31 @@ def test_reproduce_writes_the_commands_files(cfg, capsys, monkeypatch):
             assert Path("py", name).read_text() == Path("cli", name).read_text(), name
 
 
+def test_the_methods_read_the_commands_tables():
+    # every key of each command's table, with the command's default (but out: no file unless
+    # given); json and quiet only say how the command prints
+    from fem_racket.cli.commands.config import _commands
+    from fem_racket.cli.options.runfile import file_options
+    from fem_racket.io import config_racket, config_reports
+    from fem_racket.paper.config_reproduce import REPRODUCE_OPTIONS
+
+    tables = {
+        "modes": config_racket.MODES_OPTIONS,
+        "fit": config_racket.FIT_OPTIONS,
+        "customise": config_racket.CUSTOMISE_OPTIONS,
+        "closest": config_racket.CLOSEST_OPTIONS,
+        "compare": config_reports.COMPARE_OPTIONS,
+        "calibrate": config_reports.CALIBRATE_OPTIONS,
+        "reproduce": REPRODUCE_OPTIONS,
+    }
+    commands = _commands()
+    for command, options in tables.items():
+        cli = {d: a.default for d, a in file_options(commands[command]).items()}
+        assert set(cli) - {"json", "quiet"} == set(options), command
+        for dest, (default, _) in options.items():
+            assert default == (None if dest == "out" else cli[dest]), (command, dest)
+
+
 @pytest.mark.parametrize(
     ("command", "table", "words"),
     [
