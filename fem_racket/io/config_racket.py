@@ -123,7 +123,7 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.config_run import file_frame
     from fem_racket.io.map_files import check_map_outputs
-    from fem_racket.io.racket_files import CustomiseRun, customise_files, mesh_files
+    from fem_racket.io.racket_files import customise_files, mesh_files
     from fem_racket.outputs import check_output_path
     from fem_racket.studies.customise import customise
     from fem_racket.studies.target_values import place_list, targets_from
@@ -143,10 +143,9 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     work_begins()
     if paths is None:
         return customise(mesh, targets, places)
-    swing = {k: o[k] for k in ("racket_speed", "reference", "pivot")}
-    job = CustomiseRun(mesh, targets, places, o["speed"], swing)
+    play = {k: o[k] for k in _PLAY}
     parameters = {"config": str(cfg.source), **o}
-    return customise_files(job, paths, parameters, o["overwrite"])[0]
+    return customise_files(mesh, targets, places, play, paths, parameters, o["overwrite"])[0]
 
 
 def closest_file(cfg: RunConfig, rackets: Any) -> list[Any]:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -17,7 +17,6 @@ from fem_racket.outputs import json_ready, provenance
 from fem_racket.validation import InputError
 
 __all__ = [
-    "CustomiseRun",
     "FitSpec",
     "customise_files",
     "fit_files",
@@ -129,50 +128,34 @@ def fit_files(
     return frame, summary
 
 
-@dataclass(frozen=True)
-class CustomiseRun:
-    """What ``fem-racket customise`` solves and maps.
-
-    Attributes
-    ----------
-    mesh : FrameMesh
-        The racket as it is.
-    targets : mapping
-        Spec name -> :class:`~fem_racket.studies.customise.Target` (SI).
-    places : sequence of str
-        Where the lead may go.
-    speed : float
-        Ball speed of the maps before and after [m/s].
-    swing : mapping
-        ``racket_speed`` [m/s], ``reference`` [x/L], ``pivot`` [m] of the maps.
-    """
-
-    mesh: Any
-    targets: Mapping[str, Any]
-    places: Sequence[str]
-    speed: float = 20.0
-    swing: Mapping[str, Any] = field(default_factory=dict)
-
-
 def customise_files(
-    run: CustomiseRun, files: tuple[Path, Path], parameters: Mapping[str, Any], overwrite: bool
+    mesh: Any,
+    targets: Mapping[str, Any],
+    places: Sequence[str],
+    play: Mapping[str, Any],
+    files: tuple[Path, Path],
+    parameters: Mapping[str, Any],
+    overwrite: bool = False,
 ) -> tuple[Any, dict[str, Any]]:
-    """Solve ``run`` (:func:`fem_racket.studies.customise.customise`), map the racket before and
-    after, write the customised mesh with its sidecar to ``files[0]`` and the maps to
-    ``files[1]``; the Customisation and the summary (placement, specs, targets, maps)."""
+    """Solve the least lead (:func:`fem_racket.studies.customise.customise`) bringing ``mesh``
+    (a FrameMesh) to ``targets`` (spec name -> Target, SI) with lead at ``places``, map the
+    racket before and after (``play``: the maps' ``speed`` [m/s], ``racket_speed`` [m/s],
+    ``reference`` [x/L] and ``pivot`` [m]), write the customised mesh with its sidecar to
+    ``files[0]`` and the maps to ``files[1]`` (``parameters`` in their provenance); the
+    Customisation and the summary (placement, specs, targets, maps)."""
     from fem_racket.io.map_files import write_maps
     from fem_racket.studies.customise import customise
     from fem_racket.studies.racket_map import racket_map
     from fem_racket.studies.target_values import target_summary
 
     out, maps_path = files
-    result = customise(run.mesh, run.targets, run.places)
+    result = customise(mesh, targets, places)
     maps = [
-        racket_map(m, name=name, speed=run.speed, **run.swing)
-        for name, m in (("before", run.mesh), ("customised", result.mesh))
+        racket_map(m, name=name, **play)
+        for name, m in (("before", mesh), ("customised", result.mesh))
     ]
     summary = result.summary()
-    summary["targets"] = target_summary(run.targets)
+    summary["targets"] = target_summary(targets)
     summary["maps"] = {m.name: m.summary(curves=False) for m in maps}
     summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
     meta = provenance(dict(parameters))

@@ -75,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.io.map_files import check_map_outputs, map_targets
-    from fem_racket.io.racket_files import CustomiseRun, customise_files
+    from fem_racket.io.racket_files import customise_files
     from fem_racket.outputs import check_output_path
     from fem_racket.validation import work_begins
 
@@ -90,8 +90,9 @@ def run(args: argparse.Namespace) -> int:
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
     work_begins()
-    job = CustomiseRun(mesh, targets, places, args.speed, swing_kwargs(args))
-    _, summary = customise_files(job, (out, maps_path), run_parameters(args), args.overwrite)
+    play = {"speed": args.speed, **swing_kwargs(args)}
+    files_out, parameters = (out, maps_path), run_parameters(args)
+    _, summary = customise_files(mesh, targets, places, play, files_out, parameters, args.overwrite)
     if args.json:
         print_json(summary)
         return 0
