@@ -2,8 +2,9 @@
 tables, where it was read from; :func:`parse_run_file` and :func:`load_run_file` read and check
 one (the run file's format: :mod:`fem_racket.io.config`).
 
-:class:`~fem_racket.io.config.RunConfig` is a RunFile with a method per command; the modules
-doing the commands' work read a RunFile only, so this module imports none of them.
+:class:`~fem_racket.io.config.RunConfig` is a RunFile with a method per command. What reads a
+run file without running a command on it (a compared set-up, :mod:`fem_racket.io.setups`) loads
+a RunFile: this module imports none of the commands' modules, which import that one.
 """
 
 from __future__ import annotations
