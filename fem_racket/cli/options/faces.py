@@ -48,7 +48,7 @@ OBLIQUE = {
     "friction": ("--friction", "MU", "Coulomb friction ball/strings [-] (default 0.4 with "
                  "--angle)"),
     "side_angle": ("--side-angle", "DEG", "angle [deg] of the ball's path from the plane of the "
-                   "long axis, -90..90 (+: toward +y): a 3-D oblique ball; maps the outgoing "
+                   "long axis, in (-90, 90), + toward +y: a 3-D oblique ball; maps the outgoing "
                    "side spin and angle too (default 0)"),
     "side_spin": ("--side-spin", "RPM", "incoming side spin [rpm] about the long axis's "
                   "direction, + rolling toward +y (default 0)"),
