@@ -14,8 +14,9 @@ are compiled again.
 
 **Loading cached code.** Before it reads a cached function, numba (0.68) refreshes its target
 context: it imports and installs every lowering and typing registry it has (arrays, typed
-containers, random generators, polynomials, jitclass, ...), ~0.15 s CPU on an idle core, ~40 %
-of what loading numba and a room's kernels costs a process, all of it needed only to compile.
+containers, random generators, polynomials, jitclass, ...; with them scipy.linalg): 0.25-0.3 s
+CPU (measured at load 3 on the 2-core machine; a process that runs a linear sweep of four cases
+took 0.70-1.09 s CPU with it, 0.43-0.57 s without), all of it needed only to compile.
 The machine code it reads needs numba's runtime (NRT: allocation, reference counts), which the
 refresh also starts. :func:`light_loads` makes numba load a cached kernel of this package
 (a function of a ``fem_racket.impact`` module) with the runtime started instead; the modules
