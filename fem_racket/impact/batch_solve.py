@@ -260,10 +260,10 @@ def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
             continue
         out["racket_speed"][i] = problem.racket_speed
         if problem.strings is not None:  # the bed's normal impact (oblique: at V cos(angle))
-            n_ = normal
-            row = (n_.cor, n_.contact_time, n_.cor * n_.speed, n_.peak_force, np.nan, np.nan)
-            extra["stringbed_stiffness_n_m"][i] = n_.point.bed_stiffness
-            extra["stringbed_frequency_hz"][i] = n_.point.bed_frequencies_hz[0]
+            row = (normal.cor, normal.contact_time, normal.cor * normal.speed)
+            row += (normal.peak_force, np.nan, np.nan)
+            extra["stringbed_stiffness_n_m"][i] = normal.point.bed_stiffness
+            extra["stringbed_frequency_hz"][i] = normal.point.bed_frequencies_hz[0]
         elif problem.held:  # a HeldRun
             row = (r.apparent_cor, r.contact_time, r.ball_speed_out, r.peak_force)
             row += (problem.contact().stiffness, np.nan)

@@ -20,6 +20,7 @@ from fem_racket.frame.segments import (
     standard_frame,
 )
 from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.studies.sweep_physics import LATERAL_AXES
 from fem_racket.validation import InputError, check_range
 
 __all__ = ["check_offsets", "check_rigidity", "check_swings"]
@@ -55,7 +56,7 @@ def check_offsets(spec: Any) -> None:
     mid-sweep."""
     y = np.atleast_1d(spec.values["offset"])
     across = [
-        n for n in ("side_angle", "side_spin")
+        n for n in LATERAL_AXES
         if spec.values.get(n) is not None and np.any(np.atleast_1d(spec.values[n]) != 0.0)
     ]  # fmt: skip
     if np.all(y == 0.0) and not across:
