@@ -123,7 +123,7 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
     w, a2 = modes
     mu0, h, n, scale, v = grid
     e = np.exp(1j * w * h)
-    Gw, c1, c2 = km.weights(w, h, cs)
+    Gw, c1, c2 = km.step_weights(e, w, h, cs)
     rigid = (mu0, h, c1, c2)
     ok, y, R, Rv = _start(kind, p, (e, a2, Gw, w), rigid, fdv, H, scale)
     if not ok:
@@ -267,7 +267,9 @@ def march_cases(kind, P, modes, cases, fdv, cs, keep):
             v = speed[c]
             for m in range(4):
                 free[0, m], free[1, m] = v * (m * h[c]), v
-        k = nmode[c]
+        # the modes kept and zero modes (a^2 = 0: no weight, no state) up to a multiple of 4
+        # where the rows have room, so the pass over the modes has no scalar remainder
+        k = min(-(-nmode[c] // 4) * 4, W.shape[1])
         p = (P[c, 0], P[c, 1], P[c, 2], P[c, 3])  # a tuple: no reference counts per node
         grid = (mu0[c], h[c], n, scale[c], v)
         _case(kind, p, (W[c, :k], A2[c, :k]), grid, free, cs, work, res[c])

@@ -25,6 +25,7 @@ __all__ = [
     "backward_weights",
     "moments",
     "start_weights",
+    "step_weights",
     "weights",
 ]
 
@@ -45,15 +46,15 @@ def _over_ix(z, x):
 
 
 @njit(**_JIT)
-def moments(x, out):
-    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``.
+def moments(x, e, out):
+    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``
+    (``e`` = e^{i x}).
 
     |x| >= 2: the upward recursion M_q = (e^{ix} - q M_{q-1}) / (i x); below, M_3 by its series
     sum_n (i x)^n / (n! (n + 4)) and the downward recursion M_{q-1} = (e^{ix} - i x M_q) / q,
     which is stable there (it multiplies an error by |x| / q < 1).
     """
     ix = 1j * x
-    e = np.exp(ix)
     if abs(x) >= 2.0:
         prev = _over_ix(e - 1.0, x)
         out[0] = prev
@@ -79,11 +80,18 @@ def moments(x, out):
 def weights(w, h, cs):
     """Per mode and stencil (backward, forward 0, forward 1) G_r = sum_q c_rq conj(M_q), and
     the rigid weights c1_r = sum_q c_rq / (q + 1), c2_r = sum_q c_rq / ((q + 1)(q + 2))."""
+    return step_weights(np.exp(1j * w * h), w, h, cs)
+
+
+@njit(**_JIT)
+def step_weights(e, w, h, cs):
+    """:func:`weights` from e^{i omega h} per mode (the march has it already: one complex
+    exponential per mode, not two)."""
     nm = w.size
     Gw = np.empty((3, 4, nm), dtype=np.complex128)
     M = np.empty(4, dtype=np.complex128)
     for j in range(nm):
-        moments(w[j] * h, M)
+        moments(w[j] * h, e[j], M)
         for q in range(4):
             M[q] = M[q].conjugate()
         for s in range(3):
