@@ -9,9 +9,10 @@ theta = omega h (:mod:`fem_racket.impact.general.cubic_force`); the rigid modes 
 The starting steps use :func:`advance` (complex states, any stencil). After them every step has
 the backward stencil, and the march (:func:`fem_racket.impact.general.kernel._case`, where this
 loop is written out) carries the states as real and imaginary rows with the
-weights B_r = e^{i theta} a^2 h G_r folded per mode; a node's own weight B_3 (which multiplies
-the force still unknown while its node is solved) is carried into the next step as
-B_2 + e^{i theta} B_3, so a node costs one pass over the modes.
+weights B_r = e^{i theta} a^2 h G_r folded per mode (rows of one array,
+:func:`backward_weights`); a node's own weight B_3 (which multiplies the force still unknown
+while its node is solved) is carried into the next step as B_2 + e^{i theta} B_3, so a node
+costs one pass over the modes.
 """
 
 from __future__ import annotations
@@ -154,11 +155,13 @@ def start_weights(modal, w, rigid):
 
 @njit(**_JIT)
 def backward_weights(e, a2, h, Gw, w):
-    """Rows (13, modes) for the march's step over the modes: e^{i theta}, B_0, B_1, B_2,
-    B_2 + e^{i theta} B_3, B_3 (real and imaginary rows each) and 1 / omega
-    (B_r = e^{i theta} a^2 h G_r, backward stencil)."""
+    """Rows (15, modes) for the march's step over the modes: e^{i theta}, B_0, B_1, B_2,
+    B_2 + e^{i theta} B_3, B_3 (real and imaginary rows each), 1 / omega (B_r = e^{i theta}
+    a^2 h G_r, backward stencil), and two rows left for the march's states (real, imaginary):
+    in the same array as the weights, at fixed rows, the compiler sees that the pass over the
+    modes reads and writes rows that do not overlap and needs no run-time checks."""
     nm = w.size
-    out = np.empty((13, nm))
+    out = np.empty((15, nm))
     for j in range(nm):
         g = e[j] * a2[j] * h
         b2, b3 = g * Gw[0, 2, j], g * Gw[0, 3, j]
