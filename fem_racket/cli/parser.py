@@ -2,7 +2,8 @@
 
 An option the command does not know is refused naming the command's own help, with the closest
 option it has (``fem-racket simulate --positon 0.7`` -> ``did you mean --position?``) or, for an
-old spelling, the one that replaced it (:data:`RENAMED`).
+old spelling, the one that replaced it (:data:`RENAMED`). Every command is added by
+:func:`add_command`, its description taken from its module's docstring.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
-__all__ = ["RENAMED", "OneLineErrorParser", "suggestion"]
+__all__ = ["RENAMED", "OneLineErrorParser", "add_command", "suggestion"]
 
 #: Old option spellings -> what replaced them (the progress bar shows on a terminal by itself).
 RENAMED = {
@@ -71,3 +72,26 @@ class OneLineErrorParser(argparse.ArgumentParser):
         if word is None:
             self.error(f"unrecognized arguments: {' '.join(extras)}")
         self.error(f"unrecognized option {word.split('=', 1)[0]}{suggestion(word, options)}")
+
+
+def add_command(
+    sub: argparse._SubParsersAction, name: str, help: str, doc: str | None = None
+) -> argparse.ArgumentParser:
+    """Add the command ``name`` to ``sub`` and return its parser.
+
+    Parameters
+    ----------
+    sub : argparse._SubParsersAction
+        The top-level parser's sub-commands.
+    name : str
+        The command's name (``fem-racket NAME``).
+    help : str
+        Its line in ``fem-racket --help``.
+    doc : str or None
+        The command module's docstring, whose second paragraph (the first after its summary) is
+        the description ``fem-racket NAME --help`` shows: plain text, no markup, refilled by
+        argparse to the terminal's width. Later paragraphs are for readers of the code. None:
+        no description.
+    """
+    description = None if doc is None else doc.split("\n\n")[1]
+    return sub.add_parser(name, help=help, description=description)

@@ -27,6 +27,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from fem_racket.contact import power_law
 from fem_racket.contact.law import ContactLaw, deflection_condition, power_contact_time
 from fem_racket.contact.parameters import LawFit, LawParameter
 from fem_racket.validation import check_choice, check_positive, check_range
@@ -65,26 +66,15 @@ class HuntCrossley(ContactLaw):
 
     name: ClassVar[str] = "hunt-crossley"
     declared: ClassVar[tuple[LawParameter, ...]] = (
-        LawParameter(
+        power_law.stiffness(
             name="hc_stiffness",
             field="stiffness",
-            unit="N/m^n",
             default=2.978e24,
-            low=1e2,
-            high=1e40,
-            key="hc_stiffness_n_m_n",
             help="Hunt-Crossley stiffness k of F = k delta^n (1 + alpha delta')",
-            why="its unit depends on n: the calibration's search range for n = 1-20; the "
-            "physical bound is the deflection under 1 kN (a condition)",
         ),
-        LawParameter(
+        power_law.exponent(
             name="hc_exponent",
-            field="exponent",
-            unit="-",
             default=14.87,
-            low=1.0,
-            high=20.0,
-            key="hc_exponent",
             help="Hunt-Crossley exponent n",
             why="1: a linear spring, 1.5: Hertz; the paper's K_CB(V) needs n ~ 9-15",
         ),
@@ -107,8 +97,8 @@ class HuntCrossley(ContactLaw):
     fit = LawFit(
         names=("k [N/m^n]", "n [-]", "alpha [s/m]"),
         build=lambda p: HuntCrossley(p[0], p[1], p[2]),
-        low=(1e2, 1.0, 1e-5),
-        high=(1e40, 20.0, 5.0),
+        low=(power_law.STIFFNESS_RANGE[0], power_law.EXPONENT_RANGE[0], 1e-5),
+        high=(power_law.STIFFNESS_RANGE[1], power_law.EXPONENT_RANGE[1], 5.0),
         starts={"kawazoe-1997": (1e17, 9.0, 0.01), "itf": (3e5, 1.5, 0.05)},
     )
     stiffness: Any

@@ -26,6 +26,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from fem_racket.contact import power_law
 from fem_racket.contact.law import ContactLaw, deflection_condition, power_contact_time
 from fem_racket.contact.parameters import LawCondition, LawFit, LawParameter
 from fem_racket.validation import check_range
@@ -53,37 +54,22 @@ class Hysteretic(ContactLaw):
     name: ClassVar[str] = "hysteretic"
     state: ClassVar[str | None] = "memory"
     declared: ClassVar[tuple[LawParameter, ...]] = (
-        LawParameter(
+        power_law.stiffness(
             name="k1",
             field="k1",
-            unit="N/m^n",
             default=3.182e15,
-            low=1e2,
-            high=1e40,
-            key="k1_n_m_n",
             help="hysteretic loading stiffness k1 (F = k1 delta^n)",
-            why="its unit depends on n: the calibration's search range for n = 1-20; the "
-            "physical bound is the deflection under 1 kN (a condition)",
         ),
-        LawParameter(
+        power_law.stiffness(
             name="k2",
             field="k2",
-            unit="N/m^n",
             default=8.816e16,
-            low=1e2,
-            high=1e40,
-            key="k2_n_m_n",
             help="hysteretic unloading stiffness k2",
             why="as k1; k2 >= k1 and the rigid COR are conditions",
         ),
-        LawParameter(
+        power_law.exponent(
             name="hyst_exponent",
-            field="exponent",
-            unit="-",
             default=8.913,
-            low=1.0,
-            high=20.0,
-            key="hyst_exponent",
             help="hysteretic exponent n",
             why="1: Cross's linear branches; the paper's K_CB(V) needs n ~ 9",
         ),
@@ -105,8 +91,8 @@ class Hysteretic(ContactLaw):
     fit = LawFit(
         names=("k1 [N/m^n]", "n [-]", "rigid COR [-]"),
         build=lambda p: Hysteretic.from_cor(p[0], min(p[2], 0.999), p[1]),
-        low=(1e2, 1.0, 0.05),
-        high=(1e40, 20.0, 0.999),
+        low=(power_law.STIFFNESS_RANGE[0], power_law.EXPONENT_RANGE[0], MIN_RIGID_COR),
+        high=(power_law.STIFFNESS_RANGE[1], power_law.EXPONENT_RANGE[1], 0.999),
         starts={"kawazoe-1997": (1e17, 9.0, 0.83), "itf": (2e4, 1.0, 0.745)},
     )
     k1: Any

@@ -7,14 +7,16 @@ a step at 204 mm: EI1 = 146 N m^2, EI2 = 0.88 EI1, rhoA1 = 0.696 kg/m, rhoA2 = 0
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
 
+from fem_racket.frame.rigidity import Rigidity
 from fem_racket.validation import InputError, check_positive, check_range, show
 
 __all__ = [
+    "BENDING",
     "EI_RANGE",
     "GJ_RANGE",
     "EI_RATIO",
@@ -22,13 +24,13 @@ __all__ = [
     "RHOA1",
     "RHOA2",
     "RIGID_EI1",
+    "TORSION",
     "Frame",
     "Segment",
     "STANDARD_TORSION",
     "TorsionSegment",
     "check_ei_factor",
     "check_stiffness",
-    "check_torsion",
     "standard_ei1_range",
     "rigid_frame",
     "standard_frame",
@@ -54,6 +56,12 @@ EI_RANGE = (1e-6, 1e9)
 GJ_RANGE = (1e-3, 1e15)
 
 
+#: Bending: EI over rhoA.
+BENDING = Rigidity("EI", "rhoA", "kg/m", "m^4/s^2", EI_RANGE)
+#: Torsion: GJ over rhoIp.
+TORSION = Rigidity("GJ", "rhoIp", "kg m", "m^2/s^2", GJ_RANGE)
+
+
 @dataclass(frozen=True)
 class Segment:
     """A uniform piece of the frame.
@@ -73,10 +81,7 @@ class Segment:
     rhoA: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "length", check_positive("segment length", self.length, "m"))
-        object.__setattr__(self, "EI", check_positive("EI", self.EI, "N m^2"))
-        object.__setattr__(self, "rhoA", check_positive("rhoA", self.rhoA, "kg/m"))
-        check_stiffness("EI", self.EI, self.rhoA)
+        BENDING.check_piece(self)
 
 
 @dataclass(frozen=True)
@@ -98,10 +103,7 @@ class TorsionSegment:
     rhoIp: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "length", check_positive("segment length", self.length, "m"))
-        object.__setattr__(self, "GJ", check_positive("GJ", self.GJ, "N m^2"))
-        object.__setattr__(self, "rhoIp", check_positive("rhoIp", self.rhoIp, "kg m"))
-        check_torsion("GJ", self.GJ, self.rhoIp)
+        TORSION.check_piece(self)
 
 
 @dataclass(frozen=True)
@@ -121,20 +123,12 @@ class Frame:
     torsion: tuple[TorsionSegment, ...] | None = None
 
     def __post_init__(self) -> None:
-        segments = tuple(self.segments)
+        segments = _pieces("segments", self.segments, Segment)
         if not segments:
             raise InputError("segments = () is not allowed: must hold at least one Segment")
-        for seg in segments:
-            if not isinstance(seg, Segment):
-                raise InputError(f"segments item {show(seg)} is not allowed: must be a Segment")
         object.__setattr__(self, "segments", segments)
         if self.torsion is not None:
-            torsion = tuple(self.torsion)
-            for seg in torsion:
-                if not isinstance(seg, TorsionSegment):
-                    raise InputError(
-                        f"torsion item {show(seg)} is not allowed: must be a TorsionSegment"
-                    )
+            torsion = _pieces("torsion", self.torsion, TorsionSegment)
             total = float(sum(s.length for s in torsion))
             if not torsion or abs(total - self.length) > 1e-9 * self.length:
                 raise InputError(
@@ -151,7 +145,7 @@ class Frame:
     @property
     def steps(self) -> np.ndarray:
         """Coordinates of the segment boundaries including both ends [m]."""
-        return np.concatenate([[0.0], np.cumsum([s.length for s in self.segments])])
+        return _boundaries(self.segments)
 
     def scaled(self, ei_factor: float = 1.0, rhoa_factor: float = 1.0) -> Frame:
         """Return a frame with every segment's EI and rhoA (and rhoIp) multiplied by the given
@@ -172,31 +166,27 @@ class Frame:
         """Coordinates of the torsion segments' boundaries including both ends [m]."""
         if self.torsion is None:
             raise InputError("torsion: this frame has none (no GJ, rhoIp)")
-        return np.concatenate([[0.0], np.cumsum([s.length for s in self.torsion])])
+        return _boundaries(self.torsion)
+
+
+def _pieces(name: str, items: Iterable[object], kind: type) -> tuple:
+    """``items`` as a tuple, or a one-line :class:`InputError` naming the first that is not a
+    ``kind``."""
+    pieces = tuple(items)
+    for piece in pieces:
+        if not isinstance(piece, kind):
+            raise InputError(f"{name} item {show(piece)} is not allowed: must be a {kind.__name__}")
+    return pieces
+
+
+def _boundaries(pieces: tuple[Segment, ...] | tuple[TorsionSegment, ...]) -> np.ndarray:
+    """Coordinates of the pieces' boundaries including both ends [m]."""
+    return np.concatenate([[0.0], np.cumsum([s.length for s in pieces])])
 
 
 def check_stiffness(name: str, ei: float, rhoa: float) -> float:
     """Return ``ei`` [N m^2] if EI / rhoA lies in EI_RANGE, else raise naming ``name``."""
-    low, high = EI_RANGE[0] * rhoa, EI_RANGE[1] * rhoa
-    if not low <= ei <= high:
-        raise InputError(
-            f"{name} = {show(ei)} N m^2 is not allowed with rhoA = {rhoa:g} kg/m: must lie in "
-            f"[{low:.3g}, {high:.3g}] N m^2 (EI / rhoA in [{EI_RANGE[0]:g}, {EI_RANGE[1]:g}] "
-            "m^4/s^2)"
-        )
-    return ei
-
-
-def check_torsion(name: str, gj: float, rhoip: float) -> float:
-    """Return ``gj`` [N m^2] if GJ / rhoIp lies in GJ_RANGE, else raise naming ``name``."""
-    low, high = GJ_RANGE[0] * rhoip, GJ_RANGE[1] * rhoip
-    if not low <= gj <= high:
-        raise InputError(
-            f"{name} = {show(gj)} N m^2 is not allowed with rhoIp = {rhoip:g} kg m: must lie in "
-            f"[{low:.3g}, {high:.3g}] N m^2 (GJ / rhoIp in [{GJ_RANGE[0]:g}, {GJ_RANGE[1]:g}] "
-            "m^2/s^2)"
-        )
-    return gj
+    return BENDING.check(name, ei, rhoa)
 
 
 def check_ei_factor(ei_factor: float, ei_per_rhoa: Sequence[float] | np.ndarray) -> float:

@@ -97,21 +97,9 @@ class TorsionModel:
     @cached_property
     def matrices(self):
         """(K, M), sparse CSR [N m^2 / m, kg m^2 per unit twist]."""
-        from skfem import BilinearForm, ElementLineP0, asm
-        from skfem.helpers import dot, grad
+        from fem_racket.frame.forms import cell_matrices, twist
 
-        @BilinearForm
-        def stiffness(u, v, w):
-            return w["GJ"] * dot(grad(u), grad(v))
-
-        @BilinearForm
-        def mass(u, v, w):
-            return w["rhoIp"] * u * v
-
-        p0 = self.basis.with_element(ElementLineP0())
-        K = asm(stiffness, self.basis, GJ=p0.interpolate(np.asarray(self.mesh.GJ)))
-        M = asm(mass, self.basis, rhoIp=p0.interpolate(np.asarray(self.mesh.rhoIp)))
-        return K.tocsr(), M.tocsr()
+        return cell_matrices(self.basis, twist, self.mesh.GJ, self.mesh.rhoIp)
 
     @property
     def ndof(self) -> int:

@@ -16,11 +16,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.problem import Impact
-from fem_racket.impact.swing import (
-    Swing,
-    racket_velocity,
-    swing_summary,
-)
+from fem_racket.impact.swing import Swing, racket_velocity, rebound_summary, swing_summary
 
 __all__ = ["ImpactResult"]
 
@@ -226,13 +222,7 @@ class ImpactResult:
     def summary(self) -> dict[str, Any]:
         """Scalar results and :meth:`settings`, JSON-ready, units in the keys."""
         return {
-            "cor": self.cor,
-            "apparent_cor": self.apparent_cor,
-            "ball_speed_out_m_s": self.ball_speed_out,
-            "racket_speed_at_impact_m_s": self.racket_speed_at_impact,
-            "contact_time_s": self.contact_time,
-            "rebound_speed_m_s": -self.rebound_velocity,
-            "peak_force_n": self.peak_force,
+            **rebound_summary(self, self.racket_speed_at_impact),
             **self.settings(),
             **swing_summary(self.model, self.swing, self.racket_motion_after()),
             **self._twist_summary(),

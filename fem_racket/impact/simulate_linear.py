@@ -25,6 +25,7 @@ from fem_racket.impact.swing import add_swing, swing_setup
 from fem_racket.impact.system import (
     MAX_OUTPUT_TIMES,
     CoupledSystem,
+    Integration,
     check_output_count,
     modal_system,
     physical_system,
@@ -134,14 +135,8 @@ def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> 
         _check_output_count(
             s.output_step, s.t_max, system.contact_time_estimate(), problem.kcb, ball.mass
         )
-    traj = get_solver(solver)(
-        system,
-        separation=separation,
-        output_step=s.output_step,
-        t_max=s.t_max,
-        rtol=s.rtol,
-        atol=s.atol,
-    )
+    how = Integration(separation, s.output_step, s.t_max, s.rtol, s.atol)
+    traj = get_solver(solver)(system, how)
     if to_lab is not None:
         traj = to_lab(traj)
     n_rigid = RIGID_MODES if problem.offset == 0.0 else RIGID_OFFAXIS

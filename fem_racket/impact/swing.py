@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -36,11 +36,13 @@ from fem_racket.validation import InputError, check_finite, check_range
 
 __all__ = [
     "DEFAULT_REFERENCE",
+    "Rebound",
     "Swing",
     "add_swing",
     "ball_speed_out",
     "closing_speed",
     "racket_velocity",
+    "rebound_summary",
     "swing_setup",
     "swing_summary",
 ]
@@ -148,6 +150,38 @@ def ball_speed_out(apparent_cor: Any, speed: Any, racket_speed: Any) -> Any:
     """
     e = np.asarray(apparent_cor)
     return e * np.asarray(speed) + (1.0 + e) * np.asarray(racket_speed)
+
+
+class Rebound(Protocol):
+    """An impact's outcome on a racket at rest or swinging (a free or a held racket's)."""
+
+    @property
+    def apparent_cor(self) -> float: ...
+
+    @property
+    def ball_speed_out(self) -> float: ...
+
+    @property
+    def contact_time(self) -> float: ...
+
+    @property
+    def peak_force(self) -> float: ...
+
+
+def rebound_summary(result: Rebound, racket_speed: float) -> dict[str, float]:
+    """The outcome's keys of a result's summary, JSON-ready, units in the keys: the COR (the
+    apparent COR e_A, that of the racket at rest at the closing speed), v_out [m/s], the impact
+    point's ``racket_speed`` v_r [m/s], t_c [s], the rebound speed (v_out) [m/s] and the peak
+    contact force [N]."""
+    return {
+        "cor": result.apparent_cor,
+        "apparent_cor": result.apparent_cor,
+        "ball_speed_out_m_s": result.ball_speed_out,
+        "racket_speed_at_impact_m_s": racket_speed,
+        "contact_time_s": result.contact_time,
+        "rebound_speed_m_s": result.ball_speed_out,
+        "peak_force_n": result.peak_force,
+    }
 
 
 def racket_velocity(model: FrameModel, qd: np.ndarray) -> tuple[float, float]:

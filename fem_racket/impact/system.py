@@ -29,9 +29,11 @@ if TYPE_CHECKING:
     import scipy.sparse as sp
 
 __all__ = [
+    "DEFAULT_INTEGRATION",
     "MAX_OUTPUT_TIMES",
     "SEPARATION_EVENTS",
     "CoupledSystem",
+    "Integration",
     "NoSeparationError",
     "Trajectory",
     "modal_system",
@@ -196,6 +198,34 @@ class Trajectory:
     def contact_time(self) -> float:
         """Separation time [s]."""
         return float(self.t[-1])
+
+
+@dataclass(frozen=True)
+class Integration:
+    """How an integrator runs a :class:`CoupledSystem` to a :class:`Trajectory` (the options
+    every integrator of :data:`fem_racket.impact.ode.integrators.SOLVERS` takes).
+
+    Attributes
+    ----------
+    separation : {"displacement", "force"}
+        The event ending the contact (:data:`SEPARATION_EVENTS`).
+    output_step : float or None
+        Spacing of the output times [s]; None: only t = 0 and t_c.
+    t_max : float or None
+        Give up if the ball has not separated by then [s]; None: 20 x the eq 11 estimate.
+    rtol, atol : float
+        Tolerances of the BDF integrators (the exact path has none).
+    """
+
+    separation: str = "displacement"
+    output_step: float | None = 1e-5
+    t_max: float | None = None
+    rtol: float = 1e-10
+    atol: float = 1e-12
+
+
+#: The integrators' defaults.
+DEFAULT_INTEGRATION = Integration()
 
 
 def modal_system(

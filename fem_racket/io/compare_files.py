@@ -25,7 +25,7 @@ from fem_racket.outputs import atomic_output, check_output_path, provenance
 from fem_racket.studies.compare import Report
 from fem_racket.validation import InputError
 
-__all__ = ["COMPARE_SUFFIXES", "ROWS", "check_compare_output", "plot_compare", "write_compare"]
+__all__ = ["COMPARE_SUFFIXES", "ROWS", "check_compare_output", "compare_figure", "write_compare"]
 
 #: Suffixes compare writes: a figure or netCDF.
 COMPARE_SUFFIXES = tuple(f".{f}" for f in FIGURE_FORMATS) + (".nc",)
@@ -77,15 +77,8 @@ def table_rows(reports: Sequence[Report], diffs: Mapping[str, Mapping[str, Any]]
     return rows
 
 
-def plot_compare(
-    reports: Sequence[Report],
-    diffs: Mapping[str, Mapping[str, Any]],
-    path: str | os.PathLike,
-    *,
-    overwrite: bool = False,
-    parameters: Mapping[str, Any] | None = None,
-) -> Path:
-    """The one-page figure (module docstring), PNG, SVG or PDF by suffix."""
+def compare_figure(reports: Sequence[Report], diffs: Mapping[str, Mapping[str, Any]]) -> Any:
+    """The one-page figure (module docstring): a matplotlib ``Figure``, laid out."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(8.27, 11.69))
@@ -144,7 +137,7 @@ def plot_compare(
         if ax.get_legend_handles_labels()[0]:
             ax.legend(fontsize=7, loc="best")
     fig.tight_layout()
-    return save_figure(fig, path, provenance(parameters), overwrite=overwrite)
+    return fig
 
 
 def _face_differences(fig: Any, ax_e: Any, ax_v: Any, reports: Sequence[Report], diffs) -> None:
@@ -210,7 +203,8 @@ def write_compare(
     """Write the figure (.png, .svg, .pdf) or the netCDF (.nc) to ``path``."""
     path = check_compare_output(path, overwrite=overwrite)
     if path.suffix.lower() != ".nc":
-        return plot_compare(reports, diffs, path, overwrite=overwrite, parameters=parameters)
+        fig = compare_figure(reports, diffs)
+        return save_figure(fig, path, provenance(parameters), overwrite=overwrite)
     ds = _dataset(reports, diffs, parameters)
     with atomic_output(path, overwrite=overwrite) as tmp:
         ds.to_netcdf(tmp)

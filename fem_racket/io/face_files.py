@@ -17,16 +17,16 @@ from typing import Any
 import numpy as np
 
 from fem_racket.io.face_grid import shared_grid, write_cells_csv
+from fem_racket.io.figure_files import save_map_png
 from fem_racket.io.map_files import check_map_outputs
 from fem_racket.outputs import (
-    add_png_provenance,
     atomic_output,
     provenance,
 )
 from fem_racket.outputs.labels import LABELS
 from fem_racket.studies.face_map import FaceMap
 
-__all__ = ["face_dataset", "plot_face", "write_face"]
+__all__ = ["face_dataset", "face_figure", "write_face"]
 
 #: Attributes of a FaceMap summary stored per racket in the netCDF attributes.
 PER_RACKET = (
@@ -83,16 +83,10 @@ def face_dataset(maps: Sequence[FaceMap], parameters: Mapping[str, Any] | None =
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
-def plot_face(
-    maps: Sequence[FaceMap],
-    path: str | os.PathLike,
-    *,
-    overwrite: bool = False,
-    parameters: Mapping[str, Any] | None = None,
-) -> Path:
-    """PNG: e_A (and v_out with a swing) as filled contours on the face of each racket, side by
-    side on one colour scale, with the head outline, the mode-1 node line, the COP, the maximum
-    and the power area's boundary."""
+def face_figure(maps: Sequence[FaceMap]) -> Any:
+    """The PNG's figure: e_A (and v_out with a swing) as filled contours on the face of each
+    racket, side by side on one colour scale, with the head outline, the mode-1 node line, the
+    COP, the maximum and the power area's boundary."""
     from matplotlib.figure import Figure
 
     swinging = any(m.swing.velocity or m.swing.omega for m in maps)
@@ -143,11 +137,7 @@ def plot_face(
         "star: maximum; dotted: mode-1 node; dashed: COP",
         fontsize=9,
     )
-    path = Path(path)
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        fig.savefig(tmp, dpi=96, format="png")
-        add_png_provenance(tmp, provenance(parameters))
-    return path
+    return fig
 
 
 #: The CSV's columns: one row per face point with a result.
@@ -180,7 +170,10 @@ def write_face(
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix == ".png":
-        return plot_face(maps, path, overwrite=overwrite, parameters=parameters)
+        fig = face_figure(maps)
+        with atomic_output(path, overwrite=overwrite) as tmp:
+            save_map_png(fig, tmp, parameters)
+        return path
     if suffix == ".csv":
         write_cells_csv(
             maps,

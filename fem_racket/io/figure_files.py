@@ -28,7 +28,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from fem_racket.outputs import add_png_provenance, atomic_output
+from fem_racket.outputs import add_png_provenance, atomic_output, provenance
 from fem_racket.validation import InputError
 
 __all__ = [
@@ -37,8 +37,9 @@ __all__ = [
     "check_dpi",
     "check_figure_format",
     "figure_format",
-    "save_figure",
     "same_image",
+    "save_figure",
+    "save_map_png",
 ]
 
 #: Formats a figure can be written in (the file suffix decides).
@@ -161,3 +162,10 @@ def save_figure(
         else:
             fig.savefig(tmp, dpi=dpi, format="pdf", metadata={"Creator": creator, "Subject": text})
     return Path(path)
+
+
+def save_map_png(fig: Any, tmp: Path, parameters: Mapping[str, Any] | None) -> None:
+    """Save a map's figure (racket, face and spin maps) to the temporary file ``tmp``: a
+    full-colour PNG at 96 dots per inch carrying the provenance of ``parameters``."""
+    fig.savefig(tmp, dpi=96, format="png")
+    add_png_provenance(tmp, provenance(parameters))

@@ -21,9 +21,9 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.io.figure_files import save_map_png
 from fem_racket.outputs import (
     Target,
-    add_png_provenance,
     atomic_outputs,
     check_targets,
     provenance,
@@ -207,11 +207,6 @@ def map_figure(maps: Sequence[RacketMap], *, pyplot: bool = False) -> Any:
     return fig
 
 
-def _save_png(fig: Any, tmp: Path, parameters: Mapping[str, Any] | None) -> None:
-    fig.savefig(tmp, dpi=96, format="png")
-    add_png_provenance(tmp, provenance(parameters))
-
-
 def _write_csv(
     maps: Sequence[RacketMap], tmp: Path, side: Path, parameters: Mapping[str, Any] | None
 ) -> None:
@@ -269,7 +264,7 @@ def write_maps(
         for t, tmp in pending:
             suffix = t.path.suffix.lower()
             if suffix == ".png":
-                _save_png(map_figure(maps), tmp, parameters)
+                save_map_png(map_figure(maps), tmp, parameters)
             elif suffix == ".csv":
                 _write_csv(maps, tmp, next(pending)[1], parameters)
             else:

@@ -17,8 +17,8 @@ from typing import Any
 import numpy as np
 
 from fem_racket.io.face_grid import shared_grid, write_cells_csv
+from fem_racket.io.figure_files import save_map_png
 from fem_racket.outputs import (
-    add_png_provenance,
     atomic_output,
     provenance,
 )
@@ -81,8 +81,7 @@ def _png(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | No
         fontsize=9,
     )
     with atomic_output(path, overwrite=True) as tmp:
-        fig.savefig(tmp, dpi=96, format="png")
-        add_png_provenance(tmp, provenance(parameters))
+        save_map_png(fig, tmp, parameters)
 
 
 def _cell_row(m: SpinMap, j: int, i: int) -> list[Any] | None:

@@ -31,15 +31,16 @@ from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, cl
 from fem_racket.studies.sweetspots import centre_of_percussion, mode_node_positions
 from fem_racket.validation import InputError, check_positive, check_range
 
-__all__ = ["DEFAULT_AREA_FRACTION", "FaceMap", "face_map"]
+__all__ = ["DEFAULT_AREA_FRACTION", "FaceGrid", "FaceMap", "face_map"]
 
 #: Default fraction of the maximum e_A bounding the power area.
 DEFAULT_AREA_FRACTION = 0.9
 
 
 @dataclass(frozen=True, eq=False)
-class FaceMap:
-    """e_A and v_out over the string face of one racket.
+class FaceGrid:
+    """The grid of a map over the string face of one racket (:class:`FaceMap`,
+    :class:`~fem_racket.studies.spin_map.SpinMap`).
 
     Attributes
     ----------
@@ -48,6 +49,20 @@ class FaceMap:
         x/L of the grid.
     offsets : ndarray, shape (ny,)
         y [m] of the grid.
+    """
+
+    name: str
+    positions: np.ndarray
+    offsets: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class FaceMap(FaceGrid):
+    """e_A and v_out over the string face of one racket, on its :class:`FaceGrid` (``name``,
+    ``positions``, ``offsets``).
+
+    Attributes
+    ----------
     apparent_cor, ball_speed_out : ndarray, shape (ny, nx)
         e_A and v_out [m/s] (NaN off the face).
     racket_speed : ndarray, shape (nx,)
@@ -69,9 +84,6 @@ class FaceMap:
         Centre of percussion [x/L] for the pivot (NaN without one).
     """
 
-    name: str
-    positions: np.ndarray
-    offsets: np.ndarray
     apparent_cor: np.ndarray
     ball_speed_out: np.ndarray
     racket_speed: np.ndarray

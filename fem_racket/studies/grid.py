@@ -12,7 +12,7 @@ from __future__ import annotations
 import hashlib
 import json
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
 
@@ -28,7 +28,7 @@ from fem_racket.frame.segments import (
     standard_frame,
 )
 from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
+from fem_racket.impact.reduction import check_tolerance
 from fem_racket.impact.solvers import auto_method
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
@@ -45,6 +45,7 @@ from fem_racket.studies.grid_values import (
 )
 from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
+from fem_racket.studies.sweep_options import SweepSolving
 from fem_racket.studies.sweep_physics import check_physics
 from fem_racket.validation import (
     InputError,
@@ -81,8 +82,10 @@ def _frame_description(frame: Frame | FrameMesh | None) -> dict[str, Any]:
 
 
 @dataclass(frozen=True, eq=False)
-class SweepSpec:
-    """Everything that determines a sweep's results.
+class SweepSpec(SweepSolving):
+    """Everything that determines a sweep's results: its grid and frame, solved as the
+    :class:`~fem_racket.studies.sweep_options.SweepSolving` fields it inherits say (checked, the
+    law made, the solver picked: :meth:`build`).
 
     Attributes
     ----------
@@ -105,18 +108,12 @@ class SweepSpec:
         Whether the peak force is computed (a result variable).
     """
 
-    values: dict[str, Any]
-    frame: Frame | FrameMesh | None = None
-    ei2: float | None = None
-    solver: str = "auto"
-    separation: str = "displacement"
-    basis: str = "modal"
-    modes: int | None = DEFAULT_MODES
-    rtol: float = 1e-10
-    atol: float = 1e-12
-    law: Any = None
-    tolerance: float | None = DEFAULT_TOLERANCE
-    peak_force: bool = False
+    values: dict[str, Any] = field(kw_only=True)
+    frame: Frame | FrameMesh | None = field(default=None, kw_only=True)
+
+    # a spec holds a dict of arrays: equal only to itself (not by SweepSolving's fields)
+    __eq__ = object.__eq__
+    __hash__ = object.__hash__
 
     @classmethod
     def build(cls, frame: Frame | FrameMesh | None = None, **kwargs: Any) -> SweepSpec:

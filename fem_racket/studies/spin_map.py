@@ -26,7 +26,7 @@ from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
-from fem_racket.studies.face_map import increasing
+from fem_racket.studies.face_map import FaceGrid, increasing
 from fem_racket.validation import InputError, check_positive
 
 __all__ = ["SPIN_FIELDS", "SPIN_OFFSETS", "SPIN_POSITIONS", "SPIN_REFUSES", "SpinMap", "spin_map"]
@@ -53,16 +53,12 @@ SPIN_FIELDS = {
 
 
 @dataclass(frozen=True, eq=False)
-class SpinMap:
-    """The oblique outcome over the string face of one racket.
+class SpinMap(FaceGrid):
+    """The oblique outcome over the string face of one racket, on its
+    :class:`~fem_racket.studies.face_map.FaceGrid` (``name``, ``positions``, ``offsets``).
 
     Attributes
     ----------
-    name : str
-    positions : ndarray, shape (nx,)
-        x/L of the grid.
-    offsets : ndarray, shape (ny,)
-        y [m] of the grid.
     fields : dict of str to ndarray, shape (ny, nx)
         :data:`SPIN_FIELDS` (NaN off the face).
     regimes : ndarray of str, shape (ny, nx)
@@ -75,9 +71,6 @@ class SpinMap:
         L [m].
     """
 
-    name: str
-    positions: np.ndarray
-    offsets: np.ndarray
     fields: dict[str, np.ndarray]
     regimes: np.ndarray
     incidence: Incidence

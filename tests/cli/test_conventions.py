@@ -113,6 +113,27 @@ def test_a_list_takes_the_singular_and_the_plural(name):
                 assert {one, many} <= set(a.option_strings), f"{name} {a.option_strings}"
 
 
+#: Docstring markup that must not leak into --help: ``literal``, :role:`target`, *emphasis*.
+MARKUP = re.compile(r"``|:\w+:`|(?<!\w)\*\w")
+DESCRIBED = sorted(name for name, p in PARSERS.items() if p.description)
+
+
+def test_commands_with_a_description_are_found():
+    # These describe themselves below their usage line: the walk must see them.
+    assert {"closest", "compare", "customise", "fit", "map", "reproduce", "sweep"} <= set(DESCRIBED)
+
+
+@pytest.mark.parametrize("name", DESCRIBED)
+def test_a_description_is_its_module_docstring_in_plain_text(name):
+    # cli.parser.add_command: one text for readers of the code and of --help.
+    import importlib
+
+    doc = importlib.import_module(f"fem_racket.cli.commands.{COMMANDS[name]}").__doc__
+    description = PARSERS[name].description
+    assert description == doc.split("\n\n")[1]
+    assert MARKUP.search(description) is None, f"{name}: markup in --help: {description}"
+
+
 def test_the_walk_fails_on_a_departure():
     # The checks themselves: a float option without a unit, a duplicated choice.
     p = argparse.ArgumentParser()
@@ -120,3 +141,5 @@ def test_the_walk_fails_on_a_departure():
     twice = p.add_argument("--solver", choices=["a", "a"], default="a", help="(default a)")
     assert _real_valued(bad) and not re.search(r"\[[^\]]+\]", bad.help)
     assert len(list(twice.choices)) != len(set(twice.choices))
+    assert MARKUP.search("see :mod:`fem_racket.io.setups`") and MARKUP.search("``--out``")
+    assert MARKUP.search("Example: fem-racket map --speed 20 (1 + e_A) v_r, 2 * 3") is None

@@ -13,6 +13,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_output_options,
     print_json,
@@ -32,7 +33,7 @@ from fem_racket.studies.calibrate import (
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``calibrate`` command."""
-    p = sub.add_parser("calibrate", help="fit a ball/string law to published targets")
+    p = add_command(sub, "calibrate", "fit a ball/string law to published targets")
     p.add_argument(
         "--family",
         default="hysteretic",

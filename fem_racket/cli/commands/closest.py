@@ -1,16 +1,21 @@
 """``fem-racket closest``: the listed rackets nearest a target, and the least lead for each.
 
-``fem-racket closest meshes/rackets.csv --swing-weight 330 --balance 0.32 --mass 0.33:0.34``
-ranks the CSV's rackets (:mod:`fem_racket.io.racket_table`) by their scaled distance to the
-targets and gives each of the nearest its least customisation with lead at ``--places``
-(:mod:`fem_racket.studies.closest`).
+Rank the rackets of a CSV list (name, length_m, mass_kg, balance_m, swing_weight_kg_cm2; optional
+twist_weight_kg_cm2, stiffness_ra, f1_hz) by their distance to the targets (each a value or
+LOW:HIGH) and find the least lead bringing each of the nearest to the mass, balance, swing-weight
+and twistweight targets. Example: fem-racket closest meshes/rackets.csv --swing-weight 330
+--balance 0.32
+
+The list is read by :mod:`fem_racket.io.racket_table`; the distance is scaled per target, and each
+racket's least customisation with lead at ``--places`` comes from
+:mod:`fem_racket.studies.closest`.
 """
 
 from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_config_option, print_json, significant
+from fem_racket.cli.common import add_command, add_config_option, print_json, significant
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
@@ -21,14 +26,8 @@ from fem_racket.cli.options.targets import (
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``closest`` command."""
-    p = sub.add_parser(
-        "closest",
-        help="rackets of a CSV list nearest a target, each with its least lead",
-        description="Rank the rackets of a CSV list (name, length_m, mass_kg, balance_m, "
-        "swing_weight_kg_cm2; optional twist_weight_kg_cm2, stiffness_ra, f1_hz) by their "
-        "distance to the targets (each a value or LOW:HIGH) and find the least lead bringing "
-        "each of the nearest to the mass, balance, swing-weight and twistweight targets. "
-        "Example: fem-racket closest meshes/rackets.csv --swing-weight 330 --balance 0.32",
+    p = add_command(
+        sub, "closest", "rackets of a CSV list nearest a target, each with its least lead", __doc__
     )
     p.add_argument(
         "rackets", nargs="?", default=None, metavar="CSV", help="the racket list (a CSV file)"

@@ -1,10 +1,14 @@
 """``fem-racket compare A B [C ...]``: set-ups side by side, and each minus the first.
 
-Each of A, B, ... is a preset, a mesh file or a run file (its racket, strings and ball), with
-optional lead: ``standard+12:10`` (:mod:`fem_racket.io.setups`); ``--add-mass`` adds lead to
-every one. All are played alike (ball speed, swing, impact point). Prints a table (or
-``--json``: ``rackets`` with each one's values, ``differences`` with each later one minus the
-first) and writes the one-page figure (.png, .svg, .pdf) and/or netCDF of the maps (.nc).
+Compare set-ups (presets, mesh files or run files with their own strings and ball;
+SOURCE+LOCATION:GRAMS adds lead) played alike: specs, e_A and v_out maps with their differences,
+sweet spots, power region, handle shock and contact time. Example: fem-racket compare standard
+standard+12:10 --out cmp.png cmp.nc
+
+A set-up is read by :mod:`fem_racket.io.setups`; ``--add-mass`` adds lead to every one. Prints a
+table (or ``--json``: ``rackets`` with each one's values, ``differences`` with each later one
+minus the first) and writes the one-page figure (.png, .svg, .pdf) and/or netCDF of the maps
+(.nc).
 """
 
 from __future__ import annotations
@@ -13,6 +17,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -31,13 +36,11 @@ DEFAULT_OUTPUT = Path("output") / "compare.png"
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``compare`` command."""
-    p = sub.add_parser(
+    p = add_command(
+        sub,
         "compare",
-        help="rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
-        description="Compare set-ups (presets, mesh files or run files with their own strings "
-        "and ball; SOURCE+LOCATION:GRAMS adds lead) played alike: specs, e_A and v_out maps "
-        "with their differences, sweet spots, power region, handle shock and contact time. "
-        "Example: fem-racket compare standard standard+12:10 --out cmp.png cmp.nc",
+        "rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
+        __doc__,
     )
     p.add_argument(
         "rackets",

@@ -13,7 +13,7 @@ import io
 from pathlib import PurePath
 from typing import Any
 
-from fem_racket.cli.common import add_output_options
+from fem_racket.cli.common import add_command, add_output_options
 from fem_racket.cli.options.runfile import apply_config, config_values, file_options
 from fem_racket.io.config import example_config, load_config, toml_value
 from fem_racket.io.config_keys import COMMAND_TABLES
@@ -22,7 +22,7 @@ from fem_racket.validation import ChecksPassed, InputError, checks_only
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``config`` command."""
-    p = sub.add_parser("config", help="print an example run file (TOML) or check one")
+    p = add_command(sub, "config", "print an example run file (TOML) or check one")
     what = p.add_mutually_exclusive_group(required=True)
     what.add_argument("--example", action="store_true", help="print an annotated example")
     what.add_argument(

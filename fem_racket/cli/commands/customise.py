@@ -1,11 +1,14 @@
 """``fem-racket customise``: the least lead tape that brings a racket to catalogue targets.
 
-``fem-racket customise --mesh racket.vtu --swing-weight 330 --balance 0.32 --places 12,3/9,handle
---out custom.vtu`` solves for the least total added mass at the allowed places meeting every
-target (each a value or a range LOW:HIGH; :mod:`fem_racket.studies.customise`), writes the
-customised racket as a mesh file (with a ``.json`` sidecar), maps e_A and v_out before and after
-(``--maps``: .png, .nc or .csv) and prints the placement; unreachable targets are refused with
-the range the places can reach.
+Find the least added mass (lead tape) at the allowed places that gives the racket the target specs
+(each a value or LOW:HIGH), write the customised racket as a mesh file and map it before and
+after. Example: fem-racket customise --swing-weight 310 --balance 0.3079 --places 12,handle --out
+custom.vtu
+
+The least total mass meeting every target is solved by :mod:`fem_racket.studies.customise`; the
+mesh file gets a ``.json`` sidecar, the maps of e_A and v_out before and after go to ``--maps``
+(.png, .nc or .csv) and the placement is printed; unreachable targets are refused with the range
+the places can reach.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ import json
 from pathlib import Path
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_frame_options,
     add_speed_option,
@@ -42,13 +46,11 @@ DEFAULT_MAPS = Path("output") / "customised_map.png"
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``customise`` command."""
-    p = sub.add_parser(
+    p = add_command(
+        sub,
         "customise",
-        help="least lead tape reaching swing weight, balance, twistweight, mass targets",
-        description="Find the least added mass (lead tape) at the allowed places that gives "
-        "the racket the target specs (each a value or LOW:HIGH), write the customised racket "
-        "as a mesh file and map it before and after. Example: fem-racket customise "
-        "--swing-weight 310 --balance 0.3079 --places 12,handle --out custom.vtu",
+        "least lead tape reaching swing weight, balance, twistweight, mass targets",
+        __doc__,
     )
     add_frame_options(p)
     add_target_options(p)

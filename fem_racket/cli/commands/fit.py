@@ -1,9 +1,13 @@
 """``fem-racket fit``: a racket frame from its catalogue numbers, written as a mesh file.
 
-``fem-racket fit --length 0.685 --mass 0.318 --balance 0.320 --swing-weight 316 --f1 150
---out racket.vtu`` fits the three-segment frame of :mod:`fem_racket.frame.specs` (mass, balance
-and swing weight exact, f1 by scaling EI) and writes a mesh every ``--mesh`` option loads, with
-the targets, the fitted values and the provenance in the sidecar ``racket.vtu.json``.
+Fit a three-segment frame (handle 0-0.3 L, throat 0.3-0.6 L, head 0.6-1 L; EI with the paper's
+0.88 step) to a racket's specification and write it as a mesh file for --mesh. Example:
+fem-racket fit --length 0.685 --mass 0.318 --balance 0.320 --swing-weight 316 --f1 150 --out
+racket.vtu
+
+The frame is the three-segment one of :mod:`fem_racket.frame.specs` (mass, balance and swing
+weight exact, f1 by scaling EI); every ``--mesh`` option loads the file, and its sidecar
+``racket.vtu.json`` holds the targets, the fitted values and the provenance.
 """
 
 from __future__ import annotations
@@ -12,7 +16,13 @@ import argparse
 import json
 from pathlib import Path
 
-from fem_racket.cli.common import add_config_option, print_json, run_parameters, significant
+from fem_racket.cli.common import (
+    add_command,
+    add_config_option,
+    print_json,
+    run_parameters,
+    significant,
+)
 from fem_racket.cli.options.lists import add_options
 from fem_racket.cli.options.output import (
     add_overwrite_json,
@@ -50,13 +60,11 @@ SPECIFICATION = (
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``fit`` command."""
-    p = sub.add_parser(
+    p = add_command(
+        sub,
         "fit",
-        help="a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
-        description="Fit a three-segment frame (handle 0-0.3 L, throat 0.3-0.6 L, head "
-        "0.6-1 L; EI with the paper's 0.88 step) to a racket's specification and write it as "
-        "a mesh file for --mesh. Example: fem-racket fit --length 0.685 --mass 0.318 "
-        "--balance 0.320 --swing-weight 316 --f1 150 --out racket.vtu",
+        "a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
+        __doc__,
     )
     g = p.add_argument_group("specification")
     add_options(g, SPECIFICATION, type=float)

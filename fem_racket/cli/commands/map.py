@@ -1,12 +1,17 @@
 """``fem-racket map``: e_A and v_out along the frame, with sweet spots, for one or more rackets.
 
+e_A (the free racket's COR at the closing speed) and the ball's speed after impact
+v_out = e_A v_in + (1 + e_A) v_r along the frame, for a ball speed and a swing; sweet spots:
+centre of percussion (with --pivot), mode-1 node, max e_A, max v_out, power region; under the
+paper's linear law or another (--law). Example: fem-racket map --speed 20 --racket-speed 25
+--pivot 0.1 --law kawazoe-1997-nonlinear
+
 Rackets: ``--preset standard rigid`` and/or ``--mesh A.vtu B.vtu`` (each option also repeatable);
 the paper's standard racket when neither is given. ``--out`` takes one or more files, the
 format from the suffix: .png (curves with the sweet spots marked), .nc (netCDF) and .csv (with a
 ``.json`` sidecar); ``output/map.png`` by default, where a rerun replaces its own earlier map
 (:mod:`fem_racket.cli.options.rerun`). ``--json`` prints the sweet spots and curves and writes
 only what ``--out`` names; ``--no-files`` writes nothing.
-``--law NAME`` (and its parameters) maps under another ball/string law than the paper's.
 ``--offsets`` maps e_A over the whole face, ``--angle``/``--spin``/``--friction`` the oblique
 ball's outgoing spin and angle over it (:mod:`fem_racket.cli.options.faces`).
 """
@@ -18,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -62,14 +68,8 @@ class _Extend(argparse.Action):
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``map`` command."""
-    p = sub.add_parser(
-        "map",
-        help="apparent COR and ball speed along the frame, with sweet spots",
-        description="e_A (the free racket's COR at the closing speed) and the ball's speed "
-        "after impact v_out = e_A v_in + (1 + e_A) v_r along the frame, for a ball speed and a "
-        "swing; sweet spots: centre of percussion (with --pivot), mode-1 node, max e_A, max "
-        "v_out, power region; under the paper's linear law or another (--law). Example: "
-        "fem-racket map --speed 20 --racket-speed 25 --pivot 0.1 --law kawazoe-1997-nonlinear",
+    p = add_command(
+        sub, "map", "apparent COR and ball speed along the frame, with sweet spots", __doc__
     )
     r = p.add_argument_group("rackets (several are overlaid)")
     r.add_argument(

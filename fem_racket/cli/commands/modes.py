@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_frame_options,
     build_model,
@@ -19,7 +20,7 @@ from fem_racket.progress import progress_bar
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``modes`` command."""
-    p = sub.add_parser("modes", help="free-free modal analysis of the frame")
+    p = add_command(sub, "modes", "free-free modal analysis of the frame")
     add_frame_options(p)
     p.add_argument(
         "--count",

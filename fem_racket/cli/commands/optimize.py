@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 
+from fem_racket.cli.common import add_command
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.cli.options.lists import add_options
@@ -31,7 +32,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``optimize`` command."""
     from fem_racket.io.design_study import METHODS
 
-    p = sub.add_parser("optimize", help="optimum racket design (scipy, pymoo NSGA-II)")
+    p = add_command(sub, "optimize", "optimum racket design (scipy, pymoo NSGA-II)")
     add_design_options(p)
     s = p.add_argument_group("solver")
     s.add_argument(

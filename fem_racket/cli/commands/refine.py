@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_ei_options,
     add_mesh_option,
@@ -31,9 +32,8 @@ DEFAULT_CSV = "output/refine.csv"
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``refine`` command."""
-    p = sub.add_parser(
-        "refine",
-        help="mesh-refinement study: frequencies vs the exact beam, COR and contact time",
+    p = add_command(
+        sub, "refine", "mesh-refinement study: frequencies vs the exact beam, COR and contact time"
     )
     g = p.add_argument_group("frame")
     add_ei_options(g)

@@ -1,12 +1,21 @@
 """``fem-racket reproduce``: every figure of the paper, its data, and REPRODUCTION.md; with
-``--law NAME`` the figures redrawn with a contact law and its report, in their own folder."""
+``--law NAME`` the figures redrawn with a contact law and its report, in their own folder.
+
+Compute every figure of the paper, write its data (CSV) and figure (PNG, SVG or PDF) into --out,
+and write the side-by-side report --report (image links relative to it). Files an earlier run
+wrote are replaced (recognised by their provenance); any other existing file needs --overwrite.
+With --law NAME the figures are drawn with that contact law instead of the paper's linear K_CB
+and the report says which of the paper's conclusions (1)-(4) still hold and how the contact times
+compare with the paper's 6-3 ms. About 15 s on a quiet 2-core machine (--law
+kawazoe-1997-nonlinear: about 20 s), several times that under load.
+"""
 
 from __future__ import annotations
 
 import argparse
 import time
 
-from fem_racket.cli.common import add_config_option, run_parameters
+from fem_racket.cli.common import add_command, add_config_option, run_parameters
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 
@@ -16,17 +25,11 @@ DEFAULT_REPORT = "REPRODUCTION.md"
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``reproduce`` command."""
-    p = sub.add_parser(
+    p = add_command(
+        sub,
         "reproduce",
-        help="reproduce every figure of Kawazoe & Kanda (1997) and write REPRODUCTION.md",
-        description="Compute every figure of the paper, write its data (CSV) and figure (PNG, "
-        "SVG or PDF) into --out, and write the side-by-side report --report (image links "
-        "relative to it). Files an earlier run wrote are replaced (recognised by their "
-        "provenance); any other existing file needs --overwrite. With --law NAME the figures "
-        "are drawn with that contact law instead of the paper's linear K_CB and the report says "
-        "which of the paper's conclusions (1)-(4) still hold and how the contact times compare "
-        "with the paper's 6-3 ms. About 15 s on a quiet 2-core machine (--law "
-        "kawazoe-1997-nonlinear: about 20 s), several times that under load.",
+        "reproduce every figure of Kawazoe & Kanda (1997) and write REPRODUCTION.md",
+        __doc__,
     )
     p.add_argument(
         "--out",

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from fem_racket.cli.common import add_command
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.extras import require
@@ -11,7 +12,7 @@ from fem_racket.extras import require
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``sensitivity`` command."""
-    p = sub.add_parser("sensitivity", help="Sobol sensitivity of a design objective (SALib)")
+    p = add_command(sub, "sensitivity", "Sobol sensitivity of a design objective (SALib)")
     add_design_options(p)
     s = p.add_argument_group("sensitivity")
     s.add_argument(

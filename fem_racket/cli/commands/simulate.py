@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_impact_options,
     add_output_options,
@@ -39,7 +40,12 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.impact import add_hand_options, hand_from_args
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
-from fem_racket.cli.options.output import print_result, write_result_files
+from fem_racket.cli.options.output import (
+    core_rows,
+    offset_rows,
+    print_result,
+    write_result_files,
+)
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.cli.options.strings_oblique import run_strung_oblique
@@ -63,7 +69,7 @@ OUT_SUFFIXES = (".json", ".csv")
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``simulate`` command."""
-    p = sub.add_parser("simulate", help="simulate one ball impact on the racket")
+    p = add_command(sub, "simulate", "simulate one ball impact on the racket")
     add_impact_options(p)
     add_swing_options(p)
     add_hand_options(p)
@@ -198,11 +204,7 @@ def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, st
     if summary["rebound_speed_m_s"] < 0:
         rebound += " (negative: the ball keeps moving forward, COR < 0)"
     return [
-        ("coefficient of restitution", significant(summary["cor"], 6), "-"),
-        ("contact time", significant(summary["contact_time_s"] * 1e3, 5), "ms"),
-        ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound),
-        ("peak force", significant(summary["peak_force_n"], 4), "N"),
-        ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+        *core_rows(summary, rebound),
         *_twist_rows(summary),
         *_swing_rows(summary, swinging),
         ("impact speed", significant(summary["speed_m_s"], 5), "m/s"),
@@ -214,8 +216,7 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
     if "offset_m" not in summary:
         return []
     return [
-        ("offset from the axis", significant(summary["offset_m"], 4), "m"),
-        ("roll rate after impact", significant(summary["roll_rate_rad_s"], 4), "rad/s"),
+        *offset_rows(summary),
         (
             "lost energy in torsion",
             significant(100 * summary["torsion_energy_share"], 3),

@@ -1,7 +1,9 @@
 """``fem-racket sweep``: a grid of impacts -> one netCDF dataset (see :func:`fem_racket.sweep`).
 
-Each parameter option takes a number (fixed), a comma list or ``start:stop:num[:log]``; so do
-the contact law's (``--law hunt-crossley --hc-exponent 1.3:1.7:5``).
+Simulate every combination of the given values. Each parameter takes a number, a comma list
+(20,30,40) or start:stop:num with an optional :log (50:3000:60:log); so do the contact law's
+parameters (--law hunt-crossley --hc-exponent 1.3:1.7:5). Example: fem-racket sweep --position
+0.55:0.95:9 --speed 20,30,40 --ei1 50:3000:60:log --out fig13.nc
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_mesh_option,
     add_solver_options,
@@ -90,15 +93,7 @@ def _grid_value(where: str, value: Any) -> Any:
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``sweep`` command."""
-    p = sub.add_parser(
-        "sweep",
-        help="simulate a grid of impacts and save one netCDF dataset",
-        description="Simulate every combination of the given values. Each parameter takes a "
-        "number, a comma list (20,30,40) or start:stop:num with an optional :log "
-        "(50:3000:60:log); so do the contact law's parameters (--law hunt-crossley "
-        "--hc-exponent 1.3:1.7:5). Example: fem-racket sweep --position 0.55:0.95:9 "
-        "--speed 20,30,40 --ei1 50:3000:60:log --out fig13.nc",
-    )
+    p = add_command(sub, "sweep", "simulate a grid of impacts and save one netCDF dataset", __doc__)
     g = p.add_argument_group("swept or fixed parameters")
     for name, text in _HELP.items():
         flags = ["--" + name.replace("_", "-"), *_PLURAL.get(name, ())]

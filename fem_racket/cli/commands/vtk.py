@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
+    add_command,
     add_config_option,
     add_impact_options,
     add_output_step_option,
@@ -81,9 +82,8 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``export-vtk`` and ``animate`` commands."""
-    p = sub.add_parser(
-        "export-vtk",
-        help="write the impact as a VTK time series (.pvd + .vtu) for ParaView",
+    p = add_command(
+        sub, "export-vtk", "write the impact as a VTK time series (.pvd + .vtu) for ParaView"
     )
     p.add_argument(
         "--out",
@@ -98,7 +98,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_config_option(p, private=("out",))  # a folder, not output.out
     p.set_defaults(func=run_export)
 
-    a = sub.add_parser("animate", help="render the impact offscreen as a GIF or MP4")
+    a = add_command(sub, "animate", "render the impact offscreen as a GIF or MP4")
     a.add_argument(
         "--out",
         type=Path,

@@ -14,12 +14,15 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
+from fem_racket.cli.text import significant
 from fem_racket.outputs.jsonable import json_ready
 
 __all__ = [
     "add_output_options",
     "add_overwrite_json",
+    "core_rows",
     "mesh_files",
+    "offset_rows",
     "print_json",
     "print_result",
     "print_written",
@@ -66,6 +69,28 @@ def print_result(
         print(f"{name:<28} {value:>14} {unit}".rstrip())
     print_written(files)
     return 0
+
+
+def core_rows(summary: dict[str, Any], rebound_unit: str = "m/s") -> list[tuple[str, str, str]]:
+    """The first rows of a head-on impact's table (``simulate``, on a frame or a string bed):
+    COR [-], contact time [ms], rebound speed [m/s] (its unit shown as ``rebound_unit``), peak
+    force [N] and impact point [x/L], as (name, value, unit) for :func:`print_result`."""
+    return [
+        ("coefficient of restitution", significant(summary["cor"], 6), "-"),
+        ("contact time", significant(summary["contact_time_s"] * 1e3, 5), "ms"),
+        ("rebound speed", significant(summary["rebound_speed_m_s"], 5), rebound_unit),
+        ("peak force", significant(summary["peak_force_n"], 4), "N"),
+        ("impact point", significant(summary["position_x_over_l"], 4), "x/L"),
+    ]
+
+
+def offset_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """The rows of an off-axis head-on impact (``simulate --offset``, on a frame or a string
+    bed): the offset from the long axis [m] and the racket's roll rate after impact [rad/s]."""
+    return [
+        ("offset from the axis", significant(summary["offset_m"], 4), "m"),
+        ("roll rate after impact", significant(summary["roll_rate_rad_s"], 4), "rad/s"),
+    ]
 
 
 def add_output_options(

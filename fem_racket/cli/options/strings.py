@@ -24,7 +24,13 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
-from fem_racket.cli.options.output import print_result, run_parameters, write_result_files
+from fem_racket.cli.options.output import (
+    core_rows,
+    offset_rows,
+    print_result,
+    run_parameters,
+    write_result_files,
+)
 from fem_racket.cli.options.runfile import given_options
 from fem_racket.cli.text import significant
 from fem_racket.impact.simulate import simulate
@@ -134,19 +140,8 @@ def _write(args: argparse.Namespace, result: StrungImpact, summary: dict, files:
 def _rows(s: dict[str, Any]) -> list[tuple[str, str, str]]:
     freqs = ", ".join(f"{f:.0f}" for f in s["stringbed_frequencies_hz"])
     return [
-        ("coefficient of restitution", significant(s["cor"], 6), "-"),
-        ("contact time", significant(s["contact_time_s"] * 1e3, 5), "ms"),
-        ("rebound speed", significant(s["rebound_speed_m_s"], 5), "m/s"),
-        ("peak force", significant(s["peak_force_n"], 4), "N"),
-        ("impact point", significant(s["position_x_over_l"], 4), "x/L"),
-        *(
-            [
-                ("offset from the axis", significant(s["offset_m"], 4), "m"),
-                ("roll rate after impact", significant(s["roll_rate_rad_s"], 4), "rad/s"),
-            ]
-            if s["offset_m"]
-            else []
-        ),
+        *core_rows(s),
+        *(offset_rows(s) if s["offset_m"] else []),
         ("impact speed", significant(s["speed_m_s"], 5), "m/s"),
         ("string bed", f"{s['pattern']} {s['string']}", ""),
         ("string tension", significant(s["string_tension_n"], 4), "N"),

@@ -23,8 +23,10 @@ from collections.abc import Callable
 import numpy as np
 
 from fem_racket.impact.system import (
+    DEFAULT_INTEGRATION,
     SEPARATION_EVENTS,
     CoupledSystem,
+    Integration,
     Trajectory,
     no_separation,
     output_times,
@@ -254,20 +256,12 @@ def separation_time(
     raise no_separation(t_max)
 
 
-def solve_exact(
-    system: CoupledSystem,
-    *,
-    separation: str = "displacement",
-    output_step: float | None = 1e-5,
-    t_max: float | None = None,
-    rtol: float = 1e-10,
-    atol: float = 1e-12,
-) -> Trajectory:
+def solve_exact(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
     """Closed-form (eigen-solution) path; see the module docstring. Tolerances are unused."""
-    check_choice("separation", separation, SEPARATION_EVENTS)
+    check_choice("separation", run.separation, SEPARATION_EVENTS)
     cf = ModalClosedForm(system)
-    tc = separation_time(cf, separation, system.contact_time_estimate(), t_max)
-    t = output_times(output_step, tc)
+    tc = separation_time(cf, run.separation, system.contact_time_estimate(), run.t_max)
+    t = output_times(run.output_step, tc)
     x, v = cf.states(t)
     return Trajectory(t, x, v, peak_force(cf, tc)[0])
 

@@ -27,7 +27,7 @@ from fem_racket.impact.general.step import per_case
 from fem_racket.impact.general.stored import Stored, joined
 from fem_racket.impact.reduction import split_modes
 
-__all__ = ["Checks", "KernelLaw", "MarchOptions", "kernel_law", "march_compiled"]
+__all__ = ["Checks", "KernelLaw", "MarchCases", "MarchOptions", "kernel_law", "march_compiled"]
 
 #: Parameters of each law with a kernel, in the kernel's order (the kernel_laws.LAW_IDS list).
 _PARAMETERS = {
@@ -59,6 +59,47 @@ class KernelLaw:
     def take(self, idx: np.ndarray) -> KernelLaw:
         """The law of the cases ``idx``."""
         return KernelLaw(self.law, self.state, self.end, self.params[idx])
+
+
+@dataclass(frozen=True, eq=False)
+class MarchCases:
+    """The batch a compiled march takes: C cases, each with its law, frame and speeds.
+
+    Attributes
+    ----------
+    law : KernelLaw
+        The law of every case (:func:`kernel_law`).
+    rec : Receptance
+        The frame at each case's impact point.
+    speed : ndarray, shape (C,)
+        Ball speed towards the frame at t = 0 [m/s].
+    frame_velocity : ndarray, shape (C, 2 + n) or None
+        Initial modal velocities of the frame [sqrt(kg) m/s]; at rest when None.
+    omega_c : ndarray, shape (C,)
+        Contact frequency of each case [rad/s], the scale of the mode cut-off.
+    beta : float
+        Flexible modes above ``beta`` x ``omega_c`` become one pseudo-mode
+        (:func:`fem_racket.impact.reduction.split_modes`).
+    """
+
+    law: KernelLaw
+    rec: Receptance
+    speed: np.ndarray
+    frame_velocity: np.ndarray | None
+    omega_c: np.ndarray
+    beta: float
+
+    def take(self, idx: np.ndarray) -> MarchCases:
+        """The cases ``idx``."""
+        fv = self.frame_velocity
+        return MarchCases(
+            self.law.take(idx),
+            per_case(self.rec, self.speed.size, idx),
+            self.speed[idx],
+            None if fv is None else fv[idx],
+            self.omega_c[idx],
+            self.beta,
+        )
 
 
 @dataclass(frozen=True)
@@ -146,22 +187,17 @@ def _free(rec, speed, frame_velocity, h, nsteps) -> np.ndarray:
 
 
 def march_compiled(
-    law: KernelLaw,
-    rec: Receptance,
-    speed: np.ndarray,
-    frame_velocity: np.ndarray | None,
-    omega_c: np.ndarray,
-    beta: float,
+    cases: MarchCases,
     h: np.ndarray,
     span: np.ndarray,
     t_max: np.ndarray,
     options: MarchOptions = MarchOptions(),
 ) -> tuple[GeneralOutcome, Checks, np.ndarray, Stored]:
-    """Every case with its step ``h`` [s] over ``span`` [s] (on, up to ``t_max``, while in
-    contact); returns the outcome (its histories empty), the checks, a status per case (0
-    separated, 1 still in contact at t_max, 2 Newton did not converge; the outcome is NaN where
-    it is not 0) and the nodal histories as stored (none without ``options.histories``; lay
-    them out with :func:`fem_racket.impact.general.stored.laid_out`).
+    """Every case of ``cases`` with its step ``h`` [s] over ``span`` [s] (on, up to ``t_max``,
+    while in contact); returns the outcome (its histories empty), the checks, a status per case
+    (0 separated, 1 still in contact at t_max, 2 Newton did not converge; the outcome is NaN
+    where it is not 0) and the nodal histories as stored (none without ``options.histories``;
+    lay them out with :func:`fem_racket.impact.general.stored.laid_out`).
 
     A frame at rest: each case marches up to ``t_max`` at once (the kernel stops at its
     separation). A moving frame: over ``span``, then twice the span (up to ``t_max``) for the
@@ -170,7 +206,8 @@ def march_compiled(
     """
     from fem_racket.impact.general import jit
 
-    W, A2, nmode, kept = _modes(rec, omega_c, beta)
+    law, rec, speed, frame_velocity = cases.law, cases.rec, cases.speed, cases.frame_velocity
+    W, A2, nmode, kept = _modes(rec, cases.omega_c, cases.beta)
     kind = (law.law, law.state, law.end, int(options.extend))
     ncase = speed.size
     runs = []

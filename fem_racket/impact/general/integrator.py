@@ -40,7 +40,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.law import ContactLaw
-from fem_racket.impact.general.compiled import kernel_law, march_compiled
+from fem_racket.impact.general.compiled import MarchCases, kernel_law, march_compiled
 from fem_racket.impact.general.jit import lone_solve
 from fem_racket.impact.general.march import GeneralOutcome, march
 from fem_racket.impact.general.receptance import Receptance, free_motion
@@ -165,9 +165,8 @@ def solve_general(
     limits = (np.minimum(SPAN * t_case, limit), limit)
     if given:
         with lone_solve(ncase):
-            out, _, status, stored = march_compiled(
-                kernel, rec, speed, frame_velocity, omega_c, beta, t_case / steps, *limits
-            )
+            cases = MarchCases(kernel, rec, speed, frame_velocity, omega_c, beta)
+            out, _, status, stored = march_compiled(cases, t_case / steps, *limits)
         _check_status(status, limit)
         return replace(out, **laid_out([(np.arange(ncase), stored)], ncase))
     target = NONE_TOLERANCE if tol is None else tol
@@ -175,9 +174,8 @@ def solve_general(
         beta = cutoff_factor(tol * (1.0 - STEP_SHARE))
     with lone_solve(ncase):
         first = first_steps(steps, exponent, ncase)
-        parts, where, run, stored = vouched(
-            kernel, rec, speed, frame_velocity, omega_c, beta, t_case, first, target, limits
-        )
+        cases = MarchCases(kernel, rec, speed, frame_velocity, omega_c, beta)
+        parts, where, run, stored = vouched(cases, t_case, first, target, limits)
     out = replace(_merge(parts, where, ncase), **laid_out(stored, ncase))
     if refused == "raise":
         _check_status(np.where(run.no_separation, 1, 0), limit)

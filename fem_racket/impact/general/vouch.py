@@ -31,11 +31,11 @@ never a number, and the caller refuses it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from fem_racket.impact.general.compiled import Checks, KernelLaw, MarchOptions, march_compiled
+from fem_racket.impact.general.compiled import Checks, MarchCases, MarchOptions, march_compiled
 from fem_racket.impact.general.march import GeneralOutcome
 from fem_racket.impact.general.receptance import Receptance
 from fem_racket.impact.general.step import per_case
@@ -129,19 +129,14 @@ def _estimate(cors: np.ndarray) -> np.ndarray:
 
 
 def vouched(
-    law: KernelLaw,
-    rec: Receptance,
-    speed: np.ndarray,
-    frame_velocity: np.ndarray | None,
-    omega_c: np.ndarray,
-    beta: float,
+    cases: MarchCases,
     t_case: np.ndarray,
     steps: np.ndarray,
     tol: float,
     limits: tuple[np.ndarray, np.ndarray],
 ) -> tuple[list[GeneralOutcome], list[np.ndarray], Run, list[tuple[np.ndarray, Stored]]]:
-    """Every case at its ``steps`` per contact time ``t_case`` [s] (and a quarter and half of
-    them), doubled until accepted.
+    """Every case of ``cases`` at its ``steps`` per contact time ``t_case`` [s] (and a quarter
+    and half of them), doubled until accepted.
 
     ``limits``: the first span and t_max per case [s]. Where the contact ends in less than a
     quarter of ``t_case`` (or the contact equation cannot be solved) the estimate is replaced
@@ -152,24 +147,23 @@ def vouched(
     histories of the answers as stored (case indices,
     :class:`~fem_racket.impact.general.stored.Stored`).
     """
+    speed = cases.speed
     ncase = speed.size
     span, t_max = limits[0].copy(), limits[1]
-    t_case, omega_c = t_case.copy(), omega_c.copy()
+    cases = replace(cases, omega_c=cases.omega_c.copy())  # a restart rescales its omega_c
+    t_case, omega_c = t_case.copy(), cases.omega_c
     n_case = np.broadcast_to(np.asarray(steps, dtype=int), (ncase,)).copy()
     est, res, stiff = np.full(ncase, np.inf), np.full(ncase, np.inf), np.zeros(ncase)
     stuck = np.zeros(ncase, dtype=bool)
     restarts = np.zeros(ncase, dtype=int)
     cors = np.full((ncase, 3), np.nan)
-    moving = frame_velocity is not None
+    moving = cases.frame_velocity is not None
 
     def run(idx, scale):
-        sub = per_case(rec, ncase, idx)
-        fv = None if frame_velocity is None else frame_velocity[idx]
+        sub = cases.take(idx)
         h = t_case[idx] / (n_case[idx] * scale)
         options = MarchOptions(histories=scale == 1.0)  # a coarse run: its COR alone
-        out = march_compiled(law.take(idx), sub, speed[idx], fv, omega_c[idx], beta, h, span[idx],
-                             t_max[idx], options)  # fmt: skip
-        return sub, out
+        return sub.rec, march_compiled(sub, h, span[idx], t_max[idx], options)
 
     quarter = np.zeros(ncase, dtype=bool)  # cors[:, 0] holds the run at a quarter of the steps
 

@@ -24,7 +24,7 @@ from fem_racket.frame.hand import HeldFrame, held_frame
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.ode.integrators import get_solver
 from fem_racket.impact.problem import HeldRacket, ImpactProblem
-from fem_racket.impact.system import CoupledSystem, physical_system
+from fem_racket.impact.system import CoupledSystem, Integration, physical_system
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["HeldImpact", "simulate_held"]
@@ -173,9 +173,7 @@ def simulate_held(
         frame = model.fe.rigid_motion(-swing.velocity, -swing.omega)
         fields["frame_velocity0"] = np.concatenate([frame, [-hand_speed, -swing.omega]])
     system = _HeldSystem(**fields, grip_damping=held.C)
-    traj = get_solver(solver)(
-        system, separation="displacement", output_step=output_step, rtol=rtol, atol=atol
-    )
+    traj = get_solver(solver)(system, Integration(output_step=output_step, rtol=rtol, atol=atol))
     # Force of the grip layer on the hand's translation: -(k' G x + c' G x')[u_h] (G symmetric).
     row = held.grip[held.n_frame]
     x, v = traj.x[:, 1:], traj.v[:, 1:]

@@ -35,7 +35,7 @@ from fem_racket.impact.held.shock import (
 )
 from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS, RTOL_RANGE
 from fem_racket.impact.problem import HeldRacket, ImpactProblem
-from fem_racket.impact.swing import Swing, ball_speed_out
+from fem_racket.impact.swing import Swing, ball_speed_out, rebound_summary
 from fem_racket.impact.system import check_output_count
 from fem_racket.validation import InputError, check_choice, check_range
 
@@ -125,13 +125,7 @@ class HeldRun:
     def summary(self) -> dict[str, Any]:
         """Scalar results and :meth:`settings`, JSON-ready, units in the keys."""
         return {
-            "cor": self.apparent_cor,
-            "apparent_cor": self.apparent_cor,
-            "ball_speed_out_m_s": self.ball_speed_out,
-            "racket_speed_at_impact_m_s": self.racket_speed,
-            "contact_time_s": self.contact_time,
-            "rebound_speed_m_s": self.ball_speed_out,
-            "peak_force_n": self.peak_force,
+            **rebound_summary(self, self.racket_speed),
             "peak_grip_force_n": self.peak_grip_force,
             "grip_vibration_rms_n": self.grip_vibration_rms,
             **self.settings(),

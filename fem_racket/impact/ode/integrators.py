@@ -1,6 +1,6 @@
 """Integrators of the coupled system, all behind one signature.
 
-``solver(system, *, separation, output_step, t_max, rtol, atol) -> Trajectory``
+``solver(system, run: Integration) -> Trajectory``
 
 - ``exact``: the closed-form eigen-solution of the linear system in modal coordinates
   (:mod:`fem_racket.impact.exact.closed_form`), the default.
@@ -21,8 +21,10 @@ import numpy as np
 
 from fem_racket.impact.exact.closed_form import solve_exact
 from fem_racket.impact.system import (
+    DEFAULT_INTEGRATION,
     SEPARATION_EVENTS,
     CoupledSystem,
+    Integration,
     NoSeparationError,
     Trajectory,
     no_separation,
@@ -43,7 +45,7 @@ __all__ = [
     "solve_exact",
 ]
 
-Solver = Callable[..., Trajectory]
+Solver = Callable[[CoupledSystem, Integration], Trajectory]
 
 #: Relative tolerances of the BDF paths that meet the stated accuracy (COR 1e-8, t_c 1e-7):
 #: measured on the standard racket against the exact path, COR/t_c errors 2e-10/3e-9 (cvode)
@@ -78,14 +80,14 @@ def _one_line(message: object) -> str:
 
 
 def _bdf_setup(
-    system: CoupledSystem, separation: str, output_step: float | None, t_max: float | None
+    system: CoupledSystem, run: Integration
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    check_choice("separation", separation, SEPARATION_EVENTS)
+    check_choice("separation", run.separation, SEPARATION_EVENTS)
     A = system.state_matrix
-    c = system.event_vector(separation)
+    c = system.event_vector(run.separation)
     t_est = system.contact_time_estimate()
-    t_max = 20.0 * t_est if t_max is None else t_max
-    step = t_est / 200.0 if output_step is None else output_step
+    t_max = 20.0 * t_est if run.t_max is None else run.t_max
+    step = t_est / 200.0 if run.output_step is None else run.output_step
     tspan = np.arange(0.0, t_max + 0.5 * step, step)
     return A, c, tspan, system.initial_state()
 
@@ -129,17 +131,9 @@ def cvode_bdf(
     )
 
 
-def solve_cvode(
-    system: CoupledSystem,
-    *,
-    separation: str = "displacement",
-    output_step: float | None = 1e-5,
-    t_max: float | None = None,
-    rtol: float = 1e-10,
-    atol: float = 1e-12,
-) -> Trajectory:
+def solve_cvode(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
     """SUNDIALS CVODE (BDF) through scikit-sundae, dense constant Jacobian, root-found event."""
-    A, c, tspan, y0 = _bdf_setup(system, separation, output_step, t_max)
+    A, c, tspan, y0 = _bdf_setup(system, run)
 
     def rhs(t: float, y: np.ndarray, yp: np.ndarray) -> None:
         yp[:] = A @ y
@@ -152,28 +146,20 @@ def solve_cvode(
 
     events.terminal = [True]
     events.direction = [-1]
-    solver = cvode_bdf(rhs, jac, events, 1, rtol=rtol, atol=atol, max_num_steps=100000)
+    solver = cvode_bdf(rhs, jac, events, 1, rtol=run.rtol, atol=run.atol, max_num_steps=100000)
     sol = solver.solve(tspan, y0)
     if not sol.success:
         raise AccuracyError(f"solver = 'cvode' failed: {_one_line(sol.message)}")
     if sol.t_events is None or len(sol.t_events) == 0:
         raise no_separation(float(tspan[-1]))
-    return _trajectory(system, sol.t, sol.y, output_step is not None)
+    return _trajectory(system, sol.t, sol.y, run.output_step is not None)
 
 
-def solve_bdf(
-    system: CoupledSystem,
-    *,
-    separation: str = "displacement",
-    output_step: float | None = 1e-5,
-    t_max: float | None = None,
-    rtol: float = 1e-10,
-    atol: float = 1e-12,
-) -> Trajectory:
+def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
     """scipy ``solve_ivp`` BDF with a constant Jacobian and a terminal event."""
     from scipy.integrate import solve_ivp
 
-    A, c, tspan, y0 = _bdf_setup(system, separation, output_step, t_max)
+    A, c, tspan, y0 = _bdf_setup(system, run)
 
     def event(t: float, y: np.ndarray) -> float:
         return float(c @ y)
@@ -188,8 +174,8 @@ def solve_bdf(
         t_eval=tspan,
         events=event,
         jac=lambda t, y: A,
-        rtol=rtol,
-        atol=atol,
+        rtol=run.rtol,
+        atol=run.atol,
     )
     if sol.status == -1:
         raise AccuracyError(f"solver = 'bdf' failed: {_one_line(sol.message)}")
@@ -199,7 +185,7 @@ def solve_bdf(
     y = np.vstack([sol.y.T, sol.y_events[0][0]])
     if t.size > 1 and t[-1] - t[-2] < 1e-12:
         t, y = np.delete(t, -2), np.delete(y, -2, axis=0)
-    return _trajectory(system, t, y, output_step is not None)
+    return _trajectory(system, t, y, run.output_step is not None)
 
 
 #: Solver name -> function, all with the signature of :func:`solve_exact`.

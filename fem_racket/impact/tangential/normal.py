@@ -127,12 +127,20 @@ def _piece_root(fun, a: float, b: float) -> float:
     return float(brentq(fun, a, b, xtol=1e-15 * max(b, 1e-300), rtol=4 * np.finfo(float).eps))
 
 
+@dataclass(frozen=True, eq=False)
 class _ClosedFormNormal:
-    """What the closed-form histories share: the event-search grid of ``samples`` points over
-    [0, ``end``], and F, F' already smooth (``smooth_force`` and ``slope`` are exact)."""
+    """What the closed-form histories share: a ball of mass ``mass`` m [kg] on a spring of
+    ``stiffness`` k [N/m] (undamped angular frequency :attr:`omega`), the event-search grid of
+    ``samples`` points over [0, ``end``], and F, F' already smooth (``smooth_force`` and
+    ``slope`` are exact)."""
 
-    samples: int
-    end: float
+    mass: float
+    stiffness: float
+
+    @property
+    def omega(self) -> float:
+        """sqrt(k / m) [rad/s]."""
+        return math.sqrt(self.stiffness / self.mass)
 
     @cached_property
     def grid(self) -> np.ndarray:
@@ -168,8 +176,6 @@ class ClampedNormal(_ClosedFormNormal):
         Points of the event-search grid over the contact.
     """
 
-    mass: float
-    stiffness: float
     zeta: float
     speed: float
     samples: int = 400
@@ -179,16 +185,12 @@ class ClampedNormal(_ClosedFormNormal):
         """The force's return to zero [s]: where tan(omega_d t) = -2 zeta sqrt(1 - zeta^2) /
         (1 - 2 zeta^2), in (pi/2, pi] / omega_d."""
         z = self.zeta
-        wd = self._omega * math.sqrt(1.0 - z * z)
+        wd = self.omega * math.sqrt(1.0 - z * z)
         return (math.pi - math.atan2(2.0 * z * math.sqrt(1.0 - z * z), 1.0 - 2.0 * z * z)) / wd
-
-    @property
-    def _omega(self) -> float:
-        return math.sqrt(self.stiffness / self.mass)
 
     def _states(self, t):
         """delta, delta' and delta'' at ``t``."""
-        w, z = self._omega, self.zeta
+        w, z = self.omega, self.zeta
         wd = w * math.sqrt(1.0 - z * z)
         t = np.asarray(t, dtype=float)
         env = np.exp(-z * w * t) * self.speed
@@ -234,8 +236,6 @@ class StrongeNormal(_ClosedFormNormal):
         Points of the event-search grid.
     """
 
-    mass: float
-    stiffness: float
     restitution: float
     speed: float
     samples: int = 400
@@ -244,11 +244,6 @@ class StrongeNormal(_ClosedFormNormal):
     def end(self) -> float:
         """t_f = (1 + e) t_c [s]."""
         return (1.0 + self.restitution) * self.compression_time
-
-    @property
-    def omega(self) -> float:
-        """omega_n = sqrt(k_n / m) [rad/s]."""
-        return math.sqrt(self.stiffness / self.mass)
 
     @property
     def compression_time(self) -> float:

@@ -31,6 +31,17 @@ from fem_racket.paper.figures.law_runs import (
 __all__ = ["FIG_08", "FIG_09", "contact_time_position", "cor_position", "position_sweep"]
 
 SPEED = 20.0
+#: Values of the undamped cases (NaN under a law without an elastic counterpart): Fig 8, Fig 9.
+UNDAMPED_COR = (
+    "vibration_loss_undamped_argmin_x_over_l",
+    "eq16_max_excess",
+    "eq12_vs_rigid_fe_max_diff",
+)
+UNDAMPED_CONTACT_TIME = (
+    "tc_damping_max_rel_diff",
+    "tc_fe_vs_eq11_max_rel_diff",
+    "tc_rigid_undamped_vs_eq11_max_rel_diff",
+)
 
 
 @lru_cache(maxsize=2)
@@ -126,17 +137,13 @@ def cor_position(quick: bool = False, law: ContactLaw | None = None) -> FigureDa
             ),
         }
     )
-    nan = float("nan")
-    if "COR standard undamped [-]" in data:  # not for a law without an elastic counterpart
+    values.update(dict.fromkeys(UNDAMPED_COR, float("nan")))  # a law with no elastic counterpart
+    if "COR standard undamped [-]" in data:
         std0, rig0 = data["COR standard undamped [-]"], data["COR rigid undamped [-]"]
         eq12 = data["COR eq 12 rigid undamped [-]"]
         values["vibration_loss_undamped_argmin_x_over_l"] = float(x[np.argmin(rig0 - std0)])
         values["eq16_max_excess"] = float(np.max(std0 - eq12))
         values["eq12_vs_rigid_fe_max_diff"] = float(np.max(np.abs(eq12 - rig0)))
-    else:
-        for key in ("vibration_loss_undamped_argmin_x_over_l", "eq16_max_excess",
-                    "eq12_vs_rigid_fe_max_diff"):  # fmt: skip
-            values[key] = nan
     title = "Fig. 8: coefficient of restitution against impact position, 20 m/s"
     return law_figure("fig08_cor_position", title, {"cor": cols}, values, law)
 
@@ -169,7 +176,7 @@ def contact_time_position(quick: bool = False, law: ContactLaw | None = None) ->
             "tc_standard_position_spread": float(std.max() / std.min() - 1.0),
         }
     )
-    nan = float("nan")
+    values.update(dict.fromkeys(UNDAMPED_CONTACT_TIME, float("nan")))  # as in cor_position
     if "contact time standard undamped [s]" in cols:
         eq11 = cols["contact time eq 11 rigid undamped [s]"]
         undamped = cols["contact time standard undamped [s]"]
@@ -178,10 +185,6 @@ def contact_time_position(quick: bool = False, law: ContactLaw | None = None) ->
         values["tc_rigid_undamped_vs_eq11_max_rel_diff"] = float(
             np.max(np.abs(cols["contact time rigid undamped [s]"] / eq11 - 1.0))
         )
-    else:
-        for key in ("tc_damping_max_rel_diff", "tc_fe_vs_eq11_max_rel_diff",
-                    "tc_rigid_undamped_vs_eq11_max_rel_diff"):  # fmt: skip
-            values[key] = nan
     title = "Fig. 9: contact time against impact position, 20 m/s"
     return law_figure("fig09_contact_time_position", title, {"contact_time": cols}, values, law)
 

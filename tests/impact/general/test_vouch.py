@@ -25,7 +25,12 @@ from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.impact.general.batches import stack_laws, stack_receptances
-from fem_racket.impact.general.compiled import MarchOptions, kernel_law, march_compiled
+from fem_racket.impact.general.compiled import (
+    MarchCases,
+    MarchOptions,
+    kernel_law,
+    march_compiled,
+)
 from fem_racket.impact.general.integrator import solve_general
 from fem_racket.impact.general.march import march
 from fem_racket.impact.law_impact import LawOptions, receptance, solve_law_impact
@@ -67,10 +72,10 @@ def test_compiled_march_solves_the_numpy_equations(standard_model, law):
     t_est = float(np.min(law.contact_time_estimate(1.0 / rec.compliance, 30.0)))
     h, span, oc = t_est / 150, 2 * t_est, np.array([np.pi / t_est])
     ref = march(law, rec, np.array([30.0]), None, oc, 12.0, span, h, False)
+    cases = MarchCases(kernel_law(law, 1), rec, np.array([30.0]), None, oc, 12.0)
     out, _, status, _ = march_compiled(
-        kernel_law(law, 1), rec, np.array([30.0]), None, oc, 12.0, np.array([h]),
-        np.array([span]), np.array([16 * t_est]), MarchOptions(extend=False),
-    )  # fmt: skip
+        cases, np.array([h]), np.array([span]), np.array([16 * t_est]), MarchOptions(extend=False)
+    )
     assert status[0] == 0
     assert out.ball_velocity[0] == pytest.approx(ref.ball_velocity[0], rel=1e-12, abs=1e-12)
     assert out.contact_time[0] == pytest.approx(ref.contact_time[0], rel=1e-12)

@@ -1,0 +1,61 @@
+"""The stiffness k and exponent n of a power law F = k delta^n, declared once for every law that
+has one (:mod:`fem_racket.contact.hunt_crossley`, :mod:`fem_racket.contact.hysteretic`).
+
+k's unit, N/m^n, depends on n, so its bounds cannot be physical by themselves: they are the
+calibration's search range for n = 1-20 (:mod:`fem_racket.studies.calibrate`), and the physical
+bound is the law's deflection under 1 kN (:func:`fem_racket.contact.law.deflection_condition`).
+"""
+
+from __future__ import annotations
+
+from fem_racket.contact.parameters import LawParameter
+
+__all__ = ["EXPONENT_RANGE", "STIFFNESS_RANGE", "STIFFNESS_WHY", "exponent", "stiffness"]
+
+#: Bounds of a power law's stiffness k [N/m^n] (and the calibration's search range of k).
+STIFFNESS_RANGE = (1e2, 1e40)
+#: Bounds of a power law's exponent n [-] (and the calibration's search range of n).
+EXPONENT_RANGE = (1.0, 20.0)
+#: Why :data:`STIFFNESS_RANGE` (a stiffness declaration's ``why``).
+STIFFNESS_WHY = (
+    "its unit depends on n: the calibration's search range for n = 1-20; the physical bound is "
+    "the deflection under 1 kN (a condition)"
+)
+
+
+def stiffness(
+    name: str, field: str, default: float, help: str, why: str = STIFFNESS_WHY
+) -> LawParameter:
+    """A power law's stiffness k [N/m^n] within :data:`STIFFNESS_RANGE`, run-file key
+    ``<name>_n_m_n``.
+
+    Parameters
+    ----------
+    name, field : str
+        Its name (option, sweep axis) and the law's dataclass attribute holding it.
+    default : float
+        The family's default [N/m^n].
+    help, why : str
+        One line for ``--help``; the reasoning of the bounds.
+    """
+    return LawParameter(
+        name, field, "N/m^n", default, *STIFFNESS_RANGE, key=f"{name}_n_m_n", help=help, why=why
+    )
+
+
+def exponent(name: str, default: float, help: str, why: str) -> LawParameter:
+    """A power law's exponent n [-] within :data:`EXPONENT_RANGE`, held in the law's field
+    ``exponent``; its run-file key is its name.
+
+    Parameters
+    ----------
+    name : str
+        Its name (option, sweep axis, run-file key).
+    default : float
+        The family's default [-].
+    help, why : str
+        One line for ``--help``; the reasoning of the bounds.
+    """
+    return LawParameter(
+        name, "exponent", "-", default, *EXPONENT_RANGE, key=name, help=help, why=why
+    )
