@@ -8,7 +8,8 @@ order of :func:`fem_racket.impact.general.compiled.kernel_law`), and
 :func:`~fem_racket.impact.general.step.turn_max`,
 :func:`~fem_racket.impact.general.step.hermite_root` and
 :func:`~fem_racket.impact.general.step.cubic_root`. Imported only where a kernel runs (numba
-is heavy); compiled code is cached on disk.
+is heavy); compiled code is cached on disk. The functions a node calls (scalars and tuples only)
+are inlined into the march's node loop.
 """
 
 from __future__ import annotations
