@@ -23,6 +23,8 @@ Standard output closed (``fem-racket modes >&-``) is refused before any work (ex
 from __future__ import annotations
 
 import argparse
+import atexit
+import gc
 import importlib
 import logging
 import os
@@ -121,7 +123,11 @@ EXIT_FAULT, EXIT_INPUT, EXIT_SIGINT, EXIT_BROKEN_PIPE, EXIT_SIGTERM = 1, 2, 130,
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the CLI; returns the exit code (see the module docstring)."""
+    """Run the CLI; returns the exit code (see the module docstring). Run as the command
+    (``argv`` None: the console script, ``python -m fem_racket``), its process ends without
+    the collector's passes over every object (:func:`_end_lightly`)."""
+    if argv is None:
+        atexit.register(_end_lightly)
     pin_blas_threads()
     if sys.stdout is None:  # started with stdout closed: Python has no stream for it
         print(
@@ -149,6 +155,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_FAULT
     finally:
         sys.stdout = stream
+
+
+def _end_lightly() -> None:
+    """At the command's exit: collect the garbage left once, then freeze every object for the
+    garbage collector. Python's teardown clears the modules as before (atexit handlers, files
+    closed and flushed), but its repeated full collections no longer walk numba's and scipy's
+    objects (after a law sweep, measured at load 6-7: 0.23-0.25 s CPU, 0.02 s frozen)."""
+    gc.collect()
+    gc.freeze()
 
 
 def _describe(exc: OSError) -> str:

@@ -231,8 +231,11 @@ class ImpactProblem:
         return isinstance(self.structure, ClampedHead)
 
     @property
-    def model(self) -> FrameModel:
-        """The frame model (of the held racket too)."""
+    def model(self) -> FrameModel | None:
+        """The frame model (of the held racket too); None on a clamped head, which has no frame
+        (its bed's modes are the solvers', :mod:`fem_racket.impact.clamped_solve`)."""
+        if self.clamped:
+            return None
         return self.structure.model if self.held else self.structure
 
     @property

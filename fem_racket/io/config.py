@@ -17,7 +17,7 @@ A run file has fixed *core* tables, each key with its unit in its name::
     [output]   out, overwrite
 
 and optional *command* tables (``[simulate]``, ``[modes]``, ``[sweep]``, ``[refine]``, ``[vtk]``
-for ``export-vtk``, ``[animate]``, ``[reproduce]``) whose keys are the long options of that
+for ``export-vtk``, ``[animate]``, ``[reproduce]`` ...) whose keys are the long options of that
 command (``--ei1-values`` -> ``ei1_values``); the command checks them when it reads the file (see
 :func:`fem_racket.cli.common.apply_config`). Every key is optional: a missing key keeps the
 built-in default. Unknown tables and keys are errors with a "did you mean"; a wrong type or an
@@ -26,274 +26,53 @@ e.g. ``run.toml: impact.speed_m_s = -3 m/s is not allowed: must be a finite numb
 
 Relative paths in the file (``frame.mesh``) are relative to the file's folder; ``output.out`` is
 relative to the working directory, like the command line's ``--out``.
+
+:func:`load_config` gives a :class:`RunConfig`: the checked file
+(:class:`~fem_racket.io.config_file.RunFile`) with a method per command that takes ``--config``
+(:class:`~fem_racket.io.config_commands.CommandMethods`).
 """
 
 from __future__ import annotations
 
-import math
 import os
-import tomllib
-from dataclasses import dataclass, field
-from pathlib import Path
+from dataclasses import dataclass
 from typing import Any
 
-from fem_racket.contact.linear import zeta_from_cor
+from fem_racket.io.config_commands import CommandMethods
 from fem_racket.io.config_example import example_config
-from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS, PRESETS, reject_unknown
-from fem_racket.validation import InputError, show
+from fem_racket.io.config_file import RunFile, load_run_file, parse_run_file, toml_value
 
 __all__ = [
     "RunConfig",
     "example_config",
     "load_config",
     "parse_config",
+    "toml_value",
 ]
 
 
 @dataclass(frozen=True)
-class RunConfig:
-    """A checked run configuration.
+class RunConfig(RunFile, CommandMethods):
+    """A checked run configuration (:class:`~fem_racket.io.config_file.RunFile`: ``values``,
+    ``tables``, ``source``) with a method per command that takes ``--config``:
+    ``load_config(f).simulate()`` is ``fem-racket simulate --config f``, likewise ``sweep``,
+    ``map``, ``refine``, ``export_vtk``, ``animate``, ``optimize``, ``sensitivity``, ``modes``,
+    ``fit``, ``customise``, ``closest``, ``compare`` and ``calibrate``
+    (:class:`~fem_racket.io.config_commands.CommandMethods`)."""
 
-    Attributes
-    ----------
-    values : dict
-        Core table -> key -> checked value (only the keys the file sets; segments as
-        :class:`~fem_racket.frame.segments.Segment` tuples, numbers as float).
-    tables : dict
-        Command table -> its raw key/value pairs (checked by the command that reads it).
-    source : Path or None
-        The file read, if any.
-    """
 
-    values: dict[str, dict[str, Any]]
-    tables: dict[str, dict[str, Any]] = field(default_factory=dict)
-    source: Path | None = None
-
-    def get(self, dotted: str, default: Any = None) -> Any:
-        """The checked value of ``"table.key"``, or ``default`` if the file does not set it."""
-        table, _, key = dotted.partition(".")
-        return self.values.get(table, {}).get(key, default)
-
-    def table(self, name: str) -> dict[str, Any]:
-        """A command table's raw key/value pairs ({} if absent)."""
-        return dict(self.tables.get(name, {}))
-
-    def defaults(self) -> dict[str, Any]:
-        """The core tables as argparse dests -> values (see :mod:`fem_racket.cli.common`).
-
-        ``segments`` (a tuple of :class:`Segment`) and ``mesh`` (a path) have no command-line
-        option of their own in every command; :func:`fem_racket.cli.common.build_model` reads them.
-        """
-        out: dict[str, Any] = {}
-        for table, keys in self.values.items():
-            for key, value in keys.items():
-                dest = CORE_KEYS[table][key].dest
-                if (table, key) == ("frame", "preset"):
-                    if "ei1_n_m2" in keys:
-                        continue
-                    value = PRESETS[value]
-                elif (table, key) == ("contact", "clamped_cor"):
-                    value = zeta_from_cor(value)
-                elif (table, key) == ("frame", "mesh"):
-                    value = str(self.resolve(value))
-                out[dest] = value
-        return out
-
-    def resolve(self, path: str | os.PathLike) -> Path:
-        """A path named in the file, relative to the file's folder."""
-        p = Path(path).expanduser()
-        if p.is_absolute() or self.source is None:
-            return p
-        return self.source.parent / p
-
-    def simulate_kwargs(self) -> dict[str, Any]:
-        """Keywords of :func:`fem_racket.simulate` the core tables set (no frame, swing, hand)."""
-        d = self.defaults()
-        names = ("position", "speed", "ball_mass", "kcb", "zeta", "elements", "solver")
-        names += ("separation", "basis", "modes", "rtol", "atol", "t_max")
-        out = {n: d[n] for n in names if n in d}
-        if "law" in d:
-            from fem_racket.contact.presets import get_law, law_parameters
-
-            out["law"] = get_law(d["law"], **law_parameters(d))
-        return out
-
-    def simulate(self, *, histories: bool | None = None) -> Any:
-        """The impact the file describes, every table applied: the result of
-        ``fem-racket simulate --config FILE`` (an ImpactResult, or a HeldRun with a ``[hand]``);
-        see :func:`fem_racket.io.config_run.simulate_file`."""
-        from fem_racket.io.config_run import simulate_file
-
-        return simulate_file(self, histories=histories)
-
-    def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
-        """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
-        ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_sweep.sweep_file`.
-        ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`)."""
-        from fem_racket.io.config_sweep import sweep_file
-
-        return sweep_file(self, backend=backend, workers=workers)
-
-    def map(self) -> list[Any]:
-        """The maps ``fem-racket map --config FILE`` computes (no file written): a RacketMap
-        per racket (a FaceMap with ``offsets``, a SpinMap with an oblique ball); see
-        :func:`fem_racket.io.config_studies.map_file`."""
-        from fem_racket.io.config_studies import map_file
-
-        return map_file(self)
-
-    def refine(self) -> dict[str, Any]:
-        """The refinement studies ``fem-racket refine --config FILE`` computes (no file
-        written): family -> RefinementStudy; see
-        :func:`fem_racket.io.config_studies.refine_file`."""
-        from fem_racket.io.config_studies import refine_file
-
-        return refine_file(self)
-
-    def export_vtk(self, out: str | os.PathLike | None = None) -> Path:
-        """Write the VTK series ``fem-racket export-vtk --config FILE`` writes (into ``out``,
-        else ``[vtk] out``); the ``.pvd`` path. See
-        :func:`fem_racket.io.config_drawings.vtk_file`."""
-        from fem_racket.io.config_drawings import vtk_file
-
-        return vtk_file(self, out)
-
-    def animate(self, out: str | os.PathLike | None = None) -> Path:
-        """Render the animation ``fem-racket animate --config FILE`` renders (to ``out``, else
-        ``[animate] out``); its path. See :func:`fem_racket.io.config_drawings.animate_file`."""
-        from fem_racket.io.config_drawings import animate_file
-
-        return animate_file(self, out)
-
-    def optimize(self, out: str | os.PathLike | None = None) -> Any:
-        """The optimisation ``fem-racket optimize --config FILE`` runs (files into ``out``,
-        else ``[design] out``, else output/design); see :func:`.config_design.optimize_file`."""
-        from fem_racket.io.config_design import optimize_file
-
-        return optimize_file(self, out)
-
-    def sensitivity(self, out: str | os.PathLike | None = None) -> Any:
-        """The Sobol indices of ``fem-racket sensitivity --config FILE`` (chart in ``out``)."""
-        from fem_racket.io.config_design import sensitivity_file
-
-        return sensitivity_file(self, out)
-
-    def frame(self) -> Any:
-        """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None
-        (the standard racket with ``ei1_n_m2``/``ei2_n_m2``/preset applied)."""
-        from fem_racket.frame.segments import Frame, standard_frame
-        from fem_racket.io.mesh_files import read_mesh
-
-        d = self.defaults()
-        if "mesh" in d:
-            return read_mesh(d["mesh"])
-        if "segments" in d:
-            return Frame(d["segments"])
-        if "ei1" in d or "ei2" in d:
-            return standard_frame(d.get("ei1", PRESETS["standard"]), d.get("ei2"))
-        return None
+def _config(checked: RunFile) -> RunConfig:
+    return RunConfig(checked.values, checked.tables, checked.source)
 
 
 def parse_config(
     text: str, source: str | os.PathLike | None = None, *, command_tables: Any = None
 ) -> RunConfig:
-    """Check the TOML ``text`` of a run file (``source`` names it in errors and anchors paths).
-
-    Parameters
-    ----------
-    command_tables : iterable of str, optional
-        Table names accepted besides the core ones; :data:`COMMAND_TABLES` values by default.
-    """
-    src = Path(source) if source is not None else None
-    label = f"{src}: " if src is not None else ""
-    known = set(COMMAND_TABLES.values() if command_tables is None else command_tables)
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{label}not valid TOML: {exc}") from None
-    try:
-        return _check(data, src, known)
-    except InputError as exc:
-        raise InputError(f"{label}{exc}") from None
+    """The :class:`RunConfig` of the TOML ``text`` of a run file, checked (``source`` names it
+    in errors and anchors paths); see :func:`~fem_racket.io.config_file.parse_run_file`."""
+    return _config(parse_run_file(text, source, command_tables=command_tables))
 
 
 def load_config(path: str | os.PathLike, *, command_tables: Any = None) -> RunConfig:
     """Read and check the run file ``path``; see :func:`parse_config`."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"config = '{p}' is not allowed: no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        why = getattr(exc, "strerror", None) or str(exc)
-        raise InputError(f"config = '{p}' cannot be read ({why}): must be a TOML file") from None
-    return parse_config(text, p, command_tables=command_tables)
-
-
-def _check(data: dict[str, Any], source: Path | None, known: set[str]) -> RunConfig:
-    allowed_tables = list(CORE_KEYS) + sorted(known)
-    reject_unknown(data, allowed_tables, "")
-    values: dict[str, dict[str, Any]] = {}
-    tables: dict[str, dict[str, Any]] = {}
-    for name, table in data.items():
-        if not isinstance(table, dict):
-            raise InputError(f"{name} = {show(table)} is not allowed: must be a table [{name}]")
-        if name not in CORE_KEYS:
-            tables[name] = table
-            continue
-        reject_unknown(table, CORE_KEYS[name], name)
-        values[name] = {k: CORE_KEYS[name][k].check(f"{name}.{k}", v) for k, v in table.items()}
-    _check_combinations(values)
-    cfg = RunConfig(values, tables, source)
-    mesh = cfg.get("frame.mesh")
-    if mesh is not None and not cfg.resolve(mesh).is_file():
-        raise InputError(
-            f"frame.mesh = '{mesh}' is not allowed: no such file ({cfg.resolve(mesh)}; "
-            "must be a mesh file, relative to the run file's folder)"
-        )
-    return cfg
-
-
-def _check_combinations(values: dict[str, dict[str, Any]]) -> None:
-    frame = values.get("frame", {})
-    sources = [k for k in ("segments", "mesh") if k in frame]
-    preset_like = [k for k in ("preset", "ei1_n_m2", "ei2_n_m2") if k in frame]
-    if len(sources) > 1 or (sources and preset_like):
-        given = ", ".join(f"frame.{k}" for k in sources + preset_like)
-        raise InputError(
-            f"{given} cannot be combined: describe the frame by one of preset/ei1_n_m2/ei2_n_m2, "
-            "segments or mesh"
-        )
-    if "mesh" in frame and "elements" in frame:  # as --mesh with --elements on the command line
-        raise InputError(
-            f"frame.elements = {frame['elements']} is not allowed with frame.mesh: the mesh file "
-            "gives the cells and their EI and rhoA; remove one of them"
-        )
-    if "segments" in frame and "elements" in frame and frame["elements"] < len(frame["segments"]):
-        raise InputError(
-            f"frame.elements = {frame['elements']} is not allowed: must be >= the number of "
-            f"segments ({len(frame['segments'])})"
-        )
-    contact = values.get("contact", {})
-    if "zeta" in contact and "clamped_cor" in contact:
-        raise InputError(
-            "contact.zeta and contact.clamped_cor cannot be combined: give one (zeta follows from "
-            "the clamped COR through eqs 1-4)"
-        )
-
-
-def _toml(value: Any) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, float):
-        return repr(value) if math.isfinite(value) else ("nan" if value != value else "inf")
-    if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_toml(v) for v in value) + "]"
-    if isinstance(value, str):
-        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    return str(value)
-
-
-def toml_value(value: Any) -> str:
-    """``value`` written as a TOML value (for examples and provenance)."""
-    return _toml(value)
+    return _config(load_run_file(path, command_tables=command_tables))

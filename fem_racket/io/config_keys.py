@@ -20,6 +20,7 @@ from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
 from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.io.config_arrays import table_array
 from fem_racket.io.config_lead import lead_tables
 from fem_racket.strings.bed import EDGES, parse_pattern
 from fem_racket.strings.materials import STRINGS
@@ -112,23 +113,15 @@ _SEGMENT_KEYS = {"length_m": "m", "ei_n_m2": "N m^2", "rhoa_kg_m": "kg/m"}
 
 
 def _segments(name: str, value: Any) -> tuple[Segment, ...]:
-    if not isinstance(value, list) or not value:
-        raise InputError(
-            f"{name} is not allowed: must be a non-empty array of tables "
-            "with length_m, ei_n_m2 and rhoa_kg_m"
-        )
     out = []
-    for i, item in enumerate(value):
-        where = f"{name}[{i}]"
-        if not isinstance(item, dict):
-            raise InputError(
-                f"{where} = {show(item)} is not allowed: must be a table "
-                "with length_m, ei_n_m2 and rhoa_kg_m"
-            )
-        reject_unknown(item, _SEGMENT_KEYS, where)
-        missing = [k for k in _SEGMENT_KEYS if k not in item]
-        if missing:
-            raise InputError(f"{where} is missing {', '.join(missing)} (each segment needs all 3)")
+    items = table_array(
+        name,
+        value,
+        list(_SEGMENT_KEYS),
+        lambda item, where: reject_unknown(item, _SEGMENT_KEYS, where),
+        "each segment needs all 3",
+    )
+    for where, item in items:
         vals = [_positive(u)(f"{where}.{k}", item[k]) for k, u in _SEGMENT_KEYS.items()]
         out.append(Segment(*vals))
     return tuple(out)

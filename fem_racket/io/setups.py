@@ -10,27 +10,28 @@ the command's, the same for all, so a run file may not set ``[impact]``, ``[hand
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import Lead, add_lead, parse_lead
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import standard_frame
-from fem_racket.io.config import load_config
+from fem_racket.io.config_file import load_run_file
 from fem_racket.io.config_keys import PRESETS
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.studies.compare import Setup
 from fem_racket.validation import InputError
 
-__all__ = ["read_setup"]
+__all__ = ["compare_play", "read_setup", "read_setups"]
 
 #: Run-file tables a set-up may hold (the racket, its strings and its ball).
 SETUP_TABLES = ("frame", "ball", "contact")
 
 
 def _from_run_file(path: Path, elements: int) -> tuple[Setup, list[Lead]]:
-    cfg = load_config(path)
+    cfg = load_run_file(path)
     extra = sorted(set(cfg.values) - set(SETUP_TABLES)) + sorted(cfg.tables)
     if extra:
         raise InputError(
@@ -65,3 +66,36 @@ def read_setup(text: str, *, elements: int = 20, leads: Sequence[Lead] = ()) -> 
     mesh = add_lead(mesh, all_leads, DEFAULT_HEAD.on_frame(mesh.length))
     name = setup.name + "".join(f"+{lead.label()}" for lead in [*leads, *more])
     return Setup(name, mesh, setup.ball_mass, setup.kcb, setup.zeta, setup.law, setup.elements)
+
+
+def read_setups(
+    texts: Sequence[str], *, elements: int = 20, leads: Sequence[Lead] = ()
+) -> list[Setup]:
+    """The set-ups ``texts`` name (:func:`read_setup`), named apart where two share a name."""
+    from fem_racket.studies.compare import unique_names
+
+    setups = [read_setup(s, elements=elements, leads=leads) for s in texts]
+    names = unique_names([s.name for s in setups])
+    return [
+        Setup(n, s.frame, s.ball_mass, s.kcb, s.zeta, s.law, s.elements)
+        for n, s in zip(names, setups, strict=True)
+    ]
+
+
+def compare_play(options: Mapping[str, Any]) -> Any:
+    """How ``fem-racket compare`` plays every set-up: the :class:`~fem_racket.studies.compare.Play`
+    of its options (argparse dests: ``speed`` [m/s], ``positions`` and ``offsets`` as text
+    grids, ``point`` [x/L], ``grip``, and the swing's ``racket_speed``, ``reference``,
+    ``pivot``)."""
+    from fem_racket.studies.compare import Play
+    from fem_racket.studies.grid import as_values
+
+    offsets = options["offsets"]
+    return Play(
+        speed=options["speed"],
+        positions=as_values("position", options["positions"]),
+        position=options["point"],
+        grip=options["grip"],
+        offsets=None if offsets is None else as_values("offset", offsets),
+        **{k: options[k] for k in ("racket_speed", "reference", "pivot")},
+    )

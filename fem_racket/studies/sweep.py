@@ -74,8 +74,8 @@ def _chunk_size(spec: SweepSpec, todo: int, workers: int) -> int:
 
 def _warm_up(spec: SweepSpec, chunk: np.ndarray) -> None:
     """Solve the cases ``chunk`` here and drop them, saying nothing: a forked pool's workers
-    then inherit the compiled kernels (numba's import, its target and cached code: ~0.7 s CPU
-    a process) and the frame's modes instead of each loading them. Every case is computed on
+    then inherit the compiled kernels (numba's import and cached code: ~0.3-0.5 s CPU a
+    process) and the frame's modes instead of each loading them. Every case is computed on
     its own, so the workers' results do not change."""
     previous = logging.root.manager.disable
     logging.disable(logging.CRITICAL)

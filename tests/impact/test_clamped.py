@@ -122,3 +122,18 @@ def test_what_a_clamped_head_refuses(bed):
         make_solver("exact").solve(_problem(bed, 20.0, law=get_law("hysteretic")))
     assert repr(p) == "ImpactProblem(clamped head (rigid support); 20 m/s; law linear (paper))"
     assert "clamped head, strings 16x19 at 246 N" in repr(_problem(bed, 20.0))
+
+
+def test_a_clamped_head_has_no_frame_model(bed, standard_model):
+    # problem.model is the frame struck (held too); a clamped head has none: None, not the head
+    from fem_racket.frame.hand import GRIPS
+
+    assert _problem(RIGID, 20.0).model is None and _problem(bed, 20.0).model is None
+    assert ImpactProblem(standard_model).model is standard_model
+    held = ImpactProblem.build(standard_model, hand=GRIPS["firm"])
+    assert held.held and held.model is standard_model
+    # what reads a problem's model refuses the head as it refuses any non-frame
+    from fem_racket.impact.problem_batch import ProblemBatch
+
+    with pytest.raises(InputError, match="models is not allowed: must be one or more FrameModels"):
+        ProblemBatch.of(_problem(RIGID, 20.0))

@@ -1,6 +1,11 @@
 """numba's cache is dropped when any kernel file of a room changed (numba tracks a function's
 own file only): :func:`fem_racket.impact.kernel_cache.guard`."""
 
+import json
+import os
+import subprocess
+import sys
+
 from fem_racket.impact import kernel_cache
 from fem_racket.impact.kernel_cache import guard
 
@@ -39,3 +44,69 @@ def test_once_per_process(tmp_path, monkeypatch):
     monkeypatch.setattr(kernel_cache, "_CHECKED", {tmp_path})
     assert not guard(tmp_path, ("a", "b"))  # already checked in this process
     assert all(p.exists() for p in cached)
+
+
+# A sweep of each room in a new process: the linear engine (exact) and a law's batch (general).
+_CHILD = """
+import json, sys
+from fem_racket.impact import kernel_cache
+if sys.argv[1] == "numba":
+    kernel_cache._LIGHT["on"] = True  # never replaced: numba's own loads
+from fem_racket.studies.sweep import sweep_result
+runs = [sweep_result(position=[0.6, 0.8], speed=[20.0, 30.0], backend="serial")]
+linalg = "scipy.linalg" in sys.modules  # the engine's cached kernels name no numba.np.arraymath
+runs.append(sweep_result(law="hunt-crossley", position=[0.6, 0.8], speed=30.0, backend="serial"))
+print(json.dumps({
+    "values": [[float(x).hex() for x in run.values.ravel()] for run in runs],
+    "registries": "numba.np.polynomial.polynomial_core" in sys.modules,
+    "linalg": linalg,
+}))
+"""
+
+# A function of another package, cached in NUMBA_CACHE_DIR: compiled, then loaded after guard().
+_OTHER = """
+import json, sys
+import numpy as np
+from numba import njit
+from fem_racket.impact.kernel_cache import light_loads
+
+@njit(cache=True)
+def total(x):
+    return np.sum(x * x)
+
+if sys.argv[1] == "load":
+    assert light_loads()
+print(json.dumps({
+    "value": total(np.arange(4.0)),
+    "hits": sum(total.stats.cache_hits.values()),
+    "registries": "numba.np.polynomial.polynomial_core" in sys.modules,
+}))
+"""
+
+
+def _run(*args: str, env: dict | None = None) -> dict:
+    """What the child ``python ARGS`` prints (JSON), the test's packages on its path."""
+    env = dict(os.environ if env is None else env, PYTHONPATH=os.pathsep.join(sys.path))
+    done = subprocess.run([sys.executable, *args], capture_output=True, text=True, env=env)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def test_cached_kernels_load_without_the_compile_registries():
+    """The same answers, bit for bit, whether numba refreshes its registries before loading a
+    cached kernel or only starts its runtime (which leaves its registries unloaded)."""
+    numba = _run("-c", _CHILD, "numba")  # first: compiles and caches if the cache is empty
+    light = _run("-c", _CHILD, "light")  # loads what the first cached
+    assert light["values"] == numba["values"]
+    assert numba["registries"] and not light["registries"]
+    assert not light["linalg"]  # a linear sweep loads no scipy.linalg (kernel_events._argmax)
+
+
+def test_other_functions_load_as_numba_loads_them(tmp_path):
+    """A cached function that is not one of this package's kernels loads after numba's own
+    refresh (its registries loaded), and gives its answer."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"))
+    script = tmp_path / "other.py"  # numba caches the functions of files, not of -c
+    script.write_text(_OTHER)
+    assert _run(str(script), "compile", env=env)["hits"] == 0
+    assert _run(str(script), "load", env=env) == {"value": 14.0, "hits": 1, "registries": True}

@@ -5,10 +5,10 @@ computes, for a run file with every table the command reads."""
 from __future__ import annotations
 
 import json
-import math
 
 import numpy as np
 import pytest
+from runfile_helpers import REL, py_json, same
 
 from fem_racket import load_config
 from fem_racket.cli import build_parser, main
@@ -21,34 +21,9 @@ def cwd(tmp_path, monkeypatch):
     return tmp_path
 
 
-#: The CLI's JSON numbers are printed to 15 significant digits (fem_racket.cli.common.print_json)
-REL = 1e-12
-
-
-def _same(a, b, path=""):
-    if isinstance(a, dict):
-        assert set(a) == set(b), path
-        for k in a:
-            _same(a[k], b[k], f"{path}.{k}")
-    elif isinstance(a, list):
-        assert len(a) == len(b), path
-        for i, (x, y) in enumerate(zip(a, b, strict=True)):
-            _same(x, y, f"{path}[{i}]")
-    elif isinstance(a, float) and isinstance(b, float) and math.isfinite(a):
-        assert a == pytest.approx(b, rel=REL, abs=1e-300), path
-    else:
-        assert a == b, path
-
-
 def _cli_json(capsys, *argv):
     assert main([*argv, "--json"]) == 0
     return json.loads(capsys.readouterr().out)
-
-
-def _py_json(obj):
-    from fem_racket.outputs.jsonable import json_ready
-
-    return json.loads(json.dumps(json_ready(obj)))
 
 
 @pytest.mark.parametrize(
@@ -89,7 +64,7 @@ def test_map_equals_the_command(cwd, capsys):
     )
     maps = load_config(cwd / "run.toml").map()
     cli = _cli_json(capsys, "map", "--config", "run.toml", "--no-files")
-    _same(_py_json({"rackets": [m.summary() for m in maps]}), cli)
+    same(py_json({"rackets": [m.summary() for m in maps]}), cli)
 
 
 def test_spin_map_equals_the_command(cwd, capsys):
@@ -100,7 +75,7 @@ def test_spin_map_equals_the_command(cwd, capsys):
     (cwd / "run.toml").write_text(text)
     (m,) = load_config(cwd / "run.toml").map()
     cli = _cli_json(capsys, "map", "--config", "run.toml", "--no-files")
-    _same(_py_json(m.summary()), cli)
+    same(py_json(m.summary()), cli)
 
 
 def test_refine_equals_the_command(cwd, capsys):
@@ -122,7 +97,7 @@ def test_simulate_oblique_table_equals_the_command(cwd, capsys):
     (cwd / "run.toml").write_text(text)
     r = load_config(cwd / "run.toml").simulate()
     cli = _cli_json(capsys, "simulate", "--config", "run.toml")
-    py = _py_json(r.summary())
+    py = py_json(r.summary())
     for key in (
         "spin_out_rpm",
         "angle_out_deg",
@@ -215,7 +190,7 @@ def test_simulate_oblique_table_with_a_hand_equals_the_command(cwd, capsys):
     (cwd / "run.toml").write_text(text)
     cli = _cli_json(capsys, "simulate", "--config", "run.toml")
     result = load_config(cwd / "run.toml").simulate()
-    assert result.held and _py_json(result.summary()) == cli
+    assert result.held and py_json(result.summary()) == cli
     assert cli["shock_window_s"] == 0.02 and cli["hand"]["grip"] == "firm"
     options = _cli_json(capsys, "simulate", "--grip", "firm", "--shock-window", "0.02",
                         "--angle", "30", "--spin", "1500", "--elements", "10", "--position",
@@ -243,4 +218,4 @@ def test_clamped_oblique_table_refuses_alike_what_a_clamped_head_cannot_take(cwd
         "[ball]\nmass_kg = 0.056\n[oblique]\nangle_deg = 30\nclamped = true\n"
     )
     cli = _cli_json(capsys, "simulate", "--config", "run.toml")
-    assert _py_json(load_config(cwd / "run.toml").simulate().summary()) == cli
+    assert py_json(load_config(cwd / "run.toml").simulate().summary()) == cli

@@ -6,22 +6,13 @@ does not draw is refused alike, from the file as from the command line."""
 from __future__ import annotations
 
 import pytest
+from runfile_helpers import BED as STRUNG
 
 from fem_racket import load_config
 from fem_racket.cli import main
 from fem_racket.validation import InputError
 
-BED = """
-[frame]
-elements = 8
-[strings]
-tension_n = 270.0
-pattern = "18x20"
-[impact]
-position_x_over_l = 0.76
-offset_m = 0.02
-speed_m_s = 25.0
-"""
+BED = STRUNG + "offset_m = 0.02\n"  # off the axis
 
 
 @pytest.fixture

@@ -84,3 +84,36 @@ def test_side_keys_in_python_are_the_command(capsys, tmp_path):
     path.write_text(SIDE.replace("15.0", "90.0"))
     with pytest.raises(InputError, match=r"oblique\.side_angle_deg = 90"):
         load_config(path)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("[frame]\nsegments = []\n", "frame.segments is not allowed: must be a non-empty array "
+         "of tables with length_m, ei_n_m2 and rhoa_kg_m"),
+        ("[frame]\nsegments = [3]\n", "frame.segments[0] = 3 is not allowed: must be a table "
+         "with length_m, ei_n_m2 and rhoa_kg_m"),
+        ("[frame]\nsegments = [{ length_m = 0.2, ei_n_m2 = 150.0, rhoa_kg_m = 0.7, rhoa = 1 }]\n",
+         "frame.segments[0].rhoa is not a known key: did you mean 'rhoa_kg_m'?"),
+        ("[frame]\nsegments = [{ length_m = 0.2 }]\n",
+         "frame.segments[0] is missing ei_n_m2, rhoa_kg_m (each segment needs all 3)"),
+        ("[frame]\nlead = []\n",
+         "frame.lead is not allowed: must be a non-empty array of tables with place and mass_g"),
+        ("[frame]\nlead = [3]\n",
+         "frame.lead[0] = 3 is not allowed: must be a table with place and mass_g"),
+        ('[[frame.lead]]\nplace = "12"\nmass_gram = 3\n', "frame.lead[0].mass_gram is not a "
+         "known key: did you mean 'mass_g'? allowed: place, mass_g"),
+        ('[[frame.lead]]\nplace = "12"\n',
+         "frame.lead[0] is missing mass_g (each lead needs both)"),
+    ],
+)  # fmt: skip
+def test_arrays_of_tables_are_refused_item_by_item(tmp_path, capsys, text, message):
+    # [[frame.segments]] and [[frame.lead]]: one line naming the item and what it lacks, from
+    # Python and from the command line alike
+    path = tmp_path / "run.toml"
+    path.write_text(text)
+    with pytest.raises(InputError) as err:
+        load_config(path)
+    assert str(err.value) == f"{path}: {message}"
+    assert main(["modes", "--config", str(path)]) == 2
+    assert capsys.readouterr().err.count("\n") == 1

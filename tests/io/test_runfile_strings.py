@@ -6,21 +6,11 @@ import json
 
 import pytest
 from clirun import run_json
+from runfile_helpers import BED
 
 from fem_racket import load_config
 from fem_racket.cli import main
 from fem_racket.validation import InputError
-
-BED = """
-[frame]
-elements = 8
-[strings]
-tension_n = 270.0
-pattern = "18x20"
-[impact]
-position_x_over_l = 0.76
-speed_m_s = 25.0
-"""
 
 
 def _same(python: dict, cli: dict) -> None:

@@ -1,10 +1,12 @@
-"""Run files = CLI, walked (issue 21.7): for every command with a Python method, every key of
-the core tables alone, every pair of them (``-m slow``) and the combinations that meet in one
+"""Run files = CLI, walked (issue 21.7): for every command that takes ``--config`` (its Python
+method, or for ``reproduce`` :func:`fem_racket.paper.config_reproduce.reproduce_file`), every key
+of the core tables alone, every pair of them (``-m slow``) and the combinations that meet in one
 run (a hand with an oblique ball, a bed off the axis, a clamped head with a frame ...), the
 method ``load_config(f).<command>()`` refuses exactly the files ``fem-racket <command> --config
-f`` refuses, and runs the others. Both are run to the end of their checks only
-(:func:`fem_racket.validation.checks_only`, as ``config --check`` runs the command), so the walk
-is fast; the numbers of the runs are compared in ``test_config_run.py``,
+f`` refuses, and runs the others (with the command's own table :data:`BASE` where it needs one
+to run, and the operands a run file cannot name, :data:`OPERANDS`). Both are run to the end of
+their checks only (:func:`fem_racket.validation.checks_only`, as ``config --check`` runs the
+command), so the walk is fast; the numbers of the runs are compared in ``test_config_run.py``,
 ``test_config_commands.py``, ``test_runfile_*.py``."""
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ import pytest
 
 from fem_racket import load_config
 from fem_racket.cli.commands.config import _dry_run
+from fem_racket.paper.config_reproduce import reproduce_file
 from fem_racket.validation import ChecksPassed, InputError, checks_only
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -73,6 +76,11 @@ TABLE_KEYS = {
     "vtk.field": '[vtk]\nfield = "slope"\n',
     "animate.subdivide": "[animate]\nsubdivide = 2\n",
     "map.power_fraction": "[map]\npower_fraction = 0.8\n",
+    "modes.count": "[modes]\ncount = 2\n",
+    "customise.maps": '[customise]\nmaps = "maps.nc"\n',
+    "compare.offsets": '[compare]\noffsets = "-0.02:0.02:3"\n',
+    "calibrate.family": '[calibrate]\nfamily = "hunt-crossley"\n',
+    "reproduce.quick": "[reproduce]\nquick = true\n",
 }
 #: Keys at simulate's defaults: they change nothing, on the command line as in Python.
 AT_DEFAULT = {
@@ -103,6 +111,20 @@ TRIPLES = [
     ("oblique.angle", "impact.swing", "map.power_fraction"),
     ("oblique.spin", "contact.law", "solver.modes"),
 ]
+#: Command -> its own table, which it needs to run (the targets of fit, customise, closest).
+BASE = {
+    "fit": "fit.spec",
+    "customise": "customise.target",
+    "closest": "closest.target",
+}
+BASES = {
+    "fit.spec": "[fit]\nlength = 0.685\nmass = 0.318\nbalance = 0.32\nswing_weight = 316\n",
+    "customise.target": "[customise]\nswing_weight = 330\n",
+    "closest.target": '[closest]\nswing_weight = 330\nbalance = "0.31:0.33"\n',
+}
+#: What a run file cannot name, given to the command and its method alike.
+CSV = str(ROOT / "meshes" / "rackets.csv")
+OPERANDS = {"closest": (CSV,), "compare": ("standard", "rigid")}
 #: Command -> its Python method.
 METHODS = {
     "simulate": lambda c: c.simulate(),
@@ -113,6 +135,13 @@ METHODS = {
     "refine": lambda c: c.refine(),
     "optimize": lambda c: c.optimize("py_design"),
     "sensitivity": lambda c: c.sensitivity("py_sens.png"),
+    "modes": lambda c: c.modes(),
+    "fit": lambda c: c.fit("py.vtu"),
+    "customise": lambda c: c.customise("py.vtu"),
+    "closest": lambda c: c.closest(CSV),
+    "compare": lambda c: c.compare(list(OPERANDS["compare"]), "py.png"),
+    "calibrate": lambda c: c.calibrate("py_calibration"),
+    "reproduce": lambda c: reproduce_file(c, "py_paper", "py.md"),
 }
 #: Extras a command needs (skipped without them).
 NEEDS = {"export-vtk": "pyvista", "animate": "imageio", "sensitivity": "SALib"}
@@ -120,7 +149,7 @@ NEEDS = {"export-vtk": "pyvista", "animate": "imageio", "sensitivity": "SALib"}
 
 def merged(names) -> str:
     """The run file of the snippets ``names``, their tables merged."""
-    snippets = {**KEYS, **TABLE_KEYS, **AT_DEFAULT}
+    snippets = {**KEYS, **TABLE_KEYS, **AT_DEFAULT, **BASES}
     tables: dict[str, list[str]] = {}
     for name in names:
         head = None
@@ -137,7 +166,7 @@ def merged(names) -> str:
 def verdicts(command: str, path: Path) -> tuple[str, str]:
     """("ok" | "refused: ...") of the command and of its Python method, checks only."""
     try:
-        _dry_run(command, str(path))
+        _dry_run(command, str(path), OPERANDS.get(command, ()))
         cli = "ok"
     except InputError as exc:
         cli = f"refused: {exc}"
@@ -160,6 +189,7 @@ def walk(command: str, folder: Path, combos) -> list[str]:
     path = folder / "run.toml"
     out = []
     for names in combos:
+        names = (*names, BASE[command]) if command in BASE else names
         path.write_text(merged(names))
         try:
             load_config(path)

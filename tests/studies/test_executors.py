@@ -9,6 +9,8 @@ what brings them to one.
 from __future__ import annotations
 
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -106,3 +108,25 @@ def test_prepare_runs_once_in_the_caller_before_a_forked_pool(monkeypatch):
     run_chunks(_prepared_in, chunks, lambda c, r: seen.append(r), backend="serial",
                progress=False, prepare=_prepare)  # fmt: skip
     assert _PREPARED == [] and np.all(np.concatenate(seen) == -1)  # serial: not needed
+
+
+_QUIET = """
+import sys
+import numpy as np
+from fem_racket.studies.executors import run_chunks
+seen = []
+run_chunks(lambda c: c * 2.0, [np.arange(3.0)], lambda c, r: seen.append(r), backend="serial",
+           progress=False)
+assert np.array_equal(seen[0], [0.0, 2.0, 4.0])
+print("tqdm" in sys.modules)
+"""
+
+
+def test_no_progress_bar_is_made_when_none_is_shown():
+    """Without a bar (--quiet, not a terminal) tqdm is not imported: a disabled tqdm bar still
+    cost its import and a multiprocessing lock."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    done = subprocess.run(
+        [sys.executable, "-c", _QUIET], capture_output=True, text=True, check=True, env=env
+    )
+    assert done.stdout.strip() == "False"

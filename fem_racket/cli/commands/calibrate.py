@@ -10,7 +10,6 @@ and force histories on a rigid support at each target speed).
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from fem_racket.cli.common import (
     add_command,
@@ -21,14 +20,13 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
-from fem_racket.outputs import Target, atomic_outputs, check_targets, json_ready, provenance
-from fem_racket.studies.calibrate import (
-    FAMILIES,
-    TARGET_SETS,
-    calibrate,
-    clamped_histories,
-    run_file_table,
+from fem_racket.io.calibration_files import (
+    calibration_files,
+    calibration_summary,
+    write_calibration,
 )
+from fem_racket.outputs import Target, check_targets
+from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS, calibrate
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -62,34 +60,15 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Fit, print the table, write the files."""
-    stem = f"{args.family}-{args.targets}"
     files = []
     if args.out:  # the three files are checked now and written as one set
-        files = [Path(args.out) / f"{stem}{s}" for s in (".toml", ".json", ".png")]
+        files = calibration_files(args.out, args.family, args.targets)
         check_targets([Target(f) for f in files], overwrite=args.overwrite)
     cal = calibrate(args.family, args.targets, ball_mass=args.ball_mass)
-    summary = {
-        "family": cal.family,
-        "targets": cal.target_set,
-        "meets_targets": cal.meets_targets,
-        "law": cal.law.describe(),
-        "fit": cal.table(),
-    }
+    summary = calibration_summary(cal)
     if args.out:
-        import json
-
-        from fem_racket.io.law_plots import plot_law_loops
-
-        meta = provenance(run_parameters(args))
-        speeds = sorted({t.condition for t in cal.targets if t.quantity != "static_deflection"})
-        histories = clamped_histories(cal.law, speeds, args.ball_mass)
-        targets = [Target(f) for f in files]
-        with atomic_outputs(targets, overwrite=args.overwrite) as (toml, js, png):
-            toml.write_text(run_file_table(cal.law), encoding="utf-8")
-            data = json_ready({"provenance": meta, **summary})
-            js.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
-            title = f"{cal.family} fitted to {cal.target_set} (rigid support)"
-            plot_law_loops(histories, speeds, png, title=title, meta=meta, overwrite=True)
+        parameters, overwrite = run_parameters(args), args.overwrite
+        write_calibration(cal, files, parameters, ball_mass=args.ball_mass, overwrite=overwrite)
     if args.json:
         print_json(summary)
         return 0

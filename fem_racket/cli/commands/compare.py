@@ -25,7 +25,6 @@ from fem_racket.cli.common import (
     print_json,
     print_written,
     run_parameters,
-    swing_kwargs,
 )
 from fem_racket.cli.options.lead import add_lead_option, leads_of
 from fem_racket.cli.options.output import add_overwrite_json
@@ -100,9 +99,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     """Read the set-ups, compare, write the files and print."""
     from fem_racket.io.compare_files import check_compare_output, table_rows, write_compare
-    from fem_racket.io.setups import read_setup
-    from fem_racket.studies.compare import Play, Setup, compare, differences, unique_names
-    from fem_racket.studies.grid import as_values
+    from fem_racket.io.setups import compare_play, read_setups
+    from fem_racket.studies.compare import compare, differences
     from fem_racket.validation import InputError, work_begins
 
     if len(args.rackets) < 2:
@@ -111,20 +109,9 @@ def run(args: argparse.Namespace) -> int:
     outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
     for path in outs:
         check_compare_output(path, overwrite=args.overwrite)
-    setups = [read_setup(s, elements=args.elements, leads=leads_of(args)) for s in args.rackets]
-    names = unique_names([s.name for s in setups])
-    setups = [
-        Setup(n, s.frame, s.ball_mass, s.kcb, s.zeta, s.law, s.elements)
-        for n, s in zip(names, setups, strict=True)
-    ]
-    play = Play(
-        speed=args.speed,
-        positions=as_values("position", args.positions),
-        position=args.point,
-        grip=args.grip,
-        offsets=None if args.offsets is None else as_values("offset", args.offsets),
-        **swing_kwargs(args),
-    )
+    setups = read_setups(args.rackets, elements=args.elements, leads=leads_of(args))
+    names = [s.name for s in setups]
+    play = compare_play(vars(args))
     work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)

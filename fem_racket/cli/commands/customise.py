@@ -14,7 +14,6 @@ the places can reach.
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 from fem_racket.cli.common import (
@@ -30,11 +29,10 @@ from fem_racket.cli.common import (
     significant,
     swing_kwargs,
 )
-from fem_racket.cli.options.output import add_overwrite_json, mesh_files, write_mesh_files
+from fem_racket.cli.options.output import add_overwrite_json, mesh_files
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
-    target_summary,
     targets_from_args,
 )
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
@@ -78,10 +76,9 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.frame.catalogue import catalogue
-    from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
-    from fem_racket.outputs import check_output_path, provenance
-    from fem_racket.studies.customise import customise
-    from fem_racket.studies.racket_map import racket_map
+    from fem_racket.io.map_files import check_map_outputs, map_targets
+    from fem_racket.io.racket_files import customise_files
+    from fem_racket.outputs import check_output_path
     from fem_racket.validation import work_begins
 
     places = places_of(args)
@@ -95,19 +92,9 @@ def run(args: argparse.Namespace) -> int:
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
     work_begins()
-    result = customise(mesh, targets, places)
-    maps = [
-        racket_map(m, name=name, speed=args.speed, **swing_kwargs(args))
-        for name, m in (("before", mesh), ("customised", result.mesh))
-    ]
-    summary = result.summary()
-    summary["targets"] = target_summary(targets)
-    summary["maps"] = {m.name: m.summary(curves=False) for m in maps}
-    summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
-    meta = provenance(run_parameters(args))
-    text = json.dumps({**meta, **summary}, indent=2, default=str)
-    write_mesh_files(result.mesh, out, text + "\n", overwrite=args.overwrite)
-    write_maps(maps, [maps_path], overwrite=args.overwrite, parameters=run_parameters(args))
+    play = {"speed": args.speed, **swing_kwargs(args)}
+    files_out, parameters = (out, maps_path), run_parameters(args)
+    _, summary = customise_files(mesh, targets, places, play, files_out, parameters, args.overwrite)
     if args.json:
         print_json(summary)
         return 0

@@ -13,7 +13,6 @@ weight exact, f1 by scaling EI); every ``--mesh`` option loads the file, and its
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 from fem_racket.cli.common import (
@@ -24,18 +23,11 @@ from fem_racket.cli.common import (
     significant,
 )
 from fem_racket.cli.options.lists import add_options
-from fem_racket.cli.options.output import (
-    add_overwrite_json,
-    mesh_files,
-    print_written,
-    write_mesh_files,
-)
+from fem_racket.cli.options.output import add_overwrite_json, mesh_files, print_written
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.frame.mesh import frame_mesh
-from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2, fit_racket, racket_spec
-from fem_racket.frame.torsion import TorsionModel
-from fem_racket.frame.twist_fit import fit_torsion
-from fem_racket.outputs import check_output_path, json_ready, provenance
+from fem_racket.frame.specs import DEFAULT_ELEMENTS
+from fem_racket.io.racket_files import FitSpec, fit_files
+from fem_racket.outputs import check_output_path
 from fem_racket.validation import InputError, check_integer, work_begins
 
 #: Where the mesh goes unless --out is given.
@@ -103,43 +95,9 @@ def run(args: argparse.Namespace) -> int:
     for f in files:
         check_output_path(f, overwrite=overwrite)
     work_begins()
-    frame = fit_racket(
-        args.length,
-        args.mass,
-        args.balance,
-        args.swing_weight * KG_CM2,
-        args.f1,
-        elements=elements,
-    )
-    if args.torsion_frequency is not None and args.twist_weight is None:
-        raise InputError(
-            f"torsion_frequency = {args.torsion_frequency!r} Hz is not allowed without "
-            "--twist-weight: the torsion profile is scaled to a twistweight"
-        )
-    if args.twist_weight is not None:
-        frame = fit_torsion(frame, args.twist_weight * KG_CM2, args.torsion_frequency)
-    mesh = frame_mesh(frame, elements)
-    got = racket_spec(mesh).as_dict()
-    target = {
-        "length_m": args.length,
-        "mass_kg": args.mass,
-        "balance_m": args.balance,
-        "swing_weight_kg_cm2": args.swing_weight,
-        "f1_hz": args.f1,
-    }
-    if args.twist_weight is not None:  # the torsion of the mesh written
-        tors = TorsionModel(mesh)
-        target["twist_weight_kg_cm2"] = args.twist_weight
-        target["torsion_f1_hz"] = args.torsion_frequency
-        got["twist_weight_kg_cm2"] = tors.polar_moment / KG_CM2
-        got["torsion_f1_hz"] = float(tors.modes(1).frequencies[0])
-    segments = [
-        {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
-    ]
-    summary = {"target": target, "fitted": got, "segments": segments, "mesh": str(out)}
-    meta = provenance(run_parameters(args))
-    text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
-    write_mesh_files(mesh, out, text + "\n", overwrite=overwrite)
+    spec = FitSpec(**{name: getattr(args, name) for name, *_ in SPECIFICATION}, elements=elements)
+    _, summary = fit_files(spec, out, run_parameters(args), overwrite=overwrite)
+    target, got, segments = summary["target"], summary["fitted"], summary["segments"]
     if args.json:
         print_json(summary)
         return 0

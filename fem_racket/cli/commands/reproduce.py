@@ -18,9 +18,7 @@ import time
 from fem_racket.cli.common import add_command, add_config_option, run_parameters
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.cli.options.laws import add_law_options, law_from_args
-
-DEFAULT_OUT = "output/paper"
-DEFAULT_REPORT = "REPRODUCTION.md"
+from fem_racket.paper.config_reproduce import DEFAULT_OUT, DEFAULT_REPORT, destinations
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -96,9 +94,5 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _destinations(args: argparse.Namespace) -> tuple[str, str]:
-    """--out and --report, defaulted: the paper's folder and REPRODUCTION.md, or under --law a
-    folder of the law's own with its report inside."""
-    if args.law == "linear":
-        return args.out or DEFAULT_OUT, args.report or DEFAULT_REPORT
-    out = args.out or f"{DEFAULT_OUT}/{args.law}"
-    return out, args.report or f"{out}/{DEFAULT_REPORT}"
+    """--out and --report, defaulted (:func:`fem_racket.paper.config_reproduce.destinations`)."""
+    return destinations(args.law, args.out, args.report)

@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.text import significant
+from fem_racket.io.racket_files import mesh_files, write_mesh_files
 from fem_racket.outputs.jsonable import json_ready
 
 __all__ = [
@@ -147,25 +148,6 @@ def write_text(path: str | Path, text: str, *, overwrite: bool = False) -> Path:
 def write_json(path: str | Path, data: Any, *, overwrite: bool = False) -> Path:
     """Write ``data`` as JSON to ``path`` atomically (NaN and inf become null)."""
     return write_text(path, json.dumps(json_ready(data), indent=2) + "\n", overwrite=overwrite)
-
-
-def mesh_files(out: Path) -> list[Path]:
-    """A racket written as a mesh file (fit, customise): the mesh ``out`` and its JSON sidecar,
-    to check before the work and write as one set with :func:`write_mesh_files`."""
-    from fem_racket.outputs import sidecar_path
-
-    return [out, sidecar_path(out)]
-
-
-def write_mesh_files(mesh: Any, out: Path, sidecar: str, *, overwrite: bool = False) -> None:
-    """Write ``mesh`` (a FrameMesh) to ``out`` and the text ``sidecar`` (its JSON) beside it,
-    as one set: both or, on any fault, neither."""
-    from fem_racket.io.mesh_files import write_mesh
-    from fem_racket.outputs import atomic_outputs
-
-    with atomic_outputs(mesh_files(out), overwrite=overwrite) as (tmp, side):
-        write_mesh(mesh, tmp, overwrite=True)
-        side.write_text(sidecar, encoding="utf-8")
 
 
 def write_result_files(

@@ -4,8 +4,9 @@ The kernel modules (:mod:`~fem_racket.impact.general.kernel_laws`,
 :mod:`~fem_racket.impact.general.kernel_modes`, :mod:`~fem_racket.impact.general.kernel_node`,
 :mod:`~fem_racket.impact.general.kernel`) take their decorator from here: numba's ``njit`` once
 the process compiles them, the function itself until then. Loading numba and its cached code costs
-~0.5 s CPU per process (numba's import with its scipy.linalg check, its target registries, the
-cache), ~5-10 times what one impact costs when interpreted (~40-100 ms). Interpreted, the kernels
+~0.3-0.5 s CPU per process (numba's import, the modules the cached code names, the cache:
+:mod:`fem_racket.impact.kernel_cache`), ~3-10 times what one impact costs when interpreted
+(~40-100 ms). Interpreted, the kernels
 do the same floating-point operations (integer powers, square roots and complex divisions are
 written out as numba computes them), so the answers are the same, bit for bit
 (``tests/impact/general/test_jit.py``). So

@@ -1,0 +1,165 @@
+"""A run file's racket commands in Python: :meth:`RunConfig.modes` = ``fem-racket modes
+--config``, :meth:`RunConfig.fit` = ``fit``, :meth:`RunConfig.customise` = ``customise`` and
+:meth:`RunConfig.closest` = ``closest``.
+
+Each takes from the core tables what its command has options for (``modes`` and ``customise``
+the frame with its lead, ``customise`` the ball's speed and the swing of its maps, ``fit`` and
+``customise`` ``output.overwrite``) and skips the other keys, as the command does; its own
+table (``[modes]``, ``[fit]``, ...) is read as the command reads it
+(:func:`fem_racket.io.config_tables.table_options`). Files are written only where the method is
+given ``out`` or the table names one (``[fit] out``, ``[customise] out``): the same files the
+command writes there, checked before the work as the command checks them.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from fem_racket.frame.clock import PLACES
+from fem_racket.frame.specs import DEFAULT_ELEMENTS
+from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.io.config_tables import Option, flag, integer, number, table_options, text
+from fem_racket.studies.target_values import RANKED, TARGETS, parse_target
+from fem_racket.validation import InputError, check_integer, show, work_begins
+
+__all__ = [
+    "CLOSEST_OPTIONS",
+    "CUSTOMISE_MAPS",
+    "CUSTOMISE_OPTIONS",
+    "FIT_OPTIONS",
+    "MODES_OPTIONS",
+    "closest_file",
+    "customise_file",
+    "fit_file",
+    "modes_file",
+]
+
+#: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
+RunConfig = Any
+#: The maps of ``customise`` unless ``[customise] maps`` says (the command's default).
+CUSTOMISE_MAPS = str(Path("output") / "customised_map.png")
+#: The swing and speed of customise's maps: argparse dest -> the command's default.
+_PLAY = {"speed": 20.0, "racket_speed": 0.0, "reference": DEFAULT_REFERENCE, "pivot": None}
+
+
+def _target(where: str, value: Any) -> Any:
+    """A target key: a value, ``"LOW:HIGH"`` or ``"keep"``, as ``--swing-weight`` takes it."""
+    if isinstance(value, (bool, list, dict)):
+        raise InputError(f"{where} = {show(value)} is not allowed: must be a value or LOW:HIGH")
+    try:
+        return parse_target(str(value))
+    except ValueError as exc:
+        raise InputError(f"{where} = {show(value)} is not allowed: {exc}") from None
+
+
+def _targets(ranked: bool) -> dict[str, tuple[Any, Option]]:
+    names = {**TARGETS, **(RANKED if ranked else {})}
+    return {**dict.fromkeys(names, (None, _target)), "places": (",".join(PLACES), text)}
+
+
+#: The options of each command's table: dest -> (default, conversion); the commands' defaults
+#: but ``out`` (no file unless given).
+_FILES = {"out": (None, text), "overwrite": (False, flag)}
+_SPEC = ("length", "mass", "balance", "swing_weight", "f1", "twist_weight", "torsion_frequency")
+MODES_OPTIONS: dict[str, tuple[Any, Option]] = {"count": (4, integer)}
+FIT_OPTIONS = {**dict.fromkeys(_SPEC, (None, number)), "elements": (DEFAULT_ELEMENTS, integer),
+               **_FILES}  # fmt: skip
+CUSTOMISE_OPTIONS = {**_targets(False), **_FILES, "maps": (CUSTOMISE_MAPS, text)}
+CLOSEST_OPTIONS = {**_targets(True), "count": (3, integer)}
+
+
+def _overwrite(cfg: RunConfig) -> dict[str, Any]:
+    d = cfg.defaults()
+    return {"overwrite": d["overwrite"]} if "overwrite" in d else {}
+
+
+def modes_file(cfg: RunConfig) -> Any:
+    """The free-free modes ``fem-racket modes --config`` computes: the FreeModes of the
+    file's frame, ``[modes] count`` flexible ones (4 by default)."""
+    from fem_racket.frame.model import FrameModel
+    from fem_racket.io.config_run import file_frame
+
+    o = table_options(cfg, "modes", MODES_OPTIONS)
+    if o["count"] < 1:
+        raise InputError(f"count = {o['count']} is not allowed: must be an integer >= 1")
+    model = FrameModel.build(file_frame(cfg), cfg.defaults().get("elements", 20))
+    work_begins()
+    return model.modes(o["count"])
+
+
+def fit_file(cfg: RunConfig, out: Any = None) -> Any:
+    """The frame ``fem-racket fit --config`` fits to ``[fit]``'s catalogue numbers (a Frame:
+    three segments); with ``out`` (else ``[fit] out``) the mesh file and its sidecar written
+    there, as the command writes them."""
+    from fem_racket.io.racket_files import FitSpec, fit_files, fit_frame, mesh_files
+    from fem_racket.outputs import check_output_path
+
+    o = table_options(cfg, "fit", FIT_OPTIONS, _overwrite(cfg))
+    elements = check_integer("elements", o["elements"], minimum=3)
+    for name in ("length", "mass", "balance", "swing_weight"):
+        if o[name] is None:
+            flag_name = "--" + name.replace("_", "-")
+            raise InputError(
+                f"{name} is required: give {flag_name} (or {name} in the run file's [fit])"
+            )
+    fit = FitSpec(**{k: o[k] for k in _SPEC}, elements=elements)
+    out = out or o["out"]
+    if out is None:
+        work_begins()
+        return fit_frame(fit)[0]
+    for f in mesh_files(Path(out)):
+        check_output_path(f, overwrite=o["overwrite"])
+    work_begins()
+    return fit_files(fit, Path(out), {"config": str(cfg.source), **o}, overwrite=o["overwrite"])[0]
+
+
+def customise_file(cfg: RunConfig, out: Any = None) -> Any:
+    """The least lead ``fem-racket customise --config`` finds for the file's frame: the
+    Customisation of :func:`fem_racket.studies.customise.customise`; with ``out`` (else
+    ``[customise] out``) the customised racket's mesh file, its sidecar and the maps before and
+    after (``[customise] maps``, else the command's) written, as the command writes them."""
+    from fem_racket.frame.catalogue import catalogue
+    from fem_racket.frame.mesh import FrameMesh, frame_mesh
+    from fem_racket.io.config_run import file_frame
+    from fem_racket.io.map_files import check_map_outputs
+    from fem_racket.io.racket_files import customise_files, mesh_files
+    from fem_racket.outputs import check_output_path
+    from fem_racket.studies.customise import customise
+    from fem_racket.studies.target_values import place_list, targets_from
+
+    d = cfg.defaults()
+    core = {**_PLAY, **{k: d[k] for k in _PLAY if k in d}, **_overwrite(cfg)}
+    o = table_options(cfg, "customise", CUSTOMISE_OPTIONS, core)
+    places, out = place_list(o["places"]), out or o["out"]
+    paths = (Path(out), Path(o["maps"])) if out is not None else None
+    if paths is not None:
+        for f in mesh_files(paths[0]):
+            check_output_path(f, overwrite=o["overwrite"])
+        check_map_outputs([paths[1]], overwrite=o["overwrite"])
+    frame = file_frame(cfg)
+    mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, d.get("elements", 20))
+    targets = targets_from(o, catalogue(mesh, f1=False))
+    work_begins()
+    if paths is None:
+        return customise(mesh, targets, places)
+    play = {k: o[k] for k in _PLAY}
+    parameters = {"config": str(cfg.source), **o}
+    return customise_files(mesh, targets, places, play, paths, parameters, o["overwrite"])[0]
+
+
+def closest_file(cfg: RunConfig, rackets: Any) -> list[Any]:
+    """The rackets of the CSV list ``rackets`` nearest ``[closest]``'s targets, each with its
+    least lead, as ``fem-racket closest RACKETS --config`` ranks them: the Matches of
+    :func:`fem_racket.studies.closest.closest`, nearest first."""
+    from fem_racket.io.racket_table import read_rackets
+    from fem_racket.studies.closest import closest
+    from fem_racket.studies.target_values import place_list, targets_from
+
+    o = table_options(cfg, "closest", CLOSEST_OPTIONS)
+    if rackets is None:
+        raise InputError("rackets = none is not allowed: give the racket list, a CSV file")
+    targets = targets_from(o)
+    listed = read_rackets(rackets)
+    work_begins()
+    return closest(listed, targets, place_list(o["places"]), o["count"])

@@ -1,0 +1,165 @@
+"""A racket made from catalogue numbers, written as a mesh file with its JSON sidecar: the work of
+``fem-racket fit`` (:func:`fit_files`) and ``fem-racket customise`` (:func:`customise_files`),
+shared by the commands and the run file's methods (:mod:`fem_racket.io.config_racket`) so that
+both compute and write the same files.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2
+from fem_racket.outputs import json_ready, provenance
+from fem_racket.validation import InputError
+
+__all__ = [
+    "FitSpec",
+    "customise_files",
+    "fit_files",
+    "fit_frame",
+    "mesh_files",
+    "write_mesh_files",
+]
+
+
+def mesh_files(out: Path) -> list[Path]:
+    """A racket written as a mesh file (fit, customise): the mesh ``out`` and its JSON sidecar,
+    to check before the work and write as one set with :func:`write_mesh_files`."""
+    from fem_racket.outputs import sidecar_path
+
+    return [out, sidecar_path(out)]
+
+
+def write_mesh_files(mesh: Any, out: Path, sidecar: str, *, overwrite: bool = False) -> None:
+    """Write ``mesh`` (a FrameMesh) to ``out`` and the text ``sidecar`` (its JSON) beside it,
+    as one set: both or, on any fault, neither."""
+    from fem_racket.io.mesh_files import write_mesh
+    from fem_racket.outputs import atomic_outputs
+
+    with atomic_outputs(mesh_files(out), overwrite=overwrite) as (tmp, side):
+        write_mesh(mesh, tmp, overwrite=True)
+        side.write_text(sidecar, encoding="utf-8")
+
+
+@dataclass(frozen=True)
+class FitSpec:
+    """A racket's catalogue numbers, as ``fem-racket fit`` takes them.
+
+    Attributes
+    ----------
+    length, mass, balance : float
+        L [m], mass [kg], balance point from the butt [m].
+    swing_weight : float
+        About an axis 0.10 m from the butt [kg cm^2].
+    f1 : float or None
+        First free-free bending frequency [Hz] (None: EI1 = 146 N m^2 kept).
+    twist_weight : float or None
+        Polar moment about the long axis [kg cm^2] (None: no torsion data).
+    torsion_frequency : float or None
+        First free-free torsion frequency [Hz], with ``twist_weight``.
+    elements : int
+        Cells of the mesh written.
+    """
+
+    length: float
+    mass: float
+    balance: float
+    swing_weight: float
+    f1: float | None = None
+    twist_weight: float | None = None
+    torsion_frequency: float | None = None
+    elements: int = DEFAULT_ELEMENTS
+
+
+def fit_frame(spec: FitSpec) -> tuple[Any, Any, dict[str, Any]]:
+    """The frame of ``spec`` (:func:`fem_racket.frame.specs.fit_racket`, with torsion data by
+    :func:`fem_racket.frame.twist_fit.fit_torsion` given a twistweight): the Frame, its mesh
+    and the summary (targets, fitted values, segments)."""
+    from fem_racket.frame.mesh import frame_mesh
+    from fem_racket.frame.specs import fit_racket, racket_spec
+    from fem_racket.frame.torsion import TorsionModel
+    from fem_racket.frame.twist_fit import fit_torsion
+
+    frame = fit_racket(spec.length, spec.mass, spec.balance, spec.swing_weight * KG_CM2, spec.f1,
+                       elements=spec.elements)  # fmt: skip
+    if spec.torsion_frequency is not None and spec.twist_weight is None:
+        raise InputError(
+            f"torsion_frequency = {spec.torsion_frequency!r} Hz is not allowed without "
+            "--twist-weight: the torsion profile is scaled to a twistweight"
+        )
+    if spec.twist_weight is not None:
+        frame = fit_torsion(frame, spec.twist_weight * KG_CM2, spec.torsion_frequency)
+    mesh = frame_mesh(frame, spec.elements)
+    got = racket_spec(mesh).as_dict()
+    target = {
+        "length_m": spec.length,
+        "mass_kg": spec.mass,
+        "balance_m": spec.balance,
+        "swing_weight_kg_cm2": spec.swing_weight,
+        "f1_hz": spec.f1,
+    }
+    if spec.twist_weight is not None:  # the torsion of the mesh written
+        tors = TorsionModel(mesh)
+        target["twist_weight_kg_cm2"] = spec.twist_weight
+        target["torsion_f1_hz"] = spec.torsion_frequency
+        got["twist_weight_kg_cm2"] = tors.polar_moment / KG_CM2
+        got["torsion_f1_hz"] = float(tors.modes(1).frequencies[0])
+    segments = [
+        {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
+    ]
+    return frame, mesh, {"target": target, "fitted": got, "segments": segments}
+
+
+def fit_files(
+    spec: FitSpec, out: Path, parameters: Mapping[str, Any], *, overwrite: bool = False
+) -> tuple[Any, dict[str, Any]]:
+    """Fit the frame of ``spec`` (:func:`fit_frame`) and write it to ``out`` (a mesh file)
+    with the sidecar ``out.json`` (``parameters`` in its provenance); the frame and the
+    summary (targets, fitted values, segments, the mesh's path)."""
+    frame, mesh, summary = fit_frame(spec)
+    summary["mesh"] = str(out)
+    meta = provenance(dict(parameters))
+    text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
+    write_mesh_files(mesh, out, text + "\n", overwrite=overwrite)
+    return frame, summary
+
+
+def customise_files(
+    mesh: Any,
+    targets: Mapping[str, Any],
+    places: Sequence[str],
+    play: Mapping[str, Any],
+    files: tuple[Path, Path],
+    parameters: Mapping[str, Any],
+    overwrite: bool = False,
+) -> tuple[Any, dict[str, Any]]:
+    """Solve the least lead (:func:`fem_racket.studies.customise.customise`) bringing ``mesh``
+    (a FrameMesh) to ``targets`` (spec name -> Target, SI) with lead at ``places``, map the
+    racket before and after (``play``: the maps' ``speed`` [m/s], ``racket_speed`` [m/s],
+    ``reference`` [x/L] and ``pivot`` [m]), write the customised mesh with its sidecar to
+    ``files[0]`` and the maps to ``files[1]`` (``parameters`` in their provenance); the
+    Customisation and the summary (placement, specs, targets, maps)."""
+    from fem_racket.io.map_files import write_maps
+    from fem_racket.studies.customise import customise
+    from fem_racket.studies.racket_map import racket_map
+    from fem_racket.studies.target_values import target_summary
+
+    out, maps_path = files
+    result = customise(mesh, targets, places)
+    maps = [
+        racket_map(m, name=name, **play)
+        for name, m in (("before", mesh), ("customised", result.mesh))
+    ]
+    summary = result.summary()
+    summary["targets"] = target_summary(targets)
+    summary["maps"] = {m.name: m.summary(curves=False) for m in maps}
+    summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
+    meta = provenance(dict(parameters))
+    text = json.dumps({**meta, **summary}, indent=2, default=str)
+    write_mesh_files(result.mesh, out, text + "\n", overwrite=overwrite)
+    write_maps(maps, [maps_path], overwrite=overwrite, parameters=parameters)
+    return result, summary
