@@ -93,12 +93,13 @@ def step_weights(e, w, h, cs):
     M = np.empty(4, dtype=np.complex128)
     for j in range(nm):
         moments(w[j] * h, e[j], M)
-        for q in range(4):
-            M[q] = M[q].conjugate()
         for s in range(3):
-            for r in range(4):
-                Gw[s, r, j] = cs[s, r, 0] * M[0] + cs[s, r, 1] * M[1] + cs[s, r, 2] * M[2]
-                Gw[s, r, j] += cs[s, r, 3] * M[3]
+            for r in range(4):  # sum_q c_rq conj(M_q), real times complex written out
+                gr, gi = 0.0, 0.0
+                for q in range(4):
+                    gr += cs[s, r, q] * M[q].real
+                    gi -= cs[s, r, q] * M[q].imag
+                Gw[s, r, j] = complex(gr, gi)
     c1, c2 = np.zeros((3, 4)), np.zeros((3, 4))
     for s in range(3):
         for r in range(4):
