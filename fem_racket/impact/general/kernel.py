@@ -251,7 +251,9 @@ def march_cases(kind, P, modes, cases, fdv, cs, keep):
     """
     W, A2, nmode = modes
     mu0, h, nsteps, speed, scale = cases
-    ncase, N = h.size, int(nsteps.max())
+    ncase, N = h.size, 0
+    for c in range(ncase):  # the longest case (not nsteps.max(): it links numba.np.arraymath)
+        N = max(N, nsteps[c])
     work = np.zeros((5, N))
     res = np.zeros((ncase, len(RESULTS)))
     res[:, 0] = -1.0
