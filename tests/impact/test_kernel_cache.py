@@ -56,10 +56,12 @@ from fem_racket.studies.sweep import sweep_result
 runs = [sweep_result(position=[0.6, 0.8], speed=[20.0, 30.0], backend="serial")]
 linalg = "scipy.linalg" in sys.modules  # the engine's cached kernels name no numba.np.arraymath
 runs.append(sweep_result(law="hunt-crossley", position=[0.6, 0.8], speed=30.0, backend="serial"))
+law_linalg = "scipy.linalg" in sys.modules  # nor the law's (kernel.march_cases: no .max())
 print(json.dumps({
     "values": [[float(x).hex() for x in run.values.ravel()] for run in runs],
     "registries": "numba.np.polynomial.polynomial_core" in sys.modules,
     "linalg": linalg,
+    "law_linalg": law_linalg,
 }))
 """
 
@@ -100,6 +102,7 @@ def test_cached_kernels_load_without_the_compile_registries():
     assert light["values"] == numba["values"]
     assert numba["registries"] and not light["registries"]
     assert not light["linalg"]  # a linear sweep loads no scipy.linalg (kernel_events._argmax)
+    assert not light["law_linalg"]  # nor a law's sweep (kernel.march_cases's longest case)
 
 
 def test_other_functions_load_as_numba_loads_them(tmp_path):
