@@ -193,10 +193,13 @@ def law_batch(batch: ProblemBatch, settings: Settings) -> BatchOutcome:
 #: The outcome's extra fields of a string bed and of an oblique impact.
 STRUNG_EXTRA = ("stringbed_stiffness_n_m", "stringbed_frequency_hz")
 OBLIQUE_EXTRA = ("ball_speed_out_m_s", "angle_out_deg", "spin_out_rpm", "tangential_cor")
+#: Across the face (0 for a ball in the plane of the long axis without side spin).
+LATERAL_EXTRA = ("side_angle_out_deg", "side_spin_out_rpm", "racket_yaw_rate_rad_s")
 
 
 def _normal_key(batch: ProblemBatch, i: int, frame: tuple) -> tuple:
-    """What case ``i``'s normal impact depends on: all but its spin and friction."""
+    """What case ``i``'s normal impact depends on: all but its spins, friction and the ball's
+    tangential parameters (its string bed, and its normal speed through both angles)."""
     law = batch.law
     params = () if law is None else tuple(
         float(np.asarray(getattr(law, p.field))[i]) if np.ndim(getattr(law, p.field)) == 1
@@ -206,7 +209,9 @@ def _normal_key(batch: ProblemBatch, i: int, frame: tuple) -> tuple:
     columns = (batch.position, batch.offset, batch.speed, batch.ball_mass, batch.kcb, batch.zeta)
     numbers = tuple(None if c is None else float(c[i]) for c in columns)
     swing = None if batch.swing is None else tuple(batch.swing[i])
-    return (frame, numbers, swing, params, batch.incidence[i].angle)
+    bed = None if batch.strings is None else batch.strings[i]
+    inc = batch.incidence[i]
+    return (frame, numbers, swing, params, bed, inc.angle, inc.side_angle)
 
 
 def _solve_case(solver: Any, batch: ProblemBatch, i: int, model: Any, normals: dict) -> tuple:
@@ -233,7 +238,7 @@ def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
     out = _nan(n)
     names = (
         (STRUNG_EXTRA if batch.strings is not None else ())
-        + (OBLIQUE_EXTRA if batch.incidence is not None else ())
+        + (OBLIQUE_EXTRA + LATERAL_EXTRA if batch.incidence is not None else ())
         + (HELD_EXTRA if batch.held else ())
     )
     extra = {k: np.full(n, np.nan) for k in names}
@@ -254,10 +259,11 @@ def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
             log.warning("case %d of the batch failed (NaN in the results): %s", i, exc)
             continue
         out["racket_speed"][i] = problem.racket_speed
-        if problem.strings is not None:
-            row = (r.cor, r.contact_time, r.cor * r.speed, r.peak_force, np.nan, np.nan)
-            extra["stringbed_stiffness_n_m"][i] = r.point.bed_stiffness
-            extra["stringbed_frequency_hz"][i] = r.point.bed_frequencies_hz[0]
+        if problem.strings is not None:  # the bed's normal impact (oblique: at V cos(angle))
+            row = (normal.cor, normal.contact_time, normal.cor * normal.speed)
+            row += (normal.peak_force, np.nan, np.nan)
+            extra["stringbed_stiffness_n_m"][i] = normal.point.bed_stiffness
+            extra["stringbed_frequency_hz"][i] = normal.point.bed_frequencies_hz[0]
         elif problem.held:  # a HeldRun
             row = (r.apparent_cor, r.contact_time, r.ball_speed_out, r.peak_force)
             row += (problem.contact().stiffness, np.nan)
@@ -272,6 +278,6 @@ def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
             out[name][i] = value
         if problem.incidence is not None:
             summary = r.summary()
-            for name in (*OBLIQUE_EXTRA, "contact_regime"):
+            for name in (*OBLIQUE_EXTRA, *LATERAL_EXTRA, "contact_regime"):
                 extra[name][i] = summary[name]
     return BatchOutcome(**out, extra=extra)

@@ -44,6 +44,8 @@ MAP_DEFAULTS: dict[str, Any] = {
     "angle": None,
     "spin": None,
     "friction": None,
+    "side_angle": None,
+    "side_spin": None,
     "ball_mass": DEFAULT_BALL_MASS,
     "kcb": None,
     "zeta": None,
@@ -56,6 +58,8 @@ MAP_DEFAULTS: dict[str, Any] = {
     "law": "linear",
     "power_fraction": None,
 }
+#: ``map``'s options of the oblique ball (any of them maps the spin over the face).
+OBLIQUE_KEYS = ("angle", "spin", "friction", "side_angle", "side_spin")
 #: ``fem-racket refine``'s options (argparse dests) and defaults.
 REFINE_DEFAULTS: dict[str, Any] = {
     "elements": list(DEFAULT_ELEMENTS),
@@ -169,7 +173,7 @@ def _refuse_spin(cfg: RunConfig, o: dict[str, Any], law: Any) -> None:
 
 def map_file(cfg: RunConfig) -> list[Any]:
     """The maps ``fem-racket map --config`` computes from ``cfg``: a RacketMap per racket,
-    a FaceMap with ``offsets``, a SpinMap with ``angle``/``spin``/``friction`` (the grids of
+    a FaceMap with ``offsets``, a SpinMap with an oblique ball (:data:`OBLIQUE_KEYS`; the grids of
     :mod:`fem_racket.cli.options.faces` unless given)."""
     from fem_racket.impact.incidence import Incidence
     from fem_racket.studies.grid_values import as_values
@@ -179,7 +183,7 @@ def map_file(cfg: RunConfig) -> list[Any]:
     law = _law(o, cfg)
     swing = {k: o[k] for k in ("racket_speed", "reference", "pivot")}
     impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation", "modes", "tolerance")}
-    oblique = {k: o[k] for k in ("angle", "spin", "friction") if o[k] is not None}
+    oblique = {k: o[k] for k in OBLIQUE_KEYS if o[k] is not None}
     if oblique:
         from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, spin_map
 

@@ -22,12 +22,21 @@ from fem_racket.outputs import (
     atomic_output,
     provenance,
 )
-from fem_racket.studies.spin_map import SPIN_FIELDS, SpinMap
+from fem_racket.studies.spin_map import SpinMap, map_fields
 
 __all__ = ["write_spin_map"]
 
-#: The fields drawn in the PNG, in rows.
+#: The fields drawn in the PNG, in rows (and the side spin when the ball crosses the face).
 DRAWN = ("spin_out_rpm", "angle_out_deg")
+#: The CSV's columns of :func:`fem_racket.studies.spin_map.map_fields`, in its order.
+CSV_COLUMNS = {
+    "spin_out_rpm": "spin out [rpm]",
+    "angle_out_deg": "angle out [deg]",
+    "ball_speed_out_m_s": "ball speed out [m/s]",
+    "side_spin_out_rpm": "side spin out [rpm]",
+    "side_angle_out_deg": "side angle out [deg]",
+    "racket_yaw_rate_rad_s": "racket yaw rate [rad/s]",
+}
 
 
 def _netcdf(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
@@ -37,7 +46,7 @@ def _netcdf(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] |
     dims = ("racket", "offset", "position")
     variables: dict[str, Any] = {
         key: (dims, np.stack([m.fields[key] for m in maps]), {"units": u, "long_name": text})
-        for key, (u, text) in SPIN_FIELDS.items()
+        for key, (u, text) in map_fields(maps[0].incidence).items()
     }
     variables["racket"] = (("racket",), np.arange(len(maps)), {"long_name": "racket index"})
     variables["offset"] = (("offset",), y, {"units": "m", "long_name": "lateral offset"})
@@ -56,10 +65,12 @@ def _png(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | No
     from matplotlib.figure import Figure
 
     n = len(maps)
-    fig = Figure(figsize=(max(2.4 * n + 1.4, 5.2), 3.9 * len(DRAWN) + 0.4), layout="constrained")
-    axes = np.atleast_2d(fig.subplots(len(DRAWN), n, squeeze=False))
+    inc = maps[0].incidence
+    drawn = (*DRAWN, "side_spin_out_rpm") if inc.lateral else DRAWN
+    fig = Figure(figsize=(max(2.4 * n + 1.4, 5.2), 3.9 * len(drawn) + 0.4), layout="constrained")
+    axes = np.atleast_2d(fig.subplots(len(drawn), n, squeeze=False))
     t = np.linspace(0.0, 2.0 * np.pi, 200)
-    for row, key in enumerate(DRAWN):
+    for row, key in enumerate(drawn):
         values = np.stack([m.fields[key] for m in maps])
         lo, hi = np.nanmin(values), np.nanmax(values)
         levels = np.linspace(lo, hi if hi > lo else lo + 1.0, 15)
@@ -73,11 +84,11 @@ def _png(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | No
             ax.set_xlabel("offset y [cm]")
             ax.set_title(m.name, fontsize=9)
         axes[row, 0].set_ylabel("x from the butt [cm]")
-        fig.colorbar(cs, ax=list(axes[row]), label=SPIN_FIELDS[key][1], shrink=0.9)
-    inc = maps[0].incidence
+        fig.colorbar(cs, ax=list(axes[row]), label=map_fields(inc)[key][1], shrink=0.9)
+    side = f"\nside angle {inc.side_angle:g} deg, side spin {inc.side_spin:g} rpm"
     fig.suptitle(
         f"ball at {maps[0].speed:g} m/s, {inc.angle:g} deg from the normal, spin "
-        f"{inc.spin:g} rpm, friction {inc.friction:g}",
+        f"{inc.spin:g} rpm, friction {inc.friction:g}{side if inc.lateral else ''}",
         fontsize=9,
     )
     with atomic_output(path, overwrite=True) as tmp:
@@ -85,7 +96,7 @@ def _png(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | No
 
 
 def _cell_row(m: SpinMap, j: int, i: int) -> list[Any] | None:
-    vals = [m.fields[k][j, i] for k in SPIN_FIELDS]
+    vals = [m.fields[k][j, i] for k in m.fields]
     if not np.isfinite(vals[0]):
         return None
     x, y = m.positions[i], m.offsets[j]
@@ -94,7 +105,7 @@ def _cell_row(m: SpinMap, j: int, i: int) -> list[Any] | None:
 
 def _csv(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] | None) -> None:
     cols = ["racket", "position [x/L]", "offset [m]"]
-    cols += ["spin out [rpm]", "angle out [deg]", "ball speed out [m/s]", "contact regime [-]"]
+    cols += [CSV_COLUMNS[k] for k in maps[0].fields] + ["contact regime [-]"]
     write_cells_csv(
         maps, path, cols, _cell_row, summary_key="spin_map", parameters=parameters, overwrite=True
     )

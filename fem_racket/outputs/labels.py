@@ -69,6 +69,8 @@ LABELS: dict[str, Label] = {
     "pattern": Label("string pattern", "-", "mains*100 + crosses (1619: 16 mains x 19 crosses)"),
     "angle": Label("incidence angle", "deg", "ball's path from the face normal"),
     "spin": Label("spin in", "rpm", "incoming spin, positive = topspin"),
+    "side_angle": Label("side angle", "deg", "ball's path from the plane of the long axis"),
+    "side_spin": Label("side spin in", "rpm", "incoming side spin, positive = rolling to +y"),
     "friction": Label("friction mu", "-", "Coulomb friction coefficient ball/strings"),
     "ball_inertia": Label("ball I/(m R^2)", "-", "ball's moment of inertia I/(m R^2)"),
     "ball_radius": Label("ball radius R", "m"),
@@ -111,6 +113,15 @@ LABELS: dict[str, Label] = {
     "angle_out_deg": Label("angle out", "deg", "ball's outgoing angle from the face normal"),
     "spin_out_rpm": Label("spin out", "rpm", "ball's outgoing spin, positive = topspin"),
     "tangential_cor": Label("tangential COR", "-", "tangential coefficient of restitution"),
+    "side_angle_out_deg": Label(
+        "side angle out", "deg", "ball's outgoing angle from the plane of the long axis"
+    ),
+    "side_spin_out_rpm": Label(
+        "side spin out", "rpm", "ball's outgoing side spin, positive = rolling to +y"
+    ),
+    "racket_yaw_rate_rad_s": Label(
+        "racket yaw rate", "rad/s", "racket's yaw rate after impact, about the face normal"
+    ),
     "contact_regime": Label(
         "contact regime", "-", "phases of the contact, negative when the first grips"
     ),

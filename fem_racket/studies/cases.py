@@ -33,6 +33,7 @@ from fem_racket.impact.solvers import Solver, make_solver
 from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec
 from fem_racket.studies.law_cases import case_swings
 from fem_racket.studies.sweep_physics import (
+    LATERAL_AXES,
     OBLIQUE_AXES,
     STRING_AXES,
     case_beds,
@@ -75,8 +76,13 @@ AXIS_VARIABLES: dict[str, tuple[str, str]] = {
     "spin_out_rpm": ("rpm", "ball's outgoing spin, positive = topspin"),
     "tangential_cor": ("1", "tangential coefficient of restitution"),
     "contact_regime": ("1", "contact regime: phases, negative when the first grips"),
+    # with a ball across the face (side_angle, side_spin)
+    "side_angle_out_deg": ("deg", "ball's outgoing angle from the plane of the long axis"),
+    "side_spin_out_rpm": ("rpm", "ball's outgoing side spin, positive = rolling to +y"),
+    "racket_yaw_rate_rad_s": ("rad/s", "racket's yaw rate after impact, about the face normal"),
 }
-#: The variables of a string bed, and of an oblique ball (only with their axes).
+#: The variables of a string bed, of an oblique ball and of one across the face (only with
+#: their axes).
 STRUNG_VARIABLES = ("stringbed_stiffness_n_m", "stringbed_frequency_hz")
 OBLIQUE_VARIABLES = (
     "ball_speed_out_m_s",
@@ -85,6 +91,7 @@ OBLIQUE_VARIABLES = (
     "tangential_cor",
     "contact_regime",
 )
+LATERAL_VARIABLES = ("side_angle_out_deg", "side_spin_out_rpm", "racket_yaw_rate_rad_s")
 #: Columns of a chunk's results: the :data:`VARIABLES`, then the flexible modes the solver kept
 #: for each case (the dataset's ``modes_kept`` attribute, not a variable; NaN for the physical
 #: basis and for a failed case).
@@ -106,6 +113,8 @@ def result_variables(spec: SweepSpec) -> list[str]:
         left_out.add("kcb_n_m")
     if not given(spec.values, OBLIQUE_AXES):
         left_out.update(OBLIQUE_VARIABLES)
+    if not given(spec.values, LATERAL_AXES):
+        left_out.update(LATERAL_VARIABLES)
     return [v for v in ALL_VARIABLES if v not in left_out]
 
 

@@ -20,6 +20,7 @@ from fem_racket.frame.segments import (
     standard_frame,
 )
 from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.studies.sweep_physics import LATERAL_AXES
 from fem_racket.validation import InputError, check_range
 
 __all__ = ["check_offsets", "check_rigidity", "check_swings"]
@@ -50,16 +51,29 @@ def check_rigidity(spec: Any) -> None:
 
 def check_offsets(spec: Any) -> None:
     """Every (position, offset) of the grid on the head outline (or on the axis), and a
-    frame with torsion data when any offset is not 0, so that no case fails mid-sweep."""
+    frame with torsion data when any offset, side angle or side spin is not 0 (a ball across
+    the face turns the racket about the face normal: its polar moment), so that no case fails
+    mid-sweep."""
     y = np.atleast_1d(spec.values["offset"])
-    if np.all(y == 0.0):
+    across = [
+        n for n in LATERAL_AXES
+        if spec.values.get(n) is not None and np.any(np.atleast_1d(spec.values[n]) != 0.0)
+    ]  # fmt: skip
+    if np.all(y == 0.0) and not across:
         return
     frame = spec.frame if spec.frame is not None else standard_frame()
     if not (frame.torsion if isinstance(frame, Frame) else frame.has_torsion):
+        if across:
+            raise InputError(
+                f"{across[0]} is not allowed with this frame: it has no torsion data (GJ, "
+                "rhoIp), which the racket's yaw under a ball across the face needs"
+            )
         raise InputError(
             "offset is not allowed with this frame: it has no torsion data (GJ, rhoIp) and "
             "takes impacts on the long axis only"
         )
+    if np.all(y == 0.0):
+        return
     head = DEFAULT_HEAD.on_frame(float(frame.length))
     for x in np.atleast_1d(spec.values["position"]):
         for v in y:

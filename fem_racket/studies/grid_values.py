@@ -77,6 +77,10 @@ PARAMETERS: dict[str, Parameter] = {
     # the oblique, spinning ball (issue 26)
     "angle": Parameter("deg", "incidence angle from the face normal", "angle_deg"),
     "spin": Parameter("rpm", "incoming spin, positive = topspin", "spin_rpm"),
+    "side_angle": Parameter(
+        "deg", "angle of the ball's path from the plane of the long axis", "side_angle_deg"
+    ),
+    "side_spin": Parameter("rpm", "incoming side spin, positive = rolling to +y", "side_spin_rpm"),
     "friction": Parameter("1", "Coulomb friction coefficient ball/strings", "friction"),
     "ball_inertia": Parameter("1", "ball's moment of inertia I/(m R^2)", "ball_inertia_i_over_mr2"),
     "ball_radius": Parameter("m", "ball radius R", "ball_radius_m"),
@@ -90,6 +94,8 @@ OPTIONAL = (
     "pattern",
     "angle",
     "spin",
+    "side_angle",
+    "side_spin",
     "friction",
     "ball_inertia",
     "ball_radius",
@@ -132,7 +138,10 @@ def _check_value(name: str, value: object, law: bool) -> float | int:
         return pattern_code(value if isinstance(value, str) else pattern_label(value))
     if name == "angle":
         return check_range(name, value, 0.0, 90.0, unit=unit, include_high=False)
-    if name == "spin":
+    if name == "side_angle":  # across the face: either side, as simulate's --side-angle
+        return check_range(name, value, -90.0, 90.0, unit=unit, include_low=False,
+                           include_high=False)  # fmt: skip
+    if name in ("spin", "side_spin"):
         return check_finite(name, value, unit)
     if name in ("friction", "compliance_ratio"):
         return check_range(name, value, 0.0, math.inf, unit="")

@@ -3,13 +3,14 @@
 Every grid point (x along the frame, y across it) on the head outline
 (:class:`~fem_racket.frame.head.HeadOutline`) is struck by the same oblique, spinning ball
 (:class:`~fem_racket.impact.incidence.Incidence`: angle from the face normal in the plane of the
-long axis, spin, friction), as ``fem-racket simulate --angle ... --offset ...`` strikes one
-point: its normal impact at V cos(angle) (the frame bending and twisting off the axis,
-:mod:`fem_racket.impact.offaxis`), then the tangential contact over it
-(:mod:`fem_racket.impact.oblique.solve`; the free racket recoils along its axis as a rigid body, so
-the spin varies over the face only through the normal impact). The grid is one
-:class:`~fem_racket.impact.problem_batch.ProblemBatch` the solver answers. Points off the face
-are NaN.
+long axis, spin, friction; a side angle and side spin across the face, whose outgoing side spin
+and angle and the racket's yaw rate are then mapped too), as ``fem-racket simulate --angle ...
+--offset ...`` strikes one point: its normal impact at V cos(side angle) cos(angle) (the frame
+bending and twisting off the axis, :mod:`fem_racket.impact.offaxis`), then the tangential
+contact over it (:mod:`fem_racket.impact.oblique.solve`; the free racket recoils along its axis
+as a rigid body, so the spin varies over the face only through the normal impact). The grid is
+one :class:`~fem_racket.impact.problem_batch.ProblemBatch` the solver answers. Points off the
+face are NaN.
 """
 
 from __future__ import annotations
@@ -29,7 +30,16 @@ from fem_racket.impact.solvers import make_solver
 from fem_racket.studies.face_map import FaceGrid, increasing
 from fem_racket.validation import InputError, check_positive
 
-__all__ = ["SPIN_FIELDS", "SPIN_OFFSETS", "SPIN_POSITIONS", "SPIN_REFUSES", "SpinMap", "spin_map"]
+__all__ = [
+    "SIDE_FIELDS",
+    "SPIN_FIELDS",
+    "SPIN_OFFSETS",
+    "SPIN_POSITIONS",
+    "SPIN_REFUSES",
+    "SpinMap",
+    "map_fields",
+    "spin_map",
+]
 
 #: The spin map's grid unless given: x/L along the head and y [m] across it (each point is one
 #: oblique impact).
@@ -50,6 +60,19 @@ SPIN_FIELDS = {
     "angle_out_deg": ("deg", "outgoing angle from the face normal [deg]"),
     "ball_speed_out_m_s": ("m/s", "outgoing ball speed [m/s]"),
 }
+#: The outputs across the face, mapped too when the ball crosses it (a side angle or side spin,
+#: as ``simulate --side-angle/--side-spin`` reports them): field -> (unit, label).
+SIDE_FIELDS = {
+    "side_spin_out_rpm": ("rpm", "outgoing side spin [rpm] (+ rolling to +y)"),
+    "side_angle_out_deg": ("deg", "outgoing angle from the plane of the long axis [deg]"),
+    "racket_yaw_rate_rad_s": ("rad/s", "racket's yaw rate after impact [rad/s]"),
+}
+
+
+def map_fields(incidence: Incidence) -> dict[str, tuple[str, str]]:
+    """The fields a spin map of ``incidence`` holds: :data:`SPIN_FIELDS`, and
+    :data:`SIDE_FIELDS` when the ball crosses the face."""
+    return {**SPIN_FIELDS, **(SIDE_FIELDS if incidence.lateral else {})}
 
 
 @dataclass(frozen=True, eq=False)
@@ -60,7 +83,7 @@ class SpinMap(FaceGrid):
     Attributes
     ----------
     fields : dict of str to ndarray, shape (ny, nx)
-        :data:`SPIN_FIELDS` (NaN off the face).
+        :func:`map_fields` of the incidence (NaN off the face).
     regimes : ndarray of str, shape (ny, nx)
         The contact regime at each point ("" off the face).
     incidence : Incidence
@@ -95,7 +118,7 @@ class SpinMap(FaceGrid):
         """JSON-ready, units in the keys."""
         out: dict[str, Any] = {"racket": self.name, "speed_m_s": self.speed}
         out.update(self.incidence.summary())
-        for key in SPIN_FIELDS:
+        for key in self.fields:
             lo, x_lo, hi, x_hi, y_hi = self.extreme(key)
             out[f"{key}_min"], out[f"{key}_max"] = lo, hi
         lo, x_lo, hi, x_hi, y_hi = self.extreme()
@@ -147,7 +170,7 @@ def spin_map(
     y = increasing("offsets", offsets, 2)
     X, Y = np.meshgrid(x, y)
     face = head.contains(X * model.mesh.length, Y)
-    fields = {k: np.full(X.shape, np.nan) for k in SPIN_FIELDS}
+    fields = {k: np.full(X.shape, np.nan) for k in map_fields(incidence)}
     regimes = np.full(X.shape, "", dtype=object)
     if np.any(face):
         n = int(np.count_nonzero(face))
@@ -165,7 +188,7 @@ def spin_map(
         )
         name_ = "exact" if law is None else "general"
         out = make_solver(name_, **solver_options).solve_many(batch)
-        for key in SPIN_FIELDS:
+        for key in fields:
             fields[key][face] = out.extra[key]
         regimes[face] = out.extra["contact_regime"]
     return SpinMap(name, x, y, fields, regimes, incidence, speed, head, model.mesh.length)

@@ -123,7 +123,13 @@ def sweep(frame: Frame | FrameMesh | None = None, **options: Any) -> Any:
     angle, spin, friction
         An oblique, spinning ball on every case: angle from the face normal [deg], incoming
         spin [rpm] (+ topspin), Coulomb friction; gives ``ball_speed_out_m_s``,
-        ``angle_out_deg``, ``spin_out_rpm``, ``tangential_cor`` and ``contact_regime``.
+        ``angle_out_deg``, ``spin_out_rpm``, ``tangential_cor`` and ``contact_regime`` (on a
+        string bed too).
+    side_angle, side_spin
+        A 3-D oblique ball: its path's angle from the plane of the long axis [deg], in
+        (-90, 90), and side spin [rpm] (+ rolling toward +y); gives ``side_angle_out_deg``,
+        ``side_spin_out_rpm`` and ``racket_yaw_rate_rad_s`` (not on a string bed; 0 and 0:
+        the impact in the plane, bit for bit).
     ei2 : float, optional
         Fixed top-side EI2 of the standard frame [N m^2]; 0.88 EI1 when None.
     solver, separation, basis, modes, rtol, atol

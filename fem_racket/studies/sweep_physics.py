@@ -8,8 +8,13 @@ its own law (the ``kawazoe-1997-ball`` unless ``law`` is given). ``angle`` [deg]
 [m] and the contact's ``compliance_ratio`` (eta^2), make every case an oblique, spinning ball
 (:class:`~fem_racket.impact.incidence.Incidence`; its defaults, angle 0, spin 0 and friction
 0.4, unless given), solved as its normal impact at V cos(angle) and the tangential contact over
-it. What the problems refuse (a string bed on a swinging racket, an incidence on a strung
-one ...) is refused here for the whole grid, in one line, before any work.
+it; ``side_angle`` [deg] (-90..90, the path out of the plane of the long axis) and
+``side_spin`` [rpm] (about the long axis's direction) make it a 3-D one, as ``simulate
+--side-angle/--side-spin`` (normal speed V cos(side) cos(angle); with both 0 the impact in the
+plane, bit for bit). A string bed takes an oblique ball in the plane of the long axis, as
+``simulate --string-tension ... --angle ...`` does. What the problems refuse (a string bed on a
+swinging racket, a ball crossing the face of a strung one ...) is refused here for the whole
+grid, in one line, before any work.
 
 The contact regime of an oblique impact (``slide``, ``grip``, ``slide-grip-slide`` ...: the
 phases in order) is a number in the dataset (:func:`regime_code`): the count of phases, negative
@@ -32,6 +37,7 @@ from fem_racket.studies.grid_values import pattern_label
 from fem_racket.validation import InputError, show
 
 __all__ = [
+    "LATERAL_AXES",
     "OBLIQUE_AXES",
     "STRING_AXES",
     "case_beds",
@@ -44,7 +50,18 @@ __all__ = [
 ]
 
 STRING_AXES = ("string_tension", "pattern")
-OBLIQUE_AXES = ("angle", "spin", "friction", "ball_inertia", "ball_radius", "compliance_ratio")
+OBLIQUE_AXES = (
+    "angle",
+    "spin",
+    "side_angle",
+    "side_spin",
+    "friction",
+    "ball_inertia",
+    "ball_radius",
+    "compliance_ratio",
+)
+#: The axes that take the ball across the face (out of the plane of the long axis).
+LATERAL_AXES = ("side_angle", "side_spin")
 #: The Incidence field of each oblique axis.
 INCIDENCE_FIELD = {a: a for a in OBLIQUE_AXES} | {"ball_radius": "radius"}
 
@@ -65,15 +82,16 @@ def check_physics(values: dict[str, Any], law: Any, options: dict[str, Any], len
     ``options``: its solver, separation, basis, modes and tolerance; ``length``: the racket's
     length [m] (the string bed's head is placed on it).
     """
-    strings, oblique = given(values, STRING_AXES), given(values, OBLIQUE_AXES)
-    if strings and oblique:
-        raise InputError(
-            f"{oblique[0]} is not allowed with {strings[0]}: the sweep's oblique cases take the "
-            "lumped ball/string law, not a string bed (simulate takes both)"
-        )
+    strings = given(values, STRING_AXES)
     if not strings:
         return
     what = f"with {strings[0]} (a string bed)"
+    for name in given(values, LATERAL_AXES):
+        if _nonzero(values, name):
+            raise InputError(
+                f"{name} = {show(values[name])} is not allowed {what}: the oblique impact on the "
+                "bed is modelled in the plane of the long axis only (as simulate's)"
+            )
     lumped = "the bed replaces the lumped K_CB (give the ball's own law with law)"
     for name in ("kcb", "zeta"):
         if values[name] is not None:

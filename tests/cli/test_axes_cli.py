@@ -44,7 +44,10 @@ def test_sweep_writes_the_bed_outputs(cwd, capsys):
 @pytest.mark.parametrize(
     ("argv", "words"),
     [
-        (["sweep", "--string-tension", "250", "--angle", "20"], "angle is not allowed with"),
+        (
+            ["sweep", "--string-tension", "250", "--angle", "20", "--side-angle", "5"],
+            "side_angle = 5.0 is not allowed with string_tension",
+        ),
         (["sweep", "--pattern", "16x19", "--kcb", "3e4"], "kcb is not allowed with pattern"),
         (["sweep", "--angle", "95"], "angle = 95.0 deg is not allowed"),
         (["map", "--angle", "40", "--power-fraction", "0.9"], "power_fraction is not allowed"),

@@ -11,7 +11,10 @@ from fem_racket.validation import InputError
 @pytest.mark.parametrize(
     ("given", "words"),
     [
-        ({"string_tension": 250, "angle": 20}, "angle is not allowed with string_tension"),
+        (
+            {"string_tension": 250, "angle": 20, "side_angle": 5},
+            "side_angle = 5.0 is not allowed with string_tension (a string bed)",
+        ),
         ({"pattern": "16x19", "kcb": 3e4}, "kcb is not allowed with pattern (a string bed)"),
         ({"string_tension": 250, "racket_speed": 5}, "racket_speed = 5.0 is not allowed with"),
         ({"string_tension": 250, "offset": 0.02}, "offset = 0.02 is not allowed with"),

@@ -13,7 +13,9 @@ format from the suffix: .png (curves with the sweet spots marked), .nc (netCDF) 
 (:mod:`fem_racket.cli.options.rerun`). ``--json`` prints the sweet spots and curves and writes
 only what ``--out`` names; ``--no-files`` writes nothing.
 ``--offsets`` maps e_A over the whole face, ``--angle``/``--spin``/``--friction`` the oblique
-ball's outgoing spin and angle over it (:mod:`fem_racket.cli.options.faces`).
+ball's outgoing spin and angle over it, and with ``--side-angle``/``--side-spin`` (a ball across
+the face) its side spin and side angle and the racket's yaw too
+(:mod:`fem_racket.cli.options.faces`).
 """
 
 from __future__ import annotations

@@ -62,6 +62,10 @@ _HELP = {
     "--string-tension alone 16x19)",
     "angle": "incidence angle [deg] from the face normal: an oblique ball (default: head-on)",
     "spin": "incoming spin [rpm], positive = topspin (default 0 with an oblique ball)",
+    "side_angle": "angle [deg] of the ball's path from the plane of the long axis, in (-90, 90), "
+    "positive toward +y: a 3-D oblique ball (default 0 with an oblique ball)",
+    "side_spin": "incoming side spin [rpm] about the long axis's direction, positive = rolling "
+    "toward +y (default 0 with an oblique ball)",
     "friction": "Coulomb friction ball/strings [-] (default 0.4 with an oblique ball)",
     "ball_inertia": f"ball's I/(m R^2) [-], 0..2/3 (default {DEFAULT_BALL_INERTIA:g} with an "
     "oblique ball)",

@@ -1,9 +1,12 @@
 """``fem-racket map`` over the whole string face: e_A (``--offsets``) or the oblique ball's
-outgoing spin and angle (``--angle``, ``--spin``, ``--friction``).
+outgoing spin and angle (``--angle``, ``--spin``, ``--friction``, ``--side-angle``,
+``--side-spin``).
 
 ``--offsets`` maps e_A and v_out over (x, y) (:mod:`fem_racket.studies.face_map`);
-any of ``--angle``/``--spin``/``--friction`` maps the outgoing spin ``spin_out_rpm`` and angle
-``angle_out_deg`` of an oblique, spinning ball over the face
+any of the oblique options maps the outgoing spin ``spin_out_rpm`` and angle
+``angle_out_deg`` of an oblique, spinning ball over the face (and with a side angle or side
+spin its ``side_spin_out_rpm``, ``side_angle_out_deg`` and the racket's
+``racket_yaw_rate_rad_s``)
 (:mod:`fem_racket.studies.spin_map`), on the grid of ``--positions`` and ``--offsets``
 (defaults :data:`fem_racket.studies.spin_map.SPIN_POSITIONS` and ``SPIN_OFFSETS``: each point
 is one oblique impact).
@@ -44,7 +47,20 @@ OBLIQUE = {
     "spin": ("--spin", "RPM", "incoming spin [rpm], positive = topspin (default 0 with --angle)"),
     "friction": ("--friction", "MU", "Coulomb friction ball/strings [-] (default 0.4 with "
                  "--angle)"),
+    "side_angle": ("--side-angle", "DEG", "angle [deg] of the ball's path from the plane of the "
+                   "long axis, in (-90, 90), + toward +y: a 3-D oblique ball; maps the outgoing "
+                   "side spin and angle too (default 0)"),
+    "side_spin": ("--side-spin", "RPM", "incoming side spin [rpm] about the long axis's "
+                  "direction, + rolling toward +y (default 0)"),
 }  # fmt: skip
+
+
+#: The printed ranges over the face of a ball crossing it: field, label, unit.
+_SIDE_ROWS = (
+    ("side_spin_out_rpm", "side spin out", "rpm"),
+    ("side_angle_out_deg", "side angle out", "deg"),
+    ("racket_yaw_rate_rad_s", "racket yaw rate", "rad/s"),
+)
 
 
 def add_face_options(g: argparse._ArgumentGroup) -> None:
@@ -77,6 +93,11 @@ def _oblique(args: argparse.Namespace) -> bool:
     return any(getattr(args, d, None) is not None for d in OBLIQUE)
 
 
+def _oblique_given(args: argparse.Namespace) -> str:
+    """The oblique options given, as the refusals name them (``--angle, --spin``)."""
+    return ", ".join(OBLIQUE[d][0] for d in OBLIQUE if getattr(args, d, None) is not None)
+
+
 def face_asked(args: argparse.Namespace) -> bool:
     """True when the map is over the whole face."""
     return args.offsets is not None or _oblique(args)
@@ -100,7 +121,7 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
     given = given_options(args)
     for dest, why in SPIN_REFUSES.items():
         if dest in given:
-            raise InputError(f"{dest} is not allowed with --angle, --spin or --friction: {why}")
+            raise InputError(f"{dest} is not allowed with {_oblique_given(args)}: {why}")
     inc = Incidence(**{d: getattr(args, d) for d in OBLIQUE if getattr(args, d) is not None})
     positions = as_values("position", args.positions if "positions" in given else SPIN_POSITIONS)
     offsets = as_values("offset", args.offsets or SPIN_OFFSETS)
@@ -135,6 +156,9 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
         print(f"  {'spin out max':<26} {significant(hi, 4):>10} rpm at {significant(x_hi, 4)} x/L,"
               f" y = {y_hi:g} m")  # fmt: skip
         print(f"  {'angle out':<26} {significant(a_lo, 4):>10} to {significant(a_hi, 4)} deg")
+        for key, label, unit in _SIDE_ROWS if inc.lateral else ():
+            lo, _, hi, _, _ = m.extreme(key)
+            print(f"  {label:<26} {significant(lo, 4):>10} to {significant(hi, 4)} {unit}")
         print(f"  {'contact regimes':<26} {', '.join(m.summary()['contact_regimes'])}")
     print_written(outs)
     return 0
