@@ -81,7 +81,7 @@ def _options(cfg: RunConfig, command: str, defaults: dict[str, Any]) -> dict[str
     """The command's options from the file: its defaults, the core tables' values of its
     options, then its own table (checked against its options). A key of the impact's tables
     it takes no option for is refused, as the command refuses it."""
-    from fem_racket.io.config_unused import refuse_unused
+    from fem_racket.io.config_unused import refuse_core_only, refuse_unused
     from fem_racket.studies.grid_values import LAW_PARAMETERS
 
     frame = ("ei1", "ei2", "mesh", "segments") if command == "refine" else ()  # cfg.frame()
@@ -96,6 +96,9 @@ def _options(cfg: RunConfig, command: str, defaults: dict[str, Any]) -> dict[str
             if (k in defaults or k in LAW_PARAMETERS) and k not in private
         }
     )
+    for key in cfg.table(command):  # as the command refuses it (cli.options.runfile)
+        if key.replace("-", "_") not in private:
+            refuse_core_only(f"{command}.{key}", key.replace("-", "_"))
     table = {k.replace("-", "_"): v for k, v in cfg.table(command).items()}
     reject_unknown(table, [*defaults, *LAW_PARAMETERS, *RUN_KEYS], command)
     out.update({k: v for k, v in table.items() if k not in RUN_KEYS})

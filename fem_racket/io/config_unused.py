@@ -14,10 +14,17 @@ from collections.abc import Iterable
 from typing import Any
 
 from fem_racket.frame.segments import PAPER_EI1
-from fem_racket.io.config_keys import CORE_KEYS
+from fem_racket.io.config_keys import CORE_DESTS, CORE_KEYS
 from fem_racket.validation import InputError, show
 
-__all__ = ["IMPACT_COMMANDS", "IMPACT_TABLES", "NEUTRAL", "refuse_unused"]
+__all__ = [
+    "CORE_ONLY",
+    "IMPACT_COMMANDS",
+    "IMPACT_TABLES",
+    "NEUTRAL",
+    "refuse_core_only",
+    "refuse_unused",
+]
 
 #: Core tables whose keys change the impacts a command computes.
 IMPACT_TABLES = ("frame", "ball", "contact", "impact", "hand", "strings", "oblique")
@@ -40,6 +47,10 @@ IMPACT_COMMANDS: dict[str, tuple[str, ...]] = {
 #: Option (argparse dest) -> the value that changes nothing: the racket at rest, on the axis,
 #: the standard frame (``frame.preset = "standard"``).
 NEUTRAL = {"racket_speed": 0.0, "offset": 0.0, "ei1": PAPER_EI1}
+#: Options (argparse dests) only the core tables set: a command's own table may set them only
+#: where the command spans them itself (sweep's axes, refine's element counts); it may always
+#: set its own ``out``/``overwrite``.
+CORE_ONLY = CORE_DESTS - {"out", "overwrite"}
 #: Options that matter only with a swing (``impact.racket_speed_m_s`` other than 0).
 SWING_ONLY = ("reference", "pivot")
 
@@ -71,3 +82,18 @@ def refuse_unused(cfg: Any, command: str, dests: Iterable[str]) -> None:
                 f"{dotted} = {show(cfg.get(dotted))} is not allowed with fem-racket {command}: "
                 "it has no such option, so the key would be ignored; remove it"
             )
+
+
+def refuse_core_only(where: str, dest: str) -> None:
+    """Refuse a command's table key ``where`` (dotted, e.g. ``map.speed``) that sets ``dest``, an
+    option only the core tables set (:data:`CORE_ONLY`), naming the core keys that set it.
+    Nothing happens for another option.
+
+    Raises
+    ------
+    InputError
+        ``map.speed is not allowed here: set impact.speed_m_s instead``.
+    """
+    if dest in CORE_ONLY:
+        core = [f"{t}.{k}" for t, ks in CORE_KEYS.items() for k, v in ks.items() if v.dest == dest]
+        raise InputError(f"{where} is not allowed here: set {' or '.join(core)} instead")

@@ -24,8 +24,8 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 from fem_racket.io.config import RunConfig, load_config
-from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
-from fem_racket.io.config_unused import refuse_unused
+from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS
+from fem_racket.io.config_unused import CORE_ONLY, refuse_core_only, refuse_unused
 from fem_racket.validation import InputError, show
 
 __all__ = [
@@ -39,8 +39,6 @@ __all__ = [
 
 #: Options that never come from a run file.
 _NOT_FROM_FILE = frozenset({"help", "config", "version"})
-#: Options only the core tables set; a command's table may still set its own out/overwrite.
-_CORE_ONLY = CORE_DESTS - {"out", "overwrite"}
 
 
 def add_config_option(
@@ -99,7 +97,7 @@ def file_options(sub: argparse.ArgumentParser) -> dict[str, argparse.Action]:
         for a in sub._actions
         if a.option_strings
         and a.dest not in _NOT_FROM_FILE
-        and (a.dest not in _CORE_ONLY or a.dest in own)
+        and (a.dest not in CORE_ONLY or a.dest in own)
         and a.default is not argparse.SUPPRESS
     }
 
@@ -192,12 +190,8 @@ def config_values(
     for key, value in cfg.table(table).items():
         where = f"{table}.{key}"
         dest = key.replace("-", "_")
-        if dest in _CORE_ONLY and dest not in options:
-            core = [
-                f"{t}.{k}" for t, ks in CORE_KEYS.items() for k, v in ks.items() if v.dest == dest
-            ]
-            raise InputError(f"{where} is not allowed here: set {' or '.join(core)} instead")
         if dest not in options:
+            refuse_core_only(where, dest)
             near = difflib.get_close_matches(dest, list(options), n=1, cutoff=0.6)
             hint = f"did you mean '{near[0]}'?" if near else ""
             allowed = ", ".join(sorted(options)) or "(none)"
