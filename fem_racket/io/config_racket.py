@@ -118,7 +118,8 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     """The least lead ``fem-racket customise --config`` finds for the file's frame: the
     Customisation of :func:`fem_racket.studies.customise.customise`; with ``out`` (else
     ``[customise] out``) the customised racket's mesh file, its sidecar and the maps before and
-    after (``[customise] maps``, else the command's) written, as the command writes them."""
+    after (``[customise] maps``, else the command's) written, as the command writes them;
+    ``[customise] maps`` without ``out`` is refused (the command writes no maps alone)."""
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.config_run import file_frame
@@ -132,6 +133,11 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     core = {**_PLAY, **{k: d[k] for k in _PLAY if k in d}, **_overwrite(cfg)}
     o = table_options(cfg, "customise", CUSTOMISE_OPTIONS, core)
     places, out = place_list(o["places"]), out or o["out"]
+    if out is None and "maps" in cfg.table("customise"):  # the command maps beside its mesh
+        raise InputError(
+            f"customise.maps = {show(o['maps'])} is not allowed without out: the maps are "
+            "written with the customised racket's mesh file (give out)"
+        )
     paths = (Path(out), Path(o["maps"])) if out is not None else None
     if paths is not None:
         for f in mesh_files(paths[0]):

@@ -123,7 +123,12 @@ def test_customise_writes_the_commands_files(cfg, capsys):
         assert set(a.data_vars) == set(b.data_vars) != set()
         for name in a.data_vars:
             np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
-    assert cfg.customise().summary() == result.summary()  # without out: no file
+    with pytest.raises(InputError, match=r"^customise\.maps = 'py_maps\.nc' is not allowed"):
+        cfg.customise()  # maps without out: the command writes no maps without the mesh
+    Path("no_maps.toml").write_text(RUN.replace('maps = "py_maps.nc"\n', ""))
+    files = sorted(Path().iterdir())
+    assert load_config("no_maps.toml").customise().summary() == result.summary()
+    assert sorted(Path().iterdir()) == files  # without out: no file
 
 
 def test_closest(cfg, capsys):
