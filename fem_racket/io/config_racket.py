@@ -111,7 +111,8 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
     for f in mesh_files(Path(out)):
         check_output_path(f, overwrite=o["overwrite"])
     work_begins()
-    return fit_files(fit, Path(out), {"config": str(cfg.source), **o}, overwrite=o["overwrite"])[0]
+    parameters = {"config": str(cfg.source), **o, "out": str(out)}
+    return fit_files(fit, Path(out), parameters, overwrite=o["overwrite"])[0]
 
 
 def customise_file(cfg: RunConfig, out: Any = None) -> Any:
@@ -150,7 +151,7 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     if paths is None:
         return customise(mesh, targets, places)
     play = {k: o[k] for k in _PLAY}
-    parameters = {"config": str(cfg.source), **o}
+    parameters = {"config": str(cfg.source), **o, "out": str(out)}
     return customise_files(mesh, targets, places, play, paths, parameters, o["overwrite"])[0]
 
 

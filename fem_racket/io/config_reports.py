@@ -77,7 +77,7 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)
-    parameters = {"config": str(cfg.source), "rackets": rackets, **o}
+    parameters = {"config": str(cfg.source), "rackets": rackets, **o, "out": [str(p) for p in outs]}
     for path in outs:
         write_compare(reports, diffs, path, overwrite=o["overwrite"], parameters=parameters)
     return reports

@@ -85,6 +85,11 @@ def _sidecar(path: Path) -> dict:
     return {k: data[k] for k in SUMMARY if k in data}
 
 
+def _parameters(path: Path) -> dict:
+    """The parameters a sidecar's provenance records."""
+    return json.loads(Path(f"{path}.json").read_text())["parameters"]
+
+
 def test_modes(cfg, capsys):
     cli = run_json(capsys, "modes", "--config", "run.toml")
     fm = cfg.modes()
@@ -104,6 +109,7 @@ def test_fit_writes_the_commands_files(cfg, capsys):
     same(py_json(segments), cli["segments"])
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu")) != {}
+    assert _parameters(Path("py.vtu"))["out"] == "py.vtu"  # the method's out, not [fit]'s
     assert cfg.fit().segments == frame.segments  # without out: the same frame, no file
     assert sorted(p.name for p in Path().iterdir()) == sorted(
         ["run.toml", "cli.vtu", "cli.vtu.json", "py.vtu", "py.vtu.json"]
@@ -118,6 +124,7 @@ def test_customise_writes_the_commands_files(cfg, capsys):
     same(summary, {k: cli[k] for k in summary})
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu"))
+    assert _parameters(Path("py.vtu"))["out"] == "py.vtu"
     xr = pytest.importorskip("xarray")
     with xr.open_dataset("py_maps.nc") as a, xr.open_dataset("cli_maps.nc") as b:
         assert set(a.data_vars) == set(b.data_vars) != set()
@@ -150,6 +157,7 @@ def test_compare_writes_the_commands_files(cfg, capsys):
     same(py_json({k: diffs[k] for k in theirs}), theirs)
     xr = pytest.importorskip("xarray")
     with xr.open_dataset("py.nc") as a, xr.open_dataset("cli.nc") as b:
+        assert json.loads(a.attrs["run_parameters"])["out"] == ["py.nc"]
         assert set(a.data_vars) == set(b.data_vars) != set()
         for name in a.data_vars:
             np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
