@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
 from fem_racket.io.config_tables import choice, flag, number, table_options, text, texts
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS
 from fem_racket.validation import InputError, work_begins
@@ -26,8 +26,6 @@ __all__ = ["CALIBRATE_OPTIONS", "COMPARE_OPTIONS", "calibrate_file", "compare_fi
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
-#: ``compare``'s play from the core tables: argparse dest -> the command's default.
-_PLAY = {"speed": 20.0, "racket_speed": 0.0, "reference": DEFAULT_REFERENCE, "pivot": None}
 
 
 #: The options of each command's table: dest -> (default, conversion); the commands' defaults.
@@ -63,7 +61,8 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     from fem_racket.io.setups import compare_play, read_setups
     from fem_racket.studies.compare import compare, differences
 
-    core = _core(cfg, {**_PLAY, "elements": 20, "add_mass": None, "overwrite": False})
+    defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
+    core = _core(cfg, defaults)
     o = table_options(cfg, "compare", COMPARE_OPTIONS, core)
     rackets = [str(r) for r in rackets]
     if len(rackets) < 2:

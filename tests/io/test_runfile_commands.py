@@ -219,6 +219,22 @@ def test_the_methods_read_the_commands_tables():
             assert default == (None if dest == "out" else cli[dest]), (command, dest)
 
 
+def test_the_methods_play_with_the_commands_defaults():
+    # the speed, swing and elements the methods take unless the core tables say: the parsers'
+    from fem_racket.cli.commands.config import _commands
+    from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
+    from fem_racket.io.config_racket import CUSTOMISE_MAPS
+
+    commands = _commands()
+    for command in ("customise", "compare", "modes"):
+        cli = {a.dest: a.default for a in commands[command]._actions}
+        assert cli["elements"] == FRAME_ELEMENTS, command
+        if command != "modes":
+            assert {k: cli[k] for k in PLAY_DEFAULTS} == PLAY_DEFAULTS, command
+    maps = next(a for a in commands["customise"]._actions if a.dest == "maps")
+    assert maps.default == CUSTOMISE_MAPS
+
+
 @pytest.mark.parametrize(
     ("command", "table", "words"),
     [
