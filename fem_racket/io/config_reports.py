@@ -13,6 +13,7 @@ the command writes, checked before the work.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Any
 
@@ -20,7 +21,7 @@ from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
 from fem_racket.io.config_tables import choice, flag, number, table_options, text, texts
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS
-from fem_racket.validation import InputError, work_begins
+from fem_racket.validation import InputError, show, work_begins
 
 __all__ = ["CALIBRATE_OPTIONS", "COMPARE_OPTIONS", "calibrate_file", "compare_file"]
 
@@ -64,6 +65,11 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
     core = _core(cfg, defaults)
     o = table_options(cfg, "compare", COMPARE_OPTIONS, core)
+    if isinstance(rackets, (str, os.PathLike)):  # one set-up, not a list of them
+        raise InputError(
+            f"rackets = {show(str(rackets))} is not allowed: must be a list of set-ups, at "
+            "least 2 (e.g. ['standard', 'rigid'])"
+        )
     rackets = [str(r) for r in rackets]
     if len(rackets) < 2:
         raise InputError(f"rackets = {len(rackets)} given is not allowed: need at least 2")

@@ -163,6 +163,12 @@ def test_compare_writes_the_commands_files(cfg, capsys):
             np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
 
 
+@pytest.mark.parametrize("rackets", ["standard", Path("standard")])
+def test_compare_refuses_one_set_up_for_a_list(cfg, rackets):
+    with pytest.raises(InputError, match=r"^rackets = 'standard' is not allowed: must be a list"):
+        cfg.compare(rackets)
+
+
 def test_calibrate_writes_the_commands_files(cfg, capsys):
     from fem_racket.io.calibration_files import calibration_summary
 
