@@ -160,7 +160,8 @@ def _modes(rec: Receptance, omega_c: np.ndarray, beta: float):
     kept, w2p, a2p = split_modes(rec.omega, rec.a, omega_c, beta)
     omega = np.broadcast_to(rec.omega, rec.a.shape)
     width = int(kept.max(initial=0)) + 1
-    W, A2 = np.ones((ncase, width)), np.zeros((ncase, width))
+    # columns after a case's modes: omega 1, a^2 0 (the kernel's zero modes), to a multiple of 4
+    W, A2 = np.ones((ncase, -(-width // 4) * 4)), np.zeros((ncase, -(-width // 4) * 4))
     cols = np.arange(width)[None, :] < kept[:, None]
     W[:, : width - 1] = np.where(cols[:, :-1], omega[:, : width - 1], 1.0)
     A2[:, : width - 1] = np.where(cols[:, :-1], rec.a[:, : width - 1] ** 2, 0.0)

@@ -123,18 +123,17 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
     w, a2 = modes
     mu0, h, n, scale, v = grid
     e = np.exp(1j * w * h)
-    Gw, c1, c2 = km.weights(w, h, cs)
+    Gw, c1, c2 = km.step_weights(e, w, h, cs)
     rigid = (mu0, h, c1, c2)
     ok, y, R, Rv = _start(kind, p, (e, a2, Gw, w), rigid, fdv, H, scale)
     if not ok:
         res[2] = 2.0
         return
     Bw = km.backward_weights(e, a2, h, Gw, w)
-    nm = w.size
-    Y = np.empty((2, nm))
+    nm = Bw.shape[1]
     kd0, kv0 = mu0 * h * h * c2[0, 3], mu0 * h * c1[0, 3]  # node m's own weight
-    for j in range(nm):
-        Y[0, j], Y[1, j] = y[j].real, y[j].imag
+    for j in range(nm):  # the states at node 3
+        Bw[13, j], Bw[14, j] = y[j].real, y[j].imag
         kd0 += Bw[11, j] * Bw[12, j]
         kv0 += Bw[10, j]
     stiff = 0.0
@@ -150,24 +149,27 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
             fd = f0 * c2[0, 0] + f1 * c2[0, 1] + f2 * c2[0, 2]
             fv = f0 * c1[0, 0] + f1 * c1[0, 1] + f2 * c1[0, 2]
             R, Rv = R + h * Rv + mu0 * h * h * fd, Rv + mu0 * h * fv
-            # the modes over the step (kernel_modes.backward_weights), written out here: an
+            # the modes over the step (kernel_modes.backward_weights; states and weights rows
+            # of one array at fixed rows: no run-time overlap checks), written out here: an
             # array passed to a function costs two atomic reference counts per node
-            k2 = 6 if m == 4 else 8
             for j in range(nm):
-                yr, yi = Y[0, j], Y[1, j]
+                yr, yi = Bw[13, j], Bw[14, j]
                 er, ei = Bw[0, j], Bw[1, j]
-                Y[0, j] = er * yr - ei * yi + Bw[2, j] * f0 + Bw[4, j] * f1 + Bw[k2, j] * f2
-                Y[1, j] = er * yi + ei * yr + Bw[3, j] * f0 + Bw[5, j] * f1 + Bw[k2 + 1, j] * f2
+                Bw[13, j] = er * yr - ei * yi + Bw[2, j] * f0 + Bw[4, j] * f1 + Bw[6, j] * f2
+                Bw[14, j] = er * yi + ei * yr + Bw[3, j] * f0 + Bw[5, j] * f1 + Bw[7, j] * f2
+            if m == 4:  # from now on the state lacks its node's own term: B_2 + e^{i theta} B_3
+                for j in range(nm):
+                    Bw[6, j], Bw[7, j] = Bw[8, j], Bw[9, j]
             # two fixed partial sums: the same bits in any batch
             d0, d1, v0, v1 = 0.0, 0.0, 0.0, 0.0
             for j in range(half):
-                d0 += Y[1, 2 * j] * Bw[12, 2 * j]
-                d1 += Y[1, 2 * j + 1] * Bw[12, 2 * j + 1]
-                v0 += Y[0, 2 * j]
-                v1 += Y[0, 2 * j + 1]
+                d0 += Bw[14, 2 * j] * Bw[12, 2 * j]
+                d1 += Bw[14, 2 * j + 1] * Bw[12, 2 * j + 1]
+                v0 += Bw[13, 2 * j]
+                v1 += Bw[13, 2 * j + 1]
             if odd:
-                d0 += Y[1, nm - 1] * Bw[12, nm - 1]
-                v0 += Y[0, nm - 1]
+                d0 += Bw[14, nm - 1] * Bw[12, nm - 1]
+                v0 += Bw[13, nm - 1]
             md, mv = d0 + d1, v0 + v1
             guess = 3.0 * H[_F, m - 1] - 3.0 * H[_F, m - 2] + H[_F, m - 3]
             lin = (fdv[0, m] - (R + md), fdv[1, m] - (Rv + mv), kd0, kv0)
@@ -203,7 +205,7 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
             energy = 0.0
             for j in range(nm):
                 if a2[j] > 0:
-                    yr, yi = Y[0, j] + Bw[10, j] * own, Y[1, j] + Bw[11, j] * own
+                    yr, yi = Bw[13, j] + Bw[10, j] * own, Bw[14, j] + Bw[11, j] * own
                     energy += 0.5 * (yr * yr + yi * yi) / a2[j]
             res[4] = energy
             kn.integrals(H, (m, res[1], n), h, cs, c1, res)
@@ -267,7 +269,9 @@ def march_cases(kind, P, modes, cases, fdv, cs, keep):
             v = speed[c]
             for m in range(4):
                 free[0, m], free[1, m] = v * (m * h[c]), v
-        k = nmode[c]
+        # the modes kept and zero modes (a^2 = 0: no weight, no state) up to a multiple of 4
+        # where the rows have room, so the pass over the modes has no scalar remainder
+        k = min(-(-nmode[c] // 4) * 4, W.shape[1])
         p = (P[c, 0], P[c, 1], P[c, 2], P[c, 3])  # a tuple: no reference counts per node
         grid = (mu0[c], h[c], n, scale[c], v)
         _case(kind, p, (W[c, :k], A2[c, :k]), grid, free, cs, work, res[c])

@@ -8,7 +8,8 @@ order of :func:`fem_racket.impact.general.compiled.kernel_law`), and
 :func:`~fem_racket.impact.general.step.turn_max`,
 :func:`~fem_racket.impact.general.step.hermite_root` and
 :func:`~fem_racket.impact.general.step.cubic_root`. Imported only where a kernel runs (numba
-is heavy); compiled code is cached on disk.
+is heavy); compiled code is cached on disk. The functions a node calls (scalars and tuples only)
+are inlined into the march's node loop.
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ LAW_IDS = {"linear": 0, "hunt-crossley": 1, "hysteretic": 2, "series": 3}
 _JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def end_value(law, p, z):
     """The deflection whose downward crossing ends a "displacement" contact [m]."""
     if law == 2:
@@ -59,7 +60,7 @@ def force(law, p, d, v, z):
     return p[2] * z + p[3] * (z * (z * z))
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def power(base, a, near):
     """base^a [-]; from ``near`` = (b0, b0^a) by its Taylor series in e = base / b0 - 1 where
     |e| (|a| + 4) <= 1e-4 (four terms: the rest < 1e-18 relative, below round-off), else by
@@ -76,7 +77,7 @@ def power(base, a, near):
     return base**a
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def force_partials(law, p, d, v, z, near):
     """(F, dF/d delta, dF/d delta', dF/dz, (base, base^(n - 1))) of a power law at most one
     power per call (x^n = x^(n-1) x; :func:`power` from ``near``, the last call's base and
@@ -103,13 +104,13 @@ def force_partials(law, p, d, v, z, near):
     return cubic, 0.0, 0.0, p[2] + 3.0 * p[3] * (z * z), near
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def rate(law, p, d, v, z):
     """z' of an ODE state (the series law's string bed) [m/s]."""
     return v - (p[2] * z + p[3] * (z * (z * z)) - p[0] * (d - z)) / p[1]
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def rate_partials(law, p, d, v, z):
     """(dz'/d delta, dz'/d delta', dz'/dz)."""
     c = p[1]
@@ -117,7 +118,7 @@ def rate_partials(law, p, d, v, z):
     return p[0] / c, 1.0, -(ds + p[0]) / c
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def hermite_value(s, p0, m0, p1, m1):
     """Cubic Hermite interpolant at fraction s (values p, slopes m per step)."""
     s2, s3 = s * s, s * s * s
@@ -125,7 +126,7 @@ def hermite_value(s, p0, m0, p1, m1):
     return ends + (s3 - 2 * s2 + s) * m0 + (s3 - s2) * m1
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def turn_max(d0, v0, d1, v1, h):
     """Largest delta on the step (cubic Hermite through the ends' delta and delta')."""
     top = max(d0, d1)

@@ -9,9 +9,10 @@ theta = omega h (:mod:`fem_racket.impact.general.cubic_force`); the rigid modes 
 The starting steps use :func:`advance` (complex states, any stencil). After them every step has
 the backward stencil, and the march (:func:`fem_racket.impact.general.kernel._case`, where this
 loop is written out) carries the states as real and imaginary rows with the
-weights B_r = e^{i theta} a^2 h G_r folded per mode; a node's own weight B_3 (which multiplies
-the force still unknown while its node is solved) is carried into the next step as
-B_2 + e^{i theta} B_3, so a node costs one pass over the modes.
+weights B_r = e^{i theta} a^2 h G_r folded per mode (rows of one array,
+:func:`backward_weights`); a node's own weight B_3 (which multiplies the force still unknown
+while its node is solved) is carried into the next step as B_2 + e^{i theta} B_3, so a node
+costs one pass over the modes.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ __all__ = [
     "backward_weights",
     "moments",
     "start_weights",
+    "step_weights",
     "weights",
 ]
 
@@ -45,15 +47,15 @@ def _over_ix(z, x):
 
 
 @njit(**_JIT)
-def moments(x, out):
-    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``.
+def moments(x, e, out):
+    """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``
+    (``e`` = e^{i x}).
 
     |x| >= 2: the upward recursion M_q = (e^{ix} - q M_{q-1}) / (i x); below, M_3 by its series
     sum_n (i x)^n / (n! (n + 4)) and the downward recursion M_{q-1} = (e^{ix} - i x M_q) / q,
     which is stable there (it multiplies an error by |x| / q < 1).
     """
     ix = 1j * x
-    e = np.exp(ix)
     if abs(x) >= 2.0:
         prev = _over_ix(e - 1.0, x)
         out[0] = prev
@@ -79,17 +81,25 @@ def moments(x, out):
 def weights(w, h, cs):
     """Per mode and stencil (backward, forward 0, forward 1) G_r = sum_q c_rq conj(M_q), and
     the rigid weights c1_r = sum_q c_rq / (q + 1), c2_r = sum_q c_rq / ((q + 1)(q + 2))."""
+    return step_weights(np.exp(1j * w * h), w, h, cs)
+
+
+@njit(**_JIT)
+def step_weights(e, w, h, cs):
+    """:func:`weights` from e^{i omega h} per mode (the march has it already: one complex
+    exponential per mode, not two)."""
     nm = w.size
     Gw = np.empty((3, 4, nm), dtype=np.complex128)
     M = np.empty(4, dtype=np.complex128)
     for j in range(nm):
-        moments(w[j] * h, M)
-        for q in range(4):
-            M[q] = M[q].conjugate()
+        moments(w[j] * h, e[j], M)
         for s in range(3):
-            for r in range(4):
-                Gw[s, r, j] = cs[s, r, 0] * M[0] + cs[s, r, 1] * M[1] + cs[s, r, 2] * M[2]
-                Gw[s, r, j] += cs[s, r, 3] * M[3]
+            for r in range(4):  # sum_q c_rq conj(M_q), real times complex written out
+                gr, gi = 0.0, 0.0
+                for q in range(4):
+                    gr += cs[s, r, q] * M[q].real
+                    gi -= cs[s, r, q] * M[q].imag
+                Gw[s, r, j] = complex(gr, gi)
     c1, c2 = np.zeros((3, 4)), np.zeros((3, 4))
     for s in range(3):
         for r in range(4):
@@ -146,11 +156,13 @@ def start_weights(modal, w, rigid):
 
 @njit(**_JIT)
 def backward_weights(e, a2, h, Gw, w):
-    """Rows (13, modes) for the march's step over the modes: e^{i theta}, B_0, B_1, B_2,
-    B_2 + e^{i theta} B_3, B_3 (real and imaginary rows each) and 1 / omega
-    (B_r = e^{i theta} a^2 h G_r, backward stencil)."""
+    """Rows (15, modes) for the march's step over the modes: e^{i theta}, B_0, B_1, B_2,
+    B_2 + e^{i theta} B_3, B_3 (real and imaginary rows each), 1 / omega (B_r = e^{i theta}
+    a^2 h G_r, backward stencil), and two rows left for the march's states (real, imaginary):
+    in the same array as the weights, at fixed rows, the compiler sees that the pass over the
+    modes reads and writes rows that do not overlap and needs no run-time checks."""
     nm = w.size
-    out = np.empty((13, nm))
+    out = np.empty((15, nm))
     for j in range(nm):
         g = e[j] * a2[j] * h
         b2, b3 = g * Gw[0, 2, j], g * Gw[0, 3, j]

@@ -40,7 +40,7 @@ NEWTON_ITER = 40
 F, D, V, Z, G = range(5)
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def newton(kind, p, lin, guess, prev, step):
     """F and z at a node (as step.solve_step for one case); ok False if not converged.
 
@@ -81,7 +81,7 @@ def newton(kind, p, lin, guess, prev, step):
     return F, z, False
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def ended(kind, p, prev, now):
     """True where the contact ends in the step from node m - 1 to node m (``prev``, ``now``:
     F, delta and z at each, scalars: no array passes through a node's calls)."""
@@ -130,7 +130,7 @@ def node_base(kind, H, c1, at, h):
     return H[Z, m - 1], zb, zc, H[D, m - 1], H[V, m - 1]
 
 
-@njit(**_JIT)
+@njit(inline="always", **_JIT)
 def solve_node(kind, p, prev, lin, guess, step):
     """The contact equation at a node (``prev`` from :func:`node_base`, ``lin`` and ``step``
     as :func:`newton` takes them): F, delta, delta', z and whether Newton converged."""
@@ -138,7 +138,7 @@ def solve_node(kind, p, prev, lin, guess, step):
     A, B, kd0, kv0 = lin
     Fm, zm, ok = newton(kind, p, lin, guess, prev, step)
     d, v = A - kd0 * Fm, B - kv0 * Fm
-    if state == 1:
+    if state == 1 and not ok:  # converged: newton's z is this one, at the same F
         zm = max(prev[0], kl.turn_max(prev[3], prev[4], d, v, step[0]))
     return Fm, d, v, zm, ok
 

@@ -61,3 +61,37 @@ def test_cases_of_different_exponents_are_each_as_alone(standard_model):
         assert out.last[i] == one.last[0]
         for key in ("force", "deflection", "rate", "state"):
             assert np.array_equal(getattr(out, key)[i, :n], getattr(one, key)[0, :n]), key
+
+
+@pytest.mark.parametrize("name", ["kawazoe-1997-nonlinear", "hunt-crossley", "series"])
+def test_zero_modes_the_kernel_pads_with_change_nothing(standard_model, name):
+    # march_cases pads a case's modes with zero modes (a^2 = 0) up to a multiple of 4 where its
+    # rows have room (compiled._modes gives them room): every case's answer and histories are
+    # those of its own modes alone (rows exactly as wide: nothing padded), bit for bit
+    from fem_racket.contact.presets import PRESETS, get_law
+    from fem_racket.impact.general import jit
+    from fem_racket.impact.general.compiled import kernel_law
+    from fem_racket.impact.general.cubic_force import STENCILS
+
+    jit.prepare(2 * jit.INTERPRETED_NODES)  # the compiled kernels
+    from fem_racket.impact.general.kernel import march_cases
+
+    rec = receptance(standard_model, [0.6, 0.75, 0.9], 0.057)
+    law = kernel_law(PRESETS[name] if name in PRESETS else get_law(name), 3)
+    kind = (law.law, law.state, law.end, 1)
+    nmode = np.array([5, 7, 8])  # 3, 1 and 0 zero modes padded
+    W, A2 = np.ones((3, 8)), np.zeros((3, 8))
+    for c, k in enumerate(nmode):
+        W[c, :k], A2[c, :k] = rec.omega[:k], rec.a[c, :k] ** 2
+    speed = np.array([30.0, 20.0, 40.0])
+    mu0, h, nsteps = rec.compliance, np.full(3, 2e-5), np.full(3, 600)
+    cases = (mu0, h, nsteps, speed, speed / (mu0 * 5e-3))
+    none = np.zeros((0, 2, 0))
+    store, start, res = march_cases(kind, law.params, (W, A2, nmode), cases, none, STENCILS, True)
+    assert np.all(res[:, 2] == 0.0)  # every case separated
+    for c, k in enumerate(nmode):
+        one = (W[c : c + 1, :k].copy(), A2[c : c + 1, :k].copy(), nmode[c : c + 1])
+        alone = tuple(x[c : c + 1] for x in cases)
+        s1, _, r1 = march_cases(kind, law.params[c : c + 1], one, alone, none, STENCILS, True)
+        assert np.array_equal(res[c], r1[0])
+        assert np.array_equal(store[:, start[c] : start[c + 1]], s1)
