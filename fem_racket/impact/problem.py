@@ -37,8 +37,13 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import ClampedHead
 from fem_racket.impact.incidence import Incidence, check_incidence
 from fem_racket.impact.model_cache import frame_model
-from fem_racket.impact.offaxis import check_offsets
-from fem_racket.impact.problem_checks import check_held, check_law, check_strings, check_structure
+from fem_racket.impact.problem_checks import (
+    check_held,
+    check_law,
+    check_offset,
+    check_strings,
+    check_structure,
+)
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import (
@@ -176,14 +181,7 @@ class ImpactProblem:
         if self.strings is not None:
             check_strings(self)
         object.__setattr__(self, "offset", check_finite("offset", self.offset, "m"))
-        if self.offset != 0.0:
-            if self.held:
-                raise InputError(
-                    f"offset = {show(self.offset)} m is not allowed with a hand: the held racket "
-                    "is struck on its long axis (it does not twist)"
-                )
-            if self.strings is None:  # on the bed: checked against the bed's head
-                check_offsets(self.model, self.impact.position, self.offset)
+        check_offset(self)
         check_incidence(self.incidence, strung=self.strings is not None)
 
     def ball_law(self) -> ContactLaw:
@@ -286,11 +284,9 @@ class ImpactProblem:
             motion = f"swinging {self.racket_speed:.3g} m/s"
         elif self.frame_velocity is not None:
             motion = "moving"
-        bed = (
-            ""
-            if self.strings is None
-            else f"; strings {self.strings.pattern} at " + (f"{self.strings.tension_n:.4g} N")
-        )
+        bed = ""
+        if self.strings is not None:
+            bed = f"; strings {self.strings.pattern} at {self.strings.tension_n:.4g} N"
         if self.incidence is not None:  # oblique
             bed += f"; {self.incidence.angle:.4g} deg, {self.incidence.spin:.4g} rpm"
         return (

@@ -1,9 +1,10 @@
 """The checks of an :class:`~fem_racket.impact.problem.ImpactProblem` that concern its structure
-(a clamped head), its contact law, its hand and its string bed: each refuses, in one line, a
-field the rest of the problem cannot use. The problem is typed ``Any`` here: importing its class
-would make an import cycle (it calls these). The bed's check lives here, not in the string bed's
-room (:mod:`fem_racket.impact.strung`), so that the problem, a base module of impact/, does not
-import a method's room; the room takes :func:`bed_coordinates` from here."""
+(a clamped head), its contact law, its hand, its string bed and its impact point's offset: each
+refuses, in one line, a field the rest of the problem cannot use. The problem is typed ``Any``
+here: importing its class would make an import cycle (it calls these). The bed's check lives
+here, not in the string bed's room (:mod:`fem_racket.impact.strung`), so that the problem, a
+base module of impact/, does not import a method's room; the room takes :func:`bed_coordinates`
+from here."""
 
 from __future__ import annotations
 
@@ -17,10 +18,18 @@ from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.hand import check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import CENTRE, ClampedHead
+from fem_racket.impact.offaxis import check_offsets
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, show
 
-__all__ = ["bed_coordinates", "check_held", "check_law", "check_strings", "check_structure"]
+__all__ = [
+    "bed_coordinates",
+    "check_held",
+    "check_law",
+    "check_offset",
+    "check_strings",
+    "check_structure",
+]
 
 
 def check_law(problem: Any) -> None:
@@ -41,6 +50,20 @@ def check_law(problem: Any) -> None:
             f"{show(problem.law.name)}: the law ends contact by its own condition "
             f"({problem.law.end})"
         )
+
+
+def check_offset(problem: Any) -> None:
+    """Refuse a lateral ``offset`` [m] off the long axis with a hand (the held racket does not
+    twist), or one off the head outline (on a string bed: checked against the bed's head)."""
+    if problem.offset == 0.0:
+        return
+    if problem.held:
+        raise InputError(
+            f"offset = {show(problem.offset)} m is not allowed with a hand: the held racket "
+            "is struck on its long axis (it does not twist)"
+        )
+    if problem.strings is None:  # on the bed: checked against the bed's head
+        check_offsets(problem.model, problem.impact.position, problem.offset)
 
 
 def check_held(problem: Any) -> None:

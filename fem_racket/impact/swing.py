@@ -156,16 +156,21 @@ class Rebound(Protocol):
     """An impact's outcome on a racket at rest or swinging (a free or a held racket's)."""
 
     @property
-    def apparent_cor(self) -> float: ...
+    def apparent_cor(self) -> float:
+        """Apparent COR e_A = (v_out - v_r) / (v_in + v_r) [-]: that of the racket at rest
+        struck at the closing speed."""
 
     @property
-    def ball_speed_out(self) -> float: ...
+    def ball_speed_out(self) -> float:
+        """The ball's speed after impact v_out [m/s], away from the racket."""
 
     @property
-    def contact_time(self) -> float: ...
+    def contact_time(self) -> float:
+        """Contact time t_c [s]."""
 
     @property
-    def peak_force(self) -> float: ...
+    def peak_force(self) -> float:
+        """Peak contact force [N]."""
 
 
 def rebound_summary(result: Rebound, racket_speed: float) -> dict[str, float]:

@@ -15,7 +15,26 @@ from fem_racket.frame.segments import PAPER_EI1
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 
-__all__ = ["DEFAULTS", "DEFAULT_STEP", "SIMULATE_DEFAULTS", "given"]
+__all__ = [
+    "DEFAULTS",
+    "DEFAULT_STEP",
+    "FRAME_ELEMENTS",
+    "PLAY_DEFAULTS",
+    "SIMULATE_DEFAULTS",
+    "given",
+]
+
+#: The beam elements of a frame of segments unless given: ``--elements``'s default (the paper's).
+FRAME_ELEMENTS = 20
+#: The ball's speed [m/s] and the racket's swing (racket speed [m/s], reference point x/L [-],
+#: pivot [m]) unless given: the defaults of ``--speed``, ``--racket-speed``, ``--reference`` and
+#: ``--pivot`` (a ball at 20 m/s on a racket at rest).
+PLAY_DEFAULTS: dict[str, Any] = {
+    "speed": 20.0,
+    "racket_speed": 0.0,
+    "reference": DEFAULT_REFERENCE,
+    "pivot": None,
+}
 
 #: The options of :func:`fem_racket.simulate` a file or the command line may set, with their
 #: defaults: an option at its default that was not given is left to the library.
@@ -38,11 +57,9 @@ DEFAULTS: dict[str, Any] = {
 SIMULATE_DEFAULTS: dict[str, Any] = {
     **DEFAULTS,
     "ei1": PAPER_EI1,
-    "elements": 20,
+    "elements": FRAME_ELEMENTS,
     "position": 0.75,
-    "speed": 20.0,
-    "racket_speed": 0.0,
-    "reference": DEFAULT_REFERENCE,
+    **{k: v for k, v in PLAY_DEFAULTS.items() if v is not None},
     "law": "linear",
 }
 #: The histories' output step [s] without ``output_step`` (the command's ``--output-step``

@@ -18,7 +18,7 @@ from typing import Any
 
 from fem_racket.frame.clock import PLACES
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
-from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
 from fem_racket.io.config_tables import Option, flag, integer, number, table_options, text
 from fem_racket.studies.target_values import RANKED, TARGETS, parse_target
 from fem_racket.validation import InputError, check_integer, show, work_begins
@@ -37,10 +37,8 @@ __all__ = [
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
-#: The maps of ``customise`` unless ``[customise] maps`` says (the command's default).
+#: The maps of ``customise`` unless ``--maps``/``[customise] maps`` says (the command's default).
 CUSTOMISE_MAPS = str(Path("output") / "customised_map.png")
-#: The swing and speed of customise's maps: argparse dest -> the command's default.
-_PLAY = {"speed": 20.0, "racket_speed": 0.0, "reference": DEFAULT_REFERENCE, "pivot": None}
 
 
 def _target(where: str, value: Any) -> Any:
@@ -83,7 +81,7 @@ def modes_file(cfg: RunConfig) -> Any:
     o = table_options(cfg, "modes", MODES_OPTIONS)
     if o["count"] < 1:
         raise InputError(f"count = {o['count']} is not allowed: must be an integer >= 1")
-    model = FrameModel.build(file_frame(cfg), cfg.defaults().get("elements", 20))
+    model = FrameModel.build(file_frame(cfg), cfg.defaults().get("elements", FRAME_ELEMENTS))
     work_begins()
     return model.modes(o["count"])
 
@@ -111,14 +109,16 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
     for f in mesh_files(Path(out)):
         check_output_path(f, overwrite=o["overwrite"])
     work_begins()
-    return fit_files(fit, Path(out), {"config": str(cfg.source), **o}, overwrite=o["overwrite"])[0]
+    parameters = {"config": str(cfg.source), **o, "out": str(out)}
+    return fit_files(fit, Path(out), parameters, overwrite=o["overwrite"])[0]
 
 
 def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     """The least lead ``fem-racket customise --config`` finds for the file's frame: the
     Customisation of :func:`fem_racket.studies.customise.customise`; with ``out`` (else
     ``[customise] out``) the customised racket's mesh file, its sidecar and the maps before and
-    after (``[customise] maps``, else the command's) written, as the command writes them."""
+    after (``[customise] maps``, else the command's) written, as the command writes them;
+    ``[customise] maps`` without ``out`` is refused (the command writes no maps alone)."""
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.config_run import file_frame
@@ -129,22 +129,28 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.studies.target_values import place_list, targets_from
 
     d = cfg.defaults()
-    core = {**_PLAY, **{k: d[k] for k in _PLAY if k in d}, **_overwrite(cfg)}
+    core = {**PLAY_DEFAULTS, **{k: d[k] for k in PLAY_DEFAULTS if k in d}, **_overwrite(cfg)}
     o = table_options(cfg, "customise", CUSTOMISE_OPTIONS, core)
     places, out = place_list(o["places"]), out or o["out"]
+    if out is None and "maps" in cfg.table("customise"):  # the command maps beside its mesh
+        raise InputError(
+            f"customise.maps = {show(o['maps'])} is not allowed without out: the maps are "
+            "written with the customised racket's mesh file (give out)"
+        )
     paths = (Path(out), Path(o["maps"])) if out is not None else None
     if paths is not None:
         for f in mesh_files(paths[0]):
             check_output_path(f, overwrite=o["overwrite"])
         check_map_outputs([paths[1]], overwrite=o["overwrite"])
     frame = file_frame(cfg)
-    mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, d.get("elements", 20))
+    elements = d.get("elements", FRAME_ELEMENTS)
+    mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, elements)
     targets = targets_from(o, catalogue(mesh, f1=False))
     work_begins()
     if paths is None:
         return customise(mesh, targets, places)
-    play = {k: o[k] for k in _PLAY}
-    parameters = {"config": str(cfg.source), **o}
+    play = {k: o[k] for k in PLAY_DEFAULTS}
+    parameters = {"config": str(cfg.source), **o, "out": str(out)}
     return customise_files(mesh, targets, places, play, paths, parameters, o["overwrite"])[0]
 
 

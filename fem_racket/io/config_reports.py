@@ -13,21 +13,20 @@ the command writes, checked before the work.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Any
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
 from fem_racket.io.config_tables import choice, flag, number, table_options, text, texts
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS
-from fem_racket.validation import InputError, work_begins
+from fem_racket.validation import InputError, show, work_begins
 
 __all__ = ["CALIBRATE_OPTIONS", "COMPARE_OPTIONS", "calibrate_file", "compare_file"]
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
-#: ``compare``'s play from the core tables: argparse dest -> the command's default.
-_PLAY = {"speed": 20.0, "racket_speed": 0.0, "reference": DEFAULT_REFERENCE, "pivot": None}
 
 
 #: The options of each command's table: dest -> (default, conversion); the commands' defaults.
@@ -63,8 +62,14 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     from fem_racket.io.setups import compare_play, read_setups
     from fem_racket.studies.compare import compare, differences
 
-    core = _core(cfg, {**_PLAY, "elements": 20, "add_mass": None, "overwrite": False})
+    defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
+    core = _core(cfg, defaults)
     o = table_options(cfg, "compare", COMPARE_OPTIONS, core)
+    if isinstance(rackets, (str, os.PathLike)):  # one set-up, not a list of them
+        raise InputError(
+            f"rackets = {show(str(rackets))} is not allowed: must be a list of set-ups, at "
+            "least 2 (e.g. ['standard', 'rigid'])"
+        )
     rackets = [str(r) for r in rackets]
     if len(rackets) < 2:
         raise InputError(f"rackets = {len(rackets)} given is not allowed: need at least 2")
@@ -77,7 +82,7 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)
-    parameters = {"config": str(cfg.source), "rackets": rackets, **o}
+    parameters = {"config": str(cfg.source), "rackets": rackets, **o, "out": [str(p) for p in outs]}
     for path in outs:
         write_compare(reports, diffs, path, overwrite=o["overwrite"], parameters=parameters)
     return reports

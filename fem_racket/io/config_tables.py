@@ -29,8 +29,17 @@ __all__ = [
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
-#: Table keys that only set how the command prints.
-PRINT_KEYS = ("json", "quiet")
+#: Table keys that only set how each command prints: the command's own ``--json``/``--quiet``
+#: (a key its parser lacks is refused, as ``--config`` refuses it).
+PRINT_KEYS = {
+    "modes": ("json", "quiet"),
+    "fit": ("json",),
+    "customise": ("json",),
+    "closest": ("json",),
+    "compare": ("json",),
+    "calibrate": ("json",),
+    "reproduce": ("quiet",),
+}
 #: An option's conversion: (dotted key, raw TOML value) -> the option's value.
 Option = Callable[[str, Any], Any]
 
@@ -115,11 +124,11 @@ def table_options(
     Returns
     -------
     dict
-        dest -> value (the :data:`PRINT_KEYS` left out).
+        dest -> value (the command's :data:`PRINT_KEYS` left out).
     """
     table = COMMAND_TABLES.get(command, command)
     own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
-    reject_unknown(own, [*options, *PRINT_KEYS], table)
+    reject_unknown(own, [*options, *PRINT_KEYS[command]], table)
     out = {dest: default for dest, (default, _) in options.items()}
     out.update(core or {})
     for dest, value in own.items():

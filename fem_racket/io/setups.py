@@ -39,7 +39,10 @@ def _from_run_file(path: Path, elements: int) -> tuple[Setup, list[Lead]]:
             f"{', '.join(f'[{t}]' for t in SETUP_TABLES)} (the command plays every set-up alike)"
         )
     d = cfg.defaults()
-    frame = cfg.frame() or standard_frame()
+    try:  # an implausible frame refused, the run file named as in its other refusals
+        frame = cfg.frame() or standard_frame()
+    except InputError as exc:
+        raise InputError(f"{path}: {exc}") from None
     kwargs = {k: d[k] for k in ("ball_mass", "kcb", "zeta") if k in d}
     law = cfg.simulate_kwargs().get("law")
     return (

@@ -66,6 +66,11 @@ CASES = [
         ["simulate", "--config", "mm.toml"],
         ("frame.segments length = 680 m", "millimetres"),
     ),
+    (
+        "compare-segments-mm",
+        ["compare", "standard", "mm.toml"],
+        ("mm.toml: frame.segments length = 680 m", "millimetres"),
+    ),
 ]
 
 RUN_FILES = {

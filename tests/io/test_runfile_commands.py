@@ -85,6 +85,11 @@ def _sidecar(path: Path) -> dict:
     return {k: data[k] for k in SUMMARY if k in data}
 
 
+def _parameters(path: Path) -> dict:
+    """The parameters a sidecar's provenance records."""
+    return json.loads(Path(f"{path}.json").read_text())["parameters"]
+
+
 def test_modes(cfg, capsys):
     cli = run_json(capsys, "modes", "--config", "run.toml")
     fm = cfg.modes()
@@ -104,6 +109,7 @@ def test_fit_writes_the_commands_files(cfg, capsys):
     same(py_json(segments), cli["segments"])
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu")) != {}
+    assert _parameters(Path("py.vtu"))["out"] == "py.vtu"  # the method's out, not [fit]'s
     assert cfg.fit().segments == frame.segments  # without out: the same frame, no file
     assert sorted(p.name for p in Path().iterdir()) == sorted(
         ["run.toml", "cli.vtu", "cli.vtu.json", "py.vtu", "py.vtu.json"]
@@ -118,12 +124,18 @@ def test_customise_writes_the_commands_files(cfg, capsys):
     same(summary, {k: cli[k] for k in summary})
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu"))
+    assert _parameters(Path("py.vtu"))["out"] == "py.vtu"
     xr = pytest.importorskip("xarray")
     with xr.open_dataset("py_maps.nc") as a, xr.open_dataset("cli_maps.nc") as b:
         assert set(a.data_vars) == set(b.data_vars) != set()
         for name in a.data_vars:
             np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
-    assert cfg.customise().summary() == result.summary()  # without out: no file
+    with pytest.raises(InputError, match=r"^customise\.maps = 'py_maps\.nc' is not allowed"):
+        cfg.customise()  # maps without out: the command writes no maps without the mesh
+    Path("no_maps.toml").write_text(RUN.replace('maps = "py_maps.nc"\n', ""))
+    files = sorted(Path().iterdir())
+    assert load_config("no_maps.toml").customise().summary() == result.summary()
+    assert sorted(Path().iterdir()) == files  # without out: no file
 
 
 def test_closest(cfg, capsys):
@@ -145,9 +157,16 @@ def test_compare_writes_the_commands_files(cfg, capsys):
     same(py_json({k: diffs[k] for k in theirs}), theirs)
     xr = pytest.importorskip("xarray")
     with xr.open_dataset("py.nc") as a, xr.open_dataset("cli.nc") as b:
+        assert json.loads(a.attrs["run_parameters"])["out"] == ["py.nc"]
         assert set(a.data_vars) == set(b.data_vars) != set()
         for name in a.data_vars:
             np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
+
+
+@pytest.mark.parametrize("rackets", ["standard", Path("standard")])
+def test_compare_refuses_one_set_up_for_a_list(cfg, rackets):
+    with pytest.raises(InputError, match=r"^rackets = 'standard' is not allowed: must be a list"):
+        cfg.compare(rackets)
 
 
 def test_calibrate_writes_the_commands_files(cfg, capsys):
@@ -182,10 +201,11 @@ def test_reproduce_writes_the_commands_files(cfg, capsys, monkeypatch):
 
 def test_the_methods_read_the_commands_tables():
     # every key of each command's table, with the command's default (but out: no file unless
-    # given); json and quiet only say how the command prints
+    # given); json and quiet only say how the command prints, taken where its parser has them
     from fem_racket.cli.commands.config import _commands
     from fem_racket.cli.options.runfile import file_options
     from fem_racket.io import config_racket, config_reports
+    from fem_racket.io.config_tables import PRINT_KEYS
     from fem_racket.paper.config_reproduce import REPRODUCE_OPTIONS
 
     tables = {
@@ -200,9 +220,25 @@ def test_the_methods_read_the_commands_tables():
     commands = _commands()
     for command, options in tables.items():
         cli = {d: a.default for d, a in file_options(commands[command]).items()}
-        assert set(cli) - {"json", "quiet"} == set(options), command
+        assert set(cli) == set(options) | set(PRINT_KEYS[command]), command
         for dest, (default, _) in options.items():
             assert default == (None if dest == "out" else cli[dest]), (command, dest)
+
+
+def test_the_methods_play_with_the_commands_defaults():
+    # the speed, swing and elements the methods take unless the core tables say: the parsers'
+    from fem_racket.cli.commands.config import _commands
+    from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
+    from fem_racket.io.config_racket import CUSTOMISE_MAPS
+
+    commands = _commands()
+    for command in ("customise", "compare", "modes"):
+        cli = {a.dest: a.default for a in commands[command]._actions}
+        assert cli["elements"] == FRAME_ELEMENTS, command
+        if command != "modes":
+            assert {k: cli[k] for k in PLAY_DEFAULTS} == PLAY_DEFAULTS, command
+    maps = next(a for a in commands["customise"]._actions if a.dest == "maps")
+    assert maps.default == CUSTOMISE_MAPS
 
 
 @pytest.mark.parametrize(
@@ -218,6 +254,9 @@ def test_the_methods_read_the_commands_tables():
         ("compare", "[compare]\npoint = 1.5\n", "position = 1.5 x/L is not allowed"),
         ("calibrate", '[calibrate]\nfamily = "nope"\n', "calibrate.family = 'nope' is not"),
         ("reproduce", "[reproduce]\ndpi = 10\n", "dpi = 10"),
+        ("fit", "[fit]\nlength = 0.685\nquiet = true\n", "fit.quiet is not a known key"),
+        ("compare", "[compare]\nquiet = true\n", "compare.quiet is not a known key"),
+        ("reproduce", "[reproduce]\njson = true\n", "reproduce.json is not a known key"),
     ],
 )
 def test_refused_alike(tmp_path, monkeypatch, capsys, command, table, words):

@@ -36,10 +36,11 @@ from fem_racket.cli.options.targets import (
     targets_from_args,
 )
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
+from fem_racket.io.config_racket import CUSTOMISE_MAPS
 
 #: Where the mesh and the maps go unless --out / --maps are given.
 DEFAULT_OUTPUT = Path("output") / "customised.vtu"
-DEFAULT_MAPS = Path("output") / "customised_map.png"
+DEFAULT_MAPS = Path(CUSTOMISE_MAPS)
 
 
 def register(sub: argparse._SubParsersAction) -> None:

@@ -9,6 +9,7 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.plausible import check_implement
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
+from fem_racket.io.config_defaults import FRAME_ELEMENTS
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.validation import InputError
 
@@ -80,7 +81,7 @@ def add_elements_option(
 ) -> None:
     """--elements N: the cells a frame of segments is meshed with, 20 by default (the paper's);
     ``text`` its help."""
-    group.add_argument("--elements", type=int, default=20, metavar="N", help=text)
+    group.add_argument("--elements", type=int, default=FRAME_ELEMENTS, metavar="N", help=text)
 
 
 def add_frame_options(parser: argparse.ArgumentParser) -> None:
@@ -105,7 +106,7 @@ def frame_from_args(
     Lead (--add-mass, a run file's ``[[frame.lead]]``) is added last: the frame becomes a mesh
     (``--elements`` cells for a Frame) with the strips on it.
     """
-    return with_lead(_bare_frame(args, exclusive), args, getattr(args, "elements", 20))
+    return with_lead(_bare_frame(args, exclusive), args, getattr(args, "elements", FRAME_ELEMENTS))
 
 
 def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame | FrameMesh:

@@ -20,6 +20,7 @@ from fem_racket.impact.solvers import SOLVER_NAMES, auto_method
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_defaults import DEFAULTS as SIMULATE_DEFAULTS
+from fem_racket.io.config_defaults import PLAY_DEFAULTS
 from fem_racket.validation import InputError, show
 
 __all__ = [
@@ -77,7 +78,8 @@ def add_speed_option(
     group: argparse._ArgumentGroup, text: str = "incident ball speed V_B0 [m/s] (default 20)"
 ) -> None:
     """--speed M_S: the ball's speed before impact [m/s], 20 by default; ``text`` its help."""
-    group.add_argument("--speed", type=float, default=20.0, metavar="M_S", help=text)
+    speed = PLAY_DEFAULTS["speed"]
+    group.add_argument("--speed", type=float, default=speed, metavar="M_S", help=text)
 
 
 def add_ball_options(
@@ -107,7 +109,7 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--racket-speed",
         type=float,
-        default=0.0,
+        default=PLAY_DEFAULTS["racket_speed"],
         metavar="M_S",
         help="racket speed towards the ball before impact [m/s] at the --reference point "
         "(default 0: a racket at rest)",
@@ -115,7 +117,7 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--reference",
         type=float,
-        default=DEFAULT_REFERENCE,
+        default=PLAY_DEFAULTS["reference"],
         metavar="X_OVER_L",
         help=f"point x/L [-] whose speed --racket-speed gives (default {DEFAULT_REFERENCE}, the "
         "string centre)",
@@ -123,7 +125,7 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--pivot",
         type=float,
-        default=None,
+        default=PLAY_DEFAULTS["pivot"],
         metavar="M",
         help="the racket turns about this point [m from the butt; negative beyond it, e.g. a "
         "shoulder], so the impact point moves at V (x_i - P)/(x_ref - P) (default: none, the "

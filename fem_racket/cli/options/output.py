@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.text import significant
-from fem_racket.io.racket_files import mesh_files, write_mesh_files
+from fem_racket.io.racket_files import mesh_files
 from fem_racket.outputs.jsonable import json_ready
 
 __all__ = [
@@ -30,7 +30,6 @@ __all__ = [
     "print_written_folder",
     "run_parameters",
     "write_json",
-    "write_mesh_files",
     "write_result_files",
     "write_text",
 ]

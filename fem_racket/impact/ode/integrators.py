@@ -9,7 +9,7 @@
 
 The BDF paths accept either basis (``modal`` or the full ``physical`` FE system) and carry the
 general first-order form ``y' = A y``; the separation events are named parts of the model
-(:data:`fem_racket.system.SEPARATION_EVENTS`) turned into terminal/direction settings here.
+(:data:`fem_racket.impact.system.SEPARATION_EVENTS`) turned into terminal/direction settings here.
 """
 
 from __future__ import annotations
