@@ -33,7 +33,10 @@ from fem_racket.validation import (
 
 __all__ = [
     "LAW_PARAMETERS",
+    "OBLIQUE_AXES",
+    "OPTIONAL",
     "PARAMETERS",
+    "STRING_AXES",
     "Parameter",
     "as_values",
     "parameter",
@@ -88,10 +91,10 @@ PARAMETERS: dict[str, Parameter] = {
         "1", "normal over tangential contact stiffness eta^2", "compliance_ratio_eta2"
     ),
 }
-#: The parameters that are None unless given: they add physics (a string bed, an incidence).
-OPTIONAL = (
-    "string_tension",
-    "pattern",
+#: The axes that put a string bed on every case.
+STRING_AXES = ("string_tension", "pattern")
+#: The axes that make the ball oblique (an incidence).
+OBLIQUE_AXES = (
     "angle",
     "spin",
     "side_angle",
@@ -101,6 +104,8 @@ OPTIONAL = (
     "ball_radius",
     "compliance_ratio",
 )
+#: The parameters that are None unless given: they add physics (a string bed, an incidence).
+OPTIONAL = (*STRING_AXES, *OBLIQUE_AXES)
 
 #: Sweepable parameters of the contact law families (a sweep holds those of its law's family):
 #: the attribute is the run file's [contact] key with ``contact_`` before it (live, from the

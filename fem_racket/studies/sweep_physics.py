@@ -33,7 +33,7 @@ from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem_checks import bed_coordinates
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.strings.bed import StringBed
-from fem_racket.studies.grid_values import pattern_label
+from fem_racket.studies.grid_values import OBLIQUE_AXES, STRING_AXES, pattern_label
 from fem_racket.validation import InputError, show
 
 __all__ = [
@@ -49,17 +49,6 @@ __all__ = [
     "regime_label",
 ]
 
-STRING_AXES = ("string_tension", "pattern")
-OBLIQUE_AXES = (
-    "angle",
-    "spin",
-    "side_angle",
-    "side_spin",
-    "friction",
-    "ball_inertia",
-    "ball_radius",
-    "compliance_ratio",
-)
 #: The axes that take the ball across the face (out of the plane of the long axis).
 LATERAL_AXES = ("side_angle", "side_spin")
 #: The Incidence field of each oblique axis.

@@ -11,8 +11,6 @@ command), so the walk is fast; the numbers of the runs are compared in ``test_co
 
 from __future__ import annotations
 
-import contextlib
-import io
 import itertools
 import shutil
 from pathlib import Path
@@ -20,8 +18,7 @@ from pathlib import Path
 import pytest
 
 from fem_racket import load_config
-from fem_racket.cli import build_parser
-from fem_racket.cli.options.runfile import apply_config
+from fem_racket.cli.commands.config import _dry_run
 from fem_racket.paper.config_reproduce import reproduce_file
 from fem_racket.validation import ChecksPassed, InputError, checks_only
 
@@ -166,28 +163,10 @@ def merged(names) -> str:
     return "".join(h + "\n" + "".join(f"{x}\n" for x in tables[h]) for h in order)
 
 
-def dry_run(command: str, path: Path) -> None:
-    """The command on the run file to the end of its checks, as ``config --check`` runs it
-    (``cli.commands.config._dry_run``), its :data:`OPERANDS` given before ``--config``."""
-    argv = [command, *map(str, OPERANDS.get(command, ())), "--config", str(path)]
-    parser = build_parser(argv)
-    args = apply_config(parser, argv, parser.parse_args(argv))
-    if hasattr(args, "overwrite"):
-        args.overwrite = True
-    with checks_only(), contextlib.redirect_stdout(io.StringIO()):
-        try:
-            args.func(args)
-        except ChecksPassed:
-            return
-        except InputError as exc:
-            raise InputError(f"{path}: fem-racket {command} would refuse it: {exc}") from None
-    raise AssertionError(f"fem-racket {command} ran past its checks")
-
-
 def verdicts(command: str, path: Path) -> tuple[str, str]:
     """("ok" | "refused: ...") of the command and of its Python method, checks only."""
     try:
-        dry_run(command, path)
+        _dry_run(command, str(path), OPERANDS.get(command, ()))
         cli = "ok"
     except InputError as exc:
         cli = f"refused: {exc}"

@@ -104,16 +104,17 @@ def _check(path: str) -> str:
     return "\n".join(out) + "\n"
 
 
-def _dry_run(name: str, path: str) -> None:
+def _dry_run(name: str, path: str, operands: tuple[str, ...] = ()) -> None:
     """Run command ``name`` on the run file up to where its work would begin: every check it
-    makes (values, combinations, files it would read or write) without the computation (for
-    ``closest`` and ``compare``, up to their operands, which a run file cannot name).
+    makes (values, combinations, files it would read or write) without the computation.
+    ``operands``: what a run file cannot name (the racket list of ``closest``, the set-ups of
+    ``compare``), given before ``--config``.
 
     An output that exists already is not refused here (it is the folder's state, not the file's:
     the command refuses it without --overwrite)."""
     from fem_racket.cli import build_parser
 
-    argv = [name, "--config", path]
+    argv = [name, *operands, "--config", path]
     parser = build_parser(argv)
     args = apply_config(parser, argv, parser.parse_args(argv))
     if hasattr(args, "overwrite"):
