@@ -144,7 +144,8 @@ def oblique_sweep(
     else:
         got = _solved(frame, incidences, v, kwargs, side=side)
     got = {key: values.reshape(shape) for key, values in got.items()}
-    return ObliqueSweep(a, s, f, got, *((b, w) if sided else ()))
+    sides = (b, w) if sided else (None, None)
+    return ObliqueSweep(a, s, f, got, *sides)
 
 
 def _clamped(
