@@ -1,8 +1,9 @@
-"""Oblique impacts over a grid of incidence angle, incoming spin and friction.
+"""Oblique impacts over a grid of incidence angle, incoming spin and friction, and side angle
+and side spin (a 3-D ball crossing the face, as ``simulate --side-angle --side-spin``).
 
-Each incidence angle sets one normal speed V cos(angle), so its normal impact is computed once
-and every spin and friction at that angle marches only the tangential contact over its force
-history (milliseconds each). On the free racket the grid is one
+Each incidence angle and side angle set one normal speed V cos(side angle) cos(angle), so its
+normal impact is computed once and every spin, friction and side spin there marches only the
+tangential contact over its force history (milliseconds each). On the free racket the grid is one
 :class:`~fem_racket.impact.problem_batch.ProblemBatch` that the solver answers, as
 ``fem-racket sweep --angle ... --spin ... --friction ...`` does
 (:func:`fem_racket.impact.batch_solve.each_batch` shares the normal impacts); a clamped head
@@ -18,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.impact.batch_solve import LATERAL_EXTRA
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.oblique.solve import oblique_on
 from fem_racket.impact.problem import ImpactProblem
@@ -27,7 +29,7 @@ from fem_racket.impact.simulate_oblique import normal_impact
 from fem_racket.impact.solvers import make_solver
 from fem_racket.validation import InputError, check_positive
 
-__all__ = ["OUTPUTS", "ObliqueSweep", "oblique_map", "oblique_sweep"]
+__all__ = ["OUTPUTS", "SIDE_OUTPUTS", "ObliqueSweep", "oblique_map", "oblique_sweep"]
 
 #: Scalar outputs of each case (keys of
 #: :meth:`fem_racket.impact.oblique.solve.ObliqueResult.summary`).
@@ -39,24 +41,33 @@ OUTPUTS = (
     "cor",
     "contact_time_s",
 )
+#: Outputs across the face, as ``sweep``'s dataset names them (outgoing side angle [deg], side
+#: spin [rpm] and the racket's yaw rate [rad/s]), when the ball crosses the face.
+SIDE_OUTPUTS = LATERAL_EXTRA
 
 
 @dataclass(frozen=True)
 class ObliqueSweep:
-    """Outputs over the grid, each of shape (angles, spins, frictions).
+    """Outputs over the grid, each of shape (angles, spins, frictions), then (side angles, side
+    spins) when either side axis is given.
 
     Attributes
     ----------
     angle_deg, spin_rpm, friction : ndarray
         The axes.
     outputs : dict of str to ndarray
-        :data:`OUTPUTS` (floats) and ``contact_regime`` (strings).
+        :data:`OUTPUTS` (floats), :data:`SIDE_OUTPUTS` (floats) when a side axis is given or
+        the base incidence crosses the face, and ``contact_regime`` (strings).
+    side_angle_deg, side_spin_rpm : ndarray or None
+        The side axes [deg] and [rpm]; None unless either is given.
     """
 
     angle_deg: np.ndarray
     spin_rpm: np.ndarray
     friction: np.ndarray
     outputs: dict[str, np.ndarray]
+    side_angle_deg: np.ndarray | None = None
+    side_spin_rpm: np.ndarray | None = None
 
     def __getitem__(self, key: str) -> np.ndarray:
         return self.outputs[key]
@@ -78,9 +89,11 @@ def oblique_sweep(
     speed: float = 20.0,
     base: Incidence | None = None,
     clamped: bool = False,
+    side_angles: Any = None,
+    side_spins: Any = None,
     **kwargs: Any,
 ) -> ObliqueSweep:
-    """Oblique impacts at every (angle, spin, friction).
+    """Oblique impacts at every (angle, spin, friction[, side angle, side spin]).
 
     Parameters
     ----------
@@ -95,9 +108,18 @@ def oblique_sweep(
     speed : float
         Incident ball speed [m/s].
     base : Incidence, optional
-        Ball inertia, radius, eta^2 (and friction when ``frictions`` is None).
+        Ball inertia, radius, eta^2 (and friction, side angle and side spin when their axes
+        are None).
     clamped : bool
         A clamped head instead of the free racket.
+    side_angles : sequence of float, optional
+        Angles of the ball's path from the plane of the long axis and the face normal [deg], in
+        (-90, 90), positive toward +y (``simulate --side-angle``); the ``base`` incidence's
+        when None. Given (or ``side_spins``), the grid gains the axes (side angles, side
+        spins) and the outputs :data:`SIDE_OUTPUTS`.
+    side_spins : sequence of float, optional
+        Incoming side spins [rpm], positive = rolling toward +y (``simulate --side-spin``);
+        the ``base`` incidence's when None.
     **kwargs
         The normal impact's other arguments
         (:func:`fem_racket.impact.simulate_oblique.normal_impact`).
@@ -106,30 +128,42 @@ def oblique_sweep(
     a = _axis("angles", angles)
     s = _axis("spins", spins)
     f = _axis("frictions", (base.friction,) if frictions is None else frictions)
+    b = _axis("side_angles", (base.side_angle,) if side_angles is None else side_angles)
+    w = _axis("side_spins", (base.side_spin,) if side_spins is None else side_spins)
     v = check_positive("speed", speed, "m/s")
-    shape = (a.size, s.size, f.size)
-    out = {k: np.empty(shape) for k in OUTPUTS}
-    regime = np.empty(shape, dtype=object)
-    cases = [dataclasses.replace(base, angle=x) for x in a]  # checks every angle first
-    if not clamped:
-        incidences = [
-            dataclasses.replace(inc, spin=spin, friction=mu) for inc in cases for spin in s
-            for mu in f
-        ]  # fmt: skip
-        got = _solved(frame, incidences, v, kwargs)
-        for key in (*OUTPUTS, "contact_regime"):
-            got[key] = got[key].reshape(shape)
-        return ObliqueSweep(a, s, f, got)
-    for i, inc in enumerate(cases):
-        normal = normal_impact(frame, inc.components(v)[0], clamped=clamped, **kwargs)
-        for j, spin in enumerate(s):
-            for k, mu in enumerate(f):
-                res = oblique_on(normal, dataclasses.replace(inc, spin=spin, friction=mu), v)
-                summary = res.summary()
-                for key in OUTPUTS:
-                    out[key][i, j, k] = summary[key]
-                regime[i, j, k] = summary["contact_regime"]
-    return ObliqueSweep(a, s, f, {**out, "contact_regime": regime})
+    sided = side_angles is not None or side_spins is not None
+    shape = (a.size, s.size, f.size) + ((b.size, w.size) if sided else ())
+    # every case's incidence first: each value is checked before any work
+    incidences = [
+        dataclasses.replace(base, angle=x, spin=spin, friction=mu, side_angle=y, side_spin=z)
+        for x in a for spin in s for mu in f for y in b for z in w
+    ]  # fmt: skip
+    side = sided or base.lateral
+    if clamped:
+        got = _clamped(frame, incidences, v, kwargs, side)
+    else:
+        got = _solved(frame, incidences, v, kwargs, side=side)
+    got = {key: values.reshape(shape) for key, values in got.items()}
+    sides = (b, w) if sided else (None, None)
+    return ObliqueSweep(a, s, f, got, *sides)
+
+
+def _clamped(
+    frame: Any, incidences: list, speed: float, kwargs: dict, side: bool
+) -> dict[str, np.ndarray]:
+    """The oblique outcomes of ``incidences`` on a clamped head, one normal impact (eqs 1-3)
+    per normal speed (angle and side angle)."""
+    normals: dict[tuple[float, float], Any] = {}
+    rows = []
+    for inc in incidences:
+        key = (inc.angle, inc.side_angle)
+        if key not in normals:
+            normals[key] = normal_impact(frame, inc.components(speed)[0], clamped=True, **kwargs)
+        rows.append(oblique_on(normals[key], inc, speed).summary())
+    names = OUTPUTS + (SIDE_OUTPUTS if side else ())
+    got = {k: np.array([r[k] for r in rows], dtype=float) for k in names}
+    got["contact_regime"] = np.array([r["contact_regime"] for r in rows], dtype=object)
+    return got
 
 
 def oblique_map(
@@ -149,7 +183,8 @@ def oblique_map(
     positions : sequence of float
         Impact points x/L.
     incidence : Incidence
-        The ball's angle, spin and the contact's parameters.
+        The ball's angle, spin, side angle and side spin and the contact's parameters (as
+        ``simulate --angle --spin --side-angle --side-spin``).
     speed : float
         Incident ball speed [m/s].
     **kwargs
@@ -158,21 +193,32 @@ def oblique_map(
     Returns
     -------
     dict of str to ndarray
-        ``position_x_over_l`` and :data:`OUTPUTS` (floats), ``contact_regime`` (strings), each
-        of shape (positions,).
+        ``position_x_over_l``, :data:`OUTPUTS` and, when the incidence crosses the face (a
+        side angle or side spin), :data:`SIDE_OUTPUTS` (floats), ``contact_regime`` (strings),
+        each of shape (positions,).
     """
+    if not isinstance(incidence, Incidence):
+        raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence")
     x = _axis("positions", positions)
     v = check_positive("speed", speed, "m/s")
     if "position" in kwargs:
         raise InputError("position is not allowed with positions: give the impact points once")
-    return {"position_x_over_l": x, **_solved(frame, [incidence] * x.size, v, kwargs, x)}
+    got = _solved(frame, [incidence] * x.size, v, kwargs, x, side=incidence.lateral)
+    return {"position_x_over_l": x, **got}
 
 
 def _solved(
-    frame: Any, incidences: list, speed: float, kwargs: dict, positions: Any = None
+    frame: Any,
+    incidences: list,
+    speed: float,
+    kwargs: dict,
+    positions: Any = None,
+    *,
+    side: bool = False,
 ) -> dict[str, np.ndarray]:
     """The oblique outcomes of ``incidences`` at ``speed`` (and ``positions``) on the free
-    racket, by the solver of ``kwargs`` (``simulate``'s options) over one ProblemBatch."""
+    racket, by the solver of ``kwargs`` (``simulate``'s options) over one ProblemBatch;
+    :data:`SIDE_OUTPUTS` too with ``side``."""
     problem_kw = {k: w for k, w in kwargs.items() if k in PROBLEM_OPTIONS}
     solver_kw = {k: w for k, w in kwargs.items() if k not in PROBLEM_OPTIONS}
     problem = ImpactProblem.build(frame, speed=speed, **problem_kw)
@@ -183,5 +229,6 @@ def _solved(
     out = make_solver(solver_kw.pop("solver", "auto"), **solver_kw).solve_many(batch)
     got = {k: np.asarray(out.extra[k], dtype=float) for k in OUTPUTS if k in out.extra}
     got.update(cor=out.cor, contact_time_s=out.contact_time)
+    got.update({k: np.asarray(out.extra[k], dtype=float) for k in SIDE_OUTPUTS if side})
     got["contact_regime"] = np.asarray(out.extra["contact_regime"], dtype=object)
     return got
