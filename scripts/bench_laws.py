@@ -14,8 +14,9 @@ With ``--against DIR`` (another checkout of fem_racket, e.g. ``git worktree add 
 main``) it instead prints issue 27's comparison of the batched laws: CPU us per impact at
 tolerance 1e-6 (positions 0.45-0.95 L, 20-40 m/s, the kernels compiled and cached first) in
 this tree and in DIR, each in its own processes, alternated ``--repeat`` times (best kept: the
-machine is shared), with the largest |dCOR| between the two trees and against CVODE (rtol
-1e-10, first 4 cases), and the load.
+machine is shared), the nodes marched per impact (to separation, summed over the vouching runs
+at every step count; counted in an untimed repeat of the batch), with the largest |dCOR|
+between the two trees and against CVODE (rtol 1e-10, first 4 cases), and the load.
 
 Usage: python scripts/bench_laws.py [--quick] [--batch N] [--tolerance TOL]
        python scripts/bench_laws.py --against DIR [--batch N] [--repeat R]
@@ -58,13 +59,14 @@ BATCHED = {
     "hysteretic n = 1": "Hysteretic.from_cor(5e4, 0.83, 1.0)",
     "itf-ball": "PRESETS['itf-ball']",
 }
-#: One child: every law batched once (after a batch of two that loads the kernels); prints
-#: {law: [CPU us per impact, CORs]}.
+#: One child: every law batched once (after a batch of two that loads the kernels), then again
+#: untimed with the vouching runs' nodes counted; prints {law: [CPU us per impact, CORs, nodes
+#: per impact]}.
 CHILD = """
 import json, sys, time
 import numpy as np
+import fem_racket.impact.general.vouch as vouch
 from fem_racket import FrameModel
-from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.hysteretic import Hysteretic
 from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.impact.general.integrator import solve_general
@@ -75,19 +77,30 @@ x, v = rng.uniform(0.45, 0.95, n), rng.uniform(20.0, 40.0, n)
 model = FrameModel.build(None, 20)
 model.modes(None)
 rec = receptance(model, x, 0.057)
+marched, nodes = vouch.march_compiled, []
+def counted(*args):
+    run = marched(*args)
+    nodes.append(int(np.sum(run[0].last + 1)))
+    return run
 out = {}
 for name, code in json.loads(sys.argv[2]).items():
     law = eval(code)
     solve_general(law, receptance(model, x[:2], 0.057), v[:2], tolerance=1e-6)
     c0 = time.process_time()
     cor = -solve_general(law, rec, v, tolerance=1e-6).ball_velocity / v
-    out[name] = [1e6 * (time.process_time() - c0) / n, cor.tolist()]
+    us = 1e6 * (time.process_time() - c0) / n
+    nodes.clear()
+    vouch.march_compiled = counted
+    solve_general(law, rec, v, tolerance=1e-6)
+    vouch.march_compiled = marched
+    out[name] = [us, cor.tolist(), sum(nodes) / n]
 print(json.dumps(out))
 """
 
 
 def _child(tree: Path, n: int) -> dict:
-    """{law: [CPU us per impact, CORs]} of the batched laws run in a new process on ``tree``."""
+    """{law: [CPU us per impact, CORs, nodes per impact]} of the batched laws run in a new
+    process on ``tree``."""
     env = dict(os.environ, PYTHONPATH=str(tree), OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
     args = [sys.executable, "-c", CHILD, str(n), json.dumps(BATCHED)]
     run = subprocess.run(args, env=env, capture_output=True, text=True, check=True, cwd=tree)
@@ -102,9 +115,9 @@ def against(other: Path, n: int, repeat: int) -> list[dict]:
     best: dict = {}
     for _ in range(repeat):
         for tag, tree in (("before", other), ("after", here)):
-            for name, (us, cor) in _child(tree, n).items():
+            for name, (us, cor, nodes) in _child(tree, n).items():
                 if us < best.get((tag, name), (np.inf,))[0]:
-                    best[tag, name] = (us, np.array(cor))
+                    best[tag, name] = (us, np.array(cor), nodes)
     model = FrameModel.build(None, 20)
     model.modes(None)
     rng = np.random.default_rng(1)
@@ -115,17 +128,30 @@ def against(other: Path, n: int, repeat: int) -> list[dict]:
         f"{repeat} (load {load0:.1f} -> {os.getloadavg()[0]:.1f}, 2 cores shared)\n"
         f"before: {other}\nafter:  {here}"
     )
-    print(f"{'law':24s} {'before':>8s} {'after':>8s} {'ratio':>6s} {'max |dCOR| a-b':>15s} "
-          f"{'max |dCOR| vs CVODE':>20s}")  # fmt: skip
+    print(f"{'law':24s} {'before':>8s} {'after':>8s} {'ratio':>6s} {'nodes b':>8s} "
+          f"{'nodes a':>8s} {'max |dCOR| a-b':>15s} {'max |dCOR| vs CVODE':>20s}")  # fmt: skip
     rows = []
     for name, code in BATCHED.items():
-        (b, cor_b), (a, cor_a) = best["before", name], best["after", name]
+        (b, cor_b, nodes_b), (a, cor_a, nodes_a) = best["before", name], best["after", name]
         law = eval(code, {"PRESETS": PRESETS, "get_law": get_law, "Hysteretic": Hysteretic})
         ref = [solve_law_impact(law, model, x[i], 0.057, v[i], options=options) for i in range(4)]
         cvode = max(abs(cor_a[i] + r.ball_velocity[-1] / v[i]) for i, r in enumerate(ref))
         diff = float(np.max(np.abs(cor_a - cor_b)))
-        rows.append({"law": name, "before_us": b, "after_us": a, "dcor": diff, "cvode": cvode})
-        print(f"{name:24s} {b:8.1f} {a:8.1f} {a / b:6.2f} {diff:15.1e} {cvode:20.1e}")
+        rows.append(
+            {
+                "law": name,
+                "before_us": b,
+                "after_us": a,
+                "before_nodes": nodes_b,
+                "after_nodes": nodes_a,
+                "dcor": diff,
+                "cvode": cvode,
+            }
+        )
+        print(
+            f"{name:24s} {b:8.1f} {a:8.1f} {a / b:6.2f} {nodes_b:8.1f} {nodes_a:8.1f} "
+            f"{diff:15.1e} {cvode:20.1e}"
+        )
     return rows
 
 

@@ -122,6 +122,19 @@ def test_bench_laws_script_runs(capsys):
     assert "CVODE" in capsys.readouterr().out
 
 
+def test_bench_laws_against_itself_counts_the_same_nodes(capsys):
+    # issue 27's comparison, this tree against itself on 4 impacts: the same CORs bit for bit,
+    # the same vouched nodes per impact (at least the final run's ~250 per impact), and every
+    # law within the default COR tolerance 1e-6 of CVODE
+    root = SCRIPTS.parent
+    rows = load_script("bench_laws").main(["--against", str(root), "--batch", "4", "--repeat", "1"])
+    assert len(rows) == 5
+    for r in rows:
+        assert r["dcor"] == 0.0 and r["cvode"] <= 1e-6
+        assert r["before_nodes"] == r["after_nodes"] > 200.0
+    assert "nodes a" in capsys.readouterr().out
+
+
 def test_tour_runs_as_a_script(tmp_path, capsys, monkeypatch):
     """scripts/tour.py (jupytext percent cells) runs top to bottom as a plain script."""
     import runpy
