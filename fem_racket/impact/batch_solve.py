@@ -270,7 +270,8 @@ def each_batch(solver: Any, batch: ProblemBatch) -> BatchOutcome:
             extra["grip_vibration_rms_n"][i] = r.grip_vibration_rms
             extra["peak_grip_force_n"][i] = r.peak_grip_force
         else:
-            kcb = problem.contact().stiffness if problem.linear else np.nan
+            # K_CB of the normal impact solved (oblique: at V cos(side) cos(angle), as simulate)
+            kcb = head_on(problem).contact().stiffness if problem.linear else np.nan
             kept = np.nan if normal.n_modes is None else normal.n_modes  # None: physical basis
             row = (normal.cor, normal.contact_time, normal.ball_speed_out, normal.peak_force)
             row += (kcb, kept)

@@ -142,3 +142,12 @@ def test_a_frame_without_torsion_data_is_refused_before_any_work(tmp_path):
     assert not any(tmp_path.iterdir())  # no checkpoint folder: refused before any work
     ds = sweep_result(bare, angle=20.0, side_angle=0.0, backend="serial").to_xarray()
     assert float(ds.side_spin_out_rpm) == 0.0  # nothing crosses the face: no yaw needed
+
+
+def test_kcb_is_the_normal_impacts():
+    # K_CB follows the normal speed V cos(side) cos(angle) (simulate's kcb_n_m), not V: the
+    # stiffness the case's normal impact was solved with
+    ds = sweep_result(angle=60.0, side_angle="0,40", speed=25.0, backend="serial").to_xarray()
+    for b in ds.side_angle.values:
+        ref = simulate_oblique(incidence=Incidence(angle=60.0, side_angle=b), speed=25.0)
+        _close(float(ds.kcb_n_m.sel(side_angle=b)), ref.summary()["kcb_n_m"])
