@@ -1,4 +1,5 @@
-"""Shared fixtures: the paper's standard and rigid frames, assembled once per session."""
+"""Shared fixtures: the paper's standard and rigid frames, assembled once per session, and a
+fresh working directory."""
 
 import pytest
 from threadpoolctl import threadpool_limits
@@ -42,3 +43,10 @@ def local_cluster():
         )
 
     return make
+
+
+@pytest.fixture
+def cwd(tmp_path, monkeypatch):
+    """A fresh working directory (relative outputs land in it)."""
+    monkeypatch.chdir(tmp_path)
+    return tmp_path

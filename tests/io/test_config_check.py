@@ -138,12 +138,6 @@ CASES = [
 ]
 
 
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_check_fails_where_the_command_fails(capsys, cwd, case):
     (cwd / "run.toml").write_text(case.toml)

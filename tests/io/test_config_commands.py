@@ -15,12 +15,6 @@ from fem_racket.cli import build_parser, main
 from fem_racket.io.config_studies import MAP_DEFAULTS, REFINE_DEFAULTS
 
 
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
 def _cli_json(capsys, *argv):
     assert main([*argv, "--json"]) == 0
     return json.loads(capsys.readouterr().out)

@@ -19,12 +19,6 @@ def run(capsys, *argv):
     return out
 
 
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
 def test_sweep_table_gives_the_dataset_of_the_command_line(capsys, cwd):
     import xarray as xr
 

@@ -15,12 +15,6 @@ from fem_racket.validation import InputError
 BED = STRUNG + "offset_m = 0.02\n"  # off the axis
 
 
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
 def test_export_vtk_draws_the_bed_as_the_command(cwd, capsys):
     pytest.importorskip("pyvista")
     (cwd / "run.toml").write_text(BED + '[vtk]\nframes = 4\nscale = 3.0\nout = "a"\n')

@@ -7,16 +7,9 @@ from __future__ import annotations
 import json
 
 import numpy as np
-import pytest
 
 from fem_racket import load_config
 from fem_racket.cli import main
-
-
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
 
 
 def test_sweep_side_axes_from_a_run_file_equal_the_command(cwd, capsys):

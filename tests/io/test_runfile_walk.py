@@ -201,12 +201,6 @@ def walk(command: str, folder: Path, combos) -> list[str]:
     return out
 
 
-@pytest.fixture
-def cwd(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
 @pytest.mark.parametrize("command", list(METHODS))
 def test_every_key_alone_and_the_meeting_combinations(cwd, command):
     combos = [(n,) for n in [*KEYS, *TABLE_KEYS]] + TRIPLES
