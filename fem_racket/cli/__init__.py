@@ -1,6 +1,7 @@
 """Command-line interface ``fem-racket``: thin wrappers that parse, call the library, print.
 
-Each sub-command lives in its own module exposing ``register(subparsers)``; the parser sets
+Each sub-command lives in its own module declaring ``COMMANDS``
+(:class:`fem_racket.cli.parser.Command`: name, summary, options, run); the parser sets
 ``args.func(args) -> int``. Whatever goes wrong ends in one line on stderr, never a traceback:
 
 ======  ==========================================================================================
@@ -51,7 +52,7 @@ __all__ = ["main"]
 #: Sub-commands whose module of :mod:`fem_racket.cli.commands` is not named after them.
 _MODULES = {"export-vtk": "vtk", "animate": "vtk"}
 
-#: Sub-command -> its module of :mod:`fem_racket.cli.commands` (which has ``register(sub)``), in
+#: Sub-command -> its module of :mod:`fem_racket.cli.commands` (declaring it in ``COMMANDS``), in
 #: the order ``--help`` lists them.
 COMMANDS = {
     name: _MODULES.get(name, name)
@@ -106,7 +107,8 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     named = None if argv is None else _command_named(argv)
     modules = [COMMANDS[named]] if named else list(dict.fromkeys(COMMANDS.values()))
     for module in modules:
-        importlib.import_module(f"fem_racket.cli.commands.{module}").register(sub)
+        for command in importlib.import_module(f"fem_racket.cli.commands.{module}").COMMANDS:
+            command.add(sub)
     for command in sub.choices.values():  # -v also after the command name
         command.add_argument(
             "-v",

@@ -2,8 +2,9 @@
 
 An option the command does not know is refused naming the command's own help, with the closest
 option it has (``fem-racket simulate --positon 0.7`` -> ``did you mean --position?``) or, for an
-old spelling, the one that replaced it (:data:`RENAMED`). Every command is added by
-:func:`add_command`, its description taken from its module's docstring.
+old spelling, the one that replaced it (:data:`RENAMED`). Every command is a :class:`Command`
+its module declares (name, summary, options, run), added by :func:`add_command`, its description
+taken from its module's docstring.
 """
 
 from __future__ import annotations
@@ -11,10 +12,11 @@ from __future__ import annotations
 import argparse
 import difflib
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["RENAMED", "OneLineErrorParser", "add_command", "suggestion"]
+__all__ = ["RENAMED", "Command", "OneLineErrorParser", "add_command", "suggestion"]
 
 #: Old option spellings -> what replaced them (the progress bar shows on a terminal by itself).
 RENAMED = {
@@ -95,3 +97,36 @@ def add_command(
     """
     description = None if doc is None else doc.split("\n\n")[1]
     return sub.add_parser(name, help=help, description=description)
+
+
+@dataclass(frozen=True)
+class Command:
+    """A sub-command as its module declares it; ``cli.build_parser`` adds each with :meth:`add`.
+
+    Parameters
+    ----------
+    name : str
+        The command's name (``fem-racket NAME``).
+    help : str
+        Its line in ``fem-racket --help``.
+    options : callable
+        ``options(parser)`` adds the command's options to its parser.
+    run : callable
+        ``run(args) -> int`` runs the command on the parsed arguments (``args.func``).
+    doc : str or None
+        The command module's docstring, for its ``--help`` description (see
+        :func:`add_command`); None: no description.
+    """
+
+    name: str
+    help: str
+    options: Callable[[argparse.ArgumentParser], None]
+    run: Callable[[argparse.Namespace], int]
+    doc: str | None = None
+
+    def add(self, sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+        """Add the command, its options and ``func`` to ``sub``; return its parser."""
+        parser = add_command(sub, self.name, self.help, self.doc)
+        self.options(parser)
+        parser.set_defaults(func=self.run)
+        return parser

@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_output_options,
     print_json,
@@ -29,9 +29,8 @@ from fem_racket.outputs import Target, check_targets
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS, calibrate
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``calibrate`` command."""
-    p = add_command(sub, "calibrate", "fit a ball/string law to published targets")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``calibrate`` command's options."""
     p.add_argument(
         "--family",
         default="hysteretic",
@@ -55,7 +54,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print a JSON object")
     add_output_options(p, what="output folder (writes FAMILY-TARGETS .toml, .json and .png)")
     add_config_option(p)
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -84,3 +82,7 @@ def run(args: argparse.Namespace) -> int:
         )
     print_written(files)
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (Command("calibrate", "fit a ball/string law to published targets", add_arguments, run),)

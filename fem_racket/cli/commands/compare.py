@@ -17,7 +17,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -33,14 +33,8 @@ from fem_racket.cli.options.output import add_overwrite_json
 DEFAULT_OUTPUT = Path("output") / "compare.png"
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``compare`` command."""
-    p = add_command(
-        sub,
-        "compare",
-        "rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
-        __doc__,
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``compare`` command's options."""
     p.add_argument(
         "rackets",
         nargs="*",
@@ -93,7 +87,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_overwrite_json(o, "a JSON object")
     add_config_option(p, private=("out",), requires=("rackets",))
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -143,3 +136,15 @@ def run(args: argparse.Namespace) -> int:
         print("  ".join(cells))
     print_written(outs)
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (
+    Command(
+        "compare",
+        "rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
+        add_arguments,
+        run,
+        __doc__,
+    ),
+)

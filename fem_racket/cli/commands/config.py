@@ -13,23 +13,21 @@ import io
 from pathlib import PurePath
 from typing import Any
 
-from fem_racket.cli.common import add_command, add_output_options
+from fem_racket.cli.common import Command, add_output_options
 from fem_racket.cli.options.runfile import apply_config, config_values, file_options
 from fem_racket.io.config import example_config, load_config, toml_value
 from fem_racket.io.config_keys import COMMAND_TABLES
 from fem_racket.validation import ChecksPassed, InputError, checks_only
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``config`` command."""
-    p = add_command(sub, "config", "print an example run file (TOML) or check one")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``config`` command's options."""
     what = p.add_mutually_exclusive_group(required=True)
     what.add_argument("--example", action="store_true", help="print an annotated example")
     what.add_argument(
         "--check", metavar="TOML", help="check a run file and print its settings (no default)"
     )
     add_output_options(p, what="output file for the --example run file, TOML")
-    p.set_defaults(func=run)
 
 
 def _commands() -> dict[str, argparse.ArgumentParser]:
@@ -157,3 +155,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     print(text, end="")
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (Command("config", "print an example run file (TOML) or check one", add_arguments, run),)

@@ -17,7 +17,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_frame_options,
     add_speed_option,
@@ -43,14 +43,8 @@ DEFAULT_OUTPUT = Path("output") / "customised.vtu"
 DEFAULT_MAPS = Path(CUSTOMISE_MAPS)
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``customise`` command."""
-    p = add_command(
-        sub,
-        "customise",
-        "least lead tape reaching swing weight, balance, twistweight, mass targets",
-        __doc__,
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``customise`` command's options."""
     add_frame_options(p)
     add_target_options(p)
     m = p.add_argument_group("maps before and after")
@@ -71,7 +65,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_overwrite_json(o)
     add_config_option(p, private=("out",), requires=("a target: swing_weight, balance, mass",))
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -113,3 +106,15 @@ def run(args: argparse.Namespace) -> int:
         print(f"{'max e_A ' + name:<24} {best:>12} x/L")
     print_written([*files, *map_files])
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (
+    Command(
+        "customise",
+        "least lead tape reaching swing weight, balance, twistweight, mass targets",
+        add_arguments,
+        run,
+        __doc__,
+    ),
+)

@@ -16,7 +16,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     print_json,
     run_parameters,
@@ -50,14 +50,8 @@ SPECIFICATION = (
 )  # fmt: skip
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``fit`` command."""
-    p = add_command(
-        sub,
-        "fit",
-        "a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
-        __doc__,
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``fit`` command's options."""
     g = p.add_argument_group("specification")
     add_options(g, SPECIFICATION, type=float)
     g.add_argument(
@@ -79,7 +73,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_config_option(
         p, private=("out", "elements"), requires=("length", "mass", "balance", "swing_weight")
     )
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -112,3 +105,15 @@ def run(args: argparse.Namespace) -> int:
         )
     print_written(files)
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (
+    Command(
+        "fit",
+        "a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
+        add_arguments,
+        run,
+        __doc__,
+    ),
+)

@@ -25,7 +25,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -68,11 +68,8 @@ class _Extend(argparse.Action):
         setattr(namespace, self.dest, (old if isinstance(old, list) else []) + list(values))
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``map`` command."""
-    p = add_command(
-        sub, "map", "apparent COR and ball speed along the frame, with sweet spots", __doc__
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``map`` command's options."""
     r = p.add_argument_group("rackets (several are overlaid)")
     r.add_argument(
         "--preset",
@@ -173,7 +170,6 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="print sweet spots and curves as JSON (default: a table)",
     )
     add_config_option(p, private=("out", "mesh"))
-    p.set_defaults(func=run)
 
 
 def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
@@ -237,3 +233,15 @@ def run(args: argparse.Namespace) -> int:
             print(f"  {label:<26} {text:>10} x/L")
     print_written(files)
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (
+    Command(
+        "map",
+        "apparent COR and ball speed along the frame, with sweet spots",
+        add_arguments,
+        run,
+        __doc__,
+    ),
+)

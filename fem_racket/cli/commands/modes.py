@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_frame_options,
     build_model,
@@ -18,9 +18,8 @@ from fem_racket.frame.modal import mode_nodes
 from fem_racket.progress import progress_bar
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``modes`` command."""
-    p = add_command(sub, "modes", "free-free modal analysis of the frame")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``modes`` command's options."""
     add_frame_options(p)
     p.add_argument(
         "--count",
@@ -32,7 +31,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print a JSON object")
     add_quiet_option(p)
     add_config_option(p)
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -88,3 +86,7 @@ def run(args: argparse.Namespace) -> int:
         for k, f in enumerate(data["torsion_frequencies_hz"], start=1):
             print(f"{k:>7} {f:>13.2f}")
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (Command("modes", "free-free modal analysis of the frame", add_arguments, run),)

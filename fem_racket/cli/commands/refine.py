@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_ei_options,
     add_mesh_option,
@@ -30,11 +30,8 @@ FAMILY_CHOICES = (*FAMILIES, "both")
 DEFAULT_CSV = "output/refine.csv"
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``refine`` command."""
-    p = add_command(
-        sub, "refine", "mesh-refinement study: frequencies vs the exact beam, COR and contact time"
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``refine`` command's options."""
     g = p.add_argument_group("frame")
     add_ei_options(g)
     add_mesh_option(
@@ -120,7 +117,6 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--json", action="store_true", help="print a JSON object (writes only --csv, --plot)"
     )
     add_config_option(p, private=("elements",))
-    p.set_defaults(func=run)
 
 
 def _plot_path(args: argparse.Namespace) -> Path:
@@ -207,3 +203,14 @@ def run(args: argparse.Namespace) -> int:
     print("\n\n".join(format_study(s) for s in studies.values()))
     print_written([t.path for t in refine_targets(args.csv, plot)] if outputs else [])
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (
+    Command(
+        "refine",
+        "mesh-refinement study: frequencies vs the exact beam, COR and contact time",
+        add_arguments,
+        run,
+    ),
+)

@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_impact_options,
     add_output_options,
@@ -67,9 +67,8 @@ from fem_racket.validation import InputError, show_path
 OUT_SUFFIXES = (".json", ".csv")
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``simulate`` command."""
-    p = add_command(sub, "simulate", "simulate one ball impact on the racket")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``simulate`` command's options."""
     add_impact_options(p)
     add_swing_options(p)
     add_hand_options(p)
@@ -83,7 +82,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_output_step_option(g)
     add_config_option(p)
-    p.set_defaults(func=run)
 
 
 def _check_out(args: argparse.Namespace) -> list[Path]:
@@ -261,3 +259,7 @@ def _head_on_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, st
         *_law_rows(summary),
         ("solver", f"{summary['solver']} ({summary['basis']}, {summary['elements']} elements)", ""),
     ]
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (Command("simulate", "simulate one ball impact on the racket", add_arguments, run),)

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_mesh_option,
     add_solver_options,
@@ -95,9 +95,8 @@ def _grid_value(where: str, value: Any) -> Any:
     return value
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``sweep`` command."""
-    p = add_command(sub, "sweep", "simulate a grid of impacts and save one netCDF dataset", __doc__)
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``sweep`` command's options."""
     g = p.add_argument_group("swept or fixed parameters")
     for name, text in _HELP.items():
         flags = ["--" + name.replace("_", "-"), *_PLURAL.get(name, ())]
@@ -160,7 +159,6 @@ def register(sub: argparse._SubParsersAction) -> None:
         private=("out",),
         convert={name: _grid_value for name in [*PARAMETERS, *LAW_PARAMETERS]},
     )
-    p.set_defaults(func=run)
 
 
 def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> None:
@@ -243,3 +241,15 @@ def run(args: argparse.Namespace) -> int:
     print(f"wrote {args.out}: {n} impacts ({shape}) in {wall:.2f} s ({n / wall:.0f} impacts/s)")
     print(f"COR from {summary['cor_min']:.6f} to {summary['cor_max']:.6f}")
     return 0
+
+
+#: The command, for ``cli.build_parser``.
+COMMANDS = (
+    Command(
+        "sweep",
+        "simulate a grid of impacts and save one netCDF dataset",
+        add_arguments,
+        run,
+        __doc__,
+    ),
+)

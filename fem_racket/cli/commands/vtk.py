@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
+    Command,
     add_config_option,
     add_impact_options,
     add_output_step_option,
@@ -80,11 +80,8 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
     add_quiet_option(p)
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``export-vtk`` and ``animate`` commands."""
-    p = add_command(
-        sub, "export-vtk", "write the impact as a VTK time series (.pvd + .vtu) for ParaView"
-    )
+def add_export_options(p: argparse.ArgumentParser) -> None:
+    """The ``export-vtk`` command's options."""
     p.add_argument(
         "--out",
         type=Path,
@@ -96,9 +93,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     _add_common(p, scale=1.0, frames=None)
     add_strings_options(p)
     add_config_option(p, private=("out",))  # a folder, not output.out
-    p.set_defaults(func=run_export)
 
-    a = add_command(sub, "animate", "render the impact offscreen as a GIF or MP4")
+
+def add_animate_options(a: argparse.ArgumentParser) -> None:
+    """The ``animate`` command's options."""
     a.add_argument(
         "--out",
         type=Path,
@@ -123,7 +121,6 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="image size in pixels, multiples of 16 (default 960x400)",
     )
     add_config_option(a, private=("out",))  # a .gif or .mp4, not output.out
-    a.set_defaults(func=run_animate)
 
 
 def _simulate(args: argparse.Namespace):
@@ -251,3 +248,17 @@ def run_animate(args: argparse.Namespace) -> int:
     )
     print_written(t.path for t in animation_targets(path))
     return 0
+
+
+#: The commands, for ``cli.build_parser``.
+COMMANDS = (
+    Command(
+        "export-vtk",
+        "write the impact as a VTK time series (.pvd + .vtu) for ParaView",
+        add_export_options,
+        run_export,
+    ),
+    Command(
+        "animate", "render the impact offscreen as a GIF or MP4", add_animate_options, run_animate
+    ),
+)
