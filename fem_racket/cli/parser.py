@@ -3,16 +3,17 @@
 An option the command does not know is refused naming the command's own help, with the closest
 option it has (``fem-racket simulate --positon 0.7`` -> ``did you mean --position?``) or, for an
 old spelling, the one that replaced it (:data:`RENAMED`). Every command is a :class:`Command`
-its module declares (name, summary, options, run), added by :func:`add_command`, its description
-taken from its module's docstring.
+(name, summary, the module that adds its options and runs it), added by :func:`add_command`,
+its description taken from its module's docstring.
 """
 
 from __future__ import annotations
 
 import argparse
 import difflib
+import importlib
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -101,7 +102,8 @@ def add_command(
 
 @dataclass(frozen=True)
 class Command:
-    """A sub-command as its module declares it; ``cli.build_parser`` adds each with :meth:`add`.
+    """A sub-command: its name and summary, and the module of :mod:`fem_racket.cli.commands` that
+    adds its options and runs it, imported only when the command's parser is built in full.
 
     Parameters
     ----------
@@ -109,24 +111,37 @@ class Command:
         The command's name (``fem-racket NAME``).
     help : str
         Its line in ``fem-racket --help``.
-    options : callable
-        ``options(parser)`` adds the command's options to its parser.
-    run : callable
-        ``run(args) -> int`` runs the command on the parsed arguments (``args.func``).
-    doc : str or None
-        The command module's docstring, for its ``--help`` description (see
-        :func:`add_command`); None: no description.
+    module : str or None
+        Its module of :mod:`fem_racket.cli.commands` (None: named after the command).
+    described : bool
+        The second paragraph of the module's docstring is the command's ``--help`` description
+        (see :func:`add_command`); False: no description.
+    options : str
+        The module's function adding the command's options: ``options(parser)``.
+    run : str
+        The module's function running the command: ``run(args) -> int`` (``args.func``).
     """
 
     name: str
     help: str
-    options: Callable[[argparse.ArgumentParser], None]
-    run: Callable[[argparse.Namespace], int]
-    doc: str | None = None
+    module: str | None = None
+    described: bool = False
+    options: str = "add_arguments"
+    run: str = "run"
 
-    def add(self, sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
-        """Add the command, its options and ``func`` to ``sub``; return its parser."""
-        parser = add_command(sub, self.name, self.help, self.doc)
-        self.options(parser)
-        parser.set_defaults(func=self.run)
+    @property
+    def module_path(self) -> str:
+        """The dotted name of the command's module."""
+        return f"fem_racket.cli.commands.{self.module or self.name}"
+
+    def add(self, sub: argparse._SubParsersAction, *, full: bool = True) -> argparse.ArgumentParser:
+        """Add the command to ``sub`` and return its parser: with its module's options and
+        ``func`` when ``full``, else its name and summary only (all ``fem-racket --help`` and a
+        mistyped command name need, without importing the module)."""
+        if not full:
+            return add_command(sub, self.name, self.help)
+        module = importlib.import_module(self.module_path)
+        parser = add_command(sub, self.name, self.help, module.__doc__ if self.described else None)
+        getattr(module, self.options)(parser)
+        parser.set_defaults(func=getattr(module, self.run))
         return parser

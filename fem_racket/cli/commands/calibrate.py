@@ -12,18 +12,12 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_output_options,
     print_json,
     print_written,
     run_parameters,
     significant,
-)
-from fem_racket.io.calibration_files import (
-    calibration_files,
-    calibration_summary,
-    write_calibration,
 )
 from fem_racket.outputs import Target, check_targets
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS, calibrate
@@ -58,6 +52,12 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Fit, print the table, write the files."""
+    from fem_racket.io.calibration_files import (
+        calibration_files,
+        calibration_summary,
+        write_calibration,
+    )
+
     files = []
     if args.out:  # the three files are checked now and written as one set
         files = calibration_files(args.out, args.family, args.targets)
@@ -82,7 +82,3 @@ def run(args: argparse.Namespace) -> int:
         )
     print_written(files)
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (Command("calibrate", "fit a ball/string law to published targets", add_arguments, run),)

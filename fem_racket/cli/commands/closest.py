@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import Command, add_config_option, print_json, significant
+from fem_racket.cli.common import add_config_option, print_json, significant
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
@@ -65,15 +65,3 @@ def run(args: argparse.Namespace) -> int:
             f"swing weight {after['swing_weight_kg_cm2']:.1f} kg cm^2"
         )
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "closest",
-        "rackets of a CSV list nearest a target, each with its least lead",
-        add_arguments,
-        run,
-        __doc__,
-    ),
-)

@@ -17,7 +17,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -136,15 +135,3 @@ def run(args: argparse.Namespace) -> int:
         print("  ".join(cells))
     print_written(outs)
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "compare",
-        "rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
-        add_arguments,
-        run,
-        __doc__,
-    ),
-)

@@ -13,10 +13,8 @@ import io
 from pathlib import PurePath
 from typing import Any
 
-from fem_racket.cli.common import Command, add_output_options
+from fem_racket.cli.common import add_output_options
 from fem_racket.cli.options.runfile import apply_config, config_values, file_options
-from fem_racket.io.config import example_config, load_config, toml_value
-from fem_racket.io.config_keys import COMMAND_TABLES
 from fem_racket.validation import ChecksPassed, InputError, checks_only
 
 
@@ -42,6 +40,8 @@ def _commands() -> dict[str, argparse.ArgumentParser]:
 
 
 def _placeholder(action: argparse.Action) -> str:
+    from fem_racket.io.config import toml_value
+
     if action.default is None or action.default == argparse.SUPPRESS:
         return f"<{action.metavar or action.dest.upper()}>"
     if isinstance(action.default, PurePath):
@@ -51,6 +51,8 @@ def _placeholder(action: argparse.Action) -> str:
 
 def command_tables() -> str:
     """Commented-out TOML tables of the commands that read run files, with their defaults."""
+    from fem_racket.io.config_keys import COMMAND_TABLES
+
     lines = [
         "",
         "# Each command's own options, in a table named after it (keys = its long options).",
@@ -66,6 +68,9 @@ def command_tables() -> str:
 
 
 def _check(path: str) -> str:
+    from fem_racket.io.config import load_config
+    from fem_racket.io.config_keys import COMMAND_TABLES
+
     commands = _commands()
     cfg = load_config(path)
     known_tables = {COMMAND_TABLES.get(n, n) for n in commands}
@@ -128,6 +133,8 @@ def _dry_run(name: str, path: str, operands: tuple[str, ...] = ()) -> None:
 
 
 def _show(value: Any) -> str:
+    from fem_racket.io.config import toml_value
+
     if isinstance(value, tuple) and value and hasattr(value[0], "EI"):
         return f"{len(value)} segments"
     if isinstance(value, list) and value and hasattr(value[0], "place"):
@@ -139,6 +146,8 @@ def _show(value: Any) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Print (or write with ``--out``) the example, or check a file."""
+    from fem_racket.io.config import example_config
+
     if args.check:
         print(_check(args.check), end="")
         return 0
@@ -155,7 +164,3 @@ def run(args: argparse.Namespace) -> int:
         return 0
     print(text, end="")
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (Command("config", "print an example run file (TOML) or check one", add_arguments, run),)

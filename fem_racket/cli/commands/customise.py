@@ -17,7 +17,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_frame_options,
     add_speed_option,
@@ -35,7 +34,6 @@ from fem_racket.cli.options.targets import (
     places_of,
     targets_from_args,
 )
-from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.io.config_racket import CUSTOMISE_MAPS
 
 #: Where the mesh and the maps go unless --out / --maps are given.
@@ -70,6 +68,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.frame.catalogue import catalogue
+    from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.map_files import check_map_outputs, map_targets
     from fem_racket.io.racket_files import customise_files
     from fem_racket.outputs import check_output_path
@@ -106,15 +105,3 @@ def run(args: argparse.Namespace) -> int:
         print(f"{'max e_A ' + name:<24} {best:>12} x/L")
     print_written([*files, *map_files])
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "customise",
-        "least lead tape reaching swing weight, balance, twistweight, mass targets",
-        add_arguments,
-        run,
-        __doc__,
-    ),
-)

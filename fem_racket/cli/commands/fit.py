@@ -16,7 +16,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     print_json,
     run_parameters,
@@ -26,7 +25,6 @@ from fem_racket.cli.options.lists import add_options
 from fem_racket.cli.options.output import add_overwrite_json, mesh_files, print_written
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
-from fem_racket.io.racket_files import FitSpec, fit_files
 from fem_racket.outputs import check_output_path
 from fem_racket.validation import InputError, check_integer, work_begins
 
@@ -77,6 +75,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Fit, write the mesh and its sidecar, print targets against fitted values."""
+    from fem_racket.io.racket_files import FitSpec, fit_files
+
     elements = check_integer("elements", args.elements, minimum=3)
     for name in ("length", "mass", "balance", "swing_weight"):
         if getattr(args, name) is None:
@@ -105,15 +105,3 @@ def run(args: argparse.Namespace) -> int:
         )
     print_written(files)
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "fit",
-        "a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
-        add_arguments,
-        run,
-        __doc__,
-    ),
-)

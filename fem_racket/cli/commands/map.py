@@ -25,7 +25,6 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -46,13 +45,9 @@ from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
-from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
-from fem_racket.io.mesh_files import read_mesh
-from fem_racket.studies.grid import as_values
 from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
 from fem_racket.validation import InputError
 
@@ -175,6 +170,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
     """(name, frame) of every racket the options name, presets first, each with the lead of
     --add-mass."""
+    from fem_racket.frame.segments import standard_frame
+    from fem_racket.io.mesh_files import read_mesh
+
     out: list[tuple[str, Any]] = []
     for name in args.preset or []:
         out.append((name, standard_frame(PRESETS[name])))
@@ -186,6 +184,9 @@ def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
 
 def run(args: argparse.Namespace) -> int:
     """Map every racket, write the files and print the sweet spots."""
+    from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
+    from fem_racket.studies.grid import as_values
+
     if args.no_files and args.out:
         raise InputError("no_files = True is not allowed with --out: give one of them")
     default = not (args.out or args.no_files or args.json)
@@ -233,15 +234,3 @@ def run(args: argparse.Namespace) -> int:
             print(f"  {label:<26} {text:>10} x/L")
     print_written(files)
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "map",
-        "apparent COR and ball speed along the frame, with sweet spots",
-        add_arguments,
-        run,
-        __doc__,
-    ),
-)

@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_frame_options,
     build_model,
@@ -13,8 +12,6 @@ from fem_racket.cli.common import (
     print_json,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
-from fem_racket.frame.catalogue import catalogue
-from fem_racket.frame.modal import mode_nodes
 from fem_racket.progress import progress_bar
 
 
@@ -35,6 +32,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the modal analysis."""
+    from fem_racket.frame.catalogue import catalogue
+    from fem_racket.frame.modal import mode_nodes
     from fem_racket.validation import InputError, work_begins
 
     if args.count < 1:
@@ -86,7 +85,3 @@ def run(args: argparse.Namespace) -> int:
         for k, f in enumerate(data["torsion_frequencies_hz"], start=1):
             print(f"{k:>7} {f:>13.2f}")
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (Command("modes", "free-free modal analysis of the frame", add_arguments, run),)

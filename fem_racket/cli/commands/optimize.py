@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import Command
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.cli.options.lists import add_options
@@ -108,9 +107,3 @@ def run(args: argparse.Namespace) -> int:
         print(f"Pareto front: {len(r.pareto_f)} designs (pareto.png, result.json)")
     print_written_folder(args.out)
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command("optimize", "optimum racket design (scipy, pymoo NSGA-II)", add_arguments, run),
-)

@@ -6,7 +6,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_ei_options,
     add_mesh_option,
@@ -20,7 +19,6 @@ from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option,
 from fem_racket.cli.options.impact import add_ball_options, add_separation_option, add_speed_option
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.io.figure_files import check_dpi, figure_format
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
 from fem_racket.validation import InputError, show, work_begins
 
@@ -122,6 +120,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def _plot_path(args: argparse.Namespace) -> Path:
     """--plot, or output/refine.<--format>; a --plot whose suffix contradicts --format is an
     error."""
+    from fem_racket.io.figure_files import figure_format
+
     if args.plot is None:
         return Path(f"output/refine.{args.format or 'png'}")
     path = Path(args.plot)
@@ -136,6 +136,7 @@ def _plot_path(args: argparse.Namespace) -> Path:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study, print the table (or JSON), write the CSV and the plot."""
+    from fem_racket.io.figure_files import check_dpi
     from fem_racket.io.refine_files import format_study, refine_targets, write_outputs
     from fem_racket.outputs import check_targets
     from fem_racket.studies.refine import refinement_study
@@ -203,14 +204,3 @@ def run(args: argparse.Namespace) -> int:
     print("\n\n".join(format_study(s) for s in studies.values()))
     print_written([t.path for t in refine_targets(args.csv, plot)] if outputs else [])
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "refine",
-        "mesh-refinement study: frequencies vs the exact beam, COR and contact time",
-        add_arguments,
-        run,
-    ),
-)

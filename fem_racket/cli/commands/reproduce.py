@@ -15,7 +15,7 @@ from __future__ import annotations
 import argparse
 import time
 
-from fem_racket.cli.common import Command, add_config_option, run_parameters
+from fem_racket.cli.common import add_config_option, run_parameters
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.paper.config_reproduce import DEFAULT_OUT, DEFAULT_REPORT, destinations
@@ -89,15 +89,3 @@ def run(args: argparse.Namespace) -> int:
 def _destinations(args: argparse.Namespace) -> tuple[str, str]:
     """--out and --report, defaulted (:func:`fem_racket.paper.config_reproduce.destinations`)."""
     return destinations(args.law, args.out, args.report)
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "reproduce",
-        "reproduce every figure of Kawazoe & Kanda (1997) and write REPRODUCTION.md",
-        add_arguments,
-        run,
-        __doc__,
-    ),
-)

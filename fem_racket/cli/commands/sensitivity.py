@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import Command
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.extras import require
@@ -66,9 +65,3 @@ def run(args: argparse.Namespace) -> int:
     if args.out:
         print_written([args.out, f"{args.out}.json"])
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command("sensitivity", "Sobol sensitivity of a design objective (SALib)", add_arguments, run),
-)

@@ -11,12 +11,11 @@ from __future__ import annotations
 import argparse
 import time
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_mesh_option,
     add_solver_options,
@@ -27,18 +26,17 @@ from fem_racket.cli.common import (
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.laws import add_law_options
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.contact.presets import law_parameters
-from fem_racket.frame.mesh import FrameMesh, frame_mesh
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
     DEFAULT_COMPLIANCE_RATIO,
 )
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
-from fem_racket.studies.sweep import sweep_result
 from fem_racket.validation import InputError, show
+
+if TYPE_CHECKING:
+    from fem_racket.frame.mesh import FrameMesh
+    from fem_racket.frame.segments import Frame
 
 #: Where the result goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
@@ -163,6 +161,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> None:
     """Say so when a chosen --modes exceeds the flexible modes of the coarsest mesh swept."""
+    from fem_racket.frame.mesh import FrameMesh, frame_mesh
+    from fem_racket.frame.model import DEFAULT_MODES
+    from fem_racket.frame.segments import standard_frame
+
     chosen = "modes" in getattr(args, "explicit_options", ()) or args.modes != DEFAULT_MODES
     if args.basis != "modal" or not chosen:
         return
@@ -183,7 +185,9 @@ def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> No
 def run(args: argparse.Namespace) -> int:
     """Run the sweep, write the file and print a summary."""
     from fem_racket.cli.common import frame_from_args
+    from fem_racket.contact.presets import law_parameters
     from fem_racket.studies.executors import check_scheduler
+    from fem_racket.studies.sweep import sweep_result
 
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:
@@ -241,15 +245,3 @@ def run(args: argparse.Namespace) -> int:
     print(f"wrote {args.out}: {n} impacts ({shape}) in {wall:.2f} s ({n / wall:.0f} impacts/s)")
     print(f"COR from {summary['cor_min']:.6f} to {summary['cor_max']:.6f}")
     return 0
-
-
-#: The command, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "sweep",
-        "simulate a grid of impacts and save one netCDF dataset",
-        add_arguments,
-        run,
-        __doc__,
-    ),
-)

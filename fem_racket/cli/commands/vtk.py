@@ -6,7 +6,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    Command,
     add_config_option,
     add_impact_options,
     add_output_step_option,
@@ -22,8 +21,6 @@ from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, strings_from_args, strung_from_args
 from fem_racket.extras import require
-from fem_racket.impact.simulate import simulate
-from fem_racket.io.config_drawings import STRUNG_FRAMES
 from fem_racket.validation import InputError
 
 #: Where export-vtk and animate write unless --out is given.
@@ -80,7 +77,7 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
     add_quiet_option(p)
 
 
-def add_export_options(p: argparse.ArgumentParser) -> None:
+def add_export_arguments(p: argparse.ArgumentParser) -> None:
     """The ``export-vtk`` command's options."""
     p.add_argument(
         "--out",
@@ -95,7 +92,7 @@ def add_export_options(p: argparse.ArgumentParser) -> None:
     add_config_option(p, private=("out",))  # a folder, not output.out
 
 
-def add_animate_options(a: argparse.ArgumentParser) -> None:
+def add_animate_arguments(a: argparse.ArgumentParser) -> None:
     """The ``animate`` command's options."""
     a.add_argument(
         "--out",
@@ -124,6 +121,8 @@ def add_animate_options(a: argparse.ArgumentParser) -> None:
 
 
 def _simulate(args: argparse.Namespace):
+    from fem_racket.impact.simulate import simulate
+
     check_output_step(args.output_step)
     model = build_model(args)
     result = simulate(model, output_step=args.output_step, **impact_kwargs(args))
@@ -189,6 +188,7 @@ def run_export(args: argparse.Namespace) -> int:
 def _export_strung(args: argparse.Namespace, strings, overwrite: bool) -> int:
     """The strung racket's series: frame, ball and the bed's surface (part ``strings``); 101
     steps unless --frames says (its histories have 801 output times)."""
+    from fem_racket.io.config_drawings import STRUNG_FRAMES
     from fem_racket.io.strung_vtk import write_strung_vtk
 
     for dest in ("subdivide", "field"):  # on the command line or in the run file
@@ -248,17 +248,3 @@ def run_animate(args: argparse.Namespace) -> int:
     )
     print_written(t.path for t in animation_targets(path))
     return 0
-
-
-#: The commands, for ``cli.build_parser``.
-COMMANDS = (
-    Command(
-        "export-vtk",
-        "write the impact as a VTK time series (.pvd + .vtu) for ParaView",
-        add_export_options,
-        run_export,
-    ),
-    Command(
-        "animate", "render the impact offscreen as a GIF or MP4", add_animate_options, run_animate
-    ),
-)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import argparse
 from dataclasses import fields
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.common import add_config_option, add_frame_options, frame_from_args
 from fem_racket.cli.options.drawing import add_quiet_option
@@ -17,9 +17,9 @@ from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.objectives import add_objective_options, objectives_from_args
 from fem_racket.cli.options.variables import add_variable_options
 from fem_racket.cli.options.zones import add_zone_options
-from fem_racket.studies.design.build import build_problem
-from fem_racket.studies.design.options import DesignOptions, VariableOptions, ZoneOptions
-from fem_racket.studies.design.problem import DesignProblem
+
+if TYPE_CHECKING:
+    from fem_racket.studies.design.problem import DesignProblem
 
 __all__ = ["add_design_options", "add_study_tail", "problem_from_args"]
 
@@ -59,6 +59,9 @@ def _group(kind: type, args: argparse.Namespace) -> Any:
 
 def problem_from_args(args: argparse.Namespace) -> DesignProblem:
     """The design problem the options describe."""
+    from fem_racket.studies.design.build import build_problem
+    from fem_racket.studies.design.options import DesignOptions, VariableOptions, ZoneOptions
+
     options = DesignOptions(
         variables=_group(VariableOptions, args),
         zone_options=_group(ZoneOptions, args),

@@ -4,10 +4,13 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.drawing import progress_of
-from fem_racket.studies.design.options import ExecutionOptions
 from fem_racket.studies.executors import BACKENDS
+
+if TYPE_CHECKING:
+    from fem_racket.studies.design.options import ExecutionOptions
 
 __all__ = ["add_run_options", "execution_from_args"]
 
@@ -34,6 +37,8 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
 def execution_from_args(args: argparse.Namespace) -> ExecutionOptions:
     """Where the designs run (--backend, --workers, --scheduler) and whether a progress bar
     shows (``--quiet``)."""
+    from fem_racket.studies.design.options import ExecutionOptions
+
     return ExecutionOptions(
         backend=args.backend,
         workers=args.workers,

@@ -22,8 +22,6 @@ from typing import Any
 from fem_racket.cli.common import print_json, run_parameters, significant, swing_kwargs
 from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.frame.model import FrameModel
-from fem_racket.studies.grid import as_values
 from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
 from fem_racket.validation import InputError
 
@@ -114,8 +112,10 @@ def run_face(
 
 def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: list) -> int:
     """``--angle`` ...: the oblique ball's spin over the face."""
+    from fem_racket.frame.model import FrameModel
     from fem_racket.impact.incidence import Incidence
     from fem_racket.io.spin_map_files import write_spin_map
+    from fem_racket.studies.grid import as_values
     from fem_racket.studies.spin_map import spin_map
 
     given = given_options(args)
@@ -168,8 +168,10 @@ def _run_power(
     args: argparse.Namespace, outs: list[Path], positions: Any, law: Any, rackets: list
 ) -> int:
     """``--offsets``: the power map of the whole face (:mod:`fem_racket.studies.face_map`)."""
+    from fem_racket.frame.model import FrameModel
     from fem_racket.io.face_files import write_face
     from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
+    from fem_racket.studies.grid import as_values
 
     if law is not None:
         raise InputError(
