@@ -38,13 +38,14 @@ from fem_racket.cli.options.faces import (
     add_face_options,
     face_asked,
     map_impact,
+    map_rackets,
     print_maps_json,
     run_face,
 )
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
@@ -200,19 +201,16 @@ def run(args: argparse.Namespace) -> int:
         return run_face(args, outs, positions, law, _rackets(args))
     if args.power_fraction is None:
         args.power_fraction = DEFAULT_POWER_FRACTION
-    maps = [
-        racket_map(
-            FrameModel.build(frame, args.elements),
-            name=name,
-            speed=args.speed,
-            positions=positions,
-            power_fraction=args.power_fraction,
-            law=law,
-            **swing_kwargs(args),
-            **map_impact(args),
-        )
-        for name, frame in _rackets(args)
-    ]
+    maps = map_rackets(
+        racket_map,
+        args,
+        _rackets(args),
+        positions=positions,
+        power_fraction=args.power_fraction,
+        law=law,
+        **swing_kwargs(args),
+        **map_impact(args),
+    )
     if outs:  # as one set: all of them or none
         write_maps(maps, outs, overwrite=overwrite, parameters=run_parameters(args))
     if args.json:
