@@ -16,6 +16,7 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
+from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.impact import add_ball_options, add_separation_option, add_speed_option
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.model import DEFAULT_MODES
@@ -140,6 +141,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.io.refine_files import format_study, refine_targets, write_outputs
     from fem_racket.outputs import check_targets
     from fem_racket.studies.refine import refinement_study
+    from fem_racket.studies.refine_options import RefineOptions
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
@@ -162,27 +164,10 @@ def run(args: argparse.Namespace) -> int:
     if outputs:  # fail before the work, not after it
         check_targets(refine_targets(args.csv, plot), overwrite=overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
-    impact = {
-        "ball_mass": args.ball_mass,
-        "kcb": args.kcb,
-        "zeta": args.zeta,
-        "separation": args.separation,
-    }
+    options = fields_from_args(args, RefineOptions, n_modes=args.count, progress=progress_of(args))
     work_begins()
     studies = {
-        fam: refinement_study(
-            frame,
-            args.elements,
-            family=fam,
-            n_modes=args.count,
-            positions=args.positions,
-            speed=args.speed,
-            grading=args.grading,
-            impact_nodes=args.impact_nodes,
-            impact_modes=args.impact_modes,
-            progress=progress_of(args),
-            **impact,
-        )
+        fam: refinement_study(frame, args.elements, **(options | {"family": fam}))
         for fam in families
     }
     if outputs:

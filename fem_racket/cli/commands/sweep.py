@@ -24,6 +24,7 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
+from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.laws import add_law_options
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.impact.incidence import (
@@ -188,6 +189,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.contact.presets import law_parameters
     from fem_racket.studies.executors import check_scheduler
     from fem_racket.studies.sweep import sweep_result
+    from fem_racket.studies.sweep_options import SweepRun, SweepSolving
 
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:
@@ -202,30 +204,17 @@ def run(args: argparse.Namespace) -> int:
     custom = args.mesh is not None or getattr(args, "segments", None)
     frame = frame_from_args(args, exclusive=("ei1", "ei2")) if custom else None
     start = time.perf_counter()
-    result = sweep_result(
-        frame,
-        **values,
-        ei2=args.ei2,
-        solver=args.solver,
-        separation=args.separation,
-        basis=args.basis,
-        modes=args.modes,
-        rtol=args.rtol,
-        atol=args.atol,
-        law=args.law,
-        tolerance=args.tolerance,
-        peak_force=args.peak_force,
+    running = fields_from_args(
+        args,
+        SweepRun,
         output=args.out,
         overwrite=replace_own(args, Path(args.out) == DEFAULT_OUTPUT, [args.out]),
-        restart=args.restart,
         backend=backend,
-        workers=args.workers,
-        scheduler=args.scheduler,
-        chunk_size=args.chunk_size,
         progress=progress_of(args),
         parameters=run_parameters(args),
-        **law_parameters(vars(args)),
     )
+    solving = fields_from_args(args, SweepSolving)
+    result = sweep_result(frame, **values, **solving, **running, **law_parameters(vars(args)))
     wall = time.perf_counter() - start
     _note_modes(args, frame)
     done = result.summary()

@@ -16,6 +16,7 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
+from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options, option_name
@@ -222,14 +223,7 @@ def run_animate(args: argparse.Namespace) -> int:
     from fem_racket.io.animate import AnimationOptions, animation_targets, render_animation
 
     overwrite = _check_early(args)
-    options = AnimationOptions(
-        field=args.field,
-        frames=args.frames,
-        fps=args.fps,
-        scale=args.scale,
-        subdivide=args.subdivide,
-        size=args.size,
-    )
+    options = options_from_args(args, AnimationOptions)
     strings = strings_from_args(args)
     model = None
     if strings is None:

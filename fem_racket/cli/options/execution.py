@@ -7,6 +7,7 @@ import argparse
 from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.drawing import progress_of
+from fem_racket.cli.options.fields import options_from_args
 from fem_racket.studies.executors import BACKENDS
 
 if TYPE_CHECKING:
@@ -39,9 +40,4 @@ def execution_from_args(args: argparse.Namespace) -> ExecutionOptions:
     shows (``--quiet``)."""
     from fem_racket.studies.design.options import ExecutionOptions
 
-    return ExecutionOptions(
-        backend=args.backend,
-        workers=args.workers,
-        scheduler=args.scheduler,
-        progress=progress_of(args),
-    )
+    return options_from_args(args, ExecutionOptions, progress=progress_of(args))

@@ -7,6 +7,7 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
+from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.lists import number_list
 from fem_racket.frame.hand import GRIPS
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
@@ -89,11 +90,7 @@ def objectives_from_args(args: argparse.Namespace) -> ObjectiveOptions:
     """The objectives and constraints the options give."""
     from fem_racket.studies.design.options import ObjectiveOptions
 
-    return ObjectiveOptions(
-        objectives=args.objective,
-        constraints={q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()},
-        stiffness_cost=args.stiffness_cost,
-        power_fraction=args.power_fraction,
-        grip=args.grip,
-        shock_window=args.shock_window,
+    constraints = {q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()}
+    return options_from_args(
+        args, ObjectiveOptions, objectives=args.objective, constraints=constraints
     )
