@@ -92,18 +92,21 @@ def test_help_lists_the_commands_without_their_modules(tmp_path):
 
 
 #: What a command's ``--help`` needs not import: the run-file reader (``--config`` is read after
-#: parsing), mesh files, the plausibility checks, and each command's own run-time modules.
+#: parsing), mesh files read and written, the plausibility checks, and each command's own
+#: run-time modules.
 RUN_ONLY = (
     "fem_racket.io.config",
     "fem_racket.io.config_file",
     "fem_racket.io.config_unused",
     "fem_racket.io.mesh_files",
+    "fem_racket.io.racket_files",
     "fem_racket.frame.plausible",
 )
 RUN_ONLY_OF = {
     "simulate": ("fem_racket.impact.simulate", "fem_racket.io.impact_provenance"),
     "modes": ("fem_racket.frame.catalogue", "fem_racket.io.config_keys"),
     "fit": ("fem_racket.io.config_keys",),
+    "customise": ("fem_racket.io.map_files",),
     "map": ("fem_racket.io.map_files", "fem_racket.studies.grid"),
     "sweep": ("fem_racket.studies.sweep", "fem_racket.studies.checkpoint"),
 }

@@ -28,7 +28,7 @@ from fem_racket.cli.common import (
     significant,
     swing_kwargs,
 )
-from fem_racket.cli.options.output import add_overwrite_json, mesh_files
+from fem_racket.cli.options.output import add_overwrite_json
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
@@ -70,7 +70,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.map_files import check_map_outputs, map_targets
-    from fem_racket.io.racket_files import customise_files
+    from fem_racket.io.racket_files import customise_files, mesh_files
     from fem_racket.outputs import check_output_path
     from fem_racket.validation import work_begins
 

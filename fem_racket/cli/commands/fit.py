@@ -22,7 +22,7 @@ from fem_racket.cli.common import (
     significant,
 )
 from fem_racket.cli.options.lists import add_options
-from fem_racket.cli.options.output import add_overwrite_json, mesh_files, print_written
+from fem_racket.cli.options.output import add_overwrite_json, print_written
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
 from fem_racket.outputs import check_output_path
@@ -75,7 +75,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Fit, write the mesh and its sidecar, print targets against fitted values."""
-    from fem_racket.io.racket_files import FitSpec, fit_files
+    from fem_racket.io.racket_files import FitSpec, fit_files, mesh_files
 
     elements = check_integer("elements", args.elements, minimum=3)
     for name in ("length", "mass", "balance", "swing_weight"):
