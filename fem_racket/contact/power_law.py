@@ -28,19 +28,21 @@ _EXPONENT = {"field": "exponent", "unit": "-", "low": EXPONENT_RANGE[0], "high":
 
 
 def stiffness(
-    name: str, field: str, default: float, help: str, why: str = STIFFNESS_WHY
+    name: str, default: float, help: str, why: str = STIFFNESS_WHY, field: str | None = None
 ) -> LawParameter:
     """A power law's stiffness k [N/m^n] within :data:`STIFFNESS_RANGE`, run-file key
     ``<name>_n_m_n`` (the unit's suffix).
 
     Parameters
     ----------
-    name, field : str
-        Its name (option, sweep axis) and the law's dataclass attribute holding it.
+    name : str
+        Its name (option, sweep axis).
     default : float
         The family's default [N/m^n].
     help, why : str
         One line for ``--help``; the reasoning of the bounds.
+    field : str, optional
+        The law's dataclass attribute holding it; the name when None.
     """
     return LawParameter(name=name, field=field, default=default, help=help, why=why, **_STIFFNESS)
 
