@@ -132,18 +132,10 @@ def animate_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None
     o = _drawing(cfg, "animate", ANIMATE_DEFAULTS, ("hand", "oblique"))
     strung = _strung(cfg, "animate", o)
     model, result = run_file(cfg, histories=True, table="animate")
-    options = AnimationOptions(
-        field=o["field"],
-        frames=o["frames"],
-        fps=o["fps"],
-        scale=o["scale"],
-        subdivide=o["subdivide"],
-        size=o["size"],
-    )
     return render_animation(
         result,
         out or o["out"],
-        options,
+        AnimationOptions.of(o),
         model=model if strung else None,
         overwrite=o["overwrite"],
         parameters=parameters,
