@@ -16,7 +16,6 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
-from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options, option_name
@@ -223,7 +222,7 @@ def run_animate(args: argparse.Namespace) -> int:
     from fem_racket.io.animate import AnimationOptions, animation_targets, render_animation
 
     overwrite = _check_early(args)
-    options = options_from_args(args, AnimationOptions)
+    options = AnimationOptions.of(vars(args))
     strings = strings_from_args(args)
     model = None
     if strings is None:
