@@ -85,16 +85,21 @@ class CommandMethods:
         return sensitivity_file(self, out)
 
     def modes(self) -> Any:
-        """The free-free modes ``fem-racket modes --config FILE`` reports.
+        """The free-free modal analysis ``fem-racket modes --config FILE`` reports.
 
         Returns
         -------
-        FreeModes
-            Of the file's frame (``[frame]`` with its lead), ``[modes] count`` flexible ones
-            (4 by default): frequencies [Hz], shapes, mass properties (mass [kg], centre of
-            gravity [m], inertia [kg m^2]). See :func:`fem_racket.io.config_racket.modes_file`.
+        RacketModes
+            Of the file's frame (``[frame]`` with its lead), ``[modes] count`` flexible modes
+            (4 by default): ``bending`` (a FreeModes: frequencies [Hz], shapes, mass
+            properties: mass [kg], centre of gravity [m], inertia [kg m^2]), ``nodes`` of each
+            mode [x/L], the swing weight and twistweight [kg m^2] (``catalogue``) and, on a
+            frame with torsion data, ``torsion`` (a TorsionModes: frequencies [Hz], polar
+            moment [kg m^2]; else None). ``.frequencies`` and ``.props`` are the bending
+            ones; ``.summary()`` is the command's ``--json``. See
+            :func:`fem_racket.io.config_modes.modes_file`.
         """
-        from fem_racket.io.config_racket import modes_file
+        from fem_racket.io.config_modes import modes_file
 
         return modes_file(self)
 

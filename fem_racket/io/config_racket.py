@@ -1,11 +1,11 @@
-"""A run file's racket commands in Python: :meth:`RunConfig.modes` = ``fem-racket modes
---config``, :meth:`RunConfig.fit` = ``fit``, :meth:`RunConfig.customise` = ``customise`` and
-:meth:`RunConfig.closest` = ``closest``.
+"""A run file's racket commands in Python: :meth:`RunConfig.fit` = ``fem-racket fit --config``,
+:meth:`RunConfig.customise` = ``customise`` and :meth:`RunConfig.closest` = ``closest``
+(``modes``: :mod:`fem_racket.io.config_modes`).
 
-Each takes from the core tables what its command has options for (``modes`` and ``customise``
-the frame with its lead, ``customise`` the ball's speed and the swing of its maps, ``fit`` and
-``customise`` ``output.overwrite``) and skips the other keys, as the command does; its own
-table (``[modes]``, ``[fit]``, ...) is read as the command reads it
+Each takes from the core tables what its command has options for (``customise`` the frame with
+its lead, the ball's speed and the swing of its maps, ``fit`` and ``customise``
+``output.overwrite``) and skips the other keys, as the command does; its own table (``[fit]``,
+...) is read as the command reads it
 (:func:`fem_racket.io.config_tables.table_options`). Files are written only where the method is
 given ``out`` or the table names one (``[fit] out``, ``[customise] out``): the same files the
 command writes there, checked before the work as the command checks them.
@@ -28,11 +28,9 @@ __all__ = [
     "CUSTOMISE_MAPS",
     "CUSTOMISE_OPTIONS",
     "FIT_OPTIONS",
-    "MODES_OPTIONS",
     "closest_file",
     "customise_file",
     "fit_file",
-    "modes_file",
 ]
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
@@ -60,7 +58,6 @@ def _targets(ranked: bool) -> dict[str, tuple[Any, Option]]:
 #: but ``out`` (no file unless given).
 _FILES = {"out": (None, text), "overwrite": (False, flag)}
 _SPEC = ("length", "mass", "balance", "swing_weight", "f1", "twist_weight", "torsion_frequency")
-MODES_OPTIONS: dict[str, tuple[Any, Option]] = {"count": (4, integer)}
 FIT_OPTIONS = {**dict.fromkeys(_SPEC, (None, number)), "elements": (DEFAULT_ELEMENTS, integer),
                **_FILES}  # fmt: skip
 CUSTOMISE_OPTIONS = {**_targets(False), **_FILES, "maps": (CUSTOMISE_MAPS, text)}
@@ -70,20 +67,6 @@ CLOSEST_OPTIONS = {**_targets(True), "count": (3, integer)}
 def _overwrite(cfg: RunConfig) -> dict[str, Any]:
     d = cfg.defaults()
     return {"overwrite": d["overwrite"]} if "overwrite" in d else {}
-
-
-def modes_file(cfg: RunConfig) -> Any:
-    """The free-free modes ``fem-racket modes --config`` computes: the FreeModes of the
-    file's frame, ``[modes] count`` flexible ones (4 by default)."""
-    from fem_racket.frame.model import FrameModel
-    from fem_racket.io.config_run import file_frame
-
-    o = table_options(cfg, "modes", MODES_OPTIONS)
-    if o["count"] < 1:
-        raise InputError(f"count = {o['count']} is not allowed: must be an integer >= 1")
-    model = FrameModel.build(file_frame(cfg), cfg.defaults().get("elements", FRAME_ELEMENTS))
-    work_begins()
-    return model.modes(o["count"])
 
 
 def fit_file(cfg: RunConfig, out: Any = None) -> Any:

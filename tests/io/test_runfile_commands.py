@@ -204,12 +204,12 @@ def test_the_methods_read_the_commands_tables():
     # given); json and quiet only say how the command prints, taken where its parser has them
     from fem_racket.cli.commands.config import _commands
     from fem_racket.cli.options.runfile import file_options
-    from fem_racket.io import config_racket, config_reports
+    from fem_racket.io import config_modes, config_racket, config_reports
     from fem_racket.io.config_tables import PRINT_KEYS
     from fem_racket.paper.config_reproduce import REPRODUCE_OPTIONS
 
     tables = {
-        "modes": config_racket.MODES_OPTIONS,
+        "modes": config_modes.MODES_OPTIONS,
         "fit": config_racket.FIT_OPTIONS,
         "customise": config_racket.CUSTOMISE_OPTIONS,
         "closest": config_racket.CLOSEST_OPTIONS,
