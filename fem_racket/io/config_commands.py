@@ -111,7 +111,10 @@ class CommandMethods:
         ----------
         out : path, optional
             Mesh file to write, with its sidecar ``out.json``, as the command writes them
-            (else ``[fit] out``; neither: nothing written).
+            (else ``[fit] out``; neither: nothing written). Both or neither; existing files are
+            refused as the command refuses them: replaced with ``overwrite`` in the file, or
+            when ``out`` is the command's default ``output/racket.vtu`` and holds an earlier
+            fit (see :mod:`fem_racket.io.config_rerun`).
 
         Returns
         -------

@@ -72,8 +72,11 @@ def _overwrite(cfg: RunConfig) -> dict[str, Any]:
 def fit_file(cfg: RunConfig, out: Any = None) -> Any:
     """The frame ``fem-racket fit --config`` fits to ``[fit]``'s catalogue numbers (a Frame:
     three segments); with ``out`` (else ``[fit] out``) the mesh file and its sidecar written
-    there, as the command writes them."""
-    from fem_racket.io.racket_files import FitSpec, fit_files, fit_frame, mesh_files
+    there, as the command writes them: both or neither, an existing one refused unless the
+    file says ``overwrite``, or ``out`` is the command's default (``output/racket.vtu``) and
+    holds an earlier fit (the command replaces its own output there)."""
+    from fem_racket.io.config_rerun import rerun_overwrite
+    from fem_racket.io.racket_files import FIT_OUTPUT, FitSpec, fit_files, fit_frame, mesh_files
     from fem_racket.outputs import check_output_path
 
     o = table_options(cfg, "fit", FIT_OPTIONS, _overwrite(cfg))
@@ -89,11 +92,13 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
     if out is None:
         work_begins()
         return fit_frame(fit)[0]
-    for f in mesh_files(Path(out)):
-        check_output_path(f, overwrite=o["overwrite"])
+    files = mesh_files(Path(out))
+    overwrite = rerun_overwrite(o["overwrite"], Path(out) == FIT_OUTPUT, files)
+    for f in files:
+        check_output_path(f, overwrite=overwrite)
     work_begins()
     parameters = {"config": str(cfg.source), **o, "out": str(out)}
-    return fit_files(fit, Path(out), parameters, overwrite=o["overwrite"])[0]
+    return fit_files(fit, Path(out), parameters, overwrite=overwrite)[0]
 
 
 def customise_file(cfg: RunConfig, out: Any = None) -> Any:

@@ -17,6 +17,7 @@ from fem_racket.outputs import json_ready, provenance
 from fem_racket.validation import InputError
 
 __all__ = [
+    "FIT_OUTPUT",
     "FitSpec",
     "customise_files",
     "fit_files",
@@ -24,6 +25,10 @@ __all__ = [
     "mesh_files",
     "write_mesh_files",
 ]
+
+#: Where ``fem-racket fit`` writes its mesh unless told (``--out``, ``[fit] out``), replacing the
+#: mesh an earlier fit wrote there.
+FIT_OUTPUT = Path("output") / "racket.vtu"
 
 
 def mesh_files(out: Path) -> list[Path]:
