@@ -127,10 +127,17 @@ def _execution(own: dict[str, Any]) -> Any:
     return ExecutionOptions(**{k: own.get(k) for k in keys}, progress=False)
 
 
+def _overwrite(cfg: RunConfig, own: dict[str, Any]) -> bool:
+    """``overwrite`` of the command's table, else ``[output] overwrite``, as the commands."""
+    return bool(own.get("overwrite", cfg.defaults().get("overwrite", False)))
+
+
 def optimize_file(cfg: RunConfig, out: Any = None, *, restart: bool = False) -> Any:
     """The optimisation ``fem-racket optimize --config`` runs on ``cfg`` (its files written
-    into ``out``, else ``[design] out``, else ``output/design``, as the command); the
+    into ``out``, else ``[design] out``, else ``output/design``, as the command: an existing
+    folder replaced with ``overwrite``, or at the default when it holds an earlier study); the
     :func:`~fem_racket.io.design_study.run_optimization` result."""
+    from fem_racket.io.config_rerun import rerun_overwrite
     from fem_racket.io.design_study import OptimizationRun, OutputOptions, run_optimization
     from fem_racket.studies.design.options import SearchOptions
 
@@ -140,7 +147,9 @@ def optimize_file(cfg: RunConfig, out: Any = None, *, restart: bool = False) -> 
         from fem_racket.extras import require
 
         require("pymoo", "RunConfig.optimize with method nsga2")
-    files = OutputOptions(out or own.get("out") or DEFAULT_DESIGN_OUT, own.get("overwrite", False))
+    folder = out or own.get("out") or DEFAULT_DESIGN_OUT
+    default = os.fspath(folder) == DEFAULT_DESIGN_OUT  # the command's own study is replaced
+    files = OutputOptions(folder, rerun_overwrite(_overwrite(cfg, own), default, [folder]))
     search = SearchOptions(**search, seed=own.get("seed", 1))
     return run_optimization(OptimizationRun(problem, search, _execution(own), files, restart))
 
@@ -153,7 +162,7 @@ def sensitivity_file(cfg: RunConfig, out: Any = None) -> Any:
 
     require("SALib", "RunConfig.sensitivity")
     problem, sobol, own = _problem(cfg, "sensitivity", "sensitivity", dict(_SOBOL))
-    files = OutputOptions(out or own.get("out"), own.get("overwrite", False))
+    files = OutputOptions(out or own.get("out"), _overwrite(cfg, own))
     run = SensitivityRun(problem, sobol["output"], sobol["designs"], own.get("seed", 1),
                          _execution(own), files)  # fmt: skip
     return run_sensitivity(run)
