@@ -35,7 +35,9 @@ class CommandMethods:
     def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
         """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
         ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_sweep.sweep_file`.
-        ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`)."""
+        ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`), over
+        ``[sweep]``'s ``serial``, ``workers`` and ``scheduler`` (taken as the command takes
+        them)."""
         from fem_racket.io.config_sweep import sweep_file
 
         return sweep_file(self, backend=backend, workers=workers)
