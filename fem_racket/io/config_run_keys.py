@@ -1,0 +1,62 @@
+"""The run keys of ``[sweep]``, ``[map]`` and ``[refine]``: where the command writes, how it prints
+(and, for ``sweep``, where its cases run), read by the run file's methods as the commands read
+them.
+
+The methods :meth:`RunConfig.sweep`, ``.map`` and ``.refine`` write no file, yet a key their
+command refuses is refused here too, with the same words (its type: a flag true or false, an
+integer, a text, an array; a suffix or format the command does not write; keys that contradict
+each other), and a key the command does not have is not a key of its table
+(:data:`RUN_KEYS`). A destination's state (a file already there) is not checked: the methods
+write nothing there.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from fem_racket.io.config_tables import Option, choice, flag, integer, number, text, texts
+from fem_racket.io.figure_files import FIGURE_FORMATS
+from fem_racket.validation import InputError
+
+__all__ = ["RUN_KEYS", "run_keys"]
+
+#: Each command's run keys (its options in its table that do not change what it computes):
+#: key -> conversion, as the command's parser converts them.
+RUN_KEYS: dict[str, dict[str, Option]] = {
+    "sweep": {"out": text, "overwrite": flag, "restart": flag, "serial": flag,
+              "workers": integer, "scheduler": text, "quiet": flag, "json": flag},
+    "map": {"out": texts, "overwrite": flag, "no_files": flag, "json": flag},
+    "refine": {"csv": text, "plot": text, "format": choice(FIGURE_FORMATS), "dpi": number,
+               "overwrite": flag, "no_files": flag, "json": flag, "quiet": flag},
+}  # fmt: skip
+
+
+def _refine(o: Mapping[str, Any]) -> None:
+    """The plot's suffix, its format and resolution, as ``fem-racket refine`` checks them."""
+    from fem_racket.io.figure_files import DEFAULT_DPI, check_dpi, figure_format
+
+    fmt = o.get("format")
+    plot = figure_format(o["plot"]) if "plot" in o else None  # its suffix
+    if plot is not None and fmt is not None and plot != fmt:
+        raise InputError(
+            f"format = {fmt!r} is not allowed with --plot '{o['plot']}': give one of them, "
+            "or a --plot ending in ." + fmt
+        )
+    check_dpi(o.get("dpi", DEFAULT_DPI))
+
+
+def run_keys(command: str, table: Mapping[str, Any]) -> dict[str, Any]:
+    """The run keys of ``command``'s ``table`` (its keys with ``-`` as ``_``), converted and
+    checked as the command checks them: key -> value."""
+    kinds = RUN_KEYS[command]
+    o = {k: conv(f"{command}.{k}", table[k]) for k, conv in kinds.items() if k in table}
+    if command == "map":
+        from fem_racket.io.map_files import map_targets
+
+        if o.get("no_files") and o.get("out"):
+            raise InputError("no_files = True is not allowed with --out: give one of them")
+        map_targets(o.get("out", []))  # their suffixes
+    elif command == "refine":
+        _refine(o)
+    return o
