@@ -17,6 +17,7 @@ from dataclasses import fields
 from typing import Any
 
 from fem_racket.io.config_keys import reject_unknown
+from fem_racket.io.config_tables import flag, integer, number, text
 from fem_racket.validation import InputError, show
 
 __all__ = ["CONSTRAINTS", "optimize_file", "sensitivity_file"]
@@ -35,6 +36,17 @@ _RUN = ("backend", "workers", "scheduler", "seed", "quiet", "json", "out", "over
 #: The search's keys (optimize) and the analysis's (sensitivity), with their defaults.
 _SEARCH = {"method": "SLSQP", "maxiter": 100, "popsize": 10, "pop_size": 50, "generations": 100}
 _SOBOL = {"output": None, "designs": 10_000}
+#: The tables' keys of one number, flag or text, converted as the commands' parsers convert
+#: them (choices, lists and ranges are checked where they are read).
+_TYPED: dict[str, Any] = {
+    **dict.fromkeys(("designs", "generations", "maxiter", "pop_size", "popsize", "seed",
+                     "workers", "zone_points"), integer),
+    **dict.fromkeys(("mass_start", "power_fraction", "shock_window", "stiffness_cost",
+                     "swing_exponent", "zone_sigma"), number),
+    **dict.fromkeys(("json", "link_ei", "overwrite", "quiet", "restart"), flag),
+    "out": text,
+    "scheduler": text,
+}  # fmt: skip
 #: Default output of optimize (the command's; sensitivity writes nothing by default).
 DEFAULT_DESIGN_OUT = os.path.join("output", "design")
 RunConfig = Any
@@ -98,6 +110,7 @@ def _problem(cfg: RunConfig, command: str, table: str, rest: dict[str, Any]) -> 
     own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
     allowed = [k for k in names if k not in _CORE] + [*goals, *CONSTRAINTS, *rest, *_RUN]
     reject_unknown(own, allowed, table)
+    own = {k: _TYPED[k](f"{table}.{k}", v) if k in _TYPED else v for k, v in own.items()}
     d = cfg.defaults()
     values = {**{k: d[k] for k in _CORE if k in d}, **own}
     goal = {k: own[k] for k in goals[1:] if k in own}

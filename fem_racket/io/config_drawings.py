@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.io.config_keys import reject_unknown
+from fem_racket.io.config_run_keys import run_keys
 from fem_racket.validation import InputError, show
 
 __all__ = ["ANIMATE_DEFAULTS", "VTK_DEFAULTS", "animate_file", "vtk_file"]
@@ -68,6 +69,7 @@ def _drawing(cfg: RunConfig, table: str, defaults: dict[str, Any], refused: tupl
         )
     own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
     reject_unknown(own, [*defaults, *_PRINT_KEYS], table)
+    own.update(run_keys(table, own))  # out, overwrite, quiet: checked as the command
     core = {k: v for k, v in cfg.defaults().items() if k == "overwrite"}  # [output] overwrite
     out = {**defaults, **core, **{k: v for k, v in own.items() if k not in _PRINT_KEYS}}
     if isinstance(out.get("size"), str):

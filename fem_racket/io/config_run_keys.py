@@ -1,13 +1,12 @@
-"""The run keys of ``[sweep]``, ``[map]`` and ``[refine]``: where the command writes, how it prints
-(and, for ``sweep``, where its cases run), read by the run file's methods as the commands read
-them.
+"""The run keys of ``[sweep]``, ``[map]``, ``[refine]``, ``[vtk]`` and ``[animate]``: where the
+command writes, how it prints (and, for ``sweep``, where its cases run), read by the run file's
+methods as the commands read them.
 
-The methods :meth:`RunConfig.sweep`, ``.map`` and ``.refine`` write no file, yet a key their
-command refuses is refused here too, with the same words (its type: a flag true or false, an
-integer, a text, an array; a suffix or format the command does not write; keys that contradict
-each other), and a key the command does not have is not a key of its table
-(:data:`RUN_KEYS`). A destination's state (a file already there) is not checked: the methods
-write nothing there.
+A key the command refuses is refused by its method too, with the same words (its type: a flag
+true or false, an integer, a text, an array; a suffix or format the command does not write; keys
+that contradict each other), and a key the command does not have is not a key of its table
+(:data:`RUN_KEYS`). The methods :meth:`RunConfig.sweep`, ``.map`` and ``.refine`` write no file:
+a destination's state (a file already there) is not checked for them.
 """
 
 from __future__ import annotations
@@ -21,9 +20,12 @@ from fem_racket.validation import InputError
 
 __all__ = ["RUN_KEYS", "run_keys"]
 
-#: Each command's run keys (its options in its table that do not change what it computes):
-#: key -> conversion, as the command's parser converts them.
+#: The run keys of each command's table (its options there that do not change what it
+#: computes): key -> conversion, as the command's parser converts them.
+_DRAWING: dict[str, Option] = {"out": text, "overwrite": flag, "quiet": flag}
 RUN_KEYS: dict[str, dict[str, Option]] = {
+    "vtk": _DRAWING,
+    "animate": _DRAWING,
     "sweep": {"out": text, "overwrite": flag, "restart": flag, "serial": flag,
               "workers": integer, "scheduler": text, "quiet": flag, "json": flag},
     "map": {"out": texts, "overwrite": flag, "no_files": flag, "json": flag},
@@ -46,17 +48,17 @@ def _refine(o: Mapping[str, Any]) -> None:
     check_dpi(o.get("dpi", DEFAULT_DPI))
 
 
-def run_keys(command: str, table: Mapping[str, Any]) -> dict[str, Any]:
-    """The run keys of ``command``'s ``table`` (its keys with ``-`` as ``_``), converted and
-    checked as the command checks them: key -> value."""
-    kinds = RUN_KEYS[command]
-    o = {k: conv(f"{command}.{k}", table[k]) for k, conv in kinds.items() if k in table}
-    if command == "map":
+def run_keys(name: str, table: Mapping[str, Any]) -> dict[str, Any]:
+    """The run keys of the command table ``name`` (``[vtk]`` for export-vtk), its keys ``table``
+    (``-`` as ``_``) converted and checked as the command checks them: key -> value."""
+    kinds = RUN_KEYS[name]
+    o = {k: conv(f"{name}.{k}", table[k]) for k, conv in kinds.items() if k in table}
+    if name == "map":
         from fem_racket.io.map_files import map_targets
 
         if o.get("no_files") and o.get("out"):
             raise InputError("no_files = True is not allowed with --out: give one of them")
         map_targets(o.get("out", []))  # their suffixes
-    elif command == "refine":
+    elif name == "refine":
         _refine(o)
     return o

@@ -29,7 +29,7 @@ def test_the_run_keys_are_the_commands_options(command):
     from fem_racket.cli.options.runfile import file_options
     from fem_racket.io.config_studies import MAP_DEFAULTS, REFINE_DEFAULTS
 
-    options = file_options(_commands()[command])
+    options = file_options(_commands()[{"vtk": "export-vtk"}.get(command, command)])
     computed = {"map": MAP_DEFAULTS, "refine": REFINE_DEFAULTS}.get(command)
     assert set(RUN_KEYS[command]) <= set(options)  # no key the command refuses
     if computed is not None:  # every key of the command's table is the method's too
