@@ -1,12 +1,12 @@
-"""The run keys of ``[sweep]``, ``[map]``, ``[refine]``, ``[vtk]`` and ``[animate]``: where the
-command writes, how it prints (and, for ``sweep``, where its cases run), read by the run file's
-methods as the commands read them.
+"""The run keys of ``[simulate]``, ``[sweep]``, ``[map]``, ``[refine]``, ``[vtk]`` and
+``[animate]``: where the command writes, how it prints (and, for ``sweep``, where its cases
+run), read by the run file's methods as the commands read them.
 
 A key the command refuses is refused by its method too, with the same words (its type: a flag
 true or false, an integer, a text, an array; a suffix or format the command does not write; keys
 that contradict each other), and a key the command does not have is not a key of its table
-(:data:`RUN_KEYS`). The methods :meth:`RunConfig.sweep`, ``.map`` and ``.refine`` write no file:
-a destination's state (a file already there) is not checked for them.
+(:data:`RUN_KEYS`). The methods :meth:`RunConfig.simulate`, ``.sweep``, ``.map`` and ``.refine``
+write no file: a destination's state (a file already there) is not checked for them.
 """
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ __all__ = ["RUN_KEYS", "run_keys"]
 #: computes): key -> conversion, as the command's parser converts them.
 _DRAWING: dict[str, Option] = {"out": text, "overwrite": flag, "quiet": flag}
 RUN_KEYS: dict[str, dict[str, Option]] = {
+    "simulate": {"out": text, "overwrite": flag, "json": flag},
     "vtk": _DRAWING,
     "animate": _DRAWING,
     "sweep": {"out": text, "overwrite": flag, "restart": flag, "serial": flag,
