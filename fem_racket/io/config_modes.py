@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.display import number, short_repr
 from fem_racket.io.config_defaults import FRAME_ELEMENTS
 from fem_racket.io.config_tables import Option, integer, table_options
 from fem_racket.validation import InputError, work_begins
@@ -57,6 +58,21 @@ class RacketModes:
     nodes: tuple[np.ndarray, ...]
     catalogue: Any
     elements: int
+
+    def __repr__(self) -> str:
+        def shown(f: np.ndarray) -> str:
+            return "[" + ", ".join(number(v) for v in f) + "] Hz"
+
+        tf = self.torsion_frequencies
+        return short_repr(
+            "RacketModes",
+            [
+                ("bending", shown(self.frequencies)),
+                ("torsion", "None" if tf is None else shown(tf)),
+                ("mass", f"{number(self.props.mass)} kg"),
+                ("elements", str(self.elements)),
+            ],
+        )
 
     @property
     def frequencies(self) -> np.ndarray:

@@ -33,6 +33,7 @@ def test_a_frame_with_torsion_gives_its_torsion_modes(cwd, capsys):
     same(py_json(modes.frequencies.tolist()), cli["frequencies_hz"])
     assert modes.props is modes.bending.props and isinstance(modes.bending, FreeModes)
     assert modes.torsion.polar_moment == pytest.approx(cli["polar_moment_kg_m2"], rel=1e-12)
+    assert repr(modes).startswith("RacketModes(bending=[") and "torsion=[" in repr(modes)
 
 
 def test_a_fitted_mesh_with_a_twistweight_gives_its_torsion_modes(cwd, capsys):
@@ -50,6 +51,7 @@ def test_a_mesh_without_torsion_gives_none(cwd, capsys):
     modes, cli = _both(capsys, f"[frame]\nmesh = {str(mesh)!r}\n[modes]\ncount = 2\n")
     same(py_json(modes.summary()), cli)
     assert modes.torsion is None and modes.torsion_frequencies is None
+    assert "torsion=None" in repr(modes)
     assert "torsion_frequencies_hz" not in cli and cli["twist_weight_kg_cm2"] is None
     assert len(modes.nodes) == 2 and all(np.all((n > 0) & (n < 1)) for n in modes.nodes)
 
