@@ -85,7 +85,6 @@ class HuntCrossley(ContactLaw):
             default=0.009905,
             low=0.0,
             high=10.0,
-            key="hc_alpha_s_m",
             help="Hunt-Crossley damping alpha = lambda / k",
             why="0: elastic; alpha = 8 (1 - e) / (5 e v0) (Flores et al. 2011): 10 s/m is "
             "e ~ 0.14 at 1 m/s, below any ball",

@@ -56,13 +56,11 @@ class Hysteretic(ContactLaw):
     declared: ClassVar[tuple[LawParameter, ...]] = (
         power_law.stiffness(
             name="k1",
-            field="k1",
             default=3.182e15,
             help="hysteretic loading stiffness k1 (F = k1 delta^n)",
         ),
         power_law.stiffness(
             name="k2",
-            field="k2",
             default=8.816e16,
             help="hysteretic unloading stiffness k2",
             why="as k1; k2 >= k1 and the rigid COR are conditions",

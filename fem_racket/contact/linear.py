@@ -167,7 +167,6 @@ class LinearContact(ContactLaw):
             default=PAPER_KCB_POINTS[0][1],
             low=0.0,
             high=1e12,
-            key="kcb_n_m",
             help="ball/string stiffness K_CB",
             why="the paper's 2.74e4-8.33e4 N/m at 20-40 m/s; the linear law is solved exactly "
             "for any K_CB > 0 (1e-6 N/m: a 750 s contact; tests use it to stress the output "
@@ -176,12 +175,10 @@ class LinearContact(ContactLaw):
         ),
         LawParameter(
             name="zeta",
-            field="zeta",
             unit="-",
             default=zeta_from_cor(PAPER_CLAMPED_COR),
             low=0.0,
             high=1.0,
-            key="zeta",
             help="ball/string damping ratio",
             why="0: elastic; 1: critically damped, no rebound (eqs 1-4)",
             open_high=True,

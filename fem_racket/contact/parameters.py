@@ -21,10 +21,20 @@ import numpy as np
 
 from fem_racket.validation import InputError, check_finite, check_range, show
 
-__all__ = ["LawCondition", "LawFit", "LawParameter", "check_values"]
+__all__ = ["KEY_SUFFIXES", "LawCondition", "LawFit", "LawParameter", "check_values"]
+
+#: A parameter's unit -> the suffix of its run-file and JSON key (units in every key).
+KEY_SUFFIXES = {
+    "-": "",
+    "N/m": "_n_m",
+    "N/m^3": "_n_m3",
+    "N/m^n": "_n_m_n",
+    "N s/m": "_n_s_m",
+    "s/m": "_s_m",
+}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LawParameter:
     """One parameter of a contact law, declared once.
 
@@ -34,7 +44,7 @@ class LawParameter:
         Its name on the command line (``--k1``; underscores become hyphens), as a sweep axis
         and a keyword of :func:`fem_racket.contact.presets.get_law`; unique across laws.
     field : str
-        The attribute of the law's dataclass holding it.
+        The attribute of the law's dataclass holding it; by default the name.
     unit : str
         SI unit ("-" for none).
     default : float
@@ -42,7 +52,8 @@ class LawParameter:
     low, high : float
         Physical bounds (inclusive unless ``open_low`` / ``open_high``).
     key : str
-        Its key in a run file's ``[contact]`` table and in JSON outputs, units in the key.
+        Its key in a run file's ``[contact]`` table and in JSON outputs, units in the key; by
+        default the name and its unit's suffix (:data:`KEY_SUFFIXES`: ``k1_n_m_n``).
     help : str
         One line for ``--help`` and the sweep's variable descriptions.
     why : str
@@ -52,16 +63,24 @@ class LawParameter:
     """
 
     name: str
-    field: str
+    field: str | None = None
     unit: str
     default: float
     low: float
     high: float
-    key: str
+    key: str | None = None
     help: str
     why: str
     open_low: bool = False
     open_high: bool = False
+
+    def __post_init__(self) -> None:
+        if self.field is None:
+            object.__setattr__(self, "field", self.name)
+        if self.key is None:
+            if self.unit not in KEY_SUFFIXES:
+                raise ValueError(f"unit {self.unit!r} of {self.name!r} has no key suffix: give key")
+            object.__setattr__(self, "key", self.name + KEY_SUFFIXES[self.unit])
 
     @property
     def option(self) -> str:

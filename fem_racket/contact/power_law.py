@@ -21,31 +21,35 @@ STIFFNESS_WHY = (
     "its unit depends on n: the calibration's search range for n = 1-20; the physical bound is "
     "the deflection under 1 kN (a condition)"
 )
+#: What every power law's stiffness declares alike: its unit and bounds.
+_STIFFNESS = {"unit": "N/m^n", "low": STIFFNESS_RANGE[0], "high": STIFFNESS_RANGE[1]}
+#: What every power law's exponent declares alike: its field, unit and bounds.
+_EXPONENT = {"field": "exponent", "unit": "-", "low": EXPONENT_RANGE[0], "high": EXPONENT_RANGE[1]}
 
 
 def stiffness(
-    name: str, field: str, default: float, help: str, why: str = STIFFNESS_WHY
+    name: str, default: float, help: str, why: str = STIFFNESS_WHY, field: str | None = None
 ) -> LawParameter:
     """A power law's stiffness k [N/m^n] within :data:`STIFFNESS_RANGE`, run-file key
-    ``<name>_n_m_n``.
+    ``<name>_n_m_n`` (the unit's suffix).
 
     Parameters
     ----------
-    name, field : str
-        Its name (option, sweep axis) and the law's dataclass attribute holding it.
+    name : str
+        Its name (option, sweep axis).
     default : float
         The family's default [N/m^n].
     help, why : str
         One line for ``--help``; the reasoning of the bounds.
+    field : str, optional
+        The law's dataclass attribute holding it; the name when None.
     """
-    return LawParameter(
-        name, field, "N/m^n", default, *STIFFNESS_RANGE, key=f"{name}_n_m_n", help=help, why=why
-    )
+    return LawParameter(name=name, field=field, default=default, help=help, why=why, **_STIFFNESS)
 
 
 def exponent(name: str, default: float, help: str, why: str) -> LawParameter:
     """A power law's exponent n [-] within :data:`EXPONENT_RANGE`, held in the law's field
-    ``exponent``; its run-file key is its name.
+    ``exponent``; its run-file key is its name (no unit).
 
     Parameters
     ----------
@@ -56,6 +60,4 @@ def exponent(name: str, default: float, help: str, why: str) -> LawParameter:
     help, why : str
         One line for ``--help``; the reasoning of the bounds.
     """
-    return LawParameter(
-        name, "exponent", "-", default, *EXPONENT_RANGE, key=name, help=help, why=why
-    )
+    return LawParameter(name=name, default=default, help=help, why=why, **_EXPONENT)

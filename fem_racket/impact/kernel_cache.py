@@ -5,10 +5,11 @@ numba keys a cached function by its own file's timestamp and size only (numba's 
 calls a compiled function of another file therefore keeps its old machine code when only that
 other file changes, e.g. after a ``git pull`` that edits ``kernel_node.py`` but not
 ``kernel.py``: silently stale answers. :func:`guard` keeps a SHA-256 of all the kernel files of a
-room in its ``__pycache__/kernels.sha256``; when it differs from the sources', the room's cached
-numba files (``*.nbi``, ``*.nbc``) are removed before anything compiles, so every kernel is
-compiled again from the current sources. Once per room and process. It also keeps numba's
-internal helpers apart per fastmath setting (:func:`fem_racket.impact.kernel_fastmath.isolate`)
+room, and of the options every kernel is compiled with (:data:`KERNEL_OPTIONS`), in its
+``__pycache__/kernels.sha256``; when it differs from the sources', the room's cached numba files
+(``*.nbi``, ``*.nbc``) are removed before anything compiles, so every kernel is compiled again
+from the current sources. Once per room and process. It also keeps numba's internal helpers
+apart per fastmath setting (:func:`fem_racket.impact.kernel_fastmath.isolate`)
 before anything compiles, and stamps that recipe into the digest, so caches compiled without it
 are compiled again.
 
@@ -38,10 +39,14 @@ from pathlib import Path
 
 from fem_racket.impact.kernel_fastmath import RECIPE, isolate
 
-__all__ = ["guard", "light_loads"]
+__all__ = ["KERNEL_OPTIONS", "guard", "light_loads"]
 
 log = logging.getLogger(__name__)
 
+#: numba's options of every kernel (:mod:`fem_racket.impact.exact`'s and
+#: :mod:`fem_racket.impact.general`'s): cached on disk (kept true by :func:`guard`, which stamps
+#: them into its digest), released from the GIL, numpy's error model (inf and NaN, no exceptions).
+KERNEL_OPTIONS = {"cache": True, "nogil": True, "error_model": "numpy"}
 #: Rooms already checked in this process.
 _CHECKED: set[Path] = set()
 #: The parameters of numba's ``Cache.load_overload`` that :func:`light_loads` replaces.
@@ -106,6 +111,7 @@ def guard(folder: str | os.PathLike, modules: tuple[str, ...]) -> bool:
         return False
     _CHECKED.add(folder)
     digest = hashlib.sha256(RECIPE.encode())
+    digest.update(repr(KERNEL_OPTIONS).encode())
     for name in modules:
         digest.update((folder / f"{name}.py").read_bytes())
     cache = folder / "__pycache__"

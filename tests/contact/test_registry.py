@@ -41,7 +41,6 @@ class ToySpring(ContactLaw):
             default=5e4,
             low=1e3,
             high=1e7,
-            key="toy_stiffness_n_m",
             help="toy spring stiffness k",
             why="a tennis ball on strings: 2.7e4-8.3e4 N/m (the paper)",
         ),

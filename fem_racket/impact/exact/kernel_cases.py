@@ -19,10 +19,10 @@ from numba import njit
 from fem_racket.impact.exact import kernel_events as ke
 from fem_racket.impact.exact.kernel_roots import case_poles, case_roots
 from fem_racket.impact.exact.separation import RESOLVED
+from fem_racket.impact.kernel_cache import KERNEL_OPTIONS
 
 __all__ = ["LAW", "OUT", "T_MAX_FACTOR", "events_cases", "solve_cases"]
 
-_JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 #: Columns of the per-case law array and of the results.
 LAW = ("mu0", "omega_c", "flex", "mass", "k", "c", "mb")
 OUT = ("cor", "contact_time", "peak", "kept", "status")
@@ -30,7 +30,7 @@ OUT = ("cor", "contact_time", "peak", "kept", "status")
 T_MAX_FACTOR = 20.0
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _scratch(R_max):
     """Per-case work arrays (use, vals, buf, fw) for up to R_max roots."""
     return (
@@ -41,7 +41,7 @@ def _scratch(R_max):
     )
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _grow(scratch, G):
     """Scratch (use, vals, buf) holding at least G grid points."""
     use, vals, buf, fw = scratch
@@ -50,7 +50,7 @@ def _grow(scratch, G):
     return use, np.empty(2 * G), np.empty(2 * G, np.complex128), fw
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _events(lam, res, R, mult, law, flags, out, scratch):
     """COR, t_c, peak force and status of one case from its roots (out[0, 1, 2, 4]);
     ``flags`` = (force event, want peak). Returns the scratch (grown if it had to)."""
@@ -79,7 +79,7 @@ def _events(lam, res, R, mult, law, flags, out, scratch):
     return scratch
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def solve_cases(omega, values, law, beta, flags):
     """Every case: omega, values (n, m) its flexible modes [rad/s] and mode values at the
     impact point [1/sqrt(kg)], ``law`` (n, 7) as :data:`LAW`, cut-off factor ``beta`` (inf:
@@ -104,7 +104,7 @@ def solve_cases(omega, values, law, beta, flags):
     return out
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def events_cases(lam, res, count, law, flags):
     """COR, t_c, peak force and status of cases given every root ``lam`` and residue ``res``
     (n, R) (the first ``count`` of each row; conjugates included, as an eigen-decomposition

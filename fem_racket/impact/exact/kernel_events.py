@@ -25,14 +25,14 @@ from fem_racket.impact.exact.separation import (
     TIME_TOL,
     TOUCH,
 )
+from fem_racket.impact.kernel_cache import KERNEL_OPTIONS
 
 __all__ = ["cexp", "grid_size", "impulse", "peak_force", "peak_points", "separation_time"]
 
-_JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 _EPS4 = 4.0 * np.finfo(np.float64).eps
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def cexp(z):
     """exp(z) of a complex z from the real exp, cos and sin (numba's own adds branches for
     infinite parts, which never occur here)."""
@@ -40,7 +40,7 @@ def cexp(z):
     return complex(e * math.cos(z.imag), e * math.sin(z.imag))
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def grid_size(lam, w, R, span, resolved, use):
     """Grid points (a power of two >= MIN_GRID) resolving the terms of weight >= ``resolved``
     of the largest; marks in ``use`` the terms of weight >= SIGNIFICANT of it."""
@@ -57,7 +57,7 @@ def grid_size(lam, w, R, span, resolved, use):
     return int(2.0 ** math.ceil(math.log2(G)))
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _on_grid(lam, w, R, use, t0, dt, G, vals, buf):
     """vals[g] = Re sum_j w_j exp(lambda_j (t0 + g dt)) over the terms ``use``, g < G."""
     for g in range(G):
@@ -78,7 +78,7 @@ def _on_grid(lam, w, R, use, t0, dt, G, vals, buf):
             vals[g] += buf[g].real
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _value(lam, w, R, t):
     """Re sum w exp(lambda t) and its time derivative."""
     f = df = 0.0
@@ -89,7 +89,7 @@ def _value(lam, w, R, t):
     return f, df
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _refine(lam, w, R, lo, hi):
     """The fall through zero of the full sum near [lo, hi] (separation._refine, one case)."""
     dt = hi - lo
@@ -124,7 +124,7 @@ def _refine(lam, w, R, lo, hi):
     return t
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def separation_time(lam, w, R, t_est, t_max, G, scratch):
     """First fall of Re sum w exp(lambda t) through zero after t = 0 [s] (NaN: none by
     ``t_max``) and whether a grid minimum before it came within TOUCH of zero, on the grid of
@@ -158,14 +158,14 @@ def separation_time(lam, w, R, t_est, t_max, G, scratch):
         first = 0
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def peak_points(lam, fw, R, tc, use):
     """Grid points of the peak force's first scan: at least PEAK_GRID, resolving every term of
     weight >= SIGNIFICANT of the largest."""
     return max(grid_size(lam, fw, R, tc, SIGNIFICANT, use) + 1, PEAK_GRID)
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def impulse(lam, fw, R, mult, t):
     """J(t) per unit impact speed [N s per m/s] (numpy's complex expm1, term by term)."""
     J = 0.0
@@ -177,7 +177,7 @@ def impulse(lam, fw, R, mult, t):
     return mult * J
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _argmax(vals, n):
     """``np.argmax(vals[:n])`` (n >= 1) as numba computes it: the first NaN, else the first
     largest value. Written out: numba's own lives in ``numba.np.arraymath``, which a process
@@ -195,7 +195,7 @@ def _argmax(vals, n):
     return at
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def peak_force(lam, fw, R, mult, tc, G, scratch):
     """Largest contact force on [0, t_c] per unit speed [N per m/s] (separation.peak_force):
     every term on G points (:func:`peak_points`), PEAK_GRID points over the four steps around

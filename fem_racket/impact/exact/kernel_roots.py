@@ -23,17 +23,17 @@ import numpy as np
 from numba import njit
 
 from fem_racket.impact.exact.roots import MAX_ITERATIONS, STEP_TOL, SUM_RULE_TOL
+from fem_racket.impact.kernel_cache import KERNEL_OPTIONS
 
 __all__ = ["case_poles", "case_roots"]
 
-_JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 #: The root iteration's sums may be reordered (vectorised; ~15 % of the engine's time, roots
 #: within ~1e-14 of the sums in order): the same bits on a machine for a case, whatever the
 #: batch; NaN and infinity keep their meaning (no "nnan"/"ninf").
 _FAST = {"reassoc", "contract", "arcp"}
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def case_poles(omega, values, mu0, omega_c, beta, flex, mass, d, v):
     """Poles d = [0, omega_kept^2, omega_p^2] and weights v = [mu0, a_kept^2, a_p^2] of one
     case into ``d``, ``v``; returns (poles, modes kept) (the pseudo-mode only where something
@@ -61,7 +61,7 @@ def case_poles(omega, values, mu0, omega_c, beta, flex, mass, d, v):
     return R, kept
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _initial(d, v, R, k, om2):
     """Undamped Omega_j^2 from the two-pole model of each interval (roots._initial_roots)."""
     top = d[R - 1]
@@ -93,14 +93,14 @@ def _initial(d, v, R, k, om2):
         om2[j] = d[j] + min(max(y, 1e-9 * g), g * (1.0 - 1e-9))
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _inverse(z):
     """1/z as conj(z)/|z|^2 (no overflow at the sizes here: |z|^2 < ~1e30)."""
     inv = 1.0 / (z.real * z.real + z.imag * z.imag)
     return complex(z.real * inv, -z.imag * inv)
 
 
-@njit(**_JIT, fastmath=_FAST)
+@njit(**KERNEL_OPTIONS, fastmath=_FAST)
 def case_roots(d, v, R, k, c, lam, res, work, scratch):
     """Damped upper-half-plane roots ``lam`` and residues ``res`` (first R entries) of one
     case; returns whether it converged and its sum rules hold. ``work`` (float) and

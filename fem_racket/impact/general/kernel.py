@@ -30,10 +30,10 @@ from fem_racket.impact.general import kernel_laws as kl
 from fem_racket.impact.general import kernel_modes as km
 from fem_racket.impact.general import kernel_node as kn
 from fem_racket.impact.general.jit import njit
+from fem_racket.impact.kernel_cache import KERNEL_OPTIONS
 
 __all__ = ["RESULTS", "march_cases"]
 
-_JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 _START_SWEEPS = 12
 #: Nodes per case the histories' store holds before it grows (its pages are touched only as
 #: written).
@@ -53,7 +53,7 @@ RESULTS = (
 )
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _start(kind, p, modal, rigid, fdv, H, scale):
     """Nodes 1-3 by Gauss-Seidel sweeps over their 4 x 4 weights (``modal`` = (e^{i theta},
     a^2, G, omega), ``rigid`` as kernel_modes.advance takes it); returns whether Newton
@@ -96,7 +96,7 @@ def _start(kind, p, modal, rigid, fdv, H, scale):
     return True, y, R, Rv
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _store(kind, p, H, m, node):
     """Node m's F, delta, delta', z (and z' of an ODE state) into the histories."""
     Fm, d, v, zm = node
@@ -105,7 +105,7 @@ def _store(kind, p, H, m, node):
         H[_G, m] = kl.rate(kind[0], p, d, v, zm)
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _continue_branch(H, m, kd0, kv0):
     """The force was cut to zero past the end at node m: the step's cubic takes the branch's
     cubic continuation instead (the cut is a kink the cubic would smear, O(h^2))."""
@@ -114,7 +114,7 @@ def _continue_branch(H, m, kd0, kv0):
     H[_F, m], H[_D, m], H[_V, m] = F[m] + dF, H[_D, m] - kd0 * dF, H[_V, m] - kv0 * dF
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def _case(kind, p, modes, grid, fdv, cs, H, res):
     """March one case (histories H = F, D, V, Z, G; ``modes`` = (omega, a^2) of the modes kept,
     ``grid`` = (mu0, h, nodes, force scale, speed), free motion fdv (2, >= nodes): given, or
@@ -213,7 +213,7 @@ def _case(kind, p, modes, grid, fdv, cs, H, res):
     res[2] = 1.0
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def march_cases(kind, P, modes, cases, fdv, cs, keep):
     """March every case; see the module docstring.
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 
 from fem_racket.impact.general.jit import njit
+from fem_racket.impact.kernel_cache import KERNEL_OPTIONS
 
 __all__ = [
     "LAW_IDS",
@@ -35,10 +36,8 @@ __all__ = [
 #: (k1, k2, n, (k1/k2)^(1/n)), series (K_b, C_b, k_s, k_3).
 LAW_IDS = {"linear": 0, "hunt-crossley": 1, "hysteretic": 2, "series": 3}
 
-_JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 
-
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def end_value(law, p, z):
     """The deflection whose downward crossing ends a "displacement" contact [m]."""
     if law == 2:
@@ -46,7 +45,7 @@ def end_value(law, p, z):
     return 0.0 * z
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def force(law, p, d, v, z):
     """F(delta, delta', z) [N]."""
     if law == 0:
@@ -60,7 +59,7 @@ def force(law, p, d, v, z):
     return p[2] * z + p[3] * (z * (z * z))
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def power(base, a, near):
     """base^a [-]; from ``near`` = (b0, b0^a) by its Taylor series in e = base / b0 - 1 where
     |e| (|a| + 4) <= 1e-4 (four terms: the rest < 1e-18 relative, below round-off), else by
@@ -77,7 +76,7 @@ def power(base, a, near):
     return base**a
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def force_partials(law, p, d, v, z, near):
     """(F, dF/d delta, dF/d delta', dF/dz, (base, base^(n - 1))) of a power law at most one
     power per call (x^n = x^(n-1) x; :func:`power` from ``near``, the last call's base and
@@ -104,13 +103,13 @@ def force_partials(law, p, d, v, z, near):
     return cubic, 0.0, 0.0, p[2] + 3.0 * p[3] * (z * z), near
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def rate(law, p, d, v, z):
     """z' of an ODE state (the series law's string bed) [m/s]."""
     return v - (p[2] * z + p[3] * (z * (z * z)) - p[0] * (d - z)) / p[1]
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def rate_partials(law, p, d, v, z):
     """(dz'/d delta, dz'/d delta', dz'/dz)."""
     c = p[1]
@@ -118,7 +117,7 @@ def rate_partials(law, p, d, v, z):
     return p[0] / c, 1.0, -(ds + p[0]) / c
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def hermite_value(s, p0, m0, p1, m1):
     """Cubic Hermite interpolant at fraction s (values p, slopes m per step)."""
     s2, s3 = s * s, s * s * s
@@ -126,7 +125,7 @@ def hermite_value(s, p0, m0, p1, m1):
     return ends + (s3 - 2 * s2 + s) * m0 + (s3 - s2) * m1
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def turn_max(d0, v0, d1, v1, h):
     """Largest delta on the step (cubic Hermite through the ends' delta and delta')."""
     top = max(d0, d1)
@@ -141,7 +140,7 @@ def turn_max(d0, v0, d1, v1, h):
     return max(hermite_value(s, d0, m0, d1, m1), top)
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def hermite_root(d0, v0, d1, v1, end, h):
     """Fraction s in (0, 1] where the cubic Hermite interpolant of delta reaches ``end``."""
     p0, p1, m0, m1 = d0 - end, d1 - end, h * v0, h * v1
@@ -156,7 +155,7 @@ def hermite_root(d0, v0, d1, v1, end, h):
     return s
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def cubic_root(coef, p0, p1):
     """Fraction s in (0, 1] where the step's cubic (coefficients of sigma^q) falls through 0."""
     if p1 > 0:

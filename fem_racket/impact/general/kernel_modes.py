@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from fem_racket.impact.general.jit import njit
+from fem_racket.impact.kernel_cache import KERNEL_OPTIONS
 
 __all__ = [
     "advance",
@@ -30,7 +31,6 @@ __all__ = [
     "weights",
 ]
 
-_JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 _SERIES = 34
 #: A series term below this no longer changes M_3 (|M_3| > 0.1 for |x| < 2, and a term bounds
 #: the rest of the series to a factor 2 there).
@@ -39,14 +39,14 @@ _TERM = 1e-19
 _RECIPROCAL = 1.0 / np.arange(1.0, _SERIES + 5.0)
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def _over_ix(z, x):
     """z / (i x), written out as numba divides it (CPython's algorithm, for a divisor whose
     real part is zero): the same bits when the kernels run interpreted."""
     return complex(z.imag / x, -z.real / x)
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def moments(x, e, out):
     """M_q(x, 1) = int_0^1 exp(i x u) u^q du, q = 0..3 (as cubic_force.moments), into ``out``
     (``e`` = e^{i x}).
@@ -77,14 +77,14 @@ def moments(x, e, out):
         out[q - 1] = (e - ix * out[q]) * _RECIPROCAL[q - 1]
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def weights(w, h, cs):
     """Per mode and stencil (backward, forward 0, forward 1) G_r = sum_q c_rq conj(M_q), and
     the rigid weights c1_r = sum_q c_rq / (q + 1), c2_r = sum_q c_rq / ((q + 1)(q + 2))."""
     return step_weights(np.exp(1j * w * h), w, h, cs)
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def step_weights(e, w, h, cs):
     """:func:`weights` from e^{i omega h} per mode (the march has it already: one complex
     exponential per mode, not two)."""
@@ -109,7 +109,7 @@ def step_weights(e, w, h, cs):
     return Gw, c1, c2
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def advance(y, rig, f, s, modal, rigid):
     """Modal states y over one step with stencil s and its 4 nodal forces f; ``rig`` = (R, R')
     of the rigid modes and the ball, ``modal`` = (e^{i theta}, a^2, G), ``rigid`` = (mu0, h,
@@ -127,7 +127,7 @@ def advance(y, rig, f, s, modal, rigid):
     return R + h * Rv + mu0 * h * h * fd, Rv + mu0 * h * fv
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def start_weights(modal, w, rigid):
     """delta and delta' (4 x 4: nodes 0-3 by the unit force at nodes 0-3; row 0 zero) of a unit
     force at each starting node through steps 0, 1, 2 (stencils forward 0, forward 1,
@@ -154,7 +154,7 @@ def start_weights(modal, w, rigid):
     return Wd, Wv
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def backward_weights(e, a2, h, Gw, w):
     """Rows (15, modes) for the march's step over the modes: e^{i theta}, B_0, B_1, B_2,
     B_2 + e^{i theta} B_3, B_3 (real and imaginary rows each), 1 / omega (B_r = e^{i theta}

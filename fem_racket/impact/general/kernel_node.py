@@ -17,6 +17,7 @@ import numpy as np
 
 from fem_racket.impact.general import kernel_laws as kl
 from fem_racket.impact.general.jit import njit
+from fem_racket.impact.kernel_cache import KERNEL_OPTIONS
 
 __all__ = [
     "D",
@@ -33,14 +34,13 @@ __all__ = [
     "solve_node",
 ]
 
-_JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
 #: Newton iterations at most.
 NEWTON_ITER = 40
 #: Rows of a case's histories: F, delta, delta', z, z'.
 F, D, V, Z, G = range(5)
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def newton(kind, p, lin, guess, prev, step):
     """F and z at a node (as step.solve_step for one case); ok False if not converged.
 
@@ -81,7 +81,7 @@ def newton(kind, p, lin, guess, prev, step):
     return F, z, False
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def ended(kind, p, prev, now):
     """True where the contact ends in the step from node m - 1 to node m (``prev``, ``now``:
     F, delta and z at each, scalars: no array passes through a node's calls)."""
@@ -94,7 +94,7 @@ def ended(kind, p, prev, now):
     return prev[1] - e0 > 0 and now[1] - e1 <= 0
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def fraction(kind, p, H, at, h, cs):
     """Where in step m - 1 (``at`` = (m, its stencil's first node b, stencil s)) the contact
     ended (0-1]."""
@@ -113,7 +113,7 @@ def fraction(kind, p, H, at, h, cs):
     )
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def node_base(kind, H, c1, at, h):
     """What the contact equation at node m needs of the earlier nodes (``at`` = (m, b, s):
     stencil s of step m - 1 from node b), as :func:`newton` takes it: z, the ODE state's
@@ -130,7 +130,7 @@ def node_base(kind, H, c1, at, h):
     return H[Z, m - 1], zb, zc, H[D, m - 1], H[V, m - 1]
 
 
-@njit(inline="always", **_JIT)
+@njit(inline="always", **KERNEL_OPTIONS)
 def solve_node(kind, p, prev, lin, guess, step):
     """The contact equation at a node (``prev`` from :func:`node_base`, ``lin`` and ``step``
     as :func:`newton` takes them): F, delta, delta', z and whether Newton converged."""
@@ -143,7 +143,7 @@ def solve_node(kind, p, prev, lin, guess, step):
     return Fm, d, v, zm, ok
 
 
-@njit(**_JIT)
+@njit(**KERNEL_OPTIONS)
 def integrals(H, at, h, cs, c1, res):
     """The impulse up to separation (``at`` = (last, fraction, nodes)), the peak force, and
     the contact work and impulse over the whole steps up to the last node, into ``res``."""
