@@ -102,8 +102,9 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
 
 
 def customise_file(cfg: RunConfig, out: Any = None) -> Any:
-    """The least lead ``fem-racket customise --config`` finds for the file's frame: the
-    Customisation of :func:`fem_racket.studies.customise.customise`; with ``out`` (else
+    """The least lead ``fem-racket customise --config`` finds for the file's frame and the
+    maps of the racket before and after it, everything the command reports (a
+    :class:`~fem_racket.io.racket_files.CustomisedRacket`); with ``out`` (else
     ``[customise] out``) the customised racket's mesh file, its sidecar and the maps before and
     after (``[customise] maps``, else the command's) written, as the command writes them;
     ``[customise] maps`` without ``out`` is refused (the command writes no maps alone)."""
@@ -111,9 +112,8 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.config_run import file_frame
     from fem_racket.io.map_files import check_map_outputs
-    from fem_racket.io.racket_files import customise_files, mesh_files
+    from fem_racket.io.racket_files import customise_files, customise_racket, mesh_files
     from fem_racket.outputs import check_output_path
-    from fem_racket.studies.customise import customise
     from fem_racket.studies.target_values import place_list, targets_from
 
     d = cfg.defaults()
@@ -135,9 +135,9 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, elements)
     targets = targets_from(o, catalogue(mesh, f1=False))
     work_begins()
-    if paths is None:
-        return customise(mesh, targets, places)
     play = {k: o[k] for k in PLAY_DEFAULTS}
+    if paths is None:
+        return customise_racket(mesh, targets, places, play)
     parameters = {"config": str(cfg.source), **o, "out": str(out)}
     return customise_files(mesh, targets, places, play, paths, parameters, o["overwrite"])[0]
 

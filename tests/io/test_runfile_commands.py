@@ -120,8 +120,11 @@ def test_customise_writes_the_commands_files(cfg, capsys):
     argv = ("customise", "--config", "run.toml", "--out", "cli.vtu", "--maps", "cli_maps.nc")
     cli = run_json(capsys, *argv)
     result = cfg.customise(out="py.vtu")
-    summary = py_json(result.summary())
+    summary = py_json(result.summary())  # everything the command reports, maps included,
+    assert set(summary) == set(cli) - {"mesh", "maps_file"}  # but the paths it wrote
     same(summary, {k: cli[k] for k in summary})
+    assert [m.name for m in result.maps] == ["before", "customised"]
+    assert result.mesh is result.customisation.mesh and result.total > 0
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu"))
     assert _parameters(Path("py.vtu"))["out"] == "py.vtu"
