@@ -120,8 +120,11 @@ class CommandMethods:
 
         Returns
         -------
-        Frame
-            Three segments (:func:`fem_racket.frame.specs.fit_racket`). See
+        FittedRacket
+            Everything the command reports (:class:`fem_racket.io.racket_files.FittedRacket`):
+            the ``frame`` (three segments, :func:`fem_racket.frame.specs.fit_racket`; also
+            ``.segments``), its ``mesh``, the ``target`` and ``fitted`` catalogue numbers;
+            ``.summary()`` is the command's ``--json`` less the mesh's path. See
             :func:`fem_racket.io.config_racket.fit_file`.
         """
         from fem_racket.io.config_racket import fit_file

@@ -70,11 +70,12 @@ def _overwrite(cfg: RunConfig) -> dict[str, Any]:
 
 
 def fit_file(cfg: RunConfig, out: Any = None) -> Any:
-    """The frame ``fem-racket fit --config`` fits to ``[fit]``'s catalogue numbers (a Frame:
-    three segments); with ``out`` (else ``[fit] out``) the mesh file and its sidecar written
-    there, as the command writes them: both or neither, an existing one refused unless the
-    file says ``overwrite``, or ``out`` is the command's default (``output/racket.vtu``) and
-    holds an earlier fit (the command replaces its own output there)."""
+    """The frame ``fem-racket fit --config`` fits to ``[fit]``'s catalogue numbers, with the
+    targets and fitted values it reports (a FittedRacket); with ``out`` (else ``[fit] out``)
+    the mesh file and its sidecar written there, as the command writes them: both or neither,
+    an existing one refused unless the file says ``overwrite``, or ``out`` is the command's
+    default (``output/racket.vtu``) and holds an earlier fit (the command replaces its own
+    output there)."""
     from fem_racket.io.config_rerun import rerun_overwrite
     from fem_racket.io.racket_files import FIT_OUTPUT, FitSpec, fit_files, fit_frame, mesh_files
     from fem_racket.outputs import check_output_path
@@ -91,7 +92,7 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
     out = out or o["out"]
     if out is None:
         work_begins()
-        return fit_frame(fit)[0]
+        return fit_frame(fit)
     files = mesh_files(Path(out))
     overwrite = rerun_overwrite(o["overwrite"], Path(out) == FIT_OUTPUT, files)
     for f in files:

@@ -20,6 +20,7 @@ __all__ = [
     "FIT_OUTPUT",
     "CustomisedRacket",
     "FitSpec",
+    "FittedRacket",
     "customise_files",
     "customise_racket",
     "fit_files",
@@ -82,10 +83,45 @@ class FitSpec:
     elements: int = DEFAULT_ELEMENTS
 
 
-def fit_frame(spec: FitSpec) -> tuple[Any, Any, dict[str, Any]]:
+@dataclass(frozen=True)
+class FittedRacket:
+    """Everything ``fem-racket fit`` reports: the frame fitted to a racket's catalogue numbers.
+
+    Attributes
+    ----------
+    frame : Frame
+        Three segments (:func:`fem_racket.frame.specs.fit_racket`), with torsion data given a
+        twistweight.
+    mesh : FrameMesh
+        The frame on the cells of the fit (the mesh the command writes).
+    target, fitted : dict
+        The catalogue numbers asked and those of the mesh: length [m], mass [kg], balance [m],
+        swing weight [kg cm^2], f1 [Hz] (and twistweight [kg cm^2], torsion f1 [Hz]).
+    """
+
+    frame: Any
+    mesh: Any
+    target: dict[str, Any]
+    fitted: dict[str, Any]
+
+    @property
+    def segments(self) -> Any:
+        """The frame's segments (as ``Frame.segments``)."""
+        return self.frame.segments
+
+    def summary(self) -> dict[str, Any]:
+        """The object ``fem-racket fit --json`` prints, less the mesh's path: the targets, the
+        fitted values and the segments (length [m], EI [N m^2], rhoA [kg/m])."""
+        segments = [
+            {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in self.segments
+        ]
+        return {"target": dict(self.target), "fitted": dict(self.fitted), "segments": segments}
+
+
+def fit_frame(spec: FitSpec) -> FittedRacket:
     """The frame of ``spec`` (:func:`fem_racket.frame.specs.fit_racket`, with torsion data by
-    :func:`fem_racket.frame.twist_fit.fit_torsion` given a twistweight): the Frame, its mesh
-    and the summary (targets, fitted values, segments)."""
+    :func:`fem_racket.frame.twist_fit.fit_torsion` given a twistweight), its mesh, the targets
+    and the fitted values."""
     from fem_racket.frame.mesh import frame_mesh
     from fem_racket.frame.specs import fit_racket, racket_spec
     from fem_racket.frame.torsion import TorsionModel
@@ -115,24 +151,21 @@ def fit_frame(spec: FitSpec) -> tuple[Any, Any, dict[str, Any]]:
         target["torsion_f1_hz"] = spec.torsion_frequency
         got["twist_weight_kg_cm2"] = tors.polar_moment / KG_CM2
         got["torsion_f1_hz"] = float(tors.modes(1).frequencies[0])
-    segments = [
-        {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
-    ]
-    return frame, mesh, {"target": target, "fitted": got, "segments": segments}
+    return FittedRacket(frame, mesh, target, got)
 
 
 def fit_files(
     spec: FitSpec, out: Path, parameters: Mapping[str, Any], *, overwrite: bool = False
-) -> tuple[Any, dict[str, Any]]:
+) -> tuple[FittedRacket, dict[str, Any]]:
     """Fit the frame of ``spec`` (:func:`fit_frame`) and write it to ``out`` (a mesh file)
-    with the sidecar ``out.json`` (``parameters`` in its provenance); the frame and the
+    with the sidecar ``out.json`` (``parameters`` in its provenance); the FittedRacket and the
     summary (targets, fitted values, segments, the mesh's path)."""
-    frame, mesh, summary = fit_frame(spec)
-    summary["mesh"] = str(out)
+    fitted = fit_frame(spec)
+    summary = {**fitted.summary(), "mesh": str(out)}
     meta = provenance(dict(parameters))
     text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
-    write_mesh_files(mesh, out, text + "\n", overwrite=overwrite)
-    return frame, summary
+    write_mesh_files(fitted.mesh, out, text + "\n", overwrite=overwrite)
+    return fitted, summary
 
 
 @dataclass(frozen=True)

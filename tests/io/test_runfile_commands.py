@@ -107,6 +107,8 @@ def test_fit_writes_the_commands_files(cfg, capsys):
         {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
     ]
     same(py_json(segments), cli["segments"])
+    same(py_json(frame.summary()), {k: v for k, v in cli.items() if k != "mesh"})  # all of it
+    assert frame.fitted["mass_kg"] == pytest.approx(0.318, rel=1e-9)  # the fit meets its target
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu")) != {}
     assert _parameters(Path("py.vtu"))["out"] == "py.vtu"  # the method's out, not [fit]'s
