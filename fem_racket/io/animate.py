@@ -18,7 +18,8 @@ from __future__ import annotations
 import json
 import logging
 import os
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -110,6 +111,12 @@ class AnimationOptions:
     scale: float = 10.0
     subdivide: int = 8
     size: tuple[int, int] = (960, 400)
+
+    @classmethod
+    def of(cls, options: Mapping[str, Any]) -> AnimationOptions:
+        """The options named by its fields in ``options`` (``fem-racket animate``'s argparse
+        dests, or a run file's ``[animate]`` table with its defaults), each one required."""
+        return cls(**{f.name: options[f.name] for f in fields(cls)})
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "field", field_name(self.field))

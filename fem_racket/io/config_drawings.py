@@ -157,18 +157,10 @@ def animate_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None
     o["overwrite"] = _replace_own(out, o, ANIMATE_DEFAULTS["out"], [t.path for t in targets])
     check_targets(targets, overwrite=o["overwrite"])
     model, result = run_file(cfg, histories=True, table="animate")
-    options = AnimationOptions(
-        field=o["field"],
-        frames=o["frames"],
-        fps=o["fps"],
-        scale=o["scale"],
-        subdivide=o["subdivide"],
-        size=o["size"],
-    )
     return render_animation(
         result,
         out,
-        options,
+        AnimationOptions.of(o),
         model=model if strung else None,
         overwrite=o["overwrite"],
         parameters=parameters,

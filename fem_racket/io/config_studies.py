@@ -197,11 +197,11 @@ def map_file(cfg: RunConfig) -> list[Any]:
     :mod:`fem_racket.cli.options.faces` unless given)."""
     from fem_racket.impact.incidence import Incidence
     from fem_racket.studies.grid_values import as_values
+    from fem_racket.studies.map_options import MapPlay
     from fem_racket.studies.racket_map import DEFAULT_POWER_FRACTION, racket_map
 
     o = _options(cfg, "map", MAP_DEFAULTS)
     law = _law(o, cfg)
-    swing = {k: o[k] for k in ("racket_speed", "reference", "pivot")}
     impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation", "modes", "tolerance")}
     oblique = {k: o[k] for k in OBLIQUE_KEYS if o[k] is not None}
     if oblique:
@@ -224,20 +224,20 @@ def map_file(cfg: RunConfig) -> list[Any]:
             for name, model in _rackets(o)
         ]  # fmt: skip
     positions = as_values("position", o["positions"])
+    play = MapPlay(o["speed"], o["racket_speed"], o["reference"], o["pivot"], positions)
     if o["offsets"] is not None:
         from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
 
         fraction = o["power_fraction"] or DEFAULT_AREA_FRACTION
         return [
-            face_map(model, positions=positions, offsets=as_values("offset", o["offsets"]),
-                     name=name, speed=o["speed"], **swing,
-                     options={**impact, "power_fraction": fraction})
+            face_map(model, **play.keywords(), offsets=as_values("offset", o["offsets"]),
+                     name=name, options={**impact, "power_fraction": fraction})
             for name, model in _rackets(o)
         ]  # fmt: skip
     fraction = o["power_fraction"] or DEFAULT_POWER_FRACTION
     return [
-        racket_map(model, name=name, speed=o["speed"], **swing, positions=positions, **impact,
-                   power_fraction=fraction, law=law)
+        racket_map(model, name=name, **play.keywords(), **impact, power_fraction=fraction,
+                   law=law)
         for name, model in _rackets(o)
     ]  # fmt: skip
 
@@ -245,27 +245,16 @@ def map_file(cfg: RunConfig) -> list[Any]:
 def refine_file(cfg: RunConfig) -> dict[str, Any]:
     """The refinement studies ``fem-racket refine --config`` computes from ``cfg``: family ->
     :class:`~fem_racket.studies.refine.RefinementStudy` (both families by default)."""
-    from fem_racket.studies.refine import (
-        FAMILIES,
-        refinement_study,
-    )
+    from fem_racket.studies.options import field_names
+    from fem_racket.studies.refine import FAMILIES, RefineOptions, refinement_study
 
     o = _options(cfg, "refine", REFINE_DEFAULTS)
     families = FAMILIES if o["family"] == "both" else (o["family"],)
-    impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation")}
+    # the table's values of RefineOptions' fields (the family is each study's own)
+    study = {k: o[k] for k in field_names(RefineOptions) if k in o and k != "family"}
     return {
         fam: refinement_study(
-            cfg.frame(),
-            o["elements"],
-            family=fam,
-            n_modes=o["count"],
-            positions=o["positions"],
-            speed=o["speed"],
-            grading=o["grading"],
-            impact_nodes=o["impact_nodes"],
-            impact_modes=o["impact_modes"],
-            progress=False,
-            **impact,
+            cfg.frame(), o["elements"], family=fam, n_modes=o["count"], progress=False, **study
         )
         for fam in families
     }

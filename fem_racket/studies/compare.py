@@ -38,8 +38,9 @@ from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, grip_peak, vibration_rms
 from fem_racket.impact.simulate import simulate
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, closing_speed
+from fem_racket.impact.swing import closing_speed
 from fem_racket.studies.face_map import FaceMap, face_map
+from fem_racket.studies.map_options import MapPlay
 from fem_racket.studies.racket_map import RacketMap, racket_map
 from fem_racket.validation import InputError, check_choice, check_range
 
@@ -78,19 +79,22 @@ class Setup:
         f = self.frame
         return f if isinstance(f, FrameMesh) else frame_mesh(f, self.elements)
 
+    def contact(self) -> dict[str, Any]:
+        """The ball's mass and the ball/string law, as keywords of :func:`fem_racket.simulate`
+        and the maps: ``ball_mass`` and ``law``, or ``ball_mass``, ``kcb`` and ``zeta``."""
+        if self.law is not None:
+            return {"ball_mass": self.ball_mass, "law": self.law}
+        return {"ball_mass": self.ball_mass, "kcb": self.kcb, "zeta": self.zeta}
+
 
 @dataclass(frozen=True)
-class Play:
+class Play(MapPlay):
     """How every set-up is played: ball speed [m/s], swing (speed [m/s] of the point
-    ``reference`` x/L, pivot [m from the butt] or None), the grid of the maps (x/L), the
+    ``reference`` x/L, pivot [m from the butt] or None), the grid of the maps (x/L) — the
+    fields of :class:`~fem_racket.studies.map_options.MapPlay` — then the
     impact point [x/L] of the single-impact measures, the grip holding the racket and, to map
     the whole face, the lateral offsets [m] of its grid (None: along the axis only)."""
 
-    speed: float = 20.0
-    racket_speed: float = 0.0
-    reference: float = DEFAULT_REFERENCE
-    pivot: float | None = None
-    positions: Any = None
     position: float = 0.75
     grip: str = "firm"
     offsets: Any = None
@@ -142,37 +146,18 @@ def _shock(model: FrameModel, setup: Setup, play: Play, v: float) -> tuple[float
     if setup.law is not None:
         return None
     basis = held_basis(model.fe, GRIPS[play.grip])
-    (contact,) = held_contacts(
-        basis, [play.position], [v], ball_mass=setup.ball_mass, kcb=setup.kcb, zeta=setup.zeta
-    )
+    (contact,) = held_contacts(basis, [play.position], [v], **setup.contact())
     return vibration_rms(contact, DEFAULT_WINDOW), grip_peak(contact, DEFAULT_WINDOW)
 
 
 def report(setup: Setup, play: Play) -> Report:
     """The :class:`Report` of one set-up."""
     model = FrameModel.build(setup.mesh())
-    law = {"law": setup.law} if setup.law is not None else {"kcb": setup.kcb, "zeta": setup.zeta}
-    swing = {"racket_speed": play.racket_speed, "reference": play.reference, "pivot": play.pivot}
-    rmap = racket_map(
-        model,
-        name=setup.name,
-        speed=play.speed,
-        positions=play.positions,
-        ball_mass=setup.ball_mass,
-        **swing,
-        **law,
-    )
-    sw = Swing.from_speed(
-        play.racket_speed, model.mesh.length, reference=play.reference, pivot=play.pivot
-    )
+    contact = setup.contact()
+    rmap = racket_map(model, name=setup.name, **play.keywords(), **contact)
+    sw = play.swing(model.mesh.length)
     one = simulate(
-        model,
-        position=play.position,
-        speed=play.speed,
-        ball_mass=setup.ball_mass,
-        swing=sw,
-        output_step=None,
-        **law,
+        model, position=play.position, speed=play.speed, swing=sw, output_step=None, **contact
     )
     closing = closing_speed(play.speed, sw.speed_at(play.position * model.mesh.length))
     shock = _shock(model, setup, play, closing)
@@ -183,15 +168,12 @@ def report(setup: Setup, play: Play) -> Report:
                 f"offsets are not allowed with {setup.name}'s contact law {setup.law.name!r}: "
                 "the face map runs the paper's linear law"
             )
-        opts = {"ball_mass": setup.ball_mass, "kcb": setup.kcb, "zeta": setup.zeta}
         face = face_map(
             model,
-            positions=rmap.positions,
+            **{**play.keywords(), "positions": rmap.positions},
             offsets=play.offsets,
             name=setup.name,
-            speed=play.speed,
-            options=opts,
-            **swing,
+            options=contact,
         )
     return Report(
         setup,

@@ -1,5 +1,8 @@
 """The options of a power map (:func:`fem_racket.studies.racket_map.racket_map`): the racket's
-setting (:class:`MapSetup`) and how each point is struck and solved (:class:`MapImpact`).
+setting (:class:`MapSetup`), how the racket is played over the map (:class:`MapPlay`: the ball
+speed, the swing and the grid; also the base of
+:class:`fem_racket.studies.compare.Play`) and how each point is struck and solved
+(:class:`MapImpact`).
 
 The map functions take them as keywords, checked with a "did you mean"
 (:func:`fem_racket.studies.options.take`).
@@ -7,15 +10,15 @@ The map functions take them as keywords, checked with a "did you mean"
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field, fields
 from typing import Any
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 
-__all__ = ["DEFAULT_POSITIONS", "DEFAULT_POWER_FRACTION", "MapImpact", "MapSetup"]
+__all__ = ["DEFAULT_POSITIONS", "DEFAULT_POWER_FRACTION", "MapImpact", "MapPlay", "MapSetup"]
 
 #: Default grid: the string face from its throat end to the tip, x/L (start, stop, points).
 DEFAULT_POSITIONS = (0.5, 1.0, 200)
@@ -50,19 +53,49 @@ class MapImpact:
 
 
 @dataclass(frozen=True)
+class MapPlay:
+    """How the racket is played over a map: the ball speed, the swing and the grid.
+
+    Attributes
+    ----------
+    speed : float
+        Incoming ball speed v_in [m/s].
+    racket_speed, reference, pivot
+        The swing: speed [m/s] of the point ``reference`` (x/L) towards the ball, turning about
+        ``pivot`` [m from the butt] or translating when None (:meth:`swing`).
+    positions : array of float or None
+        Impact points x/L; :data:`DEFAULT_POSITIONS` when None.
+    """
+
+    speed: float = 20.0
+    racket_speed: float = 0.0
+    reference: float = DEFAULT_REFERENCE
+    pivot: float | None = None
+    positions: Any = None
+
+    def swing(self, length: float) -> Swing:
+        """The swing of a racket of length ``length`` [m]
+        (:meth:`fem_racket.impact.swing.Swing.from_speed`)."""
+        return Swing.from_speed(
+            self.racket_speed, length, reference=self.reference, pivot=self.pivot
+        )
+
+    def keywords(self) -> dict[str, Any]:
+        """The fields of :class:`MapPlay`, by name, as the map functions take them."""
+        return {f.name: getattr(self, f.name) for f in fields(MapPlay)}
+
+
+@dataclass(frozen=True)
 class MapSetup:
-    """The racket's setting and the map's grid.
+    """The racket's setting and how it is played over the map.
 
     Attributes
     ----------
     name : str
         The racket's label in tables and plots.
-    speed : float
-        Incoming ball speed v_in [m/s].
-    racket_speed, reference, pivot
-        The swing (:meth:`fem_racket.impact.swing.Swing.from_speed`).
-    positions : array of float or None
-        Impact points x/L; :data:`DEFAULT_POSITIONS` when None.
+    play : MapPlay
+        Ball speed, swing and grid (given as their own keywords: ``speed``, ``racket_speed``,
+        ``reference``, ``pivot``, ``positions``).
     elements : int
         Cells when meshing a Frame.
     power_fraction : float
@@ -70,10 +103,6 @@ class MapSetup:
     """
 
     name: str = "racket"
-    speed: float = 20.0
-    racket_speed: float = 0.0
-    reference: float = DEFAULT_REFERENCE
-    pivot: float | None = None
-    positions: Any = None
+    play: MapPlay = field(default_factory=MapPlay)
     elements: int = 20
     power_fraction: float = DEFAULT_POWER_FRACTION

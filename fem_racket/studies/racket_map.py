@@ -203,7 +203,8 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
     frame : Frame, FrameMesh or FrameModel, optional
         The racket (the paper's standard one when None).
     **options
-        The fields of :class:`~fem_racket.studies.map_options.MapSetup` and
+        The fields of :class:`~fem_racket.studies.map_options.MapSetup` (its
+        :class:`~fem_racket.studies.map_options.MapPlay`'s among them) and
         :class:`~fem_racket.studies.map_options.MapImpact` (checked with a "did you mean"):
 
     name : str
@@ -232,10 +233,8 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
     RacketMap
     """
     setup, o, _ = take(options, "an option of racket_map", MapSetup, MapImpact)
-    name, speed, positions, elements = setup.name, setup.speed, setup.positions, setup.elements
-    racket_speed, reference, pivot = setup.racket_speed, setup.reference, setup.pivot
-    power_fraction = setup.power_fraction
-    speed = check_positive("speed", speed, "m/s")
+    play, pivot, power_fraction = setup.play, setup.play.pivot, setup.power_fraction
+    speed = check_positive("speed", play.speed, "m/s")
     law = get_law(o.law) if isinstance(o.law, str) else o.law
     if law is not None:
         for key, value in (("kcb", o.kcb), ("zeta", o.zeta), ("kcb_factor", o.kcb_factor)):
@@ -248,10 +247,10 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
     check_range("power_fraction", power_fraction, 0.0, 1.0, include_low=False)
     if o.modes is not None:
         check_integer("modes", o.modes)
-    x = _grid(positions)
-    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
+    x = _grid(play.positions)
+    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, setup.elements)
     length = model.mesh.length
-    swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
+    swing = play.swing(length)
     v_r = swing.speed_at(x * length)
     closing = np.array([closing_speed(speed, v) for v in v_r])
     kwargs = dict(vars(o), ball_mass=ball_mass, law=law)  # MapImpact, the mass and law resolved
@@ -279,4 +278,4 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
         power_fraction=power_fraction,
     )
     v_r = np.asarray(v_r, dtype=float)
-    return RacketMap(name, x, e, vo, v_r, speed, swing, spots, length, law)
+    return RacketMap(setup.name, x, e, vo, v_r, speed, swing, spots, length, law)

@@ -137,3 +137,14 @@ def test_animate_cli_with_strings(capsys, tmp_path):
                           "--frames", "3", "--size", "320x160", "--quiet")  # fmt: skip
     assert code == 0, err
     assert len(_gif_frames(out)) == 3
+
+
+def test_options_of_a_table_are_its_fields_by_name():
+    # a run file's [animate] values (with keys the options do not hold) give the same options
+    # as the keywords, checked alike
+    table = {"out": "a.gif", "field": "slope", "frames": 7, "fps": 10.0, "scale": 2.0,
+             "subdivide": 3, "size": (320, 160), "overwrite": True}  # fmt: skip
+    same = AnimationOptions(field="slope", frames=7, fps=10.0, scale=2.0, subdivide=3, size=SMALL)
+    assert AnimationOptions.of(table) == same
+    with pytest.raises(InputError, match="scale"):
+        AnimationOptions.of({**table, "scale": -1.0})
