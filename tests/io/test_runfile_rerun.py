@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 from clirun import run
+from test_config_design import DESIGN as STUDY
 
 from fem_racket import load_config
 from fem_racket.validation import InputError
@@ -19,20 +20,7 @@ FRAME = "[frame]\nelements = 6\n"
 VTK = FRAME + "[vtk]\nframes = 3\n"
 GIF = FRAME + '[animate]\nframes = 2\nsize = "160x160"\n'
 #: A design study with the cheapest budget (tests/io/test_config_design.py's).
-DESIGN = (
-    FRAME
-    + """[design]
-boundaries = [0.3]
-vary = ["ei"]
-link_ei = true
-ei_bounds = ["100,2000"]
-speeds = [30.0]
-zone_points = 3
-mass_range = "start"
-backend = "serial"
-maxiter = 2
-"""
-)
+DESIGN = STUDY.format(table="design", extra="maxiter = 2")
 #: command -> (run file, the method, its default output, the output's files to compare).
 CASES = {
     "export-vtk": (VTK, "export_vtk", "output/impact_vtk", ("impact.pvd", "frame_0001.vtu")),
@@ -124,8 +112,8 @@ def test_output_overwrite_replaces_as_the_command_does(cwd, capsys, command):
 
 def test_sensitivity_takes_output_overwrite(cwd, capsys):
     pytest.importorskip("SALib")
-    text = DESIGN.replace("[design]", "[sensitivity]").replace("link_ei = true\n", "")
-    text = text.replace("maxiter = 2\n", "designs = 16\nseed = 3\n")
+    text = STUDY.format(table="sensitivity", extra="designs = 16\nseed = 3")
+    text = text.replace("link_ei = true\n", "")
     Path("run.toml").write_text(text)
     assert _cli(capsys, "sensitivity", "--out", "s.png") == (0, "")
     code, err = _cli(capsys, "sensitivity", "--out", "s.png")

@@ -9,21 +9,12 @@ from pathlib import Path
 
 import pytest
 from clirun import run
+from test_config_design import DESIGN
 
 from fem_racket import load_config
 from fem_racket.validation import InputError
 
 FRAME = "[frame]\nelements = 6\n"
-#: The design of tests/io/test_config_design.py, cheapest budget.
-DESIGN = """[{table}]
-boundaries = [0.3]
-vary = ["ei"]
-ei_bounds = ["100,2000"]
-speeds = [30.0]
-zone_points = 3
-mass_range = "start"
-backend = "serial"
-"""
 METHODS = {"export-vtk": "export_vtk", "animate": "animate", "optimize": "optimize",
            "sensitivity": "sensitivity"}  # fmt: skip
 TABLES = {"export-vtk": "vtk", "animate": "animate", "optimize": "design"}
@@ -51,8 +42,11 @@ TABLES = {"export-vtk": "vtk", "animate": "animate", "optimize": "design"}
 )
 def test_refused_alike(cwd, capsys, command, key, words):
     table = TABLES.get(command, command)
-    body = DESIGN.format(table=table) if command in ("optimize", "sensitivity") else f"[{table}]\n"
-    Path("run.toml").write_text(FRAME + body + key + "\n")
+    if command in ("optimize", "sensitivity"):  # (sensitivity links no EI)
+        text = DESIGN.format(table=table, extra=key).replace("link_ei = true\n", "")
+    else:
+        text = FRAME + f"[{table}]\n{key}\n"
+    Path("run.toml").write_text(text)
     code, _, err = run(capsys, command, "--config", "run.toml", "--quiet")
     assert code == 2 and err.count("\n") == 1 and words in err, err
     with pytest.raises(InputError, match="^" + words.replace(".", r"\.")):
