@@ -1,7 +1,8 @@
 """Command-line interface ``fem-racket``: thin wrappers that parse, call the library, print.
 
-Each sub-command lives in its own module exposing ``register(subparsers)``; the parser sets
-``args.func(args) -> int``. Whatever goes wrong ends in one line on stderr, never a traceback:
+Each sub-command is a :class:`~fem_racket.cli.parser.Command` of :data:`COMMANDS` (its name and
+summary) whose module adds its options and runs it; the parser sets ``args.func(args) -> int``.
+Whatever goes wrong ends in one line on stderr, never a traceback:
 
 ======  ==========================================================================================
 exit    when
@@ -25,7 +26,6 @@ from __future__ import annotations
 import argparse
 import atexit
 import gc
-import importlib
 import logging
 import os
 import sys
@@ -33,7 +33,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from fem_racket.cli.options.runfile import apply_config
-from fem_racket.cli.parser import OneLineErrorParser
+from fem_racket.cli.parser import Command, OneLineErrorParser
 from fem_racket.cli.signals import (
     GuardedStdout,
     StdoutFault,
@@ -48,19 +48,65 @@ from fem_racket.validation import InputError, show
 
 __all__ = ["main"]
 
-#: Sub-commands whose module of :mod:`fem_racket.cli.commands` is not named after them.
-_MODULES = {"export-vtk": "vtk", "animate": "vtk"}
-
-#: Sub-command -> its module of :mod:`fem_racket.cli.commands` (which has ``register(sub)``), in
-#: the order ``--help`` lists them.
+#: Sub-command -> its :class:`~fem_racket.cli.parser.Command`, in the order ``--help`` lists
+#: them; a command's options and run are in its module of :mod:`fem_racket.cli.commands`.
 COMMANDS = {
-    name: _MODULES.get(name, name)
-    for name in (
-        "simulate", "modes", "sweep", "map", "fit", "customise", "closest", "compare",
-        "export-vtk", "animate", "refine", "reproduce", "calibrate", "optimize", "sensitivity",
-        "config",
+    command.name: command
+    for command in (
+        Command("simulate", "simulate one ball impact on the racket"),
+        Command("modes", "free-free modal analysis of the frame"),
+        Command("sweep", "simulate a grid of impacts and save one netCDF dataset", described=True),
+        Command(
+            "map", "apparent COR and ball speed along the frame, with sweet spots", described=True
+        ),
+        Command(
+            "fit",
+            "a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
+            described=True,
+        ),
+        Command(
+            "customise",
+            "least lead tape reaching swing weight, balance, twistweight, mass targets",
+            described=True,
+        ),
+        Command(
+            "closest",
+            "rackets of a CSV list nearest a target, each with its least lead",
+            described=True,
+        ),
+        Command(
+            "compare",
+            "rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
+            described=True,
+        ),
+        Command(
+            "export-vtk",
+            "write the impact as a VTK time series (.pvd + .vtu) for ParaView",
+            "vtk",
+            options="add_export_arguments",
+            run="run_export",
+        ),
+        Command(
+            "animate",
+            "render the impact offscreen as a GIF or MP4",
+            "vtk",
+            options="add_animate_arguments",
+            run="run_animate",
+        ),
+        Command(
+            "refine", "mesh-refinement study: frequencies vs the exact beam, COR and contact time"
+        ),
+        Command(
+            "reproduce",
+            "reproduce every figure of Kawazoe & Kanda (1997) and write REPRODUCTION.md",
+            described=True,
+        ),
+        Command("calibrate", "fit a ball/string law to published targets"),
+        Command("optimize", "optimum racket design (scipy, pymoo NSGA-II)"),
+        Command("sensitivity", "Sobol sensitivity of a design objective (SALib)"),
+        Command("config", "print an example run file (TOML) or check one"),
     )
-}  # fmt: skip
+}
 
 
 def _command_named(argv: Sequence[str]) -> str | None:
@@ -91,9 +137,10 @@ class _Version(argparse.Action):
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The top-level parser.
 
-    Every sub-command is registered, unless ``argv`` (the arguments about to be parsed) names
-    one: then only its module is imported and registered, so a command starts without importing
-    the others' libraries (``--help``, a mistyped name or none still see them all).
+    Every sub-command is registered in full, unless ``argv`` (the arguments about to be parsed)
+    is given: then only the command it names, so a command starts without importing the others'
+    libraries; naming none (``--help``, a mistyped name or none), every command by its name and
+    summary only, without importing any command's module.
     """
     parser = OneLineErrorParser(
         prog="fem-racket",
@@ -104,9 +151,11 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     parser.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     named = None if argv is None else _command_named(argv)
-    modules = [COMMANDS[named]] if named else list(dict.fromkeys(COMMANDS.values()))
-    for module in modules:
-        importlib.import_module(f"fem_racket.cli.commands.{module}").register(sub)
+    if named:
+        COMMANDS[named].add(sub)
+    else:
+        for command in COMMANDS.values():
+            command.add(sub, full=argv is None)
     for command in sub.choices.values():  # -v also after the command name
         command.add_argument(
             "-v",

@@ -6,9 +6,10 @@ notes and digits in :mod:`fem_racket.cli.text`, the parser in :mod:`fem_racket.c
 
 Conventions every command follows (so a new command plugs in with a few lines):
 
-- ``add_command(sub, name, help, __doc__)`` adds it (:func:`fem_racket.cli.parser.add_command`):
-  the second paragraph of the command module's docstring is its ``--help`` description, one text
-  for readers of the code and of ``--help``.
+- its module has ``add_arguments(parser)`` and ``run(args) -> int``, and one line of
+  :data:`fem_racket.cli.COMMANDS` (:class:`fem_racket.cli.parser.Command`) names it, with its
+  summary; with ``described=True`` the second paragraph of the module's docstring is its
+  ``--help`` description, one text for readers of the code and of ``--help``.
 - ``add_config_option(p)`` gives it ``--config run.toml`` (a TOML run file, see
   :mod:`fem_racket.io.config`); :func:`apply_config`, called once by ``cli.main``, fills the options
   the command line did not give from the file. Precedence: command line > the command's own
@@ -53,14 +54,13 @@ from fem_racket.cli.options.output import (
     write_text,
 )
 from fem_racket.cli.options.runfile import add_config_option, apply_config
-from fem_racket.cli.parser import OneLineErrorParser, add_command
+from fem_racket.cli.parser import OneLineErrorParser
 from fem_racket.cli.text import note, note_modes, significant
 
 __all__ = [
     "DEFAULT_OUTPUT_STEP",
     "MESH_EXCLUSIVE",
     "OneLineErrorParser",
-    "add_command",
     "add_config_option",
     "add_ei_options",
     "add_elements_option",

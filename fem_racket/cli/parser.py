@@ -2,19 +2,22 @@
 
 An option the command does not know is refused naming the command's own help, with the closest
 option it has (``fem-racket simulate --positon 0.7`` -> ``did you mean --position?``) or, for an
-old spelling, the one that replaced it (:data:`RENAMED`). Every command is added by
-:func:`add_command`, its description taken from its module's docstring.
+old spelling, the one that replaced it (:data:`RENAMED`). Every command is a :class:`Command`
+(name, summary, the module that adds its options and runs it), added by :func:`add_command`,
+its description taken from its module's docstring.
 """
 
 from __future__ import annotations
 
 import argparse
 import difflib
+import importlib
 import re
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["RENAMED", "OneLineErrorParser", "add_command", "suggestion"]
+__all__ = ["RENAMED", "Command", "OneLineErrorParser", "add_command", "suggestion"]
 
 #: Old option spellings -> what replaced them (the progress bar shows on a terminal by itself).
 RENAMED = {
@@ -95,3 +98,50 @@ def add_command(
     """
     description = None if doc is None else doc.split("\n\n")[1]
     return sub.add_parser(name, help=help, description=description)
+
+
+@dataclass(frozen=True)
+class Command:
+    """A sub-command: its name and summary, and the module of :mod:`fem_racket.cli.commands` that
+    adds its options and runs it, imported only when the command's parser is built in full.
+
+    Parameters
+    ----------
+    name : str
+        The command's name (``fem-racket NAME``).
+    help : str
+        Its line in ``fem-racket --help``.
+    module : str or None
+        Its module of :mod:`fem_racket.cli.commands` (None: named after the command).
+    described : bool
+        The second paragraph of the module's docstring is the command's ``--help`` description
+        (see :func:`add_command`); False: no description.
+    options : str
+        The module's function adding the command's options: ``options(parser)``.
+    run : str
+        The module's function running the command: ``run(args) -> int`` (``args.func``).
+    """
+
+    name: str
+    help: str
+    module: str | None = None
+    described: bool = False
+    options: str = "add_arguments"
+    run: str = "run"
+
+    @property
+    def module_path(self) -> str:
+        """The dotted name of the command's module."""
+        return f"fem_racket.cli.commands.{self.module or self.name}"
+
+    def add(self, sub: argparse._SubParsersAction, *, full: bool = True) -> argparse.ArgumentParser:
+        """Add the command to ``sub`` and return its parser: with its module's options and
+        ``func`` when ``full``, else its name and summary only (all ``fem-racket --help`` and a
+        mistyped command name need, without importing the module)."""
+        if not full:
+            return add_command(sub, self.name, self.help)
+        module = importlib.import_module(self.module_path)
+        parser = add_command(sub, self.name, self.help, module.__doc__ if self.described else None)
+        getattr(module, self.options)(parser)
+        parser.set_defaults(func=getattr(module, self.run))
+        return parser

@@ -9,8 +9,10 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from typing import TYPE_CHECKING
 
-from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+if TYPE_CHECKING:
+    from fem_racket.frame.model import FrameModel
 
 __all__ = ["note", "note_modes", "significant"]
 
@@ -26,6 +28,8 @@ def note_modes(args: argparse.Namespace, model: FrameModel) -> None:
     Only for a count the user chose (on the command line, or other than the default from a run
     file): the default of 80 exceeds every mesh up to 40 elements by design.
     """
+    from fem_racket.frame.model import DEFAULT_MODES
+
     if getattr(args, "basis", "modal") != "modal":
         return
     chosen = "modes" in getattr(args, "explicit_options", ()) or args.modes != DEFAULT_MODES

@@ -86,7 +86,7 @@ def test_every_command_that_computes_takes_a_run_file(name):
 def test_a_command_with_a_progress_bar_has_quiet_and_no_other_spelling(name):
     import importlib
 
-    module = importlib.import_module(f"fem_racket.cli.commands.{COMMANDS[name]}")
+    module = importlib.import_module(COMMANDS[name].module_path)
     flags = _flags(PARSERS[name])
     assert not flags & {"--progress", "--no-progress"}
     if "progress_of(" in inspect.getsource(module):

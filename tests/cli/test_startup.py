@@ -79,6 +79,45 @@ def test_package_and_help_import_no_heavy_library(argv, tmp_path):
     assert "importlib.metadata" not in modules
 
 
+def test_help_lists_the_commands_without_their_modules(tmp_path):
+    """``fem-racket --help`` lists each command from :data:`fem_racket.cli.COMMANDS` (name and
+    summary): no command's module, and of the package only the command line's own entry (its
+    parser, signals, run-file hook) and the base layer it uses (validation, outputs, the BLAS
+    pinning of studies.executors) - none of the library the commands' option defaults import."""
+    modules = imported(["--help"], tmp_path)
+    rooms = ("frame", "contact", "strings", "impact", "io", "paper", "cli.commands")
+    assert not loaded(modules, tuple(f"fem_racket.{room}" for room in rooms))
+    studies = {m for m in modules if m.startswith("fem_racket.studies.")}
+    assert studies <= {"fem_racket.studies.executors", "fem_racket.studies.pool"}
+
+
+#: What a command's ``--help`` needs not import: the run-file reader (``--config`` is read after
+#: parsing), mesh files read and written, the plausibility checks, and each command's own
+#: run-time modules.
+RUN_ONLY = (
+    "fem_racket.io.config",
+    "fem_racket.io.config_file",
+    "fem_racket.io.config_unused",
+    "fem_racket.io.mesh_files",
+    "fem_racket.io.racket_files",
+    "fem_racket.frame.plausible",
+)
+RUN_ONLY_OF = {
+    "simulate": ("fem_racket.impact.simulate", "fem_racket.io.impact_provenance"),
+    "modes": ("fem_racket.frame.catalogue", "fem_racket.io.config_keys"),
+    "fit": ("fem_racket.io.config_keys",),
+    "customise": ("fem_racket.io.map_files",),
+    "map": ("fem_racket.io.map_files", "fem_racket.studies.grid"),
+    "sweep": ("fem_racket.studies.sweep", "fem_racket.studies.checkpoint"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(RUN_ONLY_OF))
+def test_command_help_imports_no_run_time_module(name, tmp_path):
+    modules = imported([name, "--help"], tmp_path)
+    assert not loaded(modules, (*RUN_ONLY, *RUN_ONLY_OF[name]))
+
+
 @pytest.mark.parametrize("swing", [[], ["--racket-speed", "10"]], ids=["at-rest", "swing"])
 def test_simulate_imports_only_the_engine(swing, tmp_path):
     modules = imported(["simulate", "--speed", "20", "--position", "0.75", *swing], tmp_path)

@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_output_options,
     print_json,
@@ -20,18 +19,12 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
-from fem_racket.io.calibration_files import (
-    calibration_files,
-    calibration_summary,
-    write_calibration,
-)
 from fem_racket.outputs import Target, check_targets
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS, calibrate
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``calibrate`` command."""
-    p = add_command(sub, "calibrate", "fit a ball/string law to published targets")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``calibrate`` command's options."""
     p.add_argument(
         "--family",
         default="hysteretic",
@@ -55,11 +48,16 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print a JSON object")
     add_output_options(p, what="output folder (writes FAMILY-TARGETS .toml, .json and .png)")
     add_config_option(p)
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Fit, print the table, write the files."""
+    from fem_racket.io.calibration_files import (
+        calibration_files,
+        calibration_summary,
+        write_calibration,
+    )
+
     files = []
     if args.out:  # the three files are checked now and written as one set
         files = calibration_files(args.out, args.family, args.targets)

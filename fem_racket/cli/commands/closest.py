@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_command, add_config_option, print_json, significant
+from fem_racket.cli.common import add_config_option, print_json, significant
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
@@ -24,11 +24,8 @@ from fem_racket.cli.options.targets import (
 )
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``closest`` command."""
-    p = add_command(
-        sub, "closest", "rackets of a CSV list nearest a target, each with its least lead", __doc__
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``closest`` command's options."""
     p.add_argument(
         "rackets", nargs="?", default=None, metavar="CSV", help="the racket list (a CSV file)"
     )
@@ -36,7 +33,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--count", type=int, default=3, metavar="N", help="rackets to show (default 3)")
     p.add_argument("--json", action="store_true", help="print a JSON object (default: a table)")
     add_config_option(p, requires=("rackets",))
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:

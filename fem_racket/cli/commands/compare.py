@@ -17,7 +17,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -33,14 +32,8 @@ from fem_racket.cli.options.output import add_overwrite_json
 DEFAULT_OUTPUT = Path("output") / "compare.png"
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``compare`` command."""
-    p = add_command(
-        sub,
-        "compare",
-        "rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
-        __doc__,
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``compare`` command's options."""
     p.add_argument(
         "rackets",
         nargs="*",
@@ -93,7 +86,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_overwrite_json(o, "a JSON object")
     add_config_option(p, private=("out",), requires=("rackets",))
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -13,23 +13,19 @@ import io
 from pathlib import PurePath
 from typing import Any
 
-from fem_racket.cli.common import add_command, add_output_options
+from fem_racket.cli.common import add_output_options
 from fem_racket.cli.options.runfile import apply_config, config_values, file_options
-from fem_racket.io.config import example_config, load_config, toml_value
-from fem_racket.io.config_keys import COMMAND_TABLES
 from fem_racket.validation import ChecksPassed, InputError, checks_only
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``config`` command."""
-    p = add_command(sub, "config", "print an example run file (TOML) or check one")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``config`` command's options."""
     what = p.add_mutually_exclusive_group(required=True)
     what.add_argument("--example", action="store_true", help="print an annotated example")
     what.add_argument(
         "--check", metavar="TOML", help="check a run file and print its settings (no default)"
     )
     add_output_options(p, what="output file for the --example run file, TOML")
-    p.set_defaults(func=run)
 
 
 def _commands() -> dict[str, argparse.ArgumentParser]:
@@ -44,6 +40,8 @@ def _commands() -> dict[str, argparse.ArgumentParser]:
 
 
 def _placeholder(action: argparse.Action) -> str:
+    from fem_racket.io.config import toml_value
+
     if action.default is None or action.default == argparse.SUPPRESS:
         return f"<{action.metavar or action.dest.upper()}>"
     if isinstance(action.default, PurePath):
@@ -53,6 +51,8 @@ def _placeholder(action: argparse.Action) -> str:
 
 def command_tables() -> str:
     """Commented-out TOML tables of the commands that read run files, with their defaults."""
+    from fem_racket.io.config_keys import COMMAND_TABLES
+
     lines = [
         "",
         "# Each command's own options, in a table named after it (keys = its long options).",
@@ -68,6 +68,9 @@ def command_tables() -> str:
 
 
 def _check(path: str) -> str:
+    from fem_racket.io.config import load_config
+    from fem_racket.io.config_keys import COMMAND_TABLES
+
     commands = _commands()
     cfg = load_config(path)
     known_tables = {COMMAND_TABLES.get(n, n) for n in commands}
@@ -130,6 +133,8 @@ def _dry_run(name: str, path: str, operands: tuple[str, ...] = ()) -> None:
 
 
 def _show(value: Any) -> str:
+    from fem_racket.io.config import toml_value
+
     if isinstance(value, tuple) and value and hasattr(value[0], "EI"):
         return f"{len(value)} segments"
     if isinstance(value, list) and value and hasattr(value[0], "place"):
@@ -141,6 +146,8 @@ def _show(value: Any) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Print (or write with ``--out``) the example, or check a file."""
+    from fem_racket.io.config import example_config
+
     if args.check:
         print(_check(args.check), end="")
         return 0

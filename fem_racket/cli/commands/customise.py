@@ -17,7 +17,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_frame_options,
     add_speed_option,
@@ -29,13 +28,12 @@ from fem_racket.cli.common import (
     significant,
     swing_kwargs,
 )
-from fem_racket.cli.options.output import add_overwrite_json, mesh_files
+from fem_racket.cli.options.output import add_overwrite_json
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
     targets_from_args,
 )
-from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.io.config_racket import CUSTOMISE_MAPS
 
 #: Where the mesh and the maps go unless --out / --maps are given.
@@ -43,14 +41,8 @@ DEFAULT_OUTPUT = Path("output") / "customised.vtu"
 DEFAULT_MAPS = Path(CUSTOMISE_MAPS)
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``customise`` command."""
-    p = add_command(
-        sub,
-        "customise",
-        "least lead tape reaching swing weight, balance, twistweight, mass targets",
-        __doc__,
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``customise`` command's options."""
     add_frame_options(p)
     add_target_options(p)
     m = p.add_argument_group("maps before and after")
@@ -71,14 +63,14 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_overwrite_json(o)
     add_config_option(p, private=("out",), requires=("a target: swing_weight, balance, mass",))
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.frame.catalogue import catalogue
+    from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.map_files import check_map_outputs, map_targets
-    from fem_racket.io.racket_files import customise_files
+    from fem_racket.io.racket_files import customise_files, mesh_files
     from fem_racket.outputs import check_output_path
     from fem_racket.validation import work_begins
 

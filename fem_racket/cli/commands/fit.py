@@ -16,17 +16,15 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     print_json,
     run_parameters,
     significant,
 )
 from fem_racket.cli.options.lists import add_options
-from fem_racket.cli.options.output import add_overwrite_json, mesh_files, print_written
+from fem_racket.cli.options.output import add_overwrite_json, print_written
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
-from fem_racket.io.racket_files import FitSpec, fit_files
 from fem_racket.outputs import check_output_path
 from fem_racket.validation import InputError, check_integer, work_begins
 
@@ -50,14 +48,8 @@ SPECIFICATION = (
 )  # fmt: skip
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``fit`` command."""
-    p = add_command(
-        sub,
-        "fit",
-        "a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
-        __doc__,
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``fit`` command's options."""
     g = p.add_argument_group("specification")
     add_options(g, SPECIFICATION, type=float)
     g.add_argument(
@@ -79,11 +71,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_config_option(
         p, private=("out", "elements"), requires=("length", "mass", "balance", "swing_weight")
     )
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Fit, write the mesh and its sidecar, print targets against fitted values."""
+    from fem_racket.io.racket_files import FitSpec, fit_files, mesh_files
+
     elements = check_integer("elements", args.elements, minimum=3)
     for name in ("length", "mass", "balance", "swing_weight"):
         if getattr(args, name) is None:

@@ -25,7 +25,6 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_elements_option,
     add_speed_option,
@@ -39,20 +38,17 @@ from fem_racket.cli.options.faces import (
     add_face_options,
     face_asked,
     map_impact,
+    map_rackets,
     print_maps_json,
     run_face,
 )
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.frame.model import DEFAULT_MODES, FrameModel
-from fem_racket.frame.segments import standard_frame
+from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_keys import PRESETS
-from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
-from fem_racket.io.mesh_files import read_mesh
-from fem_racket.studies.grid import as_values
 from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
 from fem_racket.validation import InputError
 
@@ -68,11 +64,8 @@ class _Extend(argparse.Action):
         setattr(namespace, self.dest, (old if isinstance(old, list) else []) + list(values))
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``map`` command."""
-    p = add_command(
-        sub, "map", "apparent COR and ball speed along the frame, with sweet spots", __doc__
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``map`` command's options."""
     r = p.add_argument_group("rackets (several are overlaid)")
     r.add_argument(
         "--preset",
@@ -173,12 +166,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="print sweet spots and curves as JSON (default: a table)",
     )
     add_config_option(p, private=("out", "mesh"))
-    p.set_defaults(func=run)
 
 
 def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
     """(name, frame) of every racket the options name, presets first, each with the lead of
     --add-mass."""
+    from fem_racket.frame.segments import standard_frame
+    from fem_racket.io.mesh_files import read_mesh
+
     out: list[tuple[str, Any]] = []
     for name in args.preset or []:
         out.append((name, standard_frame(PRESETS[name])))
@@ -190,6 +185,9 @@ def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
 
 def run(args: argparse.Namespace) -> int:
     """Map every racket, write the files and print the sweet spots."""
+    from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
+    from fem_racket.studies.grid import as_values
+
     if args.no_files and args.out:
         raise InputError("no_files = True is not allowed with --out: give one of them")
     default = not (args.out or args.no_files or args.json)
@@ -203,19 +201,16 @@ def run(args: argparse.Namespace) -> int:
         return run_face(args, outs, positions, law, _rackets(args))
     if args.power_fraction is None:
         args.power_fraction = DEFAULT_POWER_FRACTION
-    maps = [
-        racket_map(
-            FrameModel.build(frame, args.elements),
-            name=name,
-            speed=args.speed,
-            positions=positions,
-            power_fraction=args.power_fraction,
-            law=law,
-            **swing_kwargs(args),
-            **map_impact(args),
-        )
-        for name, frame in _rackets(args)
-    ]
+    maps = map_rackets(
+        racket_map,
+        args,
+        _rackets(args),
+        positions=positions,
+        power_fraction=args.power_fraction,
+        law=law,
+        **swing_kwargs(args),
+        **map_impact(args),
+    )
     if outs:  # as one set: all of them or none
         write_maps(maps, outs, overwrite=overwrite, parameters=run_parameters(args))
     if args.json:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_frame_options,
     build_model,
@@ -13,14 +12,11 @@ from fem_racket.cli.common import (
     print_json,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
-from fem_racket.frame.catalogue import catalogue
-from fem_racket.frame.modal import mode_nodes
 from fem_racket.progress import progress_bar
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``modes`` command."""
-    p = add_command(sub, "modes", "free-free modal analysis of the frame")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``modes`` command's options."""
     add_frame_options(p)
     p.add_argument(
         "--count",
@@ -32,11 +28,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print a JSON object")
     add_quiet_option(p)
     add_config_option(p)
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the modal analysis."""
+    from fem_racket.frame.catalogue import catalogue
+    from fem_racket.frame.modal import mode_nodes
     from fem_racket.validation import InputError, work_begins
 
     if args.count < 1:

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_command
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.cli.options.lists import add_options
@@ -28,11 +27,10 @@ BUDGET = (
 )  # fmt: skip
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``optimize`` command."""
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``optimize`` command's options."""
     from fem_racket.io.design_study import METHODS
 
-    p = add_command(sub, "optimize", "optimum racket design (scipy, pymoo NSGA-II)")
     add_design_options(p)
     s = p.add_argument_group("solver")
     s.add_argument(
@@ -57,7 +55,6 @@ def register(sub: argparse._SubParsersAction) -> None:
         "json": "print result.json's summary as JSON",
     }
     add_study_tail(p, out, help_of)
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:

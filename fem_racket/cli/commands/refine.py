@@ -6,7 +6,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_ei_options,
     add_mesh_option,
@@ -17,10 +16,10 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
+from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.impact import add_ball_options, add_separation_option, add_speed_option
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.io.figure_files import check_dpi, figure_format
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
 from fem_racket.validation import InputError, show, work_begins
 
@@ -30,11 +29,8 @@ FAMILY_CHOICES = (*FAMILIES, "both")
 DEFAULT_CSV = "output/refine.csv"
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``refine`` command."""
-    p = add_command(
-        sub, "refine", "mesh-refinement study: frequencies vs the exact beam, COR and contact time"
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``refine`` command's options."""
     g = p.add_argument_group("frame")
     add_ei_options(g)
     add_mesh_option(
@@ -120,12 +116,13 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--json", action="store_true", help="print a JSON object (writes only --csv, --plot)"
     )
     add_config_option(p, private=("elements",))
-    p.set_defaults(func=run)
 
 
 def _plot_path(args: argparse.Namespace) -> Path:
     """--plot, or output/refine.<--format>; a --plot whose suffix contradicts --format is an
     error."""
+    from fem_racket.io.figure_files import figure_format
+
     if args.plot is None:
         return Path(f"output/refine.{args.format or 'png'}")
     path = Path(args.plot)
@@ -140,9 +137,11 @@ def _plot_path(args: argparse.Namespace) -> Path:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study, print the table (or JSON), write the CSV and the plot."""
+    from fem_racket.io.figure_files import check_dpi
     from fem_racket.io.refine_files import format_study, refine_targets, write_outputs
     from fem_racket.outputs import check_targets
     from fem_racket.studies.refine import refinement_study
+    from fem_racket.studies.refine_options import RefineOptions
 
     if args.count < 1:
         raise InputError(f"count = {args.count} is not allowed: must be an integer >= 1")
@@ -165,27 +164,10 @@ def run(args: argparse.Namespace) -> int:
     if outputs:  # fail before the work, not after it
         check_targets(refine_targets(args.csv, plot), overwrite=overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
-    impact = {
-        "ball_mass": args.ball_mass,
-        "kcb": args.kcb,
-        "zeta": args.zeta,
-        "separation": args.separation,
-    }
+    options = fields_from_args(args, RefineOptions, n_modes=args.count, progress=progress_of(args))
     work_begins()
     studies = {
-        fam: refinement_study(
-            frame,
-            args.elements,
-            family=fam,
-            n_modes=args.count,
-            positions=args.positions,
-            speed=args.speed,
-            grading=args.grading,
-            impact_nodes=args.impact_nodes,
-            impact_modes=args.impact_modes,
-            progress=progress_of(args),
-            **impact,
-        )
+        fam: refinement_study(frame, args.elements, **(options | {"family": fam}))
         for fam in families
     }
     if outputs:

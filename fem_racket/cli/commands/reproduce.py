@@ -15,20 +15,14 @@ from __future__ import annotations
 import argparse
 import time
 
-from fem_racket.cli.common import add_command, add_config_option, run_parameters
+from fem_racket.cli.common import add_config_option, run_parameters
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.paper.config_reproduce import DEFAULT_OUT, DEFAULT_REPORT, destinations
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``reproduce`` command."""
-    p = add_command(
-        sub,
-        "reproduce",
-        "reproduce every figure of Kawazoe & Kanda (1997) and write REPRODUCTION.md",
-        __doc__,
-    )
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``reproduce`` command's options."""
     p.add_argument(
         "--out",
         default=None,
@@ -54,7 +48,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     add_quiet_option(p)
     # The paper's parameters are fixed: only [reproduce] (and output.overwrite) apply.
     add_config_option(p, private=("out",))
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:

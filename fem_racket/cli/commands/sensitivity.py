@@ -4,15 +4,13 @@ from __future__ import annotations
 
 import argparse
 
-from fem_racket.cli.common import add_command
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.extras import require
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``sensitivity`` command."""
-    p = add_command(sub, "sensitivity", "Sobol sensitivity of a design objective (SALib)")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``sensitivity`` command's options."""
     add_design_options(p)
     s = p.add_argument_group("sensitivity")
     s.add_argument(
@@ -33,7 +31,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     }
     help_of = {"overwrite": "replace the output files", "json": "print the indices as JSON"}
     add_study_tail(p, out, help_of)
-    p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -21,10 +21,9 @@ from __future__ import annotations
 import argparse
 from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_impact_options,
     add_output_options,
@@ -49,12 +48,6 @@ from fem_racket.cli.options.output import (
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, run_strung, strings_from_args
 from fem_racket.cli.options.strings_oblique import run_strung_oblique
-from fem_racket.contact.presets import FILE_KEYS
-from fem_racket.frame.hand import Hand
-from fem_racket.impact.held.shock import DEFAULT_WINDOW
-from fem_racket.impact.simulate import simulate
-from fem_racket.io.config_run import NOT_WITH_HAND
-from fem_racket.io.impact_provenance import impact_provenance
 from fem_racket.outputs import (
     Target,
     check_output_path,
@@ -63,13 +56,15 @@ from fem_racket.outputs import (
 )
 from fem_racket.validation import InputError, show_path
 
+if TYPE_CHECKING:
+    from fem_racket.frame.hand import Hand
+
 #: Suffixes --out takes (case-insensitive) and what each writes.
 OUT_SUFFIXES = (".json", ".csv")
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``simulate`` command."""
-    p = add_command(sub, "simulate", "simulate one ball impact on the racket")
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``simulate`` command's options."""
     add_impact_options(p)
     add_swing_options(p)
     add_hand_options(p)
@@ -83,7 +78,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     add_output_step_option(g)
     add_config_option(p)
-    p.set_defaults(func=run)
 
 
 def _check_out(args: argparse.Namespace) -> list[Path]:
@@ -114,12 +108,16 @@ def _write(
     args: argparse.Namespace, result, summary: dict[str, Any], files: list[Path], history
 ) -> None:
     """Write --out: JSON, or CSV and its sidecar as one set (both or neither)."""
+    from fem_racket.io.impact_provenance import impact_provenance
+
     meta = impact_provenance(result, run_parameters(args))
     write_result_files(args, meta, summary, files, history)
 
 
 def _law_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
     """K_CB and zeta for the paper's law; else the law's name and parameters."""
+    from fem_racket.contact.presets import FILE_KEYS
+
     if summary["law"] == "linear":
         return [
             ("K_CB", significant(summary["kcb_n_m"], 4), "N/m"),
@@ -145,6 +143,8 @@ def _check_hand(args: argparse.Namespace) -> None:
     """Refuse, before the run, the options the hand-held racket does not take, named as the
     user gave them - on the command line or in the run file (the library refuses the rest: a
     law, the general solver)."""
+    from fem_racket.io.config_run import NOT_WITH_HAND
+
     given = given_options(args)
     for dest in NOT_WITH_HAND:
         if dest in given:
@@ -157,6 +157,9 @@ def _check_hand(args: argparse.Namespace) -> None:
 
 def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
     """The hand-held racket: simulate, print, write."""
+    from fem_racket.impact.held.shock import DEFAULT_WINDOW
+    from fem_racket.impact.simulate import simulate
+
     _check_hand(args)
     model = build_model(args)
     window = DEFAULT_WINDOW if args.hand_shock_window is None else args.hand_shock_window
@@ -227,6 +230,8 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
 
 def run(args: argparse.Namespace) -> int:
     """Simulate and print the result (and write it with ``--out``)."""
+    from fem_racket.impact.simulate import simulate
+
     check_output_step(args.output_step)
     hand = hand_from_args(args)
     files = _check_out(args) if args.out else []

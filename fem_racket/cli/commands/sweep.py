@@ -11,12 +11,11 @@ from __future__ import annotations
 import argparse
 import time
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_mesh_option,
     add_solver_options,
@@ -25,20 +24,20 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
+from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.laws import add_law_options
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.contact.presets import law_parameters
-from fem_racket.frame.mesh import FrameMesh, frame_mesh
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.frame.segments import Frame, standard_frame
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
     DEFAULT_COMPLIANCE_RATIO,
 )
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
-from fem_racket.studies.sweep import sweep_result
 from fem_racket.validation import InputError, show
+
+if TYPE_CHECKING:
+    from fem_racket.frame.mesh import FrameMesh
+    from fem_racket.frame.segments import Frame
 
 #: Where the result goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "sweep.nc"
@@ -95,9 +94,8 @@ def _grid_value(where: str, value: Any) -> Any:
     return value
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``sweep`` command."""
-    p = add_command(sub, "sweep", "simulate a grid of impacts and save one netCDF dataset", __doc__)
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``sweep`` command's options."""
     g = p.add_argument_group("swept or fixed parameters")
     for name, text in _HELP.items():
         flags = ["--" + name.replace("_", "-"), *_PLURAL.get(name, ())]
@@ -160,11 +158,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         private=("out",),
         convert={name: _grid_value for name in [*PARAMETERS, *LAW_PARAMETERS]},
     )
-    p.set_defaults(func=run)
 
 
 def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> None:
     """Say so when a chosen --modes exceeds the flexible modes of the coarsest mesh swept."""
+    from fem_racket.frame.mesh import FrameMesh, frame_mesh
+    from fem_racket.frame.model import DEFAULT_MODES
+    from fem_racket.frame.segments import standard_frame
+
     chosen = "modes" in getattr(args, "explicit_options", ()) or args.modes != DEFAULT_MODES
     if args.basis != "modal" or not chosen:
         return
@@ -185,7 +186,10 @@ def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> No
 def run(args: argparse.Namespace) -> int:
     """Run the sweep, write the file and print a summary."""
     from fem_racket.cli.common import frame_from_args
+    from fem_racket.contact.presets import law_parameters
     from fem_racket.studies.executors import check_scheduler
+    from fem_racket.studies.sweep import sweep_result
+    from fem_racket.studies.sweep_options import SweepRun, SweepSolving
 
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:
@@ -200,30 +204,17 @@ def run(args: argparse.Namespace) -> int:
     custom = args.mesh is not None or getattr(args, "segments", None)
     frame = frame_from_args(args, exclusive=("ei1", "ei2")) if custom else None
     start = time.perf_counter()
-    result = sweep_result(
-        frame,
-        **values,
-        ei2=args.ei2,
-        solver=args.solver,
-        separation=args.separation,
-        basis=args.basis,
-        modes=args.modes,
-        rtol=args.rtol,
-        atol=args.atol,
-        law=args.law,
-        tolerance=args.tolerance,
-        peak_force=args.peak_force,
+    running = fields_from_args(
+        args,
+        SweepRun,
         output=args.out,
         overwrite=replace_own(args, Path(args.out) == DEFAULT_OUTPUT, [args.out]),
-        restart=args.restart,
         backend=backend,
-        workers=args.workers,
-        scheduler=args.scheduler,
-        chunk_size=args.chunk_size,
         progress=progress_of(args),
         parameters=run_parameters(args),
-        **law_parameters(vars(args)),
     )
+    solving = fields_from_args(args, SweepSolving)
+    result = sweep_result(frame, **values, **solving, **running, **law_parameters(vars(args)))
     wall = time.perf_counter() - start
     _note_modes(args, frame)
     done = result.summary()

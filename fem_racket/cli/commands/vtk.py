@@ -6,7 +6,6 @@ import argparse
 from pathlib import Path
 
 from fem_racket.cli.common import (
-    add_command,
     add_config_option,
     add_impact_options,
     add_output_step_option,
@@ -17,13 +16,12 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
+from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, strings_from_args, strung_from_args
 from fem_racket.extras import require
-from fem_racket.impact.simulate import simulate
-from fem_racket.io.config_drawings import STRUNG_FRAMES
 from fem_racket.validation import InputError
 
 #: Where export-vtk and animate write unless --out is given.
@@ -80,11 +78,8 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
     add_quiet_option(p)
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    """Add the ``export-vtk`` and ``animate`` commands."""
-    p = add_command(
-        sub, "export-vtk", "write the impact as a VTK time series (.pvd + .vtu) for ParaView"
-    )
+def add_export_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``export-vtk`` command's options."""
     p.add_argument(
         "--out",
         type=Path,
@@ -96,9 +91,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     _add_common(p, scale=1.0, frames=None)
     add_strings_options(p)
     add_config_option(p, private=("out",))  # a folder, not output.out
-    p.set_defaults(func=run_export)
 
-    a = add_command(sub, "animate", "render the impact offscreen as a GIF or MP4")
+
+def add_animate_arguments(a: argparse.ArgumentParser) -> None:
+    """The ``animate`` command's options."""
     a.add_argument(
         "--out",
         type=Path,
@@ -123,10 +119,11 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="image size in pixels, multiples of 16 (default 960x400)",
     )
     add_config_option(a, private=("out",))  # a .gif or .mp4, not output.out
-    a.set_defaults(func=run_animate)
 
 
 def _simulate(args: argparse.Namespace):
+    from fem_racket.impact.simulate import simulate
+
     check_output_step(args.output_step)
     model = build_model(args)
     result = simulate(model, output_step=args.output_step, **impact_kwargs(args))
@@ -192,6 +189,7 @@ def run_export(args: argparse.Namespace) -> int:
 def _export_strung(args: argparse.Namespace, strings, overwrite: bool) -> int:
     """The strung racket's series: frame, ball and the bed's surface (part ``strings``); 101
     steps unless --frames says (its histories have 801 output times)."""
+    from fem_racket.io.config_drawings import STRUNG_FRAMES
     from fem_racket.io.strung_vtk import write_strung_vtk
 
     for dest in ("subdivide", "field"):  # on the command line or in the run file
@@ -225,14 +223,7 @@ def run_animate(args: argparse.Namespace) -> int:
     from fem_racket.io.animate import AnimationOptions, animation_targets, render_animation
 
     overwrite = _check_early(args)
-    options = AnimationOptions(
-        field=args.field,
-        frames=args.frames,
-        fps=args.fps,
-        scale=args.scale,
-        subdivide=args.subdivide,
-        size=args.size,
-    )
+    options = options_from_args(args, AnimationOptions)
     strings = strings_from_args(args)
     model = None
     if strings is None:

@@ -7,19 +7,19 @@ option groups: :mod:`.variables`, :mod:`.zones`, :mod:`.objectives`; where the d
 from __future__ import annotations
 
 import argparse
-from dataclasses import fields
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.common import add_config_option, add_frame_options, frame_from_args
 from fem_racket.cli.options.drawing import add_quiet_option
 from fem_racket.cli.options.execution import add_run_options
+from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.objectives import add_objective_options, objectives_from_args
 from fem_racket.cli.options.variables import add_variable_options
 from fem_racket.cli.options.zones import add_zone_options
-from fem_racket.studies.design.build import build_problem
-from fem_racket.studies.design.options import DesignOptions, VariableOptions, ZoneOptions
-from fem_racket.studies.design.problem import DesignProblem
+
+if TYPE_CHECKING:
+    from fem_racket.studies.design.problem import DesignProblem
 
 __all__ = ["add_design_options", "add_study_tail", "problem_from_args"]
 
@@ -51,17 +51,14 @@ def add_study_tail(
     add_config_option(parser, private=("out",))
 
 
-def _group(kind: type, args: argparse.Namespace) -> Any:
-    """The option group ``kind`` from the options of the same names (the others default)."""
-    given = vars(args)
-    return kind(**{f.name: given[f.name] for f in fields(kind) if f.name in given})
-
-
 def problem_from_args(args: argparse.Namespace) -> DesignProblem:
     """The design problem the options describe."""
+    from fem_racket.studies.design.build import build_problem
+    from fem_racket.studies.design.options import DesignOptions, VariableOptions, ZoneOptions
+
     options = DesignOptions(
-        variables=_group(VariableOptions, args),
-        zone_options=_group(ZoneOptions, args),
+        variables=options_from_args(args, VariableOptions),
+        zone_options=options_from_args(args, ZoneOptions),
         goals=objectives_from_args(args),
         law=law_from_args(args),
         elements=args.elements,

@@ -4,10 +4,14 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.drawing import progress_of
-from fem_racket.studies.design.options import ExecutionOptions
+from fem_racket.cli.options.fields import options_from_args
 from fem_racket.studies.executors import BACKENDS
+
+if TYPE_CHECKING:
+    from fem_racket.studies.design.options import ExecutionOptions
 
 __all__ = ["add_run_options", "execution_from_args"]
 
@@ -34,9 +38,6 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
 def execution_from_args(args: argparse.Namespace) -> ExecutionOptions:
     """Where the designs run (--backend, --workers, --scheduler) and whether a progress bar
     shows (``--quiet``)."""
-    return ExecutionOptions(
-        backend=args.backend,
-        workers=args.workers,
-        scheduler=args.scheduler,
-        progress=progress_of(args),
-    )
+    from fem_racket.studies.design.options import ExecutionOptions
+
+    return options_from_args(args, ExecutionOptions, progress=progress_of(args))

@@ -16,14 +16,13 @@ Options the spin map cannot use are refused in one line.
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.common import print_json, run_parameters, significant, swing_kwargs
 from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.frame.model import FrameModel
-from fem_racket.studies.grid import as_values
 from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
 from fem_racket.validation import InputError
 
@@ -32,6 +31,7 @@ __all__ = [
     "add_face_options",
     "face_asked",
     "map_impact",
+    "map_rackets",
     "print_maps_json",
     "run_face",
 ]
@@ -112,10 +112,23 @@ def run_face(
     return _run_power(args, outs, positions, law, rackets)
 
 
+def map_rackets(study: Callable[..., Any], args: argparse.Namespace, rackets: list, **kw) -> list:
+    """One map per racket, in order: ``study(model, name=NAME, speed=--speed, **kw)`` for each
+    (NAME, frame) of ``rackets``, its model built with ``--elements`` cells (``study``:
+    :func:`~fem_racket.studies.racket_map.racket_map`, ``face_map`` or ``spin_map``)."""
+    from fem_racket.frame.model import FrameModel
+
+    return [
+        study(FrameModel.build(frame, args.elements), name=name, speed=args.speed, **kw)
+        for name, frame in rackets
+    ]
+
+
 def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: list) -> int:
     """``--angle`` ...: the oblique ball's spin over the face."""
     from fem_racket.impact.incidence import Incidence
     from fem_racket.io.spin_map_files import write_spin_map
+    from fem_racket.studies.grid import as_values
     from fem_racket.studies.spin_map import spin_map
 
     given = given_options(args)
@@ -131,18 +144,15 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
             if dest in given:
                 raise InputError(f"{dest} is not allowed with --law {law.name}: the law's own")
             del options[dest]
-    maps = [
-        spin_map(
-            FrameModel.build(frame, args.elements),
-            positions=positions,
-            offsets=offsets,
-            incidence=inc,
-            speed=args.speed,
-            name=name,
-            options=options,
-        )
-        for name, frame in rackets
-    ]
+    maps = map_rackets(
+        spin_map,
+        args,
+        rackets,
+        positions=positions,
+        offsets=offsets,
+        incidence=inc,
+        options=options,
+    )
     for path in outs:
         write_spin_map(maps, path, parameters=run_parameters(args))
     if args.json:
@@ -170,6 +180,7 @@ def _run_power(
     """``--offsets``: the power map of the whole face (:mod:`fem_racket.studies.face_map`)."""
     from fem_racket.io.face_files import write_face
     from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
+    from fem_racket.studies.grid import as_values
 
     if law is not None:
         raise InputError(
@@ -180,18 +191,15 @@ def _run_power(
     if args.power_fraction is None:
         args.power_fraction = DEFAULT_AREA_FRACTION
     options = {**map_impact(args), "power_fraction": args.power_fraction}
-    maps = [
-        face_map(
-            FrameModel.build(frame, args.elements),
-            positions=positions,
-            offsets=offsets,
-            name=name,
-            speed=args.speed,
-            options=options,
-            **swing_kwargs(args),
-        )
-        for name, frame in rackets
-    ]
+    maps = map_rackets(
+        face_map,
+        args,
+        rackets,
+        positions=positions,
+        offsets=offsets,
+        options=options,
+        **swing_kwargs(args),
+    )
     for path in outs:
         write_face(maps, path, overwrite=args.overwrite, parameters=run_parameters(args))
     if args.json:

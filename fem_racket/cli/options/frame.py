@@ -3,15 +3,16 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.lead import add_lead_option, with_lead
-from fem_racket.frame.mesh import FrameMesh
-from fem_racket.frame.model import FrameModel
-from fem_racket.frame.plausible import check_implement
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
 from fem_racket.io.config_defaults import FRAME_ELEMENTS
-from fem_racket.io.mesh_files import read_mesh
 from fem_racket.validation import InputError
+
+if TYPE_CHECKING:
+    from fem_racket.frame.mesh import FrameMesh
+    from fem_racket.frame.model import FrameModel
 
 __all__ = [
     "MESH_EXCLUSIVE",
@@ -110,6 +111,9 @@ def frame_from_args(
 
 
 def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame | FrameMesh:
+    from fem_racket.frame.plausible import check_implement
+    from fem_racket.io.mesh_files import read_mesh
+
     path = getattr(args, "mesh", None)
     if path is None:
         segments = getattr(args, "segments", None)
@@ -127,4 +131,6 @@ def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame |
 
 def build_model(args: argparse.Namespace) -> FrameModel:
     """Assemble the frame the options describe (a --mesh file as it is)."""
+    from fem_racket.frame.model import FrameModel
+
     return FrameModel.build(frame_from_args(args), args.elements)

@@ -48,6 +48,17 @@ LINEAR_LAW = (
      "0.83)"),
 )  # fmt: skip
 
+#: (name, default, metavar, help) of the racket's motion before impact (:func:`add_swing_options`).
+SWING = (
+    ("racket_speed", PLAY_DEFAULTS["racket_speed"], "M_S", "racket speed towards the ball before "
+     "impact [m/s] at the --reference point (default 0: a racket at rest)"),
+    ("reference", PLAY_DEFAULTS["reference"], "X_OVER_L", f"point x/L [-] whose speed "
+     f"--racket-speed gives (default {DEFAULT_REFERENCE}, the string centre)"),
+    ("pivot", PLAY_DEFAULTS["pivot"], "M", "the racket turns about this point [m from the butt; "
+     "negative beyond it, e.g. a shoulder], so the impact point moves at V (x_i - P)/(x_ref - P) "
+     "(default: none, the racket translates at V)"),
+)  # fmt: skip
+
 
 def add_impact_options(parser: argparse.ArgumentParser) -> None:
     """Frame options plus the ball, the ball/string law, the impact and the solver."""
@@ -106,38 +117,14 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     """--racket-speed, --reference, --pivot: the racket's motion before impact (every command
     that takes a swing: simulate, sweep, map); read them with :func:`swing_from_args`."""
     g = parser.add_argument_group("swing (racket motion before impact)")
-    g.add_argument(
-        "--racket-speed",
-        type=float,
-        default=PLAY_DEFAULTS["racket_speed"],
-        metavar="M_S",
-        help="racket speed towards the ball before impact [m/s] at the --reference point "
-        "(default 0: a racket at rest)",
-    )
-    g.add_argument(
-        "--reference",
-        type=float,
-        default=PLAY_DEFAULTS["reference"],
-        metavar="X_OVER_L",
-        help=f"point x/L [-] whose speed --racket-speed gives (default {DEFAULT_REFERENCE}, the "
-        "string centre)",
-    )
-    g.add_argument(
-        "--pivot",
-        type=float,
-        default=PLAY_DEFAULTS["pivot"],
-        metavar="M",
-        help="the racket turns about this point [m from the butt; negative beyond it, e.g. a "
-        "shoulder], so the impact point moves at V (x_i - P)/(x_ref - P) (default: none, the "
-        "racket translates at V)",
-    )
+    add_options(g, SWING, type=float)
 
 
 def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """The swing's options as the keywords ``racket_speed``, ``reference`` and ``pivot`` of the
     maps (:func:`fem_racket.studies.racket_map.racket_map`, ``face_map``) and of compare's
     ``Play``, which build the swing themselves."""
-    return {k: getattr(args, k) for k in ("racket_speed", "reference", "pivot")}
+    return {name: getattr(args, name) for name, *_ in SWING}
 
 
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:

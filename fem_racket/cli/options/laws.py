@@ -8,12 +8,15 @@ overridden by their options) and the calibrated presets such as ``kawazoe-1997-n
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.runfile import option_name
-from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.presets import LAW_NAMES, check_linear_options, get_law, law_parameters
 from fem_racket.contact.registry import family_parameters
 from fem_racket.validation import InputError, show
+
+if TYPE_CHECKING:
+    from fem_racket.contact.law import ContactLaw
 
 __all__ = ["add_law_options", "law_from_args"]
 

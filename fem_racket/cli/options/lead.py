@@ -8,19 +8,22 @@ that takes a racket, or a run file's ``[[frame.lead]]`` tables (``place``, ``mas
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.frame.clock import PLACES
-from fem_racket.frame.head import DEFAULT_HEAD
-from fem_racket.frame.lead import Lead, add_lead, parse_lead
-from fem_racket.frame.mesh import FrameMesh, frame_mesh
-from fem_racket.frame.segments import Frame
 from fem_racket.validation import InputError
+
+if TYPE_CHECKING:
+    from fem_racket.frame.lead import Lead
+    from fem_racket.frame.mesh import FrameMesh
+    from fem_racket.frame.segments import Frame
 
 __all__ = ["add_lead_option", "leads_of", "with_lead"]
 
 
 def _lead(text: str) -> Lead:
+    from fem_racket.frame.lead import parse_lead
+
     try:
         return parse_lead(text)
     except InputError as exc:
@@ -58,6 +61,11 @@ def leads_of(args: argparse.Namespace) -> list[Lead]:
 def with_lead(frame: Frame | FrameMesh, args: argparse.Namespace, elements: int) -> Any:
     """``frame`` with the options' leads (a :class:`Frame` meshed with ``elements`` cells
     first); ``frame`` itself when there are none."""
+    from fem_racket.frame.head import DEFAULT_HEAD
+    from fem_racket.frame.lead import add_lead
+    from fem_racket.frame.mesh import frame_mesh
+    from fem_racket.frame.segments import Frame
+
     leads = leads_of(args)
     if not leads:
         return frame

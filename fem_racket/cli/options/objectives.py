@@ -5,13 +5,17 @@ mass, balance, swing weight and first frequency."""
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
+from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.lists import number_list
 from fem_racket.frame.hand import GRIPS
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.io.config_design import CONSTRAINTS
-from fem_racket.studies.design.options import ObjectiveOptions
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
+
+if TYPE_CHECKING:
+    from fem_racket.studies.design.options import ObjectiveOptions
 
 __all__ = ["CONSTRAINTS", "add_objective_options", "objectives_from_args"]
 
@@ -84,11 +88,9 @@ def add_objective_options(parser: argparse.ArgumentParser) -> None:
 
 def objectives_from_args(args: argparse.Namespace) -> ObjectiveOptions:
     """The objectives and constraints the options give."""
-    return ObjectiveOptions(
-        objectives=args.objective,
-        constraints={q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()},
-        stiffness_cost=args.stiffness_cost,
-        power_fraction=args.power_fraction,
-        grip=args.grip,
-        shock_window=args.shock_window,
+    from fem_racket.studies.design.options import ObjectiveOptions
+
+    constraints = {q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()}
+    return options_from_args(
+        args, ObjectiveOptions, objectives=args.objective, constraints=constraints
     )

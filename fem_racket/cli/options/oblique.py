@@ -9,7 +9,7 @@ Without any of these options ``simulate`` runs today's head-on impact, unchanged
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.common import (
     build_model,
@@ -27,9 +27,11 @@ from fem_racket.impact.incidence import (
     DEFAULT_FRICTION,
     Incidence,
 )
-from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.outputs import provenance
 from fem_racket.validation import InputError
+
+if TYPE_CHECKING:
+    from fem_racket.impact.oblique.stroke import Stroke
 
 __all__ = [
     "add_oblique_options",
@@ -116,6 +118,8 @@ def incidence_from_args(args: argparse.Namespace) -> Incidence | None:
 
 def stroke_from_args(args: argparse.Namespace) -> Stroke | None:
     """The stroke ``--face-angle`` and ``--path-angle`` give (None without them)."""
+    from fem_racket.impact.oblique.stroke import Stroke
+
     given = {
         field: getattr(args, dest)
         for dest, (_, field, _) in STROKE_OPTIONS.items()

@@ -15,14 +15,12 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.cli.text import significant
-from fem_racket.io.racket_files import mesh_files
 from fem_racket.outputs.jsonable import json_ready
 
 __all__ = [
     "add_output_options",
     "add_overwrite_json",
     "core_rows",
-    "mesh_files",
     "offset_rows",
     "print_json",
     "print_result",

@@ -1,6 +1,6 @@
 """Run files on the command line: ``--config run.toml`` for any command.
 
-A command adopts run files with one call in its ``register``: ``add_config_option(p)`` (re-exported
+A command adopts run files with one call to ``add_config_option(p)`` (re-exported
 by :mod:`fem_racket.cli.common`). ``cli.main`` calls :func:`apply_config` once after parsing; it
 fills every option the command line did not give from the file. Precedence: command line > the
 command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
@@ -21,12 +21,12 @@ import argparse
 import difflib
 import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from fem_racket.io.config import RunConfig, load_config
-from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS
-from fem_racket.io.config_unused import CORE_ONLY, refuse_core_only, refuse_unused
 from fem_racket.validation import InputError, show
+
+if TYPE_CHECKING:
+    from fem_racket.io.config import RunConfig
 
 __all__ = [
     "add_config_option",
@@ -91,6 +91,8 @@ def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.Argume
 
 def file_options(sub: argparse.ArgumentParser) -> dict[str, argparse.Action]:
     """A command's options that its run-file table may set: dest -> action."""
+    from fem_racket.io.config_unused import CORE_ONLY
+
     own = getattr(sub, "config_own", frozenset())
     return {
         a.dest: a
@@ -183,6 +185,9 @@ def config_values(
 ) -> dict[str, Any]:
     """dest -> value from the run file for one command: core tables, then the command's table
     (``given``: the options the command line sets)."""
+    from fem_racket.io.config_keys import COMMAND_TABLES
+    from fem_racket.io.config_unused import refuse_core_only
+
     values = _core_values(sub, cfg, given)
     table = COMMAND_TABLES.get(command, command)
     options = file_options(sub)
@@ -213,6 +218,9 @@ def apply_config(
 
     Called once by :func:`fem_racket.cli.main` after parsing.
     """
+    from fem_racket.io.config import load_config
+    from fem_racket.io.config_unused import refuse_unused
+
     argv = sys.argv[1:] if argv is None else list(argv)
     sub = _subparser(parser, args.command)
     given = _explicit(sub, argv, args.command)
@@ -248,6 +256,8 @@ def apply_config(
 
 def _file_keys(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, str]:
     """dest -> the dotted run-file key that sets it (the command's table wins)."""
+    from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS
+
     keys = {CORE_KEYS[t][k].dest: f"{t}.{k}" for t, ks in cfg.values.items() for k in ks}
     table = COMMAND_TABLES.get(command, command)
     keys.update({k.replace("-", "_"): f"{table}.{k}" for k in cfg.table(table)})

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.options.impact import impact_kwargs, swing_from_args
 from fem_racket.cli.options.output import (
@@ -33,13 +33,13 @@ from fem_racket.cli.options.output import (
 )
 from fem_racket.cli.options.runfile import given_options
 from fem_racket.cli.text import significant
-from fem_racket.impact.simulate import simulate
-from fem_racket.impact.solvers import auto_method
-from fem_racket.impact.strung.impact import StrungImpact
 from fem_racket.outputs import provenance
 from fem_racket.strings.bed import EDGES, StringBed
 from fem_racket.strings.materials import STRINGS
 from fem_racket.strings.options import STRING_OPTIONS, bed_from_options
+
+if TYPE_CHECKING:
+    from fem_racket.impact.strung.impact import StrungImpact
 
 __all__ = [
     "STRING_DESTS",
@@ -123,6 +123,7 @@ def strings_from_args(args: argparse.Namespace) -> StringBed | None:
 
 
 def _histories(result: StrungImpact) -> dict[str, Any]:
+
     return {
         "time [s]": result.t,
         "ball deflection [m]": result.ball_deflection,
@@ -132,6 +133,7 @@ def _histories(result: StrungImpact) -> dict[str, Any]:
 
 
 def _write(args: argparse.Namespace, result: StrungImpact, summary: dict, files: list) -> None:
+
     meta = provenance(run_parameters(args))
     meta["used"] = summary
     write_result_files(args, meta, summary, files, _histories(result))
@@ -169,6 +171,9 @@ def strung_from_args(
     an ObliqueResult with an ``incidence``), through :func:`fem_racket.simulate` (which refuses,
     in one line, what the strung racket does not take: K_CB, zeta, a swing, the options of
     other solvers)."""
+    from fem_racket.impact.simulate import simulate
+    from fem_racket.impact.solvers import auto_method
+
     auto = getattr(args, "solver", "auto") == "auto"
     kwargs = impact_kwargs(args)
     if auto:  # on the bed a linear ball (a preset of the linear law too) is solved exactly,

@@ -11,15 +11,17 @@ are refused in one line, as is a hand.
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.options.oblique import oblique_rows, write_oblique
 from fem_racket.cli.options.output import print_result
 from fem_racket.cli.options.strings import strung_from_args
 from fem_racket.cli.text import significant
-from fem_racket.impact.incidence import Incidence
-from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError
+
+if TYPE_CHECKING:
+    from fem_racket.impact.incidence import Incidence
+    from fem_racket.strings.bed import StringBed
 
 __all__ = ["run_strung_oblique"]
 

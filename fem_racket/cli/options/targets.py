@@ -5,10 +5,9 @@ or a range ``--swing-weight 320:335``, likewise ``--balance``, ``--twist-weight`
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.frame.clock import PLACES
-from fem_racket.studies.customise import Target
 from fem_racket.studies.target_values import (
     RANKED,
     TARGETS,
@@ -17,6 +16,9 @@ from fem_racket.studies.target_values import (
     target_summary,
     targets_from,
 )
+
+if TYPE_CHECKING:
+    from fem_racket.studies.customise import Target
 
 __all__ = [
     "RANKED",
