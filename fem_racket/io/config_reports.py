@@ -62,7 +62,10 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     from fem_racket.io.setups import compare_play, read_setups
     from fem_racket.studies.compare import compare, differences
 
+    from fem_racket.io.config_unused import refuse_unused
+
     defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
+    refuse_unused(cfg, "compare", {*defaults, *COMPARE_OPTIONS})  # as the command refuses it
     core = _core(cfg, defaults)
     o = table_options(cfg, "compare", COMPARE_OPTIONS, core)
     if isinstance(rackets, (str, os.PathLike)):  # one set-up, not a list of them

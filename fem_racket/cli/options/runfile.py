@@ -41,6 +41,21 @@ __all__ = [
 _NOT_FROM_FILE = frozenset({"help", "config", "version"})
 
 
+class _OneFile(argparse.Action):
+    """Store ``--config``, refusing it given a second time (else the last file would be read
+    and the first silently dropped)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        first = vars(namespace).get(self.dest)
+        if first is not None:  # the default is None: a value here was given before
+            raise argparse.ArgumentError(
+                self,
+                f"{option_string} is given twice ({first!r} and {values!r}): a command reads "
+                f"one run file; give {option_string} once",
+            )
+        setattr(namespace, self.dest, values)
+
+
 def add_config_option(
     parser: argparse.ArgumentParser,
     *,
@@ -70,6 +85,7 @@ def add_config_option(
     """
     parser.add_argument(
         "--config",
+        action=_OneFile,
         metavar="TOML",
         default=None,
         help="run file (see `fem-racket config --example`); command-line options override it "
@@ -235,7 +251,8 @@ def apply_config(
     try:
         values = config_values(sub, args.command, cfg, given)
         dests = {a.dest for a in sub._actions} - getattr(sub, "config_private", frozenset())
-        refuse_unused(cfg, args.command, dests | ({"segments"} if "mesh" in dests else set()))
+        dests |= {"segments"} if "mesh" in dests else set()
+        refuse_unused(cfg, args.command, dests, given)
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
     frame_file = {"segments", "mesh"} & set(values)
@@ -246,12 +263,34 @@ def apply_config(
         raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
     keys = _file_keys(sub, args.command, cfg)
     defaults = {a.dest: a.default for a in sub._actions}
+    if "mesh" in given:  # the reverse: a mesh file on the command line, the frame in the file
+        _refuse_frame_under_mesh(cfg, keys, defaults, path)
     for dest, value in values.items():
         if dest not in given:
             setattr(args, dest, value)
             if dest not in defaults or value != defaults[dest]:  # a default changes nothing
                 args.file_options[dest] = keys.get(dest, dest)
     return args
+
+
+#: The file's frame keys a mesh file replaces (argparse dests): a mesh on the command line
+#: cannot be combined with them, as ``--ei1`` cannot with a mesh in the file.
+_UNDER_MESH = ("ei1", "ei2", "segments", "elements")
+
+
+def _refuse_frame_under_mesh(
+    cfg: RunConfig, keys: Mapping[str, str], defaults: Mapping[str, Any], path: str
+) -> None:
+    """Refuse the file's first frame key (:data:`_UNDER_MESH`) not at the command's default
+    (``frame.preset = "standard"``, ``elements = 20`` change nothing) with ``--mesh``."""
+    values = cfg.defaults()
+    for dest in _UNDER_MESH:
+        if dest in values and values[dest] != defaults.get(dest, ...):
+            key = keys[dest] + ("" if dest == "segments" else f" = {show(cfg.get(keys[dest]))}")
+            raise InputError(
+                f"--mesh cannot be combined with {key} from {path}: "
+                "the mesh file gives the frame's cells, EI and rhoA; remove one of them"
+            )
 
 
 def _file_keys(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, str]:
