@@ -5,8 +5,8 @@ by :mod:`fem_racket.cli.common`). ``cli.main`` calls :func:`apply_config` once a
 fills every option the command line did not give from the file. Precedence: command line > the
 command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
 :data:`fem_racket.io.config_keys.COMMAND_TABLES`) > the core tables (``[frame]``, ``[impact]``
-...) > built-in defaults. The command's table takes its long options as keys (``--ei1-values`` ->
-``ei1_values``), converted and checked as on the command line; options the core tables own
+...) > built-in defaults. The command's table takes its long options as keys
+(``--power-fraction`` -> ``power_fraction``), converted and checked as on the command line; options the core tables own
 (``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key, unless
 the command declares them its ``own`` (sweep's grids) or ``private`` (refine's list of element
 counts; the ``out`` of commands writing another kind of file than simulate's JSON), see
