@@ -65,7 +65,6 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     from fem_racket.io.config_unused import refuse_unused
 
     defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
-    refuse_unused(cfg, "compare", {*defaults, *COMPARE_OPTIONS})  # as the command refuses it
     core = _core(cfg, defaults)
     o = table_options(cfg, "compare", COMPARE_OPTIONS, core)
     if isinstance(rackets, (str, os.PathLike)):  # one set-up, not a list of them
@@ -76,6 +75,7 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     rackets = [str(r) for r in rackets]
     if len(rackets) < 2:
         raise InputError(f"rackets = {len(rackets)} given is not allowed: need at least 2")
+    refuse_unused(cfg, "compare", {*defaults, *COMPARE_OPTIONS})  # as the command refuses it
     out = o["out"] if out is None else out
     outs = [Path(p) for p in ([out] if isinstance(out, (str, Path)) else out or [])]
     for path in outs:

@@ -264,7 +264,7 @@ def apply_config(
     keys = _file_keys(sub, args.command, cfg)
     defaults = {a.dest: a.default for a in sub._actions}
     if "mesh" in given:  # the reverse: a mesh file on the command line, the frame in the file
-        _refuse_frame_under_mesh(cfg, keys, defaults, path)
+        _refuse_frame_under_mesh(cfg, keys, path)
     for dest, value in values.items():
         if dest not in given:
             setattr(args, dest, value)
@@ -278,14 +278,16 @@ def apply_config(
 _UNDER_MESH = ("ei1", "ei2", "segments", "elements")
 
 
-def _refuse_frame_under_mesh(
-    cfg: RunConfig, keys: Mapping[str, str], defaults: Mapping[str, Any], path: str
-) -> None:
-    """Refuse the file's first frame key (:data:`_UNDER_MESH`) not at the command's default
-    (``frame.preset = "standard"``, ``elements = 20`` change nothing) with ``--mesh``."""
-    values = cfg.defaults()
+def _refuse_frame_under_mesh(cfg: RunConfig, keys: Mapping[str, str], path: str) -> None:
+    """Refuse the file's first frame key (:data:`_UNDER_MESH`) with ``--mesh`` unless it
+    changes nothing (``frame.preset = "standard"``, EI1 146 N m^2, ``elements = 20``: the
+    paper's frame, :data:`~fem_racket.io.config_unused.NEUTRAL`)."""
+    from fem_racket.io.config_defaults import FRAME_ELEMENTS
+    from fem_racket.io.config_unused import NEUTRAL
+
+    values, neutral = cfg.defaults(), {**NEUTRAL, "elements": FRAME_ELEMENTS}
     for dest in _UNDER_MESH:
-        if dest in values and values[dest] != defaults.get(dest, ...):
+        if dest in values and values[dest] != neutral.get(dest, ...):
             key = keys[dest] + ("" if dest == "segments" else f" = {show(cfg.get(keys[dest]))}")
             raise InputError(
                 f"--mesh cannot be combined with {key} from {path}: "
