@@ -59,10 +59,9 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     list of them, else ``[compare] out``) the figure (.png, .svg, .pdf) and/or maps (.nc)
     written, as the command writes them."""
     from fem_racket.io.compare_files import check_compare_output, write_compare
+    from fem_racket.io.config_unused import refuse_unused
     from fem_racket.io.setups import compare_play, read_setups
     from fem_racket.studies.compare import compare, differences
-
-    from fem_racket.io.config_unused import refuse_unused
 
     defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
     core = _core(cfg, defaults)

@@ -129,7 +129,7 @@ def test_an_offset_without_offsets_is_refused_alike(cwd, capsys, command):
 def test_an_offset_with_offsets_spans_the_face(cwd, capsys):
     # the face map spans the offsets itself: the file's fixed offset is one of its axis's
     # values, on the command line and in [map] alike
-    Path("run.toml").write_text("[impact]\noffset_m = 0.02\n[map]\npositions = \"0.6:0.9:3\"\n")
+    Path("run.toml").write_text('[impact]\noffset_m = 0.02\n[map]\npositions = "0.6:0.9:3"\n')
     grid = ("--offsets", "-0.02:0.02:3", "--no-files", "--json")
     code, out, err = run(capsys, "map", "--config", "run.toml", *grid)
     assert code == 0, err

@@ -6,13 +6,15 @@ fills every option the command line did not give from the file. Precedence: comm
 command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
 :data:`fem_racket.io.config_keys.COMMAND_TABLES`) > the core tables (``[frame]``, ``[impact]``
 ...) > built-in defaults. The command's table takes its long options as keys
-(``--power-fraction`` -> ``power_fraction``), converted and checked as on the command line; options the core tables own
-(``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key, unless
-the command declares them its ``own`` (sweep's grids) or ``private`` (refine's list of element
-counts; the ``out`` of commands writing another kind of file than simulate's JSON), see
-:func:`add_config_option`. A command takes from the core tables only what it has options for; a
-command computing impacts refuses a key of the impact's tables it has no option for
-(:mod:`fem_racket.io.config_unused`).
+(``--power-fraction`` -> ``power_fraction``), converted and checked as on the command line;
+options the core tables own (``--speed`` is ``impact.speed_m_s``) are refused there with a
+pointer to the core key, unless the command declares them its ``own`` (sweep's grids) or
+``private`` (refine's list of element counts; the ``out`` of commands writing another kind of
+file than simulate's JSON), see :func:`add_config_option`. A command takes from the core tables
+only what it has options for; a command computing impacts refuses a key of the impact's tables
+or of ``[solver]`` it has no option for (:mod:`fem_racket.io.config_unused`). ``--config`` is
+given once, and a frame from both the file and the command line is refused
+(:mod:`fem_racket.cli.options.runfile_clash`).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.cli.options.runfile_clash import OneFile, refuse_frame_clash
 from fem_racket.validation import InputError, show
 
 if TYPE_CHECKING:
@@ -39,21 +42,6 @@ __all__ = [
 
 #: Options that never come from a run file.
 _NOT_FROM_FILE = frozenset({"help", "config", "version"})
-
-
-class _OneFile(argparse.Action):
-    """Store ``--config``, refusing it given a second time (else the last file would be read
-    and the first silently dropped)."""
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        first = vars(namespace).get(self.dest)
-        if first is not None:  # the default is None: a value here was given before
-            raise argparse.ArgumentError(
-                self,
-                f"{option_string} is given twice ({first!r} and {values!r}): a command reads "
-                f"one run file; give {option_string} once",
-            )
-        setattr(namespace, self.dest, values)
 
 
 def add_config_option(
@@ -85,7 +73,7 @@ def add_config_option(
     """
     parser.add_argument(
         "--config",
-        action=_OneFile,
+        action=OneFile,
         metavar="TOML",
         default=None,
         help="run file (see `fem-racket config --example`); command-line options override it "
@@ -255,44 +243,15 @@ def apply_config(
         refuse_unused(cfg, args.command, dests, given)
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
-    frame_file = {"segments", "mesh"} & set(values)
-    clash = {"ei1", "ei2"} & given
-    if frame_file and clash and "mesh" not in given:
-        opts = ", ".join(f"--{d}" for d in sorted(clash))
-        key = "frame." + next(iter(sorted(frame_file)))
-        raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
     keys = _file_keys(sub, args.command, cfg)
+    refuse_frame_clash(cfg, values, given, keys, path)
     defaults = {a.dest: a.default for a in sub._actions}
-    if "mesh" in given:  # the reverse: a mesh file on the command line, the frame in the file
-        _refuse_frame_under_mesh(cfg, keys, path)
     for dest, value in values.items():
         if dest not in given:
             setattr(args, dest, value)
             if dest not in defaults or value != defaults[dest]:  # a default changes nothing
                 args.file_options[dest] = keys.get(dest, dest)
     return args
-
-
-#: The file's frame keys a mesh file replaces (argparse dests): a mesh on the command line
-#: cannot be combined with them, as ``--ei1`` cannot with a mesh in the file.
-_UNDER_MESH = ("ei1", "ei2", "segments", "elements")
-
-
-def _refuse_frame_under_mesh(cfg: RunConfig, keys: Mapping[str, str], path: str) -> None:
-    """Refuse the file's first frame key (:data:`_UNDER_MESH`) with ``--mesh`` unless it
-    changes nothing (``frame.preset = "standard"``, EI1 146 N m^2, ``elements = 20``: the
-    paper's frame, :data:`~fem_racket.io.config_unused.NEUTRAL`)."""
-    from fem_racket.io.config_defaults import FRAME_ELEMENTS
-    from fem_racket.io.config_unused import NEUTRAL
-
-    values, neutral = cfg.defaults(), {**NEUTRAL, "elements": FRAME_ELEMENTS}
-    for dest in _UNDER_MESH:
-        if dest in values and values[dest] != neutral.get(dest, ...):
-            key = keys[dest] + ("" if dest == "segments" else f" = {show(cfg.get(keys[dest]))}")
-            raise InputError(
-                f"--mesh cannot be combined with {key} from {path}: "
-                "the mesh file gives the frame's cells, EI and rhoA; remove one of them"
-            )
 
 
 def _file_keys(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, str]:
