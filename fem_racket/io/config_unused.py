@@ -102,9 +102,9 @@ def refuse_unused(cfg: Any, command: str, dests: Iterable[str], given: Iterable[
                 option = SPANNED_WITH[dotted]
                 raise InputError(
                     f"{dotted} = {show(cfg.get(dotted))} is not allowed with fem-racket {command} "
-                    f"without --{option}: it computes on the long axis; span the face with "
-                    f"--{option} (or {option} in [{COMMAND_TABLES.get(command, command)}], at "
-                    "least 2 values) or remove the key"
+                    f"without --{option}: it stays on the long axis, so the key would be ignored; "
+                    f"span the face with --{option} (or {option} in "
+                    f"[{COMMAND_TABLES.get(command, command)}], at least 2 values) or remove it"
                 )
             if dest in dests or dotted in IMPACT_COMMANDS[command]:
                 continue

@@ -124,6 +124,9 @@ def test_an_offset_without_offsets_is_refused_alike(cwd, capsys, command):
             "--offsets", command, *operands, "--config", "run.toml")  # fmt: skip
     with pytest.raises(InputError, match=r"impact\.offset_m = 0\.02 .* without --offsets"):
         METHODS[command](load_config("run.toml"))
+    # a shared file: config --check notes it for the command and passes
+    code, out, _ = run(capsys, "config", "--check", "run.toml")
+    assert code == 0 and "[map] not for this command: impact.offset_m = 0.02" in out
 
 
 def test_an_offset_with_offsets_spans_the_face(cwd, capsys):
