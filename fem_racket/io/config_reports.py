@@ -4,9 +4,12 @@
 
 ``compare`` plays every set-up alike: from the core tables it takes ``frame.elements`` (of
 presets and segment frames), the ``[[frame.lead]]`` added to every one, the ball's speed and the
-swing; ``[compare]`` gives ``point``, ``positions``, ``offsets``, ``grip``, ``out``.
-``calibrate`` takes ``ball.mass_kg`` and ``output.out``; ``[calibrate]`` gives ``family``,
-``targets``, ``out``. Other keys of the core tables are skipped, as the commands skip them.
+swing; ``[compare]`` gives ``point``, ``positions``, ``offsets``, ``grip``, ``out``. It computes
+impacts: another key of the impact's tables or ``[solver]`` (``ball.mass_kg``: each set-up
+brings its own ball) is refused, as the command refuses it
+(:func:`fem_racket.io.config_unused.refuse_unused`). ``calibrate`` takes ``ball.mass_kg`` and
+``output.out``; ``[calibrate]`` gives ``family``, ``targets``, ``out``; it skips the other keys
+of the core tables, as the command skips them.
 Files are written only where the method is given ``out`` or the file names one, the same files
 the command writes, checked before the work.
 """
