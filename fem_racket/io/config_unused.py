@@ -14,6 +14,7 @@ from collections.abc import Iterable
 from typing import Any
 
 from fem_racket.frame.segments import PAPER_EI1
+from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.io.config_keys import CORE_DESTS, CORE_KEYS
 from fem_racket.validation import InputError, show
 
@@ -45,22 +46,21 @@ IMPACT_COMMANDS: dict[str, tuple[str, ...]] = {
     "sensitivity": ("impact.position_x_over_l", "impact.speed_m_s"),
 }
 #: Option (argparse dest) -> the value that changes nothing: the racket at rest, on the axis,
-#: the standard frame (``frame.preset = "standard"``).
-NEUTRAL = {"racket_speed": 0.0, "offset": 0.0, "ei1": PAPER_EI1}
+#: the standard frame (``frame.preset = "standard"``), the swing's default reference point. A
+#: swing's point other than that (or a pivot) without a swing is refused by the commands that
+#: have the option, as on their command line (``--reference`` needs ``--racket-speed``).
+NEUTRAL = {"racket_speed": 0.0, "offset": 0.0, "ei1": PAPER_EI1, "reference": DEFAULT_REFERENCE}
 #: Options (argparse dests) only the core tables set: a command's own table may set them only
 #: where the command spans them itself (sweep's axes, refine's element counts); it may always
 #: set its own ``out``/``overwrite``.
 CORE_ONLY = CORE_DESTS - {"out", "overwrite"}
-#: Options that matter only with a swing (``impact.racket_speed_m_s`` other than 0).
-SWING_ONLY = ("reference", "pivot")
 
 
 def refuse_unused(cfg: Any, command: str, dests: Iterable[str]) -> None:
     """Refuse the first key of :data:`IMPACT_TABLES` in ``cfg`` (a RunConfig) whose option
     (argparse dest) is not in ``dests`` when ``command`` computes impacts.
 
-    A key at its :data:`NEUTRAL` value, or a swing's point without a swing, changes nothing and
-    passes.
+    A key at its :data:`NEUTRAL` value changes nothing and passes.
 
     Raises
     ------
@@ -70,13 +70,12 @@ def refuse_unused(cfg: Any, command: str, dests: Iterable[str]) -> None:
     if command not in IMPACT_COMMANDS:
         return
     dests, values = set(dests), cfg.defaults()
-    swing = values.get("racket_speed", 0.0) != 0.0
     for table in IMPACT_TABLES:
         for key in cfg.values.get(table, {}):
             dotted, dest = f"{table}.{key}", CORE_KEYS[table][key].dest
             if dest in dests or dotted in IMPACT_COMMANDS[command]:
                 continue
-            if values.get(dest) == NEUTRAL.get(dest, ...) or (dest in SWING_ONLY and not swing):
+            if values.get(dest) == NEUTRAL.get(dest, ...):
                 continue  # changes nothing
             raise InputError(
                 f"{dotted} = {show(cfg.get(dotted))} is not allowed with fem-racket {command}: "

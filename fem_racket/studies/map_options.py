@@ -13,17 +13,70 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from typing import Any
 
+import numpy as np
+
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.validation import InputError, show
 
-__all__ = ["DEFAULT_POSITIONS", "DEFAULT_POWER_FRACTION", "MapImpact", "MapPlay", "MapSetup"]
+__all__ = [
+    "DEFAULT_POSITIONS",
+    "DEFAULT_POWER_FRACTION",
+    "MapImpact",
+    "MapPlay",
+    "MAX_MAP_POINTS",
+    "MapSetup",
+    "check_at_rest",
+    "check_map_points",
+]
 
 #: Default grid: the string face from its throat end to the tip, x/L (start, stop, points).
 DEFAULT_POSITIONS = (0.5, 1.0, 200)
 #: Default fraction of the maximum v_out bounding the power region.
 DEFAULT_POWER_FRACTION = 0.95
+#: Most impact points of one map (positions x offsets): the batched engine holds a few arrays of
+#: (points x modes) doubles, so 10^7 points need several GB (a 2.98 GiB array was refused by
+#: numpy at 10^7 positions). Real maps have 200 (the default) to a few 10^3 points (a 41 x 41
+#: face): 10^5 is well beyond them and about 100 MB an array.
+MAX_MAP_POINTS = 100_000
+
+
+def check_map_points(positions: int, offsets: int = 1) -> None:
+    """Refuse a map of ``positions`` x ``offsets`` points (counts, known before any array is
+    made) over :data:`MAX_MAP_POINTS`, naming the option that makes it too large."""
+    if positions * offsets <= MAX_MAP_POINTS:
+        return
+    if offsets == 1:
+        what = f"positions = {positions} values"
+    elif positions >= offsets:
+        what = f"positions = {positions} values with offsets = {offsets}"
+    else:
+        what = f"offsets = {offsets} values with positions = {positions}"
+    raise InputError(
+        f"{what} is not allowed: a map takes at most {MAX_MAP_POINTS} points (positions x "
+        f"offsets = {positions * offsets})"
+    )
+
+
+def check_at_rest(racket_speed: float, reference: float, pivot: float | None = None) -> None:
+    """Refuse a swing's ``reference`` point (x/L, other than the default; a sweep's values
+    too) or ``pivot`` [m]
+    (give None where it is used at rest: the maps' centre of percussion) without a swing
+    (``racket_speed`` 0): the racket at rest would drop them."""
+    if racket_speed != 0.0:
+        return
+    for name, value, given, unit in (
+        ("reference", reference, np.any(np.asarray(reference) != DEFAULT_REFERENCE), "x/L"),
+        ("pivot", pivot, pivot is not None, "m"),
+    ):
+        if given:
+            value = np.asarray(value).tolist()  # a number, or a sweep's values
+            raise InputError(
+                f"{name} = {show(value)} {unit} is not allowed without a swing: give "
+                "racket_speed (--racket-speed)"
+            )
 
 
 @dataclass(frozen=True)
@@ -72,6 +125,9 @@ class MapPlay:
     reference: float = DEFAULT_REFERENCE
     pivot: float | None = None
     positions: Any = None
+
+    def __post_init__(self) -> None:
+        check_at_rest(self.racket_speed, self.reference)  # the pivot sets the centre of percussion
 
     def swing(self, length: float) -> Swing:
         """The swing of a racket of length ``length`` [m]

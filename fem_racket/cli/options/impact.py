@@ -12,6 +12,7 @@ from fem_racket.cli.options.frame import add_frame_options
 from fem_racket.cli.options.hand import HAND_OPTIONS, add_hand_options, hand_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lists import add_options
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
@@ -35,6 +36,7 @@ __all__ = [
     "add_speed_option",
     "add_swing_options",
     "check_output_step",
+    "check_swing_given",
     "hand_from_args",
     "impact_kwargs",
     "swing_from_args",
@@ -120,15 +122,38 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     add_options(g, SWING, type=float)
 
 
+#: The units of the swing's point options, as the refusals name them.
+_SWING_UNITS = {"reference": "x/L", "pivot": "m"}
+
+
+def check_swing_given(args: argparse.Namespace, *, pivot_at_rest: bool = False) -> None:
+    """Refuse a swing's ``--reference`` (and ``--pivot`` unless ``pivot_at_rest``: the maps'
+    centre of percussion) given, on the command line or in a run file, without a swing
+    (``--racket-speed`` 0): the racket at rest would drop them."""
+    if args.racket_speed != 0.0:
+        return
+    given = given_options(args)
+    for name in ("reference", "pivot"):
+        if name in given and not (name == "pivot" and pivot_at_rest):
+            raise InputError(
+                f"{name} = {show(getattr(args, name))} {_SWING_UNITS[name]} is not allowed "
+                "without a swing: give --racket-speed"
+            )
+
+
 def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """The swing's options as the keywords ``racket_speed``, ``reference`` and ``pivot`` of the
     maps (:func:`fem_racket.studies.racket_map.racket_map`, ``face_map``) and of compare's
-    ``Play``, which build the swing themselves."""
+    ``Play``, which build the swing themselves; ``--reference`` without a swing refused
+    (``--pivot`` sets the maps' centre of percussion at rest too)."""
+    check_swing_given(args, pivot_at_rest=True)
     return {name: getattr(args, name) for name, *_ in SWING}
 
 
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
-    """The swing the options give for a racket of ``length`` [m]; None for a racket at rest."""
+    """The swing the options give for a racket of ``length`` [m]; None for a racket at rest
+    (``--reference`` or ``--pivot`` then refused: :func:`check_swing_given`)."""
+    check_swing_given(args)
     if args.racket_speed == 0.0:
         Swing.from_speed(0.0, length, reference=args.reference, pivot=args.pivot)  # checks
         return None
