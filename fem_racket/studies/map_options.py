@@ -16,10 +16,11 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError, check_range, show
 
 __all__ = [
     "DEFAULT_POSITIONS",
@@ -30,10 +31,14 @@ __all__ = [
     "MapSetup",
     "check_at_rest",
     "check_map_points",
+    "map_grid",
+    "map_model",
 ]
 
 #: Default grid: the string face from its throat end to the tip, x/L (start, stop, points).
 DEFAULT_POSITIONS = (0.5, 1.0, 200)
+#: Cells a Frame is meshed with (the paper's 20).
+DEFAULT_ELEMENTS = 20
 #: Default fraction of the maximum v_out bounding the power region.
 DEFAULT_POWER_FRACTION = 0.95
 #: Most impact points of one map (positions x offsets): the batched engine holds a few arrays of
@@ -141,6 +146,42 @@ class MapPlay:
         return {f.name: getattr(self, f.name) for f in fields(MapPlay)}
 
 
+def map_grid(positions: Any) -> np.ndarray:
+    """The map's impact points x/L: :data:`DEFAULT_POSITIONS` when None, else at least 3
+    increasing points in [0, 1] (at most :data:`MAX_MAP_POINTS`, counted first)."""
+    if positions is None:
+        start, stop, num = DEFAULT_POSITIONS
+        return np.linspace(start, stop, num)
+    check_map_points(int(np.size(positions)))
+    x = np.atleast_1d(np.asarray(positions, dtype=float))
+    if x.size < 3 or np.any(np.diff(x) <= 0.0):
+        raise InputError(
+            f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L"
+        )
+    for p in (x[0], x[-1]):
+        check_range("position", p, 0.0, 1.0, unit="x/L")
+    return x
+
+
+def map_model(frame: Any, elements: int | None) -> FrameModel:
+    """The model of ``frame`` (the standard racket when None), a Frame meshed with
+    ``elements`` cells (20 when None); ``elements`` refused with a model or a mesh of another
+    count (as :meth:`fem_racket.impact.problem.ImpactProblem.build` and ``sweep`` refuse it)."""
+    if isinstance(frame, FrameModel):
+        if elements is not None:
+            raise InputError(
+                f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
+                "already (give a Frame or a FrameMesh to mesh)"
+            )
+        return frame
+    if isinstance(frame, FrameMesh) and elements not in (None, frame.n_elements):
+        raise InputError(
+            f"elements = {show(elements)} is not allowed with a mesh: it has "
+            f"{frame.n_elements} elements"
+        )
+    return FrameModel.build(frame, DEFAULT_ELEMENTS if elements is None else elements)
+
+
 @dataclass(frozen=True)
 class MapSetup:
     """The racket's setting and how it is played over the map.
@@ -160,5 +201,5 @@ class MapSetup:
 
     name: str = "racket"
     play: MapPlay = field(default_factory=MapPlay)
-    elements: int = 20
+    elements: int = DEFAULT_ELEMENTS
     power_fraction: float = DEFAULT_POWER_FRACTION

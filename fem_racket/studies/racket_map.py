@@ -39,7 +39,8 @@ from fem_racket.studies.map_options import (
     DEFAULT_POWER_FRACTION,
     MapImpact,
     MapSetup,
-    check_map_points,
+    map_grid,
+    map_model,
 )
 from fem_racket.studies.options import take
 from fem_racket.studies.sweetspots import (
@@ -94,7 +95,13 @@ def _prepared(
                 f"kcb_factor = {show(kcb_factor)} is not allowed with contact law "
                 f"{show(law.name)}: it scales the linear law's K_CB only"
             )
-        linear = {k: options[k] for k in ("kcb", "zeta", "separation") if k in options}
+        for key in ("kcb", "zeta"):
+            if options.get(key) is not None:
+                raise InputError(
+                    f"{key} = {show(options[key])} is not allowed with contact law "
+                    f"{show(law.name)}: it sets the linear law's K_CB and zeta only"
+                )
+        linear = {k: options[k] for k in ("separation",) if k in options}
         if linear:  # refused as simulate refuses them (the problem's check of its law)
             ImpactProblem.build(model, position=float(x.flat[0]), law=law, **linear)
         batch = ProblemBatch((model,), x.ravel(), v.ravel(), ball_mass=o.ball_mass, law=law)
@@ -202,40 +209,6 @@ class RacketMap(MapView):
         return out
 
 
-def _grid(positions: Any) -> np.ndarray:
-    if positions is None:
-        start, stop, num = DEFAULT_POSITIONS
-        return np.linspace(start, stop, num)
-    check_map_points(int(np.size(positions)))
-    x = np.atleast_1d(np.asarray(positions, dtype=float))
-    if x.size < 3 or np.any(np.diff(x) <= 0.0):
-        raise InputError(
-            f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L"
-        )
-    for p in (x[0], x[-1]):
-        check_range("position", p, 0.0, 1.0, unit="x/L")
-    return x
-
-
-def _model(frame: Any, elements: int | None) -> FrameModel:
-    """The model of ``frame`` (the standard racket when None), a Frame meshed with
-    ``elements`` cells (20 when None); ``elements`` refused with a model or a mesh of another
-    count (as :meth:`fem_racket.impact.problem.ImpactProblem.build` and ``sweep`` refuse it)."""
-    if isinstance(frame, FrameModel):
-        if elements is not None:
-            raise InputError(
-                f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
-                "already (give a Frame or a FrameMesh to mesh)"
-            )
-        return frame
-    if isinstance(frame, FrameMesh) and elements not in (None, frame.n_elements):
-        raise InputError(
-            f"elements = {show(elements)} is not allowed with a mesh: it has "
-            f"{frame.n_elements} elements"
-        )
-    return FrameModel.build(frame, MapSetup.elements if elements is None else elements)
-
-
 def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: Any) -> RacketMap:
     """e_A and v_out along a racket, and its sweet spots.
 
@@ -281,8 +254,8 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
     check_range("power_fraction", power_fraction, 0.0, 1.0, include_low=False)
     if o.modes is not None:
         check_integer("modes", o.modes)
-    x = _grid(play.positions)
-    model = _model(frame, setup.elements if "elements" in options else None)
+    x = map_grid(play.positions)
+    model = map_model(frame, setup.elements if "elements" in options else None)
     length = model.mesh.length
     swing = play.swing(length)
     v_r = swing.speed_at(x * length)

@@ -25,7 +25,7 @@ from fem_racket.cli.common import (
     print_written,
     run_parameters,
 )
-from fem_racket.cli.options.impact import check_swing_given
+from fem_racket.cli.options.impact import check_swing_options
 from fem_racket.cli.options.lead import add_lead_option, leads_of
 from fem_racket.cli.options.output import add_overwrite_json
 
@@ -101,7 +101,7 @@ def run(args: argparse.Namespace) -> int:
     if len(args.rackets) < 2:
         work_begins()  # a run file cannot name the rackets: its checks end here
         raise InputError(f"rackets = {len(args.rackets)} given is not allowed: need at least 2")
-    check_swing_given(args)  # compare shows no centre of percussion: --pivot needs a swing
+    check_swing_options(args)  # compare shows no centre of percussion: --pivot needs a swing
     check_map_points(
         value_count(args.positions), 1 if args.offsets is None else value_count(args.offsets)
     )
