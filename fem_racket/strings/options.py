@@ -51,16 +51,16 @@ def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
             f"head area = {show(area)} cm^2 is not allowed with both --head-length and "
             "--head-width: give two of the three"
         )
+    low, high = HEAD_AXIS_RANGE
     if length is not None:
-        axes = float(length), a / check_positive("head length", length, "m")
+        axes = float(length), a / check_range("head length", length, low, high, unit="m")
     elif width is not None:
-        axes = a / check_positive("head width", width, "m"), float(width)
+        axes = a / check_range("head width", width, low, high, unit="m"), float(width)
     else:
         s = math.sqrt(a / (d.head_length_m * d.head_width_m))
         axes = d.head_length_m * s, d.head_width_m * s
-    low, high = HEAD_AXIS_RANGE
     for name, value in zip(("length", "width"), axes, strict=True):
-        if not low <= value <= high:
+        if not low <= value <= high:  # the axis the area sets
             raise InputError(
                 f"head area = {show(area)} cm^2 is not allowed: it makes the head {value:.4g} m "
                 f"{'long' if name == 'length' else 'wide'}, outside [{low:g}, {high:g}] m"
