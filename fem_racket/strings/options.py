@@ -70,7 +70,7 @@ def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
 
 def _tension(value: Any) -> float:
     """``--string-tension`` [N], refused beyond :data:`MAX_STRING_TENSION_N`."""
-    return check_range("string_tension", value, 1.0, MAX_STRING_TENSION_N, unit="N")
+    return check_range("string tension", value, 1.0, MAX_STRING_TENSION_N, unit="N")
 
 
 def bed_from_options(values: dict[str, Any]) -> StringBed | None:

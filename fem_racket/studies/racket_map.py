@@ -88,6 +88,8 @@ def _prepared(
     x = np.atleast_1d(np.asarray(positions, dtype=float))
     v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
     solver = {k: options[k] for k in ("tolerance", "modes") if k in options}
+    if law is not None and solver.get("modes", 0) is None:  # None: every mode, as the general
+        del solver["modes"]  # integrator keeps them anyway
     solver.setdefault("tolerance", o.tolerance)
     if law is not None:  # the linear law's options, if given, refused by the batch
         if kcb_factor != 1.0:

@@ -10,7 +10,7 @@ from fem_racket.validation import InputError
 
 
 def test_tension_beyond_any_strung_racket_is_refused():
-    with pytest.raises(InputError, match=r"^string_tension = 1000000000.0 N .* \[1, 2000\]$"):
+    with pytest.raises(InputError, match=r"^string tension = 1000000000.0 N .* \[1, 2000\]$"):
         bed_from_options({"string_tension": 1e9})
     bed = bed_from_options({"string_tension": MAX_STRING_TENSION_N})
     assert bed.tension_n == MAX_STRING_TENSION_N

@@ -26,7 +26,13 @@ from fem_racket.cli.options.output import add_overwrite_json, print_written
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
 from fem_racket.outputs import check_output_path
-from fem_racket.validation import InputError, check_integer, check_range, work_begins
+from fem_racket.validation import (
+    InputError,
+    check_integer,
+    check_positive,
+    check_range,
+    work_begins,
+)
 
 #: Where the mesh goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "racket.vtu"
@@ -91,6 +97,7 @@ def run(args: argparse.Namespace) -> int:
             raise InputError(f"{name} is required: give {flag} (or {name} in the run file's [fit])")
     for name, high in (("f1", MAX_F1_HZ), ("torsion_frequency", MAX_TORSION_HZ)):
         if getattr(args, name) is not None:
+            check_positive(name, getattr(args, name), "Hz")
             check_range(name, getattr(args, name), 0.0, high, unit="Hz", include_low=False)
     out = Path(args.out)
     files = mesh_files(out)

@@ -194,9 +194,9 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("no_files = True is not allowed with --out: give one of them")
     default = not (args.out or args.no_files or args.json)
     outs = [Path(p) for p in (args.out or [])] or ([DEFAULT_OUTPUT] if default else [])
-    if args.overwrite and not outs:
+    if not outs and "overwrite" in getattr(args, "explicit_options", ()):
         raise InputError(
-            "overwrite = True is not allowed without files: --no-files or --json without --out "
+            "--overwrite is not allowed without files: --no-files or --json without --out "
             "writes none"
         )
     if args.mesh and not args.preset and "elements" in given_options(args):

@@ -54,7 +54,7 @@ from fem_racket.outputs import (
     check_targets,
     sidecar_path,
 )
-from fem_racket.validation import InputError, show_path
+from fem_racket.validation import InputError, show, show_path
 
 if TYPE_CHECKING:
     from fem_racket.frame.hand import Hand
@@ -231,11 +231,14 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
 
 def _check_unwritten(args: argparse.Namespace, dest: str) -> None:
     """Refuse ``--output-step`` (the head-on and held impacts compute histories only to write
-    them) or ``--overwrite`` given without ``--out``: nothing would use it."""
-    if not args.out and dest in given_options(args):
+    them) or ``--overwrite`` given on the command line without ``--out``: nothing would use it
+    (a run file's ``[output]`` and ``[simulate]`` keys serve other commands and the Python
+    method too)."""
+    if not args.out and dest in getattr(args, "explicit_options", ()):
+        value = "" if dest == "overwrite" else f" {show(getattr(args, dest))}"
         raise InputError(
-            f"{option_name(args, dest)} is not allowed without --out: it sets the histories or "
-            "files written, and none are"
+            f"--{dest.replace('_', '-')}{value} is not allowed without --out: it sets the "
+            "histories or files written, and none are"
         )
 
 

@@ -140,7 +140,7 @@ def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False
     check_range("racket_speed", v_r, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
     closing = getattr(args, "speed", 0.0) + v_r
     linear = getattr(args, "kcb", None) is None and getattr(args, "law", None) in (None, "linear")
-    if linear and isinstance(closing, float) and closing > KCB_SPEED_RANGE[1]:
+    if v_r != 0.0 and linear and math.isfinite(closing) and closing > KCB_SPEED_RANGE[1]:
         raise InputError(
             f"racket_speed = {show(v_r)} m/s is not allowed with speed = {show(args.speed)} "
             f"m/s: the closing speed {closing:g} m/s is above the {KCB_SPEED_RANGE[1]:g} m/s "
