@@ -55,7 +55,8 @@ def test_sensitivity_in_python_is_the_command(capsys, tmp_path):
 
     path = tmp_path / "run.toml"
     text = DESIGN.format(table="sensitivity", extra="designs = 16\nseed = 3")
-    path.write_text(text.replace("link_ei = true\n", ""))
+    # no mass_range: a sensitivity analysis applies no constraint (refused, it was ignored)
+    path.write_text(text.replace("link_ei = true\n", "").replace('mass_range = "start"\n', ""))
     s = load_config(path).sensitivity()
     cli = run_json(capsys, "sensitivity", "--config", path)
     assert json.loads(json.dumps(sobol_json(s))) == cli
