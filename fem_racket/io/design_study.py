@@ -25,7 +25,7 @@ from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.sensitivity import SobolIndices, sobol_indices
 from fem_racket.studies.design.solvers import optimize
-from fem_racket.studies.design.unused import METHODS
+from fem_racket.studies.design.unused import METHODS, refuse_unused_sensitivity
 from fem_racket.validation import InputError, check_choice, work_begins
 
 __all__ = [
@@ -183,6 +183,7 @@ def run_sensitivity(run: SensitivityRun) -> SobolIndices:
     check_choice(
         "output", problem.objectives[0] if run.output is None else run.output, tuple(names)
     )
+    refuse_unused_sensitivity(problem, problem.objectives[0] if run.output is None else run.output)
     check_sobol_size(problem, run.designs)
     if out is not None:
         check_targets([Path(out), Path(str(out) + ".json")], overwrite=files.overwrite)
