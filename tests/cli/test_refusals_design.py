@@ -42,6 +42,9 @@ REFUSED = {
     (*OPT, "--pivot", "0.2"): ("pivot = 0.2", "at rest"),
     (*OPT, "--grip", "firm"): ("grip = 'firm'", "objectives ['cor']", "handle_shock"),
     (*OPT, "--shock-window", "0.01"): ("shock_window = 0.01", "objectives ['cor']"),
+    # where the designs run
+    (*OPT, "--workers", "2"): ("workers = 2", "backend 'serial'"),
+    (*SENS, "--scheduler", "tcp://localhost:8786"): ("scheduler = 'tcp://localhost:8786'",),
     # sensitivity: the same table, and what an analysis of one output does not use
     (*SENS, "--grip", "firm"): ("grip = 'firm'",),
     (*SENS, "--seed", "3", "--zone-sigma", "0.1"): ("zone_sigma = 0.1",),
