@@ -7,15 +7,15 @@ notes and digits in :mod:`fem_racket.cli.text`, the parser in :mod:`fem_racket.c
 Conventions every command follows (so a new command plugs in with a few lines):
 
 - its module has ``add_arguments(parser)`` and ``run(args) -> int``, and one line of
-  :data:`fem_racket.cli.COMMANDS` (:class:`fem_racket.cli.parser.Command`) names it, with its
-  summary; with ``described=True`` the second paragraph of the module's docstring is its
-  ``--help`` description, one text for readers of the code and of ``--help``.
+  :data:`fem_racket.cli.commands.COMMANDS` (:class:`fem_racket.cli.parser.Command`) names it,
+  with its summary; with ``described=True`` the second paragraph of the module's docstring is
+  its ``--help`` description, one text for readers of the code and of ``--help``.
 - ``add_config_option(p)`` gives it ``--config run.toml`` (a TOML run file, see
   :mod:`fem_racket.io.config`); :func:`apply_config`, called once by ``cli.main``, fills the options
   the command line did not give from the file. Precedence: command line > the command's own
   table (``[sweep]``, ``[vtk]`` ...) > the core tables (``[frame]``, ``[impact]`` ...) > built-in
-  defaults. The command's table takes its long options as keys (``--ei1-values`` ->
-  ``ei1_values``), checked and converted as on the command line.
+  defaults. The command's table takes its long options as keys (``--power-fraction`` ->
+  ``power_fraction``), checked and converted as on the command line.
 - ``add_output_options(p, default)`` gives it ``--out FILE`` and ``--overwrite``; write through
   :func:`fem_racket.outputs.atomic_output` (check the path with ``check_output_path`` *before* the
   work) and put :func:`run_parameters` into the file's :func:`fem_racket.outputs.provenance`.

@@ -153,6 +153,13 @@ def test_closest(cfg, capsys):
 def test_compare_writes_the_commands_files(cfg, capsys):
     from fem_racket.studies.compare import differences
 
+    # compare has no option for the ball, the solver or a hand: it refuses them, as the command
+    # does (tests/cli/test_refusals_runfile.py), so they leave its file
+    text = RUN
+    for table in ("[ball]\nmass_kg = 0.058\n", "[solver]\nmodes = 30\n", '[hand]\ngrip = "firm"\n'):
+        text = text.replace(table, "")
+    Path("run.toml").write_text(text)
+    cfg = load_config("run.toml")
     cli = run_json(capsys, "compare", "standard", "rigid+3/9:6", "--config", "run.toml",
                    "--out", "cli.nc")  # fmt: skip
     reports = cfg.compare(["standard", "rigid+3/9:6"], out="py.nc")
