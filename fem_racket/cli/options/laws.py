@@ -11,7 +11,13 @@ import argparse
 from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.runfile import option_name
-from fem_racket.contact.presets import LAW_NAMES, check_linear_options, get_law, law_parameters
+from fem_racket.contact.presets import (
+    FAMILIES,
+    LAW_NAMES,
+    check_linear_options,
+    get_law,
+    law_parameters,
+)
 from fem_racket.contact.registry import family_parameters
 from fem_racket.validation import InputError, show
 
@@ -49,7 +55,8 @@ def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> 
 def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
     """The law the options describe (None: the paper's linear law from --kcb and --zeta);
     --kcb or --zeta with another law is refused (that law would ignore them), named as the user
-    gave it (a run file's ``contact.kcb_n_m``, ``zeta`` or ``clamped_cor`` by its key)."""
+    gave it (a run file's ``contact.kcb_n_m``, ``zeta`` or ``clamped_cor`` by its key); likewise
+    a run file's law parameter the law does not take (``contact.hc_alpha_s_m`` with a preset)."""
     name = getattr(args, "law", "linear")
     kcb, zeta = getattr(args, "kcb", None), getattr(args, "zeta", None)
     if name != "linear":
@@ -60,4 +67,15 @@ def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
                     "it sets the paper's linear law's K_CB and zeta only"
                 )
     check_linear_options(name, kcb=kcb, zeta=zeta)
-    return get_law(name, **law_parameters(vars(args)))
+    params = law_parameters(vars(args))
+    family = FAMILIES.get(name)
+    takes = sorted(p.name for p in family.declared) if family is not None else []
+    why = f"it takes {takes}" if takes else "it takes no law parameter (a preset)"
+    if name == "linear":
+        why = "it takes no law parameter (the paper's law is built from kcb and zeta)"
+    for dest in getattr(args, "file_options", {}):
+        if params.get(dest) is not None and dest not in takes:  # named by its run-file key
+            raise InputError(
+                f"{option_name(args, dest)} is not allowed with contact law {show(name)}: {why}"
+            )
+    return get_law(name, **params)
