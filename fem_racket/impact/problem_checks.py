@@ -8,6 +8,7 @@ from here."""
 
 from __future__ import annotations
 
+from dataclasses import fields as dataclass_fields
 from typing import Any
 
 import numpy as np
@@ -23,6 +24,7 @@ from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, show
 
 __all__ = [
+    "check_build_options",
     "bed_coordinates",
     "check_held",
     "check_law",
@@ -30,6 +32,19 @@ __all__ = [
     "check_strings",
     "check_structure",
 ]
+
+
+def check_build_options(options: dict[str, Any], problem_class: type) -> None:
+    """Refuse an option of ``ImpactProblem.build`` that is none of its own nor a field of
+    ``problem_class`` after structure, impact, ball and law (which ``build`` makes)."""
+    own = ["elements", "position", "speed", "ball_mass", "law", "hand", "shock_window"]
+    fields = [f.name for f in dataclass_fields(problem_class)][4:]
+    for key in options:
+        if key not in fields:
+            raise InputError(
+                f"{key} is not an option of ImpactProblem.build: must be one of "
+                f"{', '.join(own + fields)}"
+            )
 
 
 def check_law(problem: Any) -> None:
