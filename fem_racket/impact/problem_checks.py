@@ -31,6 +31,7 @@ __all__ = [
     "check_offset",
     "check_strings",
     "check_structure",
+    "refuse_separation",
 ]
 
 
@@ -59,11 +60,15 @@ def check_law(problem: Any) -> None:
             "ball's own law, fitted in series with the bed (give strings, e.g. "
             "--string-tension)"
         )
-    if problem.separation is not None:
+    refuse_separation(problem.law, problem.separation)
+
+
+def refuse_separation(law: ContactLaw, separation: str | None) -> None:
+    """Refuse a ``separation`` (any but None) under ``law``, another law than the paper's."""
+    if separation is not None:
         raise InputError(
-            f"separation = {show(problem.separation)} is not allowed with contact law "
-            f"{show(problem.law.name)}: the law ends contact by its own condition "
-            f"({problem.law.end})"
+            f"separation = {show(separation)} is not allowed with contact law "
+            f"{show(law.name)}: the law ends contact by its own condition ({law.end})"
         )
 
 

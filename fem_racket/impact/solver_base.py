@@ -141,6 +141,14 @@ class Solver:
         work_begins()
         return self._many(problems)
 
+    def check_batch(self, batch: ProblemBatch) -> None:
+        """Refuse, in one line and before any work, what :meth:`solve_many` would refuse of
+        ``batch``: the batch itself, then its first case as a problem (:meth:`check`; the
+        cases of a batch share its law, its solver options and its kind of structure)."""
+        self._check_batch(batch)
+        if len(batch):
+            self.check(batch.problem(0))
+
     def _many(self, problems: list[ImpactProblem]) -> list:
         """Solve checked problems; on clamped heads all in one call per head."""
         if problems and self.clamps and all(p.clamped for p in problems):
