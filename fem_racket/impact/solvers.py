@@ -6,8 +6,9 @@ do, ``solve(problem)`` returns the outcome of one :class:`~fem_racket.impact.pro
 and ``solve_many(problems)`` of several. The methods:
 
 ===========  ==============================================================================
-``exact``    the paper's linear law: closed-form eigen-solution in modal coordinates, or the
-             batched engine when no histories are asked (:mod:`fem_racket.impact.exact`)
+``exact``    the paper's linear law: the batched engine's roots, with the modes a COR
+             ``tolerance`` needs; with histories and no tolerance given, every mode by the
+             closed-form eigen-solution in modal coordinates (:mod:`fem_racket.impact.exact`)
 ``general``  any contact law and any initial racket motion: the general integrator on the
              impact-point receptance (:mod:`fem_racket.impact.general`)
 ``cvode``    SUNDIALS CVODE BDF on the coupled ODE, for any law (:mod:`fem_racket.impact.ode`)
