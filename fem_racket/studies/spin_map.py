@@ -161,8 +161,9 @@ def spin_map(
     if unknown:
         raise InputError(f"options = {sorted(unknown)} is not allowed: unknown spin-map options")
     law = opts.pop("law", None)
-    solver_options = {
-        "tolerance": opts.pop("tolerance", DEFAULT_TOLERANCE),
+    tolerance = opts.pop("tolerance", DEFAULT_TOLERANCE)  # the default asks for nothing: the
+    solver_options = {  # normal impacts' histories then keep every mode (as simulate's)
+        **({} if tolerance == DEFAULT_TOLERANCE else {"tolerance": tolerance}),
         **({} if law is not None else {"modes": opts.pop("modes", DEFAULT_MODES)}),
     }
     speed = check_positive("speed", speed, "m/s")
