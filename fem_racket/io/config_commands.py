@@ -35,7 +35,9 @@ class CommandMethods:
     def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
         """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
         ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_sweep.sweep_file`.
-        ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`)."""
+        ``backend``/``workers``: where the cases run (as :func:`fem_racket.sweep`), over
+        ``[sweep]``'s ``serial``, ``workers`` and ``scheduler`` (taken as the command takes
+        them)."""
         from fem_racket.io.config_sweep import sweep_file
 
         return sweep_file(self, backend=backend, workers=workers)
@@ -85,16 +87,21 @@ class CommandMethods:
         return sensitivity_file(self, out)
 
     def modes(self) -> Any:
-        """The free-free modes ``fem-racket modes --config FILE`` reports.
+        """The free-free modal analysis ``fem-racket modes --config FILE`` reports.
 
         Returns
         -------
-        FreeModes
-            Of the file's frame (``[frame]`` with its lead), ``[modes] count`` flexible ones
-            (4 by default): frequencies [Hz], shapes, mass properties (mass [kg], centre of
-            gravity [m], inertia [kg m^2]). See :func:`fem_racket.io.config_racket.modes_file`.
+        RacketModes
+            Of the file's frame (``[frame]`` with its lead), ``[modes] count`` flexible modes
+            (4 by default): ``bending`` (a FreeModes: frequencies [Hz], shapes, mass
+            properties: mass [kg], centre of gravity [m], inertia [kg m^2]), ``nodes`` of each
+            mode [x/L], the swing weight and twistweight [kg m^2] (``catalogue``) and, on a
+            frame with torsion data, ``torsion`` (a TorsionModes: frequencies [Hz], polar
+            moment [kg m^2]; else None). ``.frequencies`` and ``.props`` are the bending
+            ones; ``.summary()`` is the command's ``--json``. See
+            :func:`fem_racket.io.config_modes.modes_file`.
         """
-        from fem_racket.io.config_racket import modes_file
+        from fem_racket.io.config_modes import modes_file
 
         return modes_file(self)
 
@@ -106,12 +113,18 @@ class CommandMethods:
         ----------
         out : path, optional
             Mesh file to write, with its sidecar ``out.json``, as the command writes them
-            (else ``[fit] out``; neither: nothing written).
+            (else ``[fit] out``; neither: nothing written). Both or neither; existing files are
+            refused as the command refuses them: replaced with ``overwrite`` in the file, or
+            when ``out`` is the command's default ``output/racket.vtu`` and holds an earlier
+            fit (see :mod:`fem_racket.io.config_rerun`).
 
         Returns
         -------
-        Frame
-            Three segments (:func:`fem_racket.frame.specs.fit_racket`). See
+        FittedRacket
+            Everything the command reports (:class:`fem_racket.io.racket_files.FittedRacket`):
+            the ``frame`` (three segments, :func:`fem_racket.frame.specs.fit_racket`; also
+            ``.segments``), its ``mesh``, the ``target`` and ``fitted`` catalogue numbers;
+            ``.summary()`` is the command's ``--json`` less the mesh's path. See
             :func:`fem_racket.io.config_racket.fit_file`.
         """
         from fem_racket.io.config_racket import fit_file
@@ -127,13 +140,18 @@ class CommandMethods:
         out : path, optional
             The customised racket's mesh file (sidecar ``out.json``; the maps before and after
             to ``[customise] maps``, else the command's), as the command writes them (else
-            ``[customise] out``; neither: nothing written, no maps computed).
+            ``[customise] out``; neither: nothing written).
 
         Returns
         -------
-        Customisation
-            Of :func:`fem_racket.studies.customise.customise`: placement [kg], the racket
-            before and after. See :func:`fem_racket.io.config_racket.customise_file`.
+        CustomisedRacket
+            Everything the command reports (:class:`fem_racket.io.racket_files.CustomisedRacket`):
+            ``customisation`` (of :func:`fem_racket.studies.customise.customise`: placement
+            [kg], the racket before and after; also ``.added``, ``.mesh``, ``.before``,
+            ``.after``, ``.total``), the ``maps`` before and after (sweet spots [x/L]) at the
+            file's ball speed [m/s] and swing, the ``targets``; ``.summary()`` is the
+            command's ``--json`` less the paths written. See
+            :func:`fem_racket.io.config_racket.customise_file`.
         """
         from fem_racket.io.config_racket import customise_file
 

@@ -17,6 +17,7 @@ from dataclasses import fields
 from typing import Any
 
 from fem_racket.io.config_keys import reject_unknown
+from fem_racket.io.config_tables import flag, integer, number, text
 from fem_racket.validation import InputError, show
 
 __all__ = ["CONSTRAINTS", "optimize_file", "sensitivity_file"]
@@ -35,6 +36,17 @@ _RUN = ("backend", "workers", "scheduler", "seed", "quiet", "json", "out", "over
 #: The search's keys (optimize) and the analysis's (sensitivity), with their defaults.
 _SEARCH = {"method": "SLSQP", "maxiter": 100, "popsize": 10, "pop_size": 50, "generations": 100}
 _SOBOL = {"output": None, "designs": 10_000}
+#: The tables' keys of one number, flag or text, converted as the commands' parsers convert
+#: them (choices, lists and ranges are checked where they are read).
+_TYPED: dict[str, Any] = {
+    **dict.fromkeys(("designs", "generations", "maxiter", "pop_size", "popsize", "seed",
+                     "workers", "zone_points"), integer),
+    **dict.fromkeys(("mass_start", "power_fraction", "shock_window", "stiffness_cost",
+                     "swing_exponent", "zone_sigma"), number),
+    **dict.fromkeys(("json", "link_ei", "overwrite", "quiet", "restart"), flag),
+    "out": text,
+    "scheduler": text,
+}  # fmt: skip
 #: Default output of optimize (the command's; sensitivity writes nothing by default).
 DEFAULT_DESIGN_OUT = os.path.join("output", "design")
 RunConfig = Any
@@ -98,6 +110,7 @@ def _problem(cfg: RunConfig, command: str, table: str, rest: dict[str, Any]) -> 
     own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
     allowed = [k for k in names if k not in _CORE] + [*goals, *CONSTRAINTS, *rest, *_RUN]
     reject_unknown(own, allowed, table)
+    own = {k: _TYPED[k](f"{table}.{k}", v) if k in _TYPED else v for k, v in own.items()}
     d = cfg.defaults()
     values = {**{k: d[k] for k in _CORE if k in d}, **own}
     goal = {k: own[k] for k in goals[1:] if k in own}
@@ -127,10 +140,17 @@ def _execution(own: dict[str, Any]) -> Any:
     return ExecutionOptions(**{k: own.get(k) for k in keys}, progress=False)
 
 
+def _overwrite(cfg: RunConfig, own: dict[str, Any]) -> bool:
+    """``overwrite`` of the command's table, else ``[output] overwrite``, as the commands."""
+    return bool(own.get("overwrite", cfg.defaults().get("overwrite", False)))
+
+
 def optimize_file(cfg: RunConfig, out: Any = None, *, restart: bool = False) -> Any:
     """The optimisation ``fem-racket optimize --config`` runs on ``cfg`` (its files written
-    into ``out``, else ``[design] out``, else ``output/design``, as the command); the
+    into ``out``, else ``[design] out``, else ``output/design``, as the command: an existing
+    folder replaced with ``overwrite``, or at the default when it holds an earlier study); the
     :func:`~fem_racket.io.design_study.run_optimization` result."""
+    from fem_racket.io.config_rerun import rerun_overwrite
     from fem_racket.io.design_study import OptimizationRun, OutputOptions, run_optimization
     from fem_racket.studies.design.options import SearchOptions
 
@@ -140,7 +160,9 @@ def optimize_file(cfg: RunConfig, out: Any = None, *, restart: bool = False) -> 
         from fem_racket.extras import require
 
         require("pymoo", "RunConfig.optimize with method nsga2")
-    files = OutputOptions(out or own.get("out") or DEFAULT_DESIGN_OUT, own.get("overwrite", False))
+    folder = out or own.get("out") or DEFAULT_DESIGN_OUT
+    default = os.fspath(folder) == DEFAULT_DESIGN_OUT  # the command's own study is replaced
+    files = OutputOptions(folder, rerun_overwrite(_overwrite(cfg, own), default, [folder]))
     search = SearchOptions(**search, seed=own.get("seed", 1))
     return run_optimization(OptimizationRun(problem, search, _execution(own), files, restart))
 
@@ -153,7 +175,7 @@ def sensitivity_file(cfg: RunConfig, out: Any = None) -> Any:
 
     require("SALib", "RunConfig.sensitivity")
     problem, sobol, own = _problem(cfg, "sensitivity", "sensitivity", dict(_SOBOL))
-    files = OutputOptions(out or own.get("out"), own.get("overwrite", False))
+    files = OutputOptions(out or own.get("out"), _overwrite(cfg, own))
     run = SensitivityRun(problem, sobol["output"], sobol["designs"], own.get("seed", 1),
                          _execution(own), files)  # fmt: skip
     return run_sensitivity(run)

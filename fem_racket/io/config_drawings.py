@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.io.config_keys import reject_unknown
+from fem_racket.io.config_run_keys import run_keys
 from fem_racket.validation import InputError, show
 
 __all__ = ["ANIMATE_DEFAULTS", "VTK_DEFAULTS", "animate_file", "vtk_file"]
@@ -68,7 +69,9 @@ def _drawing(cfg: RunConfig, table: str, defaults: dict[str, Any], refused: tupl
         )
     own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
     reject_unknown(own, [*defaults, *_PRINT_KEYS], table)
-    out = {**defaults, **{k: v for k, v in own.items() if k not in _PRINT_KEYS}}
+    own.update(run_keys(table, own))  # out, overwrite, quiet: checked as the command
+    core = {k: v for k, v in cfg.defaults().items() if k == "overwrite"}  # [output] overwrite
+    out = {**defaults, **core, **{k: v for k, v in own.items() if k not in _PRINT_KEYS}}
     if isinstance(out.get("size"), str):
         w, h = out["size"].lower().split("x")
         out["size"] = (int(w), int(h))
@@ -89,14 +92,28 @@ def _strung(cfg: RunConfig, table: str, o: dict[str, Any]) -> bool:
     return True
 
 
+def _replace_own(path: Path, o: dict[str, Any], default: Path, files: list[Path]) -> bool:
+    """The overwrite of the writes to ``path``, as the commands': ``overwrite`` from the file,
+    or their own earlier output at their ``default`` (:mod:`fem_racket.io.config_rerun`)."""
+    from fem_racket.io.config_rerun import rerun_overwrite
+
+    return rerun_overwrite(bool(o["overwrite"]), path == default, files)
+
+
 def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) -> Path:
     """Write the VTK series ``export-vtk --config`` writes (into ``out``, else the file's
-    ``[vtk] out``); return the ``.pvd`` path."""
+    ``[vtk] out``, else ``output/impact_vtk``); return the ``.pvd`` path. An existing folder is
+    refused before the impact is computed, as the command refuses it: replaced with
+    ``overwrite`` in the file, or at the default when it holds an earlier series."""
     from fem_racket.io.config_run import run_file
-    from fem_racket.io.vtk import write_vtk_series
+    from fem_racket.io.vtk import PROVENANCE_NAME, write_vtk_series
+    from fem_racket.outputs import check_output_folder
 
     o = _drawing(cfg, "vtk", VTK_DEFAULTS, ("hand", "oblique"))
     strung = _strung(cfg, "vtk", o)
+    out = Path(out or o["out"])
+    o["overwrite"] = _replace_own(out, o, VTK_DEFAULTS["out"], [out])
+    check_output_folder(out, overwrite=o["overwrite"], marker=PROVENANCE_NAME)
     model, result = run_file(cfg, histories=True, table="vtk")
     if strung:
         from fem_racket.io.strung_vtk import write_strung_vtk
@@ -104,7 +121,7 @@ def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) ->
         return write_strung_vtk(
             result,
             model,
-            out or o["out"],
+            out,
             frames=STRUNG_FRAMES if o["frames"] is None else o["frames"],
             scale=o["scale"],
             overwrite=o["overwrite"],
@@ -112,7 +129,7 @@ def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) ->
         )
     return write_vtk_series(
         result,
-        out or o["out"],
+        out,
         subdivide=o["subdivide"],
         frames=o["frames"],
         scale=o["scale"],
@@ -125,16 +142,24 @@ def vtk_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) ->
 
 def animate_file(cfg: RunConfig, out: Any = None, parameters: dict | None = None) -> Path:
     """Render the animation ``animate --config`` renders (to ``out``, else the file's
-    ``[animate] out``; with a string bed, the bed beside the frame); return its path."""
-    from fem_racket.io.animate import AnimationOptions, render_animation
+    ``[animate] out``, else ``output/impact.gif``; with a string bed, the bed beside the
+    frame); return its path. Existing files are refused before the impact is computed, as the
+    command refuses them: replaced with ``overwrite`` in the file, or at the default when they
+    are an earlier animation."""
+    from fem_racket.io.animate import AnimationOptions, animation_targets, render_animation
     from fem_racket.io.config_run import run_file
+    from fem_racket.outputs import check_targets
 
     o = _drawing(cfg, "animate", ANIMATE_DEFAULTS, ("hand", "oblique"))
     strung = _strung(cfg, "animate", o)
+    out = Path(out or o["out"])
+    targets = animation_targets(out)
+    o["overwrite"] = _replace_own(out, o, ANIMATE_DEFAULTS["out"], [t.path for t in targets])
+    check_targets(targets, overwrite=o["overwrite"])
     model, result = run_file(cfg, histories=True, table="animate")
     return render_animation(
         result,
-        out or o["out"],
+        out,
         AnimationOptions.of(o),
         model=model if strung else None,
         overwrite=o["overwrite"],

@@ -1,11 +1,11 @@
-"""A run file's racket commands in Python: :meth:`RunConfig.modes` = ``fem-racket modes
---config``, :meth:`RunConfig.fit` = ``fit``, :meth:`RunConfig.customise` = ``customise`` and
-:meth:`RunConfig.closest` = ``closest``.
+"""A run file's racket commands in Python: :meth:`RunConfig.fit` = ``fem-racket fit --config``,
+:meth:`RunConfig.customise` = ``customise`` and :meth:`RunConfig.closest` = ``closest``
+(``modes``: :mod:`fem_racket.io.config_modes`).
 
-Each takes from the core tables what its command has options for (``modes`` and ``customise``
-the frame with its lead, ``customise`` the ball's speed and the swing of its maps, ``fit`` and
-``customise`` ``output.overwrite``) and skips the other keys, as the command does; its own
-table (``[modes]``, ``[fit]``, ...) is read as the command reads it
+Each takes from the core tables what its command has options for (``customise`` the frame with
+its lead, the ball's speed and the swing of its maps, ``fit`` and ``customise``
+``output.overwrite``) and skips the other keys, as the command does; its own table (``[fit]``,
+...) is read as the command reads it
 (:func:`fem_racket.io.config_tables.table_options`). Files are written only where the method is
 given ``out`` or the table names one (``[fit] out``, ``[customise] out``): the same files the
 command writes there, checked before the work as the command checks them.
@@ -28,11 +28,9 @@ __all__ = [
     "CUSTOMISE_MAPS",
     "CUSTOMISE_OPTIONS",
     "FIT_OPTIONS",
-    "MODES_OPTIONS",
     "closest_file",
     "customise_file",
     "fit_file",
-    "modes_file",
 ]
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
@@ -60,7 +58,6 @@ def _targets(ranked: bool) -> dict[str, tuple[Any, Option]]:
 #: but ``out`` (no file unless given).
 _FILES = {"out": (None, text), "overwrite": (False, flag)}
 _SPEC = ("length", "mass", "balance", "swing_weight", "f1", "twist_weight", "torsion_frequency")
-MODES_OPTIONS: dict[str, tuple[Any, Option]] = {"count": (4, integer)}
 FIT_OPTIONS = {**dict.fromkeys(_SPEC, (None, number)), "elements": (DEFAULT_ELEMENTS, integer),
                **_FILES}  # fmt: skip
 CUSTOMISE_OPTIONS = {**_targets(False), **_FILES, "maps": (CUSTOMISE_MAPS, text)}
@@ -72,25 +69,15 @@ def _overwrite(cfg: RunConfig) -> dict[str, Any]:
     return {"overwrite": d["overwrite"]} if "overwrite" in d else {}
 
 
-def modes_file(cfg: RunConfig) -> Any:
-    """The free-free modes ``fem-racket modes --config`` computes: the FreeModes of the
-    file's frame, ``[modes] count`` flexible ones (4 by default)."""
-    from fem_racket.frame.model import FrameModel
-    from fem_racket.io.config_run import file_frame
-
-    o = table_options(cfg, "modes", MODES_OPTIONS)
-    if o["count"] < 1:
-        raise InputError(f"count = {o['count']} is not allowed: must be an integer >= 1")
-    model = FrameModel.build(file_frame(cfg), cfg.defaults().get("elements", FRAME_ELEMENTS))
-    work_begins()
-    return model.modes(o["count"])
-
-
 def fit_file(cfg: RunConfig, out: Any = None) -> Any:
-    """The frame ``fem-racket fit --config`` fits to ``[fit]``'s catalogue numbers (a Frame:
-    three segments); with ``out`` (else ``[fit] out``) the mesh file and its sidecar written
-    there, as the command writes them."""
-    from fem_racket.io.racket_files import FitSpec, fit_files, fit_frame, mesh_files
+    """The frame ``fem-racket fit --config`` fits to ``[fit]``'s catalogue numbers, with the
+    targets and fitted values it reports (a FittedRacket); with ``out`` (else ``[fit] out``)
+    the mesh file and its sidecar written there, as the command writes them: both or neither,
+    an existing one refused unless the file says ``overwrite``, or ``out`` is the command's
+    default (``output/racket.vtu``) and holds an earlier fit (the command replaces its own
+    output there)."""
+    from fem_racket.io.config_rerun import rerun_overwrite
+    from fem_racket.io.racket_files import FIT_OUTPUT, FitSpec, fit_files, fit_frame, mesh_files
     from fem_racket.outputs import check_output_path
 
     o = table_options(cfg, "fit", FIT_OPTIONS, _overwrite(cfg))
@@ -105,17 +92,20 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
     out = out or o["out"]
     if out is None:
         work_begins()
-        return fit_frame(fit)[0]
-    for f in mesh_files(Path(out)):
-        check_output_path(f, overwrite=o["overwrite"])
+        return fit_frame(fit)
+    files = mesh_files(Path(out))
+    overwrite = rerun_overwrite(o["overwrite"], Path(out) == FIT_OUTPUT, files)
+    for f in files:
+        check_output_path(f, overwrite=overwrite)
     work_begins()
     parameters = {"config": str(cfg.source), **o, "out": str(out)}
-    return fit_files(fit, Path(out), parameters, overwrite=o["overwrite"])[0]
+    return fit_files(fit, Path(out), parameters, overwrite=overwrite)[0]
 
 
 def customise_file(cfg: RunConfig, out: Any = None) -> Any:
-    """The least lead ``fem-racket customise --config`` finds for the file's frame: the
-    Customisation of :func:`fem_racket.studies.customise.customise`; with ``out`` (else
+    """The least lead ``fem-racket customise --config`` finds for the file's frame and the
+    maps of the racket before and after it, everything the command reports (a
+    :class:`~fem_racket.io.racket_files.CustomisedRacket`); with ``out`` (else
     ``[customise] out``) the customised racket's mesh file, its sidecar and the maps before and
     after (``[customise] maps``, else the command's) written, as the command writes them;
     ``[customise] maps`` without ``out`` is refused (the command writes no maps alone)."""
@@ -123,9 +113,8 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.io.config_run import file_frame
     from fem_racket.io.map_files import check_map_outputs
-    from fem_racket.io.racket_files import customise_files, mesh_files
+    from fem_racket.io.racket_files import customise_files, customise_racket, mesh_files
     from fem_racket.outputs import check_output_path
-    from fem_racket.studies.customise import customise
     from fem_racket.studies.target_values import place_list, targets_from
 
     d = cfg.defaults()
@@ -147,9 +136,9 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, elements)
     targets = targets_from(o, catalogue(mesh, f1=False))
     work_begins()
-    if paths is None:
-        return customise(mesh, targets, places)
     play = {k: o[k] for k in PLAY_DEFAULTS}
+    if paths is None:
+        return customise_racket(mesh, targets, places, play)
     parameters = {"config": str(cfg.source), **o, "out": str(out)}
     return customise_files(mesh, targets, places, play, paths, parameters, o["overwrite"])[0]
 

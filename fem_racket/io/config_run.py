@@ -68,14 +68,19 @@ def _hand(cfg: RunConfig) -> Any:
 
 
 def _output_step(cfg: RunConfig, table: str) -> float:
+    """The table's ``output_step`` [s]: a number, or a text holding one as the command line
+    takes it; 1e-5 s when not given."""
+    from fem_racket.io.config_tables import number
+
     step = cfg.table(table).get("output_step")
     if step is None:
         return DEFAULT_STEP
-    if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step < math.inf:
+    value = number(f"{table}.output_step", step)
+    if not 0 < value < math.inf:
         raise InputError(
             f"{table}.output_step = {show(step)} s is not allowed: must be a finite number > 0"
         )
-    return float(step)
+    return value
 
 
 def file_frame(cfg: RunConfig) -> Any:
@@ -123,9 +128,38 @@ def _check_hand(cfg: RunConfig, d: dict[str, Any]) -> None:
             )
 
 
+#: Suffixes of the file ``simulate`` writes (``--out``, ``output.out``, ``[simulate] out``).
+OUT_SUFFIXES = (".json", ".csv")
+
+
+def _check_simulate_table(cfg: RunConfig) -> None:
+    """``[simulate]`` as the command reads it: its options only (not the core tables'), each
+    of its type, and the output named by it or ``[output]`` a .json or .csv file (the method
+    writes none: its state is not checked)."""
+    from pathlib import Path
+
+    from fem_racket.io.config_keys import reject_unknown
+    from fem_racket.io.config_run_keys import RUN_KEYS, run_keys
+    from fem_racket.io.config_unused import refuse_core_only
+    from fem_racket.validation import show_path
+
+    own = {k.replace("-", "_"): v for k, v in cfg.table("simulate").items()}
+    for key in own:
+        refuse_core_only(f"simulate.{key}", key)
+    reject_unknown(own, [*RUN_KEYS["simulate"], "output_step"], "simulate")
+    _output_step(cfg, "simulate")  # used or not
+    out = run_keys("simulate", own).get("out") or cfg.defaults().get("out")
+    if out is not None and Path(out).suffix.lower() not in OUT_SUFFIXES:
+        raise InputError(
+            f"out = {show_path(Path(out))} is not allowed: must end in {' or '.join(OUT_SUFFIXES)}"
+        )
+
+
 def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it: the
-    result of :func:`run_file` on ``[simulate]``."""
+    result of :func:`run_file` on ``[simulate]`` (its keys checked as the command checks
+    them)."""
+    _check_simulate_table(cfg)
     return run_file(cfg, histories=histories)[1]
 
 
@@ -174,9 +208,9 @@ def run_file(cfg: RunConfig, *, histories: bool | None = None, table: str = "sim
     kwargs.update({} if (law := file_law(cfg)) is None else {"law": law})
     if strings is not None:  # on the bed (its histories have their own samples: a step only
         kwargs["strings"] = strings  # when the file gives one), as simulate --string-tension
-        given = cfg.table(table).get("output_step")
-        if given is not None and _output_step(cfg, table) != DEFAULT_STEP:
-            kwargs["output_step"] = given  # (a step at the default changes nothing)
+        step = _output_step(cfg, table)
+        if step != DEFAULT_STEP:
+            kwargs["output_step"] = step  # (a step at the default changes nothing)
     if cfg.values.get("oblique"):  # the oblique impact, as simulate's --angle ...
         return model, oblique_file(cfg, hand, model, swing, kwargs, _output_step(cfg, table))
     if strings is None:

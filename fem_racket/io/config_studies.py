@@ -8,7 +8,7 @@ files. The commands' defaults are :data:`MAP_DEFAULTS` and :data:`REFINE_DEFAULT
 (``tests/io/test_config_commands.py`` checks them against the parsers). A key of the command's
 table that is not one of its options is refused with a "did you mean", as the command refuses
 it; ``[map]``/``[refine]`` keys that only say where the command writes or how it prints
-(:data:`RUN_KEYS`) are the command's.
+(:data:`fem_racket.io.config_run_keys.RUN_KEYS`) are the command's, checked as it checks them.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.io.config_keys import PRESETS, reject_unknown
+from fem_racket.io.config_run_keys import RUN_KEYS, run_keys
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS
 from fem_racket.validation import InputError, show
 
@@ -28,14 +29,14 @@ __all__ = ["MAP_DEFAULTS", "REFINE_DEFAULTS", "map_file", "refine_file"]
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
 
-#: Keys of a command table that set where the command writes or how it prints.
-RUN_KEYS = ("out", "overwrite", "no_files", "json", "quiet", "csv", "plot", "dpi", "no_plot")
 #: Options only the command's table sets (its ``add_config_option(private=...)``): refine's
-#: ``elements`` is its list of element counts, not ``frame.elements``.
-PRIVATE = {"refine": ("elements",)}
+#: ``elements`` is its list of element counts, not ``frame.elements``; map's ``mesh`` its list
+#: of mesh files, not ``frame.mesh``.
+PRIVATE = {"refine": ("elements",), "map": ("mesh",)}
 #: ``fem-racket map``'s options (argparse dests) and defaults.
 MAP_DEFAULTS: dict[str, Any] = {
     "preset": None,
+    "mesh": None,
     "elements": 20,
     "add_mass": None,
     "speed": 20.0,
@@ -85,10 +86,11 @@ def _options(cfg: RunConfig, command: str, defaults: dict[str, Any]) -> dict[str
     from fem_racket.studies.grid_values import LAW_PARAMETERS
 
     frame = ("ei1", "ei2", "mesh", "segments") if command == "refine" else ()  # cfg.frame()
-    refuse_unused(cfg, command, {*defaults, *frame, *(LAW_PARAMETERS if "law" in defaults else ())})
+    private = PRIVATE.get(command, ())  # the command's own, not the core table's
+    laws = LAW_PARAMETERS if "law" in defaults else ()
+    refuse_unused(cfg, command, {*defaults, *frame, *laws} - set(private))
     core = cfg.defaults()
     out = dict(defaults)
-    private = PRIVATE.get(command, ())  # the command's own, not the core table's
     out.update(
         {
             k: v
@@ -100,8 +102,9 @@ def _options(cfg: RunConfig, command: str, defaults: dict[str, Any]) -> dict[str
         if key.replace("-", "_") not in private:
             refuse_core_only(f"{command}.{key}", key.replace("-", "_"))
     table = {k.replace("-", "_"): v for k, v in cfg.table(command).items()}
-    reject_unknown(table, [*defaults, *LAW_PARAMETERS, *RUN_KEYS], command)
-    out.update({k: v for k, v in table.items() if k not in RUN_KEYS})
+    reject_unknown(table, [*defaults, *LAW_PARAMETERS, *RUN_KEYS[command]], command)
+    run_keys(command, table)  # where the command writes, how it prints: checked alike
+    out.update({k: v for k, v in table.items() if k not in RUN_KEYS[command]})
     return out
 
 
@@ -120,25 +123,39 @@ def _law(o: dict[str, Any], cfg: RunConfig) -> Any:
     return get_law(o["law"], **law_parameters(o))
 
 
+def _listed(key: str, value: Any) -> list[str]:
+    """``[map] preset`` or ``mesh``: an array of texts, as ``--preset A B`` takes them."""
+    if value is None:
+        return []
+    if not isinstance(value, list):
+        raise InputError(f"map.{key} = {show(value)} is not allowed: must be an array")
+    return [str(v) for v in value]
+
+
 def _rackets(o: dict[str, Any]) -> list[tuple[str, Any]]:
-    """(name, FrameModel) of the ``preset`` list (the standard racket when none), each with the
-    file's lead."""
+    """(name, FrameModel) of the ``preset`` list then the ``mesh`` files' (read as they are,
+    relative to the working directory, as the command reads them; the standard racket when
+    neither), each with the file's lead."""
+    from pathlib import Path
+
     from fem_racket.frame.head import DEFAULT_HEAD
     from fem_racket.frame.lead import add_lead
     from fem_racket.frame.mesh import frame_mesh
     from fem_racket.frame.model import FrameModel
-    from fem_racket.frame.segments import standard_frame
+    from fem_racket.frame.segments import Frame, standard_frame
+    from fem_racket.io.mesh_files import read_mesh
 
-    names = o["preset"] or ["standard"]
-    if isinstance(names, str):
-        names = [names]
-    out = []
+    names, meshes = _listed("preset", o["preset"]), _listed("mesh", o["mesh"])
     for name in names:
         if name not in PRESETS:
-            raise InputError(f"map.preset = {show(name)} is not allowed: must be one of {PRESETS}")
-        frame = standard_frame(PRESETS[name])
+            allowed = ", ".join(sorted(PRESETS))
+            raise InputError(f"map.preset = {show(name)} is not allowed: must be one of {allowed}")
+    frames = [(name, standard_frame(PRESETS[name])) for name in names]
+    frames += [(Path(path).stem, read_mesh(path)) for path in meshes]
+    out = []
+    for name, frame in frames or [("standard", standard_frame())]:
         if o["add_mass"]:
-            mesh = frame_mesh(frame, o["elements"])
+            mesh = frame_mesh(frame, o["elements"]) if isinstance(frame, Frame) else frame
             frame = add_lead(mesh, o["add_mass"], DEFAULT_HEAD.on_frame(mesh.length))
         out.append((name, FrameModel.build(frame, o["elements"])))
     return out

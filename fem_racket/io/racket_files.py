@@ -17,13 +17,21 @@ from fem_racket.outputs import json_ready, provenance
 from fem_racket.validation import InputError
 
 __all__ = [
+    "FIT_OUTPUT",
+    "CustomisedRacket",
     "FitSpec",
+    "FittedRacket",
     "customise_files",
+    "customise_racket",
     "fit_files",
     "fit_frame",
     "mesh_files",
     "write_mesh_files",
 ]
+
+#: Where ``fem-racket fit`` writes its mesh unless told (``--out``, ``[fit] out``), replacing the
+#: mesh an earlier fit wrote there.
+FIT_OUTPUT = Path("output") / "racket.vtu"
 
 
 def mesh_files(out: Path) -> list[Path]:
@@ -75,10 +83,45 @@ class FitSpec:
     elements: int = DEFAULT_ELEMENTS
 
 
-def fit_frame(spec: FitSpec) -> tuple[Any, Any, dict[str, Any]]:
+@dataclass(frozen=True)
+class FittedRacket:
+    """Everything ``fem-racket fit`` reports: the frame fitted to a racket's catalogue numbers.
+
+    Attributes
+    ----------
+    frame : Frame
+        Three segments (:func:`fem_racket.frame.specs.fit_racket`), with torsion data given a
+        twistweight.
+    mesh : FrameMesh
+        The frame on the cells of the fit (the mesh the command writes).
+    target, fitted : dict
+        The catalogue numbers asked and those of the mesh: length [m], mass [kg], balance [m],
+        swing weight [kg cm^2], f1 [Hz] (and twistweight [kg cm^2], torsion f1 [Hz]).
+    """
+
+    frame: Any
+    mesh: Any
+    target: dict[str, Any]
+    fitted: dict[str, Any]
+
+    @property
+    def segments(self) -> Any:
+        """The frame's segments (as ``Frame.segments``)."""
+        return self.frame.segments
+
+    def summary(self) -> dict[str, Any]:
+        """The object ``fem-racket fit --json`` prints, less the mesh's path: the targets, the
+        fitted values and the segments (length [m], EI [N m^2], rhoA [kg/m])."""
+        segments = [
+            {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in self.segments
+        ]
+        return {"target": dict(self.target), "fitted": dict(self.fitted), "segments": segments}
+
+
+def fit_frame(spec: FitSpec) -> FittedRacket:
     """The frame of ``spec`` (:func:`fem_racket.frame.specs.fit_racket`, with torsion data by
-    :func:`fem_racket.frame.twist_fit.fit_torsion` given a twistweight): the Frame, its mesh
-    and the summary (targets, fitted values, segments)."""
+    :func:`fem_racket.frame.twist_fit.fit_torsion` given a twistweight), its mesh, the targets
+    and the fitted values."""
     from fem_racket.frame.mesh import frame_mesh
     from fem_racket.frame.specs import fit_racket, racket_spec
     from fem_racket.frame.torsion import TorsionModel
@@ -108,24 +151,96 @@ def fit_frame(spec: FitSpec) -> tuple[Any, Any, dict[str, Any]]:
         target["torsion_f1_hz"] = spec.torsion_frequency
         got["twist_weight_kg_cm2"] = tors.polar_moment / KG_CM2
         got["torsion_f1_hz"] = float(tors.modes(1).frequencies[0])
-    segments = [
-        {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
-    ]
-    return frame, mesh, {"target": target, "fitted": got, "segments": segments}
+    return FittedRacket(frame, mesh, target, got)
 
 
 def fit_files(
     spec: FitSpec, out: Path, parameters: Mapping[str, Any], *, overwrite: bool = False
-) -> tuple[Any, dict[str, Any]]:
+) -> tuple[FittedRacket, dict[str, Any]]:
     """Fit the frame of ``spec`` (:func:`fit_frame`) and write it to ``out`` (a mesh file)
-    with the sidecar ``out.json`` (``parameters`` in its provenance); the frame and the
+    with the sidecar ``out.json`` (``parameters`` in its provenance); the FittedRacket and the
     summary (targets, fitted values, segments, the mesh's path)."""
-    frame, mesh, summary = fit_frame(spec)
-    summary["mesh"] = str(out)
+    fitted = fit_frame(spec)
+    summary = {**fitted.summary(), "mesh": str(out)}
     meta = provenance(dict(parameters))
     text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
-    write_mesh_files(mesh, out, text + "\n", overwrite=overwrite)
-    return frame, summary
+    write_mesh_files(fitted.mesh, out, text + "\n", overwrite=overwrite)
+    return fitted, summary
+
+
+@dataclass(frozen=True)
+class CustomisedRacket:
+    """Everything ``fem-racket customise`` reports: the least lead and the racket's maps.
+
+    Attributes
+    ----------
+    customisation : Customisation
+        Of :func:`fem_racket.studies.customise.customise`: the lead per place [kg], the
+        customised mesh, the catalogue numbers before and after.
+    maps : tuple of RacketMap
+        The frame ``before`` and ``customised``: apparent COR and ball speed along it, with
+        their sweet spots [x/L] (:func:`fem_racket.studies.racket_map.racket_map`).
+    targets : mapping
+        Spec name -> Target (SI) the lead meets.
+    """
+
+    customisation: Any
+    maps: tuple[Any, Any]
+    targets: Mapping[str, Any]
+
+    @property
+    def mesh(self) -> Any:
+        """The customised frame (a FrameMesh)."""
+        return self.customisation.mesh
+
+    @property
+    def added(self) -> dict[str, float]:
+        """Place -> added mass [kg]."""
+        return self.customisation.added
+
+    @property
+    def before(self) -> Any:
+        """Catalogue numbers before (SI)."""
+        return self.customisation.before
+
+    @property
+    def after(self) -> Any:
+        """Catalogue numbers after (SI)."""
+        return self.customisation.after
+
+    @property
+    def total(self) -> float:
+        """Total added mass [kg]."""
+        return self.customisation.total
+
+    def summary(self) -> dict[str, Any]:
+        """The object ``fem-racket customise --json`` prints, less the paths it wrote: the
+        placement [g], the catalogue numbers before and after, the targets and each map's
+        summary (sweet spots [x/L], no curves)."""
+        from fem_racket.studies.target_values import target_summary
+
+        summary = self.customisation.summary()
+        summary["targets"] = target_summary(self.targets)
+        summary["maps"] = {m.name: m.summary(curves=False) for m in self.maps}
+        return summary
+
+
+def customise_racket(
+    mesh: Any, targets: Mapping[str, Any], places: Sequence[str], play: Mapping[str, Any]
+) -> CustomisedRacket:
+    """Solve the least lead (:func:`fem_racket.studies.customise.customise`) bringing ``mesh``
+    (a FrameMesh) to ``targets`` (spec name -> Target, SI) with lead at ``places``, and map the
+    racket before and after (``play``: the maps' ``speed`` [m/s], ``racket_speed`` [m/s],
+    ``reference`` [x/L] and ``pivot`` [m])."""
+    from fem_racket.studies.customise import customise
+    from fem_racket.studies.racket_map import racket_map
+
+    result = customise(mesh, targets, places)
+    maps = tuple(
+        racket_map(m, name=name, **play)
+        for name, m in (("before", mesh), ("customised", result.mesh))
+    )
+    return CustomisedRacket(result, maps, dict(targets))
 
 
 def customise_files(
@@ -136,30 +251,19 @@ def customise_files(
     files: tuple[Path, Path],
     parameters: Mapping[str, Any],
     overwrite: bool = False,
-) -> tuple[Any, dict[str, Any]]:
-    """Solve the least lead (:func:`fem_racket.studies.customise.customise`) bringing ``mesh``
-    (a FrameMesh) to ``targets`` (spec name -> Target, SI) with lead at ``places``, map the
-    racket before and after (``play``: the maps' ``speed`` [m/s], ``racket_speed`` [m/s],
-    ``reference`` [x/L] and ``pivot`` [m]), write the customised mesh with its sidecar to
-    ``files[0]`` and the maps to ``files[1]`` (``parameters`` in their provenance); the
-    Customisation and the summary (placement, specs, targets, maps)."""
+) -> tuple[CustomisedRacket, dict[str, Any]]:
+    """Customise and map the racket (:func:`customise_racket`), write the customised mesh with
+    its sidecar to ``files[0]`` and the maps to ``files[1]`` (``parameters`` in their
+    provenance); the CustomisedRacket and the summary (placement, specs, targets, maps, the
+    paths written)."""
     from fem_racket.io.map_files import write_maps
-    from fem_racket.studies.customise import customise
-    from fem_racket.studies.racket_map import racket_map
-    from fem_racket.studies.target_values import target_summary
 
     out, maps_path = files
-    result = customise(mesh, targets, places)
-    maps = [
-        racket_map(m, name=name, **play)
-        for name, m in (("before", mesh), ("customised", result.mesh))
-    ]
-    summary = result.summary()
-    summary["targets"] = target_summary(targets)
-    summary["maps"] = {m.name: m.summary(curves=False) for m in maps}
+    report = customise_racket(mesh, targets, places, play)
+    summary = report.summary()
     summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
     meta = provenance(dict(parameters))
     text = json.dumps({**meta, **summary}, indent=2, default=str)
-    write_mesh_files(result.mesh, out, text + "\n", overwrite=overwrite)
-    write_maps(maps, [maps_path], overwrite=overwrite, parameters=parameters)
-    return result, summary
+    write_mesh_files(report.mesh, out, text + "\n", overwrite=overwrite)
+    write_maps(list(report.maps), [maps_path], overwrite=overwrite, parameters=parameters)
+    return report, summary

@@ -107,6 +107,8 @@ def test_fit_writes_the_commands_files(cfg, capsys):
         {"length_m": s.length, "ei_n_m2": s.EI, "rhoa_kg_m": s.rhoA} for s in frame.segments
     ]
     same(py_json(segments), cli["segments"])
+    same(py_json(frame.summary()), {k: v for k, v in cli.items() if k != "mesh"})  # all of it
+    assert frame.fitted["mass_kg"] == pytest.approx(0.318, rel=1e-9)  # the fit meets its target
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu")) != {}
     assert _parameters(Path("py.vtu"))["out"] == "py.vtu"  # the method's out, not [fit]'s
@@ -120,8 +122,11 @@ def test_customise_writes_the_commands_files(cfg, capsys):
     argv = ("customise", "--config", "run.toml", "--out", "cli.vtu", "--maps", "cli_maps.nc")
     cli = run_json(capsys, *argv)
     result = cfg.customise(out="py.vtu")
-    summary = py_json(result.summary())
+    summary = py_json(result.summary())  # everything the command reports, maps included,
+    assert set(summary) == set(cli) - {"mesh", "maps_file"}  # but the paths it wrote
     same(summary, {k: cli[k] for k in summary})
+    assert [m.name for m in result.maps] == ["before", "customised"]
+    assert result.mesh is result.customisation.mesh and result.total > 0
     assert Path("py.vtu").read_bytes() == Path("cli.vtu").read_bytes()
     assert _sidecar(Path("py.vtu")) == _sidecar(Path("cli.vtu"))
     assert _parameters(Path("py.vtu"))["out"] == "py.vtu"
@@ -204,12 +209,12 @@ def test_the_methods_read_the_commands_tables():
     # given); json and quiet only say how the command prints, taken where its parser has them
     from fem_racket.cli.commands.config import _commands
     from fem_racket.cli.options.runfile import file_options
-    from fem_racket.io import config_racket, config_reports
+    from fem_racket.io import config_modes, config_racket, config_reports
     from fem_racket.io.config_tables import PRINT_KEYS
     from fem_racket.paper.config_reproduce import REPRODUCE_OPTIONS
 
     tables = {
-        "modes": config_racket.MODES_OPTIONS,
+        "modes": config_modes.MODES_OPTIONS,
         "fit": config_racket.FIT_OPTIONS,
         "customise": config_racket.CUSTOMISE_OPTIONS,
         "closest": config_racket.CLOSEST_OPTIONS,
