@@ -171,7 +171,7 @@ class SweepSpec(SweepSolving):
         )
         check_rigidity(spec)
         frame_length = float((frame if frame is not None else standard_frame()).length)
-        check_physics(values, frame_length)
+        check_physics(values, spec.solver, frame_length)
         check_swings(spec)
         check_offsets(spec)
         check_grid_size(spec.shape, spec.dims)

@@ -30,6 +30,7 @@ import numpy as np
 
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem_checks import bed_coordinates
+from fem_racket.impact.strung.solve import STRUNG_OPTIONS
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.grid_values import OBLIQUE_AXES, STRING_AXES, pattern_label
 from fem_racket.validation import InputError, show
@@ -62,13 +63,15 @@ def _nonzero(values: dict[str, Any], name: str) -> bool:
     return bool(np.any(np.atleast_1d(values[name]) != 0.0))
 
 
-def check_physics(values: dict[str, Any], length: float) -> None:
+def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
     """Refuse, in one line, a string-bed or oblique axis with what it cannot combine with.
 
-    ``values``: the sweep's parameter values; ``length``: the racket's length [m] (the string
-    bed's head is placed on it). The solver and its options on the strung racket are the
-    solver's to refuse (:func:`fem_racket.impact.strung.solve.check_strung`, asked on the
-    sweep's first case before it runs).
+    ``values``: the sweep's parameter values; ``solver``: its solver's name (one that solves
+    the strung racket, :data:`~fem_racket.impact.strung.solve.STRUNG_OPTIONS`); ``length``:
+    the racket's length [m] (the string bed's head is placed on it). The solver's options on
+    the strung racket are the solver's to refuse
+    (:func:`fem_racket.impact.strung.solve.check_strung`, asked on the sweep's first case
+    before it runs).
     """
     strings = given(values, STRING_AXES)
     if not strings:
@@ -89,6 +92,10 @@ def check_physics(values: dict[str, Any], length: float) -> None:
     for name, why in rest.items():
         if _nonzero(values, name):
             raise InputError(f"{name} = {show(values[name])} is not allowed {what}: {why}")
+    if solver not in STRUNG_OPTIONS:
+        raise InputError(
+            f"solver = {solver!r} is not allowed {what}: must be one of {', '.join(STRUNG_OPTIONS)}"
+        )
     bed = StringBed()
     for x in np.atleast_1d(values["position"]):
         bed_coordinates(bed, float(x), 0.0, length, bed.head_centre)
