@@ -95,3 +95,23 @@ def test_a_tolerance_with_histories_is_used_not_ignored(capsys, tmp_path, monkey
     printed = json.loads(out[out.index("{") :])
     written = json.loads((tmp_path / "t.json").read_text())
     assert written["summary"]["cor"] == printed["cor"] == 0.3765647691247458
+
+
+def test_a_run_files_serial_and_workers_are_refused_not_one_dropped(capsys, tmp_path, monkeypatch):
+    """``serial = true`` and ``workers = 2`` in one ``[sweep]`` table: the workers were dropped
+    (serial won); now refused, by the command and by ``load_config(f).sweep()`` alike."""
+    from fem_racket import load_config
+    from fem_racket.validation import InputError
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "run.toml").write_text(
+        '[sweep]\nposition = "0.6,0.7"\nserial = true\nworkers = 2\n'
+    )
+    line = _one_error(capsys, ["sweep", "--config", "run.toml", "--out", "s.nc", "--quiet"])
+    assert (
+        line == "workers = 2 is not allowed with backend 'serial': it is the 'processes' backend's"
+    )
+    with pytest.raises(InputError) as err:
+        load_config("run.toml").sweep()
+    assert str(err.value) == line
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["run.toml"]
