@@ -1,8 +1,12 @@
 """The command line run in-process, as the CLI tests drive it."""
 
 import json
+import re
+
+import pytest
 
 from fem_racket.cli import main
+from fem_racket.validation import InputError
 
 
 def run(capsys, *argv):
@@ -18,3 +22,13 @@ def run_json(capsys, *argv):
     code, out, err = run(capsys, *argv, "--json")
     assert code == 0, err
     return json.loads(out)
+
+
+def refused_alike(capsys, argv, method, words, *, start=False):
+    """``fem-racket ARGV`` and the run file's Python ``method()`` refuse alike: the command exits
+    2 with one line holding ``words``, the method raises InputError holding them (beginning with
+    them when ``start``)."""
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("\n") == 1 and words in err, err
+    with pytest.raises(InputError, match=("^" if start else "") + re.escape(words)):
+        method()

@@ -14,8 +14,8 @@ Conventions every command follows (so a new command plugs in with a few lines):
   :mod:`fem_racket.io.config`); :func:`apply_config`, called once by ``cli.main``, fills the options
   the command line did not give from the file. Precedence: command line > the command's own
   table (``[sweep]``, ``[vtk]`` ...) > the core tables (``[frame]``, ``[impact]`` ...) > built-in
-  defaults. The command's table takes its long options as keys (``--ei1-values`` ->
-  ``ei1_values``), checked and converted as on the command line.
+  defaults. The command's table takes its long options as keys (``--power-fraction`` ->
+  ``power_fraction``), checked and converted as on the command line.
 - ``add_output_options(p, default)`` gives it ``--out FILE`` and ``--overwrite``; write through
   :func:`fem_racket.outputs.atomic_output` (check the path with ``check_output_path`` *before* the
   work) and put :func:`run_parameters` into the file's :func:`fem_racket.outputs.provenance`.

@@ -2,25 +2,29 @@
 
 A run file has fixed *core* tables, each key with its unit in its name::
 
-    [frame]    preset | ei1_n_m2, ei2_n_m2 | [[frame.segments]] | mesh ; elements
+    [frame]    preset | ei1_n_m2, ei2_n_m2 | [[frame.segments]] | mesh ; elements ; [[frame.lead]]
     [ball]     mass_kg
     [contact]  kcb_n_m, zeta | clamped_cor      (the compound ball/string law, eqs 1-4)
                law, and that law's parameters (hc_alpha_s_m, k1_n_m_n, ... as in JSON outputs)
-    [impact]   position_x_over_l, speed_m_s
+    [impact]   position_x_over_l, offset_m, speed_m_s, racket_speed_m_s, reference_x_over_l,
+               pivot_m
+    [hand]     grip, mass_kg, grip_start_m, grip_end_m, stiffness_n_m2, damping_n_s_m2,
+               inertia_kg_m2, shock_window_s   (any key: the racket held in a hand; simulate)
     [strings]  tension_n, pattern, head_area_cm2 | head_length_m, head_width_m, string, edge,
                stretch
                (any key: the string bed replaces the lumped K_CB; simulate, export-vtk, animate)
     [oblique]  angle_deg, spin_rpm, friction, ball_inertia, ball_radius_m, compliance_ratio,
                side_angle_deg, side_spin_rpm, clamped, face_angle_deg, path_angle_deg
                (any key: the oblique, spinning ball; simulate, held too; the axes of sweep, map)
-    [solver]   name, separation, basis, modes, rtol, atol, t_max_s
+    [solver]   name (auto, exact, general, cvode, bdf, as --solver), separation, basis, modes,
+               tolerance, rtol, atol, t_max_s
     [output]   out, overwrite
 
 and optional *command* tables (``[simulate]``, ``[modes]``, ``[sweep]``, ``[refine]``, ``[vtk]``
 for ``export-vtk``, ``[animate]``, ``[reproduce]`` ...) whose keys are the long options of that
-command (``--ei1-values`` -> ``ei1_values``); the command checks them when it reads the file (see
-:func:`fem_racket.cli.common.apply_config`). Every key is optional: a missing key keeps the
-built-in default. Unknown tables and keys are errors with a "did you mean"; a wrong type or an
+command (``--power-fraction`` -> ``power_fraction``); the command checks them when it reads the
+file (see :func:`fem_racket.cli.common.apply_config`). Every key is optional: a missing key keeps
+the built-in default. Unknown tables and keys are errors with a "did you mean"; a wrong type or an
 out-of-range value is a one-line :class:`~fem_racket.validation.InputError` naming the dotted key,
 e.g. ``run.toml: impact.speed_m_s = -3 m/s is not allowed: must be a finite number > 0``.
 

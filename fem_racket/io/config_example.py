@@ -71,12 +71,15 @@ reference_x_over_l = 0.75    # ... this point x/L (the string centre)
 # shock_window_s = 0.05      # window of the grip force's peak and vibration RMS [s]
 
 [solver]
-name = "exact"               # "exact" (closed form), "cvode" or "bdf"
+name = "auto"                # "auto" (exact for the paper's law, else general), "exact" (closed
+#                            # form), "general" (any law or swing), "cvode" or "bdf"
 separation = "displacement"  # end of contact: "displacement" (the paper's) or "force"
 basis = "modal"              # frame coordinates for cvode/bdf: "modal" or "physical"
 modes = 80                   # flexible frame modes kept in the modal basis
 rtol = 1e-10                 # relative tolerance of cvode/bdf
 atol = 1e-12                 # absolute tolerance of cvode/bdf
+# tolerance = 1e-6           # COR error the exact solver's batched engine may make without
+#                            # histories (0: every mode)
 # t_max_s = 0.1              # give up if the ball has not left by then [s]
 #                            # (default 20 x the eq 11 contact time)
 

@@ -17,8 +17,8 @@ from fem_racket.contact.parameters import LawParameter
 from fem_racket.contact.registry import LAW_NAMES, LiveView, family_parameters
 from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
-from fem_racket.impact.ode.integrators import SOLVERS
 from fem_racket.impact.simulate_linear import BASES
+from fem_racket.impact.solvers import SOLVER_NAMES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_arrays import table_array
 from fem_racket.io.config_lead import lead_tables
@@ -225,7 +225,7 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
         ),
     },
     "solver": {
-        "name": Key(_choice(tuple(sorted(SOLVERS))), "solver", "integrator"),
+        "name": Key(_choice(SOLVER_NAMES), "solver", "method: auto, exact, general, cvode or bdf"),
         "separation": Key(_choice(SEPARATION_EVENTS), "separation", "end of contact"),
         "basis": Key(_choice(BASES), "basis", "frame coordinates for the BDF solvers"),
         "modes": Key(_integer(1), "modes", "flexible modes kept"),

@@ -4,9 +4,12 @@
 
 ``compare`` plays every set-up alike: from the core tables it takes ``frame.elements`` (of
 presets and segment frames), the ``[[frame.lead]]`` added to every one, the ball's speed and the
-swing; ``[compare]`` gives ``point``, ``positions``, ``offsets``, ``grip``, ``out``.
-``calibrate`` takes ``ball.mass_kg`` and ``output.out``; ``[calibrate]`` gives ``family``,
-``targets``, ``out``. Other keys of the core tables are skipped, as the commands skip them.
+swing; ``[compare]`` gives ``point``, ``positions``, ``offsets``, ``grip``, ``out``. It computes
+impacts: another key of the impact's tables or ``[solver]`` (``ball.mass_kg``: each set-up
+brings its own ball) is refused, as the command refuses it
+(:func:`fem_racket.io.config_unused.refuse_unused`). ``calibrate`` takes ``ball.mass_kg`` and
+``output.out``; ``[calibrate]`` gives ``family``, ``targets``, ``out``; it skips the other keys
+of the core tables, as the command skips them.
 Files are written only where the method is given ``out`` or the file names one, the same files
 the command writes, checked before the work.
 """
@@ -59,6 +62,7 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     list of them, else ``[compare] out``) the figure (.png, .svg, .pdf) and/or maps (.nc)
     written, as the command writes them."""
     from fem_racket.io.compare_files import check_compare_output, write_compare
+    from fem_racket.io.config_unused import refuse_unused
     from fem_racket.io.setups import compare_play, read_setups
     from fem_racket.studies.compare import compare, differences
 
@@ -73,6 +77,7 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     rackets = [str(r) for r in rackets]
     if len(rackets) < 2:
         raise InputError(f"rackets = {len(rackets)} given is not allowed: need at least 2")
+    refuse_unused(cfg, "compare", {*defaults, *COMPARE_OPTIONS})  # as the command refuses it
     out = o["out"] if out is None else out
     outs = [Path(p) for p in ([out] if isinstance(out, (str, Path)) else out or [])]
     for path in outs:

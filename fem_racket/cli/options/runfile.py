@@ -5,14 +5,16 @@ by :mod:`fem_racket.cli.common`). ``cli.main`` calls :func:`apply_config` once a
 fills every option the command line did not give from the file. Precedence: command line > the
 command's own table (``[sweep]``, ``[vtk]`` for export-vtk ..., see
 :data:`fem_racket.io.config_keys.COMMAND_TABLES`) > the core tables (``[frame]``, ``[impact]``
-...) > built-in defaults. The command's table takes its long options as keys (``--ei1-values`` ->
-``ei1_values``), converted and checked as on the command line; options the core tables own
-(``--speed`` is ``impact.speed_m_s``) are refused there with a pointer to the core key, unless
-the command declares them its ``own`` (sweep's grids) or ``private`` (refine's list of element
-counts; the ``out`` of commands writing another kind of file than simulate's JSON), see
-:func:`add_config_option`. A command takes from the core tables only what it has options for; a
-command computing impacts refuses a key of the impact's tables it has no option for
-(:mod:`fem_racket.io.config_unused`).
+...) > built-in defaults. The command's table takes its long options as keys
+(``--power-fraction`` -> ``power_fraction``), converted and checked as on the command line;
+options the core tables own (``--speed`` is ``impact.speed_m_s``) are refused there with a
+pointer to the core key, unless the command declares them its ``own`` (sweep's grids) or
+``private`` (refine's list of element counts; the ``out`` of commands writing another kind of
+file than simulate's JSON), see :func:`add_config_option`. A command takes from the core tables
+only what it has options for; a command computing impacts refuses a key of the impact's tables
+or of ``[solver]`` it has no option for (:mod:`fem_racket.io.config_unused`). ``--config`` is
+given once, and a frame from both the file and the command line is refused
+(:mod:`fem_racket.cli.options.runfile_clash`).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.cli.options.runfile_clash import OneFile, refuse_frame_clash
 from fem_racket.validation import InputError, show
 
 if TYPE_CHECKING:
@@ -70,6 +73,7 @@ def add_config_option(
     """
     parser.add_argument(
         "--config",
+        action=OneFile,
         metavar="TOML",
         default=None,
         help="run file (see `fem-racket config --example`); command-line options override it "
@@ -235,16 +239,12 @@ def apply_config(
     try:
         values = config_values(sub, args.command, cfg, given)
         dests = {a.dest for a in sub._actions} - getattr(sub, "config_private", frozenset())
-        refuse_unused(cfg, args.command, dests | ({"segments"} if "mesh" in dests else set()))
+        dests |= {"segments"} if "mesh" in dests else set()
+        refuse_unused(cfg, args.command, dests, given)
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
-    frame_file = {"segments", "mesh"} & set(values)
-    clash = {"ei1", "ei2"} & given
-    if frame_file and clash and "mesh" not in given:
-        opts = ", ".join(f"--{d}" for d in sorted(clash))
-        key = "frame." + next(iter(sorted(frame_file)))
-        raise InputError(f"{opts} cannot be combined with {key} from {path}: remove one of them")
     keys = _file_keys(sub, args.command, cfg)
+    refuse_frame_clash(cfg, values, given, keys, path)
     defaults = {a.dest: a.default for a in sub._actions}
     for dest, value in values.items():
         if dest not in given:

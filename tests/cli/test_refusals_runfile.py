@@ -1,0 +1,154 @@
+"""Run files = CLI in what they accept and refuse (issue 21.3 and 21.7, audit item 9): a run
+file's ``[solver] name`` takes what ``--solver`` takes; a mesh file on the command line is not
+combined with the file's frame keys (as ``--ei1`` is not with the file's mesh); ``--config`` is
+given once; a ``[solver]`` key, ``ball.mass_kg`` or an offset a command does not use is refused
+in one line (exit 2), by the command and by its Python method alike."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from fem_racket import load_config
+from fem_racket.validation import InputError
+from tests.clirun import run
+
+MESH = Path(__file__).resolve().parents[2] / "meshes" / "standard_racket.vtu"
+
+
+@pytest.fixture
+def cwd(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+def refused(capsys, words: str, *argv: str) -> None:
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("\n") == 1 and words in err and "Traceback" not in err, err
+
+
+@pytest.mark.parametrize("name", ["auto", "general"])
+def test_solver_name_takes_what_the_option_takes(cwd, capsys, name):
+    Path("run.toml").write_text(f'[solver]\nname = "{name}"\n')
+    code, out, _ = run(capsys, "simulate", "--config", "run.toml", "--json")
+    assert code == 0
+    cli = json.loads(out)
+    flag = json.loads(run(capsys, "simulate", "--solver", name, "--json")[1])
+    assert cli["cor"] == flag["cor"]  # the file's name is the option's
+    assert load_config("run.toml").simulate().cor == cli["cor"]
+
+
+def test_solver_name_outside_the_registry_is_refused(cwd, capsys):
+    Path("run.toml").write_text('[solver]\nname = "euler"\n')
+    refused(capsys, "solver.name = 'euler' is not allowed: must be one of auto, exact, general",
+            "simulate", "--config", "run.toml")  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("text", "key"),
+    [
+        ("[frame]\nei1_n_m2 = 500.0\n", "frame.ei1_n_m2 = 500.0"),
+        ("[frame]\nei2_n_m2 = 100.0\n", "frame.ei2_n_m2 = 100.0"),
+        ('[frame]\npreset = "rigid"\n', "frame.preset = 'rigid'"),
+        ("[frame]\nelements = 10\n", "frame.elements = 10"),
+        (
+            "[frame]\nsegments = [{ length_m = 0.2, ei_n_m2 = 150.0, rhoa_kg_m = 0.7 }, "
+            "{ length_m = 0.48, ei_n_m2 = 120.0, rhoa_kg_m = 0.46 }]\n",
+            "frame.segments",
+        ),
+    ],
+)
+def test_a_mesh_on_the_command_line_with_the_files_frame_is_refused(cwd, capsys, text, key):
+    Path("run.toml").write_text(text)
+    refused(capsys, f"--mesh cannot be combined with {key} from run.toml",
+            "simulate", "--config", "run.toml", "--mesh", str(MESH))  # fmt: skip
+
+
+def test_a_mesh_with_the_files_frame_at_its_defaults_runs(cwd, capsys):
+    # the standard preset, EI1 146 and 20 elements change nothing: the mesh is the frame
+    Path("run.toml").write_text('[frame]\npreset = "standard"\nei1_n_m2 = 146.0\nelements = 20\n')
+    code, out, _ = run(capsys, "simulate", "--config", "run.toml", "--mesh", str(MESH), "--json")
+    assert code == 0
+    plain = json.loads(run(capsys, "simulate", "--mesh", str(MESH), "--json")[1])
+    assert json.loads(out)["cor"] == plain["cor"]
+
+
+def test_config_twice_is_refused(cwd, capsys):
+    Path("a.toml").write_text("[frame]\nei1_n_m2 = 500.0\n")
+    Path("b.toml").write_text("[impact]\nspeed_m_s = 30.0\n")
+    refused(capsys, "--config is given twice ('a.toml' and 'b.toml')",
+            "simulate", "--config", "a.toml", "--config", "b.toml")  # fmt: skip
+
+
+#: (command, operands, file text, the refused key): keys the command has no option for.
+UNUSED = [
+    ("sweep", ("--position", "0.5:0.9:2"), "[solver]\nt_max_s = 0.1\n", "solver.t_max_s = 0.1"),
+    ("map", ("--no-files",), '[solver]\nname = "cvode"\n', "solver.name = 'cvode'"),
+    ("map", ("--no-files",), "[solver]\nrtol = 1e-08\n", "solver.rtol = 1e-08"),
+    ("map", ("--no-files",), "[solver]\nt_max_s = 0.05\n", "solver.t_max_s = 0.05"),
+    ("refine", ("--no-files",), '[solver]\nname = "general"\n', "solver.name = 'general'"),
+    ("refine", ("--no-files",), "[solver]\nrtol = 1e-08\n", "solver.rtol = 1e-08"),
+    ("refine", ("--no-files",), "[solver]\nt_max_s = 0.05\n", "solver.t_max_s = 0.05"),
+    ("compare", ("standard", "rigid"), '[solver]\nname = "bdf"\n', "solver.name = 'bdf'"),
+    ("compare", ("standard", "rigid"), "[solver]\nrtol = 1e-08\n", "solver.rtol = 1e-08"),
+    ("compare", ("standard", "rigid"), "[solver]\nt_max_s = 0.05\n", "solver.t_max_s = 0.05"),
+    ("compare", ("standard", "rigid"), "[ball]\nmass_kg = 0.06\n", "ball.mass_kg = 0.06"),
+]
+METHODS = {
+    "sweep": lambda c: c.sweep(),
+    "map": lambda c: c.map(),
+    "refine": lambda c: c.refine(),
+    "compare": lambda c: c.compare(["standard", "rigid"]),
+}
+
+
+@pytest.mark.parametrize(("command", "operands", "text", "key"), UNUSED)
+def test_keys_a_command_does_not_use_are_refused_alike(cwd, capsys, command, operands, text, key):
+    Path("run.toml").write_text(text)
+    refused(capsys, f"{key} is not allowed with fem-racket {command}: it has no such option",
+            command, *operands, "--config", "run.toml")  # fmt: skip
+    with pytest.raises(InputError, match=key.replace(".", r"\.")):
+        METHODS[command](load_config("run.toml"))
+    assert sorted(p.name for p in Path().iterdir()) == ["run.toml"]  # nothing written
+
+
+@pytest.mark.parametrize("command", ["map", "compare"])
+def test_an_offset_without_offsets_is_refused_alike(cwd, capsys, command):
+    # map and compare stay on the long axis without --offsets (one offset is no face: the
+    # command line refuses --offsets 0.02), so the file's offset would be dropped
+    Path("run.toml").write_text("[impact]\noffset_m = 0.02\n")
+    operands = ("standard", "rigid") if command == "compare" else ("--no-files",)
+    refused(capsys, f"impact.offset_m = 0.02 is not allowed with fem-racket {command} without "
+            "--offsets", command, *operands, "--config", "run.toml")  # fmt: skip
+    with pytest.raises(InputError, match=r"impact\.offset_m = 0\.02 .* without --offsets"):
+        METHODS[command](load_config("run.toml"))
+    # a shared file: config --check notes it for the command and passes
+    code, out, _ = run(capsys, "config", "--check", "run.toml")
+    assert code == 0 and "[map] not for this command: impact.offset_m = 0.02" in out
+
+
+def test_an_offset_with_offsets_spans_the_face(cwd, capsys):
+    # the face map spans the offsets itself: the file's fixed offset is one of its axis's
+    # values, on the command line and in [map] alike
+    Path("run.toml").write_text('[impact]\noffset_m = 0.02\n[map]\npositions = "0.6:0.9:3"\n')
+    grid = ("--offsets", "-0.02:0.02:3", "--no-files", "--json")
+    code, out, err = run(capsys, "map", "--config", "run.toml", *grid)
+    assert code == 0, err
+    Path("run.toml").write_text(
+        '[impact]\noffset_m = 0.02\n[map]\npositions = "0.6:0.9:3"\noffsets = "-0.02:0.02:3"\n'
+    )
+    (face,) = load_config("run.toml").map()
+    assert "power_area_cm2" in json.loads(out)  # the face's summary
+    assert list(face.offsets) == pytest.approx([-0.02, 0.0, 0.02])
+
+
+def test_solver_keys_at_their_defaults_pass(cwd, capsys):
+    # the example file's [solver] is simulate's defaults: every command takes the file
+    assert run(capsys, "config", "--example", "--out", "run.toml")[0] == 0
+    assert run(capsys, "config", "--check", "run.toml")[0] == 0
+    Path("run.toml").write_text('[solver]\nname = "auto"\nrtol = 1e-10\n[ball]\nmass_kg = 0.057\n')
+    code, _, err = run(capsys, "compare", "standard", "rigid", "--positions", "0.6:0.9:3",
+                       "--config", "run.toml", "--json")  # fmt: skip
+    assert code == 0, err
