@@ -1,7 +1,8 @@
 """Command-line interface ``fem-racket``: thin wrappers that parse, call the library, print.
 
-Each sub-command is a :class:`~fem_racket.cli.parser.Command` of :data:`COMMANDS` (its name and
-summary) whose module adds its options and runs it; the parser sets ``args.func(args) -> int``.
+Each sub-command is a :class:`~fem_racket.cli.parser.Command` of
+:data:`fem_racket.cli.commands.COMMANDS` (its name and summary) whose module adds its options
+and runs it; the parser sets ``args.func(args) -> int``.
 Whatever goes wrong ends in one line on stderr, never a traceback:
 
 ======  ==========================================================================================
@@ -32,8 +33,9 @@ import sys
 from collections.abc import Sequence
 from typing import Any
 
+from fem_racket.cli.commands import COMMANDS
 from fem_racket.cli.options.runfile import apply_config
-from fem_racket.cli.parser import Command, OneLineErrorParser
+from fem_racket.cli.parser import OneLineErrorParser
 from fem_racket.cli.signals import (
     GuardedStdout,
     StdoutFault,
@@ -47,66 +49,6 @@ from fem_racket.studies.executors import pin_blas_threads
 from fem_racket.validation import InputError, show
 
 __all__ = ["main"]
-
-#: Sub-command -> its :class:`~fem_racket.cli.parser.Command`, in the order ``--help`` lists
-#: them; a command's options and run are in its module of :mod:`fem_racket.cli.commands`.
-COMMANDS = {
-    command.name: command
-    for command in (
-        Command("simulate", "simulate one ball impact on the racket"),
-        Command("modes", "free-free modal analysis of the frame"),
-        Command("sweep", "simulate a grid of impacts and save one netCDF dataset", described=True),
-        Command(
-            "map", "apparent COR and ball speed along the frame, with sweet spots", described=True
-        ),
-        Command(
-            "fit",
-            "a racket frame from length, mass, balance, swing weight (and f1) -> mesh file",
-            described=True,
-        ),
-        Command(
-            "customise",
-            "least lead tape reaching swing weight, balance, twistweight, mass targets",
-            described=True,
-        ),
-        Command(
-            "closest",
-            "rackets of a CSV list nearest a target, each with its least lead",
-            described=True,
-        ),
-        Command(
-            "compare",
-            "rackets side by side: specs, maps, sweet spots, shock, contact time, B - A",
-            described=True,
-        ),
-        Command(
-            "export-vtk",
-            "write the impact as a VTK time series (.pvd + .vtu) for ParaView",
-            "vtk",
-            options="add_export_arguments",
-            run="run_export",
-        ),
-        Command(
-            "animate",
-            "render the impact offscreen as a GIF or MP4",
-            "vtk",
-            options="add_animate_arguments",
-            run="run_animate",
-        ),
-        Command(
-            "refine", "mesh-refinement study: frequencies vs the exact beam, COR and contact time"
-        ),
-        Command(
-            "reproduce",
-            "reproduce every figure of Kawazoe & Kanda (1997) and write REPRODUCTION.md",
-            described=True,
-        ),
-        Command("calibrate", "fit a ball/string law to published targets"),
-        Command("optimize", "optimum racket design (scipy, pymoo NSGA-II)"),
-        Command("sensitivity", "Sobol sensitivity of a design objective (SALib)"),
-        Command("config", "print an example run file (TOML) or check one"),
-    )
-}
 
 
 def _command_named(argv: Sequence[str]) -> str | None:

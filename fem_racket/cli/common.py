@@ -7,9 +7,9 @@ notes and digits in :mod:`fem_racket.cli.text`, the parser in :mod:`fem_racket.c
 Conventions every command follows (so a new command plugs in with a few lines):
 
 - its module has ``add_arguments(parser)`` and ``run(args) -> int``, and one line of
-  :data:`fem_racket.cli.COMMANDS` (:class:`fem_racket.cli.parser.Command`) names it, with its
-  summary; with ``described=True`` the second paragraph of the module's docstring is its
-  ``--help`` description, one text for readers of the code and of ``--help``.
+  :data:`fem_racket.cli.commands.COMMANDS` (:class:`fem_racket.cli.parser.Command`) names it,
+  with its summary; with ``described=True`` the second paragraph of the module's docstring is
+  its ``--help`` description, one text for readers of the code and of ``--help``.
 - ``add_config_option(p)`` gives it ``--config run.toml`` (a TOML run file, see
   :mod:`fem_racket.io.config`); :func:`apply_config`, called once by ``cli.main``, fills the options
   the command line did not give from the file. Precedence: command line > the command's own

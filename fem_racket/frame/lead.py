@@ -27,7 +27,12 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.specs import SWING_AXIS
 from fem_racket.validation import InputError, show
 
-__all__ = ["Lead", "add_lead", "lead_moments", "parse_lead"]
+__all__ = ["MAX_LEAD_G", "Lead", "add_lead", "lead_moments", "parse_lead"]
+
+#: Most grams one ``LOCATION:GRAMS`` may add: players add a few grams up to about 30 g of lead,
+#: and a racket weighs about 300 g; 1000 g (an order of magnitude beyond the most lead, three
+#: rackets) bounds a strip that still leaves a racket with some lead on it.
+MAX_LEAD_G = 1000.0
 
 
 @dataclass(frozen=True)
@@ -68,6 +73,11 @@ def parse_lead(text: str) -> Lead:
         raise InputError(
             f"add-mass = {show(text)} is not allowed: must be LOCATION:GRAMS with GRAMS >= 0, "
             "e.g. 3/9:10 or 0.32:5"
+        )
+    if g > MAX_LEAD_G:
+        raise InputError(
+            f"add-mass = {show(text)} is not allowed: GRAMS must be at most {MAX_LEAD_G:g} g "
+            "(lead tape adds a few grams; more than a racket weighs is no longer a racket)"
         )
     return Lead(place, g * 1e-3)
 

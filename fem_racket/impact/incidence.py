@@ -47,7 +47,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
-from fem_racket.validation import InputError, check_finite, check_positive, check_range, show
+from fem_racket.validation import InputError, check_finite, check_range, show
 
 __all__ = [
     "DEFAULT_BALL_INERTIA",
@@ -71,12 +71,30 @@ DEFAULT_COMPLIANCE_RATIO = 0.14
 #: rad/s per rpm.
 RPM = 2.0 * math.pi / 60.0
 
+# Upper bounds where the model's assumptions end, each about an order of magnitude beyond real
+# play so that no real ball is refused:
+#: |spin| and |side spin| [rpm]: spins in play are a few thousand rpm (the module docstring's
+#: clamped-head measurement: 3820 rpm; about 5000 rpm for the heaviest topspin, an assumption);
+#: far beyond, the ball's surface speed (R omega = 170 m/s at 50000 rpm) dwarfs the impact
+#: speed and a rigid spinning sphere with one point of contact no longer describes it.
+MAX_SPIN_RPM = 50_000.0
+#: Coulomb friction mu: about 0.4 ball on strings (Cross 2003), rubber on dry surfaces rarely
+#: above 1.5; beyond 5 a coefficient is no longer a Coulomb friction of felt on strings.
+MAX_FRICTION = 5.0
+#: Ball radius R [m]: 33 mm (ITF 32.7-34.3 mm); at 0.1 m the ball spans most of the head's
+#: 0.252 m width, and the point contact of the frame's model ends.
+MAX_BALL_RADIUS = 0.1
+#: eta^2 = k_n / k_t: fitted 0.14 (0.10-0.18), Mindlin's solid sphere 1.5; ten times that bounds
+#: a tangential compliance that still belongs to a ball.
+MAX_COMPLIANCE_RATIO = 15.0
 
-def _non_negative(name: str, value: object) -> float:
+
+def _non_negative(name: str, value: object, high: float) -> float:
+    """``value`` if a finite number in [0, ``high``] (the model's bound), else refused."""
     number = check_finite(name, value)
     if number < 0.0:
         raise InputError(f"{name} = {show(value)} is not allowed: must be a finite number >= 0")
-    return number
+    return check_range(name, number, 0.0, high)
 
 
 @dataclass(frozen=True)
@@ -89,20 +107,23 @@ class Incidence:
         Angle between the ball's path (its projection on the plane of the long axis and the
         face normal) and the face normal [deg], in [0, 90).
     spin : float
-        Incoming spin [rpm], positive = topspin (see the module docstring).
+        Incoming spin [rpm], positive = topspin (see the module docstring); |spin| <=
+        :data:`MAX_SPIN_RPM`.
     friction : float
-        Coulomb friction coefficient mu >= 0 (0: frictionless, the head-on normal problem).
+        Coulomb friction coefficient mu in [0, :data:`MAX_FRICTION`] (0: frictionless, the
+        head-on normal problem).
     ball_inertia : float
         I / (m R^2) of the ball, in (0, 2/3] (2/3: a thin shell).
     radius : float
-        Ball radius R [m], > 0.
+        Ball radius R [m], in (0, :data:`MAX_BALL_RADIUS`].
     compliance_ratio : float
-        eta^2 = k_n / k_t >= 0 (0: rigid tangential contact).
+        eta^2 = k_n / k_t in [0, :data:`MAX_COMPLIANCE_RATIO`] (0: rigid tangential contact).
     side_angle : float
         Angle between the ball's path and the plane of the long axis and the face normal [deg],
         in (-90, 90), positive toward +y (module docstring).
     side_spin : float
-        Incoming side spin [rpm], positive = rolling toward +y (module docstring).
+        Incoming side spin [rpm], positive = rolling toward +y (module docstring); |side_spin|
+        <= :data:`MAX_SPIN_RPM`.
     """
 
     angle: float = 0.0
@@ -117,13 +138,17 @@ class Incidence:
     def __post_init__(self) -> None:
         checks = {
             "angle": check_range("angle", self.angle, 0.0, 90.0, unit="deg", include_high=False),
-            "spin": check_finite("spin", self.spin, "rpm"),
-            "friction": _non_negative("friction", self.friction),
+            "spin": check_range("spin", self.spin, -MAX_SPIN_RPM, MAX_SPIN_RPM, unit="rpm"),
+            "friction": _non_negative("friction", self.friction, MAX_FRICTION),
             "ball_inertia": check_range(
                 "ball_inertia", self.ball_inertia, 0.0, 2.0 / 3.0, include_low=False
             ),
-            "radius": check_positive("radius", self.radius, "m"),
-            "compliance_ratio": _non_negative("compliance_ratio", self.compliance_ratio),
+            "radius": check_range(
+                "radius", self.radius, 0.0, MAX_BALL_RADIUS, unit="m", include_low=False
+            ),
+            "compliance_ratio": _non_negative(
+                "compliance_ratio", self.compliance_ratio, MAX_COMPLIANCE_RATIO
+            ),
             "side_angle": check_range(
                 "side_angle",
                 self.side_angle,
@@ -133,7 +158,9 @@ class Incidence:
                 include_low=False,
                 include_high=False,
             ),
-            "side_spin": check_finite("side_spin", self.side_spin, "rpm"),
+            "side_spin": check_range(
+                "side_spin", self.side_spin, -MAX_SPIN_RPM, MAX_SPIN_RPM, unit="rpm"
+            ),
         }
         for name, value in checks.items():
             object.__setattr__(self, name, value)

@@ -203,6 +203,7 @@ def map_file(cfg: RunConfig) -> list[Any]:
     o = _options(cfg, "map", MAP_DEFAULTS)
     law = _law(o, cfg)
     impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation", "modes", "tolerance")}
+    impact = {k: v for k, v in impact.items() if v != MAP_DEFAULTS[k]}  # given: as the CLI
     oblique = {k: o[k] for k in OBLIQUE_KEYS if o[k] is not None}
     if oblique:
         from fem_racket.studies.spin_map import SPIN_OFFSETS, SPIN_POSITIONS, spin_map

@@ -16,6 +16,7 @@ from typing import Any
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.frame.segments import PAPER_EI1
+from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.io.config_defaults import DEFAULTS
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
 from fem_racket.validation import InputError, show
@@ -55,12 +56,16 @@ IMPACT_COMMANDS: dict[str, tuple[str, ...]] = {
 #: takes at least 2).
 SPANNED_WITH = {"impact.offset_m": "offsets"}
 #: Option (argparse dest) -> the value that changes nothing: the racket at rest, on the axis,
-#: the standard frame (``frame.preset = "standard"``), the paper's ball and clamped COR, and
-#: ``simulate``'s solver defaults (:data:`~fem_racket.io.config_defaults.DEFAULTS`).
+#: the standard frame (``frame.preset = "standard"``), the paper's ball and clamped COR,
+#: ``simulate``'s solver defaults (:data:`~fem_racket.io.config_defaults.DEFAULTS`) and the
+#: swing's default reference point. A swing's point other than that (or a pivot) without a swing
+#: is refused by the commands that have the option, as on their command line (``--reference``
+#: needs ``--racket-speed``).
 NEUTRAL = {
     **DEFAULTS,
     "racket_speed": 0.0,
     "ei1": PAPER_EI1,
+    "reference": DEFAULT_REFERENCE,
     "ball_mass": DEFAULT_BALL_MASS,
     "zeta": zeta_from_cor(PAPER_CLAMPED_COR),
 }
@@ -68,16 +73,13 @@ NEUTRAL = {
 #: where the command spans them itself (sweep's axes, refine's element counts); it may always
 #: set its own ``out``/``overwrite``.
 CORE_ONLY = CORE_DESTS - {"out", "overwrite"}
-#: Options that matter only with a swing (``impact.racket_speed_m_s`` other than 0).
-SWING_ONLY = ("reference", "pivot")
 
 
 def refuse_unused(cfg: Any, command: str, dests: Iterable[str], given: Iterable[str] = ()) -> None:
     """Refuse the first key of :data:`IMPACT_TABLES` in ``cfg`` (a RunConfig) whose option
     (argparse dest) is not in ``dests`` when ``command`` computes impacts.
 
-    A key at its :data:`NEUTRAL` value, or a swing's point without a swing, changes nothing and
-    passes; a key of :data:`SPANNED_WITH` passes when its option is in ``given`` (the options
+    A key at its :data:`NEUTRAL` value changes nothing and passes; a key of :data:`SPANNED_WITH` passes when its option is in ``given`` (the options
     the command line sets) or in the command's own table.
 
     Raises
@@ -90,11 +92,10 @@ def refuse_unused(cfg: Any, command: str, dests: Iterable[str], given: Iterable[
     dests, values = set(dests), cfg.defaults()
     table = cfg.table(COMMAND_TABLES.get(command, command))
     given = set(given) | {k.replace("-", "_") for k in table}
-    swing = values.get("racket_speed", 0.0) != 0.0
     for name in IMPACT_TABLES:
         for key in cfg.values.get(name, {}):
             dotted, dest = f"{name}.{key}", CORE_KEYS[name][key].dest
-            if values.get(dest) == NEUTRAL.get(dest, ...) or (dest in SWING_ONLY and not swing):
+            if values.get(dest) == NEUTRAL.get(dest, ...):
                 continue  # changes nothing
             if dotted in SPANNED_WITH and SPANNED_WITH[dotted] in dests:
                 if SPANNED_WITH[dotted] in given:

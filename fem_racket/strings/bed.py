@@ -34,7 +34,7 @@ from fem_racket.validation import (
     show,
 )
 
-__all__ = ["EDGES", "StringBed", "parse_pattern"]
+__all__ = ["EDGES", "HEAD_AXIS_RANGE", "StringBed", "parse_pattern"]
 
 #: How the head ring follows the frame (:mod:`fem_racket.impact.strung.point`): uniformly with the
 #: impact point, or each edge point with the frame at its own x (bending along the hoop).
@@ -42,6 +42,8 @@ EDGES = ("point", "hoop")
 
 #: Most and fewest strings in either direction a pattern may have.
 PATTERN_RANGE = (4, 40)
+#: Shortest and longest head axis [m] (rackets: about 0.25-0.35 m long, 0.2-0.27 m wide).
+HEAD_AXIS_RANGE = (0.05, 1.0)
 
 
 def parse_pattern(text: str, name: str = "pattern") -> tuple[int, int]:
@@ -97,8 +99,8 @@ class StringBed:
         lo, hi = PATTERN_RANGE
         check_integer("pattern mains", self.mains, lo, hi)
         check_integer("pattern crosses", self.crosses, lo, hi)
-        check_range("head length", self.head_length_m, 0.05, 1.0, unit="m")
-        check_range("head width", self.head_width_m, 0.05, 1.0, unit="m")
+        check_range("head length", self.head_length_m, *HEAD_AXIS_RANGE, unit="m")
+        check_range("head width", self.head_width_m, *HEAD_AXIS_RANGE, unit="m")
         get_string(self.string)
         check_positive("load radius", self.load_radius_m, "m")
         check_range("head centre", self.head_centre, 0.0, 1.0, unit="x/L")

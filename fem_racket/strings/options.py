@@ -12,10 +12,16 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from fem_racket.strings.bed import StringBed, parse_pattern
-from fem_racket.validation import InputError, check_positive, show
+from fem_racket.strings.bed import HEAD_AXIS_RANGE, StringBed, parse_pattern
+from fem_racket.validation import InputError, check_positive, check_range, show
 
-__all__ = ["STRING_OPTIONS", "bed_from_options"]
+__all__ = ["MAX_STRING_TENSION_N", "STRING_OPTIONS", "bed_from_options"]
+
+#: Largest string tension [N] the options take: rackets are strung at about 180-300 N (40-65
+#: lb), and tennis strings break at a few hundred N (an assumption of this bound: about 500-700
+#: N for a 1.25-1.35 mm string); 2000 N is far beyond any strung racket. The library's
+#: :class:`StringBed` takes more, to check that a very stiff bed tends to the paper's model.
+MAX_STRING_TENSION_N = 2000.0
 
 #: The names of the string-bed options (argparse destinations and run-file destinations alike).
 STRING_OPTIONS = (
@@ -31,7 +37,8 @@ STRING_OPTIONS = (
 
 
 def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
-    """The head's axes [m] from the options (see the module docstring)."""
+    """The head's axes [m] from the options (see the module docstring); an axis the area sets
+    outside :data:`~fem_racket.strings.bed.HEAD_AXIS_RANGE` refused naming the area."""
     d = StringBed()
     if area is None:
         return (
@@ -44,12 +51,26 @@ def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
             f"head area = {show(area)} cm^2 is not allowed with both --head-length and "
             "--head-width: give two of the three"
         )
+    low, high = HEAD_AXIS_RANGE
     if length is not None:
-        return float(length), a / check_positive("head length", length, "m")
-    if width is not None:
-        return a / check_positive("head width", width, "m"), float(width)
-    s = math.sqrt(a / (d.head_length_m * d.head_width_m))
-    return d.head_length_m * s, d.head_width_m * s
+        axes = float(length), a / check_range("head length", length, low, high, unit="m")
+    elif width is not None:
+        axes = a / check_range("head width", width, low, high, unit="m"), float(width)
+    else:
+        s = math.sqrt(a / (d.head_length_m * d.head_width_m))
+        axes = d.head_length_m * s, d.head_width_m * s
+    for name, value in zip(("length", "width"), axes, strict=True):
+        if not low <= value <= high:  # the axis the area sets
+            raise InputError(
+                f"head area = {show(area)} cm^2 is not allowed: it makes the head {value:.4g} m "
+                f"{'long' if name == 'length' else 'wide'}, outside [{low:g}, {high:g}] m"
+            )
+    return axes
+
+
+def _tension(value: Any) -> float:
+    """``--string-tension`` [N], refused beyond :data:`MAX_STRING_TENSION_N`."""
+    return check_range("string tension", value, 1.0, MAX_STRING_TENSION_N, unit="N")
 
 
 def bed_from_options(values: dict[str, Any]) -> StringBed | None:
@@ -63,8 +84,9 @@ def bed_from_options(values: dict[str, Any]) -> StringBed | None:
     mains, crosses = (
         (d.mains, d.crosses) if values["pattern"] is None else parse_pattern(values["pattern"])
     )
+    tension = values["string_tension"]
     return StringBed(
-        tension_n=d.tension_n if values["string_tension"] is None else values["string_tension"],
+        tension_n=d.tension_n if tension is None else _tension(tension),
         mains=mains,
         crosses=crosses,
         head_length_m=length,

@@ -40,7 +40,7 @@ from fem_racket.impact.held.shock import DEFAULT_WINDOW, grip_peak, vibration_rm
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import closing_speed
 from fem_racket.studies.face_map import FaceMap, face_map
-from fem_racket.studies.map_options import MapPlay
+from fem_racket.studies.map_options import MapPlay, check_at_rest
 from fem_racket.studies.racket_map import RacketMap, racket_map
 from fem_racket.validation import InputError, check_choice, check_range
 
@@ -100,6 +100,7 @@ class Play(MapPlay):
     offsets: Any = None
 
     def __post_init__(self) -> None:
+        check_at_rest(self.racket_speed, self.reference, self.pivot)  # compare shows no COP
         check_range("position", self.position, 0.0, 1.0, unit="x/L")
         check_choice("grip", self.grip, tuple(GRIPS))
 

@@ -28,8 +28,9 @@ from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
+from fem_racket.studies.map_options import check_at_rest, check_map_points
 from fem_racket.studies.sweetspots import centre_of_percussion, mode_node_positions
-from fem_racket.validation import InputError, check_positive, check_range
+from fem_racket.validation import InputError, check_positive, check_range, show
 
 __all__ = ["DEFAULT_AREA_FRACTION", "FaceGrid", "FaceMap", "face_map"]
 
@@ -183,7 +184,13 @@ def face_map(
         "power_fraction", opts.pop("power_fraction", DEFAULT_AREA_FRACTION), 0.0, 1.0,
         include_low=False,
     )  # fmt: skip
-    elements = opts.pop("elements", 20)
+    elements = opts.pop("elements", None)
+    if elements is not None and isinstance(frame, FrameModel):
+        raise InputError(
+            f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
+            "already (give a Frame or a FrameMesh to mesh)"
+        )
+    check_at_rest(racket_speed, reference)  # the pivot sets the centre of percussion
     unknown = set(opts) - {"ball_mass", "kcb", "zeta", "separation", "modes", "tolerance"}
     if unknown:
         raise InputError(f"options = {sorted(unknown)} is not allowed: unknown face-map options")
@@ -191,9 +198,10 @@ def face_map(
     opts.setdefault("tolerance", DEFAULT_TOLERANCE)
     opts["ball_mass"] = Ball(opts.get("ball_mass") or DEFAULT_BALL_MASS).mass
     speed = check_positive("speed", speed, "m/s")
+    check_map_points(int(np.size(positions)), int(np.size(offsets)))
     x = increasing("positions", positions, 2)
     y = increasing("offsets", offsets, 2)
-    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements)
+    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements or 20)
     length = model.mesh.length
     head = head.on_frame(length)
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)

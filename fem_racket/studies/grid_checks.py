@@ -20,6 +20,7 @@ from fem_racket.frame.segments import (
     standard_frame,
 )
 from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.studies.map_options import check_at_rest
 from fem_racket.studies.sweep_physics import LATERAL_AXES
 from fem_racket.validation import InputError, check_range
 
@@ -85,6 +86,8 @@ def check_swings(spec: Any) -> None:
     slowest ball at every impact point, so that no case fails on it mid-sweep."""
     v = spec.values
     if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
+        # a swing's point without a swing would be dropped (the maps' rule)
+        check_at_rest(0.0, v["reference"], v["pivot"])
         return
     frame = spec.frame if spec.frame is not None else standard_frame()
     length = float(frame.length)

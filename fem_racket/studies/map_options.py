@@ -13,17 +13,75 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from typing import Any
 
+import numpy as np
+
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.validation import InputError, check_range, show
 
-__all__ = ["DEFAULT_POSITIONS", "DEFAULT_POWER_FRACTION", "MapImpact", "MapPlay", "MapSetup"]
+__all__ = [
+    "DEFAULT_POSITIONS",
+    "DEFAULT_POWER_FRACTION",
+    "MapImpact",
+    "MapPlay",
+    "MAX_MAP_POINTS",
+    "MapSetup",
+    "check_at_rest",
+    "check_map_points",
+    "map_grid",
+    "map_model",
+]
 
 #: Default grid: the string face from its throat end to the tip, x/L (start, stop, points).
 DEFAULT_POSITIONS = (0.5, 1.0, 200)
+#: Cells a Frame is meshed with (the paper's 20).
+DEFAULT_ELEMENTS = 20
 #: Default fraction of the maximum v_out bounding the power region.
 DEFAULT_POWER_FRACTION = 0.95
+#: Most impact points of one map (positions x offsets): the batched engine holds a few arrays of
+#: (points x modes) doubles, so 10^7 points need several GB (a 2.98 GiB array was refused by
+#: numpy at 10^7 positions). Real maps have 200 (the default) to a few 10^3 points (a 41 x 41
+#: face): 10^5 is well beyond them and about 100 MB an array.
+MAX_MAP_POINTS = 100_000
+
+
+def check_map_points(positions: int, offsets: int = 1) -> None:
+    """Refuse a map of ``positions`` x ``offsets`` points (counts, known before any array is
+    made) over :data:`MAX_MAP_POINTS`, naming the option that makes it too large."""
+    if positions * offsets <= MAX_MAP_POINTS:
+        return
+    if offsets == 1:
+        what = f"positions = {positions} values"
+    elif positions >= offsets:
+        what = f"positions = {positions} values with offsets = {offsets}"
+    else:
+        what = f"offsets = {offsets} values with positions = {positions}"
+    raise InputError(
+        f"{what} is not allowed: a map takes at most {MAX_MAP_POINTS} points (positions x "
+        f"offsets = {positions * offsets})"
+    )
+
+
+def check_at_rest(racket_speed: float, reference: float, pivot: float | None = None) -> None:
+    """Refuse a swing's ``reference`` point (x/L, other than the default; a sweep's values
+    too) or ``pivot`` [m]
+    (give None where it is used at rest: the maps' centre of percussion) without a swing
+    (``racket_speed`` 0): the racket at rest would drop them."""
+    if racket_speed != 0.0:
+        return
+    for name, value, given, unit in (
+        ("reference", reference, np.any(np.asarray(reference) != DEFAULT_REFERENCE), "x/L"),
+        ("pivot", pivot, pivot is not None, "m"),
+    ):
+        if given:
+            value = np.asarray(value).tolist()  # a number, or a sweep's values
+            raise InputError(
+                f"{name} = {show(value)} {unit} is not allowed without a swing: give "
+                "racket_speed (--racket-speed)"
+            )
 
 
 @dataclass(frozen=True)
@@ -73,6 +131,9 @@ class MapPlay:
     pivot: float | None = None
     positions: Any = None
 
+    def __post_init__(self) -> None:
+        check_at_rest(self.racket_speed, self.reference)  # the pivot sets the centre of percussion
+
     def swing(self, length: float) -> Swing:
         """The swing of a racket of length ``length`` [m]
         (:meth:`fem_racket.impact.swing.Swing.from_speed`)."""
@@ -83,6 +144,42 @@ class MapPlay:
     def keywords(self) -> dict[str, Any]:
         """The fields of :class:`MapPlay`, by name, as the map functions take them."""
         return {f.name: getattr(self, f.name) for f in fields(MapPlay)}
+
+
+def map_grid(positions: Any) -> np.ndarray:
+    """The map's impact points x/L: :data:`DEFAULT_POSITIONS` when None, else at least 3
+    increasing points in [0, 1] (at most :data:`MAX_MAP_POINTS`, counted first)."""
+    if positions is None:
+        start, stop, num = DEFAULT_POSITIONS
+        return np.linspace(start, stop, num)
+    check_map_points(int(np.size(positions)))
+    x = np.atleast_1d(np.asarray(positions, dtype=float))
+    if x.size < 3 or np.any(np.diff(x) <= 0.0):
+        raise InputError(
+            f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L"
+        )
+    for p in (x[0], x[-1]):
+        check_range("position", p, 0.0, 1.0, unit="x/L")
+    return x
+
+
+def map_model(frame: Any, elements: int | None) -> FrameModel:
+    """The model of ``frame`` (the standard racket when None), a Frame meshed with
+    ``elements`` cells (20 when None); ``elements`` refused with a model or a mesh of another
+    count (as :meth:`fem_racket.impact.problem.ImpactProblem.build` and ``sweep`` refuse it)."""
+    if isinstance(frame, FrameModel):
+        if elements is not None:
+            raise InputError(
+                f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
+                "already (give a Frame or a FrameMesh to mesh)"
+            )
+        return frame
+    if isinstance(frame, FrameMesh) and elements not in (None, frame.n_elements):
+        raise InputError(
+            f"elements = {show(elements)} is not allowed with a mesh: it has "
+            f"{frame.n_elements} elements"
+        )
+    return FrameModel.build(frame, DEFAULT_ELEMENTS if elements is None else elements)
 
 
 @dataclass(frozen=True)
@@ -104,5 +201,5 @@ class MapSetup:
 
     name: str = "racket"
     play: MapPlay = field(default_factory=MapPlay)
-    elements: int = 20
+    elements: int = DEFAULT_ELEMENTS
     power_fraction: float = DEFAULT_POWER_FRACTION

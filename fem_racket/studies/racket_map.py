@@ -29,6 +29,7 @@ from fem_racket.contact.presets import get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
+from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.solvers import make_solver
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
@@ -38,6 +39,8 @@ from fem_racket.studies.map_options import (
     DEFAULT_POWER_FRACTION,
     MapImpact,
     MapSetup,
+    map_grid,
+    map_model,
 )
 from fem_racket.studies.options import take
 from fem_racket.studies.sweetspots import (
@@ -68,11 +71,59 @@ __all__ = [
 
 
 @lru_cache(maxsize=16)
-def _solver(name: str, tolerance: float | None, modes: int | None = None) -> Any:
-    """The map's solver, made once per options (a map asks it again for each refined point)."""
-    if name == "general":
-        return make_solver(name, tolerance=tolerance)
-    return make_solver(name, tolerance=tolerance, modes=modes)
+def _solver(name: str, **options: Any) -> Any:
+    """The map's solver, made once per options (a map asks it again for each refined point);
+    it refuses an option it cannot use (``modes`` for ``general``)."""
+    return make_solver(name, **options)
+
+
+def _prepared(
+    model: FrameModel, positions: Any, speeds: Any, options: dict[str, Any]
+) -> tuple[Any, ProblemBatch, tuple[int, ...]]:
+    """The solver, the batch of the impacts and the grid's shape (:func:`apparent_cor_along`);
+    an option the solver or the law cannot use, given in ``options``, refused in one line."""
+    o = take(options, "an option of apparent_cor_along", MapImpact)[0]
+    kcb, kcb_factor, law = o.kcb, o.kcb_factor, o.law
+    check_choice("separation", o.separation, SEPARATION_EVENTS)
+    x = np.atleast_1d(np.asarray(positions, dtype=float))
+    v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
+    solver = {k: options[k] for k in ("tolerance", "modes") if k in options}
+    if law is not None and solver.get("modes", 0) is None:  # None: every mode, as the general
+        del solver["modes"]  # integrator keeps them anyway
+    solver.setdefault("tolerance", o.tolerance)
+    if law is not None:  # the linear law's options, if given, refused by the batch
+        if kcb_factor != 1.0:
+            raise InputError(
+                f"kcb_factor = {show(kcb_factor)} is not allowed with contact law "
+                f"{show(law.name)}: it scales the linear law's K_CB only"
+            )
+        for key in ("kcb", "zeta"):
+            if options.get(key) is not None:
+                raise InputError(
+                    f"{key} = {show(options[key])} is not allowed with contact law "
+                    f"{show(law.name)}: it sets the linear law's K_CB and zeta only"
+                )
+        linear = {k: options[k] for k in ("separation",) if k in options}
+        if linear:  # refused as simulate refuses them (the problem's check of its law)
+            ImpactProblem.build(model, position=float(x.flat[0]), law=law, **linear)
+        batch = ProblemBatch((model,), x.ravel(), v.ravel(), ball_mass=o.ball_mass, law=law)
+        return _solver("general", **solver), batch, x.shape
+    if kcb_factor != 1.0:
+        check_positive("kcb_factor", kcb_factor, "")
+        if kcb is None:
+            kcb = np.array([kcb_from_speed(s) for s in v.ravel()]).reshape(v.shape)
+        kcb = kcb * kcb_factor
+    batch = ProblemBatch(
+        (model,),
+        x.ravel(),
+        v.ravel(),
+        ball_mass=o.ball_mass,
+        kcb=None if kcb is None else np.broadcast_to(kcb, x.shape).ravel(),
+        zeta=o.zeta,
+        separation=o.separation,
+    )
+    solver.setdefault("modes", o.modes)
+    return _solver("exact", **solver), batch, x.shape
 
 
 def apparent_cor_along(
@@ -91,38 +142,17 @@ def apparent_cor_along(
         The fields of :class:`~fem_racket.studies.map_options.MapImpact`: ``ball_mass``,
         ``kcb``, ``zeta``, ``separation``, ``modes``, ``tolerance``, ``law`` (a ContactLaw:
         the general integrator and the law's own end condition; ``kcb``, ``zeta``,
-        ``separation`` and ``modes`` do not apply) and ``kcb_factor`` (on the linear law's
-        K_CB, or the paper's K_CB of each closing speed: a stiffer or softer string bed).
+        ``separation``, ``modes`` and ``kcb_factor`` are then refused) and ``kcb_factor`` (on
+        the linear law's K_CB, or the paper's K_CB of each closing speed: a stiffer or softer
+        string bed).
 
     Returns
     -------
     ndarray
         e_A = -v_B(t_c) / V_B0 at each point (NaN where the ball does not separate).
     """
-    o = take(options, "an option of apparent_cor_along", MapImpact)[0]
-    ball_mass, kcb, zeta, separation = o.ball_mass, o.kcb, o.zeta, o.separation
-    modes, tolerance, law, kcb_factor = o.modes, o.tolerance, o.law, o.kcb_factor
-    check_choice("separation", separation, SEPARATION_EVENTS)
-    x = np.atleast_1d(np.asarray(positions, dtype=float))
-    v = np.broadcast_to(np.asarray(speeds, dtype=float), x.shape)
-    if law is not None:
-        batch = ProblemBatch((model,), x.ravel(), v.ravel(), ball_mass=ball_mass, law=law)
-        return _solver("general", tolerance).solve_many(batch).cor.reshape(x.shape)
-    if kcb_factor != 1.0:
-        check_positive("kcb_factor", kcb_factor, "")
-        if kcb is None:
-            kcb = np.array([kcb_from_speed(s) for s in v.ravel()]).reshape(v.shape)
-        kcb = kcb * kcb_factor
-    batch = ProblemBatch(
-        (model,),
-        x.ravel(),
-        v.ravel(),
-        ball_mass=ball_mass,
-        kcb=None if kcb is None else np.broadcast_to(kcb, x.shape).ravel(),
-        zeta=zeta,
-        separation=separation,
-    )
-    return _solver("exact", tolerance, modes).solve_many(batch).cor.reshape(x.shape)
+    solver, batch, shape = _prepared(model, positions, speeds, options)
+    return solver.solve_many(batch).cor.reshape(shape)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -181,20 +211,6 @@ class RacketMap(MapView):
         return out
 
 
-def _grid(positions: Any) -> np.ndarray:
-    if positions is None:
-        start, stop, num = DEFAULT_POSITIONS
-        return np.linspace(start, stop, num)
-    x = np.atleast_1d(np.asarray(positions, dtype=float))
-    if x.size < 3 or np.any(np.diff(x) <= 0.0):
-        raise InputError(
-            f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L"
-        )
-    for p in (x[0], x[-1]):
-        check_range("position", p, 0.0, 1.0, unit="x/L")
-    return x
-
-
 def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: Any) -> RacketMap:
     """e_A and v_out along a racket, and its sweet spots.
 
@@ -236,24 +252,20 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
     play, pivot, power_fraction = setup.play, setup.play.pivot, setup.power_fraction
     speed = check_positive("speed", play.speed, "m/s")
     law = get_law(o.law) if isinstance(o.law, str) else o.law
-    if law is not None:
-        for key, value in (("kcb", o.kcb), ("zeta", o.zeta), ("kcb_factor", o.kcb_factor)):
-            if value is not None and not (key == "kcb_factor" and value == 1.0):
-                raise InputError(
-                    f"{key} = {show(value)} is not allowed with contact law {show(law.name)}: "
-                    "it sets the linear law's K_CB and zeta only"
-                )
     ball_mass = Ball(o.ball_mass).mass
     check_range("power_fraction", power_fraction, 0.0, 1.0, include_low=False)
     if o.modes is not None:
         check_integer("modes", o.modes)
-    x = _grid(play.positions)
-    model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, setup.elements)
+    x = map_grid(play.positions)
+    model = map_model(frame, setup.elements if "elements" in options else None)
     length = model.mesh.length
     swing = play.swing(length)
     v_r = swing.speed_at(x * length)
     closing = np.array([closing_speed(speed, v) for v in v_r])
-    kwargs = dict(vars(o), ball_mass=ball_mass, law=law)  # MapImpact, the mass and law resolved
+    # the MapImpact options given (the solver and the law refuse those they cannot use)
+    kwargs = {k: v for k, v in vars(o).items() if k in options}
+    kwargs.update(ball_mass=ball_mass, law=law)
+    solver, batch, _ = _prepared(model, x, closing, kwargs)  # every check before any work
 
     def e_a(s: float) -> float:
         v = closing_speed(speed, swing.speed_at(s * length))
@@ -263,7 +275,7 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
         return float(ball_speed_out(e_a(s), speed, swing.speed_at(s * length)))
 
     work_begins()
-    e = apparent_cor_along(model, x, closing, **kwargs)
+    e = solver.solve_many(batch).cor
     vo = ball_speed_out(e, speed, v_r)
     nodes = mode_node_positions(model, 2)
     swinging = swing.velocity != 0.0 or swing.omega != 0.0

@@ -28,6 +28,7 @@ from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
 from fem_racket.studies.face_map import FaceGrid, increasing
+from fem_racket.studies.map_options import check_map_points
 from fem_racket.validation import InputError, check_positive
 
 __all__ = [
@@ -153,7 +154,8 @@ def spin_map(
         Label of the racket.
     options : dict, optional
         ``ball_mass``, ``kcb``, ``zeta``, ``separation``, ``modes``, ``tolerance``, ``law``
-        (a ContactLaw: solved by the general solver) and ``head`` (the 100 in^2 outline).
+        (a ContactLaw: solved by the general solver, which refuses ``modes``; ``kcb``,
+        ``zeta`` and ``separation`` are the paper's law's) and ``head`` (the 100 in^2 outline).
     """
     opts = dict(options or {})
     head = (opts.pop("head", None) or DEFAULT_HEAD).on_frame(model.mesh.length)
@@ -162,11 +164,14 @@ def spin_map(
         raise InputError(f"options = {sorted(unknown)} is not allowed: unknown spin-map options")
     law = opts.pop("law", None)
     tolerance = opts.pop("tolerance", DEFAULT_TOLERANCE)  # the default asks for nothing: the
-    solver_options = {  # normal impacts' histories then keep every mode (as simulate's)
-        **({} if tolerance == DEFAULT_TOLERANCE else {"tolerance": tolerance}),
-        **({} if law is not None else {"modes": opts.pop("modes", DEFAULT_MODES)}),
-    }
+    solver_options = {}  # normal impacts' histories then keep every mode (as simulate's)
+    if tolerance != DEFAULT_TOLERANCE:
+        solver_options["tolerance"] = tolerance
+    if law is None or "modes" in opts:  # the general solver refuses modes given with a law
+        solver_options["modes"] = opts.pop("modes", DEFAULT_MODES)
+    solver = make_solver("exact" if law is None else "general", **solver_options)
     speed = check_positive("speed", speed, "m/s")
+    check_map_points(int(np.size(positions)), int(np.size(offsets)))
     x = increasing("positions", positions, 2)
     y = increasing("offsets", offsets, 2)
     X, Y = np.meshgrid(x, y)
@@ -184,11 +189,10 @@ def spin_map(
             kcb=opts.get("kcb"),
             zeta=opts.get("zeta"),
             law=law,
-            separation=opts.get("separation") if law is None else None,
+            separation=opts.get("separation"),  # refused with a law by the batch
             incidence=(incidence,) * n,
         )
-        name_ = "exact" if law is None else "general"
-        out = make_solver(name_, **solver_options).solve_many(batch)
+        out = solver.solve_many(batch)
         for key in fields:
             fields[key][face] = out.extra[key]
         regimes[face] = out.extra["contact_regime"]

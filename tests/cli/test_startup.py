@@ -80,13 +80,15 @@ def test_package_and_help_import_no_heavy_library(argv, tmp_path):
 
 
 def test_help_lists_the_commands_without_their_modules(tmp_path):
-    """``fem-racket --help`` lists each command from :data:`fem_racket.cli.COMMANDS` (name and
-    summary): no command's module, and of the package only the command line's own entry (its
-    parser, signals, run-file hook) and the base layer it uses (validation, outputs, the BLAS
-    pinning of studies.executors) - none of the library the commands' option defaults import."""
+    """``fem-racket --help`` lists each command from its name and summary
+    (:data:`fem_racket.cli.commands.COMMANDS`): no command's module, and of the package only the
+    command line's own entry (its parser, signals, run-file hook) and the base layer it uses
+    (validation, outputs, the BLAS pinning of studies.executors) - none of the library the
+    commands' option defaults import."""
     modules = imported(["--help"], tmp_path)
-    rooms = ("frame", "contact", "strings", "impact", "io", "paper", "cli.commands")
+    rooms = ("frame", "contact", "strings", "impact", "io", "paper")
     assert not loaded(modules, tuple(f"fem_racket.{room}" for room in rooms))
+    assert not [m for m in modules if m.startswith("fem_racket.cli.commands.")]
     studies = {m for m in modules if m.startswith("fem_racket.studies.")}
     assert studies <= {"fem_racket.studies.executors", "fem_racket.studies.pool"}
 

@@ -136,3 +136,11 @@ def test_no_torsion_data_no_twistweight(mesh, head):
     bare = FrameMesh(mesh.points, mesh.EI, mesh.rhoA)
     out = catalogue(add_lead(bare, [Lead("3/9", 0.010)], head), f1=False)
     assert out.twist_weight is None
+
+
+def test_more_lead_than_three_rackets_is_refused():
+    from fem_racket.frame.lead import MAX_LEAD_G
+
+    with pytest.raises(InputError, match=r"add-mass = '12:1e9' is not allowed: .* at most 1000 g"):
+        parse_lead("12:1e9")
+    assert parse_lead(f"12:{MAX_LEAD_G:g}").mass == pytest.approx(1.0, rel=1e-15)

@@ -52,13 +52,14 @@ def test_studies_refuse_keys_they_would_ignore(capsys, tmp_path, command):
 
 
 def test_neutral_values_axes_and_other_commands_pass(capsys, tmp_path):
-    # a swing of 0 m/s, offset 0 and the standard preset change nothing; map spans the
-    # positions itself; modes (no impact) skips the impact's keys of a shared file; the
-    # example file checks for every command
+    # a swing of 0 m/s, its default reference point, offset 0 and the standard preset change
+    # nothing; map spans the positions itself; modes (no impact) skips the impact's keys of a
+    # shared file; the example file checks for every command (a pivot without a swing is
+    # refused: test_a_swing_point_without_a_swing_is_refused)
     path = tmp_path / "run.toml"
     path.write_text(
-        "[impact]\nracket_speed_m_s = 0.0\npivot_m = 0.1\noffset_m = 0.0\nposition_x_over_l = 0.7\n"
-        '[frame]\npreset = "standard"\n'
+        "[impact]\nracket_speed_m_s = 0.0\nreference_x_over_l = 0.75\noffset_m = 0.0\n"
+        'position_x_over_l = 0.7\n[frame]\npreset = "standard"\n'
     )
     assert main(["config", "--check", str(path)]) == 0, capsys.readouterr().err
     assert "not for this command" not in capsys.readouterr().out  # every command runs it
@@ -67,3 +68,22 @@ def test_neutral_values_axes_and_other_commands_pass(capsys, tmp_path):
     assert "frequenc" in capsys.readouterr().out.lower()
     assert main(["config", "--check", str(path)]) == 0  # a note for the studies, not an error
     assert "[sweep] not for this command: " in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("key", ["pivot_m = 0.1", "reference_x_over_l = 0.6"])
+@pytest.mark.parametrize("command", ["simulate", "sweep", "export-vtk"])
+def test_a_swing_point_without_a_swing_is_refused(capsys, tmp_path, command, key):
+    # the swing's point or pivot without a swing would be dropped (before: passed on purpose);
+    # the commands with the option refuse it as on their command line, the others as a key
+    # they have no option for
+    path = tmp_path / "run.toml"
+    path.write_text(f"[impact]\n{key}\n")
+    out = {"simulate": "x.json", "sweep": "x.nc", "export-vtk": "x"}[command]
+    assert main([command, "--config", str(path), "--out", str(tmp_path / out)]) == 2
+    err = capsys.readouterr().err
+    name = key.split("_")[0]
+    assert err.count("\n") == 1 and f"{name}" in err and "is not allowed" in err, err
+    if command == "export-vtk":
+        assert "would be ignored" in err
+    else:
+        assert "without a swing" in err

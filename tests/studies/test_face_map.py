@@ -87,3 +87,33 @@ def test_sweep_with_an_offset_axis(capsys, tmp_path):
         assert np.all(cor[:, 1] > cor[:, 0])  # off axis the racket rolls: less rebound
     code, _, err = run(capsys, "sweep", "--offset", "0.2", "--out", tmp_path / "x.nc")
     assert code == 2 and "offset = 0.2 m is not allowed" in err
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"options": {"elements": 10}}, "elements = 10 is not allowed with a FrameModel"),
+        ({"reference": 0.6}, "reference = 0.6 x/L is not allowed without a swing"),
+        ({"offsets": np.linspace(-0.1, 0.1, 20_000)}, "offsets = 20000 values with positions"),
+    ],
+)
+def test_face_map_refuses_what_it_would_drop(standard_model, kwargs, message):
+    with pytest.raises(InputError, match=message):
+        face_map(standard_model, **{"positions": X, "offsets": Y, **kwargs})
+
+
+def test_spin_map_refuses_modes_and_separation_under_a_law(standard_model):
+    from fem_racket.contact.presets import get_law
+    from fem_racket.impact.incidence import Incidence
+    from fem_racket.studies.spin_map import spin_map
+
+    law = get_law("hunt-crossley")
+    for options, message in (
+        ({"modes": 10}, "modes = 10 is not allowed with solver 'general'"),
+        ({"separation": "force"}, "separation is not allowed with contact law"),
+    ):
+        with pytest.raises(InputError, match=message):
+            spin_map(
+                standard_model, positions=X, offsets=Y, incidence=Incidence(angle=30.0),
+                options={"law": law, **options},
+            )  # fmt: skip

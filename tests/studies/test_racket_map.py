@@ -89,3 +89,46 @@ def test_a_point_under_a_nonlinear_law_is_one_simulate(model):
 def test_bad_input(model, kwargs, message):
     with pytest.raises(InputError, match=message):
         racket_map(model, **kwargs)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        # what the law cannot use, refused by the general solver and the problem's own checks
+        ({"law": "hunt-crossley", "modes": 10}, "modes = 10 is not allowed with solver 'general'"),
+        ({"law": "hunt-crossley", "separation": "force"}, "separation = 'force' is not allowed"),
+        ({"law": "hunt-crossley", "kcb_factor": 2.0}, "kcb_factor = 2.0 is not allowed"),
+        # a model is meshed already (as ImpactProblem.build refuses it)
+        ({"elements": 10}, "elements = 10 is not allowed with a FrameModel"),
+        # a swing's point without a swing would be dropped; the pivot sets the COP at rest
+        ({"reference": 0.6}, "reference = 0.6 x/L is not allowed without a swing"),
+        # too many points, refused before the engine's arrays
+        ({"positions": np.linspace(0.5, 0.9, 100_001)}, "positions = 100001 values"),
+    ],
+)
+def test_what_the_map_would_drop_is_refused(model, kwargs, message):
+    with pytest.raises(InputError, match=message):
+        racket_map(model, **kwargs)
+
+
+def test_apparent_cor_along_refuses_modes_under_a_law(model):
+    from fem_racket.contact.presets import get_law
+    from fem_racket.studies.racket_map import apparent_cor_along
+
+    law = get_law("hunt-crossley")
+    with pytest.raises(InputError, match="modes = 10 is not allowed with solver 'general'"):
+        apparent_cor_along(model, [0.7], [20.0], law=law, modes=10)
+    e = apparent_cor_along(model, [0.7], [20.0], law=law)  # the law's own end condition
+    assert e[0] == racket_map(model, law=law, positions=[0.6, 0.7, 0.8]).apparent_cor[1]
+
+
+def test_elements_mesh_a_frame_and_a_mesh_of_that_count_passes():
+    from fem_racket.frame.mesh import frame_mesh
+    from fem_racket.frame.segments import standard_frame
+
+    x = [0.6, 0.7, 0.8]
+    a = racket_map(standard_frame(), elements=20, positions=x).apparent_cor
+    mesh = frame_mesh(standard_frame(), 20)
+    assert np.array_equal(racket_map(mesh, elements=20, positions=x).apparent_cor, a)
+    with pytest.raises(InputError, match="elements = 10 is not allowed with a mesh: it has 20"):
+        racket_map(mesh, elements=10, positions=x)

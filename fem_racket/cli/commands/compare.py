@@ -25,6 +25,7 @@ from fem_racket.cli.common import (
     print_written,
     run_parameters,
 )
+from fem_racket.cli.options.impact import check_swing_options
 from fem_racket.cli.options.lead import add_lead_option, leads_of
 from fem_racket.cli.options.output import add_overwrite_json
 
@@ -93,11 +94,17 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.io.compare_files import check_compare_output, table_rows, write_compare
     from fem_racket.io.setups import compare_play, read_setups
     from fem_racket.studies.compare import compare, differences
+    from fem_racket.studies.grid_values import value_count
+    from fem_racket.studies.map_options import check_map_points
     from fem_racket.validation import InputError, work_begins
 
     if len(args.rackets) < 2:
         work_begins()  # a run file cannot name the rackets: its checks end here
         raise InputError(f"rackets = {len(args.rackets)} given is not allowed: need at least 2")
+    check_swing_options(args)  # compare shows no centre of percussion: --pivot needs a swing
+    check_map_points(
+        value_count(args.positions), 1 if args.offsets is None else value_count(args.offsets)
+    )
     outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
     for path in outs:
         check_compare_output(path, overwrite=args.overwrite)

@@ -36,6 +36,7 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.faces import (
     add_face_options,
+    check_map_size,
     face_asked,
     map_impact,
     map_rackets,
@@ -45,6 +46,7 @@ from fem_racket.cli.options.faces import (
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
 from fem_racket.impact.system import SEPARATION_EVENTS
@@ -192,6 +194,17 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("no_files = True is not allowed with --out: give one of them")
     default = not (args.out or args.no_files or args.json)
     outs = [Path(p) for p in (args.out or [])] or ([DEFAULT_OUTPUT] if default else [])
+    if not outs and "overwrite" in getattr(args, "explicit_options", ()):
+        raise InputError(
+            "--overwrite is not allowed without files: --no-files or --json without --out "
+            "writes none"
+        )
+    if args.mesh and not args.preset and "elements" in given_options(args):
+        raise InputError(
+            "--elements is not allowed with --mesh: the mesh file gives the cells and their EI "
+            "and rhoA (--elements meshes a --preset)"
+        )
+    check_map_size(args)
     files = [t.path for t in map_targets(outs)]
     overwrite = replace_own(args, default, files)
     check_map_outputs(outs, overwrite=overwrite)  # also: no path given twice

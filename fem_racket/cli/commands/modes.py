@@ -34,6 +34,7 @@ def run(args: argparse.Namespace) -> int:
     """Compute and print the modal analysis."""
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.frame.modal import mode_nodes
+    from fem_racket.io.config_modes import RacketModes
     from fem_racket.validation import InputError, work_begins
 
     if args.count < 1:
@@ -50,25 +51,11 @@ def run(args: argparse.Namespace) -> int:
         )
     props = fm.props
     modes = progress_bar(range(fm.omega.size), desc="nodes", unit="mode", enabled=progress_of(args))
-    nodes = [mode_nodes(model.fe, fm.shapes[:, k]).tolist() for k in modes]
-    specs = catalogue(model.mesh, f1=False).as_dict()
-    data = {
-        "mass_kg": props.mass,
-        "cg_x_over_l": props.cg_over_length,
-        "cg_m": props.cg,
-        "swing_weight_kg_cm2": specs["swing_weight_kg_cm2"],
-        "twist_weight_kg_cm2": specs["twist_weight_kg_cm2"],
-        "inertia_cg_kg_m2": props.inertia,
-        "length_m": props.length,
-        "elements": model.mesh.n_elements,
-        "frequencies_hz": fm.frequencies.tolist(),
-        "nodes_x_over_l": nodes,
-    }
-    if model.mesh.has_torsion:  # the frame in torsion (fem_racket.frame.torsion)
-        tm = model.torsion.modes(args.count)
-        data["polar_moment_kg_m2"] = tm.polar_moment
-        data["twist_weight_kg_cm2"] = tm.polar_moment * 1e4
-        data["torsion_frequencies_hz"] = tm.frequencies.tolist()
+    nodes = tuple(mode_nodes(model.fe, fm.shapes[:, k]) for k in modes)
+    # the frame in torsion (fem_racket.frame.torsion) where the mesh has its data
+    torsion = model.torsion.modes(args.count) if model.mesh.has_torsion else None
+    specs = catalogue(model.mesh, f1=False)
+    data = RacketModes(fm, torsion, nodes, specs, model.mesh.n_elements).summary()
     if args.json:
         print_json(data)
         return 0
@@ -76,7 +63,7 @@ def run(args: argparse.Namespace) -> int:
     print(f"{'centre of gravity':<28} {props.cg_over_length:>12.4f} x/L ({props.cg * 1e3:.1f} mm)")
     print(f"{'inertia about CG':<28} {props.inertia:>12.6f} kg m^2")
     print(f"{'mode':>4} {'frequency [Hz]':>16}  nodes [x/L]")
-    for k, (f, nd) in enumerate(zip(fm.frequencies, nodes, strict=True), start=1):
+    for k, (f, nd) in enumerate(zip(fm.frequencies, data["nodes_x_over_l"], strict=True), start=1):
         print(f"{k:>4} {f:>16.2f}  " + ", ".join(f"{x:.3f}" for x in nd))
     if model.mesh.has_torsion:
         ip = data["polar_moment_kg_m2"]

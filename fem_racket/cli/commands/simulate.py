@@ -54,7 +54,7 @@ from fem_racket.outputs import (
     check_targets,
     sidecar_path,
 )
-from fem_racket.validation import InputError, show_path
+from fem_racket.validation import InputError, show, show_path
 
 if TYPE_CHECKING:
     from fem_racket.frame.hand import Hand
@@ -161,6 +161,7 @@ def _run_held(args: argparse.Namespace, hand: Hand, files: list[Path]) -> int:
     from fem_racket.impact.simulate import simulate
 
     _check_hand(args)
+    _check_unwritten(args, "output_step")
     model = build_model(args)
     window = DEFAULT_WINDOW if args.hand_shock_window is None else args.hand_shock_window
     result = simulate(
@@ -228,11 +229,25 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
     ]
 
 
+def _check_unwritten(args: argparse.Namespace, dest: str) -> None:
+    """Refuse ``--output-step`` (the head-on and held impacts compute histories only to write
+    them) or ``--overwrite`` given on the command line without ``--out``: nothing would use it
+    (a run file's ``[output]`` and ``[simulate]`` keys serve other commands and the Python
+    method too)."""
+    if not args.out and dest in getattr(args, "explicit_options", ()):
+        value = "" if dest == "overwrite" else f" {show(getattr(args, dest))}"
+        raise InputError(
+            f"--{dest.replace('_', '-')}{value} is not allowed without --out: it sets the "
+            "histories or files written, and none are"
+        )
+
+
 def run(args: argparse.Namespace) -> int:
     """Simulate and print the result (and write it with ``--out``)."""
     from fem_racket.impact.simulate import simulate
 
     check_output_step(args.output_step)
+    _check_unwritten(args, "overwrite")
     hand = hand_from_args(args)
     files = _check_out(args) if args.out else []
     incidence, strings = incidence_from_args(args), strings_from_args(args)
@@ -246,6 +261,7 @@ def run(args: argparse.Namespace) -> int:
         return run_strung(args, strings, build_model(args), files)
     if hand is not None:
         return _run_held(args, hand, files)
+    _check_unwritten(args, "output_step")
     model = build_model(args)
     # Histories only when written: the printed summary needs t = 0 and t_c alone, which the
     # exact solver gets from the batched engine (to --tolerance in COR).

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import Any
 
 from fem_racket.cli.common import (
     add_config_option,
@@ -16,7 +17,6 @@ from fem_racket.cli.common import (
     run_parameters,
 )
 from fem_racket.cli.options.drawing import add_quiet_option, progress_of
-from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options, option_name
@@ -39,7 +39,13 @@ def _size(text: str) -> tuple[int, int]:
         ) from None
 
 
-def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None) -> None:
+def _add_common(
+    p: argparse.ArgumentParser, out: dict[str, Any], *, scale: float, frames: int | None
+) -> None:
+    """What export-vtk and animate both take, in this order: ``--out`` (``out``: its default,
+    metavar and help), the impact, the drawing (``scale`` and ``frames`` their defaults),
+    ``--overwrite``, ``--quiet`` and the string bed."""
+    p.add_argument("--out", type=Path, **out)
     add_impact_options(p)
     g = p.add_argument_group("drawing")
     g.add_argument(
@@ -76,35 +82,30 @@ def _add_common(p: argparse.ArgumentParser, *, scale: float, frames: int | None)
         "--overwrite", action="store_true", help="replace an existing output file or folder"
     )
     add_quiet_option(p)
+    add_strings_options(p)
 
 
 def add_export_arguments(p: argparse.ArgumentParser) -> None:
     """The ``export-vtk`` command's options."""
-    p.add_argument(
-        "--out",
-        type=Path,
-        default=DEFAULT_FOLDER,
-        metavar="DIR",
-        help=f"output folder (default {DEFAULT_FOLDER}, replacing the series an earlier run wrote "
-        "there); open DIR/impact.pvd in ParaView",
-    )
-    _add_common(p, scale=1.0, frames=None)
-    add_strings_options(p)
+    out = {
+        "default": DEFAULT_FOLDER,
+        "metavar": "DIR",
+        "help": f"output folder (default {DEFAULT_FOLDER}, replacing the series an earlier run "
+        "wrote there); open DIR/impact.pvd in ParaView",
+    }
+    _add_common(p, out, scale=1.0, frames=None)
     add_config_option(p, private=("out",))  # a folder, not output.out
 
 
 def add_animate_arguments(a: argparse.ArgumentParser) -> None:
     """The ``animate`` command's options."""
-    a.add_argument(
-        "--out",
-        type=Path,
-        default=DEFAULT_ANIMATION,
-        metavar="FILE",
-        help=f"output file, .gif or .mp4 (default {DEFAULT_ANIMATION}, replacing the animation an "
-        "earlier run wrote there)",
-    )
-    _add_common(a, scale=10.0, frames=100)
-    add_strings_options(a)
+    out = {
+        "default": DEFAULT_ANIMATION,
+        "metavar": "FILE",
+        "help": f"output file, .gif or .mp4 (default {DEFAULT_ANIMATION}, replacing the "
+        "animation an earlier run wrote there)",
+    }
+    _add_common(a, out, scale=10.0, frames=100)
     a.add_argument(
         "--fps",
         type=float,
@@ -223,7 +224,7 @@ def run_animate(args: argparse.Namespace) -> int:
     from fem_racket.io.animate import AnimationOptions, animation_targets, render_animation
 
     overwrite = _check_early(args)
-    options = options_from_args(args, AnimationOptions)
+    options = AnimationOptions.of(vars(args))
     strings = strings_from_args(args)
     model = None
     if strings is None:

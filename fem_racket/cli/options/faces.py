@@ -29,6 +29,7 @@ from fem_racket.validation import InputError
 __all__ = [
     "MAP_IMPACT",
     "add_face_options",
+    "check_map_size",
     "face_asked",
     "map_impact",
     "map_rackets",
@@ -79,8 +80,11 @@ def add_face_options(g: argparse._ArgumentGroup) -> None:
 
 
 def map_impact(args: argparse.Namespace) -> dict[str, Any]:
-    """The options of :data:`MAP_IMPACT` as keywords of the maps."""
-    return {dest: getattr(args, dest) for dest in MAP_IMPACT}
+    """The options of :data:`MAP_IMPACT` given (on the command line or in a run file) as
+    keywords of the maps, which take the same defaults and refuse what the solver or the law
+    cannot use (``--modes`` or ``--separation`` with ``--law``)."""
+    given = given_options(args)
+    return {dest: getattr(args, dest) for dest in MAP_IMPACT if dest in given}
 
 
 def print_maps_json(maps: list) -> None:
@@ -96,6 +100,20 @@ def _oblique(args: argparse.Namespace) -> bool:
 def _oblique_given(args: argparse.Namespace) -> str:
     """The oblique options given, as the refusals name them (``--angle, --spin``)."""
     return ", ".join(OBLIQUE[d][0] for d in OBLIQUE if getattr(args, d, None) is not None)
+
+
+def check_map_size(args: argparse.Namespace) -> None:
+    """Refuse a map of more points than :data:`~fem_racket.studies.map_options.MAX_MAP_POINTS`
+    (``--positions`` x ``--offsets``, counted from their text before any array is made)."""
+    from fem_racket.studies.grid_values import value_count
+    from fem_racket.studies.map_options import check_map_points
+
+    spin = _oblique(args) and "positions" not in given_options(args)
+    offsets = args.offsets or (SPIN_OFFSETS if _oblique(args) else None)
+    check_map_points(
+        value_count(SPIN_POSITIONS if spin else args.positions),
+        1 if offsets is None else value_count(offsets),
+    )
 
 
 def face_asked(args: argparse.Namespace) -> bool:
@@ -143,7 +161,6 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
         for dest in ("kcb", "zeta", "separation", "modes"):
             if dest in given:
                 raise InputError(f"{dest} is not allowed with --law {law.name}: the law's own")
-            del options[dest]
     maps = map_rackets(
         spin_map,
         args,

@@ -1,7 +1,7 @@
 """The library's options objects from the parsed options: the fields of a small frozen dataclass
-(:class:`~fem_racket.studies.sweep_options.SweepSolving`, ``RefineOptions``,
-``AnimationOptions`` ...) read from the argparse namespace by their names, once per command,
-instead of a chain of ``field=args.field`` keywords restated in each command."""
+(:class:`~fem_racket.studies.sweep_options.SweepSolving`, ``RefineOptions``, the design
+study's groups ...) read from the argparse namespace by their names, once per command, instead
+of a chain of ``field=args.field`` keywords restated in each command."""
 
 from __future__ import annotations
 

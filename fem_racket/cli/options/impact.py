@@ -12,7 +12,8 @@ from fem_racket.cli.options.frame import add_frame_options
 from fem_racket.cli.options.hand import HAND_OPTIONS, add_hand_options, hand_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lists import add_options
-from fem_racket.contact.linear import DEFAULT_BALL_MASS
+from fem_racket.cli.options.runfile import given_options
+from fem_racket.contact.linear import DEFAULT_BALL_MASS, KCB_SPEED_RANGE
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.settings import BASES
@@ -21,7 +22,7 @@ from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_defaults import DEFAULTS as SIMULATE_DEFAULTS
 from fem_racket.io.config_defaults import PLAY_DEFAULTS
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError, check_range, show
 
 __all__ = [
     "DEFAULT_OUTPUT_STEP",
@@ -35,6 +36,7 @@ __all__ = [
     "add_speed_option",
     "add_swing_options",
     "check_output_step",
+    "check_swing_options",
     "hand_from_args",
     "impact_kwargs",
     "swing_from_args",
@@ -120,15 +122,55 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     add_options(g, SWING, type=float)
 
 
+#: The units of the swing's point options, as the refusals name them.
+_SWING_UNITS = {"reference": "x/L", "pivot": "m"}
+#: Largest |--racket-speed| [m/s]: racket heads move at up to about 40-50 m/s in the fastest
+#: serves (an assumption of this bound), and 100 m/s is the top of the speeds the paper's K_CB
+#: law is given for (:data:`fem_racket.contact.linear.KCB_SPEED_RANGE`).
+MAX_RACKET_SPEED = KCB_SPEED_RANGE[1]
+
+
+def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False) -> None:
+    """Refuse a ``--racket-speed`` beyond :data:`MAX_RACKET_SPEED`, or one whose closing speed
+    with ``--speed`` at the reference point leaves the paper's K_CB range (K_CB from the speed:
+    no --kcb, no --law); and a swing's ``--reference`` (and ``--pivot`` unless
+    ``pivot_at_rest``: the maps' centre of percussion) given, on the command line or in a run
+    file, without a swing (``--racket-speed`` 0): the racket at rest would drop them."""
+    v_r = args.racket_speed
+    check_range("racket_speed", v_r, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
+    closing = getattr(args, "speed", 0.0) + v_r
+    linear = getattr(args, "kcb", None) is None and getattr(args, "law", None) in (None, "linear")
+    if v_r != 0.0 and linear and math.isfinite(closing) and closing > KCB_SPEED_RANGE[1]:
+        raise InputError(
+            f"racket_speed = {show(v_r)} m/s is not allowed with speed = {show(args.speed)} "
+            f"m/s: the closing speed {closing:g} m/s is above the {KCB_SPEED_RANGE[1]:g} m/s "
+            "where the paper's K_CB holds (give --kcb)"
+        )
+    check_range("reference", args.reference, 0.0, 1.0, unit="x/L")  # as the swing's own check
+    if v_r != 0.0:
+        return
+    given = given_options(args)
+    for name in ("reference", "pivot"):
+        if name in given and not (name == "pivot" and pivot_at_rest):
+            raise InputError(
+                f"{name} = {show(getattr(args, name))} {_SWING_UNITS[name]} is not allowed "
+                "without a swing: give --racket-speed"
+            )
+
+
 def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """The swing's options as the keywords ``racket_speed``, ``reference`` and ``pivot`` of the
     maps (:func:`fem_racket.studies.racket_map.racket_map`, ``face_map``) and of compare's
-    ``Play``, which build the swing themselves."""
+    ``Play``, which build the swing themselves; ``--reference`` without a swing refused
+    (``--pivot`` sets the maps' centre of percussion at rest too)."""
+    check_swing_options(args, pivot_at_rest=True)
     return {name: getattr(args, name) for name, *_ in SWING}
 
 
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
-    """The swing the options give for a racket of ``length`` [m]; None for a racket at rest."""
+    """The swing the options give for a racket of ``length`` [m]; None for a racket at rest
+    (the options checked by :func:`check_swing_options`)."""
+    check_swing_options(args)
     if args.racket_speed == 0.0:
         Swing.from_speed(0.0, length, reference=args.reference, pivot=args.pivot)  # checks
         return None

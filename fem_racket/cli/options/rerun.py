@@ -14,29 +14,16 @@ replaced without ``--overwrite``.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 from collections.abc import Iterable
 from pathlib import Path
+
+from fem_racket.io.config_rerun import own_json_output
 
 __all__ = ["own_output", "replace_own"]
 
 #: Files whose provenance lives in a sidecar ``<file>.json``.
 SIDECAR_SUFFIXES = frozenset({".csv", ".vtu", ".gif", ".mp4"})
-#: The marker files of output folders: the VTK series', the design study's.
-FOLDER_MARKERS = ("provenance.json", "result.json")
-
-
-def _json_is_ours(path: Path) -> bool:
-    """A JSON file holding fem_racket's provenance, at its top or under ``"provenance"``."""
-    try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, ValueError):
-        return False
-    if not isinstance(data, dict):
-        return False
-    meta = data.get("provenance", data)
-    return isinstance(meta, dict) and meta.get("software") == "fem_racket"
 
 
 def _netcdf_is_ours(path: Path) -> bool:
@@ -51,20 +38,17 @@ def _netcdf_is_ours(path: Path) -> bool:
 
 def own_output(path: str | os.PathLike) -> bool:
     """True if the existing file or folder ``path`` is an output fem-racket wrote (see the
-    module docstring); a path that cannot be read, or holds no provenance, is not."""
-    from fem_racket.outputs import sidecar_path
+    module docstring); a path that cannot be read, or holds no provenance, is not. Folders, JSON
+    files and files with a sidecar are read as the run files' methods read them
+    (:func:`fem_racket.io.config_rerun.own_json_output`)."""
     from fem_racket.paper.owned import written_by_fem_racket
 
     p = Path(path)
-    if p.is_dir():
-        return any(_json_is_ours(p / name) for name in FOLDER_MARKERS)
     suffix = p.suffix.lower()
-    if suffix in SIDECAR_SUFFIXES:
-        return _json_is_ours(sidecar_path(p))
+    if p.is_dir() or suffix in SIDECAR_SUFFIXES or suffix == ".json":
+        return own_json_output(p)
     if suffix == ".nc":
         return _netcdf_is_ours(p)
-    if suffix == ".json":
-        return _json_is_ours(p)
     return written_by_fem_racket(p)
 
 
