@@ -175,7 +175,11 @@ def sensitivity_file(cfg: RunConfig, out: Any = None) -> Any:
 
     require("SALib", "RunConfig.sensitivity")
     problem, sobol, own = _problem(cfg, "sensitivity", "sensitivity", dict(_SOBOL))
-    files = OutputOptions(out or own.get("out"), _overwrite(cfg, own))
+    out = out or own.get("out")
+    # [output] overwrite serves every command: skipped where nothing is written (the table's
+    # own overwrite without out is refused, as the command refuses it)
+    overwrite = _overwrite(cfg, own) if out else bool(own.get("overwrite", False))
+    files = OutputOptions(out, overwrite)
     run = SensitivityRun(problem, sobol["output"], sobol["designs"], own.get("seed", 1),
                          _execution(own), files)  # fmt: skip
     return run_sensitivity(run)

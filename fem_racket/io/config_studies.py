@@ -247,15 +247,14 @@ def refine_file(cfg: RunConfig) -> dict[str, Any]:
     """The refinement studies ``fem-racket refine --config`` computes from ``cfg``: family ->
     :class:`~fem_racket.studies.refine.RefinementStudy` (both families by default)."""
     from fem_racket.studies.options import field_names
-    from fem_racket.studies.refine import FAMILIES, RefineOptions, refinement_study
+    from fem_racket.studies.refine import FAMILIES, RefineOptions, graded, refinement_study
 
     o = _options(cfg, "refine", REFINE_DEFAULTS)
     families = FAMILIES if o["family"] == "both" else (o["family"],)
     # the table's values of RefineOptions' fields (the family is each study's own)
     study = {k: o[k] for k in field_names(RefineOptions) if k in o and k != "family"}
+    study |= {"n_modes": o["count"], "progress": False}
     return {
-        fam: refinement_study(
-            cfg.frame(), o["elements"], family=fam, n_modes=o["count"], progress=False, **study
-        )
+        fam: refinement_study(cfg.frame(), o["elements"], **graded(study, fam, o["family"]))
         for fam in families
     }

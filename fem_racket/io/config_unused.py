@@ -79,7 +79,8 @@ def refuse_unused(cfg: Any, command: str, dests: Iterable[str], given: Iterable[
     """Refuse the first key of :data:`IMPACT_TABLES` in ``cfg`` (a RunConfig) whose option
     (argparse dest) is not in ``dests`` when ``command`` computes impacts.
 
-    A key at its :data:`NEUTRAL` value changes nothing and passes; a key of :data:`SPANNED_WITH` passes when its option is in ``given`` (the options
+    A key at its :data:`NEUTRAL` value changes nothing and passes; a key of
+    :data:`SPANNED_WITH` passes when its option is in ``given`` (the options
     the command line sets) or in the command's own table.
 
     Raises

@@ -25,7 +25,8 @@ from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.sensitivity import SobolIndices, sobol_indices
 from fem_racket.studies.design.solvers import optimize
-from fem_racket.validation import check_choice, work_begins
+from fem_racket.studies.design.unused import METHODS, refuse_unused_sensitivity
+from fem_racket.validation import InputError, check_choice, work_begins
 
 __all__ = [
     "METHODS",
@@ -36,9 +37,6 @@ __all__ = [
     "run_optimization",
     "run_sensitivity",
 ]
-
-#: Solvers by name: scipy.optimize's local and global methods, pymoo's NSGA-II.
-METHODS = ("SLSQP", "trust-constr", "differential-evolution", "nsga2")
 
 
 @dataclass(frozen=True)
@@ -58,6 +56,10 @@ class OutputOptions:
     out: str | os.PathLike | None = None
     overwrite: bool = False
     parameters: dict[str, Any] | None = None
+
+    def __post_init__(self) -> None:
+        if self.overwrite and self.out is None:
+            raise InputError("overwrite = True is not allowed without out: nothing is written")
 
 
 @dataclass(frozen=True, eq=False)
@@ -139,6 +141,8 @@ def run_optimization(run: OptimizationRun) -> DesignResult:
     check_choice("method", s.method, METHODS)
     sizes = {"maxiter": s.maxiter, "popsize": s.popsize, "pop_size": s.pop_size}
     check_study_size(problem, s.method, generations=s.generations, **sizes)
+    if files.out is None and run.restart:
+        raise InputError("restart = True is not allowed without out: no history is kept")
     if files.out is not None:
         check_study_folder(files.out, overwrite=files.overwrite)
     work_begins()
@@ -179,6 +183,7 @@ def run_sensitivity(run: SensitivityRun) -> SobolIndices:
     check_choice(
         "output", problem.objectives[0] if run.output is None else run.output, tuple(names)
     )
+    refuse_unused_sensitivity(problem, problem.objectives[0] if run.output is None else run.output)
     check_sobol_size(problem, run.designs)
     if out is not None:
         check_targets([Path(out), Path(str(out) + ".json")], overwrite=files.overwrite)

@@ -38,12 +38,14 @@ from fem_racket.studies.refine_options import (
     DEFAULT_POSITIONS,
     FAMILIES,
     RefineOptions,
+    graded,
 )
-from fem_racket.validation import InputError, check_choice, check_integer, check_range
+from fem_racket.validation import InputError, check_choice, check_integer, check_range, show
 
 __all__ = [
     "DEFAULT_ELEMENTS",
     "DEFAULT_GRADING",
+    "graded",
     "DEFAULT_POSITIONS",
     "FAMILIES",
     "RefineOptions",
@@ -238,6 +240,11 @@ def refinement_study(
     impact = {k: getattr(o, k) for k in ("ball_mass", "kcb", "zeta", "separation")}
     impact = {k: v for k, v in impact.items() if v is not None}
     check_choice("family", family, FAMILIES)
+    if family == "uniform" and grading != DEFAULT_GRADING:
+        raise InputError(
+            f"grading = {show(grading)} is not allowed with family 'uniform': only the graded "
+            "family grades its cells"
+        )
     check_integer("modes", n_modes)
     pos = np.array([check_range("position", p, 0.0, 1.0, unit="x/L") for p in positions])
     if pos.size == 0:

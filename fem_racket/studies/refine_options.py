@@ -5,10 +5,18 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from fem_racket.frame.model import DEFAULT_MODES
 
-__all__ = ["DEFAULT_ELEMENTS", "DEFAULT_GRADING", "DEFAULT_POSITIONS", "FAMILIES", "RefineOptions"]
+__all__ = [
+    "DEFAULT_ELEMENTS",
+    "DEFAULT_GRADING",
+    "DEFAULT_POSITIONS",
+    "FAMILIES",
+    "RefineOptions",
+    "graded",
+]
 
 #: Element counts of the meshes compared.
 DEFAULT_ELEMENTS = (5, 10, 20, 40, 80, 160, 320)
@@ -36,3 +44,14 @@ class RefineOptions:
     kcb: float | None = None
     zeta: float | None = None
     separation: str | None = None
+
+
+def graded(options: dict[str, Any], family: str, chosen: str) -> dict[str, Any]:
+    """The keywords of one ``family``'s study from those of a run of the ``chosen`` family
+    ("uniform", "graded" or "both"): ``options`` with ``family``, without ``grading`` for the
+    uniform study of a run of both (the graded one uses it; the uniform family alone refuses
+    it)."""
+    out = options | {"family": family}
+    if family == "uniform" and chosen == "both":
+        out.pop("grading", None)
+    return out

@@ -55,7 +55,8 @@ def test_sensitivity_in_python_is_the_command(capsys, tmp_path):
 
     path = tmp_path / "run.toml"
     text = DESIGN.format(table="sensitivity", extra="designs = 16\nseed = 3")
-    path.write_text(text.replace("link_ei = true\n", ""))
+    # no mass_range: a sensitivity analysis applies no constraint (refused, it was ignored)
+    path.write_text(text.replace("link_ei = true\n", "").replace('mass_range = "start"\n', ""))
     s = load_config(path).sensitivity()
     cli = run_json(capsys, "sensitivity", "--config", path)
     assert json.loads(json.dumps(sobol_json(s))) == cli
@@ -75,3 +76,22 @@ def test_design_tables_refuse_as_the_command(capsys, tmp_path):
         assert words.split(" is ")[0] in capsys.readouterr().err
         with pytest.raises(InputError, match=words.replace("(", r"\(").replace(".", r"\.")):
             getattr(load_config(path), command)(tmp_path / "x")
+
+
+def test_sensitivity_overwrite_without_out(capsys, tmp_path):
+    # the shared [output] overwrite is skipped where nothing is written; the table's own is
+    # refused, by the command and by the method alike (issue 21.3)
+    pytest.importorskip("SALib")
+    path = tmp_path / "run.toml"
+    text = DESIGN.format(table="sensitivity", extra="designs = 8").replace(
+        'mass_range = "start"\n', ""
+    )
+    path.write_text("[output]\noverwrite = true\n" + text)
+    assert main(["sensitivity", "--config", str(path), "--quiet"]) == 0
+    load_config(path).sensitivity()
+    capsys.readouterr()
+    path.write_text(text + "overwrite = true\n")
+    assert main(["sensitivity", "--config", str(path)]) == 2
+    assert "sensitivity.overwrite = True" in capsys.readouterr().err
+    with pytest.raises(InputError, match="overwrite = True is not allowed without out"):
+        load_config(path).sensitivity()

@@ -113,7 +113,8 @@ def test_output_overwrite_replaces_as_the_command_does(cwd, capsys, command):
 def test_sensitivity_takes_output_overwrite(cwd, capsys):
     pytest.importorskip("SALib")
     text = STUDY.format(table="sensitivity", extra="designs = 16\nseed = 3")
-    text = text.replace("link_ei = true\n", "")
+    # no mass_range: a sensitivity analysis applies no constraint (refused, it was ignored)
+    text = text.replace("link_ei = true\n", "").replace('mass_range = "start"\n', "")
     Path("run.toml").write_text(text)
     assert _cli(capsys, "sensitivity", "--out", "s.png") == (0, "")
     code, err = _cli(capsys, "sensitivity", "--out", "s.png")

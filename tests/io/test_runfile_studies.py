@@ -93,7 +93,8 @@ def test_refused_alike(cwd, capsys, command, keys, words):
 
 
 def test_refine_takes_the_format_of_its_plot(cwd, capsys):
-    Path("run.toml").write_text(REFINE + 'format = "svg"\nno_files = true\n')  # was refused
+    # was refused; a csv to write (with no_files the format would be ignored: refused now)
+    Path("run.toml").write_text(REFINE + 'format = "svg"\ncsv = "r.csv"\n')
     cli = run_json(capsys, "refine", "--config", "run.toml")
     studies = load_config("run.toml").refine()
     assert cli["family"] == "uniform" and set(studies) == {"uniform", "graded"}

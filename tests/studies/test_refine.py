@@ -94,6 +94,9 @@ def test_bad_study_input():
         refinement_study(None, (5, 0))
     with pytest.raises(InputError, match="position"):
         refinement_study(None, (5, 10), positions=(1.5,))
+    # issue 21.3: the uniform family grades nothing, so a grading is refused, not ignored
+    with pytest.raises(InputError, match=r"grading = 2.0 is not allowed with family 'uniform'"):
+        refinement_study(None, (5,), family="uniform", grading=2.0)
 
 
 def test_cli_refine_json_contract(tmp_path, capsys):

@@ -19,6 +19,7 @@ from fem_racket.cli.common import (
     run_parameters,
     significant,
 )
+from fem_racket.cli.options.output import overwrite_of
 from fem_racket.outputs import Target, check_targets
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS, calibrate
 
@@ -58,6 +59,7 @@ def run(args: argparse.Namespace) -> int:
         write_calibration,
     )
 
+    overwrite_of(args, bool(args.out))
     files = []
     if args.out:  # the three files are checked now and written as one set
         files = calibration_files(args.out, args.family, args.targets)

@@ -14,8 +14,9 @@ from pathlib import PurePath
 from typing import Any
 
 from fem_racket.cli.common import add_output_options
+from fem_racket.cli.options.output import overwrite_of
 from fem_racket.cli.options.runfile import apply_config, config_values, file_options
-from fem_racket.validation import ChecksPassed, InputError, checks_only
+from fem_racket.validation import ChecksPassed, InputError, checks_only, show
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -149,8 +150,14 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.io.config import example_config
 
     if args.check:
+        if args.out:
+            raise InputError(
+                f"--out {show(args.out)} is not allowed with --check: the check writes nothing"
+            )
+        overwrite_of(args, False, "--example --out")
         print(_check(args.check), end="")
         return 0
+    overwrite_of(args, bool(args.out))
     text = example_config() + command_tables()
     if args.out:
         import json

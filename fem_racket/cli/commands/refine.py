@@ -18,9 +18,17 @@ from fem_racket.cli.common import (
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.impact import add_ball_options, add_separation_option, add_speed_option
+from fem_racket.cli.options.output import overwrite_of
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS, FAMILIES
+from fem_racket.studies.refine import (
+    DEFAULT_ELEMENTS,
+    DEFAULT_GRADING,
+    DEFAULT_POSITIONS,
+    FAMILIES,
+    graded,
+)
 from fem_racket.validation import InputError, show, work_begins
 
 FAMILY_CHOICES = (*FAMILIES, "both")
@@ -135,6 +143,25 @@ def _plot_path(args: argparse.Namespace) -> Path:
     return path
 
 
+def _refuse_unwritten(args: argparse.Namespace, writes: bool) -> None:
+    """Refuse --csv or --plot with --no-files, and --format, --dpi or --overwrite when nothing
+    is written (--no-files, or --json without --csv or --plot): they would be ignored."""
+    given = given_options(args)
+    if args.no_files:
+        for dest in ("csv", "plot"):
+            if dest in given:
+                raise InputError(f"no_files = True is not allowed with --{dest}: give one of them")
+    if not writes:
+        why = "--no-files" if args.no_files else "--json without --csv or --plot"
+        for dest in ("format", "dpi"):
+            if dest in given:
+                raise InputError(
+                    f"{dest} = {show(getattr(args, dest))} is not allowed with {why}: "
+                    "no plot is drawn"
+                )
+        overwrite_of(args, False, "a file to write (--csv, --plot)")
+
+
 def run(args: argparse.Namespace) -> int:
     """Run the study, print the table (or JSON), write the CSV and the plot."""
     from fem_racket.io.figure_files import check_dpi
@@ -160,14 +187,15 @@ def run(args: argparse.Namespace) -> int:
     check_dpi(args.dpi)
     default = args.csv == DEFAULT_CSV and args.plot is None
     outputs = [] if args.no_files or (args.json and default) else [Path(args.csv), plot]
+    _refuse_unwritten(args, bool(outputs))
     overwrite = replace_own(args, default, [t.path for t in refine_targets(args.csv, plot)])
     if outputs:  # fail before the work, not after it
         check_targets(refine_targets(args.csv, plot), overwrite=overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
     options = fields_from_args(args, RefineOptions, n_modes=args.count, progress=progress_of(args))
     work_begins()
-    studies = {
-        fam: refinement_study(frame, args.elements, **(options | {"family": fam}))
+    studies = {  # the uniform family has no grading (refused by refinement_study)
+        fam: refinement_study(frame, args.elements, **graded(options, fam, args.family))
         for fam in families
     }
     if outputs:

@@ -6,6 +6,7 @@ import argparse
 
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
+from fem_racket.cli.options.output import overwrite_of
 from fem_racket.extras import require
 
 
@@ -44,7 +45,8 @@ def run(args: argparse.Namespace) -> int:
     )
 
     require("SALib", "fem-racket sensitivity")
-    files = OutputOptions(args.out, args.overwrite, run_parameters(args))
+
+    files = OutputOptions(args.out, overwrite_of(args, bool(args.out)), run_parameters(args))
     run = SensitivityRun(
         problem_from_args(args),
         args.output,

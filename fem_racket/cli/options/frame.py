@@ -6,6 +6,7 @@ import argparse
 from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.lead import add_lead_option, with_lead
+from fem_racket.cli.options.once import Once
 from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
 from fem_racket.io.config_defaults import FRAME_ELEMENTS
 from fem_racket.validation import InputError
@@ -28,21 +29,6 @@ __all__ = [
 MESH_EXCLUSIVE = ("ei1", "ei2", "elements")
 
 
-class _Once(argparse.Action):
-    """Store an option's value, refusing the option given a second time (a one-racket command
-    would otherwise use the last file silently)."""
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        first = vars(namespace).get(self.dest)
-        if first is not None:  # the default is None: a value here was given before
-            raise argparse.ArgumentError(
-                self,
-                f"{option_string} is given twice ({first!r} and {values!r}): this command "
-                f"takes one racket; give {option_string} once",
-            )
-        setattr(namespace, self.dest, values)
-
-
 def add_mesh_option(
     group: argparse._ArgumentGroup, replaces: str = "replaces --ei1, --ei2 and --elements"
 ) -> None:
@@ -50,7 +36,7 @@ def add_mesh_option(
     says which of the command's options the file takes the place of."""
     group.add_argument(
         "--mesh",
-        action=_Once,
+        action=Once,
         default=None,
         metavar="FILE",
         help="frame from a mesh file meshio reads (.vtu, ...; line cells along x with cell "

@@ -22,6 +22,7 @@ __all__ = [
     "add_overwrite_json",
     "core_rows",
     "offset_rows",
+    "overwrite_of",
     "print_json",
     "print_result",
     "print_written",
@@ -112,6 +113,25 @@ def add_overwrite_json(group: argparse._ArgumentGroup, printed: str = "a JSON su
         "--overwrite", action="store_true", help="replace existing files (default: refuse)"
     )
     group.add_argument("--json", action="store_true", help=f"print {printed} (default: a table)")
+
+
+def overwrite_of(args: argparse.Namespace, writes: bool, output: str = "--out") -> bool:
+    """``--overwrite`` where the command writes something (``writes``), else False; given on
+    the command line or in the command's own run-file table with nothing written it is refused
+    (it would be ignored). The shared ``[output]`` table's ``overwrite`` serves every command
+    and is skipped where nothing is written."""
+    from fem_racket.cli.options.runfile import option_name
+    from fem_racket.validation import InputError
+
+    if not args.overwrite or writes:
+        return bool(args.overwrite)
+    key = getattr(args, "file_options", {}).get("overwrite")
+    if "overwrite" in getattr(args, "explicit_options", ()):
+        raise InputError(f"--overwrite is not allowed without {output}: nothing is written")
+    if key is not None and not key.startswith("output."):
+        name = option_name(args, "overwrite")
+        raise InputError(f"{name} is not allowed without {output}: nothing is written")
+    return False
 
 
 def run_parameters(args: argparse.Namespace) -> dict[str, Any]:

@@ -6,10 +6,10 @@ dropped (:mod:`fem_racket.cli.options.runfile` calls these)."""
 
 from __future__ import annotations
 
-import argparse
 from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.cli.options.once import Once
 from fem_racket.validation import InputError, show
 
 if TYPE_CHECKING:
@@ -21,19 +21,11 @@ __all__ = ["UNDER_MESH", "OneFile", "refuse_frame_clash"]
 UNDER_MESH = ("ei1", "ei2", "segments", "elements")
 
 
-class OneFile(argparse.Action):
+class OneFile(Once):
     """Store ``--config``, refusing it given a second time (else the last file would be read
     and the first silently dropped)."""
 
-    def __call__(self, parser, namespace, values, option_string=None):
-        first = vars(namespace).get(self.dest)
-        if first is not None:  # the default is None: a value here was given before
-            raise argparse.ArgumentError(
-                self,
-                f"{option_string} is given twice ({first!r} and {values!r}): a command reads "
-                f"one run file; give {option_string} once",
-            )
-        setattr(namespace, self.dest, values)
+    reason = "a command reads one run file"
 
 
 def refuse_frame_clash(

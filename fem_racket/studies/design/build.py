@@ -36,9 +36,7 @@ from fem_racket.studies.design.variables import QUANTITIES, Constraint
 from fem_racket.studies.design.zone import gaussian_zone, uniform_zone
 from fem_racket.validation import InputError, check_choice
 
-__all__ = ["ZONES", "build_problem", "design_problem", "mode1_node"]
-
-ZONES = ("uniform", "node")
+__all__ = ["build_problem", "design_problem", "mode1_node"]
 
 
 def mode1_node(frame: Frame, elements: int = 20) -> float:
@@ -88,7 +86,6 @@ def build_problem(start: Frame | FrameMesh | None, options: DesignOptions) -> De
         The variables, zone, ball and swing, objectives and constraints, law and mesh.
     """
     z, goals, elements = options.zone_options, options.goals, options.elements
-    check_choice("zone", z.zone, ZONES)
     check_choice("grip", goals.grip, tuple(GRIPS))
     frame = standard_frame() if start is None else start
     if isinstance(frame, FrameMesh):

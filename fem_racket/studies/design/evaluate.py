@@ -21,7 +21,7 @@ from fem_racket.studies.design.history import History
 from fem_racket.studies.design.objectives import evaluate_rows, output_names
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
-from fem_racket.validation import check_choice
+from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["Evaluator", "Function"]
 
@@ -79,6 +79,13 @@ class Evaluator:
     ) -> None:
         if backend is not None:
             check_choice("backend", backend, BACKENDS)
+        for name, value, users in (("workers", workers, ("processes",)),
+                                   ("scheduler", scheduler, ("dask",))):  # fmt: skip
+            if value is not None and backend is not None and backend not in users:
+                raise InputError(
+                    f"{name} = {show(value)} is not allowed with backend {backend!r}: only "
+                    f"backend {users[0]!r} uses it"
+                )
         if scheduler is not None:
             check_scheduler(scheduler)
         self.problem = problem

@@ -3,7 +3,8 @@ the ball and the swing), the objectives and constraints, and where the designs r
 
 :func:`.build.design_problem` takes them as flat keywords (a name of any group), checked here
 (:meth:`DesignOptions.from_keywords`: an unknown name is refused with the nearest known one);
-the CLI and run files fill the same fields (``--ei-bounds`` -> ``ei_bounds``).
+the CLI and run files fill the same fields (``--ei-bounds`` -> ``ei_bounds``). An option the
+settings would not use is refused when they are made (:mod:`.unused`).
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.masses import DEFAULT_WIDTH
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.studies.design.swing import SWING_EXPONENT, SWING_WEIGHT_AXIS
+from fem_racket.studies.design.unused import refuse_unused, refuse_unused_search
 from fem_racket.validation import InputError
 
 __all__ = [
@@ -177,6 +179,9 @@ class DesignOptions:
     law: ContactLaw | None = None
     elements: int = 20
 
+    def __post_init__(self) -> None:
+        refuse_unused(self)  # an option these settings would not use (:mod:`.unused`)
+
     @classmethod
     def from_keywords(cls, **options: Any) -> DesignOptions:
         """The options from flat keywords (a field of any group, ``law``, ``elements``); an
@@ -214,6 +219,9 @@ class SearchOptions:
     pop_size: int = 50
     generations: int = 100
     seed: int = 1
+
+    def __post_init__(self) -> None:
+        refuse_unused_search(self)  # a budget the method would not use (:mod:`.unused`)
 
 
 @dataclass(frozen=True)

@@ -17,7 +17,7 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.series import SeriesBallString
 from fem_racket.frame.segments import Frame, standard_frame
-from fem_racket.studies.design.options import VariableOptions, check_names
+from fem_racket.studies.design.options import DesignOptions, VariableOptions, check_names
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.profiles import check_stations, tributary_edges
 from fem_racket.studies.design.variable_groups import VARY, design_variables
@@ -82,6 +82,7 @@ def paper_problem(
         ...); an unknown name is refused naming the nearest.
     """
     v = VariableOptions() if variables is None else variables
+    DesignOptions(variables=v, law=law)  # refuses what the variables would not use
     known = [f.name for f in dataclass_fields(DesignProblem) if f.name not in _FROM_VARIABLES]
     check_names("paper_problem", fields, known)
     for name in v.vary:

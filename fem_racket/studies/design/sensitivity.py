@@ -19,6 +19,7 @@ from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.limits import check_sobol_size
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.scaling import progress_bar
+from fem_racket.studies.design.unused import refuse_unused_sensitivity
 from fem_racket.studies.views import SobolView
 from fem_racket.validation import InputError, check_choice
 
@@ -99,6 +100,7 @@ def sobol_indices(
     evaluator = Evaluator(problem) if evaluator is None else evaluator
     output = problem.objectives[0] if output is None else output
     check_choice("output", output, tuple(evaluator.names))
+    refuse_unused_sensitivity(problem, output)
     d = problem.n_var
     n = check_sobol_size(problem, designs)
     spec = {"num_vars": d, "names": problem.names, "bounds": [[0.0, 1.0]] * d}

@@ -23,10 +23,11 @@ from typing import Any
 import numpy as np
 
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.options import SearchOptions
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.scaling import ScaledProblem, progress_bar
-from fem_racket.validation import check_choice, check_integer
+from fem_racket.validation import InputError, check_choice, check_integer
 
 __all__ = ["GLOBAL_METHODS", "LOCAL_METHODS", "optimize"]
 
@@ -236,6 +237,12 @@ def optimize(
     """
     check_choice("method", method, LOCAL_METHODS + GLOBAL_METHODS)
     check_integer("maxiter", maxiter)
+    SearchOptions(method=method, maxiter=maxiter, popsize=popsize, seed=seed)  # refuses unused
+    if not polish and method in LOCAL_METHODS:
+        raise InputError(
+            f"polish = False is not allowed with method {method!r}: only "
+            "differential-evolution is polished"
+        )
     evaluator = Evaluator(problem) if evaluator is None else evaluator
     u0 = problem.to_unit(problem.x_start)
     with progress_bar(progress, method, None) as bar:

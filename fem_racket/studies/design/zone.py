@@ -18,7 +18,10 @@ import numpy as np
 
 from fem_racket.validation import InputError, check_integer, check_positive, check_range
 
-__all__ = ["MAX_ZONE_POINTS", "ImpactZone", "gaussian_zone", "uniform_zone"]
+__all__ = ["MAX_ZONE_POINTS", "ZONES", "ImpactZone", "gaussian_zone", "uniform_zone"]
+
+#: The zones a design study names: uniform over a range, or a Gaussian about mode 1's node.
+ZONES = ("uniform", "node")
 
 
 @dataclass(frozen=True, eq=False)
