@@ -38,6 +38,7 @@ from fem_racket.impact.clamped import ClampedHead
 from fem_racket.impact.incidence import Incidence, check_incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.problem_checks import (
+    check_build_options,
     check_held,
     check_law,
     check_offset,
@@ -213,6 +214,7 @@ class ImpactProblem:
             raise InputError(
                 f"shock_window = {show(window)} s is not allowed without a hand: give a hand"
             )
+        check_build_options(fields, cls)
         structure = model if hand is None else HeldRacket(model, hand, window)
         return cls(structure, impact, ball, law, **fields)
 

@@ -31,6 +31,7 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.impact.batch_outcome import BatchOutcome
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem import SEPARATIONS, HeldRacket, Impact, ImpactProblem
+from fem_racket.impact.problem_checks import refuse_separation
 from fem_racket.impact.swing import Swing
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, check_choice
@@ -133,7 +134,8 @@ class ProblemBatch:
         if self.law is not None:
             if not isinstance(self.law, ContactLaw):
                 raise InputError(f"law = {self.law!r} is not allowed: must be a ContactLaw")
-            for name in ("kcb", "zeta", "separation"):
+            refuse_separation(self.law, self.separation)  # as a problem refuses it
+            for name in ("kcb", "zeta"):
                 if getattr(self, name) is not None:
                     raise InputError(
                         f"{name} is not allowed with contact law {self.law.name!r}: it is the "

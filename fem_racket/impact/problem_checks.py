@@ -8,6 +8,7 @@ from here."""
 
 from __future__ import annotations
 
+from dataclasses import fields as dataclass_fields
 from typing import Any
 
 import numpy as np
@@ -23,13 +24,28 @@ from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, show
 
 __all__ = [
+    "check_build_options",
     "bed_coordinates",
     "check_held",
     "check_law",
     "check_offset",
     "check_strings",
     "check_structure",
+    "refuse_separation",
 ]
+
+
+def check_build_options(options: dict[str, Any], problem_class: type) -> None:
+    """Refuse an option of ``ImpactProblem.build`` that is none of its own nor a field of
+    ``problem_class`` after structure, impact, ball and law (which ``build`` makes)."""
+    own = ["elements", "position", "speed", "ball_mass", "law", "hand", "shock_window"]
+    fields = [f.name for f in dataclass_fields(problem_class)][4:]
+    for key in options:
+        if key not in fields:
+            raise InputError(
+                f"{key} is not an option of ImpactProblem.build: must be one of "
+                f"{', '.join(own + fields)}"
+            )
 
 
 def check_law(problem: Any) -> None:
@@ -44,11 +60,15 @@ def check_law(problem: Any) -> None:
             "ball's own law, fitted in series with the bed (give strings, e.g. "
             "--string-tension)"
         )
-    if problem.separation is not None:
+    refuse_separation(problem.law, problem.separation)
+
+
+def refuse_separation(law: ContactLaw, separation: str | None) -> None:
+    """Refuse a ``separation`` (any but None) under ``law``, another law than the paper's."""
+    if separation is not None:
         raise InputError(
-            f"separation = {show(problem.separation)} is not allowed with contact law "
-            f"{show(problem.law.name)}: the law ends contact by its own condition "
-            f"({problem.law.end})"
+            f"separation = {show(separation)} is not allowed with contact law "
+            f"{show(law.name)}: the law ends contact by its own condition ({law.end})"
         )
 
 

@@ -67,7 +67,8 @@ def simulate(frame: Any = None, **options: Any) -> ImpactResult:
         ``incidence`` (an Incidence: an oblique, spinning ball at ``speed``; returns an
         ObliqueResult, :mod:`fem_racket.impact.oblique.solve`).
         The solver: ``solver`` ("auto" (default), "exact", "general", "cvode", "bdf") and its
-        options ``tolerance`` (COR tolerance choosing modes and steps; 1e-6), ``modes``
+        options ``tolerance`` (COR tolerance choosing modes and steps; 1e-6, but
+        with histories the exact solver keeps every mode unless one is given), ``modes``
         (flexible modes kept; 80), ``basis`` ("modal" or "physical", BDF only),
         ``rtol``/``atol`` (BDF), ``output_step`` (spacing of the output times [s], 1e-5; None:
         only t = 0 and t_c, the exact solver's batched engine), ``t_max`` [s].

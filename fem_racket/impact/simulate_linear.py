@@ -1,11 +1,13 @@
 """An impact under the paper's linear law on a racket at rest or swinging: ``simulate_linear``.
 
-The exact solver without output times runs the batched engine (:mod:`fem_racket.impact.exact`,
-through :func:`fem_racket.impact.exact.single.engine_impact`) at the closing speed and superposes
-the swing; otherwise the coupled ball + frame ODE (:func:`build_system`,
-:mod:`fem_racket.impact.system`) in modal or physical coordinates goes to the solver
-(:mod:`fem_racket.impact.ode.integrators`), a swing entering as its initial velocity field.
-The solvers of :mod:`fem_racket.impact.solvers` check the problem and the options and call this.
+The exact solver without output times, or with a COR tolerance, runs the batched engine
+(:mod:`fem_racket.impact.exact`, through :func:`fem_racket.impact.exact.single.engine_impact`)
+at the closing speed and superposes the swing; with output times and no tolerance (every mode)
+its eigen-solution (:mod:`fem_racket.impact.exact.closed_form`); otherwise the coupled
+ball + frame ODE (:func:`build_system`, :mod:`fem_racket.impact.system`) in modal or physical
+coordinates goes to the solver (:mod:`fem_racket.impact.ode.integrators`), a swing entering
+as its initial velocity field. The solvers of :mod:`fem_racket.impact.solvers` check the
+problem and the options and call this.
 """
 
 from __future__ import annotations
@@ -109,7 +111,7 @@ def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> 
     x_i = impact.position * model.mesh.length
     v_r = problem.racket_speed
     contact = problem.contact()
-    if solver == "exact" and s.output_step is None:
+    if solver == "exact" and (s.output_step is None or s.tolerance is not None):
         traj, frame_map, kept = engine_impact(
             model,
             impact if swing is None else replace(impact, speed=problem.closing_speed),
@@ -120,6 +122,7 @@ def simulate_linear(problem: ImpactProblem, solver: str, settings: Settings) -> 
             tolerance=s.tolerance,
             t_max=s.t_max,
             offset=problem.offset,
+            output_step=s.output_step,
         )
         if swing is not None:  # the stationary impact at the closing speed, plus the swing
             traj = add_swing(traj, frame_map, model, swing, v_r)

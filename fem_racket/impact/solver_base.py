@@ -30,6 +30,15 @@ _HELD_WHY = (
 )
 
 
+def _check_problem(name: str, problem: Any) -> None:
+    """Refuse ``problem`` unless it is an ImpactProblem."""
+    if not isinstance(problem, ImpactProblem):
+        raise InputError(
+            f"{name} = {show(problem)} is not allowed: must be an ImpactProblem "
+            "(ImpactProblem.build(frame, position=..., speed=...))"
+        )
+
+
 class Solver:
     """Base of the solvers (module docstring): options bound at construction.
 
@@ -106,6 +115,7 @@ class Solver:
     def solve(self, problem: ImpactProblem) -> Any:
         """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
         StrungImpact with a string bed, a ClampedImpact on a clamped head)."""
+        _check_problem("problem", problem)
         self.check(problem)
         work_begins()  # fem-racket config --check stops here: every check has passed
         return self._outcome(problem)
@@ -119,11 +129,25 @@ class Solver:
             self._check_batch(problems)
             work_begins()
             return self._batch(problems)
+        if isinstance(problems, ImpactProblem) or not isinstance(problems, Iterable):
+            raise InputError(
+                f"problems = {show(problems)} is not allowed: must be ImpactProblems or a "
+                "ProblemBatch (solve one problem with solve)"
+            )
         problems = list(problems)
         for p in problems:
+            _check_problem("problems", p)
             self.check(p)
         work_begins()
         return self._many(problems)
+
+    def check_batch(self, batch: ProblemBatch) -> None:
+        """Refuse, in one line and before any work, what :meth:`solve_many` would refuse of
+        ``batch``: the batch itself, then its first case as a problem (:meth:`check`; the
+        cases of a batch share its law, its solver options and its kind of structure)."""
+        self._check_batch(batch)
+        if len(batch):
+            self.check(batch.problem(0))
 
     def _many(self, problems: list[ImpactProblem]) -> list:
         """Solve checked problems; on clamped heads all in one call per head."""

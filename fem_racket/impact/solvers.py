@@ -6,8 +6,9 @@ do, ``solve(problem)`` returns the outcome of one :class:`~fem_racket.impact.pro
 and ``solve_many(problems)`` of several. The methods:
 
 ===========  ==============================================================================
-``exact``    the paper's linear law: closed-form eigen-solution in modal coordinates, or the
-             batched engine when no histories are asked (:mod:`fem_racket.impact.exact`)
+``exact``    the paper's linear law: the batched engine's roots, with the modes a COR
+             ``tolerance`` needs; with histories and no tolerance given, every mode by the
+             closed-form eigen-solution in modal coordinates (:mod:`fem_racket.impact.exact`)
 ``general``  any contact law and any initial racket motion: the general integrator on the
              impact-point receptance (:mod:`fem_racket.impact.general`)
 ``cvode``    SUNDIALS CVODE BDF on the coupled ODE, for any law (:mod:`fem_racket.impact.ode`)
@@ -30,6 +31,7 @@ answers it its own way (:mod:`fem_racket.impact.batch_solve`): ``exact`` by the 
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from fem_racket.impact.batch_solve import each_batch, engine_batch, law_batch
@@ -47,8 +49,9 @@ __all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "make_solver"]
 
 
 class ExactSolver(Solver):
-    """The paper's linear law solved exactly (eigen-solution, or the batched engine without
-    histories)."""
+    """The paper's linear law solved exactly: the batched engine's roots, with the modes kept
+    by the COR ``tolerance``; with histories (``output_step``) every mode by the
+    eigen-solution unless a ``tolerance`` is given (as the hand-held racket)."""
 
     name = "exact"
     takes = ("tolerance", "modes", "output_step", "t_max")
@@ -77,7 +80,10 @@ class ExactSolver(Solver):
             return solve_strung(problem, self.name, self.options)
         if problem.held:
             return self._held(problem)
-        return simulate_linear(problem, "exact", self.options.settings())
+        s = self.options.settings()
+        if s.output_step is not None and "tolerance" not in self.options.given():
+            s = replace(s, tolerance=None)  # histories keep every mode unless a tolerance is asked
+        return simulate_linear(problem, "exact", s)
 
 
 class GeneralSolver(Solver):
@@ -123,6 +129,11 @@ class _OdeSolver(Solver):
     takes = ("rtol", "atol", "basis", "modes", "output_step", "t_max")
     #: tolerance None: every mode (of ``modes``), which the ODE solvers keep anyway
     neutral = {"tolerance": (None, 0, 0.0)}
+
+    def __init__(self, **options: Any) -> None:
+        super().__init__(**options)
+        if self.options.given().get("basis") == "physical":
+            self._refuse_options(("modes",), "with basis 'physical': it integrates every FE DOF")
 
     def check(self, problem: ImpactProblem) -> None:
         super().check(problem)

@@ -184,7 +184,7 @@ def chunk_problems(spec: SweepSpec, chunk: np.ndarray) -> ProblemBatch:
         kcb=p["kcb"],
         zeta=p["zeta"],
         law=law,
-        separation=spec.separation if spec.law is None else None,
+        separation=spec.problem_separation,
         swing=case_swings(p, n, lengths),
         peak_force=spec.peak_force,
         strings=case_beds(p, n),
@@ -193,24 +193,14 @@ def chunk_problems(spec: SweepSpec, chunk: np.ndarray) -> ProblemBatch:
 
 
 def sweep_solver(spec: SweepSpec) -> Solver:
-    """The solver of a sweep, with the sweep's options."""
-    if given(spec.values, STRING_AXES):  # the strung racket keeps every mode
-        return make_solver(spec.solver, **_strung_options(spec))
-    if spec.solver == "exact":
-        return make_solver("exact", tolerance=spec.tolerance, modes=spec.modes)
-    if spec.solver == "general":
-        return make_solver("general", tolerance=spec.tolerance)
-    options: dict[str, Any] = {"rtol": spec.rtol, "atol": spec.atol, "output_step": None}
-    if spec.law is None:  # the paper's law: its modes, basis, and the peak force over 1 us
-        options.update(basis=spec.basis, modes=spec.modes, output_step=BDF_OUTPUT_STEP)
+    """The solver of a sweep, made with the options the sweep was given
+    (:meth:`SweepSpec.solver_options`): it takes and refuses them as simulate's does. The ODE
+    solvers on the paper's law also give the peak force over 1 us output times; under another
+    law (or on a string bed) no histories."""
+    options = spec.solver_options()
+    if spec.solver in ("cvode", "bdf") and not given(spec.values, STRING_AXES):
+        options["output_step"] = BDF_OUTPUT_STEP if spec.law is None else None
     return make_solver(spec.solver, **options)
-
-
-def _strung_options(spec: SweepSpec) -> dict[str, Any]:
-    """The options of the sweep's solver on the strung racket (:mod:`.sweep_physics`)."""
-    if spec.solver == "general":
-        return {"tolerance": spec.tolerance}
-    return {"rtol": spec.rtol, "atol": spec.atol} if spec.solver == "cvode" else {}
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:

@@ -21,7 +21,6 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.mesh import FrameMesh
-from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.frame.segments import (
     PAPER_EI1,
     Frame,
@@ -29,7 +28,8 @@ from fem_racket.frame.segments import (
 )
 from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import check_tolerance
-from fem_racket.impact.solvers import auto_method
+from fem_racket.impact.settings import DEFAULTS, SolverOptions
+from fem_racket.impact.solvers import auto_method, make_solver
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.grid_checks import check_offsets, check_rigidity, check_swings
@@ -50,7 +50,6 @@ from fem_racket.studies.sweep_physics import check_physics
 from fem_racket.validation import (
     InputError,
     check_choice,
-    check_integer,
     check_positive,
     show,
 )
@@ -165,35 +164,36 @@ class SweepSpec(SweepSolving):
         else:
             check_choice("solver", spec.solver, SOLVERS)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)
-        check_choice("basis", spec.basis, ("modal", "physical"))
-        if spec.solver == "exact" and spec.basis != "modal":
-            raise InputError(
-                f"basis = {show(spec.basis)} is not allowed with solver 'exact': must be 'modal'"
-            )
-        if spec.modes is not None:
-            check_integer("modes", spec.modes)
-        if spec.law is not None:  # the law's integrators keep the modes they need: refuse,
-            for key, default in (("modes", DEFAULT_MODES), ("basis", "modal")):  # not ignore
-                if getattr(spec, key) != default:
-                    raise InputError(
-                        f"{key} = {show(getattr(spec, key))} is not allowed with solver "
-                        f"{spec.solver!r} under contact law {show(spec.law.name)}: it keeps "
-                        "the modes it needs (its tolerance) or every mode (cvode)"
-                    )
+        object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
+        make_solver(spec.solver, **spec.solver_options())  # the options simulate's solver takes
         check_solver_settings(
             spec.solver, spec.basis, int(np.max(values["elements"])), spec.rtol, spec.atol
         )
         check_rigidity(spec)
         frame_length = float((frame if frame is not None else standard_frame()).length)
-        options = {k: getattr(spec, k) for k in ("solver", "separation", "basis", "modes")}
-        check_physics(values, spec.law, {**options, "tolerance": spec.tolerance}, frame_length)
+        check_physics(values, spec.solver, frame_length)
         check_swings(spec)
         check_offsets(spec)
         check_grid_size(spec.shape, spec.dims)
-        object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         if not isinstance(spec.peak_force, bool):
             raise InputError(f"peak_force = {spec.peak_force!r} is not allowed: must be a bool")
         return spec
+
+    def solver_options(self) -> dict[str, Any]:
+        """The options of the cases' solver that differ from their defaults, by name: those the
+        caller asked for (a default asks for nothing, as a solver's neutral values). The sweep
+        makes its solver with them (:func:`fem_racket.impact.solvers.make_solver`), so it
+        refuses what simulate refuses, by the same rule."""
+        names = [n for n in SolverOptions.names() if hasattr(self, n)]
+        return {n: getattr(self, n) for n in names if getattr(self, n) != getattr(DEFAULTS, n)}
+
+    @property
+    def problem_separation(self) -> str | None:
+        """The separation the cases' problems state: the sweep's under the paper's law; under
+        another law only when one other than the default is asked (the problem refuses it)."""
+        if self.law is None or self.separation != SweepSolving.separation:
+            return self.separation
+        return None
 
     # -- the grid ----------------------------------------------------------------------------
     @cached_property

@@ -193,6 +193,11 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
             )
         if not (math.isfinite(start) and math.isfinite(stop)):
             raise InputError(f"{name} = {show(text)} is not allowed: start and stop must be finite")
+        if num == 1 and start != stop:  # one value cannot be both ends
+            raise InputError(
+                f"{name} = {show(text)} is not allowed: num 1 needs start = stop (or give one "
+                "number, or num >= 2)"
+            )
         if log and (start <= 0.0 or stop <= 0.0):
             raise InputError(
                 f"{name} = {show(text)} is not allowed: log spacing needs start, stop > 0"

@@ -163,7 +163,10 @@ def spin_map(
     if unknown:
         raise InputError(f"options = {sorted(unknown)} is not allowed: unknown spin-map options")
     law = opts.pop("law", None)
-    solver_options = {"tolerance": opts.pop("tolerance", DEFAULT_TOLERANCE)}
+    tolerance = opts.pop("tolerance", DEFAULT_TOLERANCE)  # the default asks for nothing: the
+    solver_options = {}  # normal impacts' histories then keep every mode (as simulate's)
+    if tolerance != DEFAULT_TOLERANCE:
+        solver_options["tolerance"] = tolerance
     if law is None or "modes" in opts:  # the general solver refuses modes given with a law
         solver_options["modes"] = opts.pop("modes", DEFAULT_MODES)
     solver = make_solver("exact" if law is None else "general", **solver_options)

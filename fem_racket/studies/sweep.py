@@ -33,15 +33,15 @@ from fem_racket.contact.presets import PRESETS, get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.segments import Frame
 from fem_racket.outputs import atomic_output, atomic_outputs, check_output_path, sidecar_path
-from fem_racket.studies.cases import COLUMNS, VARIABLES, run_chunk
+from fem_racket.studies.cases import COLUMNS, VARIABLES, chunk_problems, run_chunk, sweep_solver
 from fem_racket.studies.checkpoint import Checkpoint
-from fem_racket.studies.executors import BACKENDS, BarCounts, check_scheduler, run_chunks
+from fem_racket.studies.executors import BarCounts, run_chunks
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, SweepSpec, chunks
 from fem_racket.studies.options import field_names, take
 from fem_racket.studies.sweep_options import SweepRun, SweepSolving
 from fem_racket.studies.sweep_physics import OBLIQUE_AXES, STRING_AXES, given
 from fem_racket.studies.sweep_result import SweepResult
-from fem_racket.validation import InputError, check_choice, check_integer, show, work_begins
+from fem_racket.validation import InputError, show, work_begins
 
 __all__ = ["VARIABLES", "run_sweep", "sweep", "sweep_result"]
 
@@ -145,7 +145,8 @@ def sweep(frame: Frame | FrameMesh | None = None, **options: Any) -> Any:
     peak_force : bool
         Also compute the largest contact force (variable ``peak_force_n``; costs more).
     output : path, optional
-        netCDF file to write (atomically; a .csv path: a CSV table and its JSON sidecar).
+        netCDF file to write, ``.nc`` (atomically; a .csv path: a CSV table and its JSON
+        sidecar); ``overwrite`` and ``restart`` only with it.
         With it the sweep is resumable: finished cases are
         kept in ``<output>.checkpoint/`` and a rerun with the same arguments continues.
     overwrite : bool
@@ -154,11 +155,11 @@ def sweep(frame: Frame | FrameMesh | None = None, **options: Any) -> Any:
         Discard an existing checkpoint instead of resuming it.
     backend : {"serial", "processes", "dask"}, optional
         Default: "dask" when ``scheduler`` is given, else "processes" (serial for fewer than
-        :data:`SERIAL_BELOW` exact impacts).
+        :data:`SERIAL_BELOW` exact impacts and no ``workers``).
     workers : int, optional
-        Processes of the local pool; all cores when None.
+        Processes of the local pool (backend "processes" only); all cores when None.
     scheduler : str, optional
-        Dask distributed scheduler address ``tcp://HOST:PORT``.
+        Dask distributed scheduler address ``tcp://HOST:PORT`` (backend "dask" only).
     chunk_size : int, optional
         Cases per task (and per checkpoint file).
     progress : bool, optional
@@ -222,15 +223,10 @@ def run_sweep(
     spec_options = {k: getattr(solving, k) for k in field_names(SweepSolving)}
     spec_options["law"] = get_law(law) if isinstance(law, str) else law
     spec = SweepSpec.build(frame, **grid, **spec_options)
+    # the solver refuses, before any work, what it would refuse of the cases (as simulate's)
+    sweep_solver(spec).check_batch(chunk_problems(spec, np.zeros(1, dtype=np.int64)))
     output, overwrite, backend, workers = run.output, run.overwrite, run.backend, run.workers
-    scheduler, chunk_size = run.scheduler, run.chunk_size
-    if backend is not None:
-        check_choice("backend", backend, BACKENDS)
-    for name, value in (("workers", workers), ("chunk_size", chunk_size)):
-        if value is not None:
-            check_integer(name, value)
-    if scheduler is not None:
-        check_scheduler(scheduler)  # before any checkpoint folder is made
+    scheduler, chunk_size = run.scheduler, run.chunk_size  # (checked by SweepRun)
     if output is not None:
         output = check_output_path(output, overwrite=overwrite)
     work_begins()
@@ -259,8 +255,8 @@ def run_sweep(
             if ckpt is not None:
                 ckpt.save(chunk, result)
 
-        if backend is None:
-            small = spec.solver == "exact" and todo.size < SERIAL_BELOW
+        if backend is None:  # workers ask for a local pool
+            small = spec.solver == "exact" and todo.size < SERIAL_BELOW and workers is None
             backend = "dask" if scheduler is not None else ("serial" if small else "processes")
         n_workers = workers or (os.cpu_count() or 1)
         size = chunk_size or _chunk_size(spec, todo.size, 1 if backend == "serial" else n_workers)

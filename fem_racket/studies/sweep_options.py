@@ -9,12 +9,20 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.studies.executors import BACKENDS, check_scheduler
+from fem_racket.validation import InputError, check_choice, check_integer, show
 
-__all__ = ["SweepRun", "SweepSolving"]
+__all__ = ["OUTPUT_SUFFIXES", "SweepRun", "SweepSolving"]
+
+#: Suffixes of a sweep's output file: netCDF, or a CSV table (with its JSON sidecar).
+OUTPUT_SUFFIXES = (".nc", ".csv")
+#: The backend each run option belongs to.
+_BACKEND_OF = {"workers": "processes", "scheduler": "dask"}
 
 
 @dataclass(frozen=True)
@@ -78,3 +86,34 @@ class SweepRun:
     chunk_size: int | None = None
     progress: bool | None = None
     parameters: dict[str, Any] | None = None
+
+    def __post_init__(self) -> None:
+        """Refuse, in one line, a value that is not allowed or an option that would do
+        nothing: overwrite or restart without an output, an output that is neither netCDF nor
+        CSV, workers or a scheduler with another backend than theirs."""
+        if self.output is None:
+            for name in ("overwrite", "restart"):
+                if getattr(self, name):
+                    raise InputError(
+                        f"{name} = {show(getattr(self, name))} is not allowed without output: "
+                        "it acts on the output file and its checkpoint"
+                    )
+        elif Path(self.output).suffix.lower() not in OUTPUT_SUFFIXES:
+            raise InputError(
+                f"output = {show(str(self.output))} is not allowed: must end in .nc (netCDF) "
+                "or .csv (a table and its JSON sidecar)"
+            )
+        if self.backend is not None:
+            check_choice("backend", self.backend, BACKENDS)
+        for name in ("workers", "chunk_size"):
+            if getattr(self, name) is not None:
+                check_integer(name, getattr(self, name))
+        if self.scheduler is not None:
+            check_scheduler(self.scheduler)  # before any checkpoint folder is made
+        for name, own in _BACKEND_OF.items():
+            backend = self.backend or ("dask" if self.scheduler is not None else own)
+            if getattr(self, name) is not None and backend != own:
+                raise InputError(
+                    f"{name} = {show(getattr(self, name))} is not allowed with backend "
+                    f"{backend!r}: it is the {own!r} backend's"
+                )

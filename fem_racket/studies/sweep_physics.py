@@ -28,10 +28,9 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem_checks import bed_coordinates
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.impact.strung.solve import STRUNG_OPTIONS
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.grid_values import OBLIQUE_AXES, STRING_AXES, pattern_label
 from fem_racket.validation import InputError, show
@@ -64,12 +63,15 @@ def _nonzero(values: dict[str, Any], name: str) -> bool:
     return bool(np.any(np.atleast_1d(values[name]) != 0.0))
 
 
-def check_physics(values: dict[str, Any], law: Any, options: dict[str, Any], length: float) -> None:
+def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
     """Refuse, in one line, a string-bed or oblique axis with what it cannot combine with.
 
-    ``values``: the sweep's parameter values; ``law``: its contact law (None: the paper's);
-    ``options``: its solver, separation, basis, modes and tolerance; ``length``: the racket's
-    length [m] (the string bed's head is placed on it).
+    ``values``: the sweep's parameter values; ``solver``: its solver's name (one that solves
+    the strung racket, :data:`~fem_racket.impact.strung.solve.STRUNG_OPTIONS`); ``length``:
+    the racket's length [m] (the string bed's head is placed on it). The solver's options on
+    the strung racket are the solver's to refuse
+    (:func:`fem_racket.impact.strung.solve.check_strung`, asked on the sweep's first case
+    before it runs).
     """
     strings = given(values, STRING_AXES)
     if not strings:
@@ -90,24 +92,10 @@ def check_physics(values: dict[str, Any], law: Any, options: dict[str, Any], len
     for name, why in rest.items():
         if _nonzero(values, name):
             raise InputError(f"{name} = {show(values[name])} is not allowed {what}: {why}")
-    solver = options["solver"]
-    linear_ball = law is None or law.name == "linear"
-    takes = {"exact": (), "general": ("tolerance",), "cvode": ("rtol", "atol")}
-    if solver not in takes:
+    if solver not in STRUNG_OPTIONS:
         raise InputError(
-            f"solver = {solver!r} is not allowed {what}: must be one of exact, general, cvode"
+            f"solver = {solver!r} is not allowed {what}: must be one of {', '.join(STRUNG_OPTIONS)}"
         )
-    if solver == "exact" and not linear_ball:
-        raise InputError(f"solver = 'exact' is not allowed {what} and ball law {law.name!r}")
-    defaults = {"modes": DEFAULT_MODES, "basis": "modal"}
-    if solver != "general":
-        defaults["tolerance"] = DEFAULT_TOLERANCE
-    for name, default in defaults.items():
-        if options[name] != default:
-            raise InputError(
-                f"{name} = {show(options[name])} is not allowed {what} and solver {solver!r}: "
-                f"it takes {', '.join(takes[solver]) or 'none'} (every frame mode is used)"
-            )
     bed = StringBed()
     for x in np.atleast_1d(values["position"]):
         bed_coordinates(bed, float(x), 0.0, length, bed.head_centre)

@@ -170,7 +170,7 @@ def test_modes_count_above_the_mesh_is_noted(capsys):
         (["--modes", "41"], True),
         (["--modes", "40"], False),
         ([], False),  # the default 80 keeps every mode of small meshes by design
-        (["--modes", "200", "--solver", "cvode", "--basis", "physical"], False),  # unused
+        (["--solver", "cvode", "--basis", "physical"], False),  # (modes: refused, unused)
     ],
 )
 def test_simulate_modes_above_the_mesh_is_noted(capsys, argv, noted):

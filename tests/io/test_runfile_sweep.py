@@ -21,11 +21,11 @@ SWEEP = "[frame]\nelements = 6\n[sweep]\nposition = [0.6, 0.7]\nspeed = [20.0, 3
     ("keys", "argv", "kwargs", "backend"),
     [
         ("workers = 2\n", (), {}, "processes"),  # a local pool of 2
-        ("serial = true\nworkers = 2\n", (), {}, "serial"),  # serial wins in the file
         ("serial = true\n", ("--workers", "2"), {"workers": 2}, "processes"),  # the caller's
         ("", ("--serial",), {"backend": "serial"}, "serial"),
     ],
-    ids=["workers", "serial-and-workers", "caller-workers", "caller-serial"],
+    ids=["workers", "caller-workers", "caller-serial"],  # (serial and workers: refused, see
+    # tests/cli/test_refusals_solver.py; the file's workers used to be dropped)
 )
 def test_the_cases_run_where_the_command_runs_them(cwd, capsys, keys, argv, kwargs, backend):
     xr = pytest.importorskip("xarray")

@@ -110,7 +110,7 @@ def test_spin_map_refuses_modes_and_separation_under_a_law(standard_model):
     law = get_law("hunt-crossley")
     for options, message in (
         ({"modes": 10}, "modes = 10 is not allowed with solver 'general'"),
-        ({"separation": "force"}, "separation is not allowed with contact law"),
+        ({"separation": "force"}, "separation = 'force' is not allowed with contact law"),
     ):
         with pytest.raises(InputError, match=message):
             spin_map(

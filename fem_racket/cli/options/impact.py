@@ -217,9 +217,9 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
         type=float,
         default=DEFAULT_TOLERANCE,
         metavar="COR",
-        help="COR error [-] the exact solver may make when no histories are asked: modes far above "
-        f"the contact frequency become one residual mode (default {DEFAULT_TOLERANCE:g}; "
-        "0: every mode)",
+        help="COR error [-] the exact solver may make: modes far above the contact frequency "
+        f"become one residual mode (default {DEFAULT_TOLERANCE:g}, but histories keep every "
+        "mode unless it is given; 0: every mode)",
     )
     s.add_argument(
         "--rtol",

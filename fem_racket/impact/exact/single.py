@@ -30,7 +30,7 @@ from fem_racket.impact.offaxis import RIGID_OFFAXIS, combined_modes, combined_po
 from fem_racket.impact.point import frame_modal_data
 from fem_racket.impact.problem import Impact
 from fem_racket.impact.reduction import cutoff_factor, pole_blocks
-from fem_racket.impact.system import Trajectory, no_separation
+from fem_racket.impact.system import Trajectory, no_separation, output_times
 
 __all__ = ["engine_impact"]
 
@@ -49,15 +49,19 @@ def engine_impact(
     tolerance: float | None,
     t_max: float | None,
     offset: float = 0.0,
+    output_step: float | None = None,
 ) -> tuple[Trajectory, np.ndarray, int]:
-    """Trajectory at t = 0 and t_c in the coordinates [u_B, rigid, flexible modes], the matrix
-    taking the frame coordinates to Hermite DOFs (off axis: then the torsion DOFs, see
+    """Trajectory at t = 0 and t_c (or every ``output_step`` [s] between them) in the
+    coordinates [u_B, rigid, flexible modes], the matrix taking the frame coordinates to
+    Hermite DOFs (off axis: then the torsion DOFs, see
     :func:`fem_racket.impact.offaxis.combined_modes`), and the number of flexible modes in the
     model (those above the cut-off are represented by the residual pseudo-mode).
 
     ``modes`` bounds the frame modes used (a plain truncation, as the other paths);
     ``tolerance`` then drops those not needed for it (None: keep them all). ``offset`` [m]: the
     impact point's distance from the long axis (:mod:`fem_racket.impact.offaxis`).
+    ``output_step``: histories at :func:`~fem_racket.impact.system.output_times`, by the same
+    sums at each time (the rows at 0 and t_c are those without histories).
     """
     x_i = impact.position * model.mesh.length
     if offset == 0.0:
@@ -94,24 +98,53 @@ def engine_impact(
     dF = m * float((fw * lam * e).real.sum())
     V = impact.speed
     n_rigid = rig.size
-    x = np.zeros((2, 1 + n_rigid + a.size))
+    times = output_times(output_step, tc)
+    x = np.zeros((times.size, 1 + n_rigid + a.size))
     xv = np.zeros_like(x)
-    x[1, 0], xv[0, 0], xv[1, 0] = tc - P / ball.mass, 1.0, 1.0 - J / ball.mass
-    x[1, 1 : 1 + n_rigid], xv[1, 1 : 1 + n_rigid] = rig * P, rig * J
+    x[-1, 0], xv[0, 0], xv[-1, 0] = tc - P / ball.mass, 1.0, 1.0 - J / ball.mass
+    x[-1, 1 : 1 + n_rigid], xv[-1, 1 : 1 + n_rigid] = rig * P, rig * J
     w2 = omega**2
     den = lam[None, :] ** 2 + w2[:, None]  # (modes, roots)
-    x[1, 1 + n_rigid :] = a * np.where(
+    x[-1, 1 + n_rigid :] = a * np.where(
         np.arange(a.size) < kept, m * ((fw * e)[None, :] / den).real.sum(axis=1), F / w2
     )
-    xv[1, 1 + n_rigid :] = a * np.where(
+    xv[-1, 1 + n_rigid :] = a * np.where(
         np.arange(a.size) < kept, m * ((fw * lam * e)[None, :] / den).real.sum(axis=1), dF / w2
     )
+    if times.size > 2:
+        _between(x, xv, times[1:-1], (rig, a, w2, kept, ball.mass), (lam, fw, m, den))
     peak = _peak(omega, a, mu0, k, c, separation, limit) if kept < a.size else None
     if peak is None:
         peak = float(peak_force(one, fw[None], np.array([tc]))[0][0])
     peak *= V
-    traj = Trajectory(np.array([0.0, tc]), x * V, xv * V, peak)
+    traj = Trajectory(times, x * V, xv * V, peak)
     return traj, shapes, int(omega.size)
+
+
+def _between(x, xv, t, frame, roots) -> None:
+    """Fill rows 1 to -2 of ``x`` and ``xv`` (per unit speed) at times ``t`` [s], strictly
+    between 0 and t_c, with the sums of the module docstring; ``frame`` is (rigid mode
+    values, flexible mode values a_f, omega_f^2, modes kept, m_B), ``roots`` (lambda_j, f_j,
+    multiplicity, the denominators lambda_j^2 + omega_f^2 of shape (modes, roots))."""
+    rig, a, w2, kept, mb = frame
+    lam, fw, m, den = roots
+    lt = np.multiply.outer(t, lam)
+    e = np.exp(lt)
+    em1 = np.expm1(lt)
+    J = m * (fw * em1 / lam).real.sum(axis=1)
+    P = m * (fw * (em1 - lt) / lam**2).real.sum(axis=1)
+    F = m * (fw * e).real.sum(axis=1)
+    dF = m * (fw * lam * e).real.sum(axis=1)
+    n_rigid = rig.size
+    x[1:-1, 0], xv[1:-1, 0] = t - P / mb, 1.0 - J / mb
+    x[1:-1, 1 : 1 + n_rigid] = np.outer(P, rig)
+    xv[1:-1, 1 : 1 + n_rigid] = np.outer(J, rig)
+    flex = slice(1 + n_rigid, None)
+    x[1:-1, flex] = np.outer(F, a / w2)  # dropped modes: quasi-static
+    xv[1:-1, flex] = np.outer(dF, a / w2)
+    inv = (1.0 / den[:kept]).T  # (roots, kept modes)
+    x[1:-1, 1 + n_rigid : 1 + n_rigid + kept] = a[:kept] * m * ((fw * e) @ inv).real
+    xv[1:-1, 1 + n_rigid : 1 + n_rigid + kept] = a[:kept] * m * ((fw * lam * e) @ inv).real
 
 
 def _reduced(omega, a, mu0, k, c, beta, separation, limit):
