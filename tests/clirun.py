@@ -32,3 +32,15 @@ def refused_alike(capsys, argv, method, words, *, start=False):
     assert code == 2 and err.count("\n") == 1 and words in err, err
     with pytest.raises(InputError, match=("^" if start else "") + re.escape(words)):
         method()
+
+
+def one_error(capsys, *argv):
+    """``fem-racket ARGV``, which must be refused as every bad input is: exit 2, one line on
+    stderr (``fem-racket ...: error: ...``), no traceback. The line."""
+    code, out, err = run(capsys, *argv)
+    assert code == 2, (out, err)
+    assert "Traceback" not in err
+    lines = err.splitlines()
+    assert len(lines) == 1, err
+    assert lines[0].startswith("fem-racket") and ": error: " in lines[0]
+    return lines[0]

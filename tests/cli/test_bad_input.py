@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fem_racket.cli import main
+from tests.clirun import one_error
 
 
 @dataclass
@@ -899,15 +899,9 @@ def _check_one_error(capsys, tmp_path, case: Case) -> None:
     argv = list(case.argv)
     if argv[0] == "simulate" and "--out" not in argv:
         argv += ["--out", "result.json"]
-    code = main(argv)
-    out, err = capsys.readouterr()
-    assert code == 2, (out, err)
-    assert "Traceback" not in err
-    lines = err.splitlines()
-    assert len(lines) == 1, err
-    assert lines[0].startswith("fem-racket") and ": error: " in lines[0]
+    line = one_error(capsys, *argv)
     for needle in case.names:
-        assert needle in lines[0], f"{needle!r} not in {lines[0]!r}"
+        assert needle in line, f"{needle!r} not in {line!r}"
     after = {p: p.stat().st_mtime_ns for p in tmp_path.rglob("*")}
     assert after == before, "a file was written or changed"
 

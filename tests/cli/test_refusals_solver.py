@@ -11,17 +11,12 @@ from __future__ import annotations
 import pytest
 
 from fem_racket.cli import main
+from tests.clirun import one_error
 
 
-def _one_error(capsys, argv: list[str]) -> str:
-    code = main(argv)
-    out, err = capsys.readouterr()
-    assert code == 2, (out, err)
-    assert "Traceback" not in err
-    lines = err.splitlines()
-    assert len(lines) == 1, err
-    assert lines[0].startswith("fem-racket") and ": error: " in lines[0]
-    return lines[0].split(": error: ", 1)[1]
+def _message(capsys, *argv: str) -> str:
+    """The refusal's message (after ``fem-racket COMMAND: error:``)."""
+    return one_error(capsys, *argv).split(": error: ", 1)[1]
 
 
 def _sweep(*argv: str) -> list[str]:
@@ -64,9 +59,9 @@ def test_sweep_refuses_what_simulate_refuses_with_its_line(
     capsys, tmp_path, monkeypatch, options, says
 ):
     monkeypatch.chdir(tmp_path)
-    line = _one_error(capsys, ["simulate", *options, "--out", "r.json"])
+    line = _message(capsys, *["simulate", *options, "--out", "r.json"])
     assert says in line
-    assert _one_error(capsys, _sweep(*options)) == line
+    assert _message(capsys, *_sweep(*options)) == line
     assert not any(tmp_path.iterdir()), "a file was written"
 
 
@@ -79,7 +74,7 @@ def test_sweep_refuses_what_simulate_refuses_with_its_line(
 )
 def test_sweep_refuses_a_dropped_value(capsys, tmp_path, monkeypatch, argv, says):
     monkeypatch.chdir(tmp_path)
-    assert says in _one_error(capsys, _sweep(*argv))
+    assert says in _message(capsys, *_sweep(*argv))
     assert not any(tmp_path.iterdir()), "a file was written"
 
 
@@ -107,7 +102,7 @@ def test_a_run_files_serial_and_workers_are_refused_not_one_dropped(capsys, tmp_
     (tmp_path / "run.toml").write_text(
         '[sweep]\nposition = "0.6,0.7"\nserial = true\nworkers = 2\n'
     )
-    line = _one_error(capsys, ["sweep", "--config", "run.toml", "--out", "s.nc", "--quiet"])
+    line = _message(capsys, *["sweep", "--config", "run.toml", "--out", "s.nc", "--quiet"])
     assert (
         line == "workers = 2 is not allowed with backend 'serial': it is the 'processes' backend's"
     )
