@@ -32,7 +32,12 @@ from fem_racket.impact.settings import DEFAULTS, SolverOptions
 from fem_racket.impact.solvers import auto_method, make_solver
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.studies.grid_checks import check_offsets, check_rigidity, check_swings
+from fem_racket.studies.grid_checks import (
+    check_incidences,
+    check_offsets,
+    check_rigidity,
+    check_swings,
+)
 from fem_racket.studies.grid_values import (
     LAW_PARAMETERS,
     OPTIONAL,
@@ -173,6 +178,7 @@ class SweepSpec(SweepSolving):
         frame_length = float((frame if frame is not None else standard_frame()).length)
         check_physics(values, spec.solver, frame_length)
         check_swings(spec)
+        check_incidences(spec)
         check_offsets(spec)
         check_grid_size(spec.shape, spec.dims)
         if not isinstance(spec.peak_force, bool):

@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.linear import KCB_SPEED_RANGE
 from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.segments import (
@@ -19,12 +20,14 @@ from fem_racket.frame.segments import (
     standard_ei1_range,
     standard_frame,
 )
-from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.swing import MAX_RACKET_SPEED, Swing, closing_speed
+from fem_racket.studies.grid_values import STRING_AXES
 from fem_racket.studies.map_options import check_at_rest
-from fem_racket.studies.sweep_physics import LATERAL_AXES
-from fem_racket.validation import InputError, check_range
+from fem_racket.studies.sweep_physics import LATERAL_AXES, given
+from fem_racket.validation import InputError, check_range, show
 
-__all__ = ["check_offsets", "check_rigidity", "check_swings"]
+__all__ = ["check_incidences", "check_offsets", "check_rigidity", "check_swings"]
 
 
 def check_rigidity(spec: Any) -> None:
@@ -82,9 +85,14 @@ def check_offsets(spec: Any) -> None:
 
 
 def check_swings(spec: Any) -> None:
-    """Every swing of the grid valid (no pivot at its reference point) and closing on the
-    slowest ball at every impact point, so that no case fails on it mid-sweep."""
+    """Every swing of the grid valid (a racket speed within :data:`MAX_RACKET_SPEED`, no pivot
+    at its reference point), closing on the slowest ball at every impact point and, where K_CB
+    follows from the closing speed (the paper's law without kcb, no string bed), within the
+    paper's K_CB speeds at the fastest: so that no case fails on it mid-sweep (named as the
+    racket speed, not as the closing speed it derives)."""
     v = spec.values
+    for racket_speed in np.atleast_1d(v["racket_speed"]).tolist():
+        check_range("racket_speed", racket_speed, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
     if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
         # a swing's point without a swing would be dropped (the maps' rule)
         check_at_rest(0.0, v["reference"], v["pivot"])
@@ -99,3 +107,42 @@ def check_swings(spec: Any) -> None:
             for pivot in pivots:
                 swing = Swing.from_speed(speed, length, reference=ref, pivot=pivot)
                 closing_speed(slowest, float(np.min(swing.speed_at(x))))
+                fastest = float(np.max(v["speed"])) + float(np.max(swing.speed_at(x)))
+                if _kcb_from_speed(spec) and fastest > KCB_SPEED_RANGE[1]:
+                    raise InputError(
+                        f"racket_speed = {show(speed)} m/s is not allowed with speed = "
+                        f"{show(float(np.max(v['speed'])))} m/s: the closing speed {fastest:g} m/s "
+                        f"is above the {KCB_SPEED_RANGE[1]:g} m/s where the paper's K_CB holds "
+                        "(give kcb)"
+                    )
+
+
+def check_incidences(spec: Any) -> None:
+    """An oblique grid's steepest incidence on the slowest ball keeps the ball's normal speed
+    within the paper's K_CB speeds where K_CB follows from it (the paper's law without kcb, no
+    string bed, the racket at rest), named as the angle rather than the normal speed it
+    derives: so that no case fails on it mid-sweep."""
+    v = spec.values
+    angles = {
+        n: np.abs(np.atleast_1d(v[n])).max()
+        for n in ("angle", "side_angle")
+        if v.get(n) is not None
+    }
+    if not angles or not _kcb_from_speed(spec) or np.any(np.atleast_1d(v["racket_speed"]) != 0.0):
+        return
+    steepest = Incidence(**{n: float(a) for n, a in angles.items()})
+    low, normal = KCB_SPEED_RANGE[0], steepest.components(float(np.min(v["speed"])))[0]
+    if normal < low:
+        name = max(angles, key=angles.get)
+        raise InputError(
+            f"{name} = {show(float(angles[name]))} deg is not allowed with speed = "
+            f"{show(float(np.min(v['speed'])))} m/s: the ball's normal speed {normal:.3g} m/s is "
+            f"below the {low:g} m/s where the paper's K_CB holds (give kcb)"
+        )
+
+
+def _kcb_from_speed(spec: Any) -> bool:
+    """Whether the cases' K_CB follows from their closing speed: the paper's law without kcb,
+    no string bed."""
+    v = spec.values
+    return spec.law is None and v.get("kcb") is None and not given(v, STRING_AXES)

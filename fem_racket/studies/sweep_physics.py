@@ -32,8 +32,9 @@ from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem_checks import bed_coordinates
 from fem_racket.impact.strung.solve import STRUNG_OPTIONS
 from fem_racket.strings.bed import StringBed
+from fem_racket.strings.options import MAX_STRING_TENSION_N
 from fem_racket.studies.grid_values import OBLIQUE_AXES, STRING_AXES, pattern_label
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError, check_range, show
 
 __all__ = [
     "LATERAL_AXES",
@@ -96,6 +97,9 @@ def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
         raise InputError(
             f"solver = {solver!r} is not allowed {what}: must be one of {', '.join(STRUNG_OPTIONS)}"
         )
+    if values.get("string_tension") is not None:
+        for tension in np.atleast_1d(values["string_tension"]).tolist():
+            check_range("string_tension", tension, 1.0, MAX_STRING_TENSION_N, unit="N")
     bed = StringBed()
     for x in np.atleast_1d(values["position"]):
         bed_coordinates(bed, float(x), 0.0, length, bed.head_centre)

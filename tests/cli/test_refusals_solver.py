@@ -110,3 +110,35 @@ def test_a_run_files_serial_and_workers_are_refused_not_one_dropped(capsys, tmp_
         load_config("run.toml").sweep()
     assert str(err.value) == line
     assert sorted(p.name for p in tmp_path.iterdir()) == ["run.toml"]
+
+
+# A grid value simulate refuses at once (the option's own bound, or the K_CB range its closing or
+# normal speed leaves) is refused by the sweep before any case runs, named as the option: it was
+# refused mid-sweep as the speed it derives ("speed = 1000020.0 m/s"), after solving a case and
+# leaving a checkpoint that a rerun could never complete, or accepted (string tension 1e9 N).
+GRID_VALUES = [
+    (["--string-tension", "1e9"], "string_tension = 1000000000.0 N is not allowed"),
+    (["--racket-speed", "0,1e6"], "racket_speed = 1000000.0 m/s is not allowed: must lie in"),
+    (
+        ["--racket-speed", "0,90"],
+        "racket_speed = 90.0 m/s is not allowed with speed = 30.0 m/s: the closing speed",
+    ),
+    (["--angle", "0,89.999"], "angle = 89.999 deg is not allowed with speed = 20.0 m/s"),
+    (["--side-angle", "89.99"], "side_angle = 89.99 deg is not allowed with speed = 20.0 m/s"),
+]
+
+
+@pytest.mark.parametrize(("options", "says"), GRID_VALUES, ids=[c[0][0] for c in GRID_VALUES])
+def test_a_grid_value_is_refused_before_any_case_runs(capsys, tmp_path, monkeypatch, options, says):
+    monkeypatch.chdir(tmp_path)
+    line = one_error(capsys, *_sweep(*options, "--out", "s.nc"))
+    assert says in line, line
+    assert list(tmp_path.iterdir()) == []  # no case ran: no checkpoint, no file
+
+
+def test_the_grid_checks_let_a_law_or_kcb_take_what_the_paper_k_cb_cannot(capsys, tmp_path):
+    # K_CB from the closing speed bounds it only under the paper's law without kcb
+    for options in (["--kcb", "30000"], ["--law", "hunt-crossley"]):
+        argv = _sweep("--racket-speed", "0,90", *options, "--out", str(tmp_path / "s.nc"))
+        assert main(argv) == 0, capsys.readouterr().err
+        (tmp_path / "s.nc").unlink()

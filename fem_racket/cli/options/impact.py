@@ -18,7 +18,7 @@ from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.settings import BASES
 from fem_racket.impact.solvers import SOLVER_NAMES, auto_method
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.impact.swing import DEFAULT_REFERENCE, MAX_RACKET_SPEED, Swing
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_defaults import DEFAULTS as SIMULATE_DEFAULTS
 from fem_racket.io.config_defaults import PLAY_DEFAULTS
@@ -124,10 +124,6 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
 
 #: The units of the swing's point options, as the refusals name them.
 _SWING_UNITS = {"reference": "x/L", "pivot": "m"}
-#: Largest |--racket-speed| [m/s]: racket heads move at up to about 40-50 m/s in the fastest
-#: serves (an assumption of this bound), and 100 m/s is the top of the speeds the paper's K_CB
-#: law is given for (:data:`fem_racket.contact.linear.KCB_SPEED_RANGE`).
-MAX_RACKET_SPEED = KCB_SPEED_RANGE[1]
 
 
 def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False) -> None:

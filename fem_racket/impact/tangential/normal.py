@@ -89,10 +89,14 @@ class SampledNormal:
         spline = CubicHermiteSpline(t, p, f)
         object.__setattr__(self, "_spline", spline)
         object.__setattr__(self, "force_spline", CubicSpline(t, f))
-        grid = t
+        grid, force = t, spline.derivative()
         for i in range(1, len(t)):
             if f[i - 1] > 0.0 >= f[i]:
-                grid = np.append(t[:i], _piece_root(spline.derivative(), t[i - 1], t[i]))
+                # P' equals the samples at the knots up to round-off only: where that leaves it
+                # positive at the zero sample (~1e-27 N at the end of a slow law's long tail),
+                # the force is zero there to machine precision and the sample ends the contact
+                end = t[i] if force(t[i]) > 0.0 else _piece_root(force, t[i - 1], t[i])
+                grid = np.append(t[:i], end)
                 break
         object.__setattr__(self, "end", float(grid[-1]))
         object.__setattr__(self, "grid", grid)

@@ -249,3 +249,21 @@ def test_incidence_checks():
         Incidence(spin=float("nan"))
     vn, vt = Incidence(angle=60.0).components(2.0)
     assert vn == pytest.approx(1.0, rel=1e-15) and vt == pytest.approx(math.sqrt(3.0), rel=1e-15)
+
+
+def test_a_force_zero_to_round_off_at_a_sample_ends_the_contact():
+    # A sample of F <= 0 after one > 0 marks the end of contact; the Hermite spline's P' equals
+    # the samples at the knots only to round-off: a slow Hunt-Crossley contact's tail (normal
+    # speed 0.87 m/s) left it at +1.6e-27 N where the sample is 0, and the root search failed
+    # with a traceback (simulate --speed 5 --angle 80 --law hunt-crossley). The end is that
+    # sample; the normal impact is the law's own at the normal speed, bit for bit.
+    import math
+
+    import fem_racket as fr
+    from fem_racket.impact.incidence import Incidence
+
+    speed, angle = 5.0, 80.0
+    oblique = fr.simulate(speed=speed, law="hunt-crossley", incidence=Incidence(angle=angle))
+    normal = fr.simulate(speed=speed * math.cos(math.radians(angle)), law="hunt-crossley")
+    assert oblique.normal.cor == normal.cor
+    assert oblique.tangential.solution.normal.end == pytest.approx(normal.contact_time, rel=1e-9)
