@@ -159,7 +159,7 @@ def test_solver_keys_at_their_defaults_pass(cwd, capsys):
     [
         ("linear", "hc_alpha_s_m = 0.02", "the paper's law is built from kcb and zeta"),
         ("kawazoe-1997-nonlinear", "k1_n_m_n = 3e15", "no law parameter (a preset)"),
-        ("hysteretic", "hc_alpha_s_m = 0.02", "it takes ['hyst_exponent', 'k1', 'k2']"),
+        ("hysteretic", "hc_alpha_s_m = 0.02", "must be one of ['hyst_exponent', 'k1', 'k2']"),
     ],
 )
 def test_a_law_parameter_the_law_does_not_take_is_named_by_its_key(cwd, capsys, law, key, why):
@@ -168,4 +168,4 @@ def test_a_law_parameter_the_law_does_not_take_is_named_by_its_key(cwd, capsys, 
     words = f"contact.{name} = "
     refused(capsys, words, "simulate", "--config", "run.toml")
     err = run(capsys, "simulate", "--config", "run.toml")[2]
-    assert f"(run.toml) is not allowed with contact law '{law}'" in err and why in err, err
+    assert f"(run.toml) is not allowed with law '{law}'" in err and why in err, err

@@ -70,12 +70,12 @@ def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
     params = law_parameters(vars(args))
     family = FAMILIES.get(name)
     takes = sorted(p.name for p in family.declared) if family is not None else []
-    why = f"it takes {takes}" if takes else "it takes no law parameter (a preset)"
+    why = f"must be one of {takes}" if takes else "it takes no law parameter (a preset)"
     if name == "linear":
         why = "it takes no law parameter (the paper's law is built from kcb and zeta)"
     for dest in getattr(args, "file_options", {}):
         if params.get(dest) is not None and dest not in takes:  # named by its run-file key
             raise InputError(
-                f"{option_name(args, dest)} is not allowed with contact law {show(name)}: {why}"
+                f"{option_name(args, dest)} is not allowed with law {show(name)}: {why}"
             )
     return get_law(name, **params)
