@@ -39,21 +39,29 @@ def sweep(*argv: str) -> list[str]:
     return ["sweep", "--serial", "--quiet", *argv]
 
 
+def based(command: str, base: dict[str, tuple[str, ...]], argv: tuple[str, ...]) -> list[str]:
+    """``command`` with the ``base`` options (name -> values) the case does not give itself,
+    then the case's own arguments (an option given twice with two values is refused)."""
+    kept = [x for name, values in base.items() if name not in argv for x in (name, *values)]
+    return [command, *kept, *argv]
+
+
 def refine(*argv: str) -> list[str]:
     # Small enough that a case wrongly running to the end costs little (and leaves files).
-    return ["refine", "--elements", "5", "10", "--family", "uniform", "--positions", "0.75", *argv]
+    base = {"--elements": ("5", "10"), "--family": ("uniform",), "--positions": ("0.75",)}
+    return based("refine", base, argv)
 
 
 def vtk(*argv: str) -> list[str]:
-    return ["export-vtk", "--frames", "3", *argv]
+    return based("export-vtk", {"--frames": ("3",)}, argv)
 
 
 def anim(*argv: str) -> list[str]:
-    return ["animate", "--frames", "3", "--size", "160x160", *argv]
+    return based("animate", {"--frames": ("3",), "--size": ("160x160",)}, argv)
 
 
 def mapc(*argv: str) -> list[str]:
-    return ["map", "--positions", "0.5:1.0:5", *argv]
+    return based("map", {"--positions": ("0.5:1.0:5",)}, argv)
 
 
 def fitc(*argv: str, **spec: str) -> list[str]:
@@ -63,11 +71,14 @@ def fitc(*argv: str, **spec: str) -> list[str]:
 
 
 def opt(*argv: str) -> list[str]:
-    return ["optimize", "--boundaries", "0.3", "--speeds", "30", "--zone-points", "3", *argv]
+    base = {"--boundaries": ("0.3",), "--speeds": ("30",), "--zone-points": ("3",)}
+    return based("optimize", base, argv)
 
 
 def sens(*argv: str) -> list[str]:
-    return ["sensitivity", "--boundaries", "0.3", "--speeds", "30", "--designs", "8", *argv]
+    return based(
+        "sensitivity", {"--boundaries": ("0.3",), "--speeds": ("30",), "--designs": ("8",)}, argv
+    )
 
 
 def repro(*argv: str) -> list[str]:

@@ -25,6 +25,7 @@ import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from fem_racket.cli.options.once import refuse_repeated
 from fem_racket.cli.options.runfile_clash import OneFile, refuse_frame_clash
 from fem_racket.validation import InputError, show
 
@@ -138,8 +139,10 @@ class _Given(argparse.Namespace):
 
 
 def _explicit(sub: argparse.ArgumentParser, argv: Sequence[str], command: str) -> set[str]:
-    """The dests the command line sets explicitly (parsed again with no defaults)."""
+    """The dests the command line sets explicitly (parsed again with no defaults); an option
+    given twice with two values is refused (:func:`.once.refuse_repeated`)."""
     rest = list(argv)[list(argv).index(command) + 1 :]
+    refuse_repeated(sub, rest)
     ns, _ = sub.parse_known_args(rest, namespace=_Given())
     return set(vars(ns))
 
