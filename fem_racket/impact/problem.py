@@ -44,6 +44,7 @@ from fem_racket.impact.problem_checks import (
     check_offset,
     check_strings,
     check_structure,
+    check_swing,
 )
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.strings.bed import StringBed
@@ -173,10 +174,7 @@ class ImpactProblem:
             LinearContact.for_speed(
                 self.impact.speed, kcb=self.kcb, zeta=self.zeta, ball_mass=self.ball.mass
             )
-        if self.swing is not None and self.frame_velocity is not None:
-            raise InputError("swing and frame_velocity cannot be combined: give one")
-        if self.swing is not None:
-            _ = self.closing_speed  # ball and strings must close, under any law
+        check_swing(self)
         if self.held:
             check_held(self)
         if self.strings is not None:

@@ -20,6 +20,7 @@ from fem_racket.frame.hand import check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import CENTRE, ClampedHead
 from fem_racket.impact.offaxis import check_offsets
+from fem_racket.impact.swing import check_kcb_closing
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, show
 
@@ -176,3 +177,18 @@ def check_strings(problem: Any) -> None:
     bed_coordinates(bed, problem.impact.position, offset, L, bed.head_centre)
     if offset != 0.0:
         _ = problem.model.torsion  # refuses a frame without torsion data
+
+
+def check_swing(problem: Any) -> None:
+    """A swing (if any) not combined with a frame velocity; its ball and strings close at the
+    impact point and, where K_CB follows from that closing speed (the paper's law without kcb,
+    no string bed), within the speeds the paper gives K_CB for: refused naming the racket's
+    speed at the impact point."""
+    if problem.swing is None:
+        return
+    if problem.frame_velocity is not None:
+        raise InputError("swing and frame_velocity cannot be combined: give one")
+    closing = problem.closing_speed  # ball and strings must close, under any law
+    if problem.law is None and problem.kcb is None and problem.strings is None:
+        name = "racket speed at the impact point"
+        check_kcb_closing(problem.impact.speed, problem.racket_speed, closing, name)

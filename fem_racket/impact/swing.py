@@ -33,7 +33,7 @@ import numpy as np
 from fem_racket.contact.linear import KCB_SPEED_RANGE
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.system import CoupledSystem, Trajectory
-from fem_racket.validation import InputError, check_finite, check_range
+from fem_racket.validation import InputError, check_finite, check_range, show
 
 __all__ = [
     "MAX_RACKET_SPEED",
@@ -42,6 +42,7 @@ __all__ = [
     "Swing",
     "add_swing",
     "ball_speed_out",
+    "check_kcb_closing",
     "closing_speed",
     "racket_velocity",
     "rebound_summary",
@@ -148,6 +149,19 @@ def closing_speed(speed: float, racket_speed: float) -> float:
             f"speed {speed:g} m/s: the two must close (v_in + v_r > 0)"
         )
     return c
+
+
+def check_kcb_closing(speed: float, racket_speed: float, closing: float, name: str) -> None:
+    """Refuse a swing whose closing speed ``closing`` [m/s] (of the ball's ``speed`` and the
+    racket's) is above the speeds the paper gives K_CB for, where K_CB follows from it (the
+    paper's law without kcb): named as the racket speed (``name`` = ``racket_speed`` [m/s]), not
+    as the closing speed it derives."""
+    if closing > KCB_SPEED_RANGE[1]:
+        raise InputError(
+            f"{name} = {show(racket_speed)} m/s is not allowed with speed = {show(speed)} m/s: "
+            f"the closing speed {closing:g} m/s is above the {KCB_SPEED_RANGE[1]:g} m/s where the "
+            "paper's K_CB holds (give kcb)"
+        )
 
 
 def ball_speed_out(apparent_cor: Any, speed: Any, racket_speed: Any) -> Any:

@@ -35,6 +35,18 @@ def test_closing_speed_must_be_positive():
         closing_speed(20.0, -20.0)
 
 
+def test_a_closing_speed_beyond_the_papers_k_cb_names_the_racket_speed(model):
+    # K_CB from the closing speed is given for 1-100 m/s (Kawazoe & Kanda 1997, the table of
+    # contact.linear.KCB_SPEED_RANGE): a faster swing is refused at the problem, named as the
+    # racket's speed at the impact point, not as the closing speed ("speed = 110.0 m/s") it
+    # derives; with a K_CB of its own, or another law, the same swing runs.
+    swing = Swing.from_speed(85.0, model.mesh.length)  # a translation: 85 m/s everywhere
+    with pytest.raises(InputError, match=r"^racket speed at the impact point = 85.0 m/s is not"):
+        simulate(model, swing=swing)
+    assert simulate(model, swing=swing, kcb=kcb_from_speed(100.0), output_step=None).cor > 0.0
+    assert simulate(model, swing=Swing.from_speed(75.0, model.mesh.length), output_step=None)
+
+
 # (position x/L, ball speed, racket speed at 0.75 L, pivot [m]): translation, hand, shoulder,
 # a racket moving away from the ball, an impact behind the pivot.
 CASES = [
