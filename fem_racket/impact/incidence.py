@@ -57,6 +57,7 @@ __all__ = [
     "Incidence",
     "RPM",
     "check_incidence",
+    "check_kcb_normal",
     "head_on",
 ]
 
@@ -224,6 +225,24 @@ def check_incidence(incidence: object, *, strung: bool) -> None:
             "side_angle and side_spin are not allowed with a string bed: the oblique impact on "
             "the bed is modelled in the plane of the long axis only"
         )
+
+
+def check_kcb_normal(incidence: Incidence, speed: float) -> None:
+    """Refuse an ``incidence`` leaving the normal speed of a ball at ``speed`` [m/s] below the
+    speeds the paper gives K_CB for, where K_CB follows from it (the caller's condition: the
+    paper's law without kcb, no string bed, the racket at rest): named as the steeper of the
+    angle and the side angle, not as the normal speed it derives."""
+    from fem_racket.contact.linear import KCB_SPEED_RANGE
+
+    low, normal = KCB_SPEED_RANGE[0], incidence.components(speed)[0]
+    if normal >= low:
+        return
+    dest = "angle" if abs(incidence.angle) >= abs(incidence.side_angle) else "side_angle"
+    raise InputError(
+        f"{dest} = {show(getattr(incidence, dest))} deg is not allowed with speed = "
+        f"{show(speed)} m/s: the ball's normal speed {normal:.3g} m/s is below the {low:g} m/s "
+        "where the paper's K_CB holds (give kcb)"
+    )
 
 
 def head_on(problem: Any) -> Any:

@@ -35,12 +35,13 @@ from fem_racket.contact.presets import get_law
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import ClampedHead
-from fem_racket.impact.incidence import Incidence, check_incidence
+from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.problem_checks import (
     check_build_options,
     check_held,
     check_law,
+    check_oblique,
     check_offset,
     check_strings,
     check_structure,
@@ -181,7 +182,7 @@ class ImpactProblem:
             check_strings(self)
         object.__setattr__(self, "offset", check_finite("offset", self.offset, "m"))
         check_offset(self)
-        check_incidence(self.incidence, strung=self.strings is not None)
+        check_oblique(self)
 
     def ball_law(self) -> ContactLaw:
         """The ball's own law on the string bed: ``law``, or the ``kawazoe-1997-ball``."""

@@ -19,6 +19,7 @@ from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.hand import check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import CENTRE, ClampedHead
+from fem_racket.impact.incidence import check_incidence, check_kcb_normal
 from fem_racket.impact.offaxis import check_offsets
 from fem_racket.impact.swing import check_kcb_closing
 from fem_racket.strings.bed import StringBed
@@ -192,3 +193,14 @@ def check_swing(problem: Any) -> None:
     if problem.law is None and problem.kcb is None and problem.strings is None:
         name = "racket speed at the impact point"
         check_kcb_closing(problem.impact.speed, problem.racket_speed, closing, name)
+
+
+def check_oblique(problem: Any) -> None:
+    """The incidence (:func:`~fem_racket.impact.incidence.check_incidence`) and, where K_CB
+    follows from its normal speed (the paper's law without kcb, no string bed, the racket at
+    rest), that speed within the speeds the paper gives K_CB for, named as the angle."""
+    check_incidence(problem.incidence, strung=problem.strings is not None)
+    own_kcb = problem.law is not None or problem.kcb is not None or problem.strings is not None
+    moving = problem.swing is not None or problem.frame_velocity is not None
+    if problem.incidence is not None and not (own_kcb or moving):
+        check_kcb_normal(problem.incidence, problem.impact.speed)

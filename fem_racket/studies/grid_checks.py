@@ -7,7 +7,6 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.linear import KCB_SPEED_RANGE
 from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.segments import (
@@ -20,12 +19,12 @@ from fem_racket.frame.segments import (
     standard_ei1_range,
     standard_frame,
 )
-from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence import Incidence, check_kcb_normal
 from fem_racket.impact.swing import MAX_RACKET_SPEED, Swing, check_kcb_closing, closing_speed
 from fem_racket.studies.grid_values import STRING_AXES
 from fem_racket.studies.map_options import check_at_rest
 from fem_racket.studies.sweep_physics import LATERAL_AXES, given
-from fem_racket.validation import InputError, check_range, show
+from fem_racket.validation import InputError, check_range
 
 __all__ = ["check_incidences", "check_offsets", "check_rigidity", "check_swings"]
 
@@ -127,14 +126,7 @@ def check_incidences(spec: Any) -> None:
     if not angles or not _kcb_from_speed(spec) or np.any(np.atleast_1d(v["racket_speed"]) != 0.0):
         return
     steepest = Incidence(**{n: float(a) for n, a in angles.items()})
-    low, normal = KCB_SPEED_RANGE[0], steepest.components(float(np.min(v["speed"])))[0]
-    if normal < low:
-        name = max(angles, key=angles.get)
-        raise InputError(
-            f"{name} = {show(float(angles[name]))} deg is not allowed with speed = "
-            f"{show(float(np.min(v['speed'])))} m/s: the ball's normal speed {normal:.3g} m/s is "
-            f"below the {low:g} m/s where the paper's K_CB holds (give kcb)"
-        )
+    check_kcb_normal(steepest, float(np.min(v["speed"])))
 
 
 def _kcb_from_speed(spec: Any) -> bool:

@@ -41,3 +41,16 @@ def test_the_bounds_themselves_and_real_play_pass():
     Incidence(radius=MAX_BALL_RADIUS, compliance_ratio=MAX_COMPLIANCE_RATIO)
     # real play: a heavy topspin, a grippy string, a large ball, Mindlin's solid sphere
     Incidence(angle=40.0, spin=5000.0, friction=0.6, radius=0.0343, compliance_ratio=1.5)
+
+
+def test_a_normal_speed_below_the_papers_k_cb_names_the_angle():
+    # K_CB from the normal speed V cos(angle) is given for 1-100 m/s (contact.linear's
+    # KCB_SPEED_RANGE): a steeper angle is refused by the problem itself, named as the angle,
+    # not as the normal speed ("speed = 0.868 m/s") it derives; with a K_CB or a law of its own
+    # the same ball runs.
+    import fem_racket as fr
+
+    steep = Incidence(angle=80.0)
+    with pytest.raises(InputError, match=r"^angle = 80.0 deg is not allowed with speed = 5.0"):
+        fr.simulate(speed=5.0, incidence=steep)
+    assert fr.simulate(speed=5.0, incidence=steep, kcb=30000.0).normal.cor > 0.0

@@ -28,7 +28,7 @@ from fem_racket.impact.incidence import (
     Incidence,
 )
 from fem_racket.outputs import provenance
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError
 
 if TYPE_CHECKING:
     from fem_racket.impact.oblique.stroke import Stroke
@@ -122,23 +122,14 @@ def incidence_from_args(args: argparse.Namespace) -> Incidence | None:
 def _check_normal_speed(args: argparse.Namespace, incidence: Incidence) -> None:
     """Refuse an ``--angle`` (or ``--side-angle``) that leaves the ball's normal speed below the
     paper's K_CB range when K_CB follows from it (no --kcb, no --law, no string bed, the
-    racket at rest), naming the angle rather than the speed it derives."""
-    from fem_racket.contact.linear import KCB_SPEED_RANGE
+    racket at rest; :func:`~fem_racket.impact.incidence.check_kcb_normal`), before the work."""
+    from fem_racket.impact.incidence import check_kcb_normal
     from fem_racket.strings.options import STRING_OPTIONS
 
     own_kcb = getattr(args, "kcb", None) is not None or getattr(args, "law", None) != "linear"
     bed = any(getattr(args, d, None) not in (None, False) for d in STRING_OPTIONS)
-    if own_kcb or bed or getattr(args, "racket_speed", 0.0) != 0.0:
-        return
-    low, normal = KCB_SPEED_RANGE[0], incidence.components(args.speed)[0]
-    if normal >= low:
-        return
-    dest = "angle" if abs(incidence.angle) >= abs(incidence.side_angle) else "side_angle"
-    raise InputError(
-        f"{dest} = {show(getattr(incidence, dest))} deg is not allowed with speed = "
-        f"{show(args.speed)} m/s: the ball's normal speed {normal:.3g} m/s is below the "
-        f"{low:g} m/s where the paper's K_CB holds (give --kcb)"
-    )
+    if not (own_kcb or bed or getattr(args, "racket_speed", 0.0) != 0.0):
+        check_kcb_normal(incidence, args.speed)
 
 
 def stroke_from_args(args: argparse.Namespace) -> Stroke | None:
