@@ -32,6 +32,7 @@ import numpy as np
 
 from fem_racket.contact.linear import KCB_SPEED_RANGE
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.swing_reach import MAX_RACKET_SPEED, allowed_pivots
 from fem_racket.impact.system import CoupledSystem, Trajectory
 from fem_racket.validation import InputError, check_finite, check_range, show
 
@@ -43,17 +44,13 @@ __all__ = [
     "add_swing",
     "ball_speed_out",
     "check_kcb_closing",
+    "check_swing_speeds",
     "closing_speed",
     "racket_velocity",
     "rebound_summary",
     "swing_setup",
     "swing_summary",
 ]
-
-#: Largest |racket speed| [m/s] the tool takes: racket heads move at up to about 40-50 m/s in the
-#: fastest serves (an assumption of this bound), and 100 m/s is the top of the speeds the paper's
-#: K_CB law is given for (:data:`fem_racket.contact.linear.KCB_SPEED_RANGE`).
-MAX_RACKET_SPEED = KCB_SPEED_RANGE[1]
 
 #: Reference point of the racket speed, x/L (the string centre).
 DEFAULT_REFERENCE = 0.75
@@ -99,7 +96,8 @@ class Swing:
             Reference point, x/L in [0, 1].
         pivot : float, optional
             Pivot from the butt [m] (negative: beyond the butt, e.g. a shoulder); the racket
-            translates when None.
+            translates when None. Refused where it would move the butt or the tip faster than
+            :data:`MAX_RACKET_SPEED` (:func:`pivot_reach`).
         """
         v = check_finite("racket_speed", racket_speed, "m/s")
         ref = check_range("reference", reference, 0.0, 1.0, unit="x/L") * length
@@ -112,7 +110,19 @@ class Swing:
                 f"({ref:g} m), whose speed it would fix at zero"
             )
         omega = v / (ref - p)
-        return cls(-omega * p, omega)
+        swing = cls(-omega * p, omega)
+        if swing.fastest(length) > MAX_RACKET_SPEED:
+            raise InputError(
+                f"pivot = {show(pivot)} m is not allowed with racket_speed = {show(v)} m/s: the "
+                f"racket would turn at {abs(omega):.4g} rad/s, its butt or tip faster than "
+                f"{MAX_RACKET_SPEED:g} m/s: {allowed_pivots(v, ref, length)}"
+            )
+        return swing
+
+    def fastest(self, length: float) -> float:
+        """The largest |speed| [m/s] of a point of a racket of ``length`` [m]: its butt's or
+        its tip's (the speed is linear along it)."""
+        return float(np.max(np.abs(self.speed_at(np.array([0.0, length])))))
 
     def speed_at(self, x: float | np.ndarray) -> float | np.ndarray:
         """Speed of the point(s) ``x`` [m] towards the ball [m/s]."""
@@ -138,6 +148,17 @@ class Swing:
             "racket_angular_speed_rad_s": self.omega,
             "pivot_m": self.pivot,
         }
+
+
+def check_swing_speeds(swing: Swing, length: float) -> None:
+    """Refuse a swing moving a point of a racket of ``length`` [m] (its butt or its tip)
+    faster than :data:`MAX_RACKET_SPEED` (one line, naming the swing)."""
+    if swing.fastest(length) > MAX_RACKET_SPEED:
+        butt, tip = swing.speed_at(0.0), swing.speed_at(length)
+        raise InputError(
+            f"swing = {swing!r} is not allowed: its butt moves at {butt:.4g} m/s and its tip "
+            f"at {tip:.4g} m/s, faster than the {MAX_RACKET_SPEED:g} m/s a racket may move"
+        )
 
 
 def closing_speed(speed: float, racket_speed: float) -> float:
