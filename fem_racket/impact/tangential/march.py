@@ -32,10 +32,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.impact.tangential.normal import NormalHistory, _piece_root
+from fem_racket.validation import InputError, show
 
 __all__ = ["Phase", "TangentialContact", "TangentialSolution", "march"]
 
-#: Phases a march may take before it is declared stuck (Zeno chattering).
+#: Phases a march may take before it is declared stuck (Zeno chattering; refused in one line).
 MAX_PHASES = 200
 
 
@@ -245,7 +246,11 @@ def march(c: TangentialContact, normal: NormalHistory, slip: float) -> Tangentia
         if t1 is None or t1 >= normal.end:
             break
         if len(phases) >= MAX_PHASES:
-            raise RuntimeError(f"tangential contact switched {MAX_PHASES} times: chattering")
+            raise InputError(
+                f"friction = {show(c.friction)} is not allowed for this impact: the tangential "
+                f"contact switched {MAX_PHASES} times by {t1 * 1e3:.4g} ms without settling "
+                "(grip and slide undecided: chattering)"
+            )
         tt = np.array([t1])
         if p.kind == "grip":
             s1, f1 = (v[0] for v in _grip(c, p, tt))
