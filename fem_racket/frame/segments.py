@@ -12,6 +12,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from fem_racket.frame.constants import PAPER_EI1
 from fem_racket.frame.rigidity import Rigidity
 from fem_racket.validation import InputError, check_positive, check_range, show
 
@@ -38,8 +39,6 @@ __all__ = [
 
 #: EI2 / EI1 of the paper's stepped beam (section 2.2).
 EI_RATIO = 0.88
-#: EI1 of the paper's standard racket [N m^2] (section 2.2).
-PAPER_EI1 = 146.0
 #: Mass per length of the paper's grip and top sides [kg/m] (section 2.2).
 RHOA1, RHOA2 = 0.696, 0.458
 #: EI1 of the paper's "rigid" racket [N m^2] (section 3.1).
