@@ -8,10 +8,20 @@ their own names): :mod:`fem_racket.frame.segments`, :mod:`fem_racket.frame.model
 
 from __future__ import annotations
 
-__all__ = ["CLOCK_PLACES", "DEFAULT_MODES", "FIT_ELEMENTS", "KG_CM2", "PAPER_EI1", "PLACES"]
+__all__ = [
+    "CLOCK_PLACES",
+    "DEFAULT_MODES",
+    "FIT_ELEMENTS",
+    "KG_CM2",
+    "PAPER_EI1",
+    "PLACES",
+    "RIGID_EI1",
+]
 
 #: EI1 of the paper's standard racket [N m^2] (section 2.2).
 PAPER_EI1 = 146.0
+#: EI1 of the paper's "rigid" racket [N m^2] (section 3.1).
+RIGID_EI1 = 9999.0
 #: Flexible modes kept by default (COR within ~1e-7 of the untruncated FE model).
 DEFAULT_MODES = 80
 #: Cells of the mesh used to compute f1 and written by ``fem-racket fit``

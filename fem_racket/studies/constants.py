@@ -4,9 +4,9 @@ numbers and tables, importing nothing of the library's numerics (``fem-racket CO
 reads them without numpy).
 
 Each value has this one home; the modules that use it import it from here (and keep it among
-their own names): :mod:`fem_racket.studies.executors`, :mod:`fem_racket.studies.spin_map`,
-:mod:`fem_racket.studies.design.zone`, :mod:`fem_racket.studies.design.variables`,
-:mod:`fem_racket.studies.target_values`.
+their own names): :mod:`fem_racket.studies.executors`, :mod:`fem_racket.studies.map_options`,
+:mod:`fem_racket.studies.spin_map`, :mod:`fem_racket.studies.design.zone`,
+:mod:`fem_racket.studies.design.variables`, :mod:`fem_racket.studies.target_values`.
 """
 
 from __future__ import annotations
@@ -16,6 +16,8 @@ from fem_racket.frame.constants import KG_CM2
 __all__ = [
     "BACKENDS",
     "KEEP",
+    "MAP_POSITIONS",
+    "MAP_POWER_FRACTION",
     "MINIMISED",
     "OBJECTIVES",
     "RANKED",
@@ -28,6 +30,13 @@ __all__ = [
 
 #: Where sweep chunks run (:mod:`fem_racket.studies.executors`).
 BACKENDS = ("serial", "processes", "dask")
+
+#: A map's default grid: the string face from its throat end to the tip, x/L (start, stop,
+#: points) (:data:`fem_racket.studies.map_options.DEFAULT_POSITIONS`).
+MAP_POSITIONS = (0.5, 1.0, 200)
+#: Default fraction of the maximum v_out bounding the power region
+#: (:data:`fem_racket.studies.map_options.DEFAULT_POWER_FRACTION`).
+MAP_POWER_FRACTION = 0.95
 
 #: The spin map's grid unless given: x/L along the head and y [m] across it (each point is one
 #: oblique impact).
