@@ -6,7 +6,8 @@ reads them without numpy).
 Each value has this one home; the modules that use it import it from here (and keep it among
 their own names): :mod:`fem_racket.studies.executors`, :mod:`fem_racket.studies.map_options`,
 :mod:`fem_racket.studies.spin_map`, :mod:`fem_racket.studies.design.zone`,
-:mod:`fem_racket.studies.design.variables`, :mod:`fem_racket.studies.target_values`.
+:mod:`fem_racket.studies.design.variables`, :mod:`fem_racket.studies.design.solvers`,
+:mod:`fem_racket.studies.design.unused`, :mod:`fem_racket.studies.target_values`.
 """
 
 from __future__ import annotations
@@ -15,9 +16,12 @@ from fem_racket.frame.constants import KG_CM2
 
 __all__ = [
     "BACKENDS",
+    "GLOBAL_METHODS",
     "KEEP",
+    "LOCAL_METHODS",
     "MAP_POSITIONS",
     "MAP_POWER_FRACTION",
+    "METHODS",
     "MINIMISED",
     "OBJECTIVES",
     "RANKED",
@@ -51,6 +55,12 @@ SPIN_REFUSES = {
     "reference": "the spin map strikes the racket at rest",
 }
 
+#: A design study's search methods: scipy.optimize's local and global ones
+#: (:mod:`fem_racket.studies.design.solvers`), and all, with pymoo's NSGA-II
+#: (:mod:`fem_racket.studies.design.unused`).
+LOCAL_METHODS = ("SLSQP", "trust-constr")
+GLOBAL_METHODS = ("differential-evolution",)
+METHODS = (*LOCAL_METHODS, *GLOBAL_METHODS, "nsga2")
 #: The zones a design study names: uniform over a range, or a Gaussian about mode 1's node.
 ZONES = ("uniform", "node")
 #: Objectives (maximised): name -> label with units.
