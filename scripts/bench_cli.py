@@ -30,7 +30,7 @@ built), each with the package modules and the heavy libraries (:data:`HEAVY`) it
 ``--help`` of the same tree in the same run.
 
 Usage: python scripts/bench_cli.py [--quick] [--repeat N] [--tree DIR ...] [--no-cache]
-       [--million] [--help-commands]
+       [--million] [--help-commands]  (with --quick: --help and simulate --help, once each)
 """
 
 from __future__ import annotations
@@ -134,10 +134,11 @@ def imported(stderr: str) -> list[str]:
 
 
 def help_rows(
-    trees: list[Path], envs: dict[Path, dict[str, str]], scratch: Path, repeat: int
+    trees: list[Path], envs: dict[Path, dict[str, str]], scratch: Path, repeat: int, quick: bool
 ) -> list[dict]:
-    """Time ``--help`` and every ``COMMAND --help`` ``repeat`` times per tree (trees in turn),
-    and count what one ``-X importtime`` run of each imports; print the table, return its rows."""
+    """Time ``--help`` and every ``COMMAND --help`` (``quick``: the first command's only)
+    ``repeat`` times per tree (trees in turn), and count what one ``-X importtime`` run of each
+    imports; print the table, return its rows."""
     names = subprocess.run(
         [sys.executable, "-c", "from fem_racket.cli import COMMANDS; print(*COMMANDS)"],
         env=envs[trees[0]],
@@ -145,7 +146,7 @@ def help_rows(
         capture_output=True,
         text=True,
         check=True,
-    ).stdout.split()
+    ).stdout.split()[: 1 if quick else None]
     commands = {"--help": ["--help"], **{f"{n} --help": [n, "--help"] for n in names}}
     walls: dict[tuple[str, Path], list[float]] = {}
     cpus: dict[tuple[str, Path], list[float]] = {}
@@ -229,7 +230,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
         if args.help_commands:
             for tree in trees:  # writes the bytecode cache
                 run(["--help"], envs[tree], scratch)
-            rows = help_rows(trees, envs, scratch, repeat)
+            rows = help_rows(trees, envs, scratch, repeat, args.quick)
             load = os.getloadavg()
             print(f"load average (1 min) {load_before[0]:.1f} before, {load[0]:.1f} after")
             for i, tree in enumerate(trees):
