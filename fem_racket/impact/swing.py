@@ -30,9 +30,10 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from fem_racket.contact.linear import KCB_SPEED_RANGE
+from fem_racket.contact.constants import KCB_SPEED_RANGE
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.swing_reach import MAX_RACKET_SPEED, allowed_pivots
+from fem_racket.impact.constants import DEFAULT_REFERENCE, MAX_RACKET_SPEED
+from fem_racket.impact.swing_reach import allowed_pivots
 from fem_racket.impact.system import CoupledSystem, Trajectory
 from fem_racket.validation import InputError, check_finite, check_range, show
 
@@ -51,9 +52,6 @@ __all__ = [
     "swing_setup",
     "swing_summary",
 ]
-
-#: Reference point of the racket speed, x/L (the string centre).
-DEFAULT_REFERENCE = 0.75
 
 
 @dataclass(frozen=True)

@@ -12,14 +12,9 @@ from __future__ import annotations
 
 import math
 
-from fem_racket.contact.linear import KCB_SPEED_RANGE
+from fem_racket.impact.constants import MAX_RACKET_SPEED
 
-__all__ = ["MAX_RACKET_SPEED", "allowed_pivots", "pivot_reach"]
-
-#: Largest |racket speed| [m/s] the tool takes: racket heads move at up to about 40-50 m/s in the
-#: fastest serves (an assumption of this bound), and 100 m/s is the top of the speeds the paper's
-#: K_CB law is given for (:data:`fem_racket.contact.linear.KCB_SPEED_RANGE`).
-MAX_RACKET_SPEED = KCB_SPEED_RANGE[1]
+__all__ = ["allowed_pivots", "pivot_reach"]
 
 
 def pivot_reach(racket_speed: float, reference_m: float, length: float) -> tuple[float, float]:

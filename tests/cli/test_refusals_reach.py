@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 import fem_racket as fr
-from fem_racket.impact.swing_reach import MAX_RACKET_SPEED, pivot_reach
+from fem_racket.impact.constants import MAX_RACKET_SPEED
+from fem_racket.impact.swing_reach import pivot_reach
 from fem_racket.validation import InputError
 from tests.clirun import one_error, refused_alike, run
 
