@@ -131,7 +131,7 @@ def _edge_lines(mesh) -> tuple[np.ndarray, np.ndarray]:
 def disk_load(mesh: BedMesh, points: np.ndarray, radius: float, full: bool = False) -> np.ndarray:
     """Load vectors q (interior DOFs, or every DOF when ``full``; one column per point) of a
     unit mean over the disk of ``radius`` [m] around each point (x, y) [m]; a disk off the
-    meshed bed is refused (:func:`fem_racket.strings.reach.check_on_bed` first, to name the
+    meshed bed is refused (:func:`fem_racket.strings.reach.on_bed` first, to name the
     reachable points)."""
     pts = np.atleast_2d(points)
     off = mesh.clearance(pts) < radius
