@@ -225,7 +225,8 @@ def map_file(cfg: RunConfig) -> list[Any]:
             for name, model in _rackets(o)
         ]  # fmt: skip
     positions = as_values("position", o["positions"])
-    play = MapPlay(o["speed"], o["racket_speed"], o["reference"], o["pivot"], positions)
+    reference = None if o["reference"] == DEFAULT_REFERENCE else o["reference"]  # as the CLI
+    play = MapPlay(o["speed"], o["racket_speed"], reference, o["pivot"], positions)
     if o["offsets"] is not None:
         from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
 

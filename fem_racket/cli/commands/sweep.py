@@ -27,6 +27,7 @@ from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.laws import add_law_options
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
@@ -189,7 +190,7 @@ def run(args: argparse.Namespace) -> int:
     from fem_racket.contact.presets import law_parameters
     from fem_racket.studies.executors import check_scheduler
     from fem_racket.studies.sweep import sweep_result
-    from fem_racket.studies.sweep_options import SweepRun, SweepSolving
+    from fem_racket.studies.sweep_options import SOLVING_DEFAULTS, SweepRun, SweepSolving
 
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:
@@ -213,7 +214,12 @@ def run(args: argparse.Namespace) -> int:
         progress=progress_of(args),
         parameters=run_parameters(args),
     )
-    solving = fields_from_args(args, SweepSolving)
+    told = given_options(args)  # the solver's options given, at any value (as simulate's)
+    solving = {
+        k: v
+        for k, v in fields_from_args(args, SweepSolving).items()
+        if k not in SOLVING_DEFAULTS or k in told
+    }
     result = sweep_result(frame, **values, **solving, **running, **law_parameters(vars(args)))
     wall = time.perf_counter() - start
     _note_modes(args, frame)
