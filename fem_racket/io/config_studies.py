@@ -255,6 +255,8 @@ def refine_file(cfg: RunConfig) -> dict[str, Any]:
     # the table's values of RefineOptions' fields (the family is each study's own)
     study = {k: o[k] for k in field_names(RefineOptions) if k in o and k != "family"}
     study |= {"n_modes": o["count"], "progress": False}
+    if study.get("grading") == DEFAULT_GRADING:  # a key at its default: not given, as the CLI
+        del study["grading"]
     return {
         fam: refinement_study(cfg.frame(), o["elements"], **graded(study, fam, o["family"]))
         for fam in families
