@@ -91,3 +91,10 @@ def test_a_non_default_value_is_refused_alike(capsys, cwd, name):
     extra = tuple(other.get(a, a) for a in extra)
     line = _said(one_error(capsys, *SWEEP, "--out", "s.nc", *extra))
     assert line.startswith(words.split(" = ")[0] + " = ")
+
+
+def test_sensitivity_refuses_a_power_fraction_given_at_its_default(capsys, cwd):
+    pytest.importorskip("SALib")
+    line = one_error(capsys, "sensitivity", "--power-fraction", "0.9", "--out", "s.png")
+    assert _said(line).startswith("power_fraction = 0.9 is not allowed with output 'cor'")
+    assert not (cwd / "s.png").exists()

@@ -31,6 +31,7 @@ __all__ = [
     "SEARCH_RULES",
     "refuse_unused",
     "refuse_unused_search",
+    "refuse_power_fraction",
     "refuse_unused_sensitivity",
 ]
 
@@ -179,8 +180,16 @@ def refuse_unused_sensitivity(problem: Any, output: str) -> None:
             f"{output!r}: a sensitivity analysis computes the indices of its output only"
         )
     default = next(f.default for f in fields(problem) if f.name == "power_fraction")
-    if output != "power_region" and problem.power_fraction != default:
+    if problem.power_fraction != default:
+        refuse_power_fraction(problem.power_fraction, output)
+
+
+def refuse_power_fraction(value: float, output: str) -> None:
+    """Refuse ``power_fraction`` = ``value`` (given: the command asks this at any value, the
+    problem only at other than its default) for Sobol indices of an ``output`` other than the
+    power region."""
+    if output != "power_region":
         raise InputError(
-            f"power_fraction = {show(problem.power_fraction)} is not allowed with output "
-            f"{output!r}: only the power region is measured at a fraction of v_out's maximum"
+            f"power_fraction = {show(value)} is not allowed with output {output!r}: only the "
+            "power region is measured at a fraction of v_out's maximum"
         )
