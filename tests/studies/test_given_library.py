@@ -45,7 +45,7 @@ def test_sweep_refuses_a_default_given_as_simulate_does(name):
     assert said.startswith(f"{[k for k in kw if k not in ('law', 'solver')][-1]} = ")
 
 
-def test_a_swing_point_given_at_its_default_is_refused_at_rest():
+def test_a_swing_point_or_a_kcb_factor_given_at_its_default_is_refused():
     words = "reference = 0.75 x/L is not allowed without a swing"
     for call in (
         lambda: sweep_result(speed=[20.0], position=[0.7], reference=0.75),
@@ -54,6 +54,8 @@ def test_a_swing_point_given_at_its_default_is_refused_at_rest():
         lambda: Play(reference=0.75),
     ):
         assert _refusal(call).startswith(words)
+    said = _refusal(lambda: fr.racket_map(law="hunt-crossley", kcb_factor=1.0))
+    assert said.startswith("kcb_factor = 1.0 is not allowed with contact law 'hunt-crossley'")
     # left out, it is the swing's default point
     assert MapPlay(racket_speed=5.0).reference == 0.75 and MapPlay().reference is None
 
