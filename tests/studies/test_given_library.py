@@ -101,3 +101,14 @@ def test_left_out_the_sweep_runs_as_before():
     law = sweep_result(speed=[20.0], position=[0.7], law="hunt-crossley", progress=False)
     one = fr.simulate(speed=20.0, position=0.7, law="hunt-crossley", output_step=None)
     assert law.values[0, 0] == pytest.approx(one.cor, rel=1e-12)
+
+
+def test_a_tolerance_given_at_its_default_is_used_as_simulate_uses_it():
+    # an oblique case's normal impact keeps every mode unless a tolerance is given (simulate's
+    # rule): the sweep now passes the tolerance given at 1e-6, as simulate takes it
+    from fem_racket.impact.incidence import Incidence
+
+    grid = {"speed": [20.0], "position": [0.7], "angle": 30.0, "progress": False}
+    for kw in ({}, {"tolerance": 1e-6}):
+        one = fr.simulate(speed=20.0, position=0.7, incidence=Incidence(30.0), **kw)
+        assert sweep_result(**grid, **kw).values[0, 0] == one.summary()["cor"]
