@@ -111,9 +111,7 @@ class SweepSpec(SweepSolving):
     peak_force : bool
         Whether the peak force is computed (a result variable).
     given : frozenset of str
-        The options and parameters the caller gave (the others hold their effective
-        defaults): the solver, the law and the grid's checks refuse what was given, even at
-        its default value, where simulate refuses it.
+        The options and parameters given (at any value: refused where simulate refuses them).
     """
 
     values: dict[str, Any] = field(kw_only=True)
@@ -194,10 +192,9 @@ class SweepSpec(SweepSolving):
         return spec
 
     def solver_options(self) -> dict[str, Any]:
-        """The options of the cases' solver the caller gave (:attr:`given`, at any value), by
-        name. The sweep makes its solver with them
-        (:func:`fem_racket.impact.solvers.make_solver`), so it refuses what simulate refuses,
-        by the same rule."""
+        """The options of the cases' solver that were given (:attr:`given`), by name: the sweep
+        makes its solver with them (:func:`fem_racket.impact.solvers.make_solver`), so it
+        refuses what simulate refuses, by the same rule."""
         return {n: getattr(self, n) for n in SolverOptions.names() if n in self.given}
 
     @property

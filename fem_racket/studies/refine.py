@@ -215,8 +215,7 @@ def refinement_study(
         Uniform cells in each segment, or cells graded towards steps and ends
         (:func:`fem_racket.frame.mesh.graded_mesh`, ratio ``grading``).
     grading : float, optional
-        Cell-size ratio of the graded family (default :data:`DEFAULT_GRADING`); the uniform
-        family refuses it given at any value.
+        Cell-size ratio of the graded family (default 4; refused with "uniform", at any value).
     n_modes : int
         Flexible frequencies compared with the exact ones.
     positions : sequence of float
@@ -244,10 +243,8 @@ def refinement_study(
     impact = {k: v for k, v in impact.items() if v is not None}
     check_choice("family", family, FAMILIES)
     if family == "uniform" and grading is not None:  # given, at any value
-        raise InputError(
-            f"grading = {show(grading)} is not allowed with family 'uniform': only the graded "
-            "family grades its cells"
-        )
+        why = "only the graded family grades its cells"
+        raise InputError(f"grading = {show(grading)} is not allowed with family 'uniform': {why}")
     grading = DEFAULT_GRADING if grading is None else grading
     check_integer("modes", n_modes)
     pos = np.array([check_range("position", p, 0.0, 1.0, unit="x/L") for p in positions])
