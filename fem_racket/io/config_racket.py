@@ -20,6 +20,7 @@ from fem_racket.frame.clock import PLACES
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
 from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
 from fem_racket.io.config_tables import Option, flag, integer, number, table_options, text
+from fem_racket.io.constants import CUSTOMISE_MAPS
 from fem_racket.studies.target_values import RANKED, TARGETS, parse_target
 from fem_racket.validation import InputError, check_integer, show, work_begins
 
@@ -35,8 +36,6 @@ __all__ = [
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
-#: The maps of ``customise`` unless ``--maps``/``[customise] maps`` says (the command's default).
-CUSTOMISE_MAPS = str(Path("output") / "customised_map.png")
 
 
 def _target(where: str, value: Any) -> Any:

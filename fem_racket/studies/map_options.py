@@ -20,6 +20,8 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.studies.constants import MAP_POSITIONS as DEFAULT_POSITIONS
+from fem_racket.studies.constants import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError, check_range, show
 
 __all__ = [
@@ -35,12 +37,8 @@ __all__ = [
     "map_model",
 ]
 
-#: Default grid: the string face from its throat end to the tip, x/L (start, stop, points).
-DEFAULT_POSITIONS = (0.5, 1.0, 200)
 #: Cells a Frame is meshed with (the paper's 20).
 DEFAULT_ELEMENTS = 20
-#: Default fraction of the maximum v_out bounding the power region.
-DEFAULT_POWER_FRACTION = 0.95
 #: Most impact points of one map (positions x offsets): the batched engine holds a few arrays of
 #: (points x modes) doubles, so 10^7 points need several GB (a 2.98 GiB array was refused by
 #: numpy at 10^7 positions). Real maps have 200 (the default) to a few 10^3 points (a 41 x 41

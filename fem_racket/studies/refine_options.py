@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from fem_racket.frame.model import DEFAULT_MODES
+from fem_racket.frame.constants import DEFAULT_MODES
 
 __all__ = [
     "DEFAULT_ELEMENTS",

@@ -34,7 +34,7 @@ from fem_racket.cli.options.targets import (
     places_of,
     targets_from_args,
 )
-from fem_racket.io.config_racket import CUSTOMISE_MAPS
+from fem_racket.io.constants import CUSTOMISE_MAPS
 
 #: Where the mesh and the maps go unless --out / --maps are given.
 DEFAULT_OUTPUT = Path("output") / "customised.vtu"

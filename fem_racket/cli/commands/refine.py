@@ -21,8 +21,8 @@ from fem_racket.cli.options.impact import add_ball_options, add_separation_optio
 from fem_racket.cli.options.output import overwrite_of
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.studies.refine import (
+from fem_racket.frame.constants import DEFAULT_MODES
+from fem_racket.studies.refine_options import (
     DEFAULT_ELEMENTS,
     DEFAULT_GRADING,
     DEFAULT_POSITIONS,

@@ -13,8 +13,6 @@ import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
 from fem_racket.cli.common import (
     add_config_option,
     add_mesh_option,
@@ -33,7 +31,7 @@ from fem_racket.impact.incidence import (
     DEFAULT_BALL_RADIUS,
     DEFAULT_COMPLIANCE_RATIO,
 )
-from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
+from fem_racket.studies.grid_parameters import PARAMETERS
 from fem_racket.validation import InputError, show
 
 if TYPE_CHECKING:
@@ -87,6 +85,8 @@ def _grid_value(where: str, value: Any) -> Any:
             f"{where} = {show(value)} is not allowed: must be a number, an array of numbers or a "
             "string like '0.55:0.95:9'"
         )
+    from fem_racket.studies.grid import as_values
+
     try:
         as_values(name, value)
     except InputError as exc:
@@ -97,6 +97,9 @@ def _grid_value(where: str, value: Any) -> Any:
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The ``sweep`` command's options."""
+    # the law families' parameters, by the registry's names (as studies.grid.LAW_PARAMETERS)
+    from fem_racket.contact.registry import LAW_PARAMETERS as declared
+
     g = p.add_argument_group("swept or fixed parameters")
     for name, text in _HELP.items():
         flags = ["--" + name.replace("_", "-"), *_PLURAL.get(name, ())]
@@ -155,17 +158,20 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     r.add_argument("--json", action="store_true", help="print a JSON summary")
     add_config_option(
         p,
-        own=[*PARAMETERS, *LAW_PARAMETERS],
+        own=[*PARAMETERS, *declared],
         private=("out",),
-        convert={name: _grid_value for name in [*PARAMETERS, *LAW_PARAMETERS]},
+        convert={name: _grid_value for name in [*PARAMETERS, *declared]},
     )
 
 
 def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> None:
     """Say so when a chosen --modes exceeds the flexible modes of the coarsest mesh swept."""
+    import numpy as np
+
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.frame.model import DEFAULT_MODES
     from fem_racket.frame.segments import standard_frame
+    from fem_racket.studies.grid import as_values
 
     chosen = "modes" in getattr(args, "explicit_options", ()) or args.modes != DEFAULT_MODES
     if args.basis != "modal" or not chosen:

@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.studies.constants import GLOBAL_METHODS, LOCAL_METHODS
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.options import SearchOptions
 from fem_racket.studies.design.problem import DesignProblem
@@ -32,9 +33,6 @@ from fem_racket.validation import InputError, check_choice, check_integer
 __all__ = ["GLOBAL_METHODS", "LOCAL_METHODS", "optimize"]
 
 log = logging.getLogger(__name__)
-
-LOCAL_METHODS = ("SLSQP", "trust-constr")
-GLOBAL_METHODS = ("differential-evolution",)
 
 
 def _local(

@@ -21,6 +21,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import fields
 from typing import Any
 
+from fem_racket.studies.constants import METHODS
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
 from fem_racket.studies.design.zone import ZONES
 from fem_racket.validation import InputError, check_choice, show
@@ -95,8 +96,6 @@ RULES: tuple[tuple[str, str, Callable[[Options], bool], str], ...] = (
      "over a window"),
 )  # fmt: skip
 
-#: The search methods: scipy.optimize's local and global ones, pymoo's NSGA-II.
-METHODS = ("SLSQP", "trust-constr", "differential-evolution", "nsga2")
 #: The search's rows (:class:`.options.SearchOptions`, a method's budget): as :data:`RULES`.
 _LOCAL = "SLSQP and trust-constr"
 SEARCH_RULES: tuple[tuple[str, Callable[[Any], bool], str], ...] = (
