@@ -170,7 +170,8 @@ class ImpactProblem:
         if self.separation is not None:
             check_choice("separation", self.separation, SEPARATIONS)
         if self.law is not None:
-            check_law(self)
+            check_law(self)  # then its zeta referred to the ball (K_CB, C_CB kept): settings true
+            object.__setattr__(self, "law", self.law.for_ball(self.ball.mass))
         else:  # the paper's K_CB and zeta, checked once
             LinearContact.for_speed(
                 self.impact.speed, kcb=self.kcb, zeta=self.zeta, ball_mass=self.ball.mass
