@@ -258,11 +258,10 @@ class LinearContact(ContactLaw):
         return 2.0 * np.asarray(self.zeta) * np.sqrt(m * np.asarray(self.stiffness))
 
     def for_ball(self, ball_mass: float) -> LinearContact:
-        """The same spring K_CB and dashpot C_CB, its zeta referred to a ball of ``ball_mass``
-        [kg] (itself when that is its own ``ball_mass``; one object per mass, so problems
-        sharing a law share its referred copy too). A problem refers its law to its ball, so
-        its settings state the damping ratio of the ball that struck; refused (one line naming
-        both masses) where C_CB damps that ball critically or more (zeta >= 1)."""
+        """The same K_CB and C_CB, zeta referred to a ball of ``ball_mass`` [kg] (itself at its
+        own mass; one copy per mass, so problems sharing a law share it). A problem refers its
+        law to its ball, so its settings state the zeta of the ball that struck; refused (one
+        line naming both masses) where C_CB damps that ball critically or more."""
         m = float(ball_mass)
         if m == self.ball_mass:
             return self
