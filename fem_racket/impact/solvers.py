@@ -35,6 +35,7 @@ from dataclasses import replace
 from typing import Any
 
 from fem_racket.impact.batch_solve import each_batch, engine_batch, law_batch
+from fem_racket.impact.constants import SOLVER_NAMES
 from fem_racket.impact.held.batch import held_batch
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
@@ -223,10 +224,6 @@ class AutoSolver(Solver):
 
     def _solve(self, problem: ImpactProblem) -> Any:
         return self.pick(problem)._solve(problem)
-
-
-#: Every name :func:`make_solver` takes.
-SOLVER_NAMES = ("auto", *SOLVERS)
 
 
 def make_solver(name: str = "auto", **options: Any) -> Solver:
