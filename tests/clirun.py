@@ -2,9 +2,11 @@
 
 import json
 import re
+from pathlib import Path
 
 import pytest
 
+from fem_racket import load_config
 from fem_racket.cli import main
 from fem_racket.validation import InputError
 
@@ -32,6 +34,16 @@ def refused_alike(capsys, argv, method, words, *, start=False):
     assert code == 2 and err.count("\n") == 1 and words in err, err
     with pytest.raises(InputError, match=("^" if start else "") + re.escape(words)):
         method()
+
+
+def file_refused_alike(capsys, text, argv, method, words, *, start=False):
+    """A run file ``run.toml`` holding ``text``, written in the working folder, is refused alike
+    (:func:`refused_alike`) by ``fem-racket ARGV`` (which names ``--config run.toml``) and by
+    ``method(load_config("run.toml"))``; neither writes a file (the run file is all the folder
+    holds)."""
+    Path("run.toml").write_text(text)
+    refused_alike(capsys, argv, lambda: method(load_config("run.toml")), words, start=start)
+    assert sorted(p.name for p in Path().iterdir()) == ["run.toml"]
 
 
 def one_error(capsys, *argv):
