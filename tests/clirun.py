@@ -18,12 +18,17 @@ def run(capsys, *argv):
     return code, out, err
 
 
+def run_ok(capsys, *argv):
+    """``fem-racket ARGV``, which must exit 0 (else its stderr is shown): its stdout."""
+    code, out, err = run(capsys, *argv)
+    assert code == 0, err
+    return out
+
+
 def run_json(capsys, *argv):
     """``fem-racket ARGV --json``, which must exit 0 (else its stderr is shown): the printed
     JSON."""
-    code, out, err = run(capsys, *argv, "--json")
-    assert code == 0, err
-    return json.loads(out)
+    return json.loads(run_ok(capsys, *argv, "--json"))
 
 
 def refused_alike(capsys, argv, method, words, *, start=False):

@@ -3,7 +3,7 @@
 import json
 
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import simulate
 from fem_racket.contact.presets import PRESETS, get_law
@@ -56,9 +56,7 @@ def test_run_file_contact_law(capsys, tmp_path):
     cfg.write_text(
         '[contact]\nlaw = "hunt-crossley"\nhc_alpha_s_m = 0.02\n[impact]\nspeed_m_s = 30.0\n'
     )
-    code, out, err = run(capsys, "simulate", "--config", cfg, "--json")
-    assert code == 0, err
-    data = json.loads(out)
+    data = run_json(capsys, "simulate", "--config", cfg)
     assert data["law"] == "hunt-crossley" and data["hc_alpha_s_m"] == 0.02
     cfg.write_text('[contact]\nlaw = "hunt-crossley"\nhc_alpha = 0.02\n')
     code, _, err = run(capsys, "simulate", "--config", cfg)
@@ -71,9 +69,7 @@ def test_calibrate_writes_table_run_file_and_plot(capsys, tmp_path):
     assert code == 0, err
     assert "meets every target: True" in out
     toml = tmp_path / "hysteretic-kawazoe-1997.toml"
-    code, out, err = run(capsys, "simulate", "--config", toml, "--speed", "30", "--json")
-    assert code == 0, err
-    assert json.loads(out)["law"] == "hysteretic"
+    assert run_json(capsys, "simulate", "--config", toml, "--speed", "30")["law"] == "hysteretic"
     assert (tmp_path / "hysteretic-kawazoe-1997.png").read_bytes()[:4] == b"\x89PNG"
     fit = json.loads((tmp_path / "hysteretic-kawazoe-1997.json").read_text())
     assert fit["meets_targets"] and fit["provenance"]["parameters"]["family"] == "hysteretic"

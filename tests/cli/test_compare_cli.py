@@ -6,7 +6,7 @@ import json
 
 import numpy as np
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import lead_moments
@@ -16,9 +16,7 @@ FAST = ("--positions", "0.5:1:21")
 
 
 def compare_json(capsys, tmp_path, *argv):
-    code, text, err = run(capsys, "compare", *argv, *FAST, "--out", tmp_path / "c.nc", "--json")
-    assert code == 0, err
-    return json.loads(text)
+    return run_json(capsys, "compare", *argv, *FAST, "--out", tmp_path / "c.nc")
 
 
 def test_compare_a_a_shows_zero_differences(capsys, tmp_path):

@@ -13,7 +13,7 @@ import pytest
 
 from fem_racket import load_config
 from fem_racket.validation import InputError
-from tests.clirun import one_error, run
+from tests.clirun import one_error, run, run_json
 
 MESH = Path(__file__).resolve().parents[2] / "meshes" / "standard_racket.vtu"
 
@@ -21,10 +21,8 @@ MESH = Path(__file__).resolve().parents[2] / "meshes" / "standard_racket.vtu"
 @pytest.mark.parametrize("name", ["auto", "general"])
 def test_solver_name_takes_what_the_option_takes(cwd, capsys, name):
     Path("run.toml").write_text(f'[solver]\nname = "{name}"\n')
-    code, out, _ = run(capsys, "simulate", "--config", "run.toml", "--json")
-    assert code == 0
-    cli = json.loads(out)
-    flag = json.loads(run(capsys, "simulate", "--solver", name, "--json")[1])
+    cli = run_json(capsys, "simulate", "--config", "run.toml")
+    flag = run_json(capsys, "simulate", "--solver", name)
     assert cli["cor"] == flag["cor"]  # the file's name is the option's
     assert load_config("run.toml").simulate().cor == cli["cor"]
 
@@ -58,10 +56,8 @@ def test_a_mesh_on_the_command_line_with_the_files_frame_is_refused(cwd, capsys,
 def test_a_mesh_with_the_files_frame_at_its_defaults_runs(cwd, capsys):
     # the standard preset, EI1 146 and 20 elements change nothing: the mesh is the frame
     Path("run.toml").write_text('[frame]\npreset = "standard"\nei1_n_m2 = 146.0\nelements = 20\n')
-    code, out, _ = run(capsys, "simulate", "--config", "run.toml", "--mesh", str(MESH), "--json")
-    assert code == 0
-    plain = json.loads(run(capsys, "simulate", "--mesh", str(MESH), "--json")[1])
-    assert json.loads(out)["cor"] == plain["cor"]
+    given = run_json(capsys, "simulate", "--config", "run.toml", "--mesh", MESH)
+    assert given["cor"] == run_json(capsys, "simulate", "--mesh", MESH)["cor"]
 
 
 def test_config_twice_is_refused(cwd, capsys):

@@ -7,7 +7,7 @@ provenance) and refuses anything else there; ``--json`` alone writes nothing; ev
 
 import json
 
-from tests.clirun import run
+from tests.clirun import run, run_json
 
 MAP = ["map", "--positions", "0.5:1:12"]
 
@@ -32,15 +32,14 @@ def test_a_named_destination_is_never_replaced_without_overwrite(capsys, cwd):
 
 
 def test_json_alone_and_no_files_write_nothing(capsys, cwd):
-    code, out, _ = run(capsys, *MAP, "--json")
-    assert code == 0 and json.loads(out)["racket"] == "standard"
+    assert run_json(capsys, *MAP)["racket"] == "standard"
     code, out, _ = run(capsys, *MAP, "--no-files")
     assert code == 0 and "wrote" not in out
     assert not (cwd / "output").exists()
     code, _, err = run(capsys, *MAP, "--no-files", "--out", "m.png")
     assert code == 2 and "no_files" in err
-    code, out, _ = run(capsys, "refine", "--elements", "5,10", "--json", "--quiet")
-    assert code == 0 and json.loads(out)["files"] == [] and not (cwd / "output").exists()
+    assert run_json(capsys, "refine", "--elements", "5,10", "--quiet")["files"] == []
+    assert not (cwd / "output").exists()
 
 
 def test_every_file_written_is_reported_sidecars_included(capsys, cwd):
