@@ -61,3 +61,11 @@ def one_error(capsys, *argv):
     assert len(lines) == 1, err
     assert lines[0].startswith("fem-racket") and ": error: " in lines[0]
     return lines[0]
+
+
+def refused_before_any_file(capsys, *argv):
+    """:func:`one_error` for ``fem-racket ARGV`` run in an empty working folder (the ``cwd``
+    fixture), which must stay empty: refused before anything is written. The line."""
+    line = one_error(capsys, *argv)
+    assert not any(Path().iterdir()), "a file was written"
+    return line
