@@ -10,18 +10,14 @@ from fem_racket.contact.presets import PRESETS, get_law
 
 
 def test_simulate_law_preset_json_records_the_law(capsys):
-    code, out, _ = run(
-        capsys, "simulate", "--law", "kawazoe-1997-nonlinear", "--speed", "30", "--json"
-    )
-    assert code == 0
-    data = json.loads(out)
+    data = run_json(capsys, "simulate", "--law", "kawazoe-1997-nonlinear", "--speed", "30")
     ref = simulate(speed=30.0, law=PRESETS["kawazoe-1997-nonlinear"])  # the call it wraps
     assert data["cor"] == ref.cor and data["solver"] == "general"
     assert data["law"] == "hysteretic" and data["k1_n_m_n"] == PRESETS["kawazoe-1997-nonlinear"].k1
 
 
 def test_simulate_law_family_options(capsys):
-    code, out, _ = run(
+    data = run_json(
         capsys,
         "simulate",
         "--law",
@@ -34,10 +30,7 @@ def test_simulate_law_family_options(capsys):
         "8e16",
         "--speed",
         "30",
-        "--json",
     )
-    assert code == 0
-    data = json.loads(out)
     ref = simulate(
         speed=30.0, law=get_law("hunt-crossley", hc_stiffness=8e16, hc_exponent=9.0, hc_alpha=0.01)
     )

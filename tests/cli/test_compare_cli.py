@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 import pytest
 from clirun import run, run_json
@@ -87,11 +85,9 @@ def test_bad_compare_input_is_one_line(capsys, tmp_path, monkeypatch, argv, says
 def test_face_maps_compare_and_lead_at_3_9_lifts_the_sides(capsys, tmp_path):
     face = ("--offsets", "-0.1:0.1:5", "--positions", "0.6:0.9:7")
     nc = tmp_path / "f.nc"
-    code, text, err = run(
-        capsys, "compare", "standard", "standard", "standard+3/9:10", *face, "--out", nc, "--json"
+    data = run_json(
+        capsys, "compare", "standard", "standard", "standard+3/9:10", *face, "--out", nc
     )
-    assert code == 0, err
-    data = json.loads(text)
     assert data["differences"]["standard (2)"]["power_area_cm2"] == 0.0
     import xarray as xr
 
