@@ -23,8 +23,14 @@ runs the kernels interpreted), the 4 200-impact, 200-frame law sweep <= ~0.2 ms 
 (0.84 s), and with ``--million`` the 10^6-impact sweep (``--speed 20:40:1000 --position
 0.5:0.95:1000``, run ``--repeat`` times like the others) <= 10 s.
 
+With ``--help-commands``, instead: ``fem-racket --help`` and every ``fem-racket COMMAND --help``
+(what a user waits for before the first line of help, or for a usage error: the same parser is
+built), each with the package modules and the heavy libraries (:data:`HEAVY`) it imports (one
+``-X importtime`` run), its median wall and CPU time, and both as a ratio to the top-level
+``--help`` of the same tree in the same run.
+
 Usage: python scripts/bench_cli.py [--quick] [--repeat N] [--tree DIR ...] [--no-cache]
-       [--million]
+       [--million] [--help-commands]  (with --quick: --help and simulate --help, once each)
 """
 
 from __future__ import annotations
@@ -59,6 +65,9 @@ MILLION = {
     "sweep of 10^6 impacts": (["sweep", *BIG, "--out", "{out}/m.nc", "--quiet"], 10.0),
 }
 QUICK = {"--help": COMMANDS["--help"], "simulate": COMMANDS["simulate"]}
+#: Third-party libraries too heavy for a command's ``--help`` (each with its submodules).
+HEAVY = ("numpy", "scipy", "skfem", "meshio", "pyvista", "sksundae", "matplotlib", "xarray")
+HEAVY += ("dask", "numba")
 
 
 def environment(tree: Path, cache: Path | None) -> dict[str, str]:
@@ -118,6 +127,56 @@ def import_costs(stderr: str) -> dict[str, float]:
     return costs
 
 
+def imported(stderr: str) -> list[str]:
+    """The modules a run imported, from its ``-X importtime`` output, in import order."""
+    names = [line.rsplit("|", 1)[1].strip() for line in stderr.splitlines()]
+    return [n for n in names if n and n != "imported package"]
+
+
+def help_rows(
+    trees: list[Path], envs: dict[Path, dict[str, str]], scratch: Path, repeat: int, quick: bool
+) -> list[dict]:
+    """Time ``--help`` and every ``COMMAND --help`` (``quick``: the first command's only)
+    ``repeat`` times per tree (trees in turn), and count what one ``-X importtime`` run of each
+    imports; print the table, return its rows."""
+    names = subprocess.run(
+        [sys.executable, "-c", "from fem_racket.cli import COMMANDS; print(*COMMANDS)"],
+        env=envs[trees[0]],
+        cwd=scratch,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.split()[: 1 if quick else None]
+    commands = {"--help": ["--help"], **{f"{n} --help": [n, "--help"] for n in names}}
+    walls: dict[tuple[str, Path], list[float]] = {}
+    cpus: dict[tuple[str, Path], list[float]] = {}
+    for _ in range(max(repeat, 1)):
+        for label, cmd in commands.items():
+            for tree in trees:
+                wall, _, cpu = run(cmd, envs[tree], scratch)
+                walls.setdefault((label, tree), []).append(wall)
+                cpus.setdefault((label, tree), []).append(cpu)
+    width = max(map(len, commands))
+    print(f"{'command':<{width}} tree modules heavy  wall [s] (x help) CPU [s] (x help)")
+    rows: list[dict] = []
+    for label, cmd in commands.items():
+        for i, tree in enumerate(trees):
+            names = imported(run(cmd, envs[tree], scratch, ("-X", "importtime"))[1])
+            heavy = [h for h in HEAVY if any(n == h or n.startswith(h + ".") for n in names)]
+            wall, cpu = (statistics.median(t[(label, tree)]) for t in (walls, cpus))
+            top = [statistics.median(t[("--help", tree)]) for t in (walls, cpus)]
+            own = sum(n == "fem_racket" or n.startswith("fem_racket.") for n in names)
+            rows.append(dict(command=label, tree=str(tree), modules=own, heavy=heavy))
+            rows[-1].update(
+                wall_s=wall, cpu_s=cpu, wall_ratio=wall / top[0], cpu_ratio=cpu / top[1]
+            )
+            print(
+                f"{label:<{width}} [{i}]  {own:7d} {','.join(heavy) or '-':<6}{wall:8.3f} "
+                f"({wall / top[0]:4.2f}) {cpu:7.3f} ({cpu / top[1]:4.2f})"
+            )
+    return rows
+
+
 def main(argv: list[str] | None = None) -> list[dict]:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument(
@@ -137,6 +196,11 @@ def main(argv: list[str] | None = None) -> list[dict]:
     parser.add_argument("--top", type=int, default=6, help="packages listed per command")
     parser.add_argument(
         "--million", action="store_true", help="also the 10^6-impact sweep (~10-40 s a run)"
+    )
+    parser.add_argument(
+        "--help-commands",
+        action="store_true",
+        help="instead: --help of every command, what each imports and its time",
     )
     args = parser.parse_args(argv)
     trees = [t.resolve() for t in args.tree or [ROOT]]
@@ -159,8 +223,19 @@ def main(argv: list[str] | None = None) -> list[dict]:
             ).stdout.strip()
             if not Path(found).is_relative_to(tree):
                 raise SystemExit(f"bench_cli: {tree} is not imported first (got {found})")
+            if args.help_commands:
+                continue
             for cmd, _ in () if args.quick else commands.values():  # writes the bytecode cache
                 run(cmd, envs[tree], scratch)
+        if args.help_commands:
+            for tree in trees:  # writes the bytecode cache
+                run(["--help"], envs[tree], scratch)
+            rows = help_rows(trees, envs, scratch, repeat, args.quick)
+            load = os.getloadavg()
+            print(f"load average (1 min) {load_before[0]:.1f} before, {load[0]:.1f} after")
+            for i, tree in enumerate(trees):
+                print(f"  [{i}] {tree}")
+            return rows
         walls: dict[tuple[str, Path], list[float]] = {}
         cpus: dict[tuple[str, Path], list[float]] = {}
         costs: dict[tuple[str, Path], dict[str, float]] = {}

@@ -45,7 +45,6 @@ from fem_racket.cli.signals import (
     silence_stdout,
 )
 from fem_racket.outputs import OutputError
-from fem_racket.studies.executors import pin_blas_threads
 from fem_racket.validation import InputError, show
 
 __all__ = ["main"]
@@ -119,7 +118,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     the collector's passes over every object (:func:`_end_lightly`)."""
     if argv is None:
         atexit.register(_end_lightly)
-    pin_blas_threads()
     if sys.stdout is None:  # started with stdout closed: Python has no stream for it
         print(
             "fem-racket: error: standard output is closed: give it a file, a pipe or /dev/null "
@@ -148,6 +146,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         sys.stdout = stream
 
 
+def _pin_blas() -> None:
+    """Once the arguments are parsed, before any work: numpy's BLAS on one thread
+    (:func:`fem_racket.studies.executors.pin_blas_threads`; importing that module loads numpy and
+    its BLAS first, which the limit needs). Not before: ``--help`` and a usage error need no
+    numpy."""
+    from fem_racket.studies.executors import pin_blas_threads
+
+    pin_blas_threads()
+
+
 def _end_lightly() -> None:
     """At the command's exit: collect the garbage left once, then freeze every object for the
     garbage collector. Python's teardown clears the modules as before (atexit handlers, files
@@ -172,6 +180,7 @@ def _run(argv: Sequence[str] | None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on usage errors, 0 on --help
         return int(exc.code or 0)
+    _pin_blas()
     handler = logging.StreamHandler()
     handler.setFormatter(_NoteFormatter(f"fem-racket {args.command}"))
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING, handlers=[handler])

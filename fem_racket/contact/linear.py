@@ -23,6 +23,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from fem_racket.contact.constants import DEFAULT_BALL_MASS, KCB_SPEED_RANGE
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.parameters import LawFit, LawParameter
 from fem_racket.validation import (
@@ -48,8 +49,6 @@ __all__ = [
     "zeta_from_cor",
 ]
 
-#: Ball mass [kg]. The paper does not print it; the rules allow 56.0-59.4 g.
-DEFAULT_BALL_MASS = 0.057
 #: Clamped-frame coefficient of restitution of ball on strings, eq (4).
 PAPER_CLAMPED_COR = 0.83
 #: (impact speed [m/s], K_CB [N/m]) stated in section 2.1.1 of the paper.
@@ -58,8 +57,6 @@ PAPER_KCB_POINTS = ((20.0, 2.74e4), (30.0, 5.0e4), (40.0, 8.33e4))
 #: 145 g, a cricket ball 156-163 g, a softball ~190 g (the sports' rules); 1 kg leaves room for
 #: training balls.
 BALL_MASS_RANGE = (1e-3, 1.0)
-#: Impact speeds [m/s] over which :func:`kcb_from_speed` extrapolates the paper's K_CB law.
-KCB_SPEED_RANGE = (1.0, 100.0)
 
 
 @dataclass(frozen=True)

@@ -28,6 +28,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from fem_racket.frame.constants import CLOCK_PLACES, PLACES
 from fem_racket.frame.head import HeadOutline
 from fem_racket.validation import InputError, show
 
@@ -41,10 +42,6 @@ __all__ = [
 
 #: The "handle" place: middle of the grip, from the butt [m].
 HANDLE_X = 0.10
-#: Clock places -> the hour whose angle from the tip they sit at.
-CLOCK_PLACES = {"12": 0, "2/10": 2, "3/9": 3, "4/8": 4}
-#: Every named place, tip first.
-PLACES = (*CLOCK_PLACES, "throat", "handle", "butt")
 
 
 @dataclass(frozen=True)

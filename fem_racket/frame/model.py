@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from fem_racket.display import number, short_repr, span
+from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.frame.fe import FrameFE
 from fem_racket.frame.hermite import assemble_closed_form
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
@@ -22,9 +23,6 @@ if TYPE_CHECKING:
     from fem_racket.frame.torsion import TorsionModel
 
 __all__ = ["DEFAULT_MODES", "FrameModel"]
-
-#: Flexible modes kept by default (COR within ~1e-7 of the untruncated FE model).
-DEFAULT_MODES = 80
 
 
 @dataclass(eq=False)

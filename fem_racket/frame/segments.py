@@ -12,6 +12,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from fem_racket.frame.constants import PAPER_EI1, RIGID_EI1
 from fem_racket.frame.rigidity import Rigidity
 from fem_racket.validation import InputError, check_positive, check_range, show
 
@@ -38,12 +39,8 @@ __all__ = [
 
 #: EI2 / EI1 of the paper's stepped beam (section 2.2).
 EI_RATIO = 0.88
-#: EI1 of the paper's standard racket [N m^2] (section 2.2).
-PAPER_EI1 = 146.0
 #: Mass per length of the paper's grip and top sides [kg/m] (section 2.2).
 RHOA1, RHOA2 = 0.696, 0.458
-#: EI1 of the paper's "rigid" racket [N m^2] (section 3.1).
-RIGID_EI1 = 9999.0
 #: Allowed EI / rhoA [m^4/s^2] of every segment or cell (it sets the frequencies: omega ~
 #: sqrt(EI / rhoA) / L^2; the paper's racket has 210). Above 1e9 the frame is rigid to 1e-10 in
 #: COR while the exact path's sum rules lose accuracy (sweep and simulate differed by 2e-9 at

@@ -28,6 +28,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fem_racket.frame.constants import FIT_ELEMENTS as DEFAULT_ELEMENTS
+from fem_racket.frame.constants import KG_CM2
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import EI_RATIO, PAPER_EI1, Frame, Segment
@@ -55,10 +57,6 @@ RHOA_FLOOR = 0.05
 EI_SHAPE = (1.0, EI_RATIO, EI_RATIO)
 #: Handle EI when no f1 is given: the paper's standard racket [N m^2].
 DEFAULT_EI1 = PAPER_EI1
-#: Cells of the mesh used to compute f1 and written by ``fem-racket fit``.
-DEFAULT_ELEMENTS = 40
-#: kg m^2 per kg cm^2.
-KG_CM2 = 1e-4
 
 
 def _cells(frame: Frame | FrameMesh | FrameModel) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

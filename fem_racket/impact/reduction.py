@@ -26,6 +26,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
+from fem_racket.impact.constants import DEFAULT_TOLERANCE
 from fem_racket.validation import InputError
 
 __all__ = [
@@ -38,9 +39,6 @@ __all__ = [
     "split_modes",
 ]
 
-#: COR tolerance used when none is given (at or below the 20-element model's own
-#: discretisation error, ~4e-7 in COR).
-DEFAULT_TOLERANCE = 1e-6
 #: (COR tolerance, beta) per separation criterion, measured by scripts/calibrate_engine.py on
 #: 30 random frames x 400 random impacts (zeta <= 0.2): the smallest beta of its grid whose
 #: largest COR error is at most tolerance / 1.5. Log-log interpolation in between; below the

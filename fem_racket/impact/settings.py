@@ -11,14 +11,12 @@ import math
 from dataclasses import dataclass, fields
 from typing import Any
 
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE, check_tolerance
+from fem_racket.frame.constants import DEFAULT_MODES
+from fem_racket.impact.constants import BASES, DEFAULT_TOLERANCE
+from fem_racket.impact.reduction import check_tolerance
 from fem_racket.validation import InputError, check_choice, check_integer, check_positive, show
 
 __all__ = ["BASES", "DEFAULTS", "UNSET", "Settings", "SolverOptions"]
-
-#: Frame coordinates of the ODE solvers: free-free modes or every FE DOF.
-BASES = ("modal", "physical")
 
 
 class _Unset:

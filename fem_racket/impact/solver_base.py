@@ -19,7 +19,7 @@ from fem_racket.impact.oblique.solve import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import DEFAULTS, SolverOptions
-from fem_racket.impact.strung.solve import check_strung
+from fem_racket.impact.strung.solve import check_strung, solve_strung
 from fem_racket.validation import InputError, show, work_begins
 
 __all__ = ["Solver"]
@@ -181,6 +181,17 @@ class Solver:
         raise NotImplementedError
 
     def _solve(self, problem: ImpactProblem) -> Any:
+        """Solve a checked problem on its structure: a string bed by the strung racket's paths
+        (:func:`fem_racket.impact.strung.solve.solve_strung`), a hand by :meth:`_held`, a free
+        racket by the method's own :meth:`_free`."""
+        if problem.strings is not None:
+            return solve_strung(problem, self.name, self.options)
+        if problem.held:
+            return self._held(problem)
+        return self._free(problem)
+
+    def _free(self, problem: ImpactProblem) -> Any:
+        """Solve a checked problem on the free racket (no string bed, no hand)."""
         raise NotImplementedError
 
     def _refuse_options(self, names: Iterable[str], why: str) -> None:

@@ -35,6 +35,7 @@ from dataclasses import replace
 from typing import Any
 
 from fem_racket.impact.batch_solve import each_batch, engine_batch, law_batch
+from fem_racket.impact.constants import SOLVER_NAMES
 from fem_racket.impact.held.batch import held_batch
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
@@ -42,7 +43,7 @@ from fem_racket.impact.settings import SolverOptions
 from fem_racket.impact.simulate_law import simulate_law
 from fem_racket.impact.simulate_linear import simulate_linear
 from fem_racket.impact.solver_base import Solver
-from fem_racket.impact.strung.solve import check_strung, solve_strung
+from fem_racket.impact.strung.solve import check_strung
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "make_solver"]
@@ -75,11 +76,7 @@ class ExactSolver(Solver):
             return held_batch(batch, self.options.given().get("tolerance"))
         return engine_batch(batch, self.options.settings())
 
-    def _solve(self, problem: ImpactProblem) -> Any:
-        if problem.strings is not None:
-            return solve_strung(problem, self.name, self.options)
-        if problem.held:
-            return self._held(problem)
+    def _free(self, problem: ImpactProblem) -> Any:
         s = self.options.settings()
         if s.output_step is not None and "tolerance" not in self.options.given():
             s = replace(s, tolerance=None)  # histories keep every mode unless a tolerance is asked
@@ -117,9 +114,7 @@ class GeneralSolver(Solver):
             return each_batch(self, batch)
         return law_batch(batch, self.options.settings())
 
-    def _solve(self, problem: ImpactProblem) -> Any:
-        if problem.strings is not None:
-            return solve_strung(problem, self.name, self.options)
+    def _free(self, problem: ImpactProblem) -> Any:
         return simulate_law(problem, "general", self.options.settings())
 
 
@@ -154,11 +149,7 @@ class _OdeSolver(Solver):
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         return each_batch(self, batch)
 
-    def _solve(self, problem: ImpactProblem) -> Any:
-        if problem.strings is not None:
-            return solve_strung(problem, self.name, self.options)
-        if problem.held:
-            return self._held(problem)
+    def _free(self, problem: ImpactProblem) -> Any:
         s = self.options.settings()
         if problem.linear and problem.frame_velocity is None:
             return simulate_linear(problem, self.name, s)
@@ -233,10 +224,6 @@ class AutoSolver(Solver):
 
     def _solve(self, problem: ImpactProblem) -> Any:
         return self.pick(problem)._solve(problem)
-
-
-#: Every name :func:`make_solver` takes.
-SOLVER_NAMES = ("auto", *SOLVERS)
 
 
 def make_solver(name: str = "auto", **options: Any) -> Solver:

@@ -30,8 +30,9 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from fem_racket.contact.linear import KCB_SPEED_RANGE
+from fem_racket.contact.constants import KCB_SPEED_RANGE
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.constants import DEFAULT_REFERENCE, MAX_RACKET_SPEED
 from fem_racket.impact.system import CoupledSystem, Trajectory
 from fem_racket.validation import InputError, check_finite, check_range, show
 
@@ -49,14 +50,6 @@ __all__ = [
     "swing_setup",
     "swing_summary",
 ]
-
-#: Largest |racket speed| [m/s] the tool takes: racket heads move at up to about 40-50 m/s in the
-#: fastest serves (an assumption of this bound), and 100 m/s is the top of the speeds the paper's
-#: K_CB law is given for (:data:`fem_racket.contact.linear.KCB_SPEED_RANGE`).
-MAX_RACKET_SPEED = KCB_SPEED_RANGE[1]
-
-#: Reference point of the racket speed, x/L (the string centre).
-DEFAULT_REFERENCE = 0.75
 
 
 @dataclass(frozen=True)

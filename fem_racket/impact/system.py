@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from fem_racket.impact.constants import SEPARATION_EVENTS
 from fem_racket.validation import InputError, check_choice
 
 if TYPE_CHECKING:
@@ -43,7 +44,6 @@ __all__ = [
     "physical_system",
 ]
 
-SEPARATION_EVENTS = ("displacement", "force")
 #: Largest number of output times a simulation may be asked for.
 MAX_OUTPUT_TIMES = 1e6
 

@@ -9,11 +9,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.frame.segments import PAPER_EI1
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.swing import DEFAULT_REFERENCE
+from fem_racket.contact.constants import DEFAULT_BALL_MASS
+from fem_racket.frame.constants import DEFAULT_MODES, PAPER_EI1
+from fem_racket.impact.constants import DEFAULT_REFERENCE, DEFAULT_TOLERANCE
 
 __all__ = [
     "DEFAULTS",

@@ -18,17 +18,11 @@ from typing import Any
 
 from fem_racket.io.config_keys import reject_unknown
 from fem_racket.io.config_tables import flag, integer, number, text
+from fem_racket.io.constants import CONSTRAINTS
 from fem_racket.validation import InputError, show
 
 __all__ = ["CONSTRAINTS", "optimize_file", "sensitivity_file"]
 
-#: Constraint options (argparse dests, table keys) -> (quantity, help).
-CONSTRAINTS = {
-    "mass_range": ("mass_kg", "total mass [kg]"),
-    "balance_range": ("balance_m", "balance point from the butt [m]"),
-    "swing_weight_range": ("swing_weight_kg_cm2", "swing weight about 0.10 m [kg cm^2]"),
-    "f1_range": ("f1_hz", "first free-free frequency [Hz]"),
-}
 #: The options of the core tables a design takes (argparse dests): the swing and the ball.
 _CORE = ("ball_mass", "zeta", "racket_speed", "reference", "pivot")
 #: Keys of both tables that set where the designs run, how they print or where files go.

@@ -16,12 +16,13 @@ from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.parameters import LawParameter
 from fem_racket.contact.registry import LAW_NAMES, LiveView, family_parameters
 from fem_racket.frame.hand import GRIPS
-from fem_racket.frame.segments import PAPER_EI1, RIGID_EI1, Segment
+from fem_racket.frame.segments import Segment
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.solvers import SOLVER_NAMES
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_arrays import table_array
 from fem_racket.io.config_lead import lead_tables
+from fem_racket.io.constants import PRESETS
 from fem_racket.strings.bed import EDGES, parse_pattern
 from fem_racket.strings.materials import STRINGS
 from fem_racket.validation import (
@@ -55,9 +56,6 @@ COMMAND_TABLES = {
     "sensitivity": "sensitivity",
     "calibrate": "calibrate",
 }
-
-#: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).
-PRESETS = {"standard": PAPER_EI1, "rigid": RIGID_EI1}
 
 
 # -- value checks: (dotted name, raw TOML value) -> clean value --------------------------------

@@ -20,6 +20,7 @@ from fem_racket.frame.clock import PLACES
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
 from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
 from fem_racket.io.config_tables import Option, flag, integer, number, table_options, text
+from fem_racket.io.constants import CUSTOMISE_MAPS
 from fem_racket.studies.target_values import RANKED, TARGETS, parse_target
 from fem_racket.validation import InputError, check_integer, show, work_begins
 
@@ -35,8 +36,6 @@ __all__ = [
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
-#: The maps of ``customise`` unless ``--maps``/``[customise] maps`` says (the command's default).
-CUSTOMISE_MAPS = str(Path("output") / "customised_map.png")
 
 
 def _target(where: str, value: Any) -> Any:
@@ -115,6 +114,7 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.io.map_files import check_map_outputs
     from fem_racket.io.racket_files import customise_files, customise_racket, mesh_files
     from fem_racket.outputs import check_output_path
+    from fem_racket.studies.map_options import MapPlay
     from fem_racket.studies.target_values import place_list, targets_from
 
     d = cfg.defaults()
@@ -135,8 +135,11 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     elements = d.get("elements", FRAME_ELEMENTS)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, elements)
     targets = targets_from(o, catalogue(mesh, f1=False))
-    work_begins()
     play = {k: o[k] for k in PLAY_DEFAULTS}
+    if play["reference"] == PLAY_DEFAULTS["reference"]:  # a key at its default: not given
+        play["reference"] = None
+    MapPlay(**play)  # a swing's point without a swing refused before any work
+    work_begins()
     if paths is None:
         return customise_racket(mesh, targets, places, play)
     parameters = {"config": str(cfg.source), **o, "out": str(out)}

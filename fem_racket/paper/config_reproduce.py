@@ -16,6 +16,7 @@ from typing import Any
 
 from fem_racket.io.config_tables import choice, flag, number, table_options, text
 from fem_racket.io.figure_files import DEFAULT_DPI, FIGURE_FORMATS
+from fem_racket.paper.constants import DEFAULT_OUT, DEFAULT_REPORT
 
 __all__ = [
     "DEFAULT_OUT",
@@ -25,9 +26,6 @@ __all__ = [
     "reproduce_file",
 ]
 
-#: Where the figures and the report go by default.
-DEFAULT_OUT = "output/paper"
-DEFAULT_REPORT = "REPRODUCTION.md"
 #: ``[reproduce]``'s options: dest -> (default, conversion), the command's defaults.
 REPRODUCE_OPTIONS = {
     "out": (None, text),

@@ -39,14 +39,13 @@ from typing import Any
 import numpy as np
 
 from fem_racket.extras import require
+from fem_racket.studies.constants import BACKENDS
 from fem_racket.studies.pool import pin_blas_threads, run_pool
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BACKENDS", "BarCounts", "check_scheduler", "pin_blas_threads", "run_chunks"]
 
 log = logging.getLogger(__name__)
-
-BACKENDS = ("serial", "processes", "dask")
 
 Work = Callable[..., np.ndarray]
 Done = Callable[[np.ndarray, np.ndarray], None]

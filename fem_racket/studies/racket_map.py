@@ -92,7 +92,7 @@ def _prepared(
         del solver["modes"]  # integrator keeps them anyway
     solver.setdefault("tolerance", o.tolerance)
     if law is not None:  # the linear law's options, if given, refused by the batch
-        if kcb_factor != 1.0:
+        if "kcb_factor" in options:  # given, at any value
             raise InputError(
                 f"kcb_factor = {show(kcb_factor)} is not allowed with contact law "
                 f"{show(law.name)}: it scales the linear law's K_CB only"

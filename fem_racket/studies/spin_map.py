@@ -27,6 +27,7 @@ from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
+from fem_racket.studies.constants import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
 from fem_racket.studies.face_map import FaceGrid, increasing
 from fem_racket.studies.map_options import check_map_points
 from fem_racket.validation import InputError, check_positive
@@ -41,19 +42,6 @@ __all__ = [
     "map_fields",
     "spin_map",
 ]
-
-#: The spin map's grid unless given: x/L along the head and y [m] across it (each point is one
-#: oblique impact).
-SPIN_POSITIONS = "0.52:0.96:12"
-SPIN_OFFSETS = "-0.12:0.12:9"
-#: Options of a map that the spin map does not use, refused by ``map --angle`` and a run file's
-#: spin map alike (a swing is a stroke: simulate's face and path angles).
-SPIN_REFUSES = {
-    "power_fraction": "the spin map has no power area",
-    "racket_speed": "the spin map strikes the racket at rest (simulate --path-angle strokes)",
-    "pivot": "the spin map strikes the racket at rest",
-    "reference": "the spin map strikes the racket at rest",
-}
 
 #: The mapped outputs: field -> (unit, label).
 SPIN_FIELDS = {

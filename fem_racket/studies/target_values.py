@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from fem_racket.frame.specs import KG_CM2
+from fem_racket.studies.constants import KEEP, RANKED, TARGETS
 from fem_racket.studies.customise import Target
 from fem_racket.validation import InputError, work_begins
 
@@ -21,31 +21,6 @@ __all__ = [
     "target_summary",
     "targets_from",
 ]
-
-#: Targets lead can meet: dest -> (metavar, help, factor to SI, JSON key).
-TARGETS = {
-    "swing_weight": (
-        "KG_CM2",
-        "swing weight about 0.10 m from the butt [kg cm^2]",
-        KG_CM2,
-        "swing_weight_kg_cm2",
-    ),
-    "balance": ("M", "balance point from the butt [m]", 1.0, "balance_m"),
-    "twist_weight": (
-        "KG_CM2",
-        "twistweight, polar moment about the long axis [kg cm^2]",
-        KG_CM2,
-        "twist_weight_kg_cm2",
-    ),
-    "mass": ("KG", "mass [kg]", 1.0, "mass_kg"),
-}
-#: Targets only ranked on (closest).
-RANKED = {
-    "f1": ("HZ", "first free-free frequency [Hz]", 1.0, "f1_hz"),
-    "stiffness_ra": ("RA", "stiffness [RA]", 1.0, "stiffness_ra"),
-}
-#: The target value meaning "as the racket is now".
-KEEP = "keep"
 
 
 def parse_target(text: Any) -> tuple[float, float] | str:

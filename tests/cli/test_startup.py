@@ -3,9 +3,14 @@
 Each check runs in a fresh interpreter and reads ``sys.modules`` after the command: no timings,
 so load on the machine cannot fail it. What each command must not import, and why it need not:
 
-- ``import fem_racket`` and ``fem-racket --help``: no numerical or file library at all beyond
-  numpy (the public names are imported on first use; the option defaults are plain numbers),
-  nor the installed metadata (the version is read when asked for);
+- ``import fem_racket`` and ``fem-racket --help``: no numerical or file library at all, not
+  even numpy (the public names are imported on first use; BLAS is pinned to one thread once the
+  arguments are parsed), nor the installed metadata (the version is read when asked for);
+- every ``fem-racket COMMAND --help``, and a usage error (the same parser is built): no scipy,
+  file, plotting or solver library; numpy only through the contact laws' registry (the commands
+  taking a law list each law's parameters from its class), none for the commands without one.
+  The names, choices and defaults the parsers show live in small constant modules of the layers
+  that own them (``frame/constants.py``, ``impact/constants.py``, ``studies/constants.py`` ...).
 - ``simulate`` without ``--out``: no scipy at all (the modes come from numpy's dense eigen-solver
   on the frame's diagonals, the engine is numpy), and it writes nothing (no xarray, netCDF,
   dask, plotting or VTK).
@@ -74,6 +79,7 @@ def test_package_and_help_import_no_heavy_library(argv, tmp_path):
     assert not loaded(modules, ("scipy", *SOLVERS, *FILES, *PLOTTING, *OTHERS))
     if argv is None:  # the package alone: its public names wait for first use
         assert {m for m in modules if m.startswith("fem_racket")} == {"fem_racket"}
+    if argv != ["simulate", "--help"]:  # its --law options: the contact laws (numpy)
         assert "numpy" not in modules
     # the version (installed metadata) is looked up only when asked for
     assert "importlib.metadata" not in modules
@@ -83,14 +89,79 @@ def test_help_lists_the_commands_without_their_modules(tmp_path):
     """``fem-racket --help`` lists each command from its name and summary
     (:data:`fem_racket.cli.commands.COMMANDS`): no command's module, and of the package only the
     command line's own entry (its parser, signals, run-file hook) and the base layer it uses
-    (validation, outputs, the BLAS pinning of studies.executors) - none of the library the
-    commands' option defaults import."""
+    (validation, outputs) - none of the library the commands' option defaults import, nor the
+    BLAS pinning of studies.executors (after the arguments are parsed)."""
     modules = imported(["--help"], tmp_path)
-    rooms = ("frame", "contact", "strings", "impact", "io", "paper")
+    rooms = ("frame", "contact", "strings", "impact", "studies", "io", "paper")
     assert not loaded(modules, tuple(f"fem_racket.{room}" for room in rooms))
     assert not [m for m in modules if m.startswith("fem_racket.cli.commands.")]
-    studies = {m for m in modules if m.startswith("fem_racket.studies.")}
-    assert studies <= {"fem_racket.studies.executors", "fem_racket.studies.pool"}
+
+
+HELP_PROBE = """
+import contextlib, io, json, sys, traceback
+
+class FirstNumpy:
+    # the package module whose import statement first imports numpy (None: none did)
+    by = None
+
+    def find_spec(self, name, path=None, target=None):
+        if name == "numpy" and FirstNumpy.by is None:
+            names = (f.f_globals.get("__name__", "") for f, _ in traceback.walk_stack(None))
+            FirstNumpy.by = next((n for n in names if n.startswith("fem_racket")), "?")
+        return None
+
+sys.meta_path.insert(0, FirstNumpy())
+from fem_racket.cli import main
+out = io.StringIO()
+with contextlib.redirect_stdout(out):
+    code = main(json.loads(sys.argv[1]))
+print(json.dumps(dict(code=code, out=out.getvalue(), numpy_by=FirstNumpy.by,
+                      modules=sorted(sys.modules))))
+"""
+
+
+def parse_only(argv: list[str], tmp_path: Path) -> dict:
+    """``fem-racket ARGV`` in a fresh interpreter: its exit code, standard output, the package
+    module that first imported numpy (None: none did) and every module loaded."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    done = subprocess.run(
+        [sys.executable, "-c", HELP_PROBE, json.dumps(argv)],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+#: The commands whose parsers take no contact law: no numpy at all for their ``--help``.
+LAWLESS = ("modes", "fit", "customise", "closest", "compare", "refine", "config")
+
+
+def _commands() -> list[str]:
+    from fem_racket.cli import COMMANDS
+
+    return list(COMMANDS)
+
+
+@pytest.mark.parametrize("name", _commands())
+def test_command_help_and_usage_error_import_no_heavy_library(name, tmp_path):
+    """``COMMAND --help`` prints its help and ``COMMAND --no-such-option`` is refused (exit 2),
+    each importing no scipy, file, plotting or solver library (the values the parser shows come
+    from the layers' constant modules); numpy only through the contact laws' registry, whose
+    classes the ``--law`` options list, and not at all for a command taking no law."""
+    shown = parse_only([name, "--help"], tmp_path)
+    assert shown["code"] == 0 and shown["out"].startswith(f"usage: fem-racket {name} ")
+    wrong = parse_only([name, "--no-such-option"], tmp_path)
+    assert wrong["code"] == 2 and wrong["out"] == ""
+    for run in (shown, wrong):
+        assert not loaded(set(run["modules"]), ("scipy", *SOLVERS, *FILES, *PLOTTING, *OTHERS))
+        if name in LAWLESS:
+            assert run["numpy_by"] is None
+        else:
+            assert run["numpy_by"] is None or run["numpy_by"].startswith("fem_racket.contact.")
 
 
 #: What a command's ``--help`` needs not import: the run-file reader (``--config`` is read after

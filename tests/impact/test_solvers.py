@@ -19,6 +19,9 @@ def test_one_registry_with_every_method_once():
     assert set(fr.SOLVERS) == {"exact", "general", "cvode", "bdf"}
     assert fr.SOLVERS is SOLVERS
     assert len(SOLVER_NAMES) == len(set(SOLVER_NAMES)) and SOLVER_NAMES[0] == "auto"
+    # the names the command line shows (impact/constants.py, no solver imported) are the
+    # registry's, in its order
+    assert SOLVER_NAMES == ("auto", *SOLVERS)
 
 
 def test_options_are_bound_when_the_solver_is_made():

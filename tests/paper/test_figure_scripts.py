@@ -72,6 +72,16 @@ def test_bench_cli_script_runs(capsys):
     assert "target" in capsys.readouterr().out
 
 
+def test_bench_cli_help_commands_runs(capsys):
+    # --help of each command (here the quick set): what it imports and its time, as a ratio to
+    # the top-level --help; tests/cli/test_startup.py checks the imports themselves
+    rows = load_script("bench_cli").main(["--help-commands", "--quick"])
+    assert [r["command"] for r in rows] == ["--help", "simulate --help"]
+    assert rows[0]["wall_ratio"] == rows[0]["cpu_ratio"] == 1.0 and not rows[0]["heavy"]
+    assert rows[1]["modules"] > rows[0]["modules"] > 0 and "scipy" not in rows[1]["heavy"]
+    assert "x help" in capsys.readouterr().out
+
+
 def test_figure_script_refuses_to_overwrite(tmp_path, capsys):
     main = load_script("fig04_frame_modes").main
     first = main(["--out", str(tmp_path)])

@@ -21,7 +21,7 @@ from fem_racket.cli.common import (
 )
 from fem_racket.cli.options.output import overwrite_of
 from fem_racket.outputs import Target, check_targets
-from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS, calibrate
+from fem_racket.studies.calibration_targets import FAMILIES, TARGET_SETS
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -58,6 +58,7 @@ def run(args: argparse.Namespace) -> int:
         calibration_summary,
         write_calibration,
     )
+    from fem_racket.studies.calibrate import calibrate
 
     overwrite_of(args, bool(args.out))
     files = []

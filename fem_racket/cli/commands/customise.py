@@ -34,7 +34,7 @@ from fem_racket.cli.options.targets import (
     places_of,
     targets_from_args,
 )
-from fem_racket.io.config_racket import CUSTOMISE_MAPS
+from fem_racket.io.constants import CUSTOMISE_MAPS
 
 #: Where the mesh and the maps go unless --out / --maps are given.
 DEFAULT_OUTPUT = Path("output") / "customised.vtu"
@@ -84,8 +84,8 @@ def run(args: argparse.Namespace) -> int:
     frame = frame_from_args(args)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
+    play = {"speed": args.speed, **swing_kwargs(args)}  # its checks before work (config --check)
     work_begins()
-    play = {"speed": args.speed, **swing_kwargs(args)}
     files_out, parameters = (out, maps_path), run_parameters(args)
     _, summary = customise_files(mesh, targets, places, play, files_out, parameters, args.overwrite)
     if args.json:

@@ -24,7 +24,7 @@ from fem_racket.cli.common import (
 from fem_racket.cli.options.lists import add_options
 from fem_racket.cli.options.output import add_overwrite_json, print_written
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.frame.specs import DEFAULT_ELEMENTS
+from fem_racket.frame.constants import FIT_ELEMENTS as DEFAULT_ELEMENTS
 from fem_racket.outputs import check_output_path
 from fem_racket.validation import (
     InputError,

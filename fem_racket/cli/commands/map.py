@@ -47,11 +47,11 @@ from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.exact.engine import DEFAULT_TOLERANCE
-from fem_racket.impact.system import SEPARATION_EVENTS
-from fem_racket.io.config_keys import PRESETS
-from fem_racket.studies.racket_map import DEFAULT_POSITIONS, DEFAULT_POWER_FRACTION, racket_map
+from fem_racket.frame.constants import DEFAULT_MODES
+from fem_racket.impact.constants import DEFAULT_TOLERANCE, SEPARATION_EVENTS
+from fem_racket.io.constants import PRESETS
+from fem_racket.studies.constants import MAP_POSITIONS as DEFAULT_POSITIONS
+from fem_racket.studies.constants import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError
 
 #: Where the map goes unless --out is given.
@@ -189,6 +189,7 @@ def run(args: argparse.Namespace) -> int:
     """Map every racket, write the files and print the sweet spots."""
     from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
     from fem_racket.studies.grid import as_values
+    from fem_racket.studies.racket_map import racket_map
 
     if args.no_files and args.out:
         raise InputError("no_files = True is not allowed with --out: give one of them")

@@ -21,8 +21,8 @@ from fem_racket.cli.options.impact import add_ball_options, add_separation_optio
 from fem_racket.cli.options.output import overwrite_of
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.studies.refine import (
+from fem_racket.frame.constants import DEFAULT_MODES
+from fem_racket.studies.refine_options import (
     DEFAULT_ELEMENTS,
     DEFAULT_GRADING,
     DEFAULT_POSITIONS,
@@ -193,6 +193,8 @@ def run(args: argparse.Namespace) -> int:
         check_targets(refine_targets(args.csv, plot), overwrite=overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
     options = fields_from_args(args, RefineOptions, n_modes=args.count, progress=progress_of(args))
+    if "grading" not in given_options(args):  # refused with --family uniform when given
+        del options["grading"]
     work_begins()
     studies = {  # the uniform family has no grading (refused by refinement_study)
         fam: refinement_study(frame, args.elements, **graded(options, fam, args.family))

@@ -18,7 +18,7 @@ import time
 from fem_racket.cli.common import add_config_option, run_parameters
 from fem_racket.cli.options.drawing import add_figure_options, add_quiet_option, progress_of
 from fem_racket.cli.options.laws import add_law_options, law_from_args
-from fem_racket.paper.config_reproduce import DEFAULT_OUT, DEFAULT_REPORT, destinations
+from fem_racket.paper.constants import DEFAULT_OUT, DEFAULT_REPORT
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -88,4 +88,6 @@ def run(args: argparse.Namespace) -> int:
 
 def _destinations(args: argparse.Namespace) -> tuple[str, str]:
     """--out and --report, defaulted (:func:`fem_racket.paper.config_reproduce.destinations`)."""
+    from fem_racket.paper.config_reproduce import destinations
+
     return destinations(args.law, args.out, args.report)

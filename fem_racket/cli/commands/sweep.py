@@ -13,8 +13,6 @@ import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
 from fem_racket.cli.common import (
     add_config_option,
     add_mesh_option,
@@ -27,12 +25,13 @@ from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.laws import add_law_options
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
     DEFAULT_COMPLIANCE_RATIO,
 )
-from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, as_values
+from fem_racket.studies.grid_parameters import PARAMETERS
 from fem_racket.validation import InputError, show
 
 if TYPE_CHECKING:
@@ -86,6 +85,8 @@ def _grid_value(where: str, value: Any) -> Any:
             f"{where} = {show(value)} is not allowed: must be a number, an array of numbers or a "
             "string like '0.55:0.95:9'"
         )
+    from fem_racket.studies.grid import as_values
+
     try:
         as_values(name, value)
     except InputError as exc:
@@ -96,6 +97,9 @@ def _grid_value(where: str, value: Any) -> Any:
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The ``sweep`` command's options."""
+    # the law families' parameters, by the registry's names (as studies.grid.LAW_PARAMETERS)
+    from fem_racket.contact.registry import LAW_PARAMETERS as declared
+
     g = p.add_argument_group("swept or fixed parameters")
     for name, text in _HELP.items():
         flags = ["--" + name.replace("_", "-"), *_PLURAL.get(name, ())]
@@ -154,17 +158,20 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     r.add_argument("--json", action="store_true", help="print a JSON summary")
     add_config_option(
         p,
-        own=[*PARAMETERS, *LAW_PARAMETERS],
+        own=[*PARAMETERS, *declared],
         private=("out",),
-        convert={name: _grid_value for name in [*PARAMETERS, *LAW_PARAMETERS]},
+        convert={name: _grid_value for name in [*PARAMETERS, *declared]},
     )
 
 
 def _note_modes(args: argparse.Namespace, frame: Frame | FrameMesh | None) -> None:
     """Say so when a chosen --modes exceeds the flexible modes of the coarsest mesh swept."""
+    import numpy as np
+
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
     from fem_racket.frame.model import DEFAULT_MODES
     from fem_racket.frame.segments import standard_frame
+    from fem_racket.studies.grid import as_values
 
     chosen = "modes" in getattr(args, "explicit_options", ()) or args.modes != DEFAULT_MODES
     if args.basis != "modal" or not chosen:
@@ -187,9 +194,10 @@ def run(args: argparse.Namespace) -> int:
     """Run the sweep, write the file and print a summary."""
     from fem_racket.cli.common import frame_from_args
     from fem_racket.contact.presets import law_parameters
+    from fem_racket.io.config_defaults import PLAY_DEFAULTS
     from fem_racket.studies.executors import check_scheduler
     from fem_racket.studies.sweep import sweep_result
-    from fem_racket.studies.sweep_options import SweepRun, SweepSolving
+    from fem_racket.studies.sweep_options import SOLVING_DEFAULTS, SweepRun, SweepSolving
 
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:
@@ -201,6 +209,8 @@ def run(args: argparse.Namespace) -> int:
     if args.scheduler is not None:
         check_scheduler(args.scheduler)  # before the checkpoint folder is made
     values = {name: getattr(args, name) for name in PARAMETERS}
+    if "reference" not in given and values["reference"] == PLAY_DEFAULTS["reference"]:
+        values["reference"] = None  # a run file's key at its default is not given
     custom = args.mesh is not None or getattr(args, "segments", None)
     frame = frame_from_args(args, exclusive=("ei1", "ei2")) if custom else None
     start = time.perf_counter()
@@ -213,7 +223,12 @@ def run(args: argparse.Namespace) -> int:
         progress=progress_of(args),
         parameters=run_parameters(args),
     )
-    solving = fields_from_args(args, SweepSolving)
+    told = given_options(args)  # the solver's options given, at any value (as simulate's)
+    solving = {
+        k: v
+        for k, v in fields_from_args(args, SweepSolving).items()
+        if k not in SOLVING_DEFAULTS or k in told
+    }
     result = sweep_result(frame, **values, **solving, **running, **law_parameters(vars(args)))
     wall = time.perf_counter() - start
     _note_modes(args, frame)

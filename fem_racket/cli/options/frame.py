@@ -7,13 +7,14 @@ from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.once import Once
-from fem_racket.frame.segments import PAPER_EI1, Frame, standard_frame
+from fem_racket.frame.constants import PAPER_EI1
 from fem_racket.io.config_defaults import FRAME_ELEMENTS
 from fem_racket.validation import InputError
 
 if TYPE_CHECKING:
     from fem_racket.frame.mesh import FrameMesh
     from fem_racket.frame.model import FrameModel
+    from fem_racket.frame.segments import Frame
 
 __all__ = [
     "MESH_EXCLUSIVE",
@@ -98,6 +99,7 @@ def frame_from_args(
 
 def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame | FrameMesh:
     from fem_racket.frame.plausible import check_implement
+    from fem_racket.frame.segments import Frame, standard_frame
     from fem_racket.io.mesh_files import read_mesh
 
     path = getattr(args, "mesh", None)

@@ -6,8 +6,8 @@ from __future__ import annotations
 import argparse
 import dataclasses
 
-from fem_racket.frame.hand import GRIPS, Hand
-from fem_racket.impact.held.shock import DEFAULT_WINDOW
+from fem_racket.frame.grips import GRIPS, Hand
+from fem_racket.impact.constants import DEFAULT_WINDOW
 from fem_racket.validation import InputError, show
 
 __all__ = ["HAND_OPTIONS", "add_hand_options", "hand_from_args"]

@@ -6,28 +6,29 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.options.frame import add_frame_options
 from fem_racket.cli.options.hand import HAND_OPTIONS, add_hand_options, hand_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lists import add_options
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.contact.linear import DEFAULT_BALL_MASS
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.settings import BASES
-from fem_racket.impact.solvers import SOLVER_NAMES, auto_method
-from fem_racket.impact.swing import (
+from fem_racket.contact.constants import DEFAULT_BALL_MASS
+from fem_racket.frame.constants import DEFAULT_MODES
+from fem_racket.impact.constants import (
+    BASES,
     DEFAULT_REFERENCE,
+    DEFAULT_TOLERANCE,
     MAX_RACKET_SPEED,
-    Swing,
-    check_kcb_closing,
+    SEPARATION_EVENTS,
+    SOLVER_NAMES,
 )
-from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.io.config_defaults import DEFAULTS as SIMULATE_DEFAULTS
 from fem_racket.io.config_defaults import PLAY_DEFAULTS
 from fem_racket.validation import InputError, check_range, show
+
+if TYPE_CHECKING:
+    from fem_racket.impact.swing import Swing
 
 __all__ = [
     "DEFAULT_OUTPUT_STEP",
@@ -137,6 +138,8 @@ def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False
     no --kcb, no --law); and a swing's ``--reference`` (and ``--pivot`` unless
     ``pivot_at_rest``: the maps' centre of percussion) given, on the command line or in a run
     file, without a swing (``--racket-speed`` 0): the racket at rest would drop them."""
+    from fem_racket.impact.swing import check_kcb_closing
+
     v_r = args.racket_speed
     check_range("racket_speed", v_r, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
     closing = getattr(args, "speed", 0.0) + v_r
@@ -161,12 +164,17 @@ def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     ``Play``, which build the swing themselves; ``--reference`` without a swing refused
     (``--pivot`` sets the maps' centre of percussion at rest too)."""
     check_swing_options(args, pivot_at_rest=True)
-    return {name: getattr(args, name) for name, *_ in SWING}
+    out = {name: getattr(args, name) for name, *_ in SWING}
+    if args.racket_speed == 0.0:  # at rest a reference point was refused if given: none
+        out["reference"] = None
+    return out
 
 
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
     """The swing the options give for a racket of ``length`` [m]; None for a racket at rest
     (the options checked by :func:`check_swing_options`)."""
+    from fem_racket.impact.swing import Swing
+
     check_swing_options(args)
     if args.racket_speed == 0.0:
         Swing.from_speed(0.0, length, reference=args.reference, pivot=args.pivot)  # checks
@@ -261,6 +269,8 @@ def check_output_step(value: float) -> float:
 def impact_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     """Keyword arguments of :func:`fem_racket.simulate` from the parsed options: the impact
     point, speed and law, and every other option given (on the command line or in a run file)."""
+    from fem_racket.impact.solvers import auto_method
+
     given = set(getattr(args, "explicit_options", ()))
     law = law_from_args(args)
     if getattr(args, "solver", "auto") == "auto":  # as the library's auto picks it, and the

@@ -11,14 +11,6 @@ import argparse
 from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.runfile import option_name
-from fem_racket.contact.presets import (
-    FAMILIES,
-    LAW_NAMES,
-    check_linear_options,
-    get_law,
-    law_parameters,
-)
-from fem_racket.contact.registry import family_parameters
 from fem_racket.validation import InputError, show
 
 if TYPE_CHECKING:
@@ -30,7 +22,10 @@ __all__ = ["add_law_options", "law_from_args"]
 def add_law_options(parser: argparse.ArgumentParser, *, swept: bool = False) -> None:
     """--law and one option per declared family parameter (``--hc-alpha``, ``--k1`` ...: the
     registry's, :mod:`fem_racket.contact.registry`); ``swept``: each takes sweep values (a
-    number, a comma list or start:stop:num[:log]) as text."""
+    number, a comma list or start:stop:num[:log]) as text. The registry (its laws' classes, with
+    numpy) is imported here, when a command taking a law builds its parser."""
+    from fem_racket.contact.registry import LAW_NAMES, family_parameters
+
     g = parser.add_argument_group("contact law")
     g.add_argument(
         "--law",
@@ -57,6 +52,8 @@ def law_from_args(args: argparse.Namespace) -> ContactLaw | None:
     --kcb or --zeta with another law is refused (that law would ignore them), named as the user
     gave it (a run file's ``contact.kcb_n_m``, ``zeta`` or ``clamped_cor`` by its key); likewise
     a run file's law parameter the law does not take (``contact.hc_alpha_s_m`` with a preset)."""
+    from fem_racket.contact.presets import FAMILIES, check_linear_options, get_law, law_parameters
+
     name = getattr(args, "law", "linear")
     kcb, zeta = getattr(args, "kcb", None), getattr(args, "zeta", None)
     if name != "linear":

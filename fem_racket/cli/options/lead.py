@@ -10,7 +10,7 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING, Any
 
-from fem_racket.frame.clock import PLACES
+from fem_racket.frame.constants import PLACES
 from fem_racket.validation import InputError
 
 if TYPE_CHECKING:

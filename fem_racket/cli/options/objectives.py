@@ -9,10 +9,10 @@ from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.lists import number_list
-from fem_racket.frame.hand import GRIPS
-from fem_racket.impact.held.shock import DEFAULT_WINDOW
-from fem_racket.io.config_design import CONSTRAINTS
-from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
+from fem_racket.frame.grips import GRIPS
+from fem_racket.impact.constants import DEFAULT_WINDOW
+from fem_racket.io.constants import CONSTRAINTS
+from fem_racket.studies.constants import MINIMISED, OBJECTIVES
 
 if TYPE_CHECKING:
     from fem_racket.studies.design.options import ObjectiveOptions

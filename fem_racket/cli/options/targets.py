@@ -7,15 +7,8 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING, Any
 
-from fem_racket.frame.clock import PLACES
-from fem_racket.studies.target_values import (
-    RANKED,
-    TARGETS,
-    parse_target,
-    place_list,
-    target_summary,
-    targets_from,
-)
+from fem_racket.frame.constants import PLACES
+from fem_racket.studies.constants import RANKED, TARGETS
 
 if TYPE_CHECKING:
     from fem_racket.studies.customise import Target
@@ -33,6 +26,8 @@ __all__ = [
 def _range(text: str) -> tuple[float, float] | str:
     """``VALUE``, ``LOW:HIGH`` -> (low, high), or ``keep``
     (:func:`fem_racket.studies.target_values.parse_target`)."""
+    from fem_racket.studies.target_values import parse_target
+
     try:
         return parse_target(text)
     except ValueError as exc:
@@ -64,9 +59,21 @@ def add_target_options(parser: argparse.ArgumentParser, *, ranked: bool = False)
 def targets_from_args(args: argparse.Namespace, now: Any = None) -> dict[str, Target]:
     """dest -> :class:`Target` (SI) of every target option given; ``keep`` is the value of
     ``now`` (the racket's :class:`~fem_racket.frame.catalogue.Catalogue`)."""
+    from fem_racket.studies.target_values import targets_from
+
     return targets_from(vars(args), now)
 
 
 def places_of(args: argparse.Namespace) -> list[str]:
     """The --places list."""
+    from fem_racket.studies.target_values import place_list
+
     return place_list(args.places)
+
+
+def target_summary(targets: dict[str, Target]) -> dict[str, list[float]]:
+    """JSON-ready [low, high] of each target, units in the keys
+    (:func:`fem_racket.studies.target_values.target_summary`)."""
+    from fem_racket.studies.target_values import target_summary as summary
+
+    return summary(targets)

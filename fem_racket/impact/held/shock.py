@@ -27,13 +27,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from fem_racket.impact.constants import DEFAULT_WINDOW
 from fem_racket.impact.held.modal import HeldContact
 from fem_racket.validation import InputError
 
 __all__ = ["DEFAULT_WINDOW", "contact_peak", "grip_peak", "vibration_energy", "vibration_rms"]
 
-#: Window of the shock measures from the start of contact [s] (assumption, module docstring).
-DEFAULT_WINDOW = 0.05
 #: Grid points per contact time of the peak search.
 GRID = 256
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fem_racket.studies.constants import MINIMISED, OBJECTIVES
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["MINIMISED", "OBJECTIVES", "QUANTITIES", "Constraint", "Variable", "sense"]
@@ -23,16 +24,6 @@ QUANTITIES: dict[str, tuple[str, float]] = {
     "swing_weight_kg_cm2": ("swing weight about 0.10 m [kg cm^2]", 1e-3),
     "f1_hz": ("first free-free frequency [Hz]", 1e-3),
 }
-#: Objectives (maximised): name -> label with units.
-OBJECTIVES: dict[str, str] = {
-    "cor": "mean apparent COR e_A [-]",
-    "ball_speed": "mean ball speed v_out [m/s]",
-    "power_region": "power region length [m]",
-    "handle_shock": "mean handle shock, RMS grip vibration force [N]",
-    "peak_grip_force": "mean peak grip force [N]",
-}
-#: Objectives minimised (the others are maximised).
-MINIMISED = frozenset({"handle_shock", "peak_grip_force"})
 
 
 def sense(name: str) -> float:

@@ -16,12 +16,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fem_racket.studies.constants import ZONES
 from fem_racket.validation import InputError, check_integer, check_positive, check_range
 
 __all__ = ["MAX_ZONE_POINTS", "ZONES", "ImpactZone", "gaussian_zone", "uniform_zone"]
-
-#: The zones a design study names: uniform over a range, or a Gaussian about mode 1's node.
-ZONES = ("uniform", "node")
 
 
 @dataclass(frozen=True, eq=False)
