@@ -114,6 +114,7 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     from fem_racket.io.map_files import check_map_outputs
     from fem_racket.io.racket_files import customise_files, customise_racket, mesh_files
     from fem_racket.outputs import check_output_path
+    from fem_racket.studies.map_options import MapPlay
     from fem_racket.studies.target_values import place_list, targets_from
 
     d = cfg.defaults()
@@ -134,8 +135,11 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     elements = d.get("elements", FRAME_ELEMENTS)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, elements)
     targets = targets_from(o, catalogue(mesh, f1=False))
-    work_begins()
     play = {k: o[k] for k in PLAY_DEFAULTS}
+    if play["reference"] == PLAY_DEFAULTS["reference"]:  # a key at its default: not given
+        play["reference"] = None
+    MapPlay(**play)  # a swing's point without a swing refused before any work
+    work_begins()
     if paths is None:
         return customise_racket(mesh, targets, places, play)
     parameters = {"config": str(cfg.source), **o, "out": str(out)}

@@ -155,11 +155,33 @@ def _check_simulate_table(cfg: RunConfig) -> None:
         )
 
 
+def unwritten(key: str) -> str:
+    """The refusal of the run-file key ``key`` (``simulate.output_step = 2e-05 (run.toml)``)
+    where nothing is written: the command's and the Python method's one line."""
+    return f"{key} is not allowed without out: it sets the histories or files written, and none are"
+
+
+def _check_step_used(cfg: RunConfig, histories: bool | None) -> None:
+    """Refuse ``[simulate] output_step`` (at other than its default) where the head-on or held
+    impact computes no histories: no output in the file and ``histories`` not asked, as
+    ``fem-racket simulate --config`` refuses it (an oblique impact takes it; on a string bed
+    the solver refuses it)."""
+    step = cfg.table("simulate").get("output_step")
+    d = cfg.defaults()
+    if histories or step is None or _output_step(cfg, "simulate") == DEFAULT_STEP:
+        return
+    if cfg.table("simulate").get("out") or d.get("out") or cfg.values.get("oblique"):
+        return
+    if bed_from_options({k: d.get(k) for k in STRING_OPTIONS}) is None:
+        raise InputError(unwritten(f"simulate.output_step = {show(step)} ({cfg.source})"))
+
+
 def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it: the
     result of :func:`run_file` on ``[simulate]`` (its keys checked as the command checks
-    them)."""
+    them; ``[simulate] output_step`` refused where no histories are computed)."""
     _check_simulate_table(cfg)
+    _check_step_used(cfg, histories)
     return run_file(cfg, histories=histories)[1]
 
 

@@ -225,7 +225,8 @@ def map_file(cfg: RunConfig) -> list[Any]:
             for name, model in _rackets(o)
         ]  # fmt: skip
     positions = as_values("position", o["positions"])
-    play = MapPlay(o["speed"], o["racket_speed"], o["reference"], o["pivot"], positions)
+    reference = None if o["reference"] == DEFAULT_REFERENCE else o["reference"]  # as the CLI
+    play = MapPlay(o["speed"], o["racket_speed"], reference, o["pivot"], positions)
     if o["offsets"] is not None:
         from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
 
@@ -254,6 +255,8 @@ def refine_file(cfg: RunConfig) -> dict[str, Any]:
     # the table's values of RefineOptions' fields (the family is each study's own)
     study = {k: o[k] for k in field_names(RefineOptions) if k in o and k != "family"}
     study |= {"n_modes": o["count"], "progress": False}
+    if study.get("grading") == DEFAULT_GRADING:  # a key at its default: not given, as the CLI
+        del study["grading"]
     return {
         fam: refinement_study(cfg.frame(), o["elements"], **graded(study, fam, o["family"]))
         for fam in families

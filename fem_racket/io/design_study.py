@@ -148,14 +148,16 @@ def run_optimization(run: OptimizationRun) -> DesignResult:
     work_begins()
     history = None if files.out is None else history_path(files.out)
     ev = _evaluator(problem, run.execution, history, run.restart)
-    common = {"evaluator": ev, "seed": s.seed, "progress": run.execution.progress}
+    common = {"evaluator": ev, "progress": run.execution.progress}
+    # the search refused what its method does not use: the global methods' own options only
+    de = {"popsize": s.popsize, "seed": s.seed} if s.method == "differential-evolution" else {}
     try:
         if s.method == "nsga2":
-            result = pareto_front(problem, pop_size=s.pop_size, generations=s.generations, **common)
-        else:
-            result = optimize(
-                problem, method=s.method, maxiter=s.maxiter, popsize=s.popsize, **common
+            result = pareto_front(
+                problem, pop_size=s.pop_size, generations=s.generations, seed=s.seed, **common
             )
+        else:
+            result = optimize(problem, method=s.method, maxiter=s.maxiter, **de, **common)
         if files.out is not None:
             write_study(result, files.out, overwrite=files.overwrite, parameters=files.parameters)
             ev.history.remove()

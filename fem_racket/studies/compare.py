@@ -101,6 +101,7 @@ class Play(MapPlay):
 
     def __post_init__(self) -> None:
         check_at_rest(self.racket_speed, self.reference, self.pivot)  # compare shows no COP
+        super().__post_init__()
         check_range("position", self.position, 0.0, 1.0, unit="x/L")
         check_choice("grip", self.grip, tuple(GRIPS))
 

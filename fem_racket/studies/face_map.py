@@ -157,7 +157,7 @@ def face_map(
     name: str = "racket",
     speed: float = 20.0,
     racket_speed: float = 0.0,
-    reference: float = DEFAULT_REFERENCE,
+    reference: float | None = None,
     pivot: float | None = None,
     options: dict[str, Any] | None = None,
 ) -> FaceMap:
@@ -204,6 +204,7 @@ def face_map(
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements or 20)
     length = model.mesh.length
     head = head.on_frame(length)
+    reference = DEFAULT_REFERENCE if reference is None else reference  # None: not given
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
     v_r = np.asarray(swing.speed_at(x * length), dtype=float)
     closing = np.array([closing_speed(speed, v) for v in v_r])

@@ -28,7 +28,7 @@ from fem_racket.frame.segments import (
 )
 from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import check_tolerance
-from fem_racket.impact.settings import DEFAULTS, SolverOptions
+from fem_racket.impact.settings import UNSET, SolverOptions
 from fem_racket.impact.solvers import auto_method, make_solver
 from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
@@ -50,7 +50,7 @@ from fem_racket.studies.grid_values import (
 )
 from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
-from fem_racket.studies.sweep_options import SweepSolving
+from fem_racket.studies.sweep_options import SOLVING_DEFAULTS, SweepSolving
 from fem_racket.studies.sweep_physics import check_physics
 from fem_racket.validation import (
     InputError,
@@ -110,10 +110,13 @@ class SweepSpec(SweepSolving):
         COR tolerance of the batched engine (exact solver); None: every mode.
     peak_force : bool
         Whether the peak force is computed (a result variable).
+    given : frozenset of str
+        The options and parameters given (at any value: refused where simulate refuses them).
     """
 
     values: dict[str, Any] = field(kw_only=True)
     frame: Frame | FrameMesh | None = field(default=None, kw_only=True)
+    given: frozenset[str] = field(default=frozenset(), kw_only=True)
 
     # a spec holds a dict of arrays: equal only to itself (not by SweepSolving's fields)
     __eq__ = object.__eq__
@@ -125,6 +128,9 @@ class SweepSpec(SweepSolving):
         :func:`fem_racket.sweep` for the keywords (the law's parameters by their names in
         :data:`LAW_PARAMETERS`)."""
         raw = {name: kwargs.pop(name, None) for name in PARAMETERS}
+        told = frozenset(n for n, v in raw.items() if v is not None)  # given, at any value
+        told |= {n for n in SOLVING_DEFAULTS if kwargs.get(n, UNSET) is not UNSET}
+        kwargs.update({n: d for n, d in SOLVING_DEFAULTS.items() if n not in told})
         check_linear_options(kwargs.get("law"), kcb=raw["kcb"], zeta=raw["zeta"])
         law_given = {name: kwargs.pop(name) for name in list(kwargs) if name in LAW_PARAMETERS}
         # the grid's size from the counts alone, before any value is made (20:40:10000000)
@@ -163,7 +169,7 @@ class SweepSpec(SweepSolving):
                 values["elements"] = frame.n_elements
         if kwargs.get("solver", "auto") == "auto":
             kwargs["solver"] = auto_method(kwargs.get("law") is None)
-        spec = cls(values=values, frame=frame, ei2=ei2, **kwargs)
+        spec = cls(values=values, frame=frame, ei2=ei2, given=told, **kwargs)
         if spec.law is not None:
             check_choice("solver", spec.solver, ("general", "cvode"))
         else:
@@ -186,18 +192,16 @@ class SweepSpec(SweepSolving):
         return spec
 
     def solver_options(self) -> dict[str, Any]:
-        """The options of the cases' solver that differ from their defaults, by name: those the
-        caller asked for (a default asks for nothing, as a solver's neutral values). The sweep
+        """The options of the cases' solver that were given (:attr:`given`), by name: the sweep
         makes its solver with them (:func:`fem_racket.impact.solvers.make_solver`), so it
         refuses what simulate refuses, by the same rule."""
-        names = [n for n in SolverOptions.names() if hasattr(self, n)]
-        return {n: getattr(self, n) for n in names if getattr(self, n) != getattr(DEFAULTS, n)}
+        return {n: getattr(self, n) for n in SolverOptions.names() if n in self.given}
 
     @property
     def problem_separation(self) -> str | None:
         """The separation the cases' problems state: the sweep's under the paper's law; under
-        another law only when one other than the default is asked (the problem refuses it)."""
-        if self.law is None or self.separation != SweepSolving.separation:
+        another law only when given (at any value: the problem refuses it, as simulate's)."""
+        if self.law is None or "separation" in self.given:
             return self.separation
         return None
 

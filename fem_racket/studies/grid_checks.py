@@ -94,7 +94,7 @@ def check_swings(spec: Any) -> None:
         check_range("racket_speed", racket_speed, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
     if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
         # a swing's point without a swing would be dropped (the maps' rule)
-        check_at_rest(0.0, v["reference"], v["pivot"])
+        check_at_rest(0.0, v["reference"] if "reference" in spec.given else None, v["pivot"])
         return
     frame = spec.frame if spec.frame is not None else standard_frame()
     length = float(frame.length)

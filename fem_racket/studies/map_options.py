@@ -63,18 +63,15 @@ def check_map_points(positions: int, offsets: int = 1) -> None:
     )
 
 
-def check_at_rest(racket_speed: float, reference: float, pivot: float | None = None) -> None:
-    """Refuse a swing's ``reference`` point (x/L, other than the default; a sweep's values
-    too) or ``pivot`` [m]
-    (give None where it is used at rest: the maps' centre of percussion) without a swing
-    (``racket_speed`` 0): the racket at rest would drop them."""
+def check_at_rest(racket_speed: float, reference: Any, pivot: float | None = None) -> None:
+    """Refuse a swing's ``reference`` point (x/L; a sweep's values too) or ``pivot`` [m], each
+    given (not None) at any value, without a swing (``racket_speed`` 0): the racket at rest
+    would drop them. Give None for what was not given (the maps' centre of percussion takes
+    the pivot at rest: they leave it out)."""
     if racket_speed != 0.0:
         return
-    for name, value, given, unit in (
-        ("reference", reference, np.any(np.asarray(reference) != DEFAULT_REFERENCE), "x/L"),
-        ("pivot", pivot, pivot is not None, "m"),
-    ):
-        if given:
+    for name, value, unit in (("reference", reference, "x/L"), ("pivot", pivot, "m")):
+        if value is not None:
             value = np.asarray(value).tolist()  # a number, or a sweep's values
             raise InputError(
                 f"{name} = {show(value)} {unit} is not allowed without a swing: give "
@@ -117,26 +114,33 @@ class MapPlay:
     speed : float
         Incoming ball speed v_in [m/s].
     racket_speed, reference, pivot
-        The swing: speed [m/s] of the point ``reference`` (x/L) towards the ball, turning about
-        ``pivot`` [m from the butt] or translating when None (:meth:`swing`).
+        The swing: speed [m/s] of the point ``reference`` (x/L; not given: None at rest, 0.75
+        with a swing) towards the ball, turning about ``pivot`` [m from the butt] or
+        translating when None (:meth:`swing`). A reference given, at any value, is refused at
+        rest.
     positions : array of float or None
         Impact points x/L; :data:`DEFAULT_POSITIONS` when None.
     """
 
     speed: float = 20.0
     racket_speed: float = 0.0
-    reference: float = DEFAULT_REFERENCE
+    reference: float | None = None
     pivot: float | None = None
     positions: Any = None
 
     def __post_init__(self) -> None:
         check_at_rest(self.racket_speed, self.reference)  # the pivot sets the centre of percussion
+        if self.reference is None and self.racket_speed != 0.0:  # a swing's point: its default
+            object.__setattr__(self, "reference", DEFAULT_REFERENCE)
 
     def swing(self, length: float) -> Swing:
         """The swing of a racket of length ``length`` [m]
         (:meth:`fem_racket.impact.swing.Swing.from_speed`)."""
         return Swing.from_speed(
-            self.racket_speed, length, reference=self.reference, pivot=self.pivot
+            self.racket_speed,
+            length,
+            reference=DEFAULT_REFERENCE if self.reference is None else self.reference,
+            pivot=self.pivot,
         )
 
     def keywords(self) -> dict[str, Any]:

@@ -214,6 +214,8 @@ def refinement_study(
     family : {"uniform", "graded"}
         Uniform cells in each segment, or cells graded towards steps and ends
         (:func:`fem_racket.frame.mesh.graded_mesh`, ratio ``grading``).
+    grading : float, optional
+        Cell-size ratio of the graded family (default 4; refused with "uniform", at any value).
     n_modes : int
         Flexible frequencies compared with the exact ones.
     positions : sequence of float
@@ -240,11 +242,10 @@ def refinement_study(
     impact = {k: getattr(o, k) for k in ("ball_mass", "kcb", "zeta", "separation")}
     impact = {k: v for k, v in impact.items() if v is not None}
     check_choice("family", family, FAMILIES)
-    if family == "uniform" and grading != DEFAULT_GRADING:
-        raise InputError(
-            f"grading = {show(grading)} is not allowed with family 'uniform': only the graded "
-            "family grades its cells"
-        )
+    if family == "uniform" and grading is not None:  # given, at any value
+        why = "only the graded family grades its cells"
+        raise InputError(f"grading = {show(grading)} is not allowed with family 'uniform': {why}")
+    grading = DEFAULT_GRADING if grading is None else grading
     check_integer("modes", n_modes)
     pos = np.array([check_range("position", p, 0.0, 1.0, unit="x/L") for p in positions])
     if pos.size == 0:

@@ -30,13 +30,14 @@ DEFAULT_GRADING = 4.0
 @dataclass(frozen=True)
 class RefineOptions:
     """The options of :func:`refinement_study` besides the frame and the element counts (see
-    there)."""
+    there). ``grading`` None is not given (:data:`DEFAULT_GRADING` for the graded family; given
+    at any value, the uniform family refuses it)."""
 
     family: str = "uniform"
     n_modes: int = 4
     positions: Sequence[float] = DEFAULT_POSITIONS
     speed: float = 20.0
-    grading: float = DEFAULT_GRADING
+    grading: float | None = None
     impact_nodes: bool = False
     impact_modes: int = DEFAULT_MODES
     progress: bool | None = None

@@ -12,15 +12,20 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from fem_racket.frame.model import DEFAULT_MODES
-from fem_racket.impact.reduction import DEFAULT_TOLERANCE
+from fem_racket.impact.settings import DEFAULTS, UNSET
 from fem_racket.studies.executors import BACKENDS, check_scheduler
 from fem_racket.validation import InputError, check_choice, check_integer, show
 
-__all__ = ["OUTPUT_SUFFIXES", "SweepRun", "SweepSolving"]
+__all__ = ["OUTPUT_SUFFIXES", "SOLVING_DEFAULTS", "SweepRun", "SweepSolving"]
 
 #: Suffixes of a sweep's output file: netCDF, or a CSV table (with its JSON sidecar).
 OUTPUT_SUFFIXES = (".nc", ".csv")
+#: The effective value of each :class:`SweepSolving` option left :data:`UNSET` (not given).
+#: (simulate's: :data:`~fem_racket.impact.settings.DEFAULTS`, the displacement separation).
+SOLVING_DEFAULTS: dict[str, Any] = {
+    "separation": "displacement",
+    **{n: getattr(DEFAULTS, n) for n in ("basis", "modes", "rtol", "atol", "tolerance")},
+}
 #: The backend each run option belongs to.
 _BACKEND_OF = {"workers": "processes", "scheduler": "dask"}
 
@@ -33,25 +38,31 @@ class SweepSolving:
     ----------
     ei2 : float or None
         Fixed top-side EI2 of the standard frame [N m^2] (0.88 EI1 when None).
-    solver, separation, basis, modes, rtol, atol
-        As for :func:`fem_racket.simulate`.
+    solver : str
+        As for :func:`fem_racket.simulate` ("auto" picks).
+    separation, basis, modes, rtol, atol
+        As for :func:`fem_racket.simulate`; :data:`~fem_racket.impact.settings.UNSET` when not
+        given (then :data:`SOLVING_DEFAULTS`: "displacement", "modal", 80 modes, 1e-10,
+        1e-12), so that an option given at its default is refused where any other value is
+        (the solver and the law see only what was given, as simulate's do).
     law : ContactLaw, str or None
         A contact law other than the paper's.
     tolerance : float or None
-        COR tolerance of the exact solver's batched engine (None: every mode).
+        COR tolerance of the exact solver's batched engine (None: every mode); UNSET when not
+        given (then 1e-6).
     peak_force : bool
         Also compute the largest contact force.
     """
 
     ei2: float | None = None
     solver: str = "auto"
-    separation: str = "displacement"
-    basis: str = "modal"
-    modes: int | None = DEFAULT_MODES
-    rtol: float = 1e-10
-    atol: float = 1e-12
+    separation: Any = UNSET
+    basis: Any = UNSET
+    modes: Any = UNSET
+    rtol: Any = UNSET
+    atol: Any = UNSET
     law: Any = None
-    tolerance: float | None = DEFAULT_TOLERANCE
+    tolerance: Any = UNSET
     peak_force: bool = False
 
 

@@ -84,8 +84,8 @@ def run(args: argparse.Namespace) -> int:
     frame = frame_from_args(args)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
+    play = {"speed": args.speed, **swing_kwargs(args)}  # its checks before work (config --check)
     work_begins()
-    play = {"speed": args.speed, **swing_kwargs(args)}
     files_out, parameters = (out, maps_path), run_parameters(args)
     _, summary = customise_files(mesh, targets, places, play, files_out, parameters, args.overwrite)
     if args.json:

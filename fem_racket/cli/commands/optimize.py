@@ -12,6 +12,7 @@ from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.cli.options.lists import add_options
 from fem_racket.cli.options.output import print_written_folder
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.extras import require
 
 #: Where the study goes unless --out is given.
@@ -70,6 +71,7 @@ def run(args: argparse.Namespace) -> int:
         **{k: getattr(args, k) for k in ("method", "maxiter", "popsize", "pop_size")},
         generations=args.generations,
         seed=args.seed,
+        given=frozenset(given_options(args)),  # refused where unused, even at the default
     )
     files = OutputOptions(
         args.out,

@@ -193,6 +193,8 @@ def run(args: argparse.Namespace) -> int:
         check_targets(refine_targets(args.csv, plot), overwrite=overwrite)
     families = FAMILIES if args.family == "both" else (args.family,)
     options = fields_from_args(args, RefineOptions, n_modes=args.count, progress=progress_of(args))
+    if "grading" not in given_options(args):  # refused with --family uniform when given
+        del options["grading"]
     work_begins()
     studies = {  # the uniform family has no grading (refused by refinement_study)
         fam: refinement_study(frame, args.elements, **graded(options, fam, args.family))

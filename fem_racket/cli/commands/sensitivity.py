@@ -37,18 +37,23 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Compute and print the indices."""
     from fem_racket.cli.common import print_json, print_written, run_parameters
+    from fem_racket.cli.options.runfile import given_options
     from fem_racket.io.design_study import (
         OutputOptions,
         SensitivityRun,
         run_sensitivity,
         sobol_json,
     )
+    from fem_racket.studies.design.unused import refuse_power_fraction
 
     require("SALib", "fem-racket sensitivity")
 
     files = OutputOptions(args.out, overwrite_of(args, bool(args.out)), run_parameters(args))
+    problem = problem_from_args(args)
+    if "power_fraction" in given_options(args):  # given at any value, as the problem's other
+        refuse_power_fraction(args.power_fraction, args.output or problem.objectives[0])
     run = SensitivityRun(
-        problem_from_args(args),
+        problem,
         args.output,
         args.designs,
         args.seed,

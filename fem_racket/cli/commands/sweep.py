@@ -25,6 +25,7 @@ from fem_racket.cli.options.drawing import add_quiet_option, progress_of
 from fem_racket.cli.options.fields import fields_from_args
 from fem_racket.cli.options.laws import add_law_options
 from fem_racket.cli.options.rerun import replace_own
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.impact.incidence import (
     DEFAULT_BALL_INERTIA,
     DEFAULT_BALL_RADIUS,
@@ -193,9 +194,10 @@ def run(args: argparse.Namespace) -> int:
     """Run the sweep, write the file and print a summary."""
     from fem_racket.cli.common import frame_from_args
     from fem_racket.contact.presets import law_parameters
+    from fem_racket.io.config_defaults import PLAY_DEFAULTS
     from fem_racket.studies.executors import check_scheduler
     from fem_racket.studies.sweep import sweep_result
-    from fem_racket.studies.sweep_options import SweepRun, SweepSolving
+    from fem_racket.studies.sweep_options import SOLVING_DEFAULTS, SweepRun, SweepSolving
 
     given = getattr(args, "explicit_options", set())
     if given & {"workers", "scheduler"} and "serial" not in given:
@@ -207,6 +209,8 @@ def run(args: argparse.Namespace) -> int:
     if args.scheduler is not None:
         check_scheduler(args.scheduler)  # before the checkpoint folder is made
     values = {name: getattr(args, name) for name in PARAMETERS}
+    if "reference" not in given and values["reference"] == PLAY_DEFAULTS["reference"]:
+        values["reference"] = None  # a run file's key at its default is not given
     custom = args.mesh is not None or getattr(args, "segments", None)
     frame = frame_from_args(args, exclusive=("ei1", "ei2")) if custom else None
     start = time.perf_counter()
@@ -219,7 +223,12 @@ def run(args: argparse.Namespace) -> int:
         progress=progress_of(args),
         parameters=run_parameters(args),
     )
-    solving = fields_from_args(args, SweepSolving)
+    told = given_options(args)  # the solver's options given, at any value (as simulate's)
+    solving = {
+        k: v
+        for k, v in fields_from_args(args, SweepSolving).items()
+        if k not in SOLVING_DEFAULTS or k in told
+    }
     result = sweep_result(frame, **values, **solving, **running, **law_parameters(vars(args)))
     wall = time.perf_counter() - start
     _note_modes(args, frame)

@@ -15,6 +15,7 @@ from fem_racket.cli.options.execution import add_run_options
 from fem_racket.cli.options.fields import options_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.objectives import add_objective_options, objectives_from_args
+from fem_racket.cli.options.runfile import given_options
 from fem_racket.cli.options.variables import add_variable_options
 from fem_racket.cli.options.zones import add_zone_options
 
@@ -62,5 +63,6 @@ def problem_from_args(args: argparse.Namespace) -> DesignProblem:
         goals=objectives_from_args(args),
         law=law_from_args(args),
         elements=args.elements,
+        given=frozenset(given_options(args)),  # refused where unused, even at the default
     )
     return build_problem(frame_from_args(args), options)

@@ -164,7 +164,10 @@ def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     ``Play``, which build the swing themselves; ``--reference`` without a swing refused
     (``--pivot`` sets the maps' centre of percussion at rest too)."""
     check_swing_options(args, pivot_at_rest=True)
-    return {name: getattr(args, name) for name, *_ in SWING}
+    out = {name: getattr(args, name) for name, *_ in SWING}
+    if args.racket_speed == 0.0:  # at rest a reference point was refused if given: none
+        out["reference"] = None
+    return out
 
 
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:

@@ -171,6 +171,12 @@ class DesignOptions:
         The ball/string law (the paper's linear one when None).
     elements : int
         Cells of each design's mesh.
+    given : frozenset of str
+        The options (fields of the groups, by name) the caller gave: one of them is refused
+        where these settings would not use it even at its default value, as any other value
+        (:mod:`.unused`); one not named here is refused only at another value than its
+        default. :meth:`from_keywords` names every keyword; the commands name what the command
+        line gave.
     """
 
     variables: VariableOptions = field(default_factory=VariableOptions)
@@ -178,6 +184,7 @@ class DesignOptions:
     goals: ObjectiveOptions = field(default_factory=ObjectiveOptions)
     law: ContactLaw | None = None
     elements: int = 20
+    given: frozenset[str] = frozenset()
 
     def __post_init__(self) -> None:
         refuse_unused(self)  # an option these settings would not use (:mod:`.unused`)
@@ -193,7 +200,7 @@ class DesignOptions:
             for g, kind in GROUPS.items()
         }
         rest = {k: options[k] for k in ("law", "elements") if k in options}
-        return cls(**groups, **rest)
+        return cls(**groups, **rest, given=frozenset(options))
 
 
 @dataclass(frozen=True)
@@ -211,6 +218,9 @@ class SearchOptions:
         NSGA-II: population and generations.
     seed : int
         Random seed of the global methods.
+    given : frozenset of str
+        The options given (as :attr:`DesignOptions.given`): refused, even at the default,
+        where the method would not use them.
     """
 
     method: str = "SLSQP"
@@ -219,6 +229,7 @@ class SearchOptions:
     pop_size: int = 50
     generations: int = 100
     seed: int = 1
+    given: frozenset[str] = frozenset()
 
     def __post_init__(self) -> None:
         refuse_unused_search(self)  # a budget the method would not use (:mod:`.unused`)

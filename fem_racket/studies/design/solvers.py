@@ -199,9 +199,9 @@ def optimize(
     maxiter: int = 100,
     tol: float = 1e-9,
     step: float = 1e-4,
-    popsize: int = 10,
-    seed: int = 1,
-    polish: bool = True,
+    popsize: int | None = None,
+    seed: int | None = None,
+    polish: bool | None = None,
     progress: bool | None = None,
 ) -> DesignResult:
     """Maximise the problem's first objective subject to its constraints.
@@ -220,12 +220,14 @@ def optimize(
         Convergence tolerance of the local method (on the scaled objective).
     step : float
         Forward-difference step in the unit box.
-    popsize : int
-        Differential evolution: population = popsize x number of variables.
-    seed : int
-        Random seed of differential evolution.
-    polish : bool
-        Differential evolution: finish with SLSQP from its best design.
+    popsize : int, optional
+        Differential evolution: population = popsize x number of variables (default 10).
+    seed : int, optional
+        Random seed of differential evolution (default 1).
+    polish : bool, optional
+        Differential evolution: finish with SLSQP from its best design (default True).
+        ``popsize``, ``seed`` and ``polish`` are differential evolution's: given (at any
+        value) with a local method, they are refused.
     progress : bool, optional
         Progress bar on stderr (iterations, best objective); None: only on a terminal.
 
@@ -235,12 +237,16 @@ def optimize(
     """
     check_choice("method", method, LOCAL_METHODS + GLOBAL_METHODS)
     check_integer("maxiter", maxiter)
-    SearchOptions(method=method, maxiter=maxiter, popsize=popsize, seed=seed)  # refuses unused
-    if not polish and method in LOCAL_METHODS:
+    told = {k: v for k, v in (("popsize", popsize), ("seed", seed)) if v is not None}
+    SearchOptions(method=method, maxiter=maxiter, **told, given=frozenset(told))  # refuses unused
+    if polish is not None and method in LOCAL_METHODS:
         raise InputError(
-            f"polish = False is not allowed with method {method!r}: only "
+            f"polish = {polish} is not allowed with method {method!r}: only "
             "differential-evolution is polished"
         )
+    popsize = SearchOptions.popsize if popsize is None else popsize
+    seed = SearchOptions.seed if seed is None else seed
+    polish = True if polish is None else polish
     evaluator = Evaluator(problem) if evaluator is None else evaluator
     u0 = problem.to_unit(problem.x_start)
     with progress_bar(progress, method, None) as bar:

@@ -5,7 +5,10 @@ field of :class:`.options.DesignOptions`' groups: the ``design_problem`` keyword
 file's key, the command's long option with dashes), when it is used, and why. An option set
 to other than its default where it is not used is refused (:class:`.options.DesignOptions`
 and :class:`.options.SearchOptions` check their rows when made, so the library, the run files
-and the commands refuse alike). Its default is not refused: it changes nothing.
+and the commands refuse alike); so is one given at its default (named in the options'
+``given``: every keyword of ``design_problem``, every option on the command line), as simulate
+refuses an option given at any value. A run file's key at its default is not counted as given
+(as every run-file key, :func:`fem_racket.cli.options.runfile.given_options`).
 
 Not refused because they are used in every mode: ``power_fraction`` (the report's power
 region of each racket, ``result.json``'s ``sweet_spots``, even when no objective is the power
@@ -29,6 +32,7 @@ __all__ = [
     "SEARCH_RULES",
     "refuse_unused",
     "refuse_unused_search",
+    "refuse_power_fraction",
     "refuse_unused_sensitivity",
 ]
 
@@ -139,7 +143,8 @@ def refuse_unused(options: Options) -> None:
     for group, name, used, why in RULES:
         part = getattr(options, group)
         value = getattr(part, name)
-        if not _same(value, _default(type(part), name)) and not used(options):
+        told = name in options.given or not _same(value, _default(type(part), name))
+        if told and not used(options):
             context = {"objectives": show(list(options.goals.objectives)), "law": law}
             raise InputError(f"{name} = {show(value)} is not allowed {why.format(**context)}")
 
@@ -150,7 +155,8 @@ def refuse_unused_search(search: Any) -> None:
     check_choice("method", search.method, METHODS)
     for name, used, why in SEARCH_RULES:
         value = getattr(search, name)
-        if not _same(value, _default(type(search), name)) and not used(search):
+        told = name in search.given or not _same(value, _default(type(search), name))
+        if told and not used(search):
             raise InputError(
                 f"{name} = {show(value)} is not allowed {why.format(method=search.method)}"
             )
@@ -173,8 +179,16 @@ def refuse_unused_sensitivity(problem: Any, output: str) -> None:
             f"{output!r}: a sensitivity analysis computes the indices of its output only"
         )
     default = next(f.default for f in fields(problem) if f.name == "power_fraction")
-    if output != "power_region" and problem.power_fraction != default:
+    if problem.power_fraction != default:
+        refuse_power_fraction(problem.power_fraction, output)
+
+
+def refuse_power_fraction(value: float, output: str) -> None:
+    """Refuse ``power_fraction`` = ``value`` (given: the command asks this at any value, the
+    problem only at other than its default) for Sobol indices of an ``output`` other than the
+    power region."""
+    if output != "power_region":
         raise InputError(
-            f"power_fraction = {show(problem.power_fraction)} is not allowed with output "
-            f"{output!r}: only the power region is measured at a fraction of v_out's maximum"
+            f"power_fraction = {show(value)} is not allowed with output {output!r}: only the "
+            "power region is measured at a fraction of v_out's maximum"
         )

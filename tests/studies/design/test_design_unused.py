@@ -75,7 +75,6 @@ def test_every_rule_is_exercised_and_names_a_field():
         "racket_speed=10.0, reference=0.7, pivot=0.12, swing_exponent=-0.1",
         "objectives=('handle_shock',), grip='firm', shock_window=0.01",
         "vary=('ei', 'string'), string_bounds=(0.6, 1.5)",
-        "vary=('rhoa',), ei_bounds=(50.0, 3000.0), zone_sigma=0.05, reference=0.75",  # defaults
         "power_fraction=0.8",  # the report's power region at every objective
     ],
 )
