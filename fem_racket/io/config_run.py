@@ -16,6 +16,7 @@ import math
 from typing import Any
 
 from fem_racket.io.config_defaults import DEFAULT_STEP, DEFAULTS
+from fem_racket.io.config_named import keys_named
 from fem_racket.io.config_oblique import CORE_DEST_KEYS, oblique_file
 from fem_racket.strings.options import STRING_OPTIONS, bed_from_options
 from fem_racket.validation import InputError, show
@@ -205,7 +206,14 @@ def run_file(cfg: RunConfig, *, histories: bool | None = None, table: str = "sim
         The file's frame.
     result : ImpactResult, HeldRun with a ``[hand]`` table, StrungImpact with ``[strings]``, or
         ObliqueResult with ``[oblique]``
+
+    A library refusal of a value of the file names its key (:mod:`.config_named`).
     """
+    with keys_named(cfg):
+        return _run(cfg, histories, table)
+
+
+def _run(cfg: RunConfig, histories: bool | None, table: str) -> Any:
     from fem_racket.impact.simulate import simulate
 
     d = cfg.defaults()
