@@ -11,8 +11,10 @@ from __future__ import annotations
 
 import contextvars
 import math
+import os
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
+from pathlib import Path
 
 __all__ = [
     "AccuracyError",
@@ -20,6 +22,7 @@ __all__ = [
     "InputError",
     "check_choice",
     "check_elements",
+    "check_file",
     "check_finite",
     "check_integer",
     "check_positive",
@@ -94,14 +97,15 @@ def _fmt(name: str, value: object, unit: str) -> str:
 
 
 def check_finite(name: str, value: object, unit: str = "") -> float:
-    """Return ``value`` as a float, or raise if it is not a finite real number."""
+    """Return ``value`` as a float, or raise if it is not a finite real number (a bool or a
+    text such as ``"20"`` is refused alike: ``float`` would take them)."""
     try:
         number = float(value)  # type: ignore[arg-type]
     except (TypeError, ValueError):
         raise InputError(
             f"{_fmt(name, value, unit)} is not allowed: must be a finite number"
         ) from None
-    if isinstance(value, bool) or not math.isfinite(number):
+    if isinstance(value, bool | str | bytes) or not math.isfinite(number):
         raise InputError(f"{_fmt(name, value, unit)} is not allowed: must be a finite number")
     return number
 
@@ -135,6 +139,17 @@ def check_range(
             f"{_fmt(name, value, unit)} is not allowed: must lie in {lb}{low:g}, {high:g}{rb}"
         )
     return number
+
+
+def check_file(name: str, path: str | os.PathLike, what: str) -> Path:
+    """``path`` as a Path, or raise unless it is a file: a folder is named as one (``mesh =
+    '/tmp' is not allowed: it is a folder, not a mesh file``), else "no such file"."""
+    path = Path(path)
+    if path.is_dir():
+        raise InputError(f"{name} = {show_path(path)} is not allowed: it is a folder, not a {what}")
+    if not path.is_file():
+        raise InputError(f"{name} = {show_path(path)} is not allowed: no such file")
+    return path
 
 
 def check_choice(name: str, value: object, choices: Iterable[str]) -> str:

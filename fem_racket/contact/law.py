@@ -140,6 +140,12 @@ class ContactLaw:
         when the family has no lossless member."""
         return None
 
+    def for_ball(self, ball_mass: float) -> ContactLaw:
+        """The law as it acts on a ball of ``ball_mass`` [kg]: itself, unless its parameters
+        are stated for a ball's mass (:meth:`LinearContact.for_ball
+        <fem_racket.contact.linear.LinearContact.for_ball>`)."""
+        return self
+
     def static_deflection(self, load: float) -> float:
         """Deflection [m] under a static ``load`` [N] on the loading branch (Brent's method)."""
         from scipy.optimize import brentq

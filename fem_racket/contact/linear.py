@@ -141,7 +141,9 @@ class LinearContact(ContactLaw):
 
     One class for the exact eigen-solution (which reads ``stiffness`` and ``zeta``) and the
     general integrators (which call :meth:`force`). ``C_CB = 2 zeta sqrt(m_B K_CB)``: the damping
-    ratio refers to the ball's mass ``ball_mass``, so the law carries it.
+    ratio refers to the ball's mass ``ball_mass``, so the law carries it. The law is the spring
+    and the dashpot: struck by another ball, K_CB and C_CB stay and zeta is that ball's
+    (:meth:`for_ball`, which an impact problem applies to its law).
 
     Parameters
     ----------
@@ -150,7 +152,7 @@ class LinearContact(ContactLaw):
     zeta : float or ndarray
         Damping ratio C_CB / (2 sqrt(m_B K_CB)), in [0, 1) (the paper: 0.0592).
     ball_mass : float
-        m_B [kg] the damping ratio refers to.
+        m_B [kg] the damping ratio refers to (with ``zeta`` it states C_CB).
     separation : {"displacement", "force"}
         End of contact: delta back to 0 (the paper's) or F back to 0.
     """
@@ -251,6 +253,28 @@ class LinearContact(ContactLaw):
         if np.ndim(self.stiffness) == 0 and np.ndim(self.zeta) == 0:
             return 2.0 * self.zeta * math.sqrt(m * self.stiffness)
         return 2.0 * np.asarray(self.zeta) * np.sqrt(m * np.asarray(self.stiffness))
+
+    def for_ball(self, ball_mass: float) -> LinearContact:
+        """The same K_CB and C_CB, zeta referred to a ball of ``ball_mass`` [kg] (itself at its
+        own mass; one copy per mass, so problems sharing a law share it). A problem refers its
+        law to its ball, so its settings state the zeta of the ball that struck; refused (one
+        line naming both masses) where C_CB damps that ball critically or more."""
+        m = float(ball_mass)
+        if m == self.ball_mass:
+            return self
+        memo = vars(self).setdefault("_for_ball", {})
+        if m not in memo:
+            scalar = np.ndim(self.stiffness) == 0 and np.ndim(self.zeta) == 0
+            root = math.sqrt(m * self.stiffness) if scalar else np.sqrt(m * self.stiffness)
+            zeta = self.damping() / (2.0 * root)
+            if np.any(np.asarray(zeta) >= 1.0):
+                raise InputError(
+                    f"ball mass = {show(m)} kg is not allowed with contact law {self.label()}: "
+                    f"its C_CB damps that ball at zeta = {float(np.max(zeta)):.4g}, must be < 1 "
+                    f"(its zeta is referred to its ball_mass {show(self.ball_mass)} kg)"
+                )
+            memo[m] = replace(self, zeta=zeta, ball_mass=m)
+        return memo[m]
 
     def elastic(self) -> LinearContact:
         """zeta = 0: the spring without its dashpot."""

@@ -41,6 +41,7 @@ __all__ = [
     "PRESETS",
     "check_linear_options",
     "family_law",
+    "law_named",
     "get_law",
     "law_parameters",
 ]
@@ -90,16 +91,38 @@ def family_law(name: str, values: dict[str, Any]) -> ContactLaw:
     return cls.from_values(values)
 
 
+def _preset_name(law: Any) -> str | None:
+    """The preset ``law`` is (given by its name or as the preset's own object), else None."""
+    if isinstance(law, str):
+        return law if law in PRESETS else None
+    return next((name for name, preset in PRESETS.items() if preset is law), None)
+
+
+def law_named(law: Any) -> str:
+    """``law`` (a law, or its name) as a message names it: as given, with its family when it is
+    a preset (``'itf-ball' (hunt-crossley preset)``, also for the preset's own object)."""
+    preset = _preset_name(law)
+    if preset is not None:
+        return f"{show(preset)} ({PRESETS[preset].name} preset)"
+    return show(law if isinstance(law, str) else law.name)
+
+
 def check_linear_options(law: Any, **options: Any) -> None:
-    """Refuse the paper's linear-law options (``kcb``, ``zeta``: not None) with another law
-    ``law`` (a law, or its name; None or "linear" is the paper's), which would ignore them."""
-    given = sorted(k for k, v in options.items() if v is not None)
-    name = law if isinstance(law, str) or law is None else law.name
-    if not given or name in (None, "linear"):
+    """Refuse the paper's linear-law options (``kcb``, ``zeta``: not None) with a law ``law``
+    (a law, or its name) that fixes its own parameters: any law object (a LinearContact too: it
+    holds its K_CB and zeta) and any name but ``"linear"``; None or ``"linear"`` is the paper's
+    law, built from them. One line naming the first option given, its value and the law as
+    given (:func:`law_named`)."""
+    given = [(key, value) for key, value in options.items() if value is not None]
+    if not given or law is None or (isinstance(law, str) and law == "linear"):
         return
-    own = [p.name for p in LinearContact.declared]
-    raise InputError(
-        f"{', '.join(given)} {'is' if len(given) == 1 else 'are'} not allowed with contact law "
-        f"{show(name)}: {', '.join(own)} set the paper's linear law only ({show(name)} has its "
-        "own parameters)"
-    )
+    named, why = law_named(law), "kcb and zeta set the paper's linear law only"
+    if _preset_name(law) is not None:
+        why += " (a preset fixes its own parameters)"
+    elif isinstance(law, LinearContact):  # the paper's law, as an object: named with its values
+        named = law.label()
+        why = "the law object fixes K_CB and zeta (give them to LinearContact, or omit law)"
+    else:
+        why += " (this law has its own parameters)"
+    key, value = given[0]
+    raise InputError(f"{key} = {show(value)} is not allowed with contact law {named}: {why}")

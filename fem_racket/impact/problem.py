@@ -126,7 +126,8 @@ class ImpactProblem:
     ball : Ball
         The ball (m_B [kg]).
     law : ContactLaw or None
-        The ball/string law; None: the paper's linear spring-dashpot.
+        The ball/string law; None: the paper's linear spring-dashpot. A LinearContact is held
+        referred to ``ball`` (its K_CB and C_CB, that ball's zeta: ``LinearContact.for_ball``).
     kcb : float or None
         K_CB [N/m] of the paper's law; from the closing speed through the paper's three points
         when None. Only with the paper's law.
@@ -170,7 +171,7 @@ class ImpactProblem:
         if self.separation is not None:
             check_choice("separation", self.separation, SEPARATIONS)
         if self.law is not None:
-            check_law(self)
+            object.__setattr__(self, "law", check_law(self))
         else:  # the paper's K_CB and zeta, checked once
             LinearContact.for_speed(
                 self.impact.speed, kcb=self.kcb, zeta=self.zeta, ball_mass=self.ball.mass

@@ -26,6 +26,7 @@ import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball
+from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.batch_outcome import BatchOutcome
@@ -135,12 +136,7 @@ class ProblemBatch:
             if not isinstance(self.law, ContactLaw):
                 raise InputError(f"law = {self.law!r} is not allowed: must be a ContactLaw")
             refuse_separation(self.law, self.separation)  # as a problem refuses it
-            for name in ("kcb", "zeta"):
-                if getattr(self, name) is not None:
-                    raise InputError(
-                        f"{name} is not allowed with contact law {self.law.name!r}: it is the "
-                        "paper's law's"
-                    )
+            check_linear_options(self.law, kcb=self.kcb, zeta=self.zeta)
         for name in ("kcb", "zeta"):
             if getattr(self, name) is not None:
                 set_(self, name, _column(name, getattr(self, name), n))

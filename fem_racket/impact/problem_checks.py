@@ -50,8 +50,10 @@ def check_build_options(options: dict[str, Any], problem_class: type) -> None:
             )
 
 
-def check_law(problem: Any) -> None:
-    """Refuse a ``law`` that is not a ContactLaw, or options the law cannot use (one line)."""
+def check_law(problem: Any) -> ContactLaw:
+    """Refuse a ``law`` that is not a ContactLaw, or options the law cannot use (one line).
+    Returns the law referred to the problem's ball (:meth:`ContactLaw.for_ball`: a
+    LinearContact keeps K_CB and C_CB, its zeta becomes that ball's, as its settings state)."""
     if not isinstance(problem.law, ContactLaw):
         raise InputError(f"law = {problem.law!r} is not allowed: must be a ContactLaw or None")
     check_linear_options(problem.law, kcb=problem.kcb, zeta=problem.zeta)
@@ -63,6 +65,7 @@ def check_law(problem: Any) -> None:
             "--string-tension)"
         )
     refuse_separation(problem.law, problem.separation)
+    return problem.law.for_ball(problem.ball.mass)
 
 
 def refuse_separation(law: ContactLaw, separation: str | None) -> None:

@@ -17,7 +17,7 @@ import numpy as np
 
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.plausible import check_implement
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, check_file
 
 __all__ = ["read_mesh", "write_mesh"]
 
@@ -45,10 +45,8 @@ def read_mesh(path: str | os.PathLike) -> FrameMesh:
     """
     import meshio
 
-    path = Path(path)
+    path = check_file("mesh", path, "mesh file")
     where = f"mesh = '{path}'"
-    if not path.is_file():
-        raise InputError(f"{where} is not allowed: no such file")
     chatter = io.StringIO()  # meshio prints its reasons (stdout) and errors (stderr)
     try:
         with contextlib.redirect_stdout(chatter), contextlib.redirect_stderr(chatter):

@@ -15,12 +15,11 @@ from __future__ import annotations
 import csv
 import math
 import os
-from pathlib import Path
 
 from fem_racket.frame.catalogue import Catalogue
 from fem_racket.frame.specs import KG_CM2
 from fem_racket.studies.closest import Listed
-from fem_racket.validation import InputError, show
+from fem_racket.validation import InputError, check_file, show
 
 __all__ = ["OPTIONAL", "REQUIRED", "read_rackets"]
 
@@ -48,9 +47,7 @@ def _number(where: str, text: str, factor: float) -> float:
 
 def read_rackets(path: str | os.PathLike) -> list[Listed]:
     """The rackets of a CSV list (module docstring)."""
-    path = Path(path)
-    if not path.is_file():
-        raise InputError(f"rackets = '{path}' is not allowed: no such file")
+    path = check_file("rackets", path, "racket list (CSV)")
     with path.open(newline="", encoding="utf-8") as f:
         reader = csv.DictReader(f)
         header = [h.strip() for h in reader.fieldnames or []]

@@ -145,7 +145,7 @@ def calibrate(
     bounds = (np.log(fam.low), np.log(fam.high))
     work_begins()
     fit = least_squares(residuals, x0, bounds=bounds, diff_step=1e-4, max_nfev=200)
-    law = fam.build(np.exp(fit.x))
+    law = fam.build(np.exp(fit.x)).for_ball(ball_mass)  # its zeta: the calibration's ball's
     try:
         model = _model_values(law, targets, ball_mass)
     except RuntimeError as err:  # the integrator fails at the fitted point itself

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.contact.linear import Ball, kcb_from_speed
-from fem_racket.contact.presets import get_law
+from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
@@ -97,12 +97,7 @@ def _prepared(
                 f"kcb_factor = {show(kcb_factor)} is not allowed with contact law "
                 f"{show(law.name)}: it scales the linear law's K_CB only"
             )
-        for key in ("kcb", "zeta"):
-            if options.get(key) is not None:
-                raise InputError(
-                    f"{key} = {show(options[key])} is not allowed with contact law "
-                    f"{show(law.name)}: it sets the linear law's K_CB and zeta only"
-                )
+        check_linear_options(law, kcb=options.get("kcb"), zeta=options.get("zeta"))
         linear = {k: options[k] for k in ("separation",) if k in options}
         if linear:  # refused as simulate refuses them (the problem's check of its law)
             ImpactProblem.build(model, position=float(x.flat[0]), law=law, **linear)

@@ -3,15 +3,13 @@
 import json
 
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import simulate
 
 
 def test_simulate_json_contract(capsys):
-    code, out, _ = run(capsys, "simulate", "--speed", "20", "--position", "0.75", "--json")
-    assert code == 0
-    data = json.loads(out)
+    data = run_json(capsys, "simulate", "--speed", "20", "--position", "0.75")
     for key in (
         "cor",
         "contact_time_s",
@@ -72,9 +70,7 @@ def test_simulate_options_reach_the_library(capsys):
 
 
 def test_modes_json_contract(capsys):
-    code, out, _ = run(capsys, "modes", "--json")
-    assert code == 0
-    data = json.loads(out)
+    data = run_json(capsys, "modes")
     assert data["mass_kg"] == pytest.approx(0.360, abs=5e-4)
     assert data["cg_x_over_l"] == pytest.approx(0.453, abs=5e-4)
     assert data["frequencies_hz"][:2] == pytest.approx([122.1, 337.2], abs=0.05)

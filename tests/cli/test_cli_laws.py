@@ -3,25 +3,21 @@
 import json
 
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import simulate
 from fem_racket.contact.presets import PRESETS, get_law
 
 
 def test_simulate_law_preset_json_records_the_law(capsys):
-    code, out, _ = run(
-        capsys, "simulate", "--law", "kawazoe-1997-nonlinear", "--speed", "30", "--json"
-    )
-    assert code == 0
-    data = json.loads(out)
+    data = run_json(capsys, "simulate", "--law", "kawazoe-1997-nonlinear", "--speed", "30")
     ref = simulate(speed=30.0, law=PRESETS["kawazoe-1997-nonlinear"])  # the call it wraps
     assert data["cor"] == ref.cor and data["solver"] == "general"
     assert data["law"] == "hysteretic" and data["k1_n_m_n"] == PRESETS["kawazoe-1997-nonlinear"].k1
 
 
 def test_simulate_law_family_options(capsys):
-    code, out, _ = run(
+    data = run_json(
         capsys,
         "simulate",
         "--law",
@@ -34,10 +30,7 @@ def test_simulate_law_family_options(capsys):
         "8e16",
         "--speed",
         "30",
-        "--json",
     )
-    assert code == 0
-    data = json.loads(out)
     ref = simulate(
         speed=30.0, law=get_law("hunt-crossley", hc_stiffness=8e16, hc_exponent=9.0, hc_alpha=0.01)
     )
@@ -56,9 +49,7 @@ def test_run_file_contact_law(capsys, tmp_path):
     cfg.write_text(
         '[contact]\nlaw = "hunt-crossley"\nhc_alpha_s_m = 0.02\n[impact]\nspeed_m_s = 30.0\n'
     )
-    code, out, err = run(capsys, "simulate", "--config", cfg, "--json")
-    assert code == 0, err
-    data = json.loads(out)
+    data = run_json(capsys, "simulate", "--config", cfg)
     assert data["law"] == "hunt-crossley" and data["hc_alpha_s_m"] == 0.02
     cfg.write_text('[contact]\nlaw = "hunt-crossley"\nhc_alpha = 0.02\n')
     code, _, err = run(capsys, "simulate", "--config", cfg)
@@ -71,9 +62,7 @@ def test_calibrate_writes_table_run_file_and_plot(capsys, tmp_path):
     assert code == 0, err
     assert "meets every target: True" in out
     toml = tmp_path / "hysteretic-kawazoe-1997.toml"
-    code, out, err = run(capsys, "simulate", "--config", toml, "--speed", "30", "--json")
-    assert code == 0, err
-    assert json.loads(out)["law"] == "hysteretic"
+    assert run_json(capsys, "simulate", "--config", toml, "--speed", "30")["law"] == "hysteretic"
     assert (tmp_path / "hysteretic-kawazoe-1997.png").read_bytes()[:4] == b"\x89PNG"
     fit = json.loads((tmp_path / "hysteretic-kawazoe-1997.json").read_text())
     assert fit["meets_targets"] and fit["provenance"]["parameters"]["family"] == "hysteretic"

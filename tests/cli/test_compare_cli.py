@@ -2,11 +2,9 @@
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import lead_moments
@@ -16,9 +14,7 @@ FAST = ("--positions", "0.5:1:21")
 
 
 def compare_json(capsys, tmp_path, *argv):
-    code, text, err = run(capsys, "compare", *argv, *FAST, "--out", tmp_path / "c.nc", "--json")
-    assert code == 0, err
-    return json.loads(text)
+    return run_json(capsys, "compare", *argv, *FAST, "--out", tmp_path / "c.nc")
 
 
 def test_compare_a_a_shows_zero_differences(capsys, tmp_path):
@@ -89,11 +85,9 @@ def test_bad_compare_input_is_one_line(capsys, tmp_path, monkeypatch, argv, says
 def test_face_maps_compare_and_lead_at_3_9_lifts_the_sides(capsys, tmp_path):
     face = ("--offsets", "-0.1:0.1:5", "--positions", "0.6:0.9:7")
     nc = tmp_path / "f.nc"
-    code, text, err = run(
-        capsys, "compare", "standard", "standard", "standard+3/9:10", *face, "--out", nc, "--json"
+    data = run_json(
+        capsys, "compare", "standard", "standard", "standard+3/9:10", *face, "--out", nc
     )
-    assert code == 0, err
-    data = json.loads(text)
     assert data["differences"]["standard (2)"]["power_area_cm2"] == 0.0
     import xarray as xr
 

@@ -6,7 +6,7 @@ import json
 
 import numpy as np
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import catalogue
@@ -51,13 +51,10 @@ def test_customise_range_target_and_table(capsys, tmp_path):
 
 
 def test_keep_holds_the_racket_value(capsys, tmp_path):
-    code, text, err = run(
+    data = run_json(
         capsys, "customise", "--swing-weight", "320", "--balance", "keep",
         "--places", "12,3/9,handle", "--out", tmp_path / "c.vtu", "--maps", tmp_path / "c.nc",
-        "--json",
     )  # fmt: skip
-    assert code == 0, err
-    data = json.loads(text)
     assert data["after"]["balance_m"] == pytest.approx(data["before"]["balance_m"], rel=1e-12)
     assert data["targets"]["balance_m"] == [data["before"]["balance_m"]] * 2
     # the tip and the handle: cheaper than 3/9 for swing weight at a fixed balance
@@ -75,12 +72,10 @@ def test_keep_holds_the_racket_value(capsys, tmp_path):
 def test_customise_twist_weight_at_3_9_and_the_mesh_file_carries_it(capsys, tmp_path):
     out = tmp_path / "c.vtu"
     base = catalogue(frame_mesh(standard_frame(), 20), f1=False).twist_weight / KG_CM2
-    code, text, err = run(
+    data = run_json(
         capsys, "customise", "--twist-weight", repr(base + 1.0), "--places", "3/9",
-        "--out", out, "--maps", tmp_path / "m.nc", "--json",
+        "--out", out, "--maps", tmp_path / "m.nc",
     )  # fmt: skip
-    assert code == 0, err
-    data = json.loads(text)
     r = DEFAULT_HEAD.width_m / 2
     # 1 kg cm^2 = m r^2: m = 1e-4 / r^2 kg
     assert data["placement_g"]["3/9"] == pytest.approx(1e-4 / r**2 * 1e3, rel=1e-9)

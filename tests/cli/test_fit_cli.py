@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket.frame.specs import KG_CM2, racket_spec
 from fem_racket.io.mesh_files import read_mesh
@@ -15,9 +15,7 @@ SPEC = ("--length", "0.685", "--mass", "0.318", "--balance", "0.32", "--swing-we
 
 def test_fit_writes_a_mesh_with_the_specification(capsys, tmp_path):
     out = tmp_path / "r.vtu"
-    code, text, err = run(capsys, "fit", *SPEC, "--f1", "150", "--out", str(out), "--json")
-    assert code == 0, err
-    data = json.loads(text)
+    data = run_json(capsys, "fit", *SPEC, "--f1", "150", "--out", out)
     got = racket_spec(read_mesh(out))
     # Issue 14: mass, balance, swing weight to 0.1 %, f1 to 0.5 % (fitted exactly here).
     assert got.mass == pytest.approx(0.318, rel=1e-9)

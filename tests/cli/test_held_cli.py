@@ -7,7 +7,7 @@ import json
 
 import numpy as np
 import pytest
-from clirun import run as run_cli
+from clirun import run_json, run_ok
 
 from fem_racket.cli.text import significant
 from fem_racket.frame.hand import GRIPS, Hand
@@ -21,14 +21,9 @@ from fem_racket.impact.swing import Swing
 from fem_racket.outputs import json_ready
 
 
-def run(capsys, *argv):
-    code, out, err = run_cli(capsys, *argv)
-    assert code == 0, err
-    return out
-
-
-def run_json(capsys, *argv):
-    return json.loads(run(capsys, "simulate", *argv, "--json"))
+def simulate_json(capsys, *argv):
+    """``fem-racket simulate ARGV --json`` (exit 0): the printed JSON."""
+    return run_json(capsys, "simulate", *argv)
 
 
 @pytest.fixture(scope="module")
@@ -43,7 +38,7 @@ def exact(standard_model):
 @pytest.mark.parametrize("grip", list(GRIPS))
 def test_exact_output_is_the_library_call(capsys, exact, grip):
     c = exact[grip]
-    data = run_json(capsys, "--grip", grip)
+    data = simulate_json(capsys, "--grip", grip)
     # Same computation: equal to round-off.
     assert data["cor"] == pytest.approx(c.cor, rel=1e-13)
     assert data["contact_time_s"] == pytest.approx(c.contact_time, rel=1e-13)
@@ -55,7 +50,7 @@ def test_exact_output_is_the_library_call(capsys, exact, grip):
     assert data["rebound_speed_m_s"] == pytest.approx(-c.rebound_velocity, rel=1e-13)
     assert data["hand"] == json_ready(hand_summary(GRIPS[grip])) and data["hand"]["grip"] == grip
     assert data["modes"] == c.modes
-    text = run(capsys, "simulate", "--grip", grip)
+    text = run_ok(capsys, "simulate", "--grip", grip)
     for name, value in [
         ("coefficient of restitution", significant(c.cor, 6)),
         ("contact time", significant(c.contact_time * 1e3, 5)),
@@ -73,7 +68,7 @@ def test_cvode_output_is_the_library_call(capsys, standard_model):
     ref = simulate_held(
         ImpactProblem.build(standard_model, hand=hand, position=0.6, speed=30.0), solver="cvode"
     )
-    data = run_json(
+    data = simulate_json(
         capsys, "--grip", "firm", "--solver", "cvode", "--position", "0.6", "--speed", "30"
     )
     assert data["cor"] == pytest.approx(ref.cor, rel=1e-12)
@@ -90,9 +85,11 @@ def test_cvode_output_is_the_library_call(capsys, standard_model):
 @pytest.mark.parametrize("grip", list(GRIPS))
 def test_exact_and_cvode_agree_through_the_cli(capsys, tmp_path, grip):
     common = ("--grip", grip, "--position", "0.8")
-    a = run_json(capsys, *common)
+    a = simulate_json(capsys, *common)
     out = tmp_path / "cvode.json"
-    b = run_json(capsys, *common, "--solver", "cvode", "--out", str(out), "--output-step", "5e-7")
+    b = simulate_json(
+        capsys, *common, "--solver", "cvode", "--out", str(out), "--output-step", "5e-7"
+    )
     for key in ("cor", "contact_time_s", "rebound_speed_m_s", "peak_force_n"):
         assert b[key] == pytest.approx(a[key], rel=1e-6), key
     for key in ("peak_grip_force_n", "grip_vibration_rms_n"):
@@ -106,8 +103,8 @@ def test_exact_and_integrators_agree_for_a_swinging_held_racket(capsys, solver):
     # the integrator's tolerance; v_out = e_A v_in + (1 + e_A) v_r (Brody, Cross & Lindsey
     # 2002, ch. 11). Shock measures sampled at 1e-5 s: (omega dt)^2 / 8 ~ 1e-3 bound.
     swing = ("--grip", "firm", "--racket-speed", "15", "--pivot", "0.08", "--speed", "25")
-    a = run_json(capsys, *swing)
-    b = run_json(capsys, *swing, "--solver", solver)
+    a = simulate_json(capsys, *swing)
+    b = simulate_json(capsys, *swing, "--solver", solver)
     v_r = a["racket_speed_at_impact_m_s"]
     assert v_r == pytest.approx(Swing.from_speed(15.0, 0.68, pivot=0.08).speed_at(0.75 * 0.68))
     e = a["apparent_cor"]
@@ -117,7 +114,7 @@ def test_exact_and_integrators_agree_for_a_swinging_held_racket(capsys, solver):
     for key in ("peak_grip_force_n", "grip_vibration_rms_n"):
         assert b[key] == pytest.approx(a[key], rel=1e-3), key
     # The closing speed sets K_CB: the same impact as a racket at rest struck at v_in + v_r.
-    still = run_json(capsys, "--grip", "firm", "--speed", str(25.0 + v_r))
+    still = simulate_json(capsys, "--grip", "firm", "--speed", str(25.0 + v_r))
     assert still["cor"] == pytest.approx(a["apparent_cor"], rel=1e-12)
     assert still["peak_grip_force_n"] == pytest.approx(a["peak_grip_force_n"], rel=1e-12)
 
@@ -125,7 +122,7 @@ def test_exact_and_integrators_agree_for_a_swinging_held_racket(capsys, solver):
 def test_out_writes_histories_and_the_hand_in_the_provenance(capsys, tmp_path, standard_model):
     out = tmp_path / "held.csv"
     custom = ("--grip", "loose", "--grip-damping", "150", "--shock-window", "0.02")
-    run(capsys, "simulate", *custom, "--out", str(out))
+    run_ok(capsys, "simulate", *custom, "--out", str(out))
     meta = json.loads((tmp_path / "held.csv.json").read_text())
     hand = Hand(stiffness=1e5, damping=150.0)
     assert meta["used"]["hand"] == json_ready(hand_summary(hand))
@@ -158,16 +155,19 @@ def test_run_file_round_trip(capsys, tmp_path):
         '[hand]\ngrip = "firm"\nmass_kg = 0.4\ngrip_end_m = 0.11\nshock_window_s = 0.03\n'
         "[impact]\nspeed_m_s = 30.0\n"
     )
-    from_file = run_json(capsys, "--config", str(f))
+    from_file = simulate_json(capsys, "--config", str(f))
     argv = ("--grip", "firm", "--hand-mass", "0.4", "--grip-end", "0.11", "--speed", "30")
-    assert from_file == run_json(capsys, *argv, "--shock-window", "0.03")
+    assert from_file == simulate_json(capsys, *argv, "--shock-window", "0.03")
     assert from_file["hand"]["mass_kg"] == 0.4 and from_file["shock_window_s"] == 0.03
     # The command line overrides the file.
-    assert run_json(capsys, "--config", str(f), "--grip-end", "0.12")["hand"]["grip_end_m"] == 0.12
-    check = run(capsys, "config", "--check", str(f))
+    assert (
+        simulate_json(capsys, "--config", str(f), "--grip-end", "0.12")["hand"]["grip_end_m"]
+        == 0.12
+    )
+    check = run_ok(capsys, "config", "--check", str(f))
     assert 'hand_grip = "firm"' in check and "grip_end = 0.11" in check
 
 
 def test_without_a_hand_simulate_is_unchanged(capsys):
-    data = run_json(capsys)
+    data = simulate_json(capsys)
     assert "hand" not in data and "peak_grip_force_n" not in data

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket.contact.presets import get_law
 from fem_racket.studies.racket_map import racket_map
@@ -16,9 +16,7 @@ def test_sweep_law_parameter_options_are_the_library_call(capsys, cwd):
     import xarray as xr
 
     argv = ["sweep", "--law", "hysteretic", "--k2", "6e16:1.2e17:3", "--position", "0.6,0.8"]
-    code, out, err = run(capsys, *argv, "--speed", "30", "--serial", "--quiet", "--json")
-    assert code == 0, err
-    summary = json.loads(out)
+    summary = run_json(capsys, *argv, "--speed", "30", "--serial", "--quiet")
     assert summary["dims"] == {"position": 2, "k2": 3}
     assert summary["contact_law"] == "hysteretic" and summary["solver"] == "general"
     # a process pool: the same batches as --serial (fixed chunks under a law)
@@ -60,9 +58,7 @@ def test_map_with_a_law_records_it(capsys, cwd):
 
     argv = ["map", "--positions", "0.5:1.0:6", "--racket-speed", "20", "--pivot", "0.1"]
     law = ["--law", "hunt-crossley", "--hc-stiffness", "1e7", "--hc-exponent", "1.5"]
-    code, out, err = run(capsys, *argv, *law, "--out", "m.nc", "m.csv", "--json")
-    assert code == 0, err
-    data = json.loads(out)
+    data = run_json(capsys, *argv, *law, "--out", "m.nc", "m.csv")
     ref = racket_map(
         racket_speed=20.0,
         pivot=0.1,
@@ -81,12 +77,9 @@ def test_map_with_a_law_records_it(capsys, cwd):
 
 
 def test_map_under_the_linear_law_is_today_s_map(capsys, cwd):
-    argv = ["map", "--positions", "0.5:1.0:6", "--racket-speed", "20", "--out", "m.nc", "--json"]
-    code, out, err = run(capsys, *argv)
-    assert code == 0, err
-    code, named, err = run(capsys, *argv, "--law", "linear", "--overwrite")
-    assert code == 0, err
-    today, linear = json.loads(out), json.loads(named)
+    argv = ["map", "--positions", "0.5:1.0:6", "--racket-speed", "20", "--out", "m.nc"]
+    today = run_json(capsys, *argv)
+    linear = run_json(capsys, *argv, "--law", "linear", "--overwrite")
     assert linear["curves"] == today["curves"] and linear["contact"] == {"law": "linear"}
 
 
@@ -97,7 +90,6 @@ def test_map_takes_the_law_from_a_run_file(capsys, cwd):
         '[contact]\nlaw = "hunt-crossley"\nhc_stiffness_n_m_n = 1e7\nhc_exponent = 1.5\n'
         '[map]\npositions = "0.5:1:5"\nout = ["r.nc"]\n'
     )
-    code, out, err = run(capsys, "map", "--config", "run.toml", "--json")
-    assert code == 0, err
+    data = run_json(capsys, "map", "--config", "run.toml")
     law = get_law("hunt-crossley", hc_stiffness=1e7, hc_exponent=1.5)
-    assert json.loads(out)["contact"] == law.describe()
+    assert data["contact"] == law.describe()

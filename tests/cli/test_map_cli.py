@@ -6,7 +6,7 @@ import json
 
 import numpy as np
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.segments import standard_frame
@@ -19,9 +19,7 @@ GRID = ("--positions", "0.5:1.0:21")
 def test_map_json_is_the_library_call_and_files_hold_the_spots(capsys, cwd):
     swing = ("--speed", "20", "--racket-speed", "25", "--pivot", "0.1")
     files = ("--out", "m.nc", "m.csv", "m.png")
-    code, out, err = run(capsys, "map", *swing, *GRID, *files, "--json")
-    assert code == 0, err
-    data = json.loads(out)
+    data = run_json(capsys, "map", *swing, *GRID, *files)
     ref = racket_map(speed=20.0, racket_speed=25.0, pivot=0.1, positions=np.linspace(0.5, 1.0, 21))
     for key in ("cop_x_over_l", "node_x_over_l", "max_apparent_cor_x_over_l"):
         assert data[key] == ref.spots.summary()[key]
@@ -45,13 +43,11 @@ def test_map_json_is_the_library_call_and_files_hold_the_spots(capsys, cwd):
 def test_several_rackets_are_overlaid(capsys, cwd):
     write_mesh(frame_mesh(standard_frame(300.0), 20), cwd / "stiff.vtu")
     argv = ("map", "--preset", "standard", "--mesh", "stiff.vtu", "--preset", "rigid", *GRID)
-    code, out, err = run(capsys, *argv, "--json", "--out", "o.png")
-    assert code == 0, err
-    names = [r["racket"] for r in json.loads(out)["rackets"]]
-    assert names == ["standard", "rigid", "stiff"]
+    rackets = run_json(capsys, *argv, "--out", "o.png")["rackets"]
+    assert [r["racket"] for r in rackets] == ["standard", "rigid", "stiff"]
     # Without a pivot there is no centre of percussion, without a swing no max-v_out point.
-    assert json.loads(out)["rackets"][0]["cop_x_over_l"] is None
-    assert json.loads(out)["rackets"][0]["max_ball_speed_x_over_l"] is None
+    assert rackets[0]["cop_x_over_l"] is None
+    assert rackets[0]["max_ball_speed_x_over_l"] is None
 
 
 def test_existing_output_is_refused_before_the_work(capsys, cwd):

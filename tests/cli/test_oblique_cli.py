@@ -10,7 +10,7 @@ from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.impact.simulate_oblique import simulate_oblique
 from fem_racket.impact.simulate_stroke import simulate_stroke
 from fem_racket.impact.swing import Swing
-from tests.clirun import run
+from tests.clirun import run, run_json
 
 
 def test_the_issues_stroke_on_a_clamped_head(capsys):
@@ -29,10 +29,8 @@ def test_the_issues_stroke_on_a_clamped_head(capsys):
 
 def test_json_is_the_library_call(capsys):
     argv = ("simulate", "--angle", "30", "--spin", "1000", "--friction", "0.3", "--ball-inertia",
-            "0.55", "--compliance-ratio", "2", "--position", "0.7", "--json")  # fmt: skip
-    code, out, _ = run(capsys, *argv)
-    assert code == 0
-    data = json.loads(out)
+            "0.55", "--compliance-ratio", "2", "--position", "0.7")  # fmt: skip
+    data = run_json(capsys, *argv)
     inc = Incidence(angle=30.0, spin=1000.0, friction=0.3, ball_inertia=0.55, compliance_ratio=2.0)
     ref = simulate_oblique(incidence=inc, speed=20.0, position=0.7).summary()
     for key in ("ball_speed_out_m_s", "angle_out_deg", "spin_out_rpm", "contact_regime", "cor"):
@@ -42,10 +40,8 @@ def test_json_is_the_library_call(capsys):
 
 def test_a_stroke_is_the_library_call(capsys):
     argv = ("simulate", "--face-angle", "80", "--path-angle", "19", "--racket-speed", "15",
-            "--pivot", "0.1", "--spin", "-1000", "--json")  # fmt: skip
-    code, out, _ = run(capsys, *argv)
-    assert code == 0
-    data = json.loads(out)
+            "--pivot", "0.1", "--spin", "-1000")  # fmt: skip
+    data = run_json(capsys, *argv)
     ref = simulate_stroke(
         incidence=Incidence(spin=-1000.0), stroke=Stroke(80.0, 19.0), speed=20.0,
         swing=Swing.from_speed(15.0, 0.68, pivot=0.1),

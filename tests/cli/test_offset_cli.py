@@ -1,25 +1,21 @@
 """--offset on simulate, export-vtk and run files; refused with a hand (issue 24)."""
 
-import json
-
 import numpy as np
 import pytest
 
-from tests.clirun import run
+from tests.clirun import run, run_json
 
 
 def test_simulate_offset_prints_roll_and_torsion(capsys):
-    code, out, _ = run(capsys, "simulate", "--position", "0.74", "--offset", "0.05", "--json")
-    s = json.loads(out)
-    assert code == 0 and s["offset_m"] == 0.05
+    s = run_json(capsys, "simulate", "--position", "0.74", "--offset", "0.05")
+    assert s["offset_m"] == 0.05
     # rigid roll of the angular impulse: I_p Omega = y m_B (V + v_out), I_p = 17.4896 kg cm^2
     J = 0.057 * (20.0 + s["rebound_speed_m_s"])
     assert s["roll_rate_rad_s"] == pytest.approx(0.05 * J / 17.4896e-4, rel=1e-9)
     assert 0.0 < s["torsion_energy_share"] < 1.0
     code, out, _ = run(capsys, "simulate", "--position", "0.74", "--offset", "-0.05")
     assert code == 0 and "roll rate after impact" in out and "-" in out.split("roll rate")[1]
-    code, out, _ = run(capsys, "simulate", "--position", "0.74", "--json")
-    assert "offset_m" not in json.loads(out)  # on the axis: today's output
+    assert "offset_m" not in run_json(capsys, "simulate", "--position", "0.74")  # today's output
 
 
 def test_offset_refusals(capsys):
@@ -32,8 +28,7 @@ def test_offset_refusals(capsys):
 def test_run_file_offset(capsys, tmp_path):
     f = tmp_path / "run.toml"
     f.write_text("[impact]\nposition_x_over_l = 0.74\noffset_m = 0.04\n", encoding="utf-8")
-    code, out, _ = run(capsys, "simulate", "--config", f, "--json")
-    assert code == 0 and json.loads(out)["offset_m"] == 0.04
+    assert run_json(capsys, "simulate", "--config", f)["offset_m"] == 0.04
 
 
 def test_export_vtk_writes_the_twist(capsys, tmp_path):
@@ -62,8 +57,7 @@ def test_fit_twist_weight_round_trips_through_modes(capsys, tmp_path):
     code, _, _ = run(capsys, "fit", *spec, "--twist-weight", "16", "--torsion-frequency", "400",
                      "--out", out)  # fmt: skip
     assert code == 0
-    code, text, _ = run(capsys, "modes", "--mesh", out, "--json")
-    m = json.loads(text)
+    m = run_json(capsys, "modes", "--mesh", out)
     assert m["twist_weight_kg_cm2"] == pytest.approx(16.0, rel=1e-12)  # cells keep I_p exactly
     # the exact stepped shaft has 400 Hz; P2 elements on the 40-cell mesh within 1e-5
     assert m["torsion_frequencies_hz"][0] == pytest.approx(400.0, rel=1e-5)

@@ -10,15 +10,11 @@ import json
 import pytest
 
 from fem_racket.cli import main
+from tests.clirun import run_json
 
 # --tolerance 0: every mode, so that the printed run (the batched engine, no histories) and the
 # runs that write histories (the closed-form path) use the same modes and agree to round-off.
 OPTIONS = ["--speed", "30", "--position", "0.7", "--modes", "80", "--tolerance", "0"]
-
-
-def run_json(capsys, *argv):
-    assert main([str(a) for a in argv]) == 0
-    return json.loads(capsys.readouterr().out)
 
 
 @pytest.fixture(scope="module")
@@ -76,7 +72,7 @@ def test_export_vtk_and_animate_provenance_match(printed, capsys, tmp_path):
 
 def test_cvode_run_records_its_tolerances(capsys, tmp_path):
     argv = ["--solver", "cvode", "--rtol", "1e-8", "--atol", "1e-10", *OPTIONS]
-    printed = run_json(capsys, "simulate", "--json", *argv)
+    printed = run_json(capsys, "simulate", *argv)
     assert printed["solver"] == "cvode" and printed["rtol"] == 1e-8 and printed["atol"] == 1e-10
     out = tmp_path / "impact.csv"
     assert main(["simulate", "--out", str(out), *argv]) == 0
@@ -86,7 +82,7 @@ def test_cvode_run_records_its_tolerances(capsys, tmp_path):
 
 def test_a_swing_is_recorded_as_used(capsys, tmp_path):
     argv = [*OPTIONS, "--racket-speed", "15"]
-    printed = run_json(capsys, "simulate", "--json", *argv)
+    printed = run_json(capsys, "simulate", *argv)
     assert printed["swing"]["racket_angular_speed_rad_s"] == printed["racket_angular_speed_rad_s"]
     out = tmp_path / "impact.json"
     assert main(["simulate", "--out", str(out), *argv]) == 0

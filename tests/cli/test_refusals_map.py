@@ -7,7 +7,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.studies.map_options import MAX_MAP_POINTS
@@ -149,9 +149,8 @@ def test_run_file_reference_without_a_swing_is_refused_on_map(capsys, tmp_path):
 def test_what_acts_is_still_accepted(capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     # the pivot sets the map's centre of percussion at rest: accepted, and it shows
-    code, out, err = run(capsys, *MAP, "--pivot", "0.1", "--json")
-    assert code == 0, err
-    assert json.loads(out)["cop_x_over_l"] == pytest.approx(0.7387, abs=1e-4)
+    data = run_json(capsys, *MAP, "--pivot", "0.1")
+    assert data["cop_x_over_l"] == pytest.approx(0.7387, abs=1e-4)
     # --elements meshes a preset next to a mesh; a law's map without the linear law's options;
     # --output-step with --out; a swing with its reference point; the largest map allowed
     ok = [

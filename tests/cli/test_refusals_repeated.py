@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from fem_racket.cli import main
-from tests.clirun import one_error
+from tests.clirun import refused_before_any_file
 
 MESHES = "meshes/standard_racket.vtu", "meshes/tapered_racket.vtu"
 
@@ -27,11 +27,9 @@ MESHES = "meshes/standard_racket.vtu", "meshes/tapered_racket.vtu"
         ),
     ],
 )
-def test_a_value_given_twice_is_refused(capsys, tmp_path, monkeypatch, argv, says):
-    monkeypatch.chdir(tmp_path)
-    line = one_error(capsys, *argv)
+def test_a_value_given_twice_is_refused(capsys, cwd, argv, says):
+    line = refused_before_any_file(capsys, *argv)
     assert says in line and "the last would replace the first" in line, line
-    assert list(tmp_path.iterdir()) == []
 
 
 def test_the_same_value_twice_and_collecting_options_pass(capsys, request):

@@ -7,51 +7,42 @@ provenance) and refuses anything else there; ``--json`` alone writes nothing; ev
 
 import json
 
-import pytest
-
-from tests.clirun import run
+from tests.clirun import run, run_json
 
 MAP = ["map", "--positions", "0.5:1:12"]
 
 
-@pytest.fixture
-def here(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
-
-
-def test_map_replaces_its_own_default_output_and_nothing_else(capsys, here):
+def test_map_replaces_its_own_default_output_and_nothing_else(capsys, cwd):
     code, out, _ = run(capsys, *MAP)
     assert code == 0 and out.splitlines()[-1] == "wrote output/map.png"
-    first = (here / "output/map.png").read_bytes()
+    first = (cwd / "output/map.png").read_bytes()
     code, out, _ = run(capsys, *MAP, "--speed", "30")  # the README's examples, in order
     assert code == 0 and out.splitlines()[-1] == "wrote output/map.png"
-    assert (here / "output/map.png").read_bytes() != first
-    (here / "output/map.png").write_bytes(b"someone else's picture")
+    assert (cwd / "output/map.png").read_bytes() != first
+    (cwd / "output/map.png").write_bytes(b"someone else's picture")
     code, out, err = run(capsys, *MAP)
     assert code == 2 and out == "" and "already exists" in err and "--overwrite" in err
-    assert (here / "output/map.png").read_bytes() == b"someone else's picture"
+    assert (cwd / "output/map.png").read_bytes() == b"someone else's picture"
 
 
-def test_a_named_destination_is_never_replaced_without_overwrite(capsys, here):
+def test_a_named_destination_is_never_replaced_without_overwrite(capsys, cwd):
     assert run(capsys, *MAP, "--out", "m.png")[0] == 0
     code, _, err = run(capsys, *MAP, "--out", "m.png")
     assert code == 2 and "already exists" in err
 
 
-def test_json_alone_and_no_files_write_nothing(capsys, here):
-    code, out, _ = run(capsys, *MAP, "--json")
-    assert code == 0 and json.loads(out)["racket"] == "standard"
+def test_json_alone_and_no_files_write_nothing(capsys, cwd):
+    assert run_json(capsys, *MAP)["racket"] == "standard"
     code, out, _ = run(capsys, *MAP, "--no-files")
     assert code == 0 and "wrote" not in out
-    assert not (here / "output").exists()
+    assert not (cwd / "output").exists()
     code, _, err = run(capsys, *MAP, "--no-files", "--out", "m.png")
     assert code == 2 and "no_files" in err
-    code, out, _ = run(capsys, "refine", "--elements", "5,10", "--json", "--quiet")
-    assert code == 0 and json.loads(out)["files"] == [] and not (here / "output").exists()
+    assert run_json(capsys, "refine", "--elements", "5,10", "--quiet")["files"] == []
+    assert not (cwd / "output").exists()
 
 
-def test_every_file_written_is_reported_sidecars_included(capsys, here):
+def test_every_file_written_is_reported_sidecars_included(capsys, cwd):
     code, out, _ = run(capsys, "simulate", "--out", "s.csv")
     assert code == 0 and out.splitlines()[-2:] == ["wrote s.csv", "wrote s.csv.json"]
     fit = ["fit", "--length", "0.685", "--mass", "0.318", "--balance", "0.32"]
@@ -69,10 +60,10 @@ def test_every_file_written_is_reported_sidecars_included(capsys, here):
     assert (code, out) == (0, "wrote run.toml\n")
 
 
-def test_json_numbers_carry_no_float_noise(capsys, here):
+def test_json_numbers_carry_no_float_noise(capsys, cwd):
     # K_CB at 20 m/s is the paper's 2.74e4 N/m; the power law through its points gave
     # 27399.999999999993 before JSON rounded floats to 15 significant digits.
     code, out, _ = run(capsys, "simulate", "--json")
     assert code == 0 and '"kcb_n_m": 27400.0,' in out
     run(capsys, "simulate", "--out", "s.json")
-    assert json.loads((here / "s.json").read_text())["summary"]["kcb_n_m"] == 27400.0
+    assert json.loads((cwd / "s.json").read_text())["summary"]["kcb_n_m"] == 27400.0

@@ -51,11 +51,12 @@ print(json.dumps(sorted(sys.modules)))
 """
 
 
-def imported(argv: list[str] | None, tmp_path: Path) -> set[str]:
-    """Modules loaded after ``fem-racket ARGV`` (after ``import fem_racket`` when None)."""
+def probe(script: str, argv: list[str] | None, tmp_path: Path):
+    """Run ``script`` with ``ARGV`` (as JSON) in a fresh interpreter in ``tmp_path``: the JSON
+    of its last printed line."""
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     done = subprocess.run(
-        [sys.executable, "-c", PROBE, json.dumps(argv)],
+        [sys.executable, "-c", script, json.dumps(argv)],
         cwd=tmp_path,
         env=env,
         capture_output=True,
@@ -63,7 +64,12 @@ def imported(argv: list[str] | None, tmp_path: Path) -> set[str]:
         timeout=120,
     )
     assert done.returncode == 0, done.stderr
-    return set(json.loads(done.stdout.splitlines()[-1]))
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+def imported(argv: list[str] | None, tmp_path: Path) -> set[str]:
+    """Modules loaded after ``fem-racket ARGV`` (after ``import fem_racket`` when None)."""
+    return set(probe(PROBE, argv, tmp_path))
 
 
 def loaded(modules: set[str], names: tuple[str, ...]) -> list[str]:
@@ -123,17 +129,7 @@ print(json.dumps(dict(code=code, out=out.getvalue(), numpy_by=FirstNumpy.by,
 def parse_only(argv: list[str], tmp_path: Path) -> dict:
     """``fem-racket ARGV`` in a fresh interpreter: its exit code, standard output, the package
     module that first imported numpy (None: none did) and every module loaded."""
-    env = dict(os.environ, PYTHONPATH=str(ROOT))
-    done = subprocess.run(
-        [sys.executable, "-c", HELP_PROBE, json.dumps(argv)],
-        cwd=tmp_path,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
-    assert done.returncode == 0, done.stderr
-    return json.loads(done.stdout.splitlines()[-1])
+    return probe(HELP_PROBE, argv, tmp_path)
 
 
 #: The commands whose parsers take no contact law: no numpy at all for their ``--help``.

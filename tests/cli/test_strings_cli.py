@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from tests.clirun import run
+from tests.clirun import run, run_json
 
 
 def _value(out: str, name: str) -> float:
@@ -71,11 +71,10 @@ def test_run_file_strings_table(capsys, tmp_path):
     # a [strings] table replaces K_CB as the options do; the command line wins over the file
     cfg = tmp_path / "run.toml"
     cfg.write_text('[strings]\ntension_n = 230\npattern = "18x20"\nstring = "polyester"\n')
-    code, out, _ = run(capsys, "simulate", "--config", cfg, "--json")
-    s = json.loads(out)
-    assert code == 0 and s["pattern"] == "18x20" and s["string_tension_n"] == 230.0
-    code, out, _ = run(capsys, "simulate", "--config", cfg, "--string-tension", "260", "--json")
-    assert json.loads(out)["string_tension_n"] == 260.0
+    s = run_json(capsys, "simulate", "--config", cfg)
+    assert s["pattern"] == "18x20" and s["string_tension_n"] == 230.0
+    s = run_json(capsys, "simulate", "--config", cfg, "--string-tension", "260")
+    assert s["string_tension_n"] == 260.0
     cfg.write_text('[strings]\npattern = "18"\n')
     code, out, err = run(capsys, "simulate", "--config", cfg)
     assert code == 2 and "strings.pattern = '18' is not allowed" in err
@@ -95,5 +94,5 @@ def test_export_vtk_draws_the_bed(capsys, tmp_path):
 
 
 def test_bed_edge_option(capsys):
-    code, out, _ = run(capsys, "simulate", "--bed-edge", "hoop", "--position", "0.6", "--json")
-    assert code == 0 and json.loads(out)["stringbed_edge"] == "hoop"
+    s = run_json(capsys, "simulate", "--bed-edge", "hoop", "--position", "0.6")
+    assert s["stringbed_edge"] == "hoop"

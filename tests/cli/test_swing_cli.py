@@ -2,10 +2,8 @@
 
 from __future__ import annotations
 
-import json
-
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import simulate
 from fem_racket.impact.swing import Swing
@@ -13,9 +11,7 @@ from fem_racket.impact.swing import Swing
 
 def test_simulate_with_a_swing_is_the_library_call(capsys):
     argv = ("simulate", "--racket-speed", "25", "--pivot", "0.08", "--position", "0.8")
-    code, out, _ = run(capsys, *argv, "--json")
-    assert code == 0
-    data = json.loads(out)
+    data = run_json(capsys, *argv)
     ref = simulate(position=0.8, swing=Swing.from_speed(25.0, 0.68, pivot=0.08), output_step=None)
     assert data["ball_speed_out_m_s"] == ref.ball_speed_out
     assert data["apparent_cor"] == ref.apparent_cor == data["cor"]
@@ -26,7 +22,7 @@ def test_simulate_with_a_swing_is_the_library_call(capsys):
 
 
 def test_a_racket_at_rest_reports_zero_racket_speed(capsys):
-    data = json.loads(run(capsys, "simulate", "--json")[1])
+    data = run_json(capsys, "simulate")
     assert data["racket_speed_at_impact_m_s"] == 0.0
     assert data["ball_speed_out_m_s"] == data["rebound_speed_m_s"]
 
@@ -34,9 +30,9 @@ def test_a_racket_at_rest_reports_zero_racket_speed(capsys):
 def test_swing_from_a_run_file(capsys, tmp_path):
     f = tmp_path / "run.toml"
     f.write_text("[impact]\nracket_speed_m_s = 25.0\npivot_m = 0.08\nposition_x_over_l = 0.8\n")
-    from_file = json.loads(run(capsys, "simulate", "--config", str(f), "--json")[1])
-    argv = ("simulate", "--racket-speed", "25", "--pivot", "0.08", "--position", "0.8", "--json")
-    assert from_file == json.loads(run(capsys, *argv)[1])
+    from_file = run_json(capsys, "simulate", "--config", f)
+    argv = ("simulate", "--racket-speed", "25", "--pivot", "0.08", "--position", "0.8")
+    assert from_file == run_json(capsys, *argv)
 
 
 @pytest.mark.parametrize(

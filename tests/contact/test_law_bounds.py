@@ -139,11 +139,15 @@ def test_ball_mass_outside_one_gram_to_one_kilogram_names_the_slip(mass, slip):
 
 
 def test_library_simulate_refuses_kcb_and_zeta_with_another_law():
-    with pytest.raises(InputError, match="kcb is not allowed with contact law 'hysteretic'"):
+    with pytest.raises(
+        InputError, match="kcb = 30000.0 is not allowed with contact law 'hysteretic'"
+    ):
         simulate(law="hysteretic", kcb=3e4)
-    with pytest.raises(InputError, match="zeta is not allowed with contact law 'series'"):
+    with pytest.raises(InputError, match="zeta = 0.1 is not allowed with contact law 'series'"):
         simulate(law=get_law("series"), zeta=0.1)
-    with pytest.raises(InputError, match="kcb is not allowed with contact law 'series'"):
+    with pytest.raises(
+        InputError, match="kcb = '3e4,4e4' is not allowed with contact law 'series'"
+    ):
         sweep_result(law="series", kcb="3e4,4e4")
 
 

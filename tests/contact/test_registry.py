@@ -7,14 +7,13 @@ options and the calibration. Its answers are checked against an independent path
 linear law with zeta = 0 is the same spring, solved by the exact eigen-solution.
 """
 
-import json
 import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import simulate
 from fem_racket.contact.law import ContactLaw
@@ -120,10 +119,7 @@ def test_command_line_options_take_the_registered_law(toy, capsys, tmp_path, mon
     monkeypatch.chdir(tmp_path)
     code, out, err = run(capsys, "simulate", "--law", "toy-spring", "--toy-stiffness", "4e4")
     assert code == 0, err
-    code, out, err = run(
-        capsys, "simulate", "--law", "toy-spring", "--toy-stiffness", "4e4", "--json"
-    )
-    data = json.loads(out)
+    data = run_json(capsys, "simulate", "--law", "toy-spring", "--toy-stiffness", "4e4")
     assert data["law"] == "toy-spring" and data["toy_stiffness_n_m"] == 4e4
     ref = simulate(law=get_law("toy-spring", toy_stiffness=4e4), output_step=None)
     assert data["cor"] == ref.cor

@@ -95,7 +95,7 @@ def test_options_a_batch_does_not_use_are_refused(models):
     ("fields", "words"),
     [
         ({"frame": [0, 2]}, "frame is not allowed: must index the 2 models"),
-        ({"kcb": 3e4, "law": "hunt-crossley"}, "kcb is not allowed with contact law"),
+        ({"kcb": 3e4, "law": "hunt-crossley"}, "kcb = 30000.0 is not allowed with contact law"),
         (
             {"speed": [20.0, 30.0, 40.0]},
             "position of 2 values is not allowed",

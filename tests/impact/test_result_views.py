@@ -7,25 +7,20 @@ import fem_racket as fr
 
 
 @pytest.fixture(scope="module")
-def model():
-    return fr.FrameModel.build(elements=20)
+def result(standard_model):
+    return fr.simulate(standard_model, position=0.75, speed=20.0)
 
 
-@pytest.fixture(scope="module")
-def result(model):
-    return fr.simulate(model, position=0.75, speed=20.0)
-
-
-def test_every_result_type_has_a_short_repr(model, result):
+def test_every_result_type_has_a_short_repr(standard_model, result):
     study = fr.refinement_study(elements=[5, 10])
     objects = [
         result,
-        model,
-        model.fe,
-        model.mesh,
-        model.modes(),
-        model.props,
-        fr.coupled_modes(model, 0.75),
+        standard_model,
+        standard_model.fe,
+        standard_model.mesh,
+        standard_model.modes(),
+        standard_model.props,
+        fr.coupled_modes(standard_model, 0.75),
         fr.impact_series(result, frames=5),
         study,
     ]

@@ -5,17 +5,11 @@ from __future__ import annotations
 import pytest
 
 from fem_racket.contact.linear import kcb_from_speed
-from fem_racket.frame.model import FrameModel
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.validation import InputError
 
 L = 0.68
-
-
-@pytest.fixture(scope="module")
-def model() -> FrameModel:
-    return FrameModel.build(None, 20)
 
 
 def test_swing_from_speed_turns_about_the_pivot():
@@ -35,16 +29,20 @@ def test_closing_speed_must_be_positive():
         closing_speed(20.0, -20.0)
 
 
-def test_a_closing_speed_beyond_the_papers_k_cb_names_the_racket_speed(model):
+def test_a_closing_speed_beyond_the_papers_k_cb_names_the_racket_speed(standard_model):
     # K_CB from the closing speed is given for 1-100 m/s (Kawazoe & Kanda 1997, the table of
     # contact.linear.KCB_SPEED_RANGE): a faster swing is refused at the problem, named as the
     # racket's speed at the impact point, not as the closing speed ("speed = 110.0 m/s") it
     # derives; with a K_CB of its own, or another law, the same swing runs.
-    swing = Swing.from_speed(85.0, model.mesh.length)  # a translation: 85 m/s everywhere
+    swing = Swing.from_speed(85.0, standard_model.mesh.length)  # a translation: 85 m/s everywhere
     with pytest.raises(InputError, match=r"^racket speed at the impact point = 85.0 m/s is not"):
-        simulate(model, swing=swing)
-    assert simulate(model, swing=swing, kcb=kcb_from_speed(100.0), output_step=None).cor > 0.0
-    assert simulate(model, swing=Swing.from_speed(75.0, model.mesh.length), output_step=None)
+        simulate(standard_model, swing=swing)
+    assert (
+        simulate(standard_model, swing=swing, kcb=kcb_from_speed(100.0), output_step=None).cor > 0.0
+    )
+    assert simulate(
+        standard_model, swing=Swing.from_speed(75.0, standard_model.mesh.length), output_step=None
+    )
 
 
 # (position x/L, ball speed, racket speed at 0.75 L, pivot [m]): translation, hand, shoulder,
@@ -59,7 +57,9 @@ CASES = [
 
 
 @pytest.mark.parametrize(("position", "speed", "racket_speed", "pivot"), CASES)
-def test_identity_against_a_direct_integration(model, position, speed, racket_speed, pivot):
+def test_identity_against_a_direct_integration(
+    standard_model, position, speed, racket_speed, pivot
+):
     # Issue 14 / Brody, Cross & Lindsey (2002) ch. 11: exact for the linear law. The direct
     # path starts CVODE from the swing's velocity field; e_A is the stationary COR at the
     # closing speed with the same K_CB. Tolerance 1e-9 (the issue's; measured <= 3e-12).
@@ -67,7 +67,7 @@ def test_identity_against_a_direct_integration(model, position, speed, racket_sp
     v_r = swing.speed_at(position * L)
     kcb = kcb_from_speed(speed + v_r)
     still = simulate(
-        model,
+        standard_model,
         position=position,
         speed=speed + v_r,
         kcb=kcb,
@@ -77,7 +77,7 @@ def test_identity_against_a_direct_integration(model, position, speed, racket_sp
     )
     want = ball_speed_out(still.cor, speed, v_r)
     direct = simulate(
-        model,
+        standard_model,
         position=position,
         speed=speed,
         swing=swing,
@@ -91,11 +91,11 @@ def test_identity_against_a_direct_integration(model, position, speed, racket_sp
     assert direct.contact_time == pytest.approx(still.contact_time, rel=1e-9)
 
 
-def test_superposed_and_direct_racket_motion_agree(model):
+def test_superposed_and_direct_racket_motion_agree(standard_model):
     swing = Swing.from_speed(25.0, L, pivot=0.08)
     kw = dict(position=0.8, speed=20.0, swing=swing, output_step=None, modes=20, tolerance=None)
-    exact = simulate(model, **kw)
-    direct = simulate(model, solver="cvode", **kw)
+    exact = simulate(standard_model, **kw)
+    direct = simulate(standard_model, solver="cvode", **kw)
     for a, b in zip(exact.racket_motion_after(), direct.racket_motion_after(), strict=True):
         assert a == pytest.approx(b, rel=1e-9)
     s = exact.summary()
@@ -103,12 +103,12 @@ def test_superposed_and_direct_racket_motion_agree(model):
     assert s["apparent_cor"] == exact.cor
 
 
-def test_physical_basis_direct_integration(model):
+def test_physical_basis_direct_integration(standard_model):
     # The full FE system (no modal truncation) started from the swing's field (measured
     # <= 1e-11 relative against the exact path with every mode).
     swing = Swing.from_speed(20.0, L, pivot=0.1)
     direct = simulate(
-        model,
+        standard_model,
         position=0.75,
         speed=20.0,
         swing=swing,
@@ -117,53 +117,61 @@ def test_physical_basis_direct_integration(model):
         output_step=None,
     )
     exact = simulate(
-        model, position=0.75, speed=20.0, swing=swing, modes=None, output_step=None, tolerance=None
+        standard_model,
+        position=0.75,
+        speed=20.0,
+        swing=swing,
+        modes=None,
+        output_step=None,
+        tolerance=None,
     )
     assert direct.ball_speed_out == pytest.approx(exact.ball_speed_out, rel=1e-9)
 
 
-def test_scipy_bdf_direct_integration(model):
+def test_scipy_bdf_direct_integration(standard_model):
     # The fallback integrator too (measured 4e-13 relative on this case).
     swing = Swing.from_speed(30.0, L, pivot=0.08)
     kw = dict(position=0.9, speed=15.0, swing=swing, modes=20, output_step=None, tolerance=None)
-    direct = simulate(model, solver="bdf", **kw)
-    assert direct.ball_speed_out == pytest.approx(simulate(model, **kw).ball_speed_out, rel=1e-9)
+    direct = simulate(standard_model, solver="bdf", **kw)
+    assert direct.ball_speed_out == pytest.approx(
+        simulate(standard_model, **kw).ball_speed_out, rel=1e-9
+    )
 
 
-def test_momentum_is_conserved_in_the_lab(model):
+def test_momentum_is_conserved_in_the_lab(standard_model):
     swing = Swing.from_speed(25.0, L, pivot=0.08)
-    r = simulate(model, position=0.8, speed=20.0, swing=swing, output_step=2e-5)
+    r = simulate(standard_model, position=0.8, speed=20.0, swing=swing, output_step=2e-5)
     lin, ang = r.momentum()
     assert lin[-1] == pytest.approx(lin[0], rel=1e-9)
     assert ang[-1] == pytest.approx(ang[0], rel=1e-9)
 
 
-def test_no_swing_leaves_the_stationary_impact_unchanged(model):
-    a = simulate(model, position=0.7, speed=30.0, output_step=None)
-    b = simulate(model, position=0.7, speed=30.0, swing=Swing(), output_step=None)
+def test_no_swing_leaves_the_stationary_impact_unchanged(standard_model):
+    a = simulate(standard_model, position=0.7, speed=30.0, output_step=None)
+    b = simulate(standard_model, position=0.7, speed=30.0, swing=Swing(), output_step=None)
     assert a.cor == b.cor and a.rebound_velocity == b.rebound_velocity
     assert a.summary()["racket_speed_at_impact_m_s"] == 0.0
 
 
-def test_energy_balances_in_the_lab(model):
+def test_energy_balances_in_the_lab(standard_model):
     # Ball + racket kinetic energy, strain, spring and the dashpot's work stay at the initial
     # kinetic energy of ball and swinging racket (Simpson on 2e-6 s steps: measured 4e-9).
     swing = Swing.from_speed(25.0, L, pivot=0.08)
-    r = simulate(model, position=0.8, speed=20.0, swing=swing, output_step=2e-6)
+    r = simulate(standard_model, position=0.8, speed=20.0, swing=swing, output_step=2e-6)
     total = r.energies()["total"]
     assert total[-1] == pytest.approx(total[0], rel=1e-7)
-    fe = model.fe
+    fe = standard_model.fe
     qd0 = fe.rigid_motion(-swing.velocity, -swing.omega)
     start = 0.5 * 0.057 * 20.0**2 + 0.5 * qd0 @ (fe.M @ qd0)
     assert total[0] == pytest.approx(start, rel=1e-12)
 
 
-def test_cg_motion_is_the_rigid_part_of_the_swing_field(model):
+def test_cg_motion_is_the_rigid_part_of_the_swing_field(standard_model):
     # The frame coordinates' sign (along the ball's travel) of the swing's rigid field, about
     # the centre of gravity, as racket_velocity reads it from the frame's momentum.
     from fem_racket.impact.swing import racket_velocity
 
     swing = Swing.from_speed(25.0, L, pivot=0.08)
-    qd = model.fe.rigid_motion(-swing.velocity, -swing.omega)
-    v, omega = swing.cg_motion(model.props.cg)
-    assert racket_velocity(model, qd) == pytest.approx((v, omega), rel=1e-12)
+    qd = standard_model.fe.rigid_motion(-swing.velocity, -swing.omega)
+    v, omega = swing.cg_motion(standard_model.props.cg)
+    assert racket_velocity(standard_model, qd) == pytest.approx((v, omega), rel=1e-12)

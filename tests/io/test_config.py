@@ -29,8 +29,8 @@ def test_example_runs_as_is_and_is_the_default_run(capsys, example):
     from_file = simulate_json(capsys, "--config", example)
     default = simulate_json(capsys)
     assert from_file == default
-    code, out, _ = run(capsys, "modes", "--config", example, "--json")
-    assert code == 0 and json.loads(out)["frequencies_hz"][0] == pytest.approx(122.14, abs=0.01)
+    modes = run_json(capsys, "modes", "--config", example)
+    assert modes["frequencies_hz"][0] == pytest.approx(122.14, abs=0.01)
 
 
 def test_example_lists_the_tables_of_commands_that_read_run_files(capsys):

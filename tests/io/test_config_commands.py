@@ -4,20 +4,14 @@ computes, for a run file with every table the command reads."""
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 import pytest
+from clirun import run_json
 from runfile_helpers import REL, py_json, same
 
 from fem_racket import load_config
 from fem_racket.cli import build_parser, main
 from fem_racket.io.config_studies import MAP_DEFAULTS, REFINE_DEFAULTS
-
-
-def _cli_json(capsys, *argv):
-    assert main([*argv, "--json"]) == 0
-    return json.loads(capsys.readouterr().out)
 
 
 @pytest.mark.parametrize(
@@ -57,7 +51,7 @@ def test_map_equals_the_command(cwd, capsys):
         "power_fraction = 0.9\n"
     )
     maps = load_config(cwd / "run.toml").map()
-    cli = _cli_json(capsys, "map", "--config", "run.toml", "--no-files")
+    cli = run_json(capsys, "map", "--config", "run.toml", "--no-files")
     same(py_json({"rackets": [m.summary() for m in maps]}), cli)
 
 
@@ -68,7 +62,7 @@ def test_spin_map_equals_the_command(cwd, capsys):
     text += 'offsets = "-0.04,0.04"\n'
     (cwd / "run.toml").write_text(text)
     (m,) = load_config(cwd / "run.toml").map()
-    cli = _cli_json(capsys, "map", "--config", "run.toml", "--no-files")
+    cli = run_json(capsys, "map", "--config", "run.toml", "--no-files")
     same(py_json(m.summary()), cli)
 
 
@@ -78,7 +72,7 @@ def test_refine_equals_the_command(cwd, capsys):
     text += '[refine]\nelements = [5, 10]\nfamily = "uniform"\npositions = [0.6, 0.8]\ncount = 3\n'
     (cwd / "run.toml").write_text(text)
     studies = load_config(cwd / "run.toml").refine()
-    cli = _cli_json(capsys, "refine", "--config", "run.toml", "--no-files")
+    cli = run_json(capsys, "refine", "--config", "run.toml", "--no-files")
     py = studies["uniform"].to_dict()
     for key in ("cor", "contact_time_s", "frequencies_hz", "elements"):
         np.testing.assert_allclose(np.asarray(py[key], float), cli[key], rtol=REL, err_msg=key)
@@ -90,7 +84,7 @@ def test_simulate_oblique_table_equals_the_command(cwd, capsys):
     text += "ball_radius_m = 0.034\ncompliance_ratio = 1.2\n"
     (cwd / "run.toml").write_text(text)
     r = load_config(cwd / "run.toml").simulate()
-    cli = _cli_json(capsys, "simulate", "--config", "run.toml")
+    cli = run_json(capsys, "simulate", "--config", "run.toml")
     py = py_json(r.summary())
     for key in (
         "spin_out_rpm",
@@ -182,11 +176,11 @@ def test_simulate_oblique_table_with_a_hand_equals_the_command(cwd, capsys):
         "[impact]\nposition_x_over_l = 0.7\nspeed_m_s = 25.0\nracket_speed_m_s = 8.0\n"
     )
     (cwd / "run.toml").write_text(text)
-    cli = _cli_json(capsys, "simulate", "--config", "run.toml")
+    cli = run_json(capsys, "simulate", "--config", "run.toml")
     result = load_config(cwd / "run.toml").simulate()
     assert result.held and py_json(result.summary()) == cli
     assert cli["shock_window_s"] == 0.02 and cli["hand"]["grip"] == "firm"
-    options = _cli_json(capsys, "simulate", "--grip", "firm", "--shock-window", "0.02",
+    options = run_json(capsys, "simulate", "--grip", "firm", "--shock-window", "0.02",
                         "--angle", "30", "--spin", "1500", "--elements", "10", "--position",
                         "0.7", "--speed", "25", "--racket-speed", "8")  # fmt: skip
     assert options == cli
@@ -211,5 +205,5 @@ def test_clamped_oblique_table_refuses_alike_what_a_clamped_head_cannot_take(cwd
     (cwd / "run.toml").write_text(
         "[ball]\nmass_kg = 0.056\n[oblique]\nangle_deg = 30\nclamped = true\n"
     )
-    cli = _cli_json(capsys, "simulate", "--config", "run.toml")
+    cli = run_json(capsys, "simulate", "--config", "run.toml")
     assert py_json(load_config(cwd / "run.toml").simulate().summary()) == cli

@@ -1,11 +1,11 @@
 """Mesh files: round trip, validation of bad meshes, graded meshes, --mesh on the CLI."""
 
-import json
 from pathlib import Path
 
 import meshio
 import numpy as np
 import pytest
+from clirun import run_json
 from script_loader import load_script
 
 from fem_racket import FrameMesh, FrameModel, frame_mesh, read_mesh, standard_frame, write_mesh
@@ -201,14 +201,11 @@ def test_example_meshes_are_plausible_rackets():
 
 def test_standard_mesh_file_is_the_default_racket(capsys):
     # The same 20 cells as the default run: same COR to round-off of the point coordinates.
-    assert main(["simulate", "--json", "--mesh", str(MESHES / "standard_racket.vtu")]) == 0
-    a = json.loads(capsys.readouterr()[0])
-    assert main(["simulate", "--json"]) == 0
-    b = json.loads(capsys.readouterr()[0])
+    a = run_json(capsys, "simulate", "--mesh", MESHES / "standard_racket.vtu")
+    b = run_json(capsys, "simulate")
     assert a["cor"] == pytest.approx(b["cor"], rel=1e-12)
     assert a["elements"] == 20
-    assert main(["modes", "--json", "--mesh", str(MESHES / "tapered_racket.vtu")]) == 0
-    m = json.loads(capsys.readouterr()[0])
+    m = run_json(capsys, "modes", "--mesh", MESHES / "tapered_racket.vtu")
     exact = free_free_frequencies(read_mesh(MESHES / "tapered_racket.vtu"), 2)
     assert m["frequencies_hz"][:2] == pytest.approx(exact, rel=1e-4)  # 24 cells: FE err < 1e-4
 

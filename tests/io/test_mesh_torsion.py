@@ -1,7 +1,5 @@
 """Mesh files with torsion cell data GJ and rhoIp, and ``modes`` reporting torsion."""
 
-import json
-
 import meshio
 import numpy as np
 import pytest
@@ -10,7 +8,7 @@ from fem_racket.frame.mesh import frame_mesh
 from fem_racket.frame.segments import standard_frame
 from fem_racket.io.mesh_files import read_mesh, write_mesh
 from fem_racket.validation import InputError
-from tests.clirun import run
+from tests.clirun import run, run_json
 
 
 def test_round_trip_keeps_torsion(tmp_path):
@@ -32,9 +30,7 @@ def test_one_torsion_array_alone_is_refused(tmp_path):
 
 
 def test_modes_reports_twist_weight_and_torsion_frequencies(capsys):
-    code, out, _ = run(capsys, "modes", "--json", "--count", "2")
-    data = json.loads(out)
-    assert code == 0
+    data = run_json(capsys, "modes", "--count", "2")
     # the standard racket's assumed torsion (fem_racket.frame.segments.STANDARD_TORSION)
     assert data["twist_weight_kg_cm2"] == pytest.approx(17.4896, rel=1e-12)
     assert data["polar_moment_kg_m2"] == pytest.approx(17.4896e-4, rel=1e-12)

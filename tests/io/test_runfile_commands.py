@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from clirun import refused_alike, run, run_json
+from clirun import file_refused_alike, run, run_json
 from runfile_helpers import py_json, same
 
 from fem_racket import load_config
@@ -271,9 +271,7 @@ def test_the_methods_play_with_the_commands_defaults():
         ("reproduce", "[reproduce]\njson = true\n", "reproduce.json is not a known key"),
     ],
 )
-def test_refused_alike(tmp_path, monkeypatch, capsys, command, table, words):
-    monkeypatch.chdir(tmp_path)
-    Path("run.toml").write_text(table)
+def test_refused_alike(cwd, capsys, command, table, words):
     operands = {"closest": [CSV], "compare": ["standard", "rigid"]}.get(command, [])
     methods = {
         "closest": lambda c: c.closest(CSV),
@@ -282,5 +280,4 @@ def test_refused_alike(tmp_path, monkeypatch, capsys, command, table, words):
     }
     method = methods.get(command, lambda c: getattr(c, command)())
     argv = (command, *operands, "--config", "run.toml")
-    refused_alike(capsys, argv, lambda: method(load_config("run.toml")), words)
-    assert sorted(p.name for p in Path().iterdir()) == ["run.toml"]
+    file_refused_alike(capsys, table, argv, method, words)

@@ -4,7 +4,7 @@ command (``--config``) and by its Python method, naming the core key that sets i
 ``[map] speed`` and ``[map] angle`` while ``fem-racket map --config f`` refused them."""
 
 import pytest
-from clirun import refused_alike
+from clirun import file_refused_alike
 
 from fem_racket.io.config import load_config
 from fem_racket.validation import InputError
@@ -23,14 +23,11 @@ CASES = [
 
 
 @pytest.mark.parametrize(("command", "line", "message"), CASES)
-def test_command_and_method_refuse_a_core_key_alike(tmp_path, capsys, command, line, message):
-    path = tmp_path / "run.toml"
-    path.write_text(f"[{command}]\n{line}\n")
-
-    def method():
-        return getattr(load_config(path), command)()
-
-    refused_alike(capsys, (command, "--config", str(path)), method, message)
+def test_command_and_method_refuse_a_core_key_alike(cwd, capsys, command, line, message):
+    argv = (command, "--config", "run.toml")
+    file_refused_alike(
+        capsys, f"[{command}]\n{line}\n", argv, lambda c: getattr(c, command)(), message
+    )
 
 
 def test_a_command_own_core_key_stays_allowed(tmp_path):

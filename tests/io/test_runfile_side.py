@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+from clirun import run_json
 
 from fem_racket import load_config
 from fem_racket.cli import main
@@ -44,8 +45,7 @@ def test_spin_map_side_keys_from_a_run_file_equal_the_command(cwd, capsys):
     )
     (m,) = load_config(cwd / "run.toml").map()
     assert m.incidence.side_angle == 10.0 and m.incidence.side_spin == 500.0
-    assert main(["map", "--config", "run.toml", "--json"]) == 0
-    cli = json.loads(capsys.readouterr().out)
+    cli = run_json(capsys, "map", "--config", "run.toml")
     py = json.loads(json.dumps(m.summary()))
     for key in ("side_spin_out_rpm_max", "side_angle_out_deg_min", "racket_yaw_rate_rad_s_max"):
         assert py[key] == cli[key], key

@@ -10,7 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from clirun import refused_alike, run_json
+from clirun import file_refused_alike, run_json
 from runfile_helpers import py_json, same
 
 from fem_racket import load_config
@@ -83,13 +83,9 @@ def test_map_maps_the_mesh_files_of_its_table(cwd, capsys):
     ],
 )
 def test_refused_alike(cwd, capsys, command, keys, words):
-    Path("run.toml").write_text((MAP if command == "map" else REFINE) + keys)
-
-    def method():
-        return getattr(load_config("run.toml"), command)()
-
-    refused_alike(capsys, (command, "--config", "run.toml", "--json"), method, words)
-    assert sorted(p.name for p in Path().iterdir()) == ["run.toml"]
+    text = (MAP if command == "map" else REFINE) + keys
+    argv = (command, "--config", "run.toml", "--json")
+    file_refused_alike(capsys, text, argv, lambda c: getattr(c, command)(), words)
 
 
 def test_refine_takes_the_format_of_its_plot(cwd, capsys):

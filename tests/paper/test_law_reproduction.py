@@ -11,8 +11,6 @@ import pytest
 
 from fem_racket.contact.linear import LinearContact
 from fem_racket.contact.presets import get_law
-from fem_racket.frame.model import FrameModel
-from fem_racket.frame.segments import standard_frame
 from fem_racket.impact.simulate import simulate
 from fem_racket.paper.claims import AGREES, DIFFERS
 from fem_racket.paper.claims.conclusions import conclusion_claims, contact_time_claim
@@ -27,24 +25,17 @@ from fem_racket.validation import InputError
 M_B = 0.057  # kg, the project's default ball mass (DESIGN section 1)
 
 
-@pytest.fixture(scope="module")
-def model():
-    m = FrameModel.build(standard_frame(), 20)
-    m.modes()
-    return m
-
-
 # -- the impacts ------------------------------------------------------------------------------
 
 
-def test_linear_law_through_the_batch_equals_the_exact_path(model):
+def test_linear_law_through_the_batch_equals_the_exact_path(standard_model):
     # The general integrator with the paper's spring-dashpot is the exact solution to ~1e-6 in
     # COR (issue 15 check: 1e-7 with its own settings; the batch keeps the default truncation).
     positions = np.array([0.6, 0.75, 0.9])
     law = LinearContact.for_speed(20.0, ball_mass=M_B)
-    cor, tc = free_impacts(law, model, positions, 20.0, M_B)
+    cor, tc = free_impacts(law, standard_model, positions, 20.0, M_B)
     for p, e, t in zip(positions, cor, tc, strict=True):
-        exact = simulate(model, position=p, speed=20.0, output_step=None, tolerance=None)
+        exact = simulate(standard_model, position=p, speed=20.0, output_step=None, tolerance=None)
         assert e == pytest.approx(exact.cor, abs=1e-5)
         assert t == pytest.approx(exact.contact_time, rel=1e-4)
 

@@ -32,6 +32,16 @@ def test_linear_law_cannot_meet_the_contact_times():
     assert np.ptp(times) == pytest.approx(0.0, abs=1e-9)
 
 
+def test_linear_fit_states_zeta_for_the_calibrations_ball():
+    # zeta = C_CB / (2 sqrt(K_CB m_B)) (the paper's eq 3 damping): the fitted law's zeta refers to
+    # the ball it was fitted with, so --kcb/--zeta with that --ball-mass give back its C_CB
+    fit = calibrate("linear", ball_mass=0.058)
+    law = fit.law
+    assert law.ball_mass == 0.058
+    assert law.zeta == pytest.approx(law.damping() / (2.0 * np.sqrt(law.stiffness * 0.058)), 1e-14)
+    assert calibrate("linear").law.ball_mass == 0.057
+
+
 @pytest.mark.slow
 def test_hunt_crossley_cannot_hold_the_cor():
     # with one alpha the COR falls with speed (1 - e ~ 2 alpha v0 / 3, Hunt & Crossley 1975), so

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import pytest
-from clirun import run
+from clirun import run, run_json
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import Catalogue, catalogue
@@ -61,11 +60,7 @@ def test_nearest_first_each_with_its_least_lead():
 def test_example_csv_reads_and_ranks(capsys):
     rackets = read_rackets(EXAMPLE)
     assert len(rackets) == 7 and rackets[0].specs.f1 == pytest.approx(122.1)
-    code, text, err = run(
-        capsys, "closest", EXAMPLE, "--swing-weight", "330", "--balance", "0.32", "--json"
-    )
-    assert code == 0, err
-    data = json.loads(text)
+    data = run_json(capsys, "closest", EXAMPLE, "--swing-weight", "330", "--balance", "0.32")
     assert len(data["rackets"]) == 3
     assert [r["distance"] for r in data["rackets"]] == sorted(
         r["distance"] for r in data["rackets"]

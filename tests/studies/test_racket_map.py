@@ -5,52 +5,54 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from fem_racket.frame.model import FrameModel
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing
 from fem_racket.studies.racket_map import racket_map
 from fem_racket.validation import InputError
 
 
-@pytest.fixture(scope="module")
-def model() -> FrameModel:
-    return FrameModel.build(None, 20)
-
-
-def test_curves_are_simulate_at_each_point(model):
+def test_curves_are_simulate_at_each_point(standard_model):
     x = np.array([0.55, 0.7, 0.85, 0.95])
-    m = racket_map(model, speed=25.0, racket_speed=20.0, pivot=-0.4, positions=x)
+    m = racket_map(standard_model, speed=25.0, racket_speed=20.0, pivot=-0.4, positions=x)
     swing = Swing.from_speed(20.0, 0.68, pivot=-0.4)
     for k, p in enumerate(x):
-        r = simulate(model, position=p, speed=25.0, swing=swing, output_step=None)
+        r = simulate(standard_model, position=p, speed=25.0, swing=swing, output_step=None)
         assert m.apparent_cor[k] == pytest.approx(r.apparent_cor, rel=1e-9)
         assert m.ball_speed_out[k] == pytest.approx(r.ball_speed_out, rel=1e-9)
         assert m.racket_speed[k] == pytest.approx(r.racket_speed_at_impact, rel=1e-12)
 
 
-def test_the_refined_maximum_beats_every_grid_point(model):
+def test_the_refined_maximum_beats_every_grid_point(standard_model):
     x = np.linspace(0.5, 1.0, 11)
-    m = racket_map(model, racket_speed=15.0, pivot=0.1, positions=x)
+    m = racket_map(standard_model, racket_speed=15.0, pivot=0.1, positions=x)
     best = racket_map(
-        model, racket_speed=15.0, pivot=0.1, positions=[0.5, m.spots.max_ball_speed, 1.0]
+        standard_model, racket_speed=15.0, pivot=0.1, positions=[0.5, m.spots.max_ball_speed, 1.0]
     )
     assert best.ball_speed_out[1] >= m.ball_speed_out.max()
     lo, hi = m.spots.power_region
     assert lo < m.spots.max_ball_speed < hi
 
 
-def test_the_linear_law_by_name_is_the_paper_s_map(model):
+def test_the_linear_law_by_name_is_the_paper_s_map(standard_model):
     kwargs = dict(speed=25.0, racket_speed=20.0, pivot=0.1, positions=np.linspace(0.5, 1.0, 11))
-    m, named = racket_map(model, **kwargs), racket_map(model, **kwargs, law="linear")
+    m, named = (
+        racket_map(standard_model, **kwargs),
+        racket_map(standard_model, **kwargs, law="linear"),
+    )
     np.testing.assert_array_equal(m.apparent_cor, named.apparent_cor)
     np.testing.assert_array_equal(m.ball_speed_out, named.ball_speed_out)
     assert m.spots == named.spots and named.summary()["contact"] == {"law": "linear"}
 
 
-def test_a_point_under_a_nonlinear_law_is_one_simulate(model):
+def test_a_point_under_a_nonlinear_law_is_one_simulate(standard_model):
     x = np.array([0.55, 0.7, 0.85])
     m = racket_map(
-        model, speed=20.0, racket_speed=25.0, pivot=0.1, positions=x, law="kawazoe-1997-nonlinear"
+        standard_model,
+        speed=20.0,
+        racket_speed=25.0,
+        pivot=0.1,
+        positions=x,
+        law="kawazoe-1997-nonlinear",
     )
     assert m.summary(curves=False)["contact"]["law"] == "hysteretic"
     swing = Swing.from_speed(25.0, 0.68, pivot=0.1)
@@ -58,7 +60,7 @@ def test_a_point_under_a_nonlinear_law_is_one_simulate(model):
         # CVODE from the swing's velocity field; the map strikes the stationary racket at the
         # closing speed (exact for any law: studies/law_cases.py)
         r = simulate(
-            model,
+            standard_model,
             position=p,
             speed=20.0,
             swing=swing,
@@ -86,9 +88,9 @@ def test_a_point_under_a_nonlinear_law_is_one_simulate(model):
         ({"racket_speed": -50.0}, "must close"),
     ],
 )
-def test_bad_input(model, kwargs, message):
+def test_bad_input(standard_model, kwargs, message):
     with pytest.raises(InputError, match=message):
-        racket_map(model, **kwargs)
+        racket_map(standard_model, **kwargs)
 
 
 @pytest.mark.parametrize(
@@ -106,20 +108,20 @@ def test_bad_input(model, kwargs, message):
         ({"positions": np.linspace(0.5, 0.9, 100_001)}, "positions = 100001 values"),
     ],
 )
-def test_what_the_map_would_drop_is_refused(model, kwargs, message):
+def test_what_the_map_would_drop_is_refused(standard_model, kwargs, message):
     with pytest.raises(InputError, match=message):
-        racket_map(model, **kwargs)
+        racket_map(standard_model, **kwargs)
 
 
-def test_apparent_cor_along_refuses_modes_under_a_law(model):
+def test_apparent_cor_along_refuses_modes_under_a_law(standard_model):
     from fem_racket.contact.presets import get_law
     from fem_racket.studies.racket_map import apparent_cor_along
 
     law = get_law("hunt-crossley")
     with pytest.raises(InputError, match="modes = 10 is not allowed with solver 'general'"):
-        apparent_cor_along(model, [0.7], [20.0], law=law, modes=10)
-    e = apparent_cor_along(model, [0.7], [20.0], law=law)  # the law's own end condition
-    assert e[0] == racket_map(model, law=law, positions=[0.6, 0.7, 0.8]).apparent_cor[1]
+        apparent_cor_along(standard_model, [0.7], [20.0], law=law, modes=10)
+    e = apparent_cor_along(standard_model, [0.7], [20.0], law=law)  # the law's own end condition
+    assert e[0] == racket_map(standard_model, law=law, positions=[0.6, 0.7, 0.8]).apparent_cor[1]
 
 
 def test_elements_mesh_a_frame_and_a_mesh_of_that_count_passes():

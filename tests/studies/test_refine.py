@@ -1,11 +1,11 @@
 """Mesh-refinement study: observed order, COR convergence, CLI and script."""
 
-import json
 import time
 from pathlib import Path
 
 import numpy as np
 import pytest
+from clirun import run_json
 from script_loader import load_script
 
 from fem_racket import FrameModel, frame_mesh, simulate, standard_frame
@@ -100,10 +100,9 @@ def test_bad_study_input():
 
 
 def test_cli_refine_json_contract(tmp_path, capsys):
-    argv = ["refine", "--json", "--elements", "5", "10", "20", "--positions", "0.75"]
+    argv = ["refine", "--elements", "5", "10", "20", "--positions", "0.75"]
     argv += ["--csv", str(tmp_path / "r.csv"), "--plot", str(tmp_path / "r.png")]
-    assert main(argv) == 0
-    data = json.loads(capsys.readouterr()[0])
+    data = run_json(capsys, *argv)
     for key in (
         "elements",
         "frequencies_hz",

@@ -5,18 +5,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from fem_racket.frame.model import FrameModel
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing
 from fem_racket.studies.sweep import sweep
 
 
-@pytest.fixture(scope="module")
-def model() -> FrameModel:
-    return FrameModel.build(None, 20)
-
-
-def test_swing_dimensions_match_simulate(model):
+def test_swing_dimensions_match_simulate(standard_model):
     ds = sweep(
         position=[0.6, 0.85],
         racket_speed=[-5.0, 0.0, 25.0],
@@ -30,7 +24,7 @@ def test_swing_dimensions_match_simulate(model):
         for v in ds.racket_speed.values:
             for piv in ds.pivot.values:
                 swing = Swing.from_speed(v, 0.68, pivot=piv)
-                r = simulate(model, position=p, speed=20.0, swing=swing, output_step=None)
+                r = simulate(standard_model, position=p, speed=20.0, swing=swing, output_step=None)
                 case = ds.sel(position=p, racket_speed=v, pivot=piv)
                 # The same engine (COR tolerance 1e-6) per case; the sweep solves at unit speed
                 # and rescales.
@@ -43,7 +37,7 @@ def test_swing_dimensions_match_simulate(model):
     assert ds.attrs["reference_x_over_l"] == 0.75
 
 
-def test_fixed_swing_and_cvode_agree(model):
+def test_fixed_swing_and_cvode_agree(standard_model):
     kw = dict(position=0.8, speed=[15.0, 30.0], racket_speed=20.0, pivot=0.1, modes=20)
     exact = sweep(backend="serial", tolerance=None, **kw)
     cvode = sweep(backend="serial", solver="cvode", **kw)
@@ -51,9 +45,9 @@ def test_fixed_swing_and_cvode_agree(model):
     assert exact.attrs["racket_speed_m_s"] == 20.0 and exact.attrs["pivot_m"] == 0.1
 
 
-def test_a_racket_at_rest_is_the_old_sweep(model):
+def test_a_racket_at_rest_is_the_old_sweep(standard_model):
     ds = sweep(position=[0.6, 0.8], speed=30.0, backend="serial")
     assert np.all(ds.racket_speed_at_impact_m_s == 0.0)
-    r = simulate(model, position=0.8, speed=30.0, output_step=None)
+    r = simulate(standard_model, position=0.8, speed=30.0, output_step=None)
     assert float(ds.cor.sel(position=0.8)) == pytest.approx(r.cor, rel=1e-12)
     assert "pivot_m" not in ds.attrs  # no pivot: the racket would translate

@@ -15,12 +15,7 @@ from fem_racket.studies.sweetspots import centre_of_percussion, power_region
 from fem_racket.validation import InputError
 
 
-@pytest.fixture(scope="module")
-def model() -> FrameModel:
-    return FrameModel.build(standard_frame(), 20)
-
-
-def test_centre_of_percussion_from_the_papers_mass_distribution(model):
+def test_centre_of_percussion_from_the_papers_mass_distribution(standard_model):
     # x_COP = x_CG + I_CG / (M (x_CG - p)) with M, x_CG, I_CG summed by hand from section 2.2
     # (0.204 m at 0.696 kg/m, 0.476 m at 0.458 kg/m), pivot at the hand 0.10 m from the butt.
     m1, m2 = 0.696 * 0.204, 0.458 * 0.476
@@ -29,16 +24,16 @@ def test_centre_of_percussion_from_the_papers_mass_distribution(model):
     i_cg = m1 * 0.204**2 / 12 + m1 * (0.102 - cg) ** 2 + m2 * 0.476**2 / 12 + m2 * (0.442 - cg) ** 2
     p = 0.10
     want = cg + i_cg / (M * (cg - p))
-    assert centre_of_percussion(model.props, p) == pytest.approx(want, rel=1e-12)
-    m = racket_map(model, pivot=p, positions=np.linspace(0.5, 1.0, 5))
+    assert centre_of_percussion(standard_model.props, p) == pytest.approx(want, rel=1e-12)
+    m = racket_map(standard_model, pivot=p, positions=np.linspace(0.5, 1.0, 5))
     assert m.spots.cop == pytest.approx(want / 0.68, rel=1e-12)
     with pytest.raises(InputError, match="centre of gravity"):
-        centre_of_percussion(model.props, model.props.cg)
+        centre_of_percussion(standard_model.props, standard_model.props.cg)
 
 
-def test_nodes_match_the_paper(model):
+def test_nodes_match_the_paper(standard_model):
     # The paper: mode-1 nodes 0.200 L and 0.769 L, mode-2 0.125, 0.484, 0.864 L (3 digits).
-    m = racket_map(model, positions=np.linspace(0.5, 1.0, 5))
+    m = racket_map(standard_model, positions=np.linspace(0.5, 1.0, 5))
     assert m.spots.mode1_nodes == pytest.approx([0.200, 0.769], abs=2e-3)
     assert m.spots.mode2_nodes == pytest.approx([0.125, 0.484, 0.864], abs=2e-3)
     assert m.spots.node == m.spots.mode1_nodes[-1]
@@ -63,12 +58,12 @@ def test_rigid_racket_apparent_cor_closed_form():
     np.testing.assert_allclose(got, want, rtol=0, atol=1e-6)
 
 
-def test_max_ball_speed_moves_toward_the_tip_as_angular_speed_rises(model):
+def test_max_ball_speed_moves_toward_the_tip_as_angular_speed_rises(standard_model):
     # DESIGN section 8 (Brody, Cross & Lindsey 2002): the v_out maximum moves tipward with the
     # racket's angular speed (hand pivot 0.10 m, ball 20 m/s).
     x = np.linspace(0.5, 1.0, 51)
     spots = [
-        racket_map(model, speed=20.0, racket_speed=v, pivot=0.10, positions=x).spots
+        racket_map(standard_model, speed=20.0, racket_speed=v, pivot=0.10, positions=x).spots
         for v in (5.0, 15.0, 30.0)
     ]
     where = [s.max_ball_speed for s in spots]

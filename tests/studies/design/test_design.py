@@ -3,6 +3,7 @@ Sobol indices of a known function, resumable history."""
 
 import numpy as np
 import pytest
+from planted import CENTRE, OTHER, planted
 
 from fem_racket.studies.design.build import design_problem
 from fem_racket.studies.design.evaluate import Evaluator
@@ -16,23 +17,6 @@ from fem_racket.studies.design.swing import SwingModel
 from fem_racket.studies.design.variables import Constraint
 from fem_racket.studies.design.zone import gaussian_zone, uniform_zone
 from fem_racket.validation import InputError
-
-#: The planted optimum in the unit box (ei_1, ei_2, rhoa_1, rhoa_2).
-CENTRE = np.array([0.3, 0.6, 0.45, 0.7])
-OTHER = np.array([0.7, 0.2, 0.65, 0.3])
-
-
-def planted(problem, designs):
-    """Synthetic outputs: "mass" = sum of unit coordinates, cor = 1 - |u - CENTRE|^2,
-    ball_speed = -|u - OTHER|^2; the other quantities 0."""
-    u = problem.to_unit(designs)
-    out = np.zeros((len(u), len(output_names(problem))))
-    names = output_names(problem)
-    out[:, names.index("mass_kg")] = u.sum(axis=1)
-    for name, c, base in (("cor", CENTRE, 1.0), ("ball_speed", OTHER, 0.0)):
-        if name in names:
-            out[:, names.index(name)] = base - ((u - c) ** 2).sum(axis=1)
-    return out
 
 
 def small(variables=None, **kwargs):

@@ -11,28 +11,15 @@ import time
 
 import numpy as np
 import pytest
+from planted import planted
 
 from fem_racket.cli import main
 from fem_racket.studies.design.evaluate import Evaluator
-from fem_racket.studies.design.objectives import output_names
 from fem_racket.studies.design.options import VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.variables import Constraint
 from fem_racket.validation import InputError
-
-CENTRE = np.array([0.3, 0.6, 0.45, 0.7])
-
-
-def planted(problem, designs):
-    """Synthetic outputs (tests/studies/design/test_design.py): "mass" = sum of unit coordinates,
-    cor = 1 - |u - CENTRE|^2, the other quantities 0."""
-    u = problem.to_unit(designs)
-    names = output_names(problem)
-    out = np.zeros((len(u), len(names)))
-    out[:, names.index("mass_kg")] = u.sum(axis=1)
-    out[:, names.index("cor")] = 1.0 - ((u - CENTRE) ** 2).sum(axis=1)
-    return out
 
 
 def problem(**kwargs):

@@ -5,6 +5,7 @@ import json
 from pathlib import Path
 
 import pytest
+from clirun import run_json
 from script_loader import load_script
 
 from fem_racket.cli import main
@@ -60,10 +61,8 @@ def test_optimize_json_and_files(tmp_path, capsys):
         "3",
         "--out",
         str(out),
-        "--json",
     ]
-    assert main(argv) == 0
-    data = json.loads(capsys.readouterr().out)
+    data = run_json(capsys, *argv)
     assert data["objective"] >= data["start_objective"]
     assert set(data["variables"]) == {"ei_1", "ei_2", "rhoa_1", "rhoa_2"}
     names = {p.name for p in out.iterdir()}
@@ -101,9 +100,8 @@ def test_run_file_design_table(tmp_path, capsys):
 
 def test_sensitivity_json(tmp_path, capsys):
     png = tmp_path / "s.png"
-    argv = ["sensitivity", *SMALL, "--vary", "ei", "--designs", "16", "--out", str(png), "--json"]
-    assert main(argv) == 0
-    data = json.loads(capsys.readouterr().out)
+    argv = ["sensitivity", *SMALL, "--vary", "ei", "--designs", "16", "--out", str(png)]
+    data = run_json(capsys, *argv)
     assert set(data["indices"]) == {"ei_1", "ei_2"}
     assert png.is_file() and json.loads(Path(str(png) + ".json").read_text())["provenance"]
 

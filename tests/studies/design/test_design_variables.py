@@ -245,7 +245,7 @@ def test_new_variables_round_trip_through_a_run_file(case, tmp_path, capsys):
     written to result.json describes it, and the optimum loads back with --mesh."""
     import json
 
-    from fem_racket.cli import main
+    from tests.clirun import run_json
 
     table, names, described = RUN_FILES[case]
     out = tmp_path / "o"
@@ -254,8 +254,7 @@ def test_new_variables_round_trip_through_a_run_file(case, tmp_path, capsys):
         table + "boundaries = [0.3]\nspeeds = [30]\nzone_points = 2\nmaxiter = 1\n"
         f"backend = 'serial'\nout = '{out}'\n"
     )
-    assert main(["optimize", "--config", str(run), "--json"]) == 0
-    data = json.loads(capsys.readouterr().out)
+    data = run_json(capsys, "optimize", "--config", run)
     assert list(data["variables"]) == names
     result = json.loads((out / "result.json").read_text())
     problem = result["problem"]
@@ -265,8 +264,7 @@ def test_new_variables_round_trip_through_a_run_file(case, tmp_path, capsys):
             assert value.items() <= problem[key].items()
         else:
             assert problem[key] == value
-    assert main(["modes", "--mesh", str(out / "optimum.vtu"), "--json"]) == 0
-    modes = json.loads(capsys.readouterr().out)
+    modes = run_json(capsys, "modes", "--mesh", out / "optimum.vtu")
     assert modes["mass_kg"] == pytest.approx(result["outputs"]["mass_kg"], rel=1e-12)
 
 
