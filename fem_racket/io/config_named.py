@@ -11,15 +11,16 @@ the key's argparse dest (spaces for underscores: ``string tension`` is ``string_
 
 from __future__ import annotations
 
+import functools
 import math
 import re
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from typing import Any
 
 from fem_racket.validation import InputError
 
-__all__ = ["ALIASES", "file_keys", "keys_named", "named_by_key"]
+__all__ = ["ALIASES", "core_keys_named", "file_keys", "keys_named", "named_by_key"]
 
 #: Parameter names of the library's checks that are not their key's dest (spaces as
 #: underscores) -> the dest.
@@ -85,13 +86,28 @@ def named_by_key(
 
 
 @contextmanager
-def keys_named(cfg: Any) -> Iterator[None]:
-    """Re-raise a library refusal of a value of the run file ``cfg`` naming its key (see
-    :func:`named_by_key`)."""
+def keys_named(cfg: Any, table: str | None = None) -> Iterator[None]:
+    """Re-raise a library refusal of a value of the core tables of the run file ``cfg`` naming
+    its key (see :func:`named_by_key`); not of one the command's ``table`` sets (a sweep's grid
+    is refused as the grid, as on the command line)."""
     try:
         yield
     except InputError as exc:
-        named = named_by_key(exc, file_keys(cfg.values), cfg.defaults(), cfg.source)
+        own = {k.replace("-", "_") for k in cfg.table(table)} if table else set()
+        keys = {d: k for d, k in file_keys(cfg.values).items() if d not in own}
+        named = named_by_key(exc, keys, cfg.defaults(), cfg.source)
         if named is exc:
             raise
         raise named from None
+
+
+def core_keys_named(method: Callable[..., Any], table: str) -> Callable[..., Any]:
+    """``method`` of a RunConfig (the command whose table is ``table``) under
+    :func:`keys_named`."""
+
+    @functools.wraps(method)
+    def named(self: Any, *args: Any, **kwargs: Any) -> Any:
+        with keys_named(self, table):
+            return method(self, *args, **kwargs)
+
+    return named

@@ -207,9 +207,10 @@ def run_file(cfg: RunConfig, *, histories: bool | None = None, table: str = "sim
     result : ImpactResult, HeldRun with a ``[hand]`` table, StrungImpact with ``[strings]``, or
         ObliqueResult with ``[oblique]``
 
-    A library refusal of a value of the file names its key (:mod:`.config_named`).
+    A library refusal of a value of the file's core tables names its key
+    (:mod:`.config_named`).
     """
-    with keys_named(cfg):
+    with keys_named(cfg, table):
         return _run(cfg, histories, table)
 
 

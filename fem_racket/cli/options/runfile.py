@@ -300,12 +300,17 @@ def given_options(args: argparse.Namespace) -> set[str]:
 
 
 def named_by_file(exc: InputError, args: argparse.Namespace, *, source: bool = True) -> InputError:
-    """A library refusal of a value the run file set (not the command line), naming its dotted
-    key and (``source``) the file (:func:`fem_racket.io.config_named.named_by_key`); else
-    ``exc``."""
-    keys = getattr(args, "file_options", None)
+    """A library refusal of a value the run file's core tables set (not the command line),
+    naming its dotted key and (``source``) the file
+    (:func:`fem_racket.io.config_named.named_by_key`); else ``exc``."""
+    from fem_racket.io.config_keys import CORE_KEYS
+    from fem_racket.io.config_named import named_by_key
+
+    # a core table's key (a command table's value is refused as the command's option)
+    keys = {
+        d: k for d, k in getattr(args, "file_options", {}).items() if k.split(".")[0] in CORE_KEYS
+    }
     if not keys:
         return exc
-    from fem_racket.io.config_named import named_by_key
 
     return named_by_key(exc, keys, vars(args), args.config if source else None)
