@@ -34,7 +34,8 @@ from collections.abc import Sequence
 from typing import Any
 
 from fem_racket.cli.commands import COMMANDS
-from fem_racket.cli.options.runfile import apply_config, named_by_file
+from fem_racket.cli.options.runfile import apply_config
+from fem_racket.cli.options.runfile_named import named_by_file
 from fem_racket.cli.parser import OneLineErrorParser
 from fem_racket.cli.signals import (
     GuardedStdout,

@@ -15,12 +15,8 @@ from typing import Any
 
 from fem_racket.cli.common import add_output_options
 from fem_racket.cli.options.output import overwrite_of
-from fem_racket.cli.options.runfile import (
-    apply_config,
-    config_values,
-    file_options,
-    named_by_file,
-)
+from fem_racket.cli.options.runfile import apply_config, config_values, file_options
+from fem_racket.cli.options.runfile_named import named_by_file
 from fem_racket.validation import ChecksPassed, InputError, checks_only, show
 
 

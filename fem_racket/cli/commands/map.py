@@ -46,7 +46,8 @@ from fem_racket.cli.options.faces import (
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.cli.options.runfile import given_options, where_set
+from fem_racket.cli.options.runfile import given_options
+from fem_racket.cli.options.runfile_named import where_set
 from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.impact.constants import DEFAULT_TOLERANCE, SEPARATION_EVENTS
 from fem_racket.io.constants import PRESETS

@@ -98,7 +98,7 @@ def frame_from_args(
 
 
 def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame | FrameMesh:
-    from fem_racket.cli.options.runfile import where_set
+    from fem_racket.cli.options.runfile_named import where_set
     from fem_racket.frame.plausible import check_implement
     from fem_racket.frame.segments import Frame, standard_frame
     from fem_racket.io.mesh_files import read_mesh

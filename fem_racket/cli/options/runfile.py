@@ -38,9 +38,7 @@ __all__ = [
     "config_values",
     "file_options",
     "given_options",
-    "named_by_file",
     "option_name",
-    "where_set",
 ]
 
 #: Options that never come from a run file.
@@ -280,15 +278,6 @@ def option_name(args: argparse.Namespace, dest: str) -> str:
     return f"--{dest.replace('_', '-')} {value}"
 
 
-def where_set(args: argparse.Namespace, dest: str) -> str:
-    """Where option ``dest`` was set, for a message: ``--mesh`` on the command line, or
-    ``frame.mesh (run.toml)`` from a run file."""
-    key = getattr(args, "file_options", {}).get(dest)
-    if key is None:
-        return f"--{dest.replace('_', '-')}"
-    return f"{key} ({args.config})"
-
-
 def given_options(args: argparse.Namespace) -> set[str]:
     """The options the user set: on the command line, or in the run file to other than the
     default (argparse dests; a file's key at its default changes nothing).
@@ -297,20 +286,3 @@ def given_options(args: argparse.Namespace) -> set[str]:
     where the same option on the command line would be (never silently ignored).
     """
     return set(getattr(args, "explicit_options", ())) | set(getattr(args, "file_options", ()))
-
-
-def named_by_file(exc: InputError, args: argparse.Namespace, *, source: bool = True) -> InputError:
-    """A library refusal of a value the run file's core tables set (not the command line),
-    naming its dotted key and (``source``) the file
-    (:func:`fem_racket.io.config_named.named_by_key`); else ``exc``."""
-    from fem_racket.io.config_keys import CORE_KEYS
-    from fem_racket.io.config_named import named_by_key
-
-    # a core table's key (a command table's value is refused as the command's option)
-    keys = {
-        d: k for d, k in getattr(args, "file_options", {}).items() if k.split(".")[0] in CORE_KEYS
-    }
-    if not keys:
-        return exc
-
-    return named_by_key(exc, keys, vars(args), args.config if source else None)
