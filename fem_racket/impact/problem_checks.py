@@ -21,8 +21,10 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import CENTRE, ClampedHead
 from fem_racket.impact.incidence import check_incidence, check_kcb_normal
 from fem_racket.impact.offaxis import check_offsets
-from fem_racket.impact.swing import check_kcb_closing
+from fem_racket.impact.swing import check_kcb_closing, check_swing_speeds
 from fem_racket.strings.bed import StringBed
+from fem_racket.strings.point import DEFAULT_REFINE
+from fem_racket.strings.reach import on_bed, strike_interval
 from fem_racket.validation import InputError, show
 
 __all__ = [
@@ -144,18 +146,44 @@ def check_structure(problem: Any) -> None:
 
 
 def bed_coordinates(
-    bed: StringBed, position: float, lateral_m: float, frame_length_m: float, centre: float
+    bed: StringBed,
+    position: float,
+    lateral_m: float,
+    frame_length_m: float,
+    centre: float,
+    refine: int = DEFAULT_REFINE,
 ) -> np.ndarray:
-    """The impact point on the bed [m, from the head's centre], checked to lie on the head."""
-    x, y = (position - centre) * frame_length_m, lateral_m
-    ax, ay = 0.5 * bed.head_length_m, 0.5 * bed.head_width_m
-    if (x / ax) ** 2 + (y / ay) ** 2 >= 1.0:
-        lo, hi = centre - ax / frame_length_m, centre + ax / frame_length_m
-        raise InputError(
-            f"position = {show(position)} x/L, lateral {show(lateral_m)} m is not allowed with "
-            f"the string bed: must lie on the head ({lo:.3f} to {hi:.3f} x/L on the axis)"
-        )
-    return np.array([x, y])
+    """The impact point on the bed [m, from the head's centre], checked to lie on the head: the
+    ball's contact disk on the bed meshed with ``refine`` refinements
+    (:mod:`fem_racket.strings.reach`), else refused naming the offsets reachable at
+    ``position`` and the positions reachable on the axis."""
+    point = np.array([(position - centre) * frame_length_m, lateral_m])
+    if on_bed(bed, point, refine):
+        return point
+    x_lo, x_hi = strike_interval(bed, np.zeros(2), np.array([1.0, 0.0]), refine)
+    axis = _inward(centre + x_lo / frame_length_m, centre + x_hi / frame_length_m, 3)
+    axis = f"positions {axis} x/L on the axis"
+    where = f"position = {show(position)} x/L"
+    disk = f"the ball's contact disk (radius {bed.load_radius_m:g} m) must lie on the head"
+    y_lo, y_hi = strike_interval(bed, np.array([point[0], 0.0]), np.array([0.0, 1.0]), refine)
+    if y_lo > y_hi:
+        named = where if lateral_m == 0.0 else f"{where}, offset = {show(lateral_m)} m"
+        raise InputError(f"{named} is not allowed with the string bed: {disk}: {axis}")
+    reach = (
+        f"|offset| <= {np.floor(min(-y_lo, y_hi) * 1e4) / 1e4:.4f} m"
+        if abs(y_lo + y_hi) <= 1e-12
+        else f"offset {_inward(y_lo, y_hi, 4)} m"
+    )
+    raise InputError(
+        f"offset = {show(lateral_m)} m at {where} is not allowed with the string bed: {disk}: "
+        f"{reach} at that position ({axis})"
+    )
+
+
+def _inward(lo: float, hi: float, digits: int) -> str:
+    """``"lo to hi"`` rounded inward to ``digits`` decimals (every printed value allowed)."""
+    s = 10.0**digits
+    return f"{np.ceil(lo * s) / s:.{digits}f} to {np.floor(hi * s) / s:.{digits}f}"
 
 
 def check_strings(problem: Any) -> None:
@@ -184,14 +212,16 @@ def check_strings(problem: Any) -> None:
 
 
 def check_swing(problem: Any) -> None:
-    """A swing (if any) not combined with a frame velocity; its ball and strings close at the
-    impact point and, where K_CB follows from that closing speed (the paper's law without kcb,
-    no string bed), within the speeds the paper gives K_CB for: refused naming the racket's
-    speed at the impact point."""
+    """A swing (if any) not combined with a frame velocity, moving no point of the racket faster
+    than the racket speed's bound; its ball and strings close at the impact point and, where
+    K_CB follows from that closing speed (the paper's law without kcb, no string bed), within
+    the speeds the paper gives K_CB for: refused naming the racket's speed at the impact
+    point."""
     if problem.swing is None:
         return
     if problem.frame_velocity is not None:
         raise InputError("swing and frame_velocity cannot be combined: give one")
+    check_swing_speeds(problem.swing, problem.model.mesh.length)
     closing = problem.closing_speed  # ball and strings must close, under any law
     if problem.law is None and problem.kcb is None and problem.strings is None:
         name = "racket speed at the impact point"

@@ -33,6 +33,7 @@ import numpy as np
 from fem_racket.contact.constants import KCB_SPEED_RANGE
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.constants import DEFAULT_REFERENCE, MAX_RACKET_SPEED
+from fem_racket.impact.swing_reach import allowed_pivots
 from fem_racket.impact.system import CoupledSystem, Trajectory
 from fem_racket.validation import InputError, check_finite, check_range, show
 
@@ -44,6 +45,7 @@ __all__ = [
     "add_swing",
     "ball_speed_out",
     "check_kcb_closing",
+    "check_swing_speeds",
     "closing_speed",
     "racket_velocity",
     "rebound_summary",
@@ -92,7 +94,8 @@ class Swing:
             Reference point, x/L in [0, 1].
         pivot : float, optional
             Pivot from the butt [m] (negative: beyond the butt, e.g. a shoulder); the racket
-            translates when None.
+            translates when None. Refused where it would move the butt or the tip faster than
+            :data:`MAX_RACKET_SPEED` (:func:`pivot_reach`).
         """
         v = check_finite("racket_speed", racket_speed, "m/s")
         ref = check_range("reference", reference, 0.0, 1.0, unit="x/L") * length
@@ -105,7 +108,19 @@ class Swing:
                 f"({ref:g} m), whose speed it would fix at zero"
             )
         omega = v / (ref - p)
-        return cls(-omega * p, omega)
+        swing = cls(-omega * p, omega)
+        if swing.fastest(length) > MAX_RACKET_SPEED:
+            raise InputError(
+                f"pivot = {show(pivot)} m is not allowed with racket_speed = {show(v)} m/s: the "
+                f"racket would turn at {abs(omega):.4g} rad/s, its butt or tip faster than "
+                f"{MAX_RACKET_SPEED:g} m/s: {allowed_pivots(v, ref, length)}"
+            )
+        return swing
+
+    def fastest(self, length: float) -> float:
+        """The largest |speed| [m/s] of a point of a racket of ``length`` [m]: its butt's or
+        its tip's (the speed is linear along it)."""
+        return float(np.max(np.abs(self.speed_at(np.array([0.0, length])))))
 
     def speed_at(self, x: float | np.ndarray) -> float | np.ndarray:
         """Speed of the point(s) ``x`` [m] towards the ball [m/s]."""
@@ -131,6 +146,17 @@ class Swing:
             "racket_angular_speed_rad_s": self.omega,
             "pivot_m": self.pivot,
         }
+
+
+def check_swing_speeds(swing: Swing, length: float) -> None:
+    """Refuse a swing moving a point of a racket of ``length`` [m] (its butt or its tip)
+    faster than :data:`MAX_RACKET_SPEED` (one line, naming the swing)."""
+    if swing.fastest(length) > MAX_RACKET_SPEED:
+        butt, tip = swing.speed_at(0.0), swing.speed_at(length)
+        raise InputError(
+            f"swing = {swing!r} is not allowed: its butt moves at {butt:.4g} m/s and its tip "
+            f"at {tip:.4g} m/s, faster than the {MAX_RACKET_SPEED:g} m/s a racket may move"
+        )
 
 
 def closing_speed(speed: float, racket_speed: float) -> float:

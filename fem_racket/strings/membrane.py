@@ -13,9 +13,10 @@ sweep reuses them.
 
 The ball loads the bed over a disk of radius a centred on the impact point: its "deflection at the
 point" is the disk's mean, ``w_bar = q^T u``, q the load vector of a unit uniform pressure on the
-disk divided by the disk's area (polar Gauss quadrature of the disk; quadrature points outside the
-head dropped). The static stiffness k = 1/(q^T K^-1 q) is what a stringbed-stiffness meter reports
-for that loading; its closed form on a circular membrane (uniform tension N, radius R) is
+disk divided by the disk's area (polar Gauss quadrature of the disk). The disk must lie on the
+meshed bed, a polygon inscribed in the ellipse (:mod:`fem_racket.strings.reach` says where).
+The static stiffness k = 1/(q^T K^-1 q) is what a stringbed-stiffness meter reports for that
+loading; its closed form on a circular membrane (uniform tension N, radius R) is
 ``k = 2 pi N / (ln(R/a) + 1/4)`` (mean over the disk of the exact axisymmetric solution; a rigid
 disk of radius a gives the textbook ``2 pi N / ln(R/a)``).
 """
@@ -28,6 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from fem_racket.lanczos import start_vector
+from fem_racket.validation import InputError
 
 __all__ = ["BedMesh", "bed_mesh", "disk_load", "unit_modes"]
 
@@ -56,6 +58,10 @@ class BedMesh:
         The same forms between the interior and the edge DOFs (the edge's static transmission).
     edge : ndarray
         The edge DOFs.
+    edge_lines : (ndarray, ndarray)
+        The meshed bed's straight edges as half-planes ``n . p >= h``: inward unit normals n,
+        shape (k, 2), and levels h, shape (k,) [m] (the bed is the convex polygon of the
+        ellipse's boundary nodes).
     """
 
     basis: object
@@ -67,16 +73,18 @@ class BedMesh:
     Kxx_ib: object
     Kyy_ib: object
     edge: np.ndarray
+    edge_lines: tuple[np.ndarray, np.ndarray]
 
     @property
     def edge_points(self) -> np.ndarray:
         """(x, y) of the edge DOFs from the head's centre [m], shape (n_edge, 2)."""
         return np.asarray(self.basis.doflocs[:, self.edge]).T
 
-    def contains(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-        """True where (x, y) [m] lies inside the ellipse (1e-12 inside its edge)."""
-        ax, ay = self.semi_axes
-        return (np.asarray(x) / ax) ** 2 + (np.asarray(y) / ay) ** 2 < 1.0 - 1e-12
+    def clearance(self, points: np.ndarray) -> np.ndarray:
+        """Distance [m] of each point (x, y) [m], shape (p, 2), inside the meshed bed's edge
+        (negative outside it)."""
+        n, h = self.edge_lines
+        return np.min(np.atleast_2d(points) @ n.T - h, axis=1)
 
 
 @lru_cache(maxsize=16)
@@ -107,12 +115,32 @@ def bed_mesh(length_m: float, width_m: float, refine: int) -> BedMesh:
     full = [asm(f, basis) for f in (xx, yy, mass)]
     sub = [m[interior][:, interior].tocsr() for m in full]
     ib = [m[interior][:, edge].tocsr() for m in full[:2]]
-    return BedMesh(basis, *sub, interior, (ax, ay), *ib, edge)
+    return BedMesh(basis, *sub, interior, (ax, ay), *ib, edge, _edge_lines(mesh))
+
+
+def _edge_lines(mesh) -> tuple[np.ndarray, np.ndarray]:
+    """Inward unit normals and levels of the mesh's boundary facets (the origin is inside)."""
+    a, b = (mesh.p[:, i].T for i in mesh.facets[:, mesh.boundary_facets()])
+    t = b - a
+    n = np.column_stack([-t[:, 1], t[:, 0]]) / np.hypot(t[:, 0], t[:, 1])[:, None]
+    h = np.einsum("ij,ij->i", n, a)
+    n[h > 0.0] *= -1.0  # inward: the centre (0, 0) has n . 0 = 0 >= h
+    return n, -np.abs(h)
 
 
 def disk_load(mesh: BedMesh, points: np.ndarray, radius: float, full: bool = False) -> np.ndarray:
     """Load vectors q (interior DOFs, or every DOF when ``full``; one column per point) of a
-    unit mean over the disk of ``radius`` [m] around each point (x, y) [m]."""
+    unit mean over the disk of ``radius`` [m] around each point (x, y) [m]; a disk off the
+    meshed bed is refused (:func:`fem_racket.strings.reach.on_bed` first, to name the
+    reachable points)."""
+    pts = np.atleast_2d(points)
+    off = mesh.clearance(pts) < radius
+    if np.any(off):
+        x0, y0 = pts[np.argmax(off)]
+        raise InputError(
+            f"impact point = ({x0:.6g}, {y0:.6g}) m is not allowed: the contact disk of radius "
+            f"{radius:g} m must lie on the string bed"
+        )
     r, wr = np.polynomial.legendre.leggauss(RADIAL_POINTS)
     r = 0.5 * radius * (r + 1.0)
     wr = 0.5 * radius * wr * r  # r dr
@@ -121,13 +149,9 @@ def disk_load(mesh: BedMesh, points: np.ndarray, radius: float, full: bool = Fal
     dy = np.outer(r, np.sin(th)).ravel()
     w = np.repeat(wr, ANGLES) * (2.0 * np.pi / ANGLES)
     cols = []
-    for x0, y0 in np.atleast_2d(points):
-        x, y = x0 + dx, y0 + dy
-        inside = mesh.contains(x, y)
-        if not np.any(inside):
-            raise ValueError(f"impact point ({x0}, {y0}) m lies outside the head")
-        P = mesh.basis.probes(np.array([x[inside], y[inside]]))
-        q = np.asarray(P.T @ w[inside]).ravel() / w[inside].sum()
+    for x0, y0 in pts:
+        P = mesh.basis.probes(np.array([x0 + dx, y0 + dy]))
+        q = np.asarray(P.T @ w).ravel() / w.sum()
         cols.append(q if full else q[mesh.interior])
     return np.column_stack(cols)
 

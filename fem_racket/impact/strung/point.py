@@ -187,7 +187,7 @@ def strung_point(
     Every frame mode of ``model`` is used (rigid modes first).
     """
     L = model.mesh.length
-    point = bed_coordinates(bed, position, lateral_m, L, bed.head_centre)
+    point = bed_coordinates(bed, position, lateral_m, L, bed.head_centre, refine)
     frame = frame_at_point(model, bed, position, point, refine)
     where = (bed, float(position), float(lateral_m), refine)
     return _assemble(frame, *_bed_modes(bed, point, bed_modes, refine), where)
@@ -203,6 +203,6 @@ def clamped_point(
     """The bed on a clamped frame (its edge fixed) at ``point`` [m from the head's centre]: the
     structure of the paper's clamped-frame targets (eqs 1-4), rigid values 0."""
     p = np.asarray(point, dtype=float)
-    bed_coordinates(bed, bed.head_centre + p[0], p[1], 1.0, bed.head_centre)  # on it
+    bed_coordinates(bed, bed.head_centre + p[0], p[1], 1.0, bed.head_centre, refine)  # on it
     where = (bed, None, float(p[1]), refine)
     return _assemble(None, *_bed_modes(bed, p, bed_modes, refine), where)

@@ -32,10 +32,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.impact.tangential.normal import NormalHistory, _piece_root
+from fem_racket.validation import InputError, show
 
 __all__ = ["Phase", "TangentialContact", "TangentialSolution", "march"]
 
-#: Phases a march may take before it is declared stuck (Zeno chattering).
+#: Phases a march may take before it is declared stuck (Zeno chattering; refused in one line).
 MAX_PHASES = 200
 
 
@@ -200,9 +201,31 @@ def _first_crossing(fun, t0: float, end: float, grid: np.ndarray) -> float | Non
     if hit.size == 0:
         return None
     i = int(hit[0])
-    if i == 0:
-        return float(pts[0])
+    if i == 0:  # at once: a phase of zero length, unless it holds just after its start
+        held = _held_from(fun, t0, float(pts[1]) if pts.size > 1 else end)
+        return float(pts[0]) if held is None else _first_crossing(fun, held, end, grid)
     return _piece_root(fun, float(pts[i - 1]), float(pts[i]))
+
+
+#: Where a phase whose switching function is >= 0 just after its start is probed again, as
+#: fractions of the way to the next search point.
+PROBES = (1e-6, 1e-4, 1e-2, 1e-1)
+
+
+def _held_from(fun, t0: float, nxt: float) -> float | None:
+    """The first probe after ``t0`` (toward ``nxt``) where ``fun`` < 0, or None.
+
+    A phase starting at a grazing switch (a slide stopping just as the spring reaches mu F: the
+    grip's margin then starts at zero with zero slope, mu (F'' + omega_t^2 F) its curvature) is
+    decided at t0 + 1e-12 ``end`` by round-off (1e-18 N of a 1e-3 N force): the march then
+    switched back and forth at one instant (phases of 5e-15 s, or 200 of them: chattering). A
+    probe far enough from t0 for the curvature to show decides it; a phase that ends at once
+    shows it at every probe (its margin falls at first order)."""
+    for fraction in PROBES:
+        t = t0 + fraction * (nxt - t0)
+        if float(fun(np.array([t]))[0]) < 0.0:
+            return t
+    return None
 
 
 def _start(c: TangentialContact, normal: NormalHistory, s0: float) -> Phase:
@@ -245,7 +268,11 @@ def march(c: TangentialContact, normal: NormalHistory, slip: float) -> Tangentia
         if t1 is None or t1 >= normal.end:
             break
         if len(phases) >= MAX_PHASES:
-            raise RuntimeError(f"tangential contact switched {MAX_PHASES} times: chattering")
+            raise InputError(
+                f"friction = {show(c.friction)} is not allowed for this impact: the tangential "
+                f"contact switched {MAX_PHASES} times by {t1 * 1e3:.4g} ms without settling "
+                "(grip and slide undecided: chattering)"
+            )
         tt = np.array([t1])
         if p.kind == "grip":
             s1, f1 = (v[0] for v in _grip(c, p, tt))

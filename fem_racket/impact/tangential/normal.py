@@ -24,6 +24,8 @@ from typing import Protocol
 
 import numpy as np
 
+from fem_racket.impact.tangential.release import first_release
+
 __all__ = [
     "ClampedNormal",
     "NormalHistory",
@@ -98,6 +100,9 @@ class SampledNormal:
                 end = t[i] if force(t[i]) > 0.0 else _piece_root(force, t[i - 1], t[i])
                 grid = np.append(t[:i], end)
                 break
+        release = first_release(spline, float(grid[-1]))
+        if release is not None:  # P' dips through zero between two pressing samples
+            grid = np.append(grid[grid < release], release)
         object.__setattr__(self, "end", float(grid[-1]))
         object.__setattr__(self, "grid", grid)
 
