@@ -21,7 +21,7 @@ REFUSED = [
     ("impact", "speed_m_s", 1000.0, "m/s is not allowed: must lie in [1, 100]"),
     ("oblique", "spin_rpm", 1e6, "rpm is not allowed: must lie in [-50000, 50000]"),
     ("strings", "tension_n", 1e6, "N is not allowed: must lie in [1, 2000]"),
-    ("impact", "racket_speed_m_s", 1000.0, "m/s is not allowed"),
+    ("impact", "racket_speed_m_s", 1000.0, "m/s is not allowed: must lie in [-100, 100]"),
     ("oblique", "ball_radius_m", 5.0, "m is not allowed: must lie in (0, 0.1]"),
     ("frame", "ei1_n_m2", 1e9, "N m^2 is not allowed: must lie in [6.96e-07, 5.20455e+08]"),
     ("oblique", "face_angle_deg", 190.0, "deg is not allowed: must lie in (0, 180)"),
