@@ -35,6 +35,7 @@ from typing import Any
 
 from fem_racket.cli.commands import COMMANDS
 from fem_racket.cli.options.runfile import apply_config
+from fem_racket.cli.options.runfile_named import named_by_file
 from fem_racket.cli.parser import OneLineErrorParser
 from fem_racket.cli.signals import (
     GuardedStdout,
@@ -189,7 +190,7 @@ def _run(argv: Sequence[str] | None) -> int:
         args = apply_config(parser, argv, args)
         return int(args.func(args))
     except InputError as exc:
-        _say(exc, f"{prog}: error: {exc}")
+        _say(exc, f"{prog}: error: {named_by_file(exc, args)}")
         return EXIT_INPUT
     except OSError as exc:
         _say(exc, f"{prog}: error: {_describe(exc)}")

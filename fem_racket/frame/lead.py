@@ -27,12 +27,37 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.specs import SWING_AXIS
 from fem_racket.validation import InputError, show
 
-__all__ = ["MAX_LEAD_G", "Lead", "add_lead", "lead_moments", "parse_lead"]
+__all__ = ["MAX_LEAD_G", "Lead", "add_lead", "check_grams", "lead_moments", "parse_lead"]
 
 #: Most grams one ``LOCATION:GRAMS`` may add: players add a few grams up to about 30 g of lead,
 #: and a racket weighs about 300 g; 1000 g (an order of magnitude beyond the most lead, three
 #: rackets) bounds a strip that still leaves a racket with some lead on it.
 MAX_LEAD_G = 1000.0
+
+
+def check_grams(name: str, grams: float, shown: str | None = None) -> float:
+    """The grams of one lead, refused unless in [0, :data:`MAX_LEAD_G`] (the one home of the
+    bounds ``--add-mass`` and a run file's ``[[frame.lead]]`` share).
+
+    Parameters
+    ----------
+    name : str
+        What the error names (``add-mass``, ``frame.lead[0].mass_g``).
+    grams : float
+        Mass [g].
+    shown : str, optional
+        The value as the error shows it (``show(grams)`` when None).
+    """
+    g = float(grams)
+    shown = show(grams) if shown is None else shown
+    if not np.isfinite(g) or g < 0.0:
+        raise InputError(f"{name} = {shown} is not allowed: must be >= 0 g")
+    if g > MAX_LEAD_G:
+        raise InputError(
+            f"{name} = {shown} is not allowed: must be at most {MAX_LEAD_G:g} g (lead tape "
+            "adds a few grams; more than a racket weighs is no longer a racket)"
+        )
+    return g
 
 
 @dataclass(frozen=True)
@@ -74,12 +99,7 @@ def parse_lead(text: str) -> Lead:
             f"add-mass = {show(text)} is not allowed: must be LOCATION:GRAMS with GRAMS >= 0, "
             "e.g. 3/9:10 or 0.32:5"
         )
-    if g > MAX_LEAD_G:
-        raise InputError(
-            f"add-mass = {show(text)} is not allowed: GRAMS must be at most {MAX_LEAD_G:g} g "
-            "(lead tape adds a few grams; more than a racket weighs is no longer a racket)"
-        )
-    return Lead(place, g * 1e-3)
+    return Lead(place, check_grams("add-mass", g, show(text)) * 1e-3)
 
 
 def _strip(place: Place, length: float, width: float) -> tuple[float, float]:

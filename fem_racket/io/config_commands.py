@@ -215,3 +215,18 @@ class CommandMethods:
         from fem_racket.io.config_reports import calibrate_file
 
         return calibrate_file(self, out)
+
+
+def _name_core_keys() -> None:
+    """Every method's refusal of a core table's value names its key, as the command's
+    (:func:`fem_racket.io.config_named.core_keys_named`)."""
+    from fem_racket.io.config_keys import COMMAND_TABLES
+    from fem_racket.io.config_named import core_keys_named
+
+    for command, table in COMMAND_TABLES.items():
+        name = command.replace("-", "_")
+        if name in vars(CommandMethods):
+            setattr(CommandMethods, name, core_keys_named(vars(CommandMethods)[name], table))
+
+
+_name_core_keys()

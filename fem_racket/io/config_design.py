@@ -102,7 +102,8 @@ def _problem(cfg: RunConfig, command: str, table: str, rest: dict[str, Any]) -> 
     refuse_unused(cfg, command, {*names, *frame, *LAW_PARAMETERS})
     goals = ("objective", "power_fraction", "stiffness_cost", "grip", "shock_window")
     own = {k.replace("-", "_"): v for k, v in cfg.table(table).items()}
-    allowed = [k for k in names if k not in _CORE] + [*goals, *CONSTRAINTS, *rest, *_RUN]
+    bounds = CONSTRAINTS if command == "optimize" else {}  # sensitivity constrains nothing
+    allowed = [k for k in names if k not in _CORE] + [*goals, *bounds, *rest, *_RUN]
     reject_unknown(own, allowed, table)
     own = {k: _TYPED[k](f"{table}.{k}", v) if k in _TYPED else v for k, v in own.items()}
     d = cfg.defaults()

@@ -80,16 +80,14 @@ class RunFile:
         return self.source.parent / p
 
     def simulate_kwargs(self) -> dict[str, Any]:
-        """Keywords of :func:`fem_racket.simulate` the core tables set (no frame, swing, hand)."""
-        d = self.defaults()
-        names = ("position", "speed", "ball_mass", "kcb", "zeta", "elements", "solver")
-        names += ("separation", "basis", "modes", "rtol", "atol", "t_max")
-        out = {n: d[n] for n in names if n in d}
-        if "law" in d:
-            from fem_racket.contact.presets import get_law, law_parameters
+        """Keywords of :func:`fem_racket.simulate` for the file's impact: the impact point and
+        offset, the ball, the contact law, the solver and its options. A frame other than
+        ``frame.elements``, a swing, a hand, a string bed, an oblique ball or ``[simulate]
+        output_step`` (not at its default) is refused, in one line naming the keys: those need
+        :meth:`RunConfig.simulate`. See :func:`fem_racket.io.config_kwargs.simulate_keywords`."""
+        from fem_racket.io.config_kwargs import simulate_keywords
 
-            out["law"] = get_law(d["law"], **law_parameters(d))
-        return out
+        return simulate_keywords(self)
 
     def frame(self) -> Any:
         """The frame the file describes: a Frame, a FrameMesh read from ``frame.mesh``, or None

@@ -6,7 +6,7 @@ from __future__ import annotations
 import difflib
 from typing import Any
 
-from fem_racket.frame.lead import Lead
+from fem_racket.frame.lead import Lead, check_grams
 from fem_racket.io.config_arrays import table_array
 from fem_racket.validation import InputError, check_finite, show
 
@@ -36,8 +36,6 @@ def lead_tables(name: str, value: Any) -> list[Lead]:
         grams = item["mass_g"]
         if isinstance(grams, bool) or not isinstance(grams, (int, float)):
             raise InputError(f"{where}.mass_g = {show(grams)} is not allowed: must be a number [g]")
-        grams = check_finite(f"{where}.mass_g", grams, "g")
-        if grams < 0.0:
-            raise InputError(f"{where}.mass_g = {show(grams)} is not allowed: must be >= 0 g")
+        grams = check_grams(f"{where}.mass_g", check_finite(f"{where}.mass_g", grams, "g"))
         out.append(Lead(str(place), grams * 1e-3))
     return out

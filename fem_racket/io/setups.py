@@ -20,6 +20,7 @@ from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.segments import standard_frame
 from fem_racket.io.config_file import load_run_file
 from fem_racket.io.config_keys import PRESETS
+from fem_racket.io.config_kwargs import keyword_law
 from fem_racket.io.mesh_files import read_mesh
 from fem_racket.studies.compare import Setup
 from fem_racket.validation import InputError
@@ -44,7 +45,7 @@ def _from_run_file(path: Path, elements: int) -> tuple[Setup, list[Lead]]:
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
     kwargs = {k: d[k] for k in ("ball_mass", "kcb", "zeta") if k in d}
-    law = cfg.simulate_kwargs().get("law")
+    law = keyword_law(d)
     return (
         Setup(path.stem, frame, law=law, elements=d.get("elements", elements), **kwargs),
         list(d.get("add_mass", [])),

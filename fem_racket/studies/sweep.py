@@ -274,7 +274,13 @@ def run_sweep(
         )
         result = SweepResult(spec, values, backend, run.parameters)
         if result.failed:
-            log.warning("%d of %d cases failed: NaN in the dataset", result.failed, spec.size)
+            first = int(np.flatnonzero(np.isnan(result.values[:, 0]))[0])
+            log.warning(
+                "%d of %d cases failed: NaN in the dataset, first: case %d",
+                result.failed,
+                spec.size,
+                first,
+            )
         if output is not None:
             _write(result, Path(output), overwrite)
             ckpt.remove()

@@ -651,7 +651,7 @@ TOML_CASES = [
     T(
         "toml-no-separation",
         toml("[solver]\nt_max_s = 1e-4\n"),
-        ("t_max = 0.0001 s", "raise t_max"),
+        ("solver.t_max_s = 0.0001 s", "raise t_max"),
     ),
     T(
         "toml-command-table-unknown-key",

@@ -143,7 +143,10 @@ def test_run_file_reference_without_a_swing_is_refused_on_map(capsys, tmp_path):
     path = tmp_path / "run.toml"
     path.write_text("[impact]\nreference_x_over_l = 0.6\n")
     code, _, err = run(capsys, *MAP, "--config", path)
-    assert code == 2 and "reference = 0.6 x/L is not allowed without a swing" in err
+    assert (
+        code == 2
+        and "run.toml: impact.reference_x_over_l = 0.6 x/L is not allowed without a swing" in err
+    )
 
 
 def test_what_acts_is_still_accepted(capsys, tmp_path, monkeypatch):

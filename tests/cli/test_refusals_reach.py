@@ -102,6 +102,7 @@ def test_pivot_by_the_reference_refused_alike(capsys, cwd):
     assert "must be <= 0.4636 m or >= 0.5667 m" in line  # the butt: r/(1 + u), r/(1 - u), u = 0.1
     assert words in one_error(capsys, "sweep", *argv)
     Path("run.toml").write_text("[impact]\nracket_speed_m_s = 10.0\npivot_m = 0.5099999\n")
+    words = "run.toml: impact." + words.replace("pivot", "pivot_m", 1)  # the file's key named
     assert words in one_error(capsys, "simulate", "--config", "run.toml")
     with pytest.raises(InputError, match=re.escape(words)):
         fr.load_config("run.toml").simulate()

@@ -88,20 +88,20 @@ CASES = [
         "grip-beyond-the-frame",
         "simulate",
         "[hand]\ngrip_end_m = 5.0\n",
-        ("grip_end = 5.0 m", "beyond the frame (0.68 m)"),
+        ("hand.grip_end_m = 5.0 m", "beyond the frame (0.68 m)"),
     ),
     # a pivot at the reference point
     Case(
         "pivot-at-the-reference",
         "simulate",
         "[impact]\npivot_m = 0.51\nracket_speed_m_s = 10\n",
-        ("pivot = 0.51 m", "reference point"),
+        ("impact.pivot_m = 0.51 m", "reference point"),
     ),
     Case(
         "map-pivot-at-the-reference",
         "map",
         "[impact]\npivot_m = 0.51\nracket_speed_m_s = 10\n",
-        ("pivot = 0.51 m", "reference point"),
+        ("impact.pivot_m = 0.51 m", "reference point"),
     ),
     # design keys out of range
     Case(

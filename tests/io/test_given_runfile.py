@@ -39,8 +39,14 @@ def test_an_output_step_without_output_is_refused_naming_the_key(capsys, cwd):
 def test_customise_checks_the_swing_before_its_work(capsys, cwd):
     path = _file("[impact]\nreference_x_over_l = 0.7\n[customise]\nswing_weight = 330\n")
     line = one_error(capsys, "config", "--check", path)
-    assert "fem-racket customise would refuse it: reference = 0.7 x/L is not allowed" in line
-    with pytest.raises(InputError, match="^reference = 0.7 x/L is not allowed without a swing"):
+    assert (
+        "fem-racket customise would refuse it: impact.reference_x_over_l = 0.7 x/L is not allowed"
+        in line
+    )
+    with pytest.raises(
+        InputError,
+        match=f"^{path}: impact.reference_x_over_l = 0.7 x/L is not allowed without a swing",
+    ):
         load_config(path).customise("c.vtu")
     assert not Path("c.vtu").exists()
 

@@ -16,6 +16,7 @@ from typing import Any
 from fem_racket.cli.common import add_output_options
 from fem_racket.cli.options.output import overwrite_of
 from fem_racket.cli.options.runfile import apply_config, config_values, file_options
+from fem_racket.cli.options.runfile_named import named_by_file
 from fem_racket.validation import ChecksPassed, InputError, checks_only, show
 
 
@@ -129,6 +130,7 @@ def _dry_run(name: str, path: str, operands: tuple[str, ...] = ()) -> None:
         except ChecksPassed:
             return
         except InputError as exc:
+            exc = named_by_file(exc, args, source=False)
             raise InputError(f"{path}: fem-racket {name} would refuse it: {exc}") from None
     raise RuntimeError(f"fem-racket {name} has no end of checks (validation.work_begins)")
 

@@ -47,6 +47,7 @@ from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options
+from fem_racket.cli.options.runfile_named import where_set
 from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.impact.constants import DEFAULT_TOLERANCE, SEPARATION_EVENTS
 from fem_racket.io.constants import PRESETS
@@ -202,8 +203,8 @@ def run(args: argparse.Namespace) -> int:
         )
     if args.mesh and not args.preset and "elements" in given_options(args):
         raise InputError(
-            "--elements is not allowed with --mesh: the mesh file gives the cells and their EI "
-            "and rhoA (--elements meshes a --preset)"
+            f"{where_set(args, 'elements')} is not allowed with {where_set(args, 'mesh')}: the "
+            "mesh file gives the cells and their EI and rhoA (--elements meshes a --preset)"
         )
     check_map_size(args)
     files = [t.path for t in map_targets(outs)]

@@ -12,7 +12,7 @@ from fem_racket.extras import require
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The ``sensitivity`` command's options."""
-    add_design_options(p)
+    add_design_options(p, constraints=False)  # the sample constrains nothing
     s = p.add_argument_group("sensitivity")
     s.add_argument(
         "--output",

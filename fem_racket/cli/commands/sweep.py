@@ -247,5 +247,14 @@ def run(args: argparse.Namespace) -> int:
         return 0
     shape = " x ".join(f"{d} {k}" for d, k in summary["dims"].items()) or "one case"
     print(f"wrote {args.out}: {n} impacts ({shape}) in {wall:.2f} s ({n / wall:.0f} impacts/s)")
-    print(f"COR from {summary['cor_min']:.6f} to {summary['cor_max']:.6f}")
+    print(_cor_range(summary, result.failed))
     return 0
+
+
+def _cor_range(summary: dict[str, Any], failed: int) -> str:
+    """The COR range of the cases that succeeded, and how many failed (NaN) if any."""
+    n = summary["impacts"]
+    if failed == n:
+        return f"COR: every case failed ({failed} of {n})"
+    line = f"COR from {summary['cor_min']:.6f} to {summary['cor_max']:.6f}"
+    return line + (f" ({failed} of {n} cases failed)" if failed else "")

@@ -25,12 +25,13 @@ if TYPE_CHECKING:
 __all__ = ["add_design_options", "add_study_tail", "problem_from_args"]
 
 
-def add_design_options(parser: argparse.ArgumentParser) -> None:
-    """The design problem's options (starting racket: the frame options)."""
+def add_design_options(parser: argparse.ArgumentParser, *, constraints: bool = True) -> None:
+    """The design problem's options (starting racket: the frame options); ``constraints``:
+    the bounds on mass, balance, swing weight and f1 (optimize's, not sensitivity's)."""
     add_frame_options(parser)
     add_variable_options(parser)
     add_zone_options(parser)
-    add_objective_options(parser)
+    add_objective_options(parser, constraints=constraints)
     add_law_options(parser)
 
 

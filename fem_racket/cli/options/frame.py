@@ -98,6 +98,7 @@ def frame_from_args(
 
 
 def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame | FrameMesh:
+    from fem_racket.cli.options.runfile_named import where_set
     from fem_racket.frame.plausible import check_implement
     from fem_racket.frame.segments import Frame, standard_frame
     from fem_racket.io.mesh_files import read_mesh
@@ -111,8 +112,8 @@ def _bare_frame(args: argparse.Namespace, exclusive: tuple[str, ...]) -> Frame |
     clash = sorted(set(getattr(args, "explicit_options", ())) & set(exclusive))
     if clash:
         raise InputError(
-            f"--{clash[0]} is not allowed with --mesh: the mesh file gives the cells and their "
-            "EI and rhoA"
+            f"--{clash[0]} is not allowed with {where_set(args, 'mesh')}: the mesh file gives "
+            "the cells and their EI and rhoA"
         )
     return read_mesh(path)
 

@@ -33,9 +33,11 @@ def _bounds(text: str) -> tuple:
     return (lo, hi)
 
 
-def add_objective_options(parser: argparse.ArgumentParser) -> None:
-    """The "objectives and constraints" option group."""
-    o = parser.add_argument_group("objectives and constraints")
+def add_objective_options(parser: argparse.ArgumentParser, *, constraints: bool = True) -> None:
+    """The "objectives and constraints" option group; without ``constraints`` (sensitivity,
+    which samples the variables' whole box and constrains nothing), the "objectives" group
+    without the bounds on mass, balance, swing weight and first frequency."""
+    o = parser.add_argument_group("objectives and constraints" if constraints else "objectives")
     o.add_argument(
         "--objective",
         **number_list(str),
@@ -76,7 +78,7 @@ def add_objective_options(parser: argparse.ArgumentParser) -> None:
         help=f"window of the handle-shock measures from the start of contact [s] "
         f"(default {DEFAULT_WINDOW:g})",
     )
-    for dest, (_, text) in CONSTRAINTS.items():
+    for dest, (_, text) in CONSTRAINTS.items() if constraints else ():
         o.add_argument(
             "--" + dest.replace("_", "-"),
             type=_bounds,
@@ -90,7 +92,7 @@ def objectives_from_args(args: argparse.Namespace) -> ObjectiveOptions:
     """The objectives and constraints the options give."""
     from fem_racket.studies.design.options import ObjectiveOptions
 
-    constraints = {q: getattr(args, dest) for dest, (q, _) in CONSTRAINTS.items()}
+    constraints = {q: getattr(args, dest, None) for dest, (q, _) in CONSTRAINTS.items()}
     return options_from_args(
         args, ObjectiveOptions, objectives=args.objective, constraints=constraints
     )

@@ -1,0 +1,113 @@
+"""A library refusal of a value that came from a run file, named by the file's key.
+
+The library checks a value once, where it is used, and names it as its parameter (``speed =
+1000.0 m/s is not allowed: must lie in [1, 100]``). When that value came from a run file, the
+error names the file and its dotted key instead (``run.toml: impact.speed_m_s = 1000.0 m/s is
+not allowed: must lie in [1, 100]``), as the README's run-file convention promises; the bound
+stays where the library keeps it (no copy here). A parameter is the file's key when its name is
+the key's argparse dest (spaces for underscores: ``string tension`` is ``string_tension``, set by
+``strings.tension_n``) or one of :data:`ALIASES`, and the refused value is the file's value.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
+from typing import Any
+
+from fem_racket.validation import InputError
+
+__all__ = ["ALIASES", "core_keys_named", "file_keys", "keys_named", "named_by_key"]
+
+#: Parameter names of the library's checks that are not their key's dest (spaces as
+#: underscores) -> the dest.
+ALIASES = {
+    "radius": "ball_radius",
+    "shock_window": "hand_shock_window",
+    "racket_speed_at_the_impact_point": "racket_speed",
+}
+
+_REFUSED = re.compile(r"^(?P<name>[A-Za-z][A-Za-z0-9_ ]*?) = (?P<value>[^ ,;:()]+)(?P<rest> .*)$")
+
+
+def file_keys(values: Mapping[str, Mapping[str, Any]]) -> dict[str, str]:
+    """dest -> the dotted key setting it, from a run file's core tables (table -> key ->
+    value); ``frame.ei1_n_m2`` wins over ``frame.preset``, which sets the same dest."""
+    from fem_racket.io.config_keys import CORE_KEYS
+
+    out: dict[str, str] = {}
+    for table, keys in values.items():
+        for key in keys:
+            dest = CORE_KEYS[table][key].dest
+            if dest is not None and not (key == "preset" and "ei1_n_m2" in keys):
+                out[dest] = f"{table}.{key}"
+    return out
+
+
+def _same(shown: str, value: Any) -> bool:
+    """Whether the value an error shows is ``value`` (a number)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    try:
+        x = float(shown)
+    except ValueError:
+        return False
+    return math.isclose(x, float(value), rel_tol=1e-9, abs_tol=0.0) or x == float(value)
+
+
+def named_by_key(
+    exc: InputError, keys: Mapping[str, str], values: Mapping[str, Any], source: Any
+) -> InputError:
+    """``exc`` with its parameter named by the run-file key that set it, or ``exc`` itself.
+
+    Parameters
+    ----------
+    exc : InputError
+        A library refusal, ``NAME = VALUE ...``.
+    keys : mapping
+        dest -> dotted key, for the values that came from the file.
+    values : mapping
+        dest -> value as the library got it.
+    source : path-like or None
+        The run file, named before the key (not when None: the caller names it).
+    """
+    m = _REFUSED.match(str(exc))
+    if m is None:
+        return exc
+    name = m["name"].strip().replace(" ", "_")
+    dest = ALIASES.get(name, name)
+    if dest not in keys or not _same(m["value"], values.get(dest)):
+        return exc
+    where = "" if source is None else f"{source}: "
+    return InputError(f"{where}{keys[dest]} = {m['value']}{m['rest']}")
+
+
+@contextmanager
+def keys_named(cfg: Any, table: str | None = None) -> Iterator[None]:
+    """Re-raise a library refusal of a value of the core tables of the run file ``cfg`` naming
+    its key (see :func:`named_by_key`); not of one the command's ``table`` sets (a sweep's grid
+    is refused as the grid, as on the command line)."""
+    try:
+        yield
+    except InputError as exc:
+        own = {k.replace("-", "_") for k in cfg.table(table)} if table else set()
+        keys = {d: k for d, k in file_keys(cfg.values).items() if d not in own}
+        named = named_by_key(exc, keys, cfg.defaults(), cfg.source)
+        if named is exc:
+            raise
+        raise named from None
+
+
+def core_keys_named(method: Callable[..., Any], table: str) -> Callable[..., Any]:
+    """``method`` of a RunConfig (the command whose table is ``table``) under
+    :func:`keys_named`."""
+
+    @functools.wraps(method)
+    def named(self: Any, *args: Any, **kwargs: Any) -> Any:
+        with keys_named(self, table):
+            return method(self, *args, **kwargs)
+
+    return named
