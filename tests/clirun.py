@@ -63,6 +63,16 @@ def one_error(capsys, *argv):
     return lines[0]
 
 
+def library_error(call):
+    """``call()``, which must be refused as the library refuses bad input: an InputError of one
+    line. The line (the library's counterpart of :func:`one_error`)."""
+    with pytest.raises(InputError) as err:
+        call()
+    text = str(err.value)
+    assert "\n" not in text
+    return text
+
+
 def refused_before_any_file(capsys, *argv):
     """:func:`one_error` for ``fem-racket ARGV`` run in an empty working folder (the ``cwd``
     fixture), which must stay empty: refused before anything is written. The line."""

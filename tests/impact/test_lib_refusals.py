@@ -14,17 +14,10 @@ from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.validation import InputError, check_finite
+from tests.clirun import library_error
 
 MODEL = fr.FrameModel.build(None, 20)
 LAW = fr.LinearContact(3e4, 0.1)
-
-
-def _line(call) -> str:
-    with pytest.raises(InputError) as err:
-        call()
-    text = str(err.value)
-    assert "\n" not in text
-    return text
 
 
 # -- H3: kcb/zeta with a law object, one shared line ------------------------------------------
@@ -33,10 +26,10 @@ def _line(call) -> str:
 @pytest.mark.parametrize(("key", "value"), [("zeta", 0.3), ("kcb", 5e4)])
 def test_kcb_or_zeta_with_a_linear_law_object_is_refused_alike_everywhere(key, value):
     lines = {
-        _line(lambda: fr.simulate(MODEL, law=LAW, **{key: value})),
-        _line(lambda: fr.racket_map(MODEL, law=LAW, **{key: value})),
-        _line(lambda: fr.sweep(law=LAW, **{key: value})),
-        _line(lambda: ProblemBatch((MODEL,), 0.75, 20.0, law=LAW, **{key: value})),
+        library_error(lambda: fr.simulate(MODEL, law=LAW, **{key: value})),
+        library_error(lambda: fr.racket_map(MODEL, law=LAW, **{key: value})),
+        library_error(lambda: fr.sweep(law=LAW, **{key: value})),
+        library_error(lambda: ProblemBatch((MODEL,), 0.75, 20.0, law=LAW, **{key: value})),
     }
     assert len(lines) == 1, lines  # one shared check, one line
     (line,) = lines
@@ -57,7 +50,7 @@ def test_the_paper_law_by_name_or_none_still_takes_kcb_and_zeta():
 
 @pytest.mark.parametrize("law", ["itf-ball", get_law("itf-ball")])
 def test_a_preset_is_named_as_given_with_its_family(law):
-    line = _line(lambda: fr.simulate(MODEL, kcb=3e4, law=law))
+    line = library_error(lambda: fr.simulate(MODEL, kcb=3e4, law=law))
     assert line.startswith(
         "kcb = 30000.0 is not allowed with contact law 'itf-ball' (hunt-crossley preset): "
     )
@@ -65,7 +58,7 @@ def test_a_preset_is_named_as_given_with_its_family(law):
 
 
 def test_racket_map_with_a_linear_law_object_no_longer_contradicts_itself():
-    line = _line(lambda: fr.racket_map(MODEL, law=LAW, zeta=0.3))
+    line = library_error(lambda: fr.racket_map(MODEL, law=LAW, zeta=0.3))
     assert "it sets the linear law's K_CB and zeta only" not in line
     assert "give them to LinearContact" in line
 
@@ -112,7 +105,9 @@ def test_the_bed_ball_by_name_reports_as_the_default_bed_ball():
 
 
 def test_a_dashpot_damping_the_ball_critically_is_refused_naming_both_masses():
-    line = _line(lambda: ImpactProblem.build(MODEL, law=fr.LinearContact(3e4, 0.9), ball_mass=0.01))
+    line = library_error(
+        lambda: ImpactProblem.build(MODEL, law=fr.LinearContact(3e4, 0.9), ball_mass=0.01)
+    )
     assert line.startswith("ball mass = 0.01 kg is not allowed with contact law 'linear'")
     assert "zeta = 2.149" in line and "ball_mass 0.057 kg" in line
 
@@ -138,7 +133,7 @@ def test_a_dashpot_damping_the_ball_critically_is_refused_naming_both_masses():
     ],
 )
 def test_a_number_given_as_text_or_bool_is_refused(key, value, start):
-    line = _line(lambda: ImpactProblem.build(MODEL, **{key: value}))
+    line = library_error(lambda: ImpactProblem.build(MODEL, **{key: value}))
     assert line == f"{start} is not allowed: must be a finite number"
 
 

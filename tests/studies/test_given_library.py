@@ -14,7 +14,7 @@ from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.map_options import MapPlay
 from fem_racket.studies.refine import refinement_study
 from fem_racket.studies.sweep import sweep_result
-from fem_racket.validation import InputError
+from tests.clirun import library_error
 
 #: Options at their defaults that simulate refuses in these combinations.
 AS_SIMULATE = {
@@ -26,22 +26,14 @@ AS_SIMULATE = {
 }
 
 
-def _refusal(call) -> str:
-    with pytest.raises(InputError) as err:
-        call()
-    text = str(err.value)
-    assert "\n" not in text
-    return text
-
-
 @pytest.mark.parametrize("name", list(AS_SIMULATE))
 def test_sweep_refuses_a_default_given_as_simulate_does(name):
     kw = AS_SIMULATE[name]
-    said = _refusal(lambda: sweep_result(speed=[20.0], position=[0.7], **kw))
+    said = library_error(lambda: sweep_result(speed=[20.0], position=[0.7], **kw))
     one = {k: v for k, v in kw.items() if k != "string_tension"}  # simulate takes the bed
     if "string_tension" in kw:
         one["strings"] = bed_from_options({"string_tension": kw["string_tension"]})
-    assert said == _refusal(lambda: fr.simulate(speed=20.0, position=0.7, **one))
+    assert said == library_error(lambda: fr.simulate(speed=20.0, position=0.7, **one))
     assert said.startswith(f"{[k for k in kw if k not in ('law', 'solver')][-1]} = ")
 
 
@@ -53,15 +45,15 @@ def test_a_swing_point_or_a_kcb_factor_given_at_its_default_is_refused():
         lambda: MapPlay(reference=0.75),
         lambda: Play(reference=0.75),
     ):
-        assert _refusal(call).startswith(words)
-    said = _refusal(lambda: fr.racket_map(law="hunt-crossley", kcb_factor=1.0))
+        assert library_error(call).startswith(words)
+    said = library_error(lambda: fr.racket_map(law="hunt-crossley", kcb_factor=1.0))
     assert said.startswith("kcb_factor = 1.0 is not allowed with contact law 'hunt-crossley'")
     # left out, it is the swing's default point
     assert MapPlay(racket_speed=5.0).reference == 0.75 and MapPlay().reference is None
 
 
 def test_refine_and_design_refuse_a_default_given():
-    assert _refusal(lambda: refinement_study(family="uniform", grading=4.0)).startswith(
+    assert library_error(lambda: refinement_study(family="uniform", grading=4.0)).startswith(
         "grading = 4.0 is not allowed with family 'uniform'"
     )
     for kw, words in [
@@ -72,15 +64,15 @@ def test_refine_and_design_refuse_a_default_given():
         ({"zone_sigma": 0.05}, "zone_sigma = 0.05 is not allowed with zone 'uniform'"),
         ({"reference": 0.75}, "reference = 0.75 is not allowed without racket_speed"),
     ]:
-        assert _refusal(lambda kw=kw: design_problem(**kw)).startswith(words)
+        assert library_error(lambda kw=kw: design_problem(**kw)).startswith(words)
     # the same defaults not given pass (the options' own defaults ask for nothing)
     options = DesignOptions(VariableOptions(vary=("rhoa",)), ZoneOptions())
     assert options.given == frozenset()
     problem = design_problem(vary=("ei",), link_ei=True, zone_points=3, speeds=(30.0,))
     for kw, name in [({"popsize": 10}, "popsize"), ({"seed": 1}, "seed")]:
-        said = _refusal(lambda kw=kw: optimize(problem, maxiter=1, **kw))
+        said = library_error(lambda kw=kw: optimize(problem, maxiter=1, **kw))
         assert said.startswith(f"{name} = {kw[name]} is not allowed with method 'SLSQP'")
-    assert _refusal(lambda: optimize(problem, maxiter=1, polish=True)).startswith(
+    assert library_error(lambda: optimize(problem, maxiter=1, polish=True)).startswith(
         "polish = True is not allowed with method 'SLSQP'"
     )
 
