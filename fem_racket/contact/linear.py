@@ -23,7 +23,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from fem_racket.contact.constants import DEFAULT_BALL_MASS, KCB_SPEED_RANGE
+from fem_racket.contact.constants import DEFAULT_BALL_MASS, KCB_SPEED_RANGE, SEPARATION_EVENTS
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.parameters import LawFit, LawParameter
 from fem_racket.validation import (
@@ -201,7 +201,7 @@ class LinearContact(ContactLaw):
             object.__setattr__(self, "zeta", check_finite("zeta", self.zeta))
         super().__post_init__()
         check_positive("ball mass", self.ball_mass, "kg")
-        check_choice("separation", self.separation, ("displacement", "force"))
+        check_choice("separation", self.separation, SEPARATION_EVENTS)
 
     @property
     def end(self) -> str:  # type: ignore[override]

@@ -6,12 +6,13 @@ Each value has this one home; the modules that use it import it from here (and k
 their own names): :mod:`fem_racket.impact.solvers` (whose registry must hold exactly the
 solvers named here), :mod:`fem_racket.impact.settings`, :mod:`fem_racket.impact.reduction`,
 :mod:`fem_racket.impact.system`, :mod:`fem_racket.impact.swing`,
-:mod:`fem_racket.impact.held.shock`.
+:mod:`fem_racket.impact.held.shock`. The separation events are the linear law's
+(:data:`fem_racket.contact.constants.SEPARATION_EVENTS`), kept here among the impact's names.
 """
 
 from __future__ import annotations
 
-from fem_racket.contact.constants import KCB_SPEED_RANGE
+from fem_racket.contact.constants import KCB_SPEED_RANGE, SEPARATION_EVENTS
 
 __all__ = [
     "BASES",
@@ -28,8 +29,6 @@ __all__ = [
 SOLVER_NAMES = ("auto", "exact", "general", "cvode", "bdf")
 #: Frame coordinates of the ODE solvers: free-free modes or every FE DOF.
 BASES = ("modal", "physical")
-#: The events that end the contact: the spring's deflection (the paper's) or its force back to 0.
-SEPARATION_EVENTS = ("displacement", "force")
 #: COR tolerance used when none is given (at or below the 20-element model's own
 #: discretisation error, ~4e-7 in COR).
 DEFAULT_TOLERANCE = 1e-6

@@ -35,6 +35,7 @@ from fem_racket.contact.presets import get_law
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import ClampedHead
+from fem_racket.impact.constants import SEPARATION_EVENTS
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.problem_checks import (
@@ -58,11 +59,7 @@ from fem_racket.validation import (
     show,
 )
 
-__all__ = ["SEPARATIONS", "HeldRacket", "Impact", "ImpactProblem"]
-
-#: Ends of contact of the paper's linear law: the spring deflection back to zero (the paper's)
-#: or the contact force back to zero.
-SEPARATIONS = ("displacement", "force")
+__all__ = ["HeldRacket", "Impact", "ImpactProblem"]
 
 
 @dataclass(frozen=True)
@@ -169,7 +166,7 @@ class ImpactProblem:
     def __post_init__(self) -> None:
         check_structure(self)
         if self.separation is not None:
-            check_choice("separation", self.separation, SEPARATIONS)
+            check_choice("separation", self.separation, SEPARATION_EVENTS)
         if self.law is not None:
             object.__setattr__(self, "law", check_law(self))
         else:  # the paper's K_CB and zeta, checked once

@@ -30,8 +30,9 @@ from fem_racket.contact.presets import check_linear_options
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.batch_outcome import BatchOutcome
+from fem_racket.impact.constants import SEPARATION_EVENTS
 from fem_racket.impact.incidence import Incidence
-from fem_racket.impact.problem import SEPARATIONS, HeldRacket, Impact, ImpactProblem
+from fem_racket.impact.problem import HeldRacket, Impact, ImpactProblem
 from fem_racket.impact.problem_checks import refuse_separation
 from fem_racket.impact.swing import Swing
 from fem_racket.strings.bed import StringBed
@@ -141,7 +142,7 @@ class ProblemBatch:
             if getattr(self, name) is not None:
                 set_(self, name, _column(name, getattr(self, name), n))
         if self.separation is not None:
-            check_choice("separation", self.separation, SEPARATIONS)
+            check_choice("separation", self.separation, SEPARATION_EVENTS)
         if self.swing is not None:
             swing = np.asarray(self.swing, dtype=float)
             set_(self, "swing", np.broadcast_to(swing, (n, 2)))
