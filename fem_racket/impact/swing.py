@@ -45,6 +45,7 @@ __all__ = [
     "add_swing",
     "ball_speed_out",
     "check_kcb_closing",
+    "check_racket_speed",
     "check_swing_speeds",
     "closing_speed",
     "racket_velocity",
@@ -95,9 +96,9 @@ class Swing:
         pivot : float, optional
             Pivot from the butt [m] (negative: beyond the butt, e.g. a shoulder); the racket
             translates when None. Refused where it would move the butt or the tip faster than
-            :data:`MAX_RACKET_SPEED` (:func:`pivot_reach`).
+            :data:`MAX_RACKET_SPEED` (:func:`~fem_racket.impact.swing_reach.pivot_reach`).
         """
-        v = check_finite("racket_speed", racket_speed, "m/s")
+        v = check_racket_speed(racket_speed)
         ref = check_range("reference", reference, 0.0, 1.0, unit="x/L") * length
         if pivot is None:
             return cls(v, 0.0)
@@ -109,12 +110,14 @@ class Swing:
             )
         omega = v / (ref - p)
         swing = cls(-omega * p, omega)
-        if swing.fastest(length) > MAX_RACKET_SPEED:
+        try:
+            check_swing_speeds(swing, length)
+        except InputError:  # named as the pivot given, with the pivots allowed
             raise InputError(
                 f"pivot = {show(pivot)} m is not allowed with racket_speed = {show(v)} m/s: the "
                 f"racket would turn at {abs(omega):.4g} rad/s, its butt or tip faster than "
                 f"{MAX_RACKET_SPEED:g} m/s: {allowed_pivots(v, ref, length)}"
-            )
+            ) from None
         return swing
 
     def fastest(self, length: float) -> float:
@@ -146,6 +149,13 @@ class Swing:
             "racket_angular_speed_rad_s": self.omega,
             "pivot_m": self.pivot,
         }
+
+
+def check_racket_speed(racket_speed: object) -> float:
+    """The racket speed V [m/s] as a float, or refused beyond +-:data:`MAX_RACKET_SPEED` (one
+    line naming ``racket_speed``): a swing's, ``--racket-speed``'s, a run file's, a sweep's."""
+    v_max = MAX_RACKET_SPEED
+    return check_range("racket_speed", racket_speed, -v_max, v_max, unit="m/s")
 
 
 def check_swing_speeds(swing: Swing, length: float) -> None:

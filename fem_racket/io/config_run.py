@@ -19,7 +19,7 @@ from fem_racket.io.config_defaults import DEFAULT_STEP, DEFAULTS
 from fem_racket.io.config_named import keys_named
 from fem_racket.io.config_oblique import CORE_DEST_KEYS, oblique_file
 from fem_racket.strings.options import STRING_OPTIONS, bed_from_options
-from fem_racket.validation import InputError, check_range, show
+from fem_racket.validation import InputError, show
 
 #: A :class:`fem_racket.io.config.RunConfig` (not imported: that module imports this one).
 RunConfig = Any
@@ -107,17 +107,15 @@ def file_frame(cfg: RunConfig) -> Any:
 
 def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
     from fem_racket.frame.model import FrameModel
-    from fem_racket.impact.constants import MAX_RACKET_SPEED
     from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
 
     d = cfg.defaults()
     model = FrameModel.build(file_frame(cfg), d.get("elements", 20))
     length = model.mesh.length
     speed = d.get("racket_speed", 0.0)
-    # the command's bound on --racket-speed (cli.options.impact), refused as the command does
-    check_range("racket_speed", speed, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
     reference, pivot = d.get("reference", DEFAULT_REFERENCE), d.get("pivot")
-    swing = Swing.from_speed(speed, length, reference=reference, pivot=pivot)  # checks
+    # checks: the racket speed's bound first, as the command does (cli.options.impact)
+    swing = Swing.from_speed(speed, length, reference=reference, pivot=pivot)
     return model, (None if speed == 0.0 else swing)
 
 

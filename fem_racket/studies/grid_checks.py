@@ -20,7 +20,7 @@ from fem_racket.frame.segments import (
     standard_frame,
 )
 from fem_racket.impact.incidence import Incidence, check_kcb_normal
-from fem_racket.impact.swing import MAX_RACKET_SPEED, Swing, check_kcb_closing, closing_speed
+from fem_racket.impact.swing import Swing, check_kcb_closing, check_racket_speed, closing_speed
 from fem_racket.studies.grid_values import STRING_AXES
 from fem_racket.studies.map_options import check_at_rest
 from fem_racket.studies.sweep_physics import LATERAL_AXES, given
@@ -91,7 +91,7 @@ def check_swings(spec: Any) -> None:
     racket speed, not as the closing speed it derives)."""
     v = spec.values
     for racket_speed in np.atleast_1d(v["racket_speed"]).tolist():
-        check_range("racket_speed", racket_speed, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
+        check_racket_speed(racket_speed)
     if np.all(np.atleast_1d(v["racket_speed"]) == 0.0):
         # a swing's point without a swing would be dropped (the maps' rule)
         check_at_rest(0.0, v["reference"] if "reference" in spec.given else None, v["pivot"])

@@ -23,6 +23,17 @@ def test_swing_from_speed_turns_about_the_pivot():
         Swing.from_speed(25.0, L, reference=0.75, pivot=0.51)
 
 
+@pytest.mark.parametrize("pivot", [None, -0.5])
+def test_from_speed_refuses_a_racket_speed_beyond_the_bound_first(pivot):
+    # |V| <= MAX_RACKET_SPEED (100 m/s) is the swing's own bound, checked before the pivot: a
+    # translation at 150 m/s was accepted here (refused later as "swing = Swing(...)"), and
+    # with a pivot the refusal said to give none; the line is --racket-speed's (test_refusals_map)
+    words = r"^racket_speed = 150.0 m/s is not allowed: must lie in \[-100, 100\]$"
+    with pytest.raises(InputError, match=words):
+        Swing.from_speed(150.0, L, pivot=pivot)
+    assert Swing.from_speed(-100.0, L).velocity == -100.0  # the bound itself is allowed
+
+
 def test_closing_speed_must_be_positive():
     assert closing_speed(20.0, 5.0) == 25.0
     with pytest.raises(InputError, match="must close"):

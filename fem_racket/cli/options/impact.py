@@ -19,7 +19,6 @@ from fem_racket.impact.constants import (
     BASES,
     DEFAULT_REFERENCE,
     DEFAULT_TOLERANCE,
-    MAX_RACKET_SPEED,
     SEPARATION_EVENTS,
     SOLVER_NAMES,
 )
@@ -138,10 +137,10 @@ def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False
     no --kcb, no --law); and a swing's ``--reference`` (and ``--pivot`` unless
     ``pivot_at_rest``: the maps' centre of percussion) given, on the command line or in a run
     file, without a swing (``--racket-speed`` 0): the racket at rest would drop them."""
-    from fem_racket.impact.swing import check_kcb_closing
+    from fem_racket.impact.swing import check_kcb_closing, check_racket_speed
 
     v_r = args.racket_speed
-    check_range("racket_speed", v_r, -MAX_RACKET_SPEED, MAX_RACKET_SPEED, unit="m/s")
+    check_racket_speed(v_r)  # before the closing speed: Swing.from_speed's bound, no racket yet
     closing = getattr(args, "speed", 0.0) + v_r
     linear = getattr(args, "kcb", None) is None and getattr(args, "law", None) in (None, "linear")
     if v_r != 0.0 and linear and math.isfinite(closing):

@@ -34,10 +34,21 @@ import numpy as np
 from fem_racket.impact.tangential.normal import NormalHistory, _piece_root
 from fem_racket.validation import InputError, show
 
-__all__ = ["Phase", "TangentialContact", "TangentialSolution", "march"]
+__all__ = ["Phase", "TangentialContact", "TangentialSolution", "check_chattering", "march"]
 
 #: Phases a march may take before it is declared stuck (Zeno chattering; refused in one line).
 MAX_PHASES = 200
+
+
+def check_chattering(friction: float, phases: int, t: float) -> None:
+    """Refuse, in one line naming the ``friction`` [-], a march (scalar or vector) that has
+    taken ``phases`` >= :data:`MAX_PHASES` phases by the time ``t`` [s] of its next switch."""
+    if phases >= MAX_PHASES:
+        raise InputError(
+            f"friction = {show(friction)} is not allowed for this impact: the tangential "
+            f"contact switched {MAX_PHASES} times by {t * 1e3:.4g} ms without settling "
+            "(grip and slide undecided: chattering)"
+        )
 
 
 @dataclass(frozen=True, eq=False)
@@ -267,12 +278,7 @@ def march(c: TangentialContact, normal: NormalHistory, slip: float) -> Tangentia
         t1 = _first_crossing(g, p.start, normal.end, normal.grid)
         if t1 is None or t1 >= normal.end:
             break
-        if len(phases) >= MAX_PHASES:
-            raise InputError(
-                f"friction = {show(c.friction)} is not allowed for this impact: the tangential "
-                f"contact switched {MAX_PHASES} times by {t1 * 1e3:.4g} ms without settling "
-                "(grip and slide undecided: chattering)"
-            )
+        check_chattering(c.friction, len(phases), t1)
         tt = np.array([t1])
         if p.kind == "grip":
             s1, f1 = (v[0] for v in _grip(c, p, tt))

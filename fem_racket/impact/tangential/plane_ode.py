@@ -28,11 +28,11 @@ from typing import Any
 import numpy as np
 
 from fem_racket.impact.tangential.march import (
-    MAX_PHASES,
     FrictionSpring,
     PhaseSummary,
     TangentialContact,
     _first_crossing,
+    check_chattering,
 )
 from fem_racket.impact.tangential.normal import NormalHistory
 from fem_racket.impact.tangential.scalar import scalar_force
@@ -261,7 +261,6 @@ def march_vector(c: PlaneContact, normal: NormalHistory, slip: np.ndarray) -> Pl
             s1, f1 = (v[0] for v in _slide(c, phases[-1], normal, np.array([t1])))
             s1 = np.zeros(2) if c.rigid else s1
             nxt = PlanePhase("grip", t1, normal.end, s1, -f1 / c.stiffness)
-        if len(phases) >= MAX_PHASES:
-            raise RuntimeError(f"tangential contact switched {MAX_PHASES} times: chattering")
+        check_chattering(c.friction, len(phases), t1)
         phases.append(nxt)
     return PlaneSolution(c, normal, tuple(phases))

@@ -175,3 +175,16 @@ def test_energy_never_created_and_momentum_kept_across_the_face(seed):
     assert i_b * out.side_spin_out + M * r * out.lateral_speed_out == pytest.approx(
         i_b * inc.side_spin_rad_s + M * r * vy, abs=1e-13
     )
+
+
+def test_vector_march_refuses_chattering_in_one_line(monkeypatch):
+    # the vector march stops at MAX_PHASES as the 1-D one does (march.check_chattering): one
+    # InputError naming the friction, no RuntimeError traceback; a limit of 1 phase makes the
+    # rigid slide-grip march (one switch) reach it
+    import fem_racket.impact.tangential.march as march_module
+    from fem_racket.validation import InputError
+
+    monkeypatch.setattr(march_module, "MAX_PHASES", 1)
+    c = PlaneContact(MU, math.inf, ISOTROPIC)
+    with pytest.raises(InputError, match=r"^friction = 0.4 is not allowed .*chattering\)$"):
+        march_plane(c, NORMAL, 0.8 * V * _unit(2.2), line=False)
