@@ -259,9 +259,10 @@ def apply_config(
 
 def _file_keys(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, str]:
     """dest -> the dotted run-file key that sets it (the command's table wins)."""
-    from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS
+    from fem_racket.io.config_keys import COMMAND_TABLES
+    from fem_racket.io.config_named import file_keys
 
-    keys = {CORE_KEYS[t][k].dest: f"{t}.{k}" for t, ks in cfg.values.items() for k in ks}
+    keys = file_keys(cfg.values)
     table = COMMAND_TABLES.get(command, command)
     keys.update({k.replace("-", "_"): f"{table}.{k}" for k in cfg.table(table)})
     return keys
