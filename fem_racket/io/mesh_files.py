@@ -194,6 +194,11 @@ def write_mesh(
         Replace an existing file; by default an existing file raises :class:`InputError`.
     binary : bool
         As for :func:`save_mesh`.
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     from fem_racket.outputs import atomic_output
 
@@ -218,6 +223,11 @@ def save_mesh(mesh: FrameMesh, path: str | os.PathLike, *, binary: bool = True) 
         For .vtu / .vtk: base64/binary data (exact round trip, the default) or ASCII text (easy
         to read and diff, 12 significant digits). .xdmf and .xmf are written with their data
         inline (XML).
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     import meshio
 
