@@ -71,11 +71,11 @@ class Solver:
                 f"{', '.join(SolverOptions.names())}"
             )
         checked = SolverOptions(**options).given()
-        for key, value in checked.items():
-            if key not in self.takes:  # given, at any value (its default too)
+        for key in checked:
+            if key not in self.takes:  # given, at any value (its default too), as it was given
                 why = self.hints.get(key, f"it takes {', '.join(self.takes)}")
                 raise InputError(
-                    f"{key} = {show(value)} is not allowed with solver {self.name!r}: {why}"
+                    f"{key} = {show(options[key])} is not allowed with solver {self.name!r}: {why}"
                 )
         self.options = SolverOptions(**{k: v for k, v in checked.items() if k in self.takes})
 

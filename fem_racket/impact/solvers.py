@@ -57,7 +57,7 @@ class ExactSolver(Solver):
     name = "exact"
     takes = ("tolerance", "modes", "output_step", "t_max")
     clamps = True
-    hints = {"basis": "the exact solution is in free-free modes (basis is cvode's and bdf's)"}
+    hints = {"basis": "it solves in the free-free modes ('modal'); basis is cvode's and bdf's"}
 
     def check(self, problem: ImpactProblem) -> None:
         super().check(problem)
