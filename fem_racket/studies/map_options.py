@@ -137,10 +137,7 @@ class MapPlay:
         """The swing of a racket of length ``length`` [m]
         (:meth:`fem_racket.impact.swing.Swing.from_speed`)."""
         return Swing.from_speed(
-            self.racket_speed,
-            length,
-            reference=DEFAULT_REFERENCE if self.reference is None else self.reference,
-            pivot=self.pivot,
+            self.racket_speed, length, reference=self.reference, pivot=self.pivot
         )
 
     def keywords(self) -> dict[str, Any]:
