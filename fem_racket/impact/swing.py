@@ -39,7 +39,6 @@ from fem_racket.validation import InputError, check_finite, check_range, show
 
 __all__ = [
     "MAX_RACKET_SPEED",
-    "DEFAULT_REFERENCE",
     "Rebound",
     "Swing",
     "add_swing",
@@ -92,8 +91,7 @@ class Swing:
         length : float
             Racket length L [m].
         reference : float, optional
-            Reference point, x/L in [0, 1]; :data:`DEFAULT_REFERENCE` (the string centre)
-            when None (not given: the callers pass None for a point left out).
+            Reference point, x/L in [0, 1]; when None (not given), 0.75 (the string centre).
         pivot : float, optional
             Pivot from the butt [m] (negative: beyond the butt, e.g. a shoulder); the racket
             translates when None. Refused where it would move the butt or the tip faster than

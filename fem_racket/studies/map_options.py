@@ -18,8 +18,9 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.impact.swing import Swing
 from fem_racket.studies.constants import MAP_POSITIONS as DEFAULT_POSITIONS
 from fem_racket.studies.constants import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError, check_range, show
