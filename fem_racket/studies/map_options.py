@@ -21,8 +21,8 @@ from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import Swing
-from fem_racket.studies.constants import MAP_POSITIONS as DEFAULT_POSITIONS
-from fem_racket.studies.constants import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
+from fem_racket.studies.map_defaults import MAP_POSITIONS as DEFAULT_POSITIONS
+from fem_racket.studies.map_defaults import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError, check_range, show
 
 __all__ = [
