@@ -18,8 +18,9 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.impact.swing import Swing
 from fem_racket.studies.map_defaults import MAP_POSITIONS as DEFAULT_POSITIONS
 from fem_racket.studies.map_defaults import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError, check_range, show
@@ -137,10 +138,7 @@ class MapPlay:
         """The swing of a racket of length ``length`` [m]
         (:meth:`fem_racket.impact.swing.Swing.from_speed`)."""
         return Swing.from_speed(
-            self.racket_speed,
-            length,
-            reference=DEFAULT_REFERENCE if self.reference is None else self.reference,
-            pivot=self.pivot,
+            self.racket_speed, length, reference=self.reference, pivot=self.pivot
         )
 
     def keywords(self) -> dict[str, Any]:
