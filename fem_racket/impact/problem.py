@@ -39,6 +39,7 @@ from fem_racket.impact.constants import SEPARATION_EVENTS
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.model_cache import frame_model
 from fem_racket.impact.problem_checks import (
+    LUMPED,
     check_build_options,
     check_held,
     check_law,
@@ -204,6 +205,8 @@ class ImpactProblem:
         mass = fields.pop("ball_mass", None)
         ball = Ball() if mass is None else Ball(mass)
         law = fields.pop("law", None)
+        if law == "linear" and fields.get("strings") is not None:
+            raise InputError(f"law = 'linear' is not allowed with a string bed: {LUMPED}")
         law = get_law(law) if isinstance(law, str) else law
         hand = fields.pop("hand", None)
         window = fields.pop("shock_window", None)

@@ -28,6 +28,7 @@ from fem_racket.strings.reach import on_bed, strike_interval
 from fem_racket.validation import InputError, show
 
 __all__ = [
+    "LUMPED",
     "check_build_options",
     "bed_coordinates",
     "check_held",
@@ -37,6 +38,9 @@ __all__ = [
     "check_structure",
     "refuse_separation",
 ]
+
+#: Why the lumped K_CB's options (kcb, zeta, the linear law) are refused with a string bed.
+LUMPED = "the bed replaces the lumped K_CB (give the ball's own law as law)"
 
 
 def check_build_options(options: dict[str, Any], problem_class: type) -> None:
@@ -192,7 +196,7 @@ def check_strings(problem: Any) -> None:
     if not isinstance(problem.strings, StringBed):
         raise InputError(f"strings = {problem.strings!r} is not allowed: must be a StringBed")
     at_rest = "the strung racket is free and at rest"
-    lumped = "the bed replaces the lumped K_CB (give the ball's own law as law)"
+    lumped = LUMPED
     refused = {
         "hand": (problem.held, at_rest),
         "swing": (problem.swing is not None, at_rest),
