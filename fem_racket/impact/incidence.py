@@ -48,8 +48,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
-import numpy as np
-
 from fem_racket.validation import InputError, check_finite, check_range, show
 
 __all__ = [
@@ -251,6 +249,8 @@ def refuse_idle_contact(values: Mapping[str, Any]) -> None:
         a sweep's values) and the contact parameters (any other name: friction [-], I/(m R^2)
         [-], ball radius [m], compliance ratio [-]); None: not given.
     """
+    import numpy as np  # here: ``fem-racket simulate --help`` imports this module, not numpy
+
     for name in COMPONENTS:
         value = values.get(name)
         if value is not None and np.any(np.asarray(value, dtype=float) != 0.0):
