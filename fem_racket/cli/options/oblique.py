@@ -114,10 +114,9 @@ def incidence_from_args(args: argparse.Namespace) -> Incidence | None:
     stroke = any(getattr(args, d, None) is not None for d in STROKE_OPTIONS)
     if not given and not stroke and not getattr(args, "clamped", None):
         return None
+    incidence = Incidence(**given)  # each value in its range first
     if not stroke:  # a stroke's face and path angles make the ball oblique
         refuse_idle_options(args, {dest: o[1] for dest, o in OBLIQUE_OPTIONS.items()})
-    incidence = Incidence(**given)
-    if not stroke:
         check_normal_speed(args, incidence)
     return incidence
 
