@@ -76,7 +76,9 @@ class Solver:
             if key not in self.takes and not self._neutral(key, value):
                 why = self.hints.get(key, f"it takes {', '.join(self.takes)}")
                 raise InputError(
-                    f"{key} = {show(value)} is not allowed with solver {self.name!r}: {why}"
+                    f"{key} = {show(value)} is not allowed with solver {self.name!r}: {why}",
+                    parameter=key,
+                    value=value,
                 )
         self.options = SolverOptions(**{k: v for k, v in checked.items() if k in self.takes})
 
@@ -199,7 +201,9 @@ class Solver:
         for key in names:
             if key in given:
                 raise InputError(
-                    f"{key} = {show(given[key])} is not allowed with solver {self.name!r} {why}"
+                    f"{key} = {show(given[key])} is not allowed with solver {self.name!r} {why}",
+                    parameter=key,
+                    value=given[key],
                 )
 
     def _refuse_law(self, problem: ImpactProblem | ProblemBatch) -> None:

@@ -106,7 +106,9 @@ class Swing:
         if abs(ref - p) < 1e-9 * length:
             raise InputError(
                 f"pivot = {pivot!r} m is not allowed: it is the reference point "
-                f"({ref:g} m), whose speed it would fix at zero"
+                f"({ref:g} m), whose speed it would fix at zero",
+                parameter="pivot",
+                value=pivot,
             )
         omega = v / (ref - p)
         swing = cls(-omega * p, omega)
@@ -116,7 +118,9 @@ class Swing:
             raise InputError(
                 f"pivot = {show(pivot)} m is not allowed with racket_speed = {show(v)} m/s: the "
                 f"racket would turn at {abs(omega):.4g} rad/s, its butt or tip faster than "
-                f"{MAX_RACKET_SPEED:g} m/s: {allowed_pivots(v, ref, length)}"
+                f"{MAX_RACKET_SPEED:g} m/s: {allowed_pivots(v, ref, length)}",
+                parameter="pivot",
+                value=pivot,
             ) from None
         return swing
 
@@ -175,7 +179,9 @@ def closing_speed(speed: float, racket_speed: float) -> float:
     if not c > 0.0:
         raise InputError(
             f"racket speed at the impact point = {racket_speed:g} m/s is not allowed with ball "
-            f"speed {speed:g} m/s: the two must close (v_in + v_r > 0)"
+            f"speed {speed:g} m/s: the two must close (v_in + v_r > 0)",
+            parameter="racket speed at the impact point",
+            value=racket_speed,
         )
     return c
 
@@ -189,7 +195,9 @@ def check_kcb_closing(speed: float, racket_speed: float, closing: float, name: s
         raise InputError(
             f"{name} = {show(racket_speed)} m/s is not allowed with speed = {show(speed)} m/s: "
             f"the closing speed {closing:g} m/s is above the {KCB_SPEED_RANGE[1]:g} m/s where the "
-            "paper's K_CB holds (give kcb)"
+            "paper's K_CB holds (give kcb)",
+            parameter=name,
+            value=racket_speed,
         )
 
 

@@ -226,7 +226,9 @@ def _run(cfg: RunConfig, histories: bool | None, table: str) -> Any:
     if hand is None and "hand_shock_window" in d:
         raise InputError(
             f"shock_window = {show(d['hand_shock_window'])} s is not allowed without a hand: "
-            "give --grip or a hand parameter"
+            "give --grip or a hand parameter",
+            parameter="shock_window",
+            value=d["hand_shock_window"],
         )
     if hand is not None:
         if strings is not None:

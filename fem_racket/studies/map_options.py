@@ -75,7 +75,9 @@ def check_at_rest(racket_speed: float, reference: Any, pivot: float | None = Non
             value = np.asarray(value).tolist()  # a number, or a sweep's values
             raise InputError(
                 f"{name} = {show(value)} {unit} is not allowed without a swing: give "
-                "racket_speed (--racket-speed)"
+                "racket_speed (--racket-speed)",
+                parameter=name,
+                value=value,
             )
 
 

@@ -153,7 +153,9 @@ def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False
         if name in given and not (name == "pivot" and pivot_at_rest):
             raise InputError(
                 f"{name} = {show(getattr(args, name))} {_SWING_UNITS[name]} is not allowed "
-                "without a swing: give --racket-speed"
+                "without a swing: give --racket-speed",
+                parameter=name,
+                value=getattr(args, name),
             )
 
 
