@@ -95,13 +95,18 @@ def keys_named(cfg: Any, table: str | None = None) -> Iterator[None]:
         raise named from None
 
 
-def core_keys_named(method: Callable[..., Any], table: str) -> Callable[..., Any]:
-    """``method`` of a RunConfig (the command whose table is ``table``) under
-    :func:`keys_named`."""
+def core_keys_named(method: Callable[..., Any]) -> Callable[..., Any]:
+    """Decorate the ``method`` of a RunConfig named after its command (``export_vtk`` for
+    ``export-vtk``) so that it runs under :func:`keys_named` with the command's table
+    (:data:`~fem_racket.io.config_keys.COMMAND_TABLES`): its refusal of a core table's value
+    names the key, as the command's."""
+    command = method.__name__.replace("_", "-")
 
     @functools.wraps(method)
     def named(self: Any, *args: Any, **kwargs: Any) -> Any:
-        with keys_named(self, table):
+        from fem_racket.io.config_keys import COMMAND_TABLES
+
+        with keys_named(self, COMMAND_TABLES[command]):
             return method(self, *args, **kwargs)
 
     return named
