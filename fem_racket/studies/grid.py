@@ -164,7 +164,9 @@ class SweepSpec(SweepSolving):
                 ):
                     raise InputError(
                         f"elements = {show(given)} is not allowed with a mesh: it has "
-                        f"{frame.n_elements} elements"
+                        f"{frame.n_elements} elements",
+                        parameter="elements",
+                        value=given,
                     )
                 values["elements"] = frame.n_elements
         if kwargs.get("solver", "auto") == "auto":

@@ -175,13 +175,17 @@ def map_model(frame: Any, elements: int | None) -> FrameModel:
         if elements is not None:
             raise InputError(
                 f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
-                "already (give a Frame or a FrameMesh to mesh)"
+                "already (give a Frame or a FrameMesh to mesh)",
+                parameter="elements",
+                value=elements,
             )
         return frame
     if isinstance(frame, FrameMesh) and elements not in (None, frame.n_elements):
         raise InputError(
             f"elements = {show(elements)} is not allowed with a mesh: it has "
-            f"{frame.n_elements} elements"
+            f"{frame.n_elements} elements",
+            parameter="elements",
+            value=elements,
         )
     return FrameModel.build(frame, DEFAULT_ELEMENTS if elements is None else elements)
 
