@@ -22,7 +22,7 @@ from typing import Any
 
 from fem_racket.validation import InputError
 
-__all__ = ["ALIASES", "core_keys_named", "file_keys", "keys_named", "named_by_key"]
+__all__ = ["ALIASES", "command_keys", "core_keys_named", "file_keys", "keys_named", "named_by_key"]
 
 #: Parameter names of the library's checks that are not their key's dest (spaces as
 #: underscores) -> the dest.
@@ -45,6 +45,18 @@ def file_keys(values: Mapping[str, Mapping[str, Any]]) -> dict[str, str]:
             if dest is not None and not (key == "preset" and "ei1_n_m2" in keys):
                 out[dest] = f"{table}.{key}"
     return out
+
+
+def command_keys(cfg: Any, command: str) -> dict[str, str]:
+    """dest -> the dotted key of the run file ``cfg`` (a RunConfig) setting it for ``command``:
+    the core tables' (:func:`file_keys`), then the command's own table's, which win (its keys
+    are its long options: ``--power-fraction`` is ``map.power_fraction``)."""
+    from fem_racket.io.config_keys import COMMAND_TABLES
+
+    keys = file_keys(cfg.values)
+    table = COMMAND_TABLES.get(command, command)
+    keys.update({k.replace("-", "_"): f"{table}.{k}" for k in cfg.table(table)})
+    return keys
 
 
 def _same(refused: Any, value: Any) -> bool:
