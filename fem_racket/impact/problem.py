@@ -197,9 +197,7 @@ class ImpactProblem:
         if isinstance(frame, FrameModel) and elements is not None:
             raise InputError(
                 f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
-                "already (give a Frame or a FrameMesh to mesh)",
-                parameter="elements",
-                value=elements,
+                "already (give a Frame or a FrameMesh to mesh)"
             )
         model = frame_model(frame, 20 if elements is None else elements)
         impact = Impact(fields.pop("position", 0.75), fields.pop("speed", 20.0))
@@ -211,9 +209,7 @@ class ImpactProblem:
         window = fields.pop("shock_window", None)
         if hand is None and window is not None:
             raise InputError(
-                f"shock_window = {show(window)} s is not allowed without a hand: give a hand",
-                parameter="shock_window",
-                value=window,
+                f"shock_window = {show(window)} s is not allowed without a hand: give a hand"
             )
         check_build_options(fields, cls)
         structure = model if hand is None else HeldRacket(model, hand, window)

@@ -5,10 +5,10 @@ The library checks a value once, where it is used, and names it as its parameter
 error names the file and its dotted key instead (``run.toml: impact.speed_m_s = 1000.0 m/s is
 not allowed: must lie in [1, 100]``), as the README's run-file convention promises; the bound
 stays where the library keeps it (no copy here). The refusal says which parameter and value it
-refused (:attr:`~fem_racket.validation.InputError.parameter` and ``value``, set by the library's
-checks); the parameter is the file's key when its name is the key's argparse dest (spaces for
-underscores: ``string tension`` is ``string_tension``, set by ``strings.tension_n``) or one of
-:data:`ALIASES`, and the refused value is the file's number.
+refused (``parameter`` and ``value`` of :class:`~fem_racket.validation.InputError`, set by the
+library's checks); the parameter is the file's key when its name is the key's argparse dest
+(spaces for underscores: ``string tension`` is ``string_tension``, set by ``strings.tension_n``)
+or one of :data:`ALIASES`, and the refused value is the file's number.
 """
 
 from __future__ import annotations

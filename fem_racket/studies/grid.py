@@ -164,9 +164,7 @@ class SweepSpec(SweepSolving):
                 ):
                     raise InputError(
                         f"elements = {show(given)} is not allowed with a mesh: it has "
-                        f"{frame.n_elements} elements",
-                        parameter="elements",
-                        value=given,
+                        f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
         if kwargs.get("solver", "auto") == "auto":
