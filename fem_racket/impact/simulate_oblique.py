@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from fem_racket.impact.incidence import Incidence, refuse_idle_incidence
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence_idle import refuse_idle_incidence
 from fem_racket.impact.oblique.solve import (
     NormalImpact,
     ObliqueResult,

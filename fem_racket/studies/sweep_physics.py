@@ -28,7 +28,8 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.impact.incidence import Incidence, refuse_idle_contact
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence_idle import refuse_idle_contact
 from fem_racket.impact.problem_checks import bed_coordinates
 from fem_racket.impact.strung.solve import STRUNG_OPTIONS
 from fem_racket.strings.bed import StringBed

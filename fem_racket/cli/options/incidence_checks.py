@@ -7,7 +7,8 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.impact.incidence import COMPONENTS, Incidence, refuse_idle_contact
+from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence_idle import COMPONENTS, refuse_idle_contact
 
 __all__ = ["check_normal_speed", "refuse_idle_options"]
 
