@@ -45,6 +45,10 @@ REFUSED = {
     # where the designs run
     (*OPT, "--workers", "2"): ("workers = 2", "backend 'serial'"),
     (*SENS, "--scheduler", "tcp://localhost:8786"): ("scheduler = 'tcp://localhost:8786'",),
+    # (F17: no pool of 0 processes, refused in the sweep's words)
+    (*SENS, "--backend", "processes", "--workers", "0"): (
+        "workers = 0 is not allowed: must be an integer >= 1",
+    ),
     # sensitivity: the same table, and what an analysis of one output does not use
     (*SENS, "--grip", "firm"): ("grip = 'firm'",),
     (*SENS, "--seed", "3", "--zone-sigma", "0.1"): ("zone_sigma = 0.1",),
