@@ -77,7 +77,11 @@ def _checked(name: str, value: Any) -> Any:
         return None
     unit = "s"
     if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
-        raise InputError(f"{name} = {show(value)} {unit} is not allowed: must be a number > 0")
+        raise InputError(
+            f"{name} = {show(value)} {unit} is not allowed: must be a number > 0",
+            parameter=name,
+            value=value,
+        )
     return check_positive(name, value, unit)
 
 
