@@ -144,13 +144,8 @@ def test_a_reference_at_rest_is_refused_in_every_command_s_words():
         design_problem(reference=0.75)
     with pytest.raises(InputError) as theirs:
         check_at_rest(0.0, 0.75)  # simulate's, sweep's and map's
-    assert (
-        str(ours.value)
-        == str(theirs.value)
-        == (
-            "reference = 0.75 x/L is not allowed without a swing: give racket_speed (--racket-speed)"
-        )
-    )
+    line = "reference = 0.75 x/L is not allowed without a swing: give racket_speed (--racket-speed)"
+    assert str(ours.value) == str(theirs.value) == line
     swung = design_problem(racket_speed=10.0)
     assert swung.swing.reference == 0.75
     assert swung.digest == design_problem(racket_speed=10.0, reference=0.75).digest
