@@ -16,7 +16,7 @@ from typing import Any
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.frame.segments import PAPER_EI1
-from fem_racket.io.config_defaults import DEFAULTS
+from fem_racket.io.config_defaults import DEFAULTS, SIMULATE_DEFAULTS
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
 from fem_racket.validation import InputError, show
 
@@ -33,18 +33,20 @@ __all__ = [
 #: Core tables whose keys change the impacts a command computes; ``[solver]``'s say how.
 IMPACT_TABLES = ("frame", "ball", "contact", "impact", "hand", "strings", "oblique", "solver")
 #: Commands that compute impacts -> the core keys they span themselves (their own grid or list:
-#: map's and compare's positions, refine's positions and element counts, the design's zone and
-#: speeds), skipped. Every other key of :data:`IMPACT_TABLES` such a command has no option for is
-#: refused: it would compute another impact than the file states. Other commands (modes, fit,
-#: customise, closest, reproduce, calibrate) skip the keys they have no option for, as all
-#: commands do for ``[output]`` (where, not what, is written).
+#: map's positions, refine's positions and element counts, the design's zone and speeds),
+#: skipped (not compare's: its maps span positions, but ``impact.position_x_over_l`` would state
+#: its ``point``, which only ``[compare] point`` sets). Every other key of
+#: :data:`IMPACT_TABLES` such a command has no option for is refused: it would compute
+#: another impact than the file states. Other commands (modes, fit, customise, closest,
+#: reproduce, calibrate) skip the keys they have no option for, as all commands do for
+#: ``[output]`` (where, not what, is written).
 IMPACT_COMMANDS: dict[str, tuple[str, ...]] = {
     "simulate": (),
     "sweep": (),
     "export-vtk": (),
     "animate": (),
     "map": ("impact.position_x_over_l",),
-    "compare": ("impact.position_x_over_l",),
+    "compare": (),
     "refine": ("impact.position_x_over_l", "frame.elements"),
     "optimize": ("impact.position_x_over_l", "impact.speed_m_s"),
     "sensitivity": ("impact.position_x_over_l", "impact.speed_m_s"),
@@ -60,12 +62,14 @@ SPANNED_WITH = {"impact.offset_m": "offsets"}
 #: swing's reference point not given (the file's at its default is read as not given:
 #: :meth:`~fem_racket.io.config_file.RunFile.defaults`). A swing's point given (or a pivot)
 #: without a swing is refused by the commands that have the option, as on their command line
-#: (``--reference`` needs ``--racket-speed``).
+#: (``--reference`` needs ``--racket-speed``). The impact point at 0.75 (``config --example``
+#: writes it) is compare's ``point`` unless given.
 NEUTRAL = {
     **DEFAULTS,
     "racket_speed": 0.0,
     "ei1": PAPER_EI1,
     "reference": None,
+    "position": SIMULATE_DEFAULTS["position"],
     "ball_mass": DEFAULT_BALL_MASS,
     "zeta": zeta_from_cor(PAPER_CLAMPED_COR),
 }

@@ -41,10 +41,18 @@ KCB_LAW = (
 )
 
 
+#: The fixed parameters of the paper's linear law only: a sweep under another law (its
+#: ``contact_*`` attributes) writes neither, as its dataset holds no ``kcb_n_m``.
+PAPER_LAW_ONLY = ("kcb", "zeta")
+
+
 def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
-    """Provenance, every fixed parameter (units in the names), solver and tolerances."""
+    """Provenance, every fixed parameter (units in the names; the paper law's only under it),
+    solver and tolerances."""
     params: dict[str, Any] = {}
     for name, value in spec.fixed.items():
+        if spec.law is not None and name in PAPER_LAW_ONLY:
+            continue  # they describe a law not used
         attr = parameter(name).attribute
         if value is None and name == "kcb":
             value = KCB_LAW

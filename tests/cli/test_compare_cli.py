@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from clirun import run, run_json
+from clirun import file_refused_alike, run, run_json
 
 from fem_racket.frame.head import DEFAULT_HEAD
 from fem_racket.frame.lead import lead_moments
@@ -97,3 +97,23 @@ def test_face_maps_compare_and_lead_at_3_9_lifts_the_sides(capsys, tmp_path):
         # Brody 2005: more twistweight, less energy in roll: e_A rises off the axis
         assert np.nanmin(d[1][[0, -1]]) > 0.0
         assert ds["apparent_cor_face"].dims == ("racket", "offset", "position")
+
+
+def test_a_run_files_impact_position_is_refused_not_skipped(capsys, cwd):
+    # F11: it states compare's --point (the contact time, the handle shock), which the command
+    # did not read from it (the point stayed 0.75): refused alike, as other unused keys are;
+    # [compare] point sets the point, and the position at its default changes nothing
+    file_refused_alike(
+        capsys,
+        "[impact]\nposition_x_over_l = 0.6\n",
+        ["compare", "standard", "rigid", "--config", "run.toml", "--out", "a.png"],
+        lambda config: config.compare(["standard", "rigid"], "a.png"),
+        "impact.position_x_over_l = 0.6 is not allowed with fem-racket compare: it has no such "
+        "option, so the key would be ignored; remove it",
+    )
+    (cwd / "run.toml").write_text("[impact]\nposition_x_over_l = 0.75\n[compare]\npoint = 0.6\n")
+    argv = ("compare", "standard", "rigid", *FAST)
+    by_file = run_json(capsys, *argv, "--config", "run.toml", "--out", "f.nc")["rackets"]
+    by_option = run_json(capsys, *argv, "--point", "0.6", "--out", "o.nc")["rackets"]
+    at_075 = run_json(capsys, *argv, "--out", "d.nc")["rackets"]
+    assert by_file == by_option and by_file[0]["contact_time_s"] != at_075[0]["contact_time_s"]

@@ -58,7 +58,7 @@ OTHERS = {
     ),
     "sensitivity-reference": (
         ("sensitivity", "--reference", "0.75", "--out", "s.png"),
-        "reference = 0.75 is not allowed without racket_speed",
+        "reference = 0.75 x/L is not allowed without a swing",
     ),
 }
 

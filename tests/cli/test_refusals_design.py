@@ -14,6 +14,11 @@ OPT = ("optimize", *CHEAP, "--maxiter", "1", "--out", "study")
 SENS = ("sensitivity", *CHEAP, "--designs", "8")
 REFINE = ("refine", "--elements", "5,10", "--positions", "0.7", "--count", "2", "--quiet")
 
+#: The line every command refuses a swing's reference at rest with (given at any value).
+SHARED_AT_REST = (
+    "reference = 0.75 x/L is not allowed without a swing: give racket_speed (--racket-speed)"
+)
+
 #: argv -> words of the one error line (the option named, and why).
 REFUSED = {
     # optimize's search budget by method
@@ -38,13 +43,20 @@ REFUSED = {
     (*OPT, "--zone", "node", "--zone-range", "0.5,0.8"): ("zone_range", "zone 'node'"),
     (*OPT, "--objective", "power_region"): ("zone_points = 3", "['power_region']"),
     (*OPT, "--swing-exponent", "-0.1"): ("swing_exponent = -0.1", "without racket_speed"),
-    (*OPT, "--reference", "0.6"): ("reference = 0.6", "at rest"),
+    (*OPT, "--reference", "0.6"): ("reference = 0.6 x/L is not allowed without a swing",),
+    # (as simulate, sweep and map refuse it: fem_racket.studies.map_options.check_at_rest)
+    (*OPT, "--reference", "0.75"): (SHARED_AT_REST,),
+    (*SENS, "--reference", "0.75"): (SHARED_AT_REST,),
     (*OPT, "--pivot", "0.2"): ("pivot = 0.2", "at rest"),
     (*OPT, "--grip", "firm"): ("grip = 'firm'", "objectives ['cor']", "handle_shock"),
     (*OPT, "--shock-window", "0.01"): ("shock_window = 0.01", "objectives ['cor']"),
     # where the designs run
     (*OPT, "--workers", "2"): ("workers = 2", "backend 'serial'"),
     (*SENS, "--scheduler", "tcp://localhost:8786"): ("scheduler = 'tcp://localhost:8786'",),
+    # (F17: no pool of 0 processes, refused in the sweep's words)
+    ("sensitivity", *CHEAP[:-3], "--backend", "processes", "--workers", "0", "--quiet"): (
+        "workers = 0 is not allowed: must be an integer >= 1",
+    ),
     # sensitivity: the same table, and what an analysis of one output does not use
     (*SENS, "--grip", "firm"): ("grip = 'firm'",),
     (*SENS, "--seed", "3", "--zone-sigma", "0.1"): ("zone_sigma = 0.1",),

@@ -62,7 +62,7 @@ def test_refine_and_design_refuse_a_default_given():
             "ei_bounds = (50.0, 3000.0) is not allowed",
         ),
         ({"zone_sigma": 0.05}, "zone_sigma = 0.05 is not allowed with zone 'uniform'"),
-        ({"reference": 0.75}, "reference = 0.75 is not allowed without racket_speed"),
+        ({"reference": 0.75}, "reference = 0.75 x/L is not allowed without a swing"),
     ]:
         assert library_error(lambda kw=kw: design_problem(**kw)).startswith(words)
     # the same defaults not given pass (the options' own defaults ask for nothing)

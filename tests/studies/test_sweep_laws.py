@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 from script_loader import load_script
@@ -163,7 +165,12 @@ def test_a_law_without_k_cb_writes_no_k_cb(tmp_path):
         sweep(law=law, **kw, output=csv)
         with xr.open_dataset(nc) as back:
             assert ("kcb_n_m" in back) is has and ("kcb_n_m" in ds) is has, law
+            # nor its attributes: the paper law's K_CB and zeta describe a law not used
+            assert ("kcb_n_m" in back.attrs) is has and ("zeta" in back.attrs) is has, law
+            assert (back.attrs["contact_law"] == "hunt-crossley") is not has, law
         assert ("kcb_n_m" in csv.read_text().splitlines()[0]) is has, law
+        sidecar = json.loads(csv.with_name(csv.name + ".json").read_text())
+        assert ("kcb_n_m" in json.dumps(sidecar)) is has and ("zeta" in sidecar) is has, law
         assert all(np.isfinite(ds[v]).all() for v in ds.data_vars), law
 
 

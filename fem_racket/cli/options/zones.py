@@ -7,6 +7,7 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.options.lists import add_options, number_list
+from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.studies.design.zone_kinds import ZONES
 
 __all__ = ["add_zone_options"]
@@ -18,7 +19,8 @@ BALL = (
     ("racket_speed", None, "M_S", "swing: speed of the reference point towards the ball with "
      "the starting racket [m/s]; slower for heavier swings, ~I^-0.27 (Cross & Bower 2006) "
      "(default: a stationary racket)"),
-    ("reference", 0.75, "X", "reference point of --racket-speed x/L [-] (default 0.75)"),
+    ("reference", None, "X", "reference point of --racket-speed x/L [-] "
+     f"(default {DEFAULT_REFERENCE})"),
     ("pivot", 0.10, "M", "swing pivot (hand) from the butt [m] (default 0.10)"),
     ("swing_exponent", -0.27, None, "swing speed ~ I^exponent, the exponent [-] "
      "(default -0.27; 0: same swing for any racket)"),

@@ -28,6 +28,7 @@ from fem_racket.frame.mesh import FrameMesh, frame_from_mesh, frame_mesh
 from fem_racket.frame.modal import mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame, standard_frame
+from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.studies.design.options import DesignOptions, VariableOptions
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.problem import DesignProblem
@@ -107,7 +108,8 @@ def build_problem(start: Frame | FrameMesh | None, options: DesignOptions) -> De
         zone = gaussian_zone(mode1_node(frame, elements), z.zone_sigma, z.zone_points)
     swing = None
     if z.racket_speed is not None:
-        swing = SwingModel(z.racket_speed, z.reference, z.pivot, z.swing_exponent)
+        reference = DEFAULT_REFERENCE if z.reference is None else z.reference
+        swing = SwingModel(z.racket_speed, reference, z.pivot, z.swing_exponent)
     ball = {k: v for k, v in (("ball_mass", z.ball_mass), ("zeta", z.zeta)) if v is not None}
     return paper_problem(
         frame,

@@ -21,7 +21,7 @@ from fem_racket.studies.design.history import History
 from fem_racket.studies.design.objectives import evaluate_rows, output_names
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.executors import BACKENDS, check_scheduler, run_chunks
-from fem_racket.validation import InputError, check_choice, show
+from fem_racket.validation import InputError, check_choice, check_integer, show
 
 __all__ = ["Evaluator", "Function"]
 
@@ -79,6 +79,8 @@ class Evaluator:
     ) -> None:
         if backend is not None:
             check_choice("backend", backend, BACKENDS)
+        if workers is not None:
+            check_integer("workers", workers)  # as the sweep refuses it
         for name, value, users in (("workers", workers, ("processes",)),
                                    ("scheduler", scheduler, ("dask",))):  # fmt: skip
             if value is not None and backend is not None and backend not in users:

@@ -112,9 +112,13 @@ class ZoneOptions:
     racket_speed : float or None
         Swing: the reference point's speed towards the ball with the starting racket [m/s]
         (:class:`.swing.SwingModel`); a stationary racket when None.
-    reference, pivot, swing_exponent : float
-        The swing's reference point x/L, pivot from the butt [m] and the exponent of the
-        swing speed in the racket's inertia.
+    reference : float or None
+        The swing's reference point x/L (None: :data:`~fem_racket.impact.constants.
+        DEFAULT_REFERENCE`, 0.75); refused at rest when given, as every command refuses it
+        (:func:`fem_racket.studies.map_options.check_at_rest`).
+    pivot, swing_exponent : float
+        The swing's pivot from the butt [m] and the exponent of the swing speed in the
+        racket's inertia.
     ball_mass, zeta : float or None
         m_B [kg] and the ball/string damping ratio (None: 0.057 kg, and the clamped COR 0.83's).
     """
@@ -125,7 +129,7 @@ class ZoneOptions:
     zone_sigma: float = 0.05
     speeds: Sequence[float] = (20.0, 30.0, 40.0)
     racket_speed: float | None = None
-    reference: float = 0.75
+    reference: float | None = None
     pivot: float = SWING_WEIGHT_AXIS
     swing_exponent: float = SWING_EXPONENT
     ball_mass: float | None = None

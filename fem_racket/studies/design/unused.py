@@ -24,6 +24,7 @@ from typing import Any
 from fem_racket.studies.design.methods import METHODS
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
 from fem_racket.studies.design.zone import ZONES
+from fem_racket.studies.map_options import check_at_rest
 from fem_racket.validation import InputError, check_choice, show
 
 __all__ = [
@@ -80,8 +81,6 @@ RULES: tuple[tuple[str, str, Callable[[Options], bool], str], ...] = (
      "with zone 'node': the node zone spans +-2.5 zone_sigma about mode 1's node"),
     ("zone_options", "zone_sigma", lambda o: o.zone_options.zone == "node",
      "with zone 'uniform': only the node zone is a Gaussian"),
-    ("zone_options", "reference", lambda o: o.zone_options.racket_speed is not None,
-     "without racket_speed: the racket is at rest (no swing to refer to)"),
     ("zone_options", "pivot", lambda o: o.zone_options.racket_speed is not None,
      "without racket_speed: the racket is at rest (no swing to turn about a pivot)"),
     ("zone_options", "swing_exponent", lambda o: o.zone_options.racket_speed is not None,
@@ -128,7 +127,8 @@ def _default(kind: Any, name: str) -> Any:
 def refuse_unused(options: Options) -> None:
     """Refuse the first option of :data:`RULES` set where ``options`` would not use it, and
     the added masses' groups in ``vary`` without added masses (the names the rules read
-    checked first)."""
+    checked first), and a swing's reference given at rest (in every command's words,
+    :func:`~fem_racket.studies.map_options.check_at_rest`)."""
     v = options.variables
     check_choice("zone", options.zone_options.zone, ZONES)
     for name in options.goals.objectives:
@@ -139,6 +139,8 @@ def refuse_unused(options: Options) -> None:
                 f"vary = {show(list(v.vary))} is not allowed without mass_positions: there is "
                 f"no added mass to vary ({group!r})"
             )
+    z = options.zone_options
+    check_at_rest(0.0 if z.racket_speed is None else z.racket_speed, z.reference)
     law = "'linear'" if options.law is None else show(options.law.name)
     for group, name, used, why in RULES:
         part = getattr(options, group)

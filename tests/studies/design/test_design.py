@@ -16,6 +16,7 @@ from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.swing import SwingModel
 from fem_racket.studies.design.variables import Constraint
 from fem_racket.studies.design.zone import gaussian_zone, uniform_zone
+from fem_racket.studies.sweep_options import SweepRun
 from fem_racket.validation import InputError
 
 
@@ -164,6 +165,16 @@ def test_swing_speed_law():
 def test_bad_problem(variables, kwargs, needle):
     with pytest.raises(InputError, match=needle):
         paper_problem(None, VariableOptions(**variables), **kwargs)
+
+
+def test_a_pool_of_no_process_is_refused_as_the_sweep_refuses_it():
+    # F17: the sweep's line (fem_racket.studies.sweep_options), before any design runs
+    p = small(speeds=(30.0,), zone=uniform_zone(0.6, 0.9, 3))
+    for workers in (0, -1, 1.5):
+        with pytest.raises(InputError, match=rf"^workers = {workers} is not allowed: must be an"):
+            Evaluator(p, backend="processes", workers=workers)
+        with pytest.raises(InputError, match=rf"^workers = {workers} is not allowed: must be an"):
+            SweepRun(workers=workers)
 
 
 def test_process_pool_gives_the_serial_results():

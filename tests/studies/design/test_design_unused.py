@@ -11,6 +11,7 @@ from fem_racket.studies.design.options import DesignOptions, SearchOptions, Vari
 from fem_racket.studies.design.paper_problem import paper_problem
 from fem_racket.studies.design.solvers import optimize
 from fem_racket.studies.design.unused import RULES, SEARCH_RULES
+from fem_racket.studies.map_options import check_at_rest
 from fem_racket.validation import InputError
 
 #: Keywords of design_problem -> the option named in the refusal.
@@ -134,3 +135,17 @@ def test_sensitivity_refuses_what_one_output_does_not_use():
     problem = design_problem(vary=("ei",), link_ei=True, objectives=("power_region",))
     with pytest.raises(InputError, match="objective = \\['power_region'\\]"):
         sobol_indices(problem, output="mass_kg", designs=8)
+
+
+def test_a_reference_at_rest_is_refused_in_every_command_s_words():
+    # given at the default too (no longer a 0.75 default of its own), with simulate's line;
+    # a swing without one takes 0.75, as before (the same problem, digest included)
+    with pytest.raises(InputError) as ours:
+        design_problem(reference=0.75)
+    with pytest.raises(InputError) as theirs:
+        check_at_rest(0.0, 0.75)  # simulate's, sweep's and map's
+    line = "reference = 0.75 x/L is not allowed without a swing: give racket_speed (--racket-speed)"
+    assert str(ours.value) == str(theirs.value) == line
+    swung = design_problem(racket_speed=10.0)
+    assert swung.swing.reference == 0.75
+    assert swung.digest == design_problem(racket_speed=10.0, reference=0.75).digest
