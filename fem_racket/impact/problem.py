@@ -31,7 +31,6 @@ from typing import Any
 from fem_racket.contact.bed_ball import kawazoe_ball
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball, LinearContact
-from fem_racket.contact.presets import get_law
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import ClampedHead
@@ -47,6 +46,7 @@ from fem_racket.impact.problem_checks import (
     check_strings,
     check_structure,
     check_swing,
+    named_law,
 )
 from fem_racket.impact.swing import Swing, closing_speed
 from fem_racket.strings.bed import StringBed
@@ -203,8 +203,7 @@ class ImpactProblem:
         impact = Impact(fields.pop("position", 0.75), fields.pop("speed", 20.0))
         mass = fields.pop("ball_mass", None)
         ball = Ball() if mass is None else Ball(mass)
-        law = fields.pop("law", None)
-        law = get_law(law) if isinstance(law, str) else law
+        law = named_law(fields.pop("law", None), fields.get("strings"))
         hand = fields.pop("hand", None)
         window = fields.pop("shock_window", None)
         if hand is None and window is not None:

@@ -15,11 +15,12 @@ import numpy as np
 
 from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.law import ContactLaw
-from fem_racket.contact.presets import check_linear_options
+from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.hand import check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import CENTRE, ClampedHead
 from fem_racket.impact.incidence import check_incidence, check_kcb_normal
+from fem_racket.impact.incidence_idle import refuse_idle_incidence
 from fem_racket.impact.offaxis import check_offsets
 from fem_racket.impact.swing import check_kcb_closing, check_swing_speeds
 from fem_racket.strings.bed import StringBed
@@ -28,6 +29,7 @@ from fem_racket.strings.reach import on_bed, strike_interval
 from fem_racket.validation import InputError, show
 
 __all__ = [
+    "LUMPED",
     "check_build_options",
     "bed_coordinates",
     "check_held",
@@ -35,13 +37,18 @@ __all__ = [
     "check_offset",
     "check_strings",
     "check_structure",
+    "named_law",
     "refuse_separation",
 ]
+
+#: Why the lumped K_CB's options (kcb, zeta, the linear law) are refused with a string bed.
+LUMPED = "the bed replaces the lumped K_CB (give the ball's own law as law)"
 
 
 def check_build_options(options: dict[str, Any], problem_class: type) -> None:
     """Refuse an option of ``ImpactProblem.build`` that is none of its own nor a field of
-    ``problem_class`` after structure, impact, ball and law (which ``build`` makes)."""
+    ``problem_class`` after structure, impact, ball and law (which ``build`` makes), and a
+    head-on, spinless incidence's contact parameters (:func:`refuse_idle_incidence`)."""
     own = ["elements", "position", "speed", "ball_mass", "law", "hand", "shock_window"]
     fields = [f.name for f in dataclass_fields(problem_class)][4:]
     for key in options:
@@ -50,6 +57,16 @@ def check_build_options(options: dict[str, Any], problem_class: type) -> None:
                 f"{key} is not an option of ImpactProblem.build: must be one of "
                 f"{', '.join(own + fields)}"
             )
+    refuse_idle_incidence(options.get("incidence"))
+
+
+def named_law(law: Any, strings: Any) -> ContactLaw | None:
+    """``law`` (a ContactLaw, a law's name or None) as a ContactLaw, None for the paper's linear
+    law; that law named with a string bed (``strings`` not None) is refused as kcb and zeta are:
+    its K_CB is the ball and strings together."""
+    if law == "linear" and strings is not None:
+        raise InputError(f"law = 'linear' is not allowed with a string bed: {LUMPED}")
+    return get_law(law) if isinstance(law, str) else law
 
 
 def check_law(problem: Any) -> ContactLaw:
@@ -200,7 +217,7 @@ def check_strings(problem: Any) -> None:
     if not isinstance(problem.strings, StringBed):
         raise InputError(f"strings = {problem.strings!r} is not allowed: must be a StringBed")
     at_rest = "the strung racket is free and at rest"
-    lumped = "the bed replaces the lumped K_CB (give the ball's own law as law)"
+    lumped = LUMPED
     refused = {
         "hand": (problem.held, at_rest),
         "swing": (problem.swing is not None, at_rest),

@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence_idle import refuse_idle_incidence
 from fem_racket.impact.oblique.solve import (
     NormalImpact,
     ObliqueResult,
@@ -58,6 +59,7 @@ def simulate_oblique(
     """
     if not isinstance(incidence, Incidence):
         raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence")
+    refuse_idle_incidence(incidence)
     v = check_positive("speed", speed, "m/s")
     if clamped:
         return oblique_on(clamped_normal(frame, incidence.components(v)[0], kwargs), incidence, v)

@@ -29,6 +29,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence_idle import refuse_idle_contact
 from fem_racket.impact.problem_checks import bed_coordinates
 from fem_racket.impact.strung.solve import STRUNG_OPTIONS
 from fem_racket.strings.bed import StringBed
@@ -74,6 +75,7 @@ def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
     (:func:`fem_racket.impact.strung.solve.check_strung`, asked on the sweep's first case
     before it runs).
     """
+    refuse_idle_contact({n: values.get(n) for n in OBLIQUE_AXES})  # as simulate's
     strings = given(values, STRING_AXES)
     if not strings:
         return

@@ -6,7 +6,7 @@ import csv
 import json
 
 import pytest
-from clirun import run
+from clirun import run, run_json, run_ok
 
 from fem_racket.cli import build_parser
 from fem_racket.cli.common import significant
@@ -66,6 +66,18 @@ def test_negative_cor_is_explained_and_json_keeps_its_keys(capsys):
     assert "negative: the ball keeps moving forward" in table(out)["rebound speed"]
     _, plain, _ = run(capsys, "simulate")
     assert table(plain)["rebound speed"].endswith("m/s")  # no note when COR > 0
+
+
+def test_negative_rebound_of_a_receding_racket_is_not_called_a_negative_cor(capsys):
+    # a racket receding at 10 m/s: COR > 0 (the ball rebounds from it), yet the ball keeps
+    # moving forward; the note says why, not "COR < 0"
+    data = run_json(capsys, "simulate", "--racket-speed", "-10")
+    assert data["cor"] > 0 and data["rebound_speed_m_s"] < 0
+    row = table(run_ok(capsys, "simulate", "--racket-speed", "-10"))["rebound speed"]
+    assert row.endswith(
+        "(negative: the ball keeps moving forward, the racket recedes faster than it rebounds)"
+    )
+    assert "COR < 0" not in row
 
 
 # -- simulate --out and --output-step ----------------------------------------------------------

@@ -205,8 +205,9 @@ def _held_rows(summary: dict[str, Any], window: float) -> list[tuple[str, str, s
 def _outcome_rows(summary: dict[str, Any], swinging: bool) -> list[tuple[str, str, str]]:
     """COR, contact time, rebound speed, peak force, impact point, swing and speed."""
     rebound = "m/s"
-    if summary["rebound_speed_m_s"] < 0:
-        rebound += " (negative: the ball keeps moving forward, COR < 0)"
+    if summary["rebound_speed_m_s"] < 0:  # COR < 0, or a racket receding faster than the
+        why = "COR < 0" if summary["cor"] < 0 else "the racket recedes faster than it rebounds"
+        rebound += f" (negative: the ball keeps moving forward, {why})"  # ball rebounds from it
     return [
         *core_rows(summary, rebound),
         *_twist_rows(summary),

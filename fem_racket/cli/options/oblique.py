@@ -18,6 +18,7 @@ from fem_racket.cli.common import (
     significant,
     swing_from_args,
 )
+from fem_racket.cli.options.incidence_checks import check_normal_speed, refuse_idle_options
 from fem_racket.cli.options.output import print_result, write_result_files
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.impact.incidence import (
@@ -113,23 +114,11 @@ def incidence_from_args(args: argparse.Namespace) -> Incidence | None:
     stroke = any(getattr(args, d, None) is not None for d in STROKE_OPTIONS)
     if not given and not stroke and not getattr(args, "clamped", None):
         return None
-    incidence = Incidence(**given)
-    if not stroke:
-        _check_normal_speed(args, incidence)
+    incidence = Incidence(**given)  # each value in its range first
+    if not stroke:  # a stroke's face and path angles make the ball oblique
+        refuse_idle_options(args, {dest: o[1] for dest, o in OBLIQUE_OPTIONS.items()})
+        check_normal_speed(args, incidence)
     return incidence
-
-
-def _check_normal_speed(args: argparse.Namespace, incidence: Incidence) -> None:
-    """Refuse an ``--angle`` (or ``--side-angle``) that leaves the ball's normal speed below the
-    paper's K_CB range when K_CB follows from it (no --kcb, no --law, no string bed, the
-    racket at rest; :func:`~fem_racket.impact.incidence.check_kcb_normal`), before the work."""
-    from fem_racket.impact.incidence import check_kcb_normal
-    from fem_racket.strings.options import STRING_OPTIONS
-
-    own_kcb = getattr(args, "kcb", None) is not None or getattr(args, "law", None) != "linear"
-    bed = any(getattr(args, d, None) not in (None, False) for d in STRING_OPTIONS)
-    if not (own_kcb or bed or getattr(args, "racket_speed", 0.0) != 0.0):
-        check_kcb_normal(incidence, args.speed)
 
 
 def stroke_from_args(args: argparse.Namespace) -> Stroke | None:

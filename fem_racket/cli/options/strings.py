@@ -187,6 +187,8 @@ def strung_from_args(
         kwargs["swing"] = swing_from_args(args, model.mesh.length)
     if incidence is not None:
         kwargs["incidence"] = incidence
+    if "law" in given_options(args) and args.law == "linear":  # refused by the library, as
+        kwargs["law"] = "linear"  # kcb and zeta are (the linear law's K_CB is ball and strings)
     return simulate(model, strings=strings, **kwargs)
 
 
