@@ -33,6 +33,7 @@ from fem_racket.validation import AccuracyError, InputError, check_choice, check
 
 __all__ = [
     "ATOL_RANGE",
+    "GRID_STEPS",
     "PHYSICAL_MAX_ELEMENTS",
     "RTOL_RANGE",
     "SOLVERS",
@@ -58,6 +59,9 @@ ATOL_RANGE = (1e-16, 1e-8)
 #: Most elements for the physical basis (every FE DOF in the BDF system): its undamped high
 #: modes make CVODE take 3 s at 20 elements, 23 s at 40 and minutes at 80.
 PHYSICAL_MAX_ELEMENTS = 40
+#: Output grid of the BDF paths per estimated contact time when no output times are asked (the
+#: summary's peak force is taken on it).
+GRID_STEPS = 200
 
 
 def check_solver_settings(solver: str, basis: str, elements: int, rtol: float, atol: float) -> None:
@@ -87,7 +91,7 @@ def _bdf_setup(
     c = system.event_vector(run.separation)
     t_est = system.contact_time_estimate()
     t_max = 20.0 * t_est if run.t_max is None else run.t_max
-    step = t_est / 200.0 if run.output_step is None else run.output_step
+    step = t_est / GRID_STEPS if run.output_step is None else run.output_step
     tspan = np.arange(0.0, t_max + 0.5 * step, step)
     return A, c, tspan, system.initial_state()
 

@@ -21,7 +21,10 @@ import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 
-__all__ = ["LawTrajectory", "solve_law_cvode"]
+__all__ = ["GRID_STEPS", "LawTrajectory", "solve_law_cvode"]
+
+#: Stored times per estimated contact time when no output step is given.
+GRID_STEPS = 400
 
 
 @dataclass(frozen=True, eq=False)
@@ -75,7 +78,7 @@ def solve_law_cvode(
     t_max : float, optional
         Give up at this time [s]; 4 x the law's estimate by default.
     output_step : float, optional
-        Spacing of stored times [s]; by default 400 points per estimated contact time.
+        Spacing of stored times [s]; by default :data:`GRID_STEPS` per estimated contact time.
     """
     from fem_racket.impact.ode.integrators import cvode_bdf
     from fem_racket.impact.system import no_separation
@@ -89,7 +92,7 @@ def solve_law_cvode(
     meff = 1.0 / (1.0 / ball_mass + np.sum(a[omega == 0] ** 2))
     t_est = float(law.contact_time_estimate(meff, speed))
     t_max = 4.0 * t_est if t_max is None else t_max
-    step = t_est / 400.0 if output_step is None else output_step
+    step = t_est / GRID_STEPS if output_step is None else output_step
     base = np.zeros((size, size))
     base[:n, n : 2 * n] = np.eye(n)
     base[n : 2 * n, :n] = -np.diag(w2)
