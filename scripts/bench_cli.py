@@ -23,6 +23,10 @@ runs the kernels interpreted), the 4 200-impact, 200-frame law sweep <= ~0.2 ms 
 (0.84 s), and with ``--million`` the 10^6-impact sweep (``--speed 20:40:1000 --position
 0.5:0.95:1000``, run ``--repeat`` times like the others) <= 10 s.
 
+With ``--strung``, instead: ``config --check`` and ``simulate --config`` of a strung racket's run
+file (:data:`STRUNG_RUN`): the string bed's reach check (its edge from the head outline, no
+membrane) and one strung impact.
+
 With ``--help-commands``, instead: ``fem-racket --help`` and every ``fem-racket COMMAND --help``
 (what a user waits for before the first line of help, or for a usage error: the same parser is
 built), each with the package modules and the heavy libraries (:data:`HEAVY`) it imports (one
@@ -30,7 +34,7 @@ built), each with the package modules and the heavy libraries (:data:`HEAVY`) it
 ``--help`` of the same tree in the same run.
 
 Usage: python scripts/bench_cli.py [--quick] [--repeat N] [--tree DIR ...] [--no-cache]
-       [--million] [--help-commands]  (with --quick: --help and simulate --help, once each)
+       [--million] [--strung] [--help-commands]  (with --quick: --help and simulate once each)
 """
 
 from __future__ import annotations
@@ -65,6 +69,18 @@ MILLION = {
     "sweep of 10^6 impacts": (["sweep", *BIG, "--out", "{out}/m.nc", "--quiet"], 10.0),
 }
 QUICK = {"--help": COMMANDS["--help"], "simulate": COMMANDS["simulate"]}
+#: A strung racket's run file: the paper's racket as strung (246 N, 16x19; issue 25), 0.76 L.
+STRUNG_RUN = '[strings]\ntension_n = 246.0\npattern = "16x19"\n[impact]\nposition_x_over_l = 0.76\n'
+
+
+def strung_commands(run_file: Path) -> dict[str, tuple[list[str], None]]:
+    """The commands of ``--strung`` on the run file ``run_file``."""
+    return {
+        "config --check (strung run file)": (["config", "--check", str(run_file)], None),
+        "simulate --config (strung run file)": (["simulate", "--config", str(run_file)], None),
+    }
+
+
 #: Third-party libraries too heavy for a command's ``--help`` (each with its submodules).
 HEAVY = ("numpy", "scipy", "skfem", "meshio", "pyvista", "sksundae", "matplotlib", "xarray")
 HEAVY += ("dask", "numba")
@@ -198,6 +214,9 @@ def main(argv: list[str] | None = None) -> list[dict]:
         "--million", action="store_true", help="also the 10^6-impact sweep (~10-40 s a run)"
     )
     parser.add_argument(
+        "--strung", action="store_true", help="instead: a strung run file's check and simulate"
+    )
+    parser.add_argument(
         "--help-commands",
         action="store_true",
         help="instead: --help of every command, what each imports and its time",
@@ -210,6 +229,9 @@ def main(argv: list[str] | None = None) -> list[dict]:
     rows: list[dict] = []
     with tempfile.TemporaryDirectory() as tmp:
         scratch = Path(tmp)
+        if args.strung:
+            (scratch / "strung.toml").write_text(STRUNG_RUN)
+            commands = strung_commands(scratch / "strung.toml")
         envs = {}
         for i, tree in enumerate(trees):
             envs[tree] = environment(tree, None if args.no_cache else scratch / f"pyc{i}")

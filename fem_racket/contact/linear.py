@@ -261,25 +261,22 @@ class LinearContact(ContactLaw):
 
     def for_ball(self, ball_mass: float) -> LinearContact:
         """The same K_CB and C_CB, zeta referred to a ball of ``ball_mass`` [kg] (itself at its
-        own mass; one copy per mass, so problems sharing a law share it). A problem refers its
-        law to its ball, so its settings state the zeta of the ball that struck; refused (one
-        line naming both masses) where C_CB damps that ball critically or more."""
+        own mass). A problem refers its law to its ball, so its settings state the zeta of the
+        ball that struck; refused (one line naming both masses) where C_CB damps that ball
+        critically or more."""
         m = float(ball_mass)
         if m == self.ball_mass:
             return self
-        memo = vars(self).setdefault("_for_ball", {})
-        if m not in memo:
-            scalar = np.ndim(self.stiffness) == 0 and np.ndim(self.zeta) == 0
-            root = math.sqrt(m * self.stiffness) if scalar else np.sqrt(m * self.stiffness)
-            zeta = self.damping() / (2.0 * root)
-            if np.any(np.asarray(zeta) >= 1.0):
-                raise InputError(
-                    f"ball mass = {show(m)} kg is not allowed with contact law {self.label()}: "
-                    f"its C_CB damps that ball at zeta = {float(np.max(zeta)):.4g}, must be < 1 "
-                    f"(its zeta is referred to its ball_mass {show(self.ball_mass)} kg)"
-                )
-            memo[m] = replace(self, zeta=zeta, ball_mass=m)
-        return memo[m]
+        scalar = np.ndim(self.stiffness) == 0 and np.ndim(self.zeta) == 0
+        root = math.sqrt(m * self.stiffness) if scalar else np.sqrt(m * self.stiffness)
+        zeta = self.damping() / (2.0 * root)
+        if np.any(np.asarray(zeta) >= 1.0):
+            raise InputError(
+                f"ball mass = {show(m)} kg is not allowed with contact law {self.label()}: "
+                f"its C_CB damps that ball at zeta = {float(np.max(zeta)):.4g}, must be < 1 "
+                f"(its zeta is referred to its ball_mass {show(self.ball_mass)} kg)"
+            )
+        return replace(self, zeta=zeta, ball_mass=m)
 
     def elastic(self) -> LinearContact:
         """zeta = 0: the spring without its dashpot."""

@@ -9,17 +9,20 @@ ClampedHead`): the ball against a rigid support, or against a string bed clamped
   the integrator's steps.
 
 The problems of one head are solved in one call, by the general integrator those of one law
-object (the paper's law, whose K_CB follows the speed, one problem a call); each case on its
-own: its numbers do not depend on the others asked with it. The ODE solvers refuse a clamped head.
+(laws equal by value, :func:`law_key`, whatever their objects; the paper's law, whose K_CB
+follows the speed, one problem a call); each case on its own: its numbers do not depend on the
+others asked with it. The ODE solvers refuse a clamped head.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Hashable, Sequence
+from dataclasses import fields
 from functools import lru_cache
 
 import numpy as np
 
+from fem_racket.contact.law import ContactLaw
 from fem_racket.impact.clamped import ClampedHead, ClampedImpact
 from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.general.integrator import solve_general
@@ -28,7 +31,7 @@ from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.settings import Settings
 from fem_racket.impact.strung.point import clamped_point
 
-__all__ = ["head_modes", "solve_clamped"]
+__all__ = ["head_modes", "law_key", "solve_clamped"]
 
 
 @lru_cache(maxsize=8)
@@ -95,6 +98,18 @@ def _general(problems: list[ImpactProblem], settings: Settings) -> list[ClampedI
     return results
 
 
+def law_key(law: ContactLaw) -> tuple[Hashable, ...]:
+    """``law`` by value: its class and each field, a number or array by its type, shape and
+    bytes (two laws with equal keys give the same force every bit, whatever their objects)."""
+    key: list[Hashable] = [type(law)]
+    for f in fields(law):  # type: ignore[arg-type]
+        value = getattr(law, f.name)
+        array = np.asarray(value)
+        numeric = array.dtype.kind in "biuf"
+        key.append((array.dtype.str, array.shape, array.tobytes()) if numeric else value)
+    return tuple(key)
+
+
 def solve_clamped(
     method: str, problems: Sequence[ImpactProblem], settings: Settings
 ) -> list[ClampedImpact]:
@@ -103,7 +118,7 @@ def solve_clamped(
     solve = {"exact": _exact, "general": _general}[method]
     groups: dict[tuple, list[int]] = {}
     for i, p in enumerate(problems):
-        law = p.separation if method == "exact" else (i if p.law is None else id(p.law))
+        law = p.separation if method == "exact" else (i if p.law is None else law_key(p.law))
         groups.setdefault((id(p.structure), law), []).append(i)
     out: list = [None] * len(problems)
     for rows in groups.values():

@@ -29,6 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from fem_racket.lanczos import start_vector
+from fem_racket.strings.edge import bed_edge, clearance
 from fem_racket.validation import InputError
 
 __all__ = ["BedMesh", "bed_mesh", "disk_load", "unit_modes"]
@@ -61,7 +62,7 @@ class BedMesh:
     edge_lines : (ndarray, ndarray)
         The meshed bed's straight edges as half-planes ``n . p >= h``: inward unit normals n,
         shape (k, 2), and levels h, shape (k,) [m] (the bed is the convex polygon of the
-        ellipse's boundary nodes).
+        ellipse's boundary nodes; :func:`fem_racket.strings.edge.bed_edge`).
     """
 
     basis: object
@@ -79,12 +80,6 @@ class BedMesh:
     def edge_points(self) -> np.ndarray:
         """(x, y) of the edge DOFs from the head's centre [m], shape (n_edge, 2)."""
         return np.asarray(self.basis.doflocs[:, self.edge]).T
-
-    def clearance(self, points: np.ndarray) -> np.ndarray:
-        """Distance [m] of each point (x, y) [m], shape (p, 2), inside the meshed bed's edge
-        (negative outside it)."""
-        n, h = self.edge_lines
-        return np.min(np.atleast_2d(points) @ n.T - h, axis=1)
 
 
 @lru_cache(maxsize=16)
@@ -115,17 +110,8 @@ def bed_mesh(length_m: float, width_m: float, refine: int) -> BedMesh:
     full = [asm(f, basis) for f in (xx, yy, mass)]
     sub = [m[interior][:, interior].tocsr() for m in full]
     ib = [m[interior][:, edge].tocsr() for m in full[:2]]
-    return BedMesh(basis, *sub, interior, (ax, ay), *ib, edge, _edge_lines(mesh))
-
-
-def _edge_lines(mesh) -> tuple[np.ndarray, np.ndarray]:
-    """Inward unit normals and levels of the mesh's boundary facets (the origin is inside)."""
-    a, b = (mesh.p[:, i].T for i in mesh.facets[:, mesh.boundary_facets()])
-    t = b - a
-    n = np.column_stack([-t[:, 1], t[:, 0]]) / np.hypot(t[:, 0], t[:, 1])[:, None]
-    h = np.einsum("ij,ij->i", n, a)
-    n[h > 0.0] *= -1.0  # inward: the centre (0, 0) has n . 0 = 0 >= h
-    return n, -np.abs(h)
+    lines = bed_edge(length_m, width_m, refine)
+    return BedMesh(basis, *sub, interior, (ax, ay), *ib, edge, lines)
 
 
 def disk_load(mesh: BedMesh, points: np.ndarray, radius: float, full: bool = False) -> np.ndarray:
@@ -134,7 +120,7 @@ def disk_load(mesh: BedMesh, points: np.ndarray, radius: float, full: bool = Fal
     meshed bed is refused (:func:`fem_racket.strings.reach.on_bed` first, to name the
     reachable points)."""
     pts = np.atleast_2d(points)
-    off = mesh.clearance(pts) < radius
+    off = clearance(mesh.edge_lines, pts) < radius
     if np.any(off):
         x0, y0 = pts[np.argmax(off)]
         raise InputError(

@@ -39,7 +39,7 @@ from typing import Any
 import numpy as np
 
 from fem_racket.extras import require
-from fem_racket.studies.constants import BACKENDS
+from fem_racket.studies.backends import BACKENDS
 from fem_racket.studies.pool import pin_blas_threads, run_pool
 from fem_racket.validation import InputError, check_choice, show
 

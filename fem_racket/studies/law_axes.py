@@ -8,7 +8,8 @@ them takes one value (fixed) or several (a dimension), like the impact's paramet
 with different parameter values is one law whose parameters are arrays of one value per case
 (:func:`case_law`): the general integrator advances them together. Each value is checked
 against its bounds when parsed, and every combination of the grid against the law's conditions
-(k2 >= k1 ...) before any work (:func:`check_law_grid`).
+(k2 >= k1 ...) before any work (:func:`check_law_grid`), as is the law referred to every ball
+mass of the grid (:func:`struck_laws`: a LinearContact's zeta is that ball's).
 """
 
 from __future__ import annotations
@@ -29,6 +30,8 @@ __all__ = [
     "check_law_grid",
     "check_law_value",
     "family_of",
+    "law_attributes",
+    "struck_laws",
     "sweep_law_values",
 ]
 
@@ -47,10 +50,31 @@ def check_law_value(name: str, value: Any) -> float:
     return LAW_PARAMETERS[name][1].check(value)
 
 
+def struck_laws(law: ContactLaw, ball_mass: Any) -> list[ContactLaw]:
+    """``law`` as each ball of ``ball_mass`` [kg] (a number, or the swept values) meets it
+    (:meth:`~fem_racket.contact.law.ContactLaw.for_ball`: a LinearContact keeps K_CB and C_CB,
+    its zeta that ball's; a ball it damps critically refused in one line, as simulate does)."""
+    return [law.for_ball(float(m)) for m in np.atleast_1d(ball_mass)]
+
+
+def law_attributes(law: ContactLaw, ball_mass: Any) -> dict[str, Any]:
+    """The law as it describes itself, keys ``contact_*``, as the balls of ``ball_mass`` [kg]
+    meet it (:func:`struck_laws`): a value that differs between swept ball masses is listed,
+    one per ball mass in their order."""
+    each = [struck.describe() for struck in struck_laws(law, ball_mass)]
+    return {
+        f"contact_{k}": v if all(d[k] == v for d in each) else [d[k] for d in each]
+        for k, v in each[0].items()
+    }
+
+
 def check_law_grid(law: ContactLaw | None, values: Mapping[str, Any]) -> None:
     """Check every combination of the law parameters in ``values`` (a number or a 1-D array of
-    swept values each) against the law's bounds and conditions, before any work; a one-line
-    :class:`InputError` names the first case that fails (e.g. k2 < k1)."""
+    swept values each) against the law's bounds and conditions, and the law referred to every
+    ball mass given (:func:`struck_laws`), before any work; a one-line :class:`InputError`
+    names the first case that fails (e.g. k2 < k1)."""
+    if law is not None and values.get("ball_mass") is not None:
+        struck_laws(law, values["ball_mass"])
     family = family_of(law)
     if family is None:
         return

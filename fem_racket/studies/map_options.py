@@ -20,8 +20,8 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
-from fem_racket.studies.constants import MAP_POSITIONS as DEFAULT_POSITIONS
-from fem_racket.studies.constants import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
+from fem_racket.studies.map_defaults import MAP_POSITIONS as DEFAULT_POSITIONS
+from fem_racket.studies.map_defaults import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError, check_range, show
 
 __all__ = [

@@ -172,6 +172,9 @@ class RacketMap(MapView):
     spots : SweetSpots
     length : float
         Racket length L [m].
+    law : ContactLaw or None
+        The contact law as the map's ball meets it (a LinearContact referred to that ball:
+        :meth:`~fem_racket.contact.linear.LinearContact.for_ball`); None: the paper's.
     """
 
     name: str
@@ -186,8 +189,9 @@ class RacketMap(MapView):
     law: Any = None
 
     def law_summary(self) -> dict[str, Any]:
-        """The contact law's name and parameters, units in the keys (``linear``: the paper's
-        K_CB from the closing speed, or as given, and zeta)."""
+        """The contact law's name and parameters, units in the keys, as the map's ball meets
+        it (a LinearContact's zeta that ball's; ``linear``: the paper's K_CB from the closing
+        speed, or as given, and zeta)."""
         return {"law": "linear"} if self.law is None else self.law.describe()
 
     def summary(self, curves: bool = True) -> dict[str, Any]:
@@ -285,4 +289,5 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
         power_fraction=power_fraction,
     )
     v_r = np.asarray(v_r, dtype=float)
-    return RacketMap(setup.name, x, e, vo, v_r, speed, swing, spots, length, law)
+    struck = None if law is None else law.for_ball(ball_mass)  # as each case's problem holds it
+    return RacketMap(setup.name, x, e, vo, v_r, speed, swing, spots, length, struck)

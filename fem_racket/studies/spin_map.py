@@ -27,9 +27,9 @@ from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
-from fem_racket.studies.constants import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
 from fem_racket.studies.face_map import FaceGrid, increasing
 from fem_racket.studies.map_options import check_map_points
+from fem_racket.studies.spin_defaults import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
 from fem_racket.validation import InputError, check_positive
 
 __all__ = [

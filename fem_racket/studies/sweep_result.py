@@ -29,7 +29,7 @@ from fem_racket.outputs.labels import label
 from fem_racket.studies.cases import ALL_VARIABLES, MODES_COLUMN, result_variables
 from fem_racket.studies.grid import SweepSpec, parameter
 from fem_racket.studies.grid_values import pattern_label
-from fem_racket.studies.law_axes import family_of
+from fem_racket.studies.law_axes import family_of, law_attributes
 from fem_racket.studies.sweep_physics import STRING_AXES, fixed_label, given, regime_label
 
 __all__ = ["KCB_LAW", "SweepResult"]
@@ -69,7 +69,7 @@ def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
     if spec.law is None:
         params["contact_law"] = "linear"
     elif family_of(spec.law) is None:  # no named parameters: the law as it describes itself
-        params.update({f"contact_{k}": v for k, v in spec.law.describe().items()})
+        params.update(law_attributes(spec.law, spec.values["ball_mass"]))  # to the balls struck
     else:  # its parameters: fixed ones above, swept ones are dimensions
         params["contact_law"] = spec.law.name
     if spec.law is None and spec.solver == "exact":

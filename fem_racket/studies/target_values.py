@@ -8,8 +8,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from fem_racket.studies.constants import KEEP, RANKED, TARGETS
 from fem_racket.studies.customise import Target
+from fem_racket.studies.targets import KEEP, RANKED, TARGETS
 from fem_racket.validation import InputError, work_begins
 
 __all__ = [

@@ -10,7 +10,8 @@ so load on the machine cannot fail it. What each command must not import, and wh
   file, plotting or solver library; numpy only through the contact laws' registry (the commands
   taking a law list each law's parameters from its class), none for the commands without one.
   The names, choices and defaults the parsers show live in small constant modules of the layers
-  that own them (``frame/constants.py``, ``impact/constants.py``, ``studies/constants.py`` ...).
+  that own them (``frame/constants.py``, ``impact/constants.py``, ``studies/backends.py``,
+  ``studies/design/methods.py`` ...).
 - ``simulate`` without ``--out``: no scipy at all (the modes come from numpy's dense eigen-solver
   on the frame's diagonals, the engine is numpy), and it writes nothing (no xarray, netCDF,
   dask, plotting or VTK).

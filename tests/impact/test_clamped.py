@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from fem_racket.contact.bed_ball import kawazoe_ball
@@ -137,3 +138,48 @@ def test_a_clamped_head_has_no_frame_model(bed, standard_model):
 
     with pytest.raises(InputError, match="models is not allowed: must be one or more FrameModels"):
         ProblemBatch.of(_problem(RIGID, 20.0))
+
+
+def test_equal_laws_are_solved_in_one_call(monkeypatch):
+    # The general integrator takes the problems of one law in one call, laws compared by value
+    # (clamped_solve.law_key): a law referred to the problems' 0.1 kg ball is a fresh copy per
+    # problem, a second object with its parameters is the same law; each case's numbers are
+    # those of the case alone, bit for bit. The law at its own ball is another law: its call.
+    import fem_racket.impact.clamped_solve as clamped_solve
+
+    calls = []
+    real = clamped_solve.solve_general
+
+    def counted(law, rec, speed, **options):
+        calls.append(len(speed))
+        return real(law, rec, speed, **options)
+
+    a, b = LinearContact(3e4, 0.1), LinearContact(3e4, 0.1)
+    heavy = Ball(0.1)
+    problems = [_problem(RIGID, v, ball=heavy, law=law) for v, law in ((15.0, a), (25.0, b))]
+    problems += [_problem(RIGID, 35.0, ball=heavy, law=a), _problem(RIGID, 20.0, law=a)]
+    assert len({id(p.law) for p in problems[:3]}) == 3  # no copy kept to be shared
+    assert set(vars(a)) == {"stiffness", "zeta", "ball_mass", "separation"}
+    monkeypatch.setattr(clamped_solve, "solve_general", counted)
+    many = make_solver("general").solve_many(problems)
+    assert calls == [3, 1]
+    for p, r in zip(problems, many, strict=True):
+        one = make_solver("general").solve(p)
+        assert (r.cor, r.contact_time) == (one.cor, one.contact_time)
+        assert all(np.array_equal(x, y) for x, y in zip(
+            (r.time, r.deflection, r.force), (one.time, one.deflection, one.force), strict=True
+        ))  # fmt: skip
+
+
+def test_law_key_is_the_law_s_value():
+    from fem_racket.impact.clamped_solve import law_key
+
+    law = LinearContact(3e4, 0.1)
+    assert law_key(law.for_ball(0.1)) == law_key(LinearContact(3e4, 0.1).for_ball(0.1))
+    assert law_key(law.for_ball(0.1)) != law_key(law)  # zeta and ball mass of another ball
+    assert law_key(law) != law_key(LinearContact(3e4, 0.1, separation="force"))
+    assert law_key(law) != law_key(get_law("hunt-crossley"))
+    batch = LinearContact(np.array([3e4, 4e4]), np.array([0.1, 0.2]))  # a batch's arrays
+    same = LinearContact(np.array([3e4, 4e4]), np.array([0.1, 0.2]))
+    assert hash(law_key(batch)) == hash(law_key(same)) and law_key(batch) == law_key(same)
+    assert law_key(batch) != law_key(LinearContact(np.array([3e4, 4e4]), np.array([0.1, 0.3])))

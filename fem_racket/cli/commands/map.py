@@ -51,8 +51,8 @@ from fem_racket.cli.options.runfile_named import where_set
 from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.impact.constants import DEFAULT_TOLERANCE, SEPARATION_EVENTS
 from fem_racket.io.constants import PRESETS
-from fem_racket.studies.constants import MAP_POSITIONS as DEFAULT_POSITIONS
-from fem_racket.studies.constants import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
+from fem_racket.studies.map_defaults import MAP_POSITIONS as DEFAULT_POSITIONS
+from fem_racket.studies.map_defaults import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError
 
 #: Where the map goes unless --out is given.

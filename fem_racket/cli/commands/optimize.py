@@ -30,7 +30,7 @@ BUDGET = (
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The ``optimize`` command's options."""
-    from fem_racket.studies.constants import METHODS
+    from fem_racket.studies.design.methods import METHODS
 
     add_design_options(p)
     s = p.add_argument_group("solver")

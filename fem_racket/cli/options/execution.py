@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 from fem_racket.cli.options.drawing import progress_of
 from fem_racket.cli.options.fields import options_from_args
-from fem_racket.studies.constants import BACKENDS
+from fem_racket.studies.backends import BACKENDS
 
 if TYPE_CHECKING:
     from fem_racket.studies.design.options import ExecutionOptions

@@ -23,7 +23,7 @@ from typing import Any
 from fem_racket.cli.common import print_json, run_parameters, significant, swing_kwargs
 from fem_racket.cli.options.output import print_written
 from fem_racket.cli.options.runfile import given_options
-from fem_racket.studies.constants import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
+from fem_racket.studies.spin_defaults import SPIN_OFFSETS, SPIN_POSITIONS, SPIN_REFUSES
 from fem_racket.validation import InputError
 
 __all__ = [

@@ -12,7 +12,7 @@ from fem_racket.cli.options.lists import number_list
 from fem_racket.frame.grips import GRIPS
 from fem_racket.impact.constants import DEFAULT_WINDOW
 from fem_racket.io.constants import CONSTRAINTS
-from fem_racket.studies.constants import MINIMISED, OBJECTIVES
+from fem_racket.studies.design.objective_names import MINIMISED, OBJECTIVES
 
 if TYPE_CHECKING:
     from fem_racket.studies.design.options import ObjectiveOptions

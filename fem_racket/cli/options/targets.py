@@ -8,7 +8,7 @@ import argparse
 from typing import TYPE_CHECKING, Any
 
 from fem_racket.frame.constants import PLACES
-from fem_racket.studies.constants import RANKED, TARGETS
+from fem_racket.studies.targets import RANKED, TARGETS
 
 if TYPE_CHECKING:
     from fem_racket.studies.customise import Target

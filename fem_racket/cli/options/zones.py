@@ -7,7 +7,7 @@ from __future__ import annotations
 import argparse
 
 from fem_racket.cli.options.lists import add_options, number_list
-from fem_racket.studies.constants import ZONES
+from fem_racket.studies.design.zone_kinds import ZONES
 
 __all__ = ["add_zone_options"]
 

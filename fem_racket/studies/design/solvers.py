@@ -22,8 +22,8 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.studies.constants import GLOBAL_METHODS, LOCAL_METHODS
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.methods import GLOBAL_METHODS, LOCAL_METHODS
 from fem_racket.studies.design.options import SearchOptions
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult

@@ -21,7 +21,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import fields
 from typing import Any
 
-from fem_racket.studies.constants import METHODS
+from fem_racket.studies.design.methods import METHODS
 from fem_racket.studies.design.variables import MINIMISED, OBJECTIVES
 from fem_racket.studies.design.zone import ZONES
 from fem_racket.validation import InputError, check_choice, show

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.studies.constants import MINIMISED, OBJECTIVES
+from fem_racket.studies.design.objective_names import MINIMISED, OBJECTIVES
 from fem_racket.validation import InputError, check_choice
 
 __all__ = ["MINIMISED", "OBJECTIVES", "QUANTITIES", "Constraint", "Variable", "sense"]

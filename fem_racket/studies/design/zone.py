@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fem_racket.studies.constants import ZONES
+from fem_racket.studies.design.zone_kinds import ZONES
 from fem_racket.validation import InputError, check_integer, check_positive, check_range
 
 __all__ = ["MAX_ZONE_POINTS", "ZONES", "ImpactZone", "gaussian_zone", "uniform_zone"]
