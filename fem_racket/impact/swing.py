@@ -184,9 +184,10 @@ def check_kcb_closing(speed: float, racket_speed: float, closing: float, name: s
     """Refuse a swing whose closing speed ``closing`` [m/s] (of the ball's ``speed`` and the
     racket's) is outside the speeds the paper gives K_CB for, where K_CB follows from it (the
     paper's law without kcb): named as the racket speed (``name`` = ``racket_speed`` [m/s]), not
-    as the closing speed it derives."""
+    as the closing speed it derives. One that does not close is :func:`closing_speed`'s to
+    refuse."""
     low, high = KCB_SPEED_RANGE
-    if not low <= closing <= high:
+    if 0.0 < closing < low or closing > high:
         where = f"above the {high:g}" if closing > high else f"below the {low:g}"
         raise InputError(
             f"{name} = {show(racket_speed)} m/s is not allowed with speed = {show(speed)} m/s: "
