@@ -42,6 +42,9 @@ __all__ = [
 
 #: The "handle" place: middle of the grip, from the butt [m].
 HANDLE_X = 0.10
+#: A distance beyond the frame's length by at most this fraction of it is the tip (the place
+#: "12"): the length is the sum of the cells' lengths, 0.68 m coming out as 0.6799999999999999.
+TIP_TOL = 1e-9
 
 
 @dataclass(frozen=True)
@@ -87,9 +90,9 @@ def place_at(name: str, head: HeadOutline) -> Place:
         x = float(key)
     except ValueError:
         x = math.nan
-    if not 0.0 <= x <= head.frame_length_m:  # also NaN
+    if not 0.0 <= x <= head.frame_length_m * (1.0 + TIP_TOL):  # also NaN
         raise InputError(
             f"place = {show(name)} is not allowed: must be one of {', '.join(PLACES)} or a "
             f"distance from the butt in m within [0, {head.frame_length_m:g}]"
         )
-    return Place(key, x, 0.0)
+    return Place(key, min(x, head.frame_length_m), 0.0)

@@ -36,8 +36,9 @@ MAX_LEAD_G = 1000.0
 
 
 def check_grams(name: str, grams: float, shown: str | None = None) -> float:
-    """The grams of one lead, refused unless in [0, :data:`MAX_LEAD_G`] (the one home of the
-    bounds ``--add-mass`` and a run file's ``[[frame.lead]]`` share).
+    """The grams of one lead, refused unless in (0, :data:`MAX_LEAD_G`] (the one home of the
+    bounds ``--add-mass`` and a run file's ``[[frame.lead]]`` share; 0 g would change nothing,
+    an option without effect).
 
     Parameters
     ----------
@@ -50,8 +51,10 @@ def check_grams(name: str, grams: float, shown: str | None = None) -> float:
     """
     g = float(grams)
     shown = show(grams) if shown is None else shown
-    if not np.isfinite(g) or g < 0.0:
-        raise InputError(f"{name} = {shown} is not allowed: must be >= 0 g")
+    if not np.isfinite(g) or g <= 0.0:
+        raise InputError(
+            f"{name} = {shown} is not allowed: must be > 0 g (a lead of 0 g changes nothing)"
+        )
     if g > MAX_LEAD_G:
         raise InputError(
             f"{name} = {shown} is not allowed: must be at most {MAX_LEAD_G:g} g (lead tape "
@@ -96,7 +99,7 @@ def parse_lead(text: str) -> Lead:
         g = float("nan")
     if not np.isfinite(g) or g < 0.0:
         raise InputError(
-            f"add-mass = {show(text)} is not allowed: must be LOCATION:GRAMS with GRAMS >= 0, "
+            f"add-mass = {show(text)} is not allowed: must be LOCATION:GRAMS with GRAMS > 0, "
             "e.g. 3/9:10 or 0.32:5"
         )
     return Lead(place, check_grams("add-mass", g, show(text)) * 1e-3)

@@ -19,7 +19,7 @@ from fem_racket.impact.held.run import HeldSettings, held_impact
 from fem_racket.impact.oblique.solve import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
-from fem_racket.impact.settings import DEFAULTS, SolverOptions, check_time_limit
+from fem_racket.impact.settings import SolverOptions, check_time_limit
 from fem_racket.impact.strung.solve import check_strung, solve_strung
 from fem_racket.validation import InputError, show, work_begins
 
@@ -47,15 +47,14 @@ class Solver:
     ----------
     **options
         The options of :class:`~fem_racket.impact.settings.SolverOptions` this solver takes
-        (:attr:`takes`); others are refused.
+        (:attr:`takes`); another one given is refused at any value (its default too): an
+        option left out is never refused, one given is never ignored.
     """
 
     #: Registry name.
     name: ClassVar[str] = ""
     #: Options this solver uses (on some problem).
     takes: ClassVar[tuple[str, ...]] = ()
-    #: Values of options this solver does not take that ask for what it does anyway.
-    neutral: ClassVar[dict[str, tuple]] = {}
     #: Why an option this solver does not take is refused, where more than its list helps.
     hints: ClassVar[dict[str, str]] = {}
     #: Options it does not use on a hand-held racket, and why.
@@ -73,19 +72,13 @@ class Solver:
                 f"{', '.join(SolverOptions.names())}"
             )
         checked = SolverOptions(**options).given()
-        for key, value in checked.items():
-            if key not in self.takes and not self._neutral(key, value):
+        for key in checked:
+            if key not in self.takes:  # given, at any value (its default too), as it was given
                 why = self.hints.get(key, f"it takes {', '.join(self.takes)}")
                 raise InputError(
-                    f"{key} = {show(value)} is not allowed with solver {self.name!r}: {why}"
+                    f"{key} = {show(options[key])} is not allowed with solver {self.name!r}: {why}"
                 )
         self.options = SolverOptions(**{k: v for k, v in checked.items() if k in self.takes})
-
-    @classmethod
-    def _neutral(cls, key: str, value: Any) -> bool:
-        """True when ``value`` of an option this solver does not take asks for nothing it
-        does not do anyway: the option's default, or a value in :attr:`neutral`."""
-        return value == getattr(DEFAULTS, key) or value in cls.neutral.get(key, ())
 
     def __repr__(self) -> str:
         given = ", ".join(f"{k}={v!r}" for k, v in self.options.given().items())

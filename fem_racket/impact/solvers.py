@@ -60,7 +60,7 @@ class ExactSolver(Solver):
     name = "exact"
     takes = ("tolerance", "modes", "output_step", "t_max")
     clamps = True
-    hints = {"basis": "must be 'modal' (the exact solution is in free-free modes)"}
+    hints = {"basis": "it solves in the free-free modes ('modal'); basis is cvode's and bdf's"}
 
     def check(self, problem: ImpactProblem) -> None:
         super().check(problem)
@@ -131,8 +131,6 @@ class _OdeSolver(Solver):
     """The coupled ODE by a BDF integrator."""
 
     takes = ("rtol", "atol", "basis", "modes", "output_step", "t_max")
-    #: tolerance None: every mode (of ``modes``), which the ODE solvers keep anyway
-    neutral = {"tolerance": (None, 0, 0.0)}
 
     def __init__(self, **options: Any) -> None:
         super().__init__(**options)

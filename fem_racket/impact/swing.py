@@ -39,7 +39,6 @@ from fem_racket.validation import InputError, check_finite, check_range, show
 
 __all__ = [
     "MAX_RACKET_SPEED",
-    "DEFAULT_REFERENCE",
     "Rebound",
     "Swing",
     "add_swing",
@@ -80,7 +79,7 @@ class Swing:
         racket_speed: float,
         length: float,
         *,
-        reference: float = DEFAULT_REFERENCE,
+        reference: float | None = None,
         pivot: float | None = None,
     ) -> Swing:
         """A swing given as a racket speed at a reference point, about an optional pivot.
@@ -91,14 +90,15 @@ class Swing:
             Speed of the reference point towards the ball [m/s].
         length : float
             Racket length L [m].
-        reference : float
-            Reference point, x/L in [0, 1].
+        reference : float, optional
+            Reference point, x/L in [0, 1]; when None (not given), 0.75 (the string centre).
         pivot : float, optional
             Pivot from the butt [m] (negative: beyond the butt, e.g. a shoulder); the racket
             translates when None. Refused where it would move the butt or the tip faster than
             :data:`MAX_RACKET_SPEED` (:func:`~fem_racket.impact.swing_reach.pivot_reach`).
         """
         v = check_racket_speed(racket_speed)
+        reference = DEFAULT_REFERENCE if reference is None else reference
         ref = check_range("reference", reference, 0.0, 1.0, unit="x/L") * length
         if pivot is None:
             return cls(v, 0.0)

@@ -11,7 +11,7 @@ from typing import Any
 
 from fem_racket.contact.constants import DEFAULT_BALL_MASS
 from fem_racket.frame.constants import DEFAULT_MODES, PAPER_EI1
-from fem_racket.impact.constants import DEFAULT_REFERENCE, DEFAULT_TOLERANCE
+from fem_racket.impact.constants import DEFAULT_TOLERANCE
 
 __all__ = [
     "DEFAULTS",
@@ -26,11 +26,12 @@ __all__ = [
 FRAME_ELEMENTS = 20
 #: The ball's speed [m/s] and the racket's swing (racket speed [m/s], reference point x/L [-],
 #: pivot [m]) unless given: the defaults of ``--speed``, ``--racket-speed``, ``--reference`` and
-#: ``--pivot`` (a ball at 20 m/s on a racket at rest).
+#: ``--pivot`` (a ball at 20 m/s on a racket at rest; the reference point not given, the
+#: swing's own when there is one: :meth:`~fem_racket.impact.swing.Swing.from_speed`).
 PLAY_DEFAULTS: dict[str, Any] = {
     "speed": 20.0,
     "racket_speed": 0.0,
-    "reference": DEFAULT_REFERENCE,
+    "reference": None,
     "pivot": None,
 }
 

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.contact.linear import zeta_from_cor
+from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS, PRESETS, reject_unknown
 from fem_racket.validation import InputError, show
 
@@ -56,6 +57,8 @@ class RunFile:
 
         ``segments`` (a tuple of :class:`Segment`) and ``mesh`` (a path) have no command-line
         option of their own in every command; :func:`fem_racket.cli.common.build_model` reads them.
+        The swing's reference point at its default (``config --example`` writes it) is left
+        out: not given, as ``--reference`` left out (None, resolved where the swing is built).
         """
         out: dict[str, Any] = {}
         for table, keys in self.values.items():
@@ -69,6 +72,9 @@ class RunFile:
                     value = zeta_from_cor(value)
                 elif (table, key) == ("frame", "mesh"):
                     value = str(self.resolve(value))
+                elif (table, key) == ("impact", "reference_x_over_l"):
+                    if value == DEFAULT_REFERENCE:  # at its default: not given (the swing's)
+                        continue
                 out[dest] = value
         return out
 

@@ -136,8 +136,6 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, elements)
     targets = targets_from(o, catalogue(mesh, f1=False))
     play = {k: o[k] for k in PLAY_DEFAULTS}
-    if play["reference"] == PLAY_DEFAULTS["reference"]:  # a key at its default: not given
-        play["reference"] = None
     MapPlay(**play)  # a swing's point without a swing refused before any work
     work_begins()
     if paths is None:

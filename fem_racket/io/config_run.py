@@ -107,15 +107,18 @@ def file_frame(cfg: RunConfig) -> Any:
 
 def _model_and_swing(cfg: RunConfig) -> tuple[Any, Any]:
     from fem_racket.frame.model import FrameModel
-    from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+    from fem_racket.impact.swing import Swing
+    from fem_racket.studies.map_options import check_at_rest
 
     d = cfg.defaults()
     model = FrameModel.build(file_frame(cfg), d.get("elements", 20))
     length = model.mesh.length
     speed = d.get("racket_speed", 0.0)
-    reference, pivot = d.get("reference", DEFAULT_REFERENCE), d.get("pivot")
-    # checks: the racket speed's bound first, as the command does (cli.options.impact)
+    reference, pivot = d.get("reference"), d.get("pivot")
+    # checks: the racket speed's bound first, then a swing's point without a swing, as the
+    # command does (cli.options.impact)
     swing = Swing.from_speed(speed, length, reference=reference, pivot=pivot)
+    check_at_rest(speed, reference, pivot)
     return model, (None if speed == 0.0 else swing)
 
 

@@ -18,7 +18,6 @@ from typing import Any
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.io.config_keys import PRESETS, reject_unknown
 from fem_racket.io.config_run_keys import RUN_KEYS, run_keys
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS
@@ -54,7 +53,7 @@ MAP_DEFAULTS: dict[str, Any] = {
     "modes": DEFAULT_MODES,
     "tolerance": DEFAULT_TOLERANCE,
     "racket_speed": 0.0,
-    "reference": DEFAULT_REFERENCE,
+    "reference": None,
     "pivot": None,
     "law": "linear",
     "power_fraction": None,
@@ -225,8 +224,7 @@ def map_file(cfg: RunConfig) -> list[Any]:
             for name, model in _rackets(o)
         ]  # fmt: skip
     positions = as_values("position", o["positions"])
-    reference = None if o["reference"] == DEFAULT_REFERENCE else o["reference"]  # as the CLI
-    play = MapPlay(o["speed"], o["racket_speed"], reference, o["pivot"], positions)
+    play = MapPlay(o["speed"], o["racket_speed"], o["reference"], o["pivot"], positions)
     if o["offsets"] is not None:
         from fem_racket.studies.face_map import DEFAULT_AREA_FRACTION, face_map
 

@@ -39,7 +39,7 @@ def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | Non
     the cases run, the others only what the command writes and prints. ``backend`` and
     ``workers``: as :func:`fem_racket.sweep`, over the file's."""
     from fem_racket.contact.presets import law_parameters
-    from fem_racket.io.config_defaults import DEFAULTS, PLAY_DEFAULTS
+    from fem_racket.io.config_defaults import DEFAULTS
     from fem_racket.io.config_run_keys import RUN_KEYS, run_keys
     from fem_racket.io.config_unused import refuse_unused
     from fem_racket.studies.grid_values import LAW_PARAMETERS, PARAMETERS
@@ -61,8 +61,6 @@ def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | Non
     # a key at simulate's default is not given (as on the command line): the sweep refuses
     # what is given, at any value, where simulate refuses it
     kwargs = {k: v for k, v in kwargs.items() if k not in DEFAULTS or v != DEFAULTS[k]}
-    if grid.get("reference") == PLAY_DEFAULTS["reference"]:
-        del grid["reference"]
     laws = {k: v for k, v in law_parameters(settings).items() if k in LAW_PARAMETERS}
     result = sweep_result(
         frame,

@@ -16,7 +16,6 @@ from typing import Any
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.frame.segments import PAPER_EI1
-from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.io.config_defaults import DEFAULTS
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_DESTS, CORE_KEYS
 from fem_racket.validation import InputError, show
@@ -58,14 +57,15 @@ SPANNED_WITH = {"impact.offset_m": "offsets"}
 #: Option (argparse dest) -> the value that changes nothing: the racket at rest, on the axis,
 #: the standard frame (``frame.preset = "standard"``), the paper's ball and clamped COR,
 #: ``simulate``'s solver defaults (:data:`~fem_racket.io.config_defaults.DEFAULTS`) and the
-#: swing's default reference point. A swing's point other than that (or a pivot) without a swing
-#: is refused by the commands that have the option, as on their command line (``--reference``
-#: needs ``--racket-speed``).
+#: swing's reference point not given (the file's at its default is read as not given:
+#: :meth:`~fem_racket.io.config_file.RunFile.defaults`). A swing's point given (or a pivot)
+#: without a swing is refused by the commands that have the option, as on their command line
+#: (``--reference`` needs ``--racket-speed``).
 NEUTRAL = {
     **DEFAULTS,
     "racket_speed": 0.0,
     "ei1": PAPER_EI1,
-    "reference": DEFAULT_REFERENCE,
+    "reference": None,
     "ball_mass": DEFAULT_BALL_MASS,
     "zeta": zeta_from_cor(PAPER_CLAMPED_COR),
 }

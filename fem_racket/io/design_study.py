@@ -19,7 +19,7 @@ from fem_racket.outputs import add_png_provenance, atomic_outputs, check_targets
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.limits import check_sobol_size, check_study_size
 from fem_racket.studies.design.objectives import output_names
-from fem_racket.studies.design.options import ExecutionOptions, SearchOptions
+from fem_racket.studies.design.options import ExecutionOptions, SearchOptions, check_seed
 from fem_racket.studies.design.pareto import pareto_front
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
@@ -187,6 +187,7 @@ def run_sensitivity(run: SensitivityRun) -> SobolIndices:
     )
     refuse_unused_sensitivity(problem, problem.objectives[0] if run.output is None else run.output)
     check_sobol_size(problem, run.designs)
+    check_seed(run.seed)
     if out is not None:
         check_targets([Path(out), Path(str(out) + ".json")], overwrite=files.overwrite)
     work_begins()

@@ -3,7 +3,9 @@
 A mesh file holds 2-node ``line`` cells along x with cell data ``EI`` [N m^2] and ``rhoA``
 [kg/m], and optionally ``GJ`` [N m^2] and ``rhoIp`` [kg m] (torsion, both or neither); any
 format meshio reads works (``meshes/`` uses .vtu: one self-contained file that ParaView opens).
-:func:`read_mesh` validates what it reads and names what is wrong and where.
+:func:`read_mesh` validates what it reads and names what is wrong and where; :func:`write_mesh`
+writes the formats of :data:`MESH_SUFFIXES` only, those :func:`read_mesh` reads the frame back
+from.
 """
 
 from __future__ import annotations
@@ -17,13 +19,34 @@ import numpy as np
 
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.plausible import check_implement
-from fem_racket.validation import InputError, check_file
+from fem_racket.validation import InputError, check_file, show_path
 
-__all__ = ["read_mesh", "write_mesh"]
+__all__ = ["MESH_SUFFIXES", "check_mesh_suffix", "read_mesh", "save_mesh", "write_mesh"]
 
 
 #: Relative tolerance (of the mesh length) within which cell ends must meet.
 JOIN_TOL = 1e-9
+
+#: The suffixes a mesh is written with: the meshio formats that keep 2-node line cells and
+#: their cell data (EI, rhoA, GJ, rhoIp), so :func:`read_mesh` reads the frame back (each
+#: round-trip tested: exact but .avs, 15 digits). Left out: formats of surface or volume cells
+#: (.stl, .obj, .off, .ply, .wkt, dolfin .xml), those that drop cell data (.inp, .bdf, .nas,
+#: .fem, .mesh, .meshb, .vol, .mdpa, .dato, .post, exodus .e/.exo/.ex2), those meshio cannot
+#: write lines to or read back (.f3grid, .h5m, .cgns, .su2, .ugrid, tetgen .node/.ele) and .hmf
+#: (meshio calls it experimental and prints so at every write).
+MESH_SUFFIXES = (".vtu", ".vtk", ".xdmf", ".xmf", ".msh", ".med", ".dat", ".tec", ".avs")
+
+
+def check_mesh_suffix(path: str | os.PathLike, name: str = "out") -> Path:
+    """``path`` as a Path, refused (naming ``name`` and the path as given) unless it ends in a
+    suffix of :data:`MESH_SUFFIXES` (any case): checked before a mesh is computed."""
+    path = Path(path)
+    if path.suffix.lower() not in MESH_SUFFIXES:
+        raise InputError(
+            f"{name} = {show_path(path)} is not allowed: a mesh file must end in one of "
+            f"{', '.join(MESH_SUFFIXES)} (formats that keep line cells and their cell data)"
+        )
+    return path
 
 
 def read_mesh(path: str | os.PathLike) -> FrameMesh:
@@ -158,28 +181,57 @@ def write_mesh(
     overwrite: bool = False,
     binary: bool = True,
 ) -> Path:
-    """Write ``mesh`` with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] (and ``GJ`` [N m^2],
-    ``rhoIp`` [kg m] when it has them) in any meshio format.
-
-    The format follows the suffix (.vtu recommended: one self-contained file that ParaView
-    opens). The file is written under a temporary name in the same folder and renamed into place
-    (:func:`fem_racket.outputs.atomic_output`).
+    """Write ``mesh`` to ``path`` (:func:`save_mesh`) under a temporary name in the same folder,
+    renamed into place (:func:`fem_racket.outputs.atomic_output`).
 
     Parameters
     ----------
     mesh : FrameMesh
     path : path-like
+        Ends in a suffix of :data:`MESH_SUFFIXES` (.vtu recommended: one self-contained file
+        that ParaView opens); another is refused before anything is written.
     overwrite : bool
         Replace an existing file; by default an existing file raises :class:`InputError`.
     binary : bool
+        As for :func:`save_mesh`.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
+    from fem_racket.outputs import atomic_output
+
+    path = check_mesh_suffix(path, "path")
+    with atomic_output(path, overwrite=overwrite) as tmp:
+        save_mesh(mesh, tmp, binary=binary)
+    return path
+
+
+def save_mesh(mesh: FrameMesh, path: str | os.PathLike, *, binary: bool = True) -> Path:
+    """Write ``mesh`` with cell data ``EI`` [N m^2] and ``rhoA`` [kg/m] (and ``GJ`` [N m^2],
+    ``rhoIp`` [kg m] when it has them) to ``path`` itself: for a writer that holds the
+    temporary of a set of outputs already (:func:`fem_racket.outputs.atomic_outputs`; a
+    temporary of the temporary would nest their names), else :func:`write_mesh`.
+
+    Parameters
+    ----------
+    mesh : FrameMesh
+    path : path-like
+        The format follows the suffix, one of :data:`MESH_SUFFIXES`.
+    binary : bool
         For .vtu / .vtk: base64/binary data (exact round trip, the default) or ASCII text (easy
-        to read and diff, 12 significant digits). .xdmf is written with its data inline (XML).
+        to read and diff, 12 significant digits). .xdmf and .xmf are written with their data
+        inline (XML).
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     import meshio
 
-    from fem_racket.outputs import atomic_output
-
-    path = Path(path)
+    path = check_mesh_suffix(path, "path")
     pts = np.zeros((mesh.points.size, 3))
     pts[:, 0] = mesh.points
     cells = np.column_stack([np.arange(mesh.n_elements), np.arange(1, mesh.n_elements + 1)])
@@ -191,16 +243,9 @@ def write_mesh(
     kwargs: dict = {}
     if suffix in (".vtu", ".vtk"):
         kwargs["binary"] = binary
-    elif suffix == ".xdmf":
-        kwargs["data_format"] = "XML"  # no .h5 beside it (meshio would put it in the cwd)
+    elif suffix in (".xdmf", ".xmf"):
+        kwargs["data_format"] = "XML"  # no .h5 beside it (named after a temporary, left behind)
     elif suffix == ".msh":
         kwargs["file_format"] = "gmsh"  # meshio would otherwise pick ANSYS for .msh
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        try:
-            meshio.write(tmp, out, **kwargs)
-        except OSError:
-            raise  # a fault of the disk (full, ...): atomic_output names the file
-        except Exception as exc:  # unknown suffix, unsupported cell data, ...
-            msg = " ".join(str(exc).split()) or type(exc).__name__
-            raise InputError(f"mesh output = '{path}' cannot be written: {msg}") from None
+    meshio.write(path, out, **kwargs)
     return path

@@ -36,20 +36,22 @@ FIT_OUTPUT = Path("output") / "racket.vtu"
 
 def mesh_files(out: Path) -> list[Path]:
     """A racket written as a mesh file (fit, customise): the mesh ``out`` and its JSON sidecar,
-    to check before the work and write as one set with :func:`write_mesh_files`."""
+    to check before the work and write as one set with :func:`write_mesh_files`; ``out`` refused
+    unless a mesh format :func:`~fem_racket.io.mesh_files.read_mesh` reads back."""
+    from fem_racket.io.mesh_files import check_mesh_suffix
     from fem_racket.outputs import sidecar_path
 
-    return [out, sidecar_path(out)]
+    return [check_mesh_suffix(out, "out"), sidecar_path(out)]
 
 
 def write_mesh_files(mesh: Any, out: Path, sidecar: str, *, overwrite: bool = False) -> None:
     """Write ``mesh`` (a FrameMesh) to ``out`` and the text ``sidecar`` (its JSON) beside it,
     as one set: both or, on any fault, neither."""
-    from fem_racket.io.mesh_files import write_mesh
+    from fem_racket.io.mesh_files import save_mesh
     from fem_racket.outputs import atomic_outputs
 
     with atomic_outputs(mesh_files(out), overwrite=overwrite) as (tmp, side):
-        write_mesh(mesh, tmp, overwrite=True)
+        save_mesh(mesh, tmp)
         side.write_text(sidecar, encoding="utf-8")
 
 

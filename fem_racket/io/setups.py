@@ -91,14 +91,11 @@ def compare_play(options: Mapping[str, Any]) -> Any:
     of its options (argparse dests: ``speed`` [m/s], ``positions`` and ``offsets`` as text
     grids, ``point`` [x/L], ``grip``, and the swing's ``racket_speed``, ``reference``,
     ``pivot``)."""
-    from fem_racket.impact.swing import DEFAULT_REFERENCE
     from fem_racket.studies.compare import Play
     from fem_racket.studies.grid import as_values
 
     offsets = options["offsets"]
     swing = {k: options[k] for k in ("racket_speed", "reference", "pivot")}
-    if swing["reference"] == DEFAULT_REFERENCE:  # at its default: not given (the command
-        swing["reference"] = None  # refused --reference without a swing already)
     return Play(
         speed=options["speed"],
         positions=as_values("position", options["positions"]),

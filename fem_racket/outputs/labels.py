@@ -98,7 +98,10 @@ LABELS: dict[str, Label] = {
     ),
     "contact_time_s": Label("contact time t_c", "s"),
     "rebound_speed_m_s": Label(
-        "rebound speed v_out", "m/s", "ball speed after impact -v_B(t_c) (v_out with a swing)"
+        "normal rebound v_out,n",
+        "m/s",
+        "ball's speed along the face normal after impact -v_B(t_c): v_out head-on (with a swing "
+        "too), its normal component in an oblique impact",
     ),
     "peak_force_n": Label("peak force F_max", "N", "largest contact force"),
     "kcb_n_m": Label("stiffness K_CB", "N/m", "ball/string stiffness K_CB used"),
@@ -129,7 +132,9 @@ LABELS: dict[str, Label] = {
     "apparent_cor": Label(
         "apparent COR e_A", "-", "apparent COR e_A of the free racket at the closing speed"
     ),
-    "ball_speed_out_m_s": Label("ball speed out v_out", "m/s", "ball speed after impact v_out"),
+    "ball_speed_out_m_s": Label(
+        "ball speed out v_out", "m/s", "ball speed after impact v_out (normal and tangential)"
+    ),
 }
 
 

@@ -57,7 +57,7 @@ __all__ = [
 VARIABLES: dict[str, tuple[str, str]] = {
     "cor": ("1", "apparent coefficient of restitution (v_out - v_r)/(v_in + v_r)"),
     "contact_time_s": ("s", "contact time t_c"),
-    "rebound_speed_m_s": ("m/s", "ball speed after impact -v_B(t_c) (v_out with a swing)"),
+    "rebound_speed_m_s": ("m/s", "ball's speed along the face normal after impact -v_B(t_c)"),
     "peak_force_n": ("N", "largest contact force"),
     "kcb_n_m": ("N/m", "ball/string stiffness K_CB used"),
     "racket_speed_at_impact_m_s": ("m/s", "impact point's speed towards the ball before impact"),
@@ -100,11 +100,13 @@ MODES_COLUMN = COLUMNS.index("modes_kept")
 
 
 def result_variables(spec: SweepSpec) -> list[str]:
-    """The variables a sweep's dataset holds (the peak force only when asked, those of a
-    string bed or an oblique ball only with their axes)."""
+    """The variables a sweep's dataset holds (the peak force only when asked, K_CB only under
+    the paper's law, those of a string bed or an oblique ball only with their axes)."""
     left_out = set()
     if not spec.peak_force:
         left_out.add("peak_force_n")
+    if spec.law is not None:  # another law has no K_CB (the column all NaN)
+        left_out.add("kcb_n_m")
     if not given(spec.values, STRING_AXES):
         left_out.update(STRUNG_VARIABLES)
     else:  # the bed replaces the lumped K_CB
@@ -219,13 +221,8 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
         if name == "contact_regime":
             values = [regime_code(v) for v in values]
         out[:, COLUMNS.index(name)] = values
-    # K_CB is NaN under another contact law than the paper's (it has none); the tangential
-    # COR is NaN without tangential speed (head-on without spin: 0/0)
-    computed = [
-        COLUMNS.index(v)
-        for v in result_variables(spec)
-        if (spec.law is None or v != "kcb_n_m") and v != "tangential_cor"
-    ]
+    # the tangential COR is NaN without tangential speed (head-on without spin: 0/0)
+    computed = [COLUMNS.index(v) for v in result_variables(spec) if v != "tangential_cor"]
     out[~np.all(np.isfinite(out[:, computed]), axis=1)] = np.nan
     # a failed case's cause is noted by the solver; the sweep counts them once at its end
     return out

@@ -27,7 +27,7 @@ from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing, ball_speed_out, closing_speed
+from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.studies.map_options import check_at_rest, check_map_points
 from fem_racket.studies.sweetspots import centre_of_percussion, mode_node_positions
 from fem_racket.validation import InputError, check_positive, check_range, show
@@ -204,7 +204,6 @@ def face_map(
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements or 20)
     length = model.mesh.length
     head = head.on_frame(length)
-    reference = DEFAULT_REFERENCE if reference is None else reference  # None: not given
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
     v_r = np.asarray(swing.speed_at(x * length), dtype=float)
     closing = np.array([closing_speed(speed, v) for v in v_r])

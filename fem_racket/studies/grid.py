@@ -26,11 +26,11 @@ from fem_racket.frame.segments import (
     Frame,
     standard_frame,
 )
+from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
 from fem_racket.impact.reduction import check_tolerance
 from fem_racket.impact.settings import UNSET, SolverOptions
 from fem_racket.impact.solvers import auto_method, make_solver
-from fem_racket.impact.swing import DEFAULT_REFERENCE
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.grid_checks import (
     check_incidences,

@@ -18,8 +18,9 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.impact.swing import Swing
 from fem_racket.studies.map_defaults import MAP_POSITIONS as DEFAULT_POSITIONS
 from fem_racket.studies.map_defaults import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
 from fem_racket.validation import InputError, check_range, show
@@ -137,10 +138,7 @@ class MapPlay:
         """The swing of a racket of length ``length`` [m]
         (:meth:`fem_racket.impact.swing.Swing.from_speed`)."""
         return Swing.from_speed(
-            self.racket_speed,
-            length,
-            reference=DEFAULT_REFERENCE if self.reference is None else self.reference,
-            pivot=self.pivot,
+            self.racket_speed, length, reference=self.reference, pivot=self.pivot
         )
 
     def keywords(self) -> dict[str, Any]:
@@ -150,12 +148,24 @@ class MapPlay:
 
 def map_grid(positions: Any) -> np.ndarray:
     """The map's impact points x/L: :data:`DEFAULT_POSITIONS` when None, else at least 3
-    increasing points in [0, 1] (at most :data:`MAX_MAP_POINTS`, counted first)."""
+    increasing points in [0, 1] (at most :data:`MAX_MAP_POINTS`, counted first); text as the
+    command line and a sweep's ``position`` take it (a comma list or ``start:stop:num``,
+    :func:`~fem_racket.studies.grid_values.as_values`)."""
+    from fem_racket.studies.grid_values import as_values, value_count
+
     if positions is None:
         start, stop, num = DEFAULT_POSITIONS
         return np.linspace(start, stop, num)
-    check_map_points(int(np.size(positions)))
-    x = np.atleast_1d(np.asarray(positions, dtype=float))
+    check_map_points(value_count(positions))
+    if isinstance(positions, str):
+        positions = as_values("position", positions)
+    try:
+        x = np.atleast_1d(np.asarray(positions, dtype=float))
+    except (TypeError, ValueError):
+        raise InputError(
+            f"positions = {show(positions)} is not allowed: must be at least 3 increasing x/L "
+            "(numbers, a comma list or start:stop:num)"
+        ) from None
     if x.size < 3 or np.any(np.diff(x) <= 0.0):
         raise InputError(
             f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L"
@@ -205,3 +215,7 @@ class MapSetup:
     play: MapPlay = field(default_factory=MapPlay)
     elements: int = DEFAULT_ELEMENTS
     power_fraction: float = DEFAULT_POWER_FRACTION
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str):  # a label of tables, plots and files
+            raise InputError(f"name = {show(self.name)} is not allowed: must be a string")

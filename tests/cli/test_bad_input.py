@@ -745,7 +745,7 @@ TOML_CASES = [
                 ('[{ place = "3/9" }]', "frame.lead[0] is missing mass_g"),
                 (
                     '[{ place = "3/9", mass_g = -1 }]',
-                    "mass_g = -1.0 is not allowed: must be >= 0 g",
+                    "mass_g = -1.0 is not allowed: must be > 0 g",
                 ),
                 ('[{ place = "3/9", mass = 1 }]', "did you mean 'mass_g'"),
                 ("[]", "frame.lead is not allowed: must be a non-empty array"),

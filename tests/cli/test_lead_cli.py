@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from clirun import run, run_json
+from clirun import file_refused_alike, one_error, run, run_json
 
 from fem_racket import frame_mesh, standard_frame
 from fem_racket.frame.catalogue import catalogue
@@ -75,3 +75,25 @@ def test_map_with_lead_at_the_tip_moves_the_best_point_tipward(capsys, tmp_path)
 def test_bad_lead_is_one_line(capsys, args, says):
     code, _, err = run(capsys, "modes", *args)
     assert code == 2 and says in err and len(err.splitlines()) == 1
+
+
+def test_a_lead_at_the_frames_length_is_the_tip(capsys):
+    # the standard frame's length, the sum of its cells, is 0.6799999999999999 m: 0.68 m (the
+    # interval printed, [0, 0.68]) was refused though the tip, place 12, is x = L
+    tip = modes_json(capsys, "--add-mass", "12:5")
+    assert modes_json(capsys, "--add-mass", "0.68:5") == tip
+    line = one_error(capsys, "modes", "--add-mass", "0.6801:5")
+    assert "place = '0.6801' is not allowed" in line and "within [0, 0.68]" in line, line
+
+
+def test_a_lead_of_0_g_is_refused_alike(capsys, cwd):
+    # 0 g changes nothing: an option without effect is refused (check_grams' words)
+    line = one_error(capsys, "modes", "--add-mass", "12:0")
+    assert "add-mass = '12:0' is not allowed: must be > 0 g" in line, line
+    file_refused_alike(
+        capsys,
+        '[frame]\nlead = [{ place = "12", mass_g = 0 }]\n',
+        ["modes", "--config", "run.toml"],
+        lambda config: config.modes(),
+        "frame.lead[0].mass_g = 0.0 is not allowed: must be > 0 g",
+    )

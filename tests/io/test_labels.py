@@ -1,6 +1,7 @@
 """One labelling rule for every dataset variable (fem_racket.outputs.labels): short long_name,
 separate units, dimensionless as "-", so xarray's own plots and plot_sweep read on one line."""
 
+import numpy as np
 import pytest
 
 from fem_racket.contact.registry import LAW_PARAMETERS
@@ -54,3 +55,23 @@ def test_xarray_plots_a_sweep_file_with_the_short_labels(tmp_path):
         assert label_from_attrs(ds.ei1) == "grip-side EI1 [N m^2]"
         assert label_from_attrs(ds.contact_time_s) == "contact time t_c [s]"
         assert "(v_out - v_r)/(v_in + v_r)" in ds.cor.attrs["description"]
+
+
+def test_an_oblique_sweeps_two_speeds_out_are_told_apart(tmp_path):
+    """rebound_speed_m_s is the normal component of the outgoing velocity, ball_speed_out_m_s
+    its whole speed: both were labelled "v_out" (their long_names distinct, and true, now)."""
+    import xarray as xr
+
+    import fem_racket as fr
+
+    out = tmp_path / "o.nc"
+    fr.sweep(angle=[20.0, 40.0], speed=30.0, position=0.7, output=out, progress=False)
+    with xr.open_dataset(out) as ds:
+        normal, whole = ds.rebound_speed_m_s, ds.ball_speed_out_m_s
+        assert normal.attrs["long_name"] == "normal rebound v_out,n"
+        assert whole.attrs["long_name"] == "ball speed out v_out"
+        assert "face normal" in normal.attrs["description"]
+        assert "normal and tangential" in whole.attrs["description"]
+        assert np.all(
+            normal.values < whole.values
+        )  # its normal component (the ball leaves along the face too)

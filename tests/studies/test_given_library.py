@@ -78,17 +78,22 @@ def test_refine_and_design_refuse_a_default_given():
 
 
 def test_left_out_the_sweep_runs_as_before():
-    # under the paper's law an option given at its default changes nothing, bit for bit, and
-    # the checkpoint's digest is the same (the pinned digests: test_sweep_digest.py)
+    # under the paper's law an option the exact solver takes, given at its default, changes
+    # nothing, bit for bit, and the checkpoint's digest is the same (the pinned digests:
+    # test_sweep_digest.py)
     grid = {"speed": [20.0, 30.0], "position": [0.6, 0.8]}
     left = sweep_result(**grid, progress=False)
     given = sweep_result(
-        **grid, separation="displacement", basis="modal", modes=80, tolerance=1e-6,
-        progress=False,
-    )  # fmt: skip
+        **grid, separation="displacement", modes=80, tolerance=1e-6, progress=False
+    )
     assert left.spec.digest == given.spec.digest
     assert np.array_equal(left.values, given.values, equal_nan=True)
     assert left.attrs == given.attrs
+    # basis, which the exact solver does not take, given at its default: refused as simulate
+    # refuses it (it was accepted as "neutral" before; issue 21.3: one rule, given = refused)
+    said = library_error(lambda: sweep_result(**grid, basis="modal", progress=False))
+    assert said == library_error(lambda: fr.simulate(solver="exact", basis="modal"))
+    assert said.startswith("basis = 'modal' is not allowed with solver 'exact'")
     # under a law, the separation left out: the law's own, as simulate's
     law = sweep_result(speed=[20.0], position=[0.7], law="hunt-crossley", progress=False)
     one = fr.simulate(speed=20.0, position=0.7, law="hunt-crossley", output_step=None)

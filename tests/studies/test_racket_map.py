@@ -86,6 +86,12 @@ def test_a_point_under_a_nonlinear_law_is_one_simulate(standard_model):
         ({"power_fraction": 1.5}, "power_fraction = 1.5"),
         ({"speed": -1.0}, "speed = -1"),
         ({"racket_speed": -50.0}, "must close"),
+        # text is the command line's (as sweep's position): refused by its parser; other
+        # values that are not numbers, and a label that is not text, in one line
+        ({"positions": "abc"}, "position = 'abc' is not allowed: must be a number, a comma"),
+        ({"positions": "0.5:0.9:2"}, "positions = 2 values"),
+        ({"positions": ["a", "b", "c"]}, r"positions = \['a', 'b', 'c'\] is not allowed"),
+        ({"name": 5}, "name = 5 is not allowed: must be a string"),
     ],
 )
 def test_bad_input(standard_model, kwargs, message):
@@ -134,3 +140,12 @@ def test_elements_mesh_a_frame_and_a_mesh_of_that_count_passes():
     assert np.array_equal(racket_map(mesh, elements=20, positions=x).apparent_cor, a)
     with pytest.raises(InputError, match="elements = 10 is not allowed with a mesh: it has 20"):
         racket_map(mesh, elements=10, positions=x)
+
+
+def test_positions_as_the_command_line_gives_them(standard_model):
+    # "0.5:0.9:5" is the CLI's start:stop:num, which fr.sweep(position=...) takes too
+    a = racket_map(standard_model, positions="0.5:0.9:5")
+    b = racket_map(standard_model, positions=np.linspace(0.5, 0.9, 5))
+    assert np.array_equal(a.positions, b.positions)
+    assert np.array_equal(a.apparent_cor, b.apparent_cor)
+    assert racket_map(standard_model, positions="0.5,0.7,0.9").positions.tolist() == [0.5, 0.7, 0.9]

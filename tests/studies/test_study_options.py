@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.swing import DEFAULT_REFERENCE, Swing
+from fem_racket.impact.constants import DEFAULT_REFERENCE
+from fem_racket.impact.swing import Swing
 from fem_racket.studies.compare import Play
 from fem_racket.studies.map_options import MapPlay, MapSetup
 from fem_racket.studies.options import field_names, take

@@ -38,10 +38,15 @@ def test_a_sweep_refuses_with_simulates_line(options):
 
 
 def test_defaults_ask_for_nothing_and_the_options_given_are_used():
-    """A default (the CLI passes every option) is no request; the numbers stay main's."""
+    """Options left out ask for nothing; the numbers stay main's. The exact solver's own
+    options given at their defaults change nothing; those it does not take are refused at any
+    value (before, rtol, atol and basis at their defaults passed as "neutral": issue 21.3)."""
     plain = sweep_result(position=[0.6, 0.7], **RUN).values
-    named = sweep_result(position=[0.6, 0.7], rtol=1e-10, atol=1e-12, basis="modal", **RUN)
+    named = sweep_result(position=[0.6, 0.7], modes=80, tolerance=1e-6, **RUN)
     np.testing.assert_array_equal(named.values, plain)
+    for name, value in (("rtol", 1e-10), ("atol", 1e-12), ("basis", "modal")):
+        with pytest.raises(InputError, match=f"^{name} = .* is not allowed with solver 'exact'"):
+            sweep_result(position=[0.6, 0.7], **{name: value}, **RUN)
     # main's sweep before this change printed these (batched engine, tolerance 1e-6)
     cor = [0.4002005330304712, 0.4081116956738373]
     np.testing.assert_array_equal(sweep_result(position=[0.6, 0.7], **RUN).to_xarray().cor, cor)

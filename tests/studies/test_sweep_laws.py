@@ -148,6 +148,23 @@ def test_a_resumed_law_sweep_equals_an_uninterrupted_one(tmp_path):
     resumed = sweep(law=KAWAZOE, **kw, backend="serial", peak_force=True, output=out)
     np.testing.assert_array_equal(resumed.cor.values, clean.cor.values)
     np.testing.assert_array_equal(resumed.peak_force_n.values, clean.peak_force_n.values)
+    assert list(resumed.data_vars) == list(clean.data_vars) and "kcb_n_m" not in resumed
+
+
+def test_a_law_without_k_cb_writes_no_k_cb(tmp_path):
+    """A law other than the paper's has no K_CB: its sweep held an all-NaN ``kcb_n_m``
+    ("stiffness K_CB") in the dataset, the .nc and the .csv; the paper's law keeps it."""
+    import xarray as xr
+
+    kw = dict(position=[0.5, 0.8, 0.95], speed=30.0, backend="serial")
+    for law, has in (("hunt-crossley", False), ("linear", True), (None, True)):
+        nc, csv = tmp_path / f"{law}.nc", tmp_path / f"{law}.csv"
+        ds = sweep(law=law, **kw, output=nc)
+        sweep(law=law, **kw, output=csv)
+        with xr.open_dataset(nc) as back:
+            assert ("kcb_n_m" in back) is has and ("kcb_n_m" in ds) is has, law
+        assert ("kcb_n_m" in csv.read_text().splitlines()[0]) is has, law
+        assert all(np.isfinite(ds[v]).all() for v in ds.data_vars), law
 
 
 @pytest.mark.parametrize(

@@ -194,7 +194,6 @@ def run(args: argparse.Namespace) -> int:
     """Run the sweep, write the file and print a summary."""
     from fem_racket.cli.common import frame_from_args
     from fem_racket.contact.presets import law_parameters
-    from fem_racket.io.config_defaults import PLAY_DEFAULTS
     from fem_racket.studies.executors import check_scheduler
     from fem_racket.studies.sweep import sweep_result
     from fem_racket.studies.sweep_options import SOLVING_DEFAULTS, SweepRun, SweepSolving
@@ -209,8 +208,6 @@ def run(args: argparse.Namespace) -> int:
     if args.scheduler is not None:
         check_scheduler(args.scheduler)  # before the checkpoint folder is made
     values = {name: getattr(args, name) for name in PARAMETERS}
-    if "reference" not in given and values["reference"] == PLAY_DEFAULTS["reference"]:
-        values["reference"] = None  # a run file's key at its default is not given
     custom = args.mesh is not None or getattr(args, "segments", None)
     frame = frame_from_args(args, exclusive=("ei1", "ei2")) if custom else None
     start = time.perf_counter()

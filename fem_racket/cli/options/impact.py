@@ -12,7 +12,6 @@ from fem_racket.cli.options.frame import add_frame_options
 from fem_racket.cli.options.hand import HAND_OPTIONS, add_hand_options, hand_from_args
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lists import add_options
-from fem_racket.cli.options.runfile import given_options
 from fem_racket.contact.constants import DEFAULT_BALL_MASS
 from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.impact.constants import (
@@ -127,17 +126,16 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     add_options(g, SWING, type=float)
 
 
-#: The units of the swing's point options, as the refusals name them.
-_SWING_UNITS = {"reference": "x/L", "pivot": "m"}
-
-
 def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False) -> None:
     """Refuse a ``--racket-speed`` beyond :data:`MAX_RACKET_SPEED`, or one whose closing speed
     with ``--speed`` at the reference point leaves the paper's K_CB range (K_CB from the speed:
     no --kcb, no --law); and a swing's ``--reference`` (and ``--pivot`` unless
     ``pivot_at_rest``: the maps' centre of percussion) given, on the command line or in a run
-    file, without a swing (``--racket-speed`` 0): the racket at rest would drop them."""
+    file, without a swing (``--racket-speed`` 0): the racket at rest would drop them. Left
+    out, both are None (a run file's reference at its default too); the swing's reference
+    point is then its default (:meth:`~fem_racket.impact.swing.Swing.from_speed`)."""
     from fem_racket.impact.swing import check_kcb_closing, check_racket_speed
+    from fem_racket.studies.map_options import check_at_rest
 
     v_r = args.racket_speed
     check_racket_speed(v_r)  # before the closing speed: Swing.from_speed's bound, no racket yet
@@ -145,16 +143,9 @@ def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False
     linear = getattr(args, "kcb", None) is None and getattr(args, "law", None) in (None, "linear")
     if v_r != 0.0 and linear and math.isfinite(closing):
         check_kcb_closing(args.speed, v_r, closing, "racket_speed")
-    check_range("reference", args.reference, 0.0, 1.0, unit="x/L")  # as the swing's own check
-    if v_r != 0.0:
-        return
-    given = given_options(args)
-    for name in ("reference", "pivot"):
-        if name in given and not (name == "pivot" and pivot_at_rest):
-            raise InputError(
-                f"{name} = {show(getattr(args, name))} {_SWING_UNITS[name]} is not allowed "
-                "without a swing: give --racket-speed"
-            )
+    if args.reference is not None:
+        check_range("reference", args.reference, 0.0, 1.0, unit="x/L")  # as the swing's check
+    check_at_rest(v_r, args.reference, None if pivot_at_rest else args.pivot)
 
 
 def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
@@ -163,10 +154,7 @@ def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     ``Play``, which build the swing themselves; ``--reference`` without a swing refused
     (``--pivot`` sets the maps' centre of percussion at rest too)."""
     check_swing_options(args, pivot_at_rest=True)
-    out = {name: getattr(args, name) for name, *_ in SWING}
-    if args.racket_speed == 0.0:  # at rest a reference point was refused if given: none
-        out["reference"] = None
-    return out
+    return {name: getattr(args, name) for name, *_ in SWING}
 
 
 def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:

@@ -111,6 +111,36 @@ class StrungImpact:
         return self.ball_deflection
 
     @property
+    def compression_stiffness(self) -> float:
+        """The ball law's secant stiffness F / delta at its largest compression [N/m]: the
+        normal stiffness k_n of an oblique impact's tangential contact.
+
+        The largest compression lies between two output times: it is the root of the rate
+        delta' (u_B' minus the bed's rate at the point) where the cubic Hermite spline through
+        delta and delta' peaks, and F there is P' of the impulse's spline (P = m_B (V_B0 -
+        u_B'), P' = F at the samples: the normal history's own force). The secant at the
+        output time of largest compression instead moved by 4e-4 relative with the number of
+        samples (the dashpot's force C delta' at up to half a step from the peak: 137 310,
+        137 388 and 137 349 N/m for the kawazoe-1997-ball at 801, 6 401 and 12 801 samples,
+        where this gives 137 357.74, 137 357.79 and 137 357.79 N/m, the law's K at delta' = 0
+        being 137 357.79), and the tangential spring's frequency with it: the outgoing spin of
+        a strung oblique impact moved by 1.2e-4 between 3 201 and 6 401 samples.
+        """
+        from scipy.interpolate import CubicHermiteSpline
+
+        t, d = self.t, self.ball_deflection
+        rate = self.rates[:, 0] - self.rates[:, 1:] @ self.point.a
+        spline = CubicHermiteSpline(t, d, rate)
+        i = int(np.argmax(d))
+        near = (t[max(i - 1, 0)], t[min(i + 1, t.size - 1)])
+        roots = spline.derivative().roots(extrapolate=False)
+        times = np.append(roots[(roots >= near[0]) & (roots <= near[1])], t[i])
+        peak = float(times[np.argmax(spline(times))])
+        impulse = self.ball_mass * (self.rates[0, 0] - self.rates[:, 0])
+        force = CubicHermiteSpline(t, impulse, self.force)(peak, 1)
+        return float(force / spline(peak))
+
+    @property
     def x_impact(self) -> float:
         """The impact point's distance from the grip end x_i [m] (``model`` must be set)."""
         return self.point.position * self.model.mesh.length

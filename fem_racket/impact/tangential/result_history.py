@@ -16,8 +16,10 @@ __all__ = ["normal_history"]
 def normal_history(result: Any) -> SampledNormal:
     """The normal force history of a computed impact (needs its output times).
 
-    The stiffness k_n is K_CB for the paper's linear law, else the secant F / delta at the
-    output time of maximum compression.
+    The stiffness k_n is K_CB for the paper's linear law; else the result's
+    ``compression_stiffness`` when it has one (the strung racket's: the secant F / delta at the
+    largest compression, located between the output times), else the secant at the output
+    time of largest compression.
     """
     if result.t.size < 5:
         raise InputError(
@@ -29,6 +31,8 @@ def normal_history(result: Any) -> SampledNormal:
     force = result.force
     if result.contact is not None:
         k_n = result.contact.stiffness
+    elif hasattr(result, "compression_stiffness"):
+        k_n = result.compression_stiffness
     else:
         i = int(np.argmax(result.deflection))
         k_n = float(force[i] / result.deflection[i])

@@ -19,20 +19,27 @@ from fem_racket.frame.masses import DEFAULT_WIDTH
 from fem_racket.impact.held.shock import DEFAULT_WINDOW
 from fem_racket.studies.design.swing import SWING_EXPONENT, SWING_WEIGHT_AXIS
 from fem_racket.studies.design.unused import refuse_unused, refuse_unused_search
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, check_integer
 
 __all__ = [
+    "MAX_SEED",
     "DesignOptions",
     "ExecutionOptions",
     "ObjectiveOptions",
     "SearchOptions",
     "VariableOptions",
     "ZoneOptions",
+    "check_seed",
 ]
 
 #: The default interior segment boundaries x/L: the paper's step at 0.3 L and the top side in
 #: three equal parts (4 segments).
 BOUNDARIES = (0.3, 0.5333333333333333, 0.7666666666666667)
+
+#: Largest random seed: numpy's legacy generator (``RandomState``, what differential evolution
+#: and pymoo's NSGA-II seed) takes 0 to 2**32 - 1; the Sobol sample's (``default_rng``) is held
+#: to the same, one ``--seed`` for every study.
+MAX_SEED = 2**32 - 1
 
 
 @dataclass(frozen=True)
@@ -217,7 +224,7 @@ class SearchOptions:
     pop_size, generations : int
         NSGA-II: population and generations.
     seed : int
-        Random seed of the global methods.
+        Random seed of the global methods, 0 to :data:`MAX_SEED`.
     given : frozenset of str
         The options given (as :attr:`DesignOptions.given`): refused, even at the default,
         where the method would not use them.
@@ -233,6 +240,7 @@ class SearchOptions:
 
     def __post_init__(self) -> None:
         refuse_unused_search(self)  # a budget the method would not use (:mod:`.unused`)
+        check_seed(self.seed)
 
 
 @dataclass(frozen=True)
@@ -255,6 +263,12 @@ class ExecutionOptions:
     workers: int | None = None
     scheduler: str | None = None
     progress: bool | None = None
+
+
+def check_seed(seed: Any) -> int:
+    """``seed`` as an int, refused unless an integer from 0 to :data:`MAX_SEED` (what numpy's
+    generators take), before any design runs."""
+    return check_integer("seed", seed, minimum=0, maximum=MAX_SEED)
 
 
 def check_names(where: str, given: Any, known: Sequence[str]) -> None:

@@ -12,6 +12,7 @@ import numpy as np
 
 from fem_racket.extras import require
 from fem_racket.studies.design.evaluate import Evaluator
+from fem_racket.studies.design.options import check_seed
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.result import DesignResult
 from fem_racket.studies.design.scaling import NoBar, ScaledProblem, progress_bar
@@ -49,6 +50,7 @@ def pareto_front(
         )
     check_integer("pop_size", pop_size, minimum=4)
     check_integer("generations", generations)
+    check_seed(seed)
     evaluator = Evaluator(problem) if evaluator is None else evaluator
     s = ScaledProblem(problem, evaluator, 1e-4, NoBar())
     k = [evaluator.column(o) for o in problem.objectives]

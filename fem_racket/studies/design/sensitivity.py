@@ -17,6 +17,7 @@ import numpy as np
 from fem_racket.extras import require
 from fem_racket.studies.design.evaluate import Evaluator
 from fem_racket.studies.design.limits import check_sobol_size
+from fem_racket.studies.design.options import check_seed
 from fem_racket.studies.design.problem import DesignProblem
 from fem_racket.studies.design.scaling import progress_bar
 from fem_racket.studies.design.unused import refuse_unused_sensitivity
@@ -87,7 +88,8 @@ def sobol_indices(
         About this many designs: N = designs / (D + 2) base samples, rounded up to a power of
         two (Sobol sequences balance at powers of two).
     seed : int
-        Scrambling seed of the Sobol sequence.
+        Scrambling seed of the Sobol sequence and of the bootstrap of the confidence intervals
+        (0 to :data:`~.options.MAX_SEED`).
     evaluator : Evaluator, optional
         Where designs run; serial in memory when None.
     progress : bool, optional
@@ -101,6 +103,7 @@ def sobol_indices(
     output = problem.objectives[0] if output is None else output
     check_choice("output", output, tuple(evaluator.names))
     refuse_unused_sensitivity(problem, output)
+    check_seed(seed)
     d = problem.n_var
     n = check_sobol_size(problem, designs)
     spec = {"num_vars": d, "names": problem.names, "bounds": [[0.0, 1.0]] * d}
@@ -113,7 +116,10 @@ def sobol_indices(
             bar.update(len(part))
     if not np.all(np.isfinite(y)):
         raise InputError(f"output = {output!r} is not finite on every sampled design")
-    si = analyze.analyze(spec, y, calc_second_order=False, seed=seed, print_to_console=False)
+    # a generator, not the int: SALib leaves the bootstrap unseeded for seed 0 (``if seed:``);
+    # for any other seed it makes this same generator, so the intervals are unchanged
+    rng = np.random.default_rng(seed)
+    si = analyze.analyze(spec, y, calc_second_order=False, seed=rng, print_to_console=False)
     return SobolIndices(
         output=output,
         names=problem.names,
