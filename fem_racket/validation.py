@@ -40,7 +40,36 @@ PATH_LIMIT = 120
 
 
 class InputError(ValueError):
-    """A user-supplied value is outside its allowed range or form."""
+    """A user-supplied value is outside its allowed range or form.
+
+    Parameters
+    ----------
+    message : str
+        The one line the user reads.
+    parameter : str, optional
+        The parameter refused, when the message opens with it (``NAME = VALUE ...``), as
+        every ``check_*`` helper of this module sets it: a caller may name the value its own way
+        (:meth:`named`). None when the message names no single parameter.
+    value : object, optional
+        The value refused (as the check got it: ``1000.0`` for ``speed = 1000.0 m/s``); None
+        when unknown.
+    """
+
+    def __init__(self, message: str = "", *, parameter: str | None = None, value: object = None):
+        super().__init__(message)
+        self.parameter = parameter
+        self.value = value
+
+    def named(self, name: str, prefix: str = "") -> InputError:
+        """The same refusal with its parameter named ``name`` (``speed = 1000.0 m/s ...`` ->
+        ``impact.speed_m_s = 1000.0 m/s ...``), after ``prefix`` (``"run.toml: "``): the message
+        from the value on is kept. ``self`` when the message does not open with
+        :attr:`parameter`."""
+        text = str(self)
+        if self.parameter is None or not text.startswith(f"{self.parameter} = "):
+            return self
+        renamed = f"{prefix}{name}{text[len(self.parameter) :]}"
+        return type(self)(renamed, parameter=None if prefix else name, value=self.value)
 
 
 def _plain(value: object) -> object:
@@ -91,9 +120,12 @@ class AccuracyError(InputError):
     """
 
 
-def _fmt(name: str, value: object, unit: str) -> str:
+def _refused(name: str, value: object, unit: str, allowed: str) -> InputError:
+    """``NAME = VALUE UNIT is not allowed: ALLOWED``, naming its parameter and value."""
     unit_txt = f" {unit}" if unit else ""
-    return f"{name} = {show(value)}{unit_txt}"
+    return InputError(
+        f"{name} = {show(value)}{unit_txt} is not allowed: {allowed}", parameter=name, value=value
+    )
 
 
 def check_finite(name: str, value: object, unit: str = "") -> float:
@@ -102,11 +134,9 @@ def check_finite(name: str, value: object, unit: str = "") -> float:
     try:
         number = float(value)  # type: ignore[arg-type]
     except (TypeError, ValueError):
-        raise InputError(
-            f"{_fmt(name, value, unit)} is not allowed: must be a finite number"
-        ) from None
+        raise _refused(name, value, unit, "must be a finite number") from None
     if isinstance(value, bool | str | bytes) or not math.isfinite(number):
-        raise InputError(f"{_fmt(name, value, unit)} is not allowed: must be a finite number")
+        raise _refused(name, value, unit, "must be a finite number")
     return number
 
 
@@ -114,7 +144,7 @@ def check_positive(name: str, value: object, unit: str = "") -> float:
     """Return ``value`` as a float, or raise unless it is finite and > 0."""
     number = check_finite(name, value, unit)
     if number <= 0.0:
-        raise InputError(f"{_fmt(name, value, unit)} is not allowed: must be a finite number > 0")
+        raise _refused(name, value, unit, "must be a finite number > 0")
     return number
 
 
@@ -135,9 +165,7 @@ def check_range(
     if not (ok_low and ok_high):
         lb = "[" if include_low else "("
         rb = "]" if include_high else ")"
-        raise InputError(
-            f"{_fmt(name, value, unit)} is not allowed: must lie in {lb}{low:g}, {high:g}{rb}"
-        )
+        raise _refused(name, value, unit, f"must lie in {lb}{low:g}, {high:g}{rb}")
     return number
 
 
@@ -146,9 +174,15 @@ def check_file(name: str, path: str | os.PathLike, what: str) -> Path:
     '/tmp' is not allowed: it is a folder, not a mesh file``), else "no such file"."""
     path = Path(path)
     if path.is_dir():
-        raise InputError(f"{name} = {show_path(path)} is not allowed: it is a folder, not a {what}")
+        raise InputError(
+            f"{name} = {show_path(path)} is not allowed: it is a folder, not a {what}",
+            parameter=name,
+            value=path,
+        )
     if not path.is_file():
-        raise InputError(f"{name} = {show_path(path)} is not allowed: no such file")
+        raise InputError(
+            f"{name} = {show_path(path)} is not allowed: no such file", parameter=name, value=path
+        )
     return path
 
 
@@ -156,9 +190,7 @@ def check_choice(name: str, value: object, choices: Iterable[str]) -> str:
     """Return ``value`` if it is one of ``choices``, or raise listing them."""
     options = tuple(choices)
     if value not in options:
-        raise InputError(
-            f"{name} = {show(value)} is not allowed: must be one of {', '.join(options)}"
-        )
+        raise _refused(name, value, "", f"must be one of {', '.join(options)}")
     return str(value)
 
 
@@ -178,7 +210,7 @@ def check_integer(name: str, value: object, minimum: int = 1, maximum: int | Non
         or value < minimum
         or (maximum is not None and value > maximum)
     ):
-        raise InputError(f"{name} = {show(value)} is not allowed: must be {allowed}")
+        raise _refused(name, value, "", f"must be {allowed}")
     return int(value)
 
 

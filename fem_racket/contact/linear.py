@@ -87,7 +87,9 @@ def check_ball_mass(value: object, name: str = "ball mass") -> float:
         slip = f" (grams typed as kg? {show(m)} g = {show(m / 1e3)} kg)"
     raise InputError(
         f"{name} = {show(m)} kg is not allowed: must lie in [{low:g}, {high:g}] kg, from a "
-        f"table-tennis ball to a softball{slip}"
+        f"table-tennis ball to a softball{slip}",
+        parameter=name,
+        value=m,
     )
 
 
@@ -274,7 +276,9 @@ class LinearContact(ContactLaw):
             raise InputError(
                 f"ball mass = {show(m)} kg is not allowed with contact law {self.label()}: "
                 f"its C_CB damps that ball at zeta = {float(np.max(zeta)):.4g}, must be < 1 "
-                f"(its zeta is referred to its ball_mass {show(self.ball_mass)} kg)"
+                f"(its zeta is referred to its ball_mass {show(self.ball_mass)} kg)",
+                parameter="ball mass",
+                value=m,
             )
         return replace(self, zeta=zeta, ball_mass=m)
 

@@ -101,7 +101,9 @@ class LawParameter:
             unit = f" {self.si_unit}" if self.si_unit else ""
             raise InputError(
                 f"{name} = {show(value)}{unit} is not allowed: must be a finite number > 0, "
-                f"in {self.interval()}"
+                f"in {self.interval()}",
+                parameter=name,
+                value=value,
             )
         return check_range(
             name,

@@ -125,4 +125,8 @@ def check_linear_options(law: Any, **options: Any) -> None:
     else:
         why += " (this law has its own parameters)"
     key, value = given[0]
-    raise InputError(f"{key} = {show(value)} is not allowed with contact law {named}: {why}")
+    raise InputError(
+        f"{key} = {show(value)} is not allowed with contact law {named}: {why}",
+        parameter=key,
+        value=value,
+    )

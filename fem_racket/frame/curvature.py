@@ -163,7 +163,9 @@ def flexible_modes(fe: FrameFE, rigid: np.ndarray, n_modes: int) -> tuple[np.nda
         raise InputError(
             f"modes = {n_modes} is not allowed with {fe.mesh.n_elements} elements: at most "
             f"{n // 2} (half of all modes; every mode is computed only up to "
-            f"{DENSE_MAX // 2} elements)"
+            f"{DENSE_MAX // 2} elements)",
+            parameter="modes",
+            value=n_modes,
         )
     if dense:  # every pair, the top n_modes kept
         A = coords.apply(np.eye(n))

@@ -51,7 +51,9 @@ class Hand:
             ("grip damping", self.damping, "N s/m^2"),
         ):
             if not check_finite(name, v, unit) >= 0.0:
-                raise InputError(f"{name} = {v!r} {unit} is not allowed: must be >= 0")
+                raise InputError(
+                    f"{name} = {v!r} {unit} is not allowed: must be >= 0", parameter=name, value=v
+                )
         if self.inertia is not None:
             check_positive("hand inertia", self.inertia, "kg m^2")
 

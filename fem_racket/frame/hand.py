@@ -57,7 +57,9 @@ def check_grip(hand: Hand, length: float) -> None:
     """Refuse a grip that reaches beyond a frame ``length`` [m] long."""
     if hand.grip_end > length:
         raise InputError(
-            f"grip_end = {hand.grip_end!r} m is not allowed: beyond the frame ({length:g} m)"
+            f"grip_end = {hand.grip_end!r} m is not allowed: beyond the frame ({length:g} m)",
+            parameter="grip_end",
+            value=hand.grip_end,
         )
 
 

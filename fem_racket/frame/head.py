@@ -57,7 +57,9 @@ class HeadOutline:
             raise InputError(
                 f"head length = {show(self.length_m)} m is not allowed with centre "
                 f"{show(self.centre)} x/L: the head ({lo:.4g} to {hi:.4g} m) must lie on the "
-                f"frame (0 to {self.frame_length_m:.4g} m)"
+                f"frame (0 to {self.frame_length_m:.4g} m)",
+                parameter="head length",
+                value=self.length_m,
             )
 
     def on_frame(self, frame_length_m: float) -> HeadOutline:
@@ -108,7 +110,9 @@ class HeadOutline:
         )
         raise InputError(
             f"offset = {show(y)} m is not allowed: the point must lie on the head "
-            f"({self.length_m:g} m x {self.width_m:g} m ellipse): {allowed}"
+            f"({self.length_m:g} m x {self.width_m:g} m ellipse): {allowed}",
+            parameter="offset",
+            value=y,
         )
 
 

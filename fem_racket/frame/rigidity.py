@@ -50,7 +50,9 @@ class Rigidity:
                 f"{label} = {show(rigidity)} N m^2 is not allowed with {self.density} = "
                 f"{density:g} {self.density_unit}: must lie in [{low:.3g}, {high:.3g}] N m^2 "
                 f"({self.name} / {self.density} in [{self.ratio_range[0]:g}, "
-                f"{self.ratio_range[1]:g}] {self.ratio_unit})"
+                f"{self.ratio_range[1]:g}] {self.ratio_unit})",
+                parameter=label,
+                value=rigidity,
             )
         return rigidity
 

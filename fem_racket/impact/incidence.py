@@ -94,7 +94,11 @@ def _non_negative(name: str, value: object, high: float) -> float:
     """``value`` if a finite number in [0, ``high``] (the model's bound), else refused."""
     number = check_finite(name, value)
     if number < 0.0:
-        raise InputError(f"{name} = {show(value)} is not allowed: must be a finite number >= 0")
+        raise InputError(
+            f"{name} = {show(value)} is not allowed: must be a finite number >= 0",
+            parameter=name,
+            value=value,
+        )
     return check_range(name, number, 0.0, high)
 
 
@@ -241,7 +245,9 @@ def check_kcb_normal(incidence: Incidence, speed: float) -> None:
     raise InputError(
         f"{dest} = {show(getattr(incidence, dest))} deg is not allowed with speed = "
         f"{show(speed)} m/s: the ball's normal speed {normal:.3g} m/s is below the {low:g} m/s "
-        "where the paper's K_CB holds (give kcb)"
+        "where the paper's K_CB holds (give kcb)",
+        parameter=dest,
+        value=getattr(incidence, dest),
     )
 
 

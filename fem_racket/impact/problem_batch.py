@@ -162,7 +162,10 @@ class ProblemBatch:
         problem (the grip on the handle, :func:`~fem_racket.impact.problem_checks.check_held`)."""
         if self.hand is None:
             raise InputError(
-                f"shock_window = {self.shock_window!r} s is not allowed without a hand: give a hand"
+                f"shock_window = {self.shock_window!r} s is not allowed without a hand: "
+                "give a hand",
+                parameter="shock_window",
+                value=self.shock_window,
             )
         if not isinstance(self.hand, Hand):
             raise InputError(f"hand = {self.hand!r} is not allowed: must be a Hand")

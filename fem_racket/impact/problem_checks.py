@@ -87,7 +87,9 @@ def check_offset(problem: Any) -> None:
     if problem.held:
         raise InputError(
             f"offset = {show(problem.offset)} m is not allowed with a hand: the held racket "
-            "is struck on its long axis (it does not twist)"
+            "is struck on its long axis (it does not twist)",
+            parameter="offset",
+            value=problem.offset,
         )
     if problem.strings is None:  # on the bed: checked against the bed's head
         check_offsets(problem.model, problem.impact.position, problem.offset)
@@ -136,12 +138,16 @@ def check_structure(problem: Any) -> None:
     if problem.offset != 0.0:
         raise InputError(
             f"offset = {show(problem.offset)} m is not allowed with a clamped head: it is struck "
-            "at its centre"
+            "at its centre",
+            parameter="offset",
+            value=problem.offset,
         )
     if problem.impact.position != CENTRE:
         raise InputError(
             f"position = {show(problem.impact.position)} x/L is not allowed with a clamped head: "
-            f"it is struck at its centre (leave the position at {CENTRE}, the default)"
+            f"it is struck at its centre (leave the position at {CENTRE}, the default)",
+            parameter="position",
+            value=problem.impact.position,
         )
 
 
@@ -176,7 +182,9 @@ def bed_coordinates(
     )
     raise InputError(
         f"offset = {show(lateral_m)} m at {where} is not allowed with the string bed: {disk}: "
-        f"{reach} at that position ({axis})"
+        f"{reach} at that position ({axis})",
+        parameter="offset",
+        value=lateral_m,
     )
 
 

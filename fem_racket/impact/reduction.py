@@ -71,7 +71,9 @@ def check_tolerance(tolerance: float | None) -> float | None:
     if isinstance(tolerance, bool) or not math.isfinite(tol) or not 0.0 <= tol <= 0.1:
         raise InputError(
             f"tolerance = {tolerance!r} is not allowed: must be a COR error in [0, 0.1] "
-            "(0 or None: every mode)"
+            "(0 or None: every mode)",
+            parameter="tolerance",
+            value=tolerance,
         )
     return None if tol == 0.0 else tol
 

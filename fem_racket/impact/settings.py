@@ -78,7 +78,11 @@ def _checked(name: str, value: Any) -> Any:
         return None
     unit = "s"
     if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
-        raise InputError(f"{name} = {show(value)} {unit} is not allowed: must be a number > 0")
+        raise InputError(
+            f"{name} = {show(value)} {unit} is not allowed: must be a number > 0",
+            parameter=name,
+            value=value,
+        )
     return check_positive(name, value, unit)
 
 
@@ -136,10 +140,14 @@ def check_time_limit(settings: Settings, t_est: float, steps: int | None, solver
         raise InputError(
             f"t_max = {show(t_max)} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} output "
             f"times of output_step = {output!r} s, so t_max <= {MAX_OUTPUT_TIMES * output:.3g} s "
-            "(or a larger output_step)"
+            "(or a larger output_step)",
+            parameter="t_max",
+            value=t_max,
         )
     raise InputError(
         f"t_max = {show(t_max)} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} time steps of "
         f"{grid:.3g} s (solver {solver!r} takes {steps} per contact time, {t_est:.3g} s by "
-        f"eq 11), so t_max <= {MAX_OUTPUT_TIMES * grid:.3g} s"
+        f"eq 11), so t_max <= {MAX_OUTPUT_TIMES * grid:.3g} s",
+        parameter="t_max",
+        value=t_max,
     )

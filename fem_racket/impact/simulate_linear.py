@@ -90,7 +90,9 @@ def _check_output_count(
     if kcb is not None:
         raise InputError(
             f"kcb = {kcb!r} N/m is not allowed with {limit}: the contact would last about "
-            f"{t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none"
+            f"{t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none",
+            parameter="kcb",
+            value=kcb,
         )
     what = f"twice the contact's {t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB), m_B = {ball_mass!r} kg)"
     check_output_count(output_step, span, what)

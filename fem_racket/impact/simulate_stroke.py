@@ -56,7 +56,9 @@ def simulate_stroke(
         if getattr(incidence, name) != 0.0:
             raise InputError(
                 f"{name} = {getattr(incidence, name)!r} deg is not allowed with a stroke: the "
-                "face and path angles set the incidence"
+                "face and path angles set the incidence",
+                parameter=name,
+                value=getattr(incidence, name),
             )
     v = check_positive("speed", speed, "m/s")
     s = 0.0
@@ -70,7 +72,9 @@ def simulate_stroke(
     if c.ball_normal + c.racket_normal <= 0.0:
         raise InputError(
             f"face_angle = {stroke.face_angle!r} deg and path_angle = {stroke.path_angle!r} deg "
-            "are not allowed here: ball and strings do not close along the face normal"
+            "are not allowed here: ball and strings do not close along the face normal",
+            parameter="face_angle",
+            value=stroke.face_angle,
         )
     k = math.sin(math.radians(stroke.face_angle - stroke.path_angle))
     extra = {} if swing is None else {"swing": Swing(swing.velocity * k, swing.omega * k)}

@@ -76,7 +76,9 @@ class Solver:
             if key not in self.takes:  # given, at any value (its default too), as it was given
                 why = self.hints.get(key, f"it takes {', '.join(self.takes)}")
                 raise InputError(
-                    f"{key} = {show(options[key])} is not allowed with solver {self.name!r}: {why}"
+                    f"{key} = {show(options[key])} is not allowed with solver {self.name!r}: {why}",
+                    parameter=key,
+                    value=options[key],
                 )
         self.options = SolverOptions(**{k: v for k, v in checked.items() if k in self.takes})
 
@@ -212,7 +214,9 @@ class Solver:
         for key in names:
             if key in given:
                 raise InputError(
-                    f"{key} = {show(given[key])} is not allowed with solver {self.name!r} {why}"
+                    f"{key} = {show(given[key])} is not allowed with solver {self.name!r} {why}",
+                    parameter=key,
+                    value=given[key],
                 )
 
     def _refuse_law(self, problem: ImpactProblem | ProblemBatch) -> None:

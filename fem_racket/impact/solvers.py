@@ -219,7 +219,8 @@ class AutoSolver(Solver):
         try:
             return SOLVERS[name](**self.options.given())
         except InputError as err:
-            raise InputError(f"{err} (solver 'auto' picked {name!r} for this impact)") from None
+            why = f"{err} (solver 'auto' picked {name!r} for this impact)"
+            raise InputError(why, parameter=err.parameter, value=err.value) from None
 
     def check(self, problem: ImpactProblem) -> None:
         self.pick(problem).check(problem)

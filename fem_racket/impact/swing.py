@@ -30,8 +30,8 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from fem_racket.contact.constants import KCB_SPEED_RANGE
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.closing import check_kcb_closing, closing_speed
 from fem_racket.impact.constants import DEFAULT_REFERENCE, MAX_RACKET_SPEED
 from fem_racket.impact.swing_reach import allowed_pivots
 from fem_racket.impact.system import CoupledSystem, Trajectory
@@ -106,7 +106,9 @@ class Swing:
         if abs(ref - p) < 1e-9 * length:
             raise InputError(
                 f"pivot = {pivot!r} m is not allowed: it is the reference point "
-                f"({ref:g} m), whose speed it would fix at zero"
+                f"({ref:g} m), whose speed it would fix at zero",
+                parameter="pivot",
+                value=pivot,
             )
         omega = v / (ref - p)
         swing = cls(-omega * p, omega)
@@ -116,7 +118,9 @@ class Swing:
             raise InputError(
                 f"pivot = {show(pivot)} m is not allowed with racket_speed = {show(v)} m/s: the "
                 f"racket would turn at {abs(omega):.4g} rad/s, its butt or tip faster than "
-                f"{MAX_RACKET_SPEED:g} m/s: {allowed_pivots(v, ref, length)}"
+                f"{MAX_RACKET_SPEED:g} m/s: {allowed_pivots(v, ref, length)}",
+                parameter="pivot",
+                value=pivot,
             ) from None
         return swing
 
@@ -166,30 +170,6 @@ def check_swing_speeds(swing: Swing, length: float) -> None:
         raise InputError(
             f"swing = {swing!r} is not allowed: its butt moves at {butt:.4g} m/s and its tip "
             f"at {tip:.4g} m/s, faster than the {MAX_RACKET_SPEED:g} m/s a racket may move"
-        )
-
-
-def closing_speed(speed: float, racket_speed: float) -> float:
-    """Speed at which ball and strings meet, v_in + v_r [m/s]; > 0 or an InputError."""
-    c = float(speed) + float(racket_speed)
-    if not c > 0.0:
-        raise InputError(
-            f"racket speed at the impact point = {racket_speed:g} m/s is not allowed with ball "
-            f"speed {speed:g} m/s: the two must close (v_in + v_r > 0)"
-        )
-    return c
-
-
-def check_kcb_closing(speed: float, racket_speed: float, closing: float, name: str) -> None:
-    """Refuse a closing speed ``closing`` [m/s] (of the ball's ``speed`` and the racket's) outside
-    the paper's K_CB speeds where K_CB follows from it (one not closing is :func:`closing_speed`'s)
-    named as the racket speed (``name`` = ``racket_speed`` [m/s]), not as the speed it derives."""
-    low, high = KCB_SPEED_RANGE
-    if 0.0 < closing < low or closing > high:
-        side = f"above the {high:g}" if closing > high else f"below the {low:g}"
-        raise InputError(
-            f"{name} = {show(racket_speed)} m/s is not allowed with speed = {show(speed)} m/s: the "
-            f"closing speed {closing:g} m/s is {side} m/s where the paper's K_CB holds (give kcb)"
         )
 
 

@@ -56,7 +56,9 @@ def no_separation(t_max: float) -> NoSeparationError:
     """The error raised when the ball has not separated by ``t_max`` [s]."""
     return NoSeparationError(
         f"t_max = {t_max:g} s is not enough: the ball did not separate within it; "
-        "raise t_max (it must exceed the contact time)"
+        "raise t_max (it must exceed the contact time)",
+        parameter="t_max",
+        value=t_max,
     )
 
 

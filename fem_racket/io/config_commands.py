@@ -14,6 +14,8 @@ import os
 from pathlib import Path
 from typing import Any
 
+from fem_racket.io.config_named import core_keys_named
+
 __all__ = ["CommandMethods"]
 
 #: An output path, as the methods take it.
@@ -22,8 +24,10 @@ PathLike = str | os.PathLike
 
 class CommandMethods:
     """The methods of :class:`~fem_racket.io.config.RunConfig`, one per command (see the module
-    docstring); each names the function doing its work."""
+    docstring); each names the function doing its work, and its refusal of a value of the file's
+    core tables names the key, as the command's (:func:`.config_named.core_keys_named`)."""
 
+    @core_keys_named
     def simulate(self, *, histories: bool | None = None) -> Any:
         """The impact the file describes, every table applied: the result of
         ``fem-racket simulate --config FILE`` (an ImpactResult, or a HeldRun with a ``[hand]``);
@@ -32,6 +36,7 @@ class CommandMethods:
 
         return simulate_file(self, histories=histories)
 
+    @core_keys_named
     def sweep(self, *, backend: str | None = None, workers: int | None = None) -> Any:
         """The dataset ``fem-racket sweep --config FILE`` writes (not written here): the
         ``[sweep]`` grids over the core tables; see :func:`fem_racket.io.config_sweep.sweep_file`.
@@ -42,6 +47,7 @@ class CommandMethods:
 
         return sweep_file(self, backend=backend, workers=workers)
 
+    @core_keys_named
     def map(self) -> list[Any]:
         """The maps ``fem-racket map --config FILE`` computes (no file written): a RacketMap
         per racket (a FaceMap with ``offsets``, a SpinMap with an oblique ball); see
@@ -50,6 +56,7 @@ class CommandMethods:
 
         return map_file(self)
 
+    @core_keys_named
     def refine(self) -> dict[str, Any]:
         """The refinement studies ``fem-racket refine --config FILE`` computes (no file
         written): family -> RefinementStudy; see
@@ -58,6 +65,7 @@ class CommandMethods:
 
         return refine_file(self)
 
+    @core_keys_named
     def export_vtk(self, out: PathLike | None = None) -> Path:
         """Write the VTK series ``fem-racket export-vtk --config FILE`` writes (into ``out``,
         else ``[vtk] out``); the ``.pvd`` path. See
@@ -66,6 +74,7 @@ class CommandMethods:
 
         return vtk_file(self, out)
 
+    @core_keys_named
     def animate(self, out: PathLike | None = None) -> Path:
         """Render the animation ``fem-racket animate --config FILE`` renders (to ``out``, else
         ``[animate] out``); its path. See :func:`fem_racket.io.config_drawings.animate_file`."""
@@ -73,6 +82,7 @@ class CommandMethods:
 
         return animate_file(self, out)
 
+    @core_keys_named
     def optimize(self, out: PathLike | None = None) -> Any:
         """The optimisation ``fem-racket optimize --config FILE`` runs (files into ``out``,
         else ``[design] out``, else output/design); see :func:`.config_design.optimize_file`."""
@@ -80,12 +90,14 @@ class CommandMethods:
 
         return optimize_file(self, out)
 
+    @core_keys_named
     def sensitivity(self, out: PathLike | None = None) -> Any:
         """The Sobol indices of ``fem-racket sensitivity --config FILE`` (chart in ``out``)."""
         from fem_racket.io.config_design import sensitivity_file
 
         return sensitivity_file(self, out)
 
+    @core_keys_named
     def modes(self) -> Any:
         """The free-free modal analysis ``fem-racket modes --config FILE`` reports.
 
@@ -105,6 +117,7 @@ class CommandMethods:
 
         return modes_file(self)
 
+    @core_keys_named
     def fit(self, out: PathLike | None = None) -> Any:
         """The frame ``fem-racket fit --config FILE`` fits to ``[fit]``'s length [m], mass
         [kg], balance [m], swing weight [kg cm^2] (and f1 [Hz], twistweight [kg cm^2]).
@@ -131,6 +144,7 @@ class CommandMethods:
 
         return fit_file(self, out)
 
+    @core_keys_named
     def customise(self, out: PathLike | None = None) -> Any:
         """The least lead ``fem-racket customise --config FILE`` adds to the file's frame to
         meet ``[customise]``'s targets at its ``places``.
@@ -157,6 +171,7 @@ class CommandMethods:
 
         return customise_file(self, out)
 
+    @core_keys_named
     def closest(self, rackets: PathLike) -> list[Any]:
         """The rackets of the CSV list ``rackets`` nearest ``[closest]``'s targets, each with
         its least lead at ``places``: ``fem-racket closest RACKETS --config FILE``.
@@ -172,6 +187,7 @@ class CommandMethods:
 
         return closest_file(self, rackets)
 
+    @core_keys_named
     def compare(self, rackets: list[str], out: PathLike | list[PathLike] | None = None) -> Any:
         """The set-ups ``rackets`` (presets, mesh or run files, each optionally
         ``+LOCATION:GRAMS``) compared as ``fem-racket compare RACKETS --config FILE`` compares
@@ -196,6 +212,7 @@ class CommandMethods:
 
         return compare_file(self, rackets, out)
 
+    @core_keys_named
     def calibrate(self, out: PathLike | None = None) -> Any:
         """The law ``fem-racket calibrate --config FILE`` fits: ``[calibrate] family`` to its
         ``targets``, with the ball of ``ball.mass_kg`` [kg].
@@ -215,18 +232,3 @@ class CommandMethods:
         from fem_racket.io.config_reports import calibrate_file
 
         return calibrate_file(self, out)
-
-
-def _name_core_keys() -> None:
-    """Every method's refusal of a core table's value names its key, as the command's
-    (:func:`fem_racket.io.config_named.core_keys_named`)."""
-    from fem_racket.io.config_keys import COMMAND_TABLES
-    from fem_racket.io.config_named import core_keys_named
-
-    for command, table in COMMAND_TABLES.items():
-        name = command.replace("-", "_")
-        if name in vars(CommandMethods):
-            setattr(CommandMethods, name, core_keys_named(vars(CommandMethods)[name], table))
-
-
-_name_core_keys()

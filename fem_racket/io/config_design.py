@@ -17,7 +17,7 @@ from dataclasses import fields
 from typing import Any
 
 from fem_racket.io.config_keys import reject_unknown
-from fem_racket.io.config_tables import flag, integer, number, text
+from fem_racket.io.config_tables import flag, integer, number, overwrite_set, text
 from fem_racket.io.constants import CONSTRAINTS
 from fem_racket.validation import InputError, show
 
@@ -171,10 +171,11 @@ def sensitivity_file(cfg: RunConfig, out: Any = None) -> Any:
     require("SALib", "RunConfig.sensitivity")
     problem, sobol, own = _problem(cfg, "sensitivity", "sensitivity", dict(_SOBOL))
     out = out or own.get("out")
-    # [output] overwrite serves every command: skipped where nothing is written (the table's
-    # own overwrite without out is refused, as the command refuses it)
-    overwrite = _overwrite(cfg, own) if out else bool(own.get("overwrite", False))
-    files = OutputOptions(out, overwrite)
+    # overwrite without out is refused, as the command refuses it: [output]'s here, naming
+    # its key; the table's own by OutputOptions
+    if not out and "overwrite" not in own and (given := overwrite_set(cfg, "sensitivity")):
+        raise InputError(f"{given} is not allowed without out: nothing is written")
+    files = OutputOptions(out, _overwrite(cfg, own))
     run = SensitivityRun(problem, sobol["output"], sobol["designs"], own.get("seed", 1),
                          _execution(own), files)  # fmt: skip
     return run_sensitivity(run)

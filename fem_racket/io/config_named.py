@@ -4,23 +4,25 @@ The library checks a value once, where it is used, and names it as its parameter
 1000.0 m/s is not allowed: must lie in [1, 100]``). When that value came from a run file, the
 error names the file and its dotted key instead (``run.toml: impact.speed_m_s = 1000.0 m/s is
 not allowed: must lie in [1, 100]``), as the README's run-file convention promises; the bound
-stays where the library keeps it (no copy here). A parameter is the file's key when its name is
-the key's argparse dest (spaces for underscores: ``string tension`` is ``string_tension``, set by
-``strings.tension_n``) or one of :data:`ALIASES`, and the refused value is the file's value.
+stays where the library keeps it (no copy here). The refusal says which parameter and value it
+refused (``parameter`` and ``value`` of :class:`~fem_racket.validation.InputError`, set by the
+library's checks); the parameter is the file's key when its name is the key's argparse dest
+(spaces for underscores: ``string tension`` is ``string_tension``, set by ``strings.tension_n``)
+or one of :data:`ALIASES`, and the refused value is the file's number.
 """
 
 from __future__ import annotations
 
 import functools
 import math
-import re
+import numbers
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from typing import Any
 
 from fem_racket.validation import InputError
 
-__all__ = ["ALIASES", "core_keys_named", "file_keys", "keys_named", "named_by_key"]
+__all__ = ["ALIASES", "command_keys", "core_keys_named", "file_keys", "keys_named", "named_by_key"]
 
 #: Parameter names of the library's checks that are not their key's dest (spaces as
 #: underscores) -> the dest.
@@ -29,8 +31,6 @@ ALIASES = {
     "shock_window": "hand_shock_window",
     "racket_speed_at_the_impact_point": "racket_speed",
 }
-
-_REFUSED = re.compile(r"^(?P<name>[A-Za-z][A-Za-z0-9_ ]*?) = (?P<value>[^ ,;:()]+)(?P<rest> .*)$")
 
 
 def file_keys(values: Mapping[str, Mapping[str, Any]]) -> dict[str, str]:
@@ -47,15 +47,23 @@ def file_keys(values: Mapping[str, Mapping[str, Any]]) -> dict[str, str]:
     return out
 
 
-def _same(shown: str, value: Any) -> bool:
-    """Whether the value an error shows is ``value`` (a number)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+def command_keys(cfg: Any, command: str) -> dict[str, str]:
+    """dest -> the dotted key of the run file ``cfg`` (a RunConfig) setting it for ``command``:
+    the core tables' (:func:`file_keys`), then the command's own table's, which win (its keys
+    are its long options: ``--power-fraction`` is ``map.power_fraction``)."""
+    from fem_racket.io.config_keys import COMMAND_TABLES
+
+    keys = file_keys(cfg.values)
+    table = COMMAND_TABLES.get(command, command)
+    keys.update({k.replace("-", "_"): f"{table}.{k}" for k in cfg.table(table)})
+    return keys
+
+
+def _same(refused: Any, value: Any) -> bool:
+    """Whether the number the library refused is the file's number ``value``."""
+    if any(isinstance(x, bool) or not isinstance(x, numbers.Real) for x in (refused, value)):
         return False
-    try:
-        x = float(shown)
-    except ValueError:
-        return False
-    return math.isclose(x, float(value), rel_tol=1e-9, abs_tol=0.0) or x == float(value)
+    return math.isclose(refused, value, rel_tol=1e-9, abs_tol=0.0) or refused == value
 
 
 def named_by_key(
@@ -66,7 +74,7 @@ def named_by_key(
     Parameters
     ----------
     exc : InputError
-        A library refusal, ``NAME = VALUE ...``.
+        A library refusal naming its parameter and value (``parameter`` and ``value``).
     keys : mapping
         dest -> dotted key, for the values that came from the file.
     values : mapping
@@ -74,15 +82,13 @@ def named_by_key(
     source : path-like or None
         The run file, named before the key (not when None: the caller names it).
     """
-    m = _REFUSED.match(str(exc))
-    if m is None:
+    if exc.parameter is None:
         return exc
-    name = m["name"].strip().replace(" ", "_")
+    name = exc.parameter.replace(" ", "_")
     dest = ALIASES.get(name, name)
-    if dest not in keys or not _same(m["value"], values.get(dest)):
+    if dest not in keys or not _same(exc.value, values.get(dest)):
         return exc
-    where = "" if source is None else f"{source}: "
-    return InputError(f"{where}{keys[dest]} = {m['value']}{m['rest']}")
+    return exc.named(keys[dest], "" if source is None else f"{source}: ")
 
 
 @contextmanager
@@ -101,13 +107,18 @@ def keys_named(cfg: Any, table: str | None = None) -> Iterator[None]:
         raise named from None
 
 
-def core_keys_named(method: Callable[..., Any], table: str) -> Callable[..., Any]:
-    """``method`` of a RunConfig (the command whose table is ``table``) under
-    :func:`keys_named`."""
+def core_keys_named(method: Callable[..., Any]) -> Callable[..., Any]:
+    """Decorate the ``method`` of a RunConfig named after its command (``export_vtk`` for
+    ``export-vtk``) so that it runs under :func:`keys_named` with the command's table
+    (:data:`~fem_racket.io.config_keys.COMMAND_TABLES`): its refusal of a core table's value
+    names the key, as the command's."""
+    command = method.__name__.replace("_", "-")
 
     @functools.wraps(method)
     def named(self: Any, *args: Any, **kwargs: Any) -> Any:
-        with keys_named(self, table):
+        from fem_racket.io.config_keys import COMMAND_TABLES
+
+        with keys_named(self, COMMAND_TABLES[command]):
             return method(self, *args, **kwargs)
 
     return named

@@ -22,7 +22,15 @@ from typing import Any
 
 from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
-from fem_racket.io.config_tables import choice, flag, number, table_options, text, texts
+from fem_racket.io.config_tables import (
+    choice,
+    flag,
+    number,
+    overwrite_set,
+    table_options,
+    text,
+    texts,
+)
 from fem_racket.studies.calibrate import FAMILIES, TARGET_SETS
 from fem_racket.validation import InputError, show, work_begins
 
@@ -105,6 +113,8 @@ def calibrate_file(cfg: RunConfig, out: Any = None) -> Any:
     core = _core(cfg, {"ball_mass": DEFAULT_BALL_MASS, "out": None, "overwrite": False})
     o = table_options(cfg, "calibrate", CALIBRATE_OPTIONS, core)
     folder = out or o["out"]
+    if folder is None and (given := overwrite_set(cfg, "calibrate")):  # as the command
+        raise InputError(f"{given} is not allowed without out: nothing is written")
     files = [] if folder is None else calibration_files(folder, o["family"], o["targets"])
     check_targets([Target(f) for f in files], overwrite=o["overwrite"])
     cal = calibrate(o["family"], o["targets"], ball_mass=o["ball_mass"])

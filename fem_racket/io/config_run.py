@@ -166,6 +166,21 @@ def unwritten(key: str) -> str:
     return f"{key} is not allowed without out: it sets the histories or files written, and none are"
 
 
+def _written(cfg: RunConfig) -> bool:
+    """Whether the file names the output ``fem-racket simulate --config`` writes."""
+    return bool(cfg.table("simulate").get("out") or cfg.defaults().get("out"))
+
+
+def _check_overwrite_used(cfg: RunConfig) -> None:
+    """Refuse ``overwrite = true`` (``[simulate]``'s, else ``[output]``'s) where the file names
+    no output, as ``fem-racket simulate --config`` refuses it: nothing would use it."""
+    from fem_racket.io.config_tables import overwrite_set
+
+    given = overwrite_set(cfg, "simulate")
+    if given is not None and not _written(cfg):
+        raise InputError(unwritten(given))
+
+
 def _check_step_used(cfg: RunConfig, histories: bool | None) -> None:
     """Refuse ``[simulate] output_step`` (at other than its default) where the head-on or held
     impact computes no histories: no output in the file and ``histories`` not asked, as
@@ -175,7 +190,7 @@ def _check_step_used(cfg: RunConfig, histories: bool | None) -> None:
     d = cfg.defaults()
     if histories or step is None or _output_step(cfg, "simulate") == DEFAULT_STEP:
         return
-    if cfg.table("simulate").get("out") or d.get("out") or cfg.values.get("oblique"):
+    if _written(cfg) or cfg.values.get("oblique"):
         return
     if bed_from_options({k: d.get(k) for k in STRING_OPTIONS}) is None:
         raise InputError(unwritten(f"simulate.output_step = {show(step)} ({cfg.source})"))
@@ -184,8 +199,10 @@ def _check_step_used(cfg: RunConfig, histories: bool | None) -> None:
 def simulate_file(cfg: RunConfig, *, histories: bool | None = None) -> Any:
     """The impact ``cfg`` describes, as ``fem-racket simulate --config`` computes it: the
     result of :func:`run_file` on ``[simulate]`` (its keys checked as the command checks
-    them; ``[simulate] output_step`` refused where no histories are computed)."""
+    them; ``[simulate] output_step`` refused where no histories are computed, ``overwrite``
+    where no output is named)."""
     _check_simulate_table(cfg)
+    _check_overwrite_used(cfg)
     _check_step_used(cfg, histories)
     return run_file(cfg, histories=histories)[1]
 
@@ -229,7 +246,9 @@ def _run(cfg: RunConfig, histories: bool | None, table: str) -> Any:
     if hand is None and "hand_shock_window" in d:
         raise InputError(
             f"shock_window = {show(d['hand_shock_window'])} s is not allowed without a hand: "
-            "give --grip or a hand parameter"
+            "give --grip or a hand parameter",
+            parameter="shock_window",
+            value=d["hand_shock_window"],
         )
     if hand is not None:
         if strings is not None:

@@ -22,6 +22,7 @@ __all__ = [
     "flag",
     "integer",
     "number",
+    "overwrite_set",
     "table_options",
     "text",
     "texts",
@@ -137,3 +138,13 @@ def table_options(
         else:
             flag(f"{table}.{dest}", value)  # json, quiet: checked, how the command prints
     return out
+
+
+def overwrite_set(cfg: RunConfig, table: str) -> str | None:
+    """``KEY = VALUE (FILE)`` of the file's ``overwrite = true`` for the command whose table is
+    ``table`` (that table's key, else ``[output]``'s, as ``--config`` takes them), for the
+    refusal where the command writes nothing; None when the file leaves it false."""
+    own = cfg.table(table)
+    key = f"{table}.overwrite" if "overwrite" in own else "output.overwrite"
+    value = own["overwrite"] if "overwrite" in own else cfg.defaults().get("overwrite")
+    return f"{key} = {show(value)} ({cfg.source})" if value else None

@@ -49,7 +49,9 @@ def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
     if length is not None and width is not None:
         raise InputError(
             f"head area = {show(area)} cm^2 is not allowed with both --head-length and "
-            "--head-width: give two of the three"
+            "--head-width: give two of the three",
+            parameter="head area",
+            value=area,
         )
     low, high = HEAD_AXIS_RANGE
     if length is not None:
@@ -63,7 +65,9 @@ def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
         if not low <= value <= high:  # the axis the area sets
             raise InputError(
                 f"head area = {show(area)} cm^2 is not allowed: it makes the head {value:.4g} m "
-                f"{'long' if name == 'length' else 'wide'}, outside [{low:g}, {high:g}] m"
+                f"{'long' if name == 'length' else 'wide'}, outside [{low:g}, {high:g}] m",
+                parameter="head area",
+                value=area,
             )
     return axes
 

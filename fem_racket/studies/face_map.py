@@ -188,7 +188,9 @@ def face_map(
     if elements is not None and isinstance(frame, FrameModel):
         raise InputError(
             f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
-            "already (give a Frame or a FrameMesh to mesh)"
+            "already (give a Frame or a FrameMesh to mesh)",
+            parameter="elements",
+            value=elements,
         )
     check_at_rest(racket_speed, reference)  # the pivot sets the centre of percussion
     unknown = set(opts) - {"ball_mass", "kcb", "zeta", "separation", "modes", "tolerance"}

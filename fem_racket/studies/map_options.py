@@ -76,7 +76,9 @@ def check_at_rest(racket_speed: float, reference: Any, pivot: float | None = Non
             value = np.asarray(value).tolist()  # a number, or a sweep's values
             raise InputError(
                 f"{name} = {show(value)} {unit} is not allowed without a swing: give "
-                "racket_speed (--racket-speed)"
+                "racket_speed (--racket-speed)",
+                parameter=name,
+                value=value,
             )
 
 
@@ -183,13 +185,17 @@ def map_model(frame: Any, elements: int | None) -> FrameModel:
         if elements is not None:
             raise InputError(
                 f"elements = {show(elements)} is not allowed with a FrameModel: it is meshed "
-                "already (give a Frame or a FrameMesh to mesh)"
+                "already (give a Frame or a FrameMesh to mesh)",
+                parameter="elements",
+                value=elements,
             )
         return frame
     if isinstance(frame, FrameMesh) and elements not in (None, frame.n_elements):
         raise InputError(
             f"elements = {show(elements)} is not allowed with a mesh: it has "
-            f"{frame.n_elements} elements"
+            f"{frame.n_elements} elements",
+            parameter="elements",
+            value=elements,
         )
     return FrameModel.build(frame, DEFAULT_ELEMENTS if elements is None else elements)
 

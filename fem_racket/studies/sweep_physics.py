@@ -82,7 +82,9 @@ def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
         if _nonzero(values, name):
             raise InputError(
                 f"{name} = {show(values[name])} is not allowed {what}: the oblique impact on the "
-                "bed is modelled in the plane of the long axis only (as simulate's)"
+                "bed is modelled in the plane of the long axis only (as simulate's)",
+                parameter=name,
+                value=values[name],
             )
     lumped = "the bed replaces the lumped K_CB (give the ball's own law with law)"
     for name in ("kcb", "zeta"):
@@ -92,7 +94,9 @@ def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
     if _nonzero(values, "racket_speed"):
         why = "the strung racket is free and at rest"
         raise InputError(
-            f"racket_speed = {show(values['racket_speed'])} is not allowed {what}: {why}"
+            f"racket_speed = {show(values['racket_speed'])} is not allowed {what}: {why}",
+            parameter="racket_speed",
+            value=values["racket_speed"],
         )
     if solver not in STRUNG_OPTIONS:
         raise InputError(

@@ -49,7 +49,9 @@ def centre_of_percussion(props: MassProperties, pivot: float) -> float:
     if abs(arm) < 1e-9 * props.length:
         raise InputError(
             f"pivot = {pivot!r} m is not allowed for a centre of percussion: it is the centre "
-            f"of gravity ({props.cg:g} m)"
+            f"of gravity ({props.cg:g} m)",
+            parameter="pivot",
+            value=pivot,
         )
     return props.cg + props.inertia / (props.mass * arm)
 

@@ -98,14 +98,21 @@ def test_the_same_options_run_where_they_are_used(capsys, tmp_path, monkeypatch)
     capsys.readouterr()
 
 
-def test_a_shared_output_table_overwrite_is_not_refused(capsys, tmp_path, monkeypatch):
-    # [output] overwrite serves every command of a file: a command writing nothing skips it;
-    # the command's own table's overwrite without out is refused
+def test_a_shared_output_table_overwrite_is_refused_where_nothing_is_written(
+    capsys, tmp_path, monkeypatch
+):
+    # [output] overwrite where the command writes nothing is refused as --overwrite is (it
+    # was skipped: silently ignored), naming the key; so is the command's own table's
     monkeypatch.chdir(tmp_path)
     path = tmp_path / "run.toml"
     path.write_text("[output]\noverwrite = true\n")
-    assert main(["config", "--check", str(path)]) == 0, capsys.readouterr().err
-    assert main([*REFINE, "--no-files", "--config", str(path)]) == 0
+    code, _, err = run(capsys, "config", "--check", path)
+    assert code == 2 and "simulate would refuse it: output.overwrite = True" in err, err
+    code, _, err = run(capsys, *REFINE, "--no-files", "--config", path)
+    assert code == 2 and f"output.overwrite = True ({path}) is not allowed without" in err, err
+    assert "nothing is written" in err
+    assert main([*REFINE, "--config", str(path)]) == 0  # refine writes its files: it is used
+    assert (tmp_path / "output" / "refine.csv").exists()
     capsys.readouterr()
     path.write_text("[refine]\noverwrite = true\nno_files = true\n")
     code, _, err = run(capsys, *REFINE, "--config", path)

@@ -3,6 +3,7 @@
 file with the core tables a design reads (frame, ball, contact, the swing) and a cheap budget."""
 
 import json
+import re
 
 import pytest
 from clirun import run_json
@@ -79,17 +80,19 @@ def test_design_tables_refuse_as_the_command(capsys, tmp_path):
 
 
 def test_sensitivity_overwrite_without_out(capsys, tmp_path):
-    # the shared [output] overwrite is skipped where nothing is written; the table's own is
-    # refused, by the command and by the method alike (issue 21.3)
+    # overwrite where nothing is written is refused, the shared [output]'s (it was skipped:
+    # silently ignored) and the table's own, by the command and by the method alike (issue 21.3)
     pytest.importorskip("SALib")
     path = tmp_path / "run.toml"
     text = DESIGN.format(table="sensitivity", extra="designs = 8").replace(
         'mass_range = "start"\n', ""
     )
     path.write_text("[output]\noverwrite = true\n" + text)
-    assert main(["sensitivity", "--config", str(path), "--quiet"]) == 0
-    load_config(path).sensitivity()
-    capsys.readouterr()
+    assert main(["sensitivity", "--config", str(path), "--quiet"]) == 2
+    words = f"output.overwrite = True ({path}) is not allowed without"
+    assert words in capsys.readouterr().err
+    with pytest.raises(InputError, match=re.escape(f"{words} out: nothing is written")):
+        load_config(path).sensitivity()
     path.write_text(text + "overwrite = true\n")
     assert main(["sensitivity", "--config", str(path)]) == 2
     assert "sensitivity.overwrite = True" in capsys.readouterr().err

@@ -48,10 +48,11 @@ output_step = 2e-5
 
 FILES = {
     "every-table": EVERY_TABLE,
-    # (without an output a [simulate] output_step is refused: test_given_runfile.py)
-    "every-table-summary-only": EVERY_TABLE.replace('out = "r.json"\n', "").replace(
-        "[simulate]\noutput_step = 2e-5\n", ""
-    ),
+    # (without an output a [simulate] output_step and an overwrite are refused:
+    # test_given_runfile.py, test_runfile_overwrite.py)
+    "every-table-summary-only": EVERY_TABLE.replace(
+        'out = "r.json"\noverwrite = true\n', ""
+    ).replace("[simulate]\noutput_step = 2e-5\n", ""),
     # the case: EI1 = 500 gave COR 0.363950 in Python, 0.371760 on the command line
     "ei1-500": "[frame]\nei1_n_m2 = 500.0\n[impact]\nspeed_m_s = 30.0\n",
     "law-and-swing": (

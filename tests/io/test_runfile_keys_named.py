@@ -3,7 +3,9 @@ command line (``simulate --config``, ``config --check``) and in Python (``load_c
 .simulate()``), as the README promises (they named the library's parameter: ``speed = 1000.0
 m/s is not allowed``); the bound is the library's (no copy). Lead tape from a file has the
 bounds ``--add-mass`` has (2000 g ran; 1e9 g failed in the mesh naming neither key nor limit).
-A value from the command line is still named as its option."""
+A value from the command line is still named as its option. The key comes from the parameter
+and value the library's refusal carries (``InputError.parameter``, ``.value``), not from its
+words."""
 
 from __future__ import annotations
 
@@ -80,3 +82,33 @@ def test_lead_at_the_bound_runs_from_both(tmp_path, capsys):
     path.write_text('[frame]\nlead = [{ place = "3/9", mass_g = 1000.0 }]\n')
     cli = run_json(capsys, "simulate", "--config", path)
     assert cli["cor"] == pytest.approx(load_config(path).simulate().cor, rel=1e-12)
+
+
+#: keys named by the attribute path: dest -> the dotted key the file set it by
+KEYS = {"speed": "impact.speed_m_s", "ball_radius": "oblique.ball_radius_m", "law": "contact.law"}
+VALUES = {"speed": 1000.0, "ball_radius": 5.0, "law": "hertz"}
+
+
+@pytest.mark.parametrize(
+    ("parameter", "value", "line", "named"),
+    [
+        ("speed", 1000.0, "speed = 1000.0 m/s is not allowed: must lie in [1, 100]",
+         "run.toml: impact.speed_m_s = 1000.0 m/s is not allowed: must lie in [1, 100]"),
+        ("radius", 5, "radius = 5 m is not allowed: must lie in (0, 0.1]",  # an alias
+         "run.toml: oblique.ball_radius_m = 5 m is not allowed: must lie in (0, 0.1]"),
+        ("speed", 500.0, "speed = 500.0 m/s is not allowed: must lie in [1, 100]", None),
+        ("law", "hertz", "law = 'hertz' is not allowed: must be one of linear", None),  # text
+        (None, None, "speed = 1000.0 m/s is not allowed: must lie in [1, 100]", None),
+    ],
+)  # fmt: skip
+def test_the_key_comes_from_the_parameter_and_value_the_error_carries(
+    parameter, value, line, named
+):
+    from fem_racket.io.config_named import named_by_key
+    from fem_racket.validation import InputError
+
+    exc = InputError(line, parameter=parameter, value=value)
+    out = named_by_key(exc, KEYS, VALUES, "run.toml")
+    # a value the file did not give (500 from elsewhere), a text, or an error naming no
+    # parameter (its words are not read) stays as the library wrote it
+    assert str(out) == (named or line) and (out is exc) == (named is None)

@@ -46,7 +46,7 @@ from fem_racket.cli.options.faces import (
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
-from fem_racket.cli.options.runfile import given_options
+from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.runfile_named import where_set
 from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.impact.constants import DEFAULT_TOLERANCE, SEPARATION_EVENTS
@@ -196,10 +196,10 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("no_files = True is not allowed with --out: give one of them")
     default = not (args.out or args.no_files or args.json)
     outs = [Path(p) for p in (args.out or [])] or ([DEFAULT_OUTPUT] if default else [])
-    if not outs and "overwrite" in getattr(args, "explicit_options", ()):
+    if not outs and "overwrite" in given_options(args):  # on the command line or in the file
+        name = option_name(args, "overwrite") if "overwrite" in args.file_options else "--overwrite"
         raise InputError(
-            "--overwrite is not allowed without files: --no-files or --json without --out "
-            "writes none"
+            f"{name} is not allowed without files: --no-files or --json without --out writes none"
         )
     if args.mesh and not args.preset and "elements" in given_options(args):
         raise InputError(

@@ -232,17 +232,16 @@ def _twist_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
 def _check_unwritten(args: argparse.Namespace, dest: str) -> None:
     """Refuse ``--output-step`` (the head-on and held impacts compute histories only to write
     them) or ``--overwrite`` given on the command line without ``--out``: nothing would use it;
-    so is the run file's ``[simulate] output_step`` (simulate's own table; at other than its
-    default, as every run-file key) with no output in the file either (the Python method's
-    line, :func:`fem_racket.io.config_run.unwritten`). The shared ``[output]``
-    table's ``overwrite`` serves every command of the file and is not refused here."""
+    so is the run file's ``[simulate] output_step`` or ``overwrite`` (also ``[output]
+    overwrite``; at other than its default, as every run-file key) with no output in the file
+    either (the Python method's line, :func:`fem_racket.io.config_run.unwritten`)."""
     if args.out:
         return
     name = None
     if dest in getattr(args, "explicit_options", ()):
         value = "" if dest == "overwrite" else f" {show(getattr(args, dest))}"
         name = f"--{dest.replace('_', '-')}{value}"
-    elif getattr(args, "file_options", {}).get(dest, "").startswith("simulate."):
+    elif getattr(args, "file_options", {}).get(dest, "").startswith(("simulate.", "output.")):
         from fem_racket.io.config_run import unwritten
 
         raise InputError(unwritten(option_name(args, dest)))

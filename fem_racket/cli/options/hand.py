@@ -84,7 +84,9 @@ def hand_from_args(args: argparse.Namespace) -> Hand | None:
         if args.hand_shock_window is not None:
             raise InputError(
                 f"shock_window = {show(args.hand_shock_window)} s is not allowed without a hand: "
-                "give --grip or a hand parameter"
+                "give --grip or a hand parameter",
+                parameter="shock_window",
+                value=args.hand_shock_window,
             )
         return None
     return dataclasses.replace(GRIPS[args.hand_grip or "loose"], **given)

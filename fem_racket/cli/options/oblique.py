@@ -146,7 +146,9 @@ def stroke_from_args(args: argparse.Namespace) -> Stroke | None:
     if "path_angle" in given and args.racket_speed == 0.0:
         raise InputError(
             f"path_angle = {given['path_angle']!r} deg is not allowed without a swing: give "
-            "--racket-speed"
+            "--racket-speed",
+            parameter="path_angle",
+            value=given["path_angle"],
         )
     return Stroke(**given)
 

@@ -117,9 +117,8 @@ def add_overwrite_json(group: argparse._ArgumentGroup, printed: str = "a JSON su
 
 def overwrite_of(args: argparse.Namespace, writes: bool, output: str = "--out") -> bool:
     """``--overwrite`` where the command writes something (``writes``), else False; given on
-    the command line or in the command's own run-file table with nothing written it is refused
-    (it would be ignored). The shared ``[output]`` table's ``overwrite`` serves every command
-    and is skipped where nothing is written."""
+    the command line or in the run file (the command's own table or ``[output]``) with nothing
+    written it is refused (it would be ignored)."""
     from fem_racket.cli.options.runfile import option_name
     from fem_racket.validation import InputError
 
@@ -128,7 +127,7 @@ def overwrite_of(args: argparse.Namespace, writes: bool, output: str = "--out") 
     key = getattr(args, "file_options", {}).get("overwrite")
     if "overwrite" in getattr(args, "explicit_options", ()):
         raise InputError(f"--overwrite is not allowed without {output}: nothing is written")
-    if key is not None and not key.startswith("output."):
+    if key is not None:
         name = option_name(args, "overwrite")
         raise InputError(f"{name} is not allowed without {output}: nothing is written")
     return False

@@ -226,6 +226,7 @@ def apply_config(
     Called once by :func:`fem_racket.cli.main` after parsing.
     """
     from fem_racket.io.config import load_config
+    from fem_racket.io.config_named import command_keys
     from fem_racket.io.config_unused import refuse_unused
 
     argv = sys.argv[1:] if argv is None else list(argv)
@@ -246,7 +247,7 @@ def apply_config(
         refuse_unused(cfg, args.command, dests, given)
     except InputError as exc:
         raise InputError(f"{path}: {exc}") from None
-    keys = _file_keys(sub, args.command, cfg)
+    keys = command_keys(cfg, args.command)
     refuse_frame_clash(cfg, values, given, keys, path)
     defaults = {a.dest: a.default for a in sub._actions}
     for dest, value in values.items():
@@ -255,17 +256,6 @@ def apply_config(
             if dest not in defaults or value != defaults[dest]:  # a default changes nothing
                 args.file_options[dest] = keys.get(dest, dest)
     return args
-
-
-def _file_keys(sub: argparse.ArgumentParser, command: str, cfg: RunConfig) -> dict[str, str]:
-    """dest -> the dotted run-file key that sets it (the command's table wins)."""
-    from fem_racket.io.config_keys import COMMAND_TABLES
-    from fem_racket.io.config_named import file_keys
-
-    keys = file_keys(cfg.values)
-    table = COMMAND_TABLES.get(command, command)
-    keys.update({k.replace("-", "_"): f"{table}.{k}" for k in cfg.table(table)})
-    return keys
 
 
 def option_name(args: argparse.Namespace, dest: str) -> str:

@@ -90,7 +90,9 @@ def check_array(name: str, value: Any, unit: str, low: float, high: float, *, cl
         v = float(arr.ravel()[int(np.argmax(bad.ravel()))])
         unit_txt = f" {unit}" if unit else ""
         rng = "> 0" if high == math.inf else f"in [{low:g}, {high:g}{']' if closed_high else ')'}"
-        raise InputError(f"{name} = {v!r}{unit_txt} is not allowed: must be {rng}")
+        raise InputError(
+            f"{name} = {v!r}{unit_txt} is not allowed: must be {rng}", parameter=name, value=v
+        )
     return arr
 
 

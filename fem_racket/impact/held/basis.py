@@ -80,7 +80,9 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
     if not hand.stiffness > 0.0:
         raise InputError(
             f"grip stiffness = {hand.stiffness!r} N/m^2 is not allowed with the modal held "
-            "solver: must be > 0 (use solver 'cvode' or 'bdf': fem_racket.simulate_held)"
+            "solver: must be > 0 (use solver 'cvode' or 'bdf': fem_racket.simulate_held)",
+            parameter="grip stiffness",
+            value=hand.stiffness,
         )
     import scipy.linalg as sla  # here, not at import: the CLI's --help stays without scipy
 

@@ -44,7 +44,9 @@ def _window(batch: ProblemBatch) -> float:
         if model.mesh.n_elements > HELD_MAX_ELEMENTS:
             raise InputError(
                 f"elements = {model.mesh.n_elements} is not allowed with a hand: at most "
-                f"{HELD_MAX_ELEMENTS} (dense matrices of frame + hand)"
+                f"{HELD_MAX_ELEMENTS} (dense matrices of frame + hand)",
+                parameter="elements",
+                value=model.mesh.n_elements,
             )
     return check_range("shock_window", window, 0.0, MAX_WINDOW, unit="s", include_low=False)
 

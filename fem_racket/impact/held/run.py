@@ -56,7 +56,9 @@ def _check_size(solver: str, elements: int, rtol: float, atol: float) -> None:
         if elements > HELD_MAX_ELEMENTS:
             raise InputError(
                 f"elements = {elements} is not allowed with a hand: at most {HELD_MAX_ELEMENTS} "
-                "(dense matrices of frame + hand)"
+                "(dense matrices of frame + hand)",
+                parameter="elements",
+                value=elements,
             )
         return
     check_range("rtol", rtol, *RTOL_RANGE)
@@ -65,7 +67,9 @@ def _check_size(solver: str, elements: int, rtol: float, atol: float) -> None:
         raise InputError(
             f"elements = {elements} is not allowed with a hand and solver {solver!r}: at most "
             f"{PHYSICAL_MAX_ELEMENTS} (BDF on every DOF of frame + hand takes minutes beyond: "
-            "10 s at 40, 50 s at 60; use solver 'exact')"
+            "10 s at 40, 50 s at 60; use solver 'exact')",
+            parameter="elements",
+            value=elements,
         )
 
 

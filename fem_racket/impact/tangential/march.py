@@ -47,7 +47,9 @@ def check_chattering(friction: float, phases: int, t: float) -> None:
         raise InputError(
             f"friction = {show(friction)} is not allowed for this impact: the tangential "
             f"contact switched {MAX_PHASES} times by {t * 1e3:.4g} ms without settling "
-            "(grip and slide undecided: chattering)"
+            "(grip and slide undecided: chattering)",
+            parameter="friction",
+            value=friction,
         )
 
 

@@ -200,7 +200,9 @@ class DesignProblem(ParameterLayout, ProblemDescription):
             if not self.hand.grip_end < self.length:
                 raise InputError(
                     f"grip_end = {self.hand.grip_end!r} m is not allowed: must lie on the frame "
-                    f"(< {self.length:g} m)"
+                    f"(< {self.length:g} m)",
+                    parameter="grip_end",
+                    value=self.hand.grip_end,
                 )
         if self.swing is not None and self.swing.reference_inertia is None:
             object.__setattr__(self, "swing", replace(self.swing, reference_inertia=self._i0()))
