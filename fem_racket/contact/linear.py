@@ -169,12 +169,9 @@ class LinearContact(ContactLaw):
             low=1e2,
             high=1e7,
             help="ball/string stiffness K_CB",
-            # 1e2 is below the paper's K_CB(V) at its slowest speed, 1 m/s (322 N/m; 4.2e5 N/m
-            # at 100 m/s): a 75 ms contact for a tennis ball (1 N/m: 654 ms, minutes of CVODE).
-            # 1e7 is 120 x the paper's stiffest; its 0.24 ms contact is still resolved by a
-            # 10-element frame (COR -0.2126, -0.2139, -0.2134, -0.2134 at 10, 20, 40, 80
-            # elements), where 1e12 gave -0.563 to -0.914: contact shorter than any wave the
-            # mesh resolves, an answer set by the mesh.
+            # 1e2: below K_CB(V) at 1 m/s (322 N/m), a 75 ms contact (1 N/m: 654 ms, minutes of
+            # CVODE). 1e7: 120 x the paper's stiffest, a 0.24 ms contact 10 elements resolve (COR
+            # -0.2126/-0.2134 at 10/80 elements; 1e12: -0.563/-0.914, an answer set by the mesh).
             why="the paper's 2.74e4-8.33e4 N/m at 20-40 m/s (section 2.1.1), 322-4.2e5 N/m by "
             "its K_CB(V) over 1-100 m/s; beyond 1e7 the contact is too short for the frame's "
             "mesh to resolve",
