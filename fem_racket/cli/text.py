@@ -36,11 +36,16 @@ def note_modes(args: argparse.Namespace, model: FrameModel) -> None:
     available = model.fe.ndof - 2  # minus the two rigid-body modes
     if chosen and args.modes > available:
         n = model.mesh.n_elements
-        note(
-            args,
-            f"modes = {args.modes}: the {n}-element mesh has {available} flexible modes; "
-            f"using all {available}",
-        )
+        text = f"modes = {args.modes}: the {n}-element mesh has {available} flexible modes"
+        if getattr(args, "offset", 0.0):  # off the axis --modes counts bending and torsion each
+            torsion = model.torsion.ndof - 1  # minus the rigid roll
+            note(
+                args,
+                f"{text} of bending and {torsion} of torsion (--modes counts each family); "
+                f"using all, {available + torsion} flexible modes in all",
+            )
+            return
+        note(args, f"{text}; using all {available}")
 
 
 def significant(value: float, digits: int) -> str:

@@ -27,14 +27,17 @@ def closing_speed(speed: float, racket_speed: float) -> float:
 
 def check_kcb_closing(speed: float, racket_speed: float, closing: float, name: str) -> None:
     """Refuse a swing whose closing speed ``closing`` [m/s] (of the ball's ``speed`` and the
-    racket's) is above the speeds the paper gives K_CB for, where K_CB follows from it (the
+    racket's) is outside the speeds the paper gives K_CB for, where K_CB follows from it (the
     paper's law without kcb): named as the racket speed (``name`` = ``racket_speed`` [m/s]), not
-    as the closing speed it derives."""
-    if closing > KCB_SPEED_RANGE[1]:
+    as the closing speed it derives. One that does not close is :func:`closing_speed`'s to
+    refuse."""
+    low, high = KCB_SPEED_RANGE
+    if 0.0 < closing < low or closing > high:
+        side = f"above the {high:g}" if closing > high else f"below the {low:g}"
         raise InputError(
             f"{name} = {show(racket_speed)} m/s is not allowed with speed = {show(speed)} m/s: "
-            f"the closing speed {closing:g} m/s is above the {KCB_SPEED_RANGE[1]:g} m/s where the "
-            "paper's K_CB holds (give kcb)",
+            f"the closing speed {closing:g} m/s is {side} m/s where the paper's K_CB holds "
+            "(give kcb)",
             parameter=name,
             value=racket_speed,
         )

@@ -229,7 +229,7 @@ def solve_law_impact(
         d = y[:, :n] @ np.concatenate([[1.0], -a])
         v = y[:, n : 2 * n] @ np.concatenate([[1.0], -a])
         z = y[:, -1] if law.state == "ode" else np.maximum.accumulate(d)
-        peak = float(np.max(law.force(d, v, z)))  # on CVODE's output grid (sampled)
+        peak = float(np.max(np.concatenate([law.force(d, v, z), tr.peaks])))  # grid, maxima
         if o.output_step is None:
             t, y, z = t[[0, -1]], y[[0, -1]], z[[0, -1]]
         return LawRun(t, y[:, 0], y[:, n], y[:, 1:n], y[:, n + 1 : 2 * n], z, peak)

@@ -14,9 +14,10 @@ from typing import Any
 from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.impact.constants import BASES, DEFAULT_TOLERANCE
 from fem_racket.impact.reduction import check_tolerance
+from fem_racket.impact.system import MAX_OUTPUT_TIMES
 from fem_racket.validation import InputError, check_choice, check_integer, check_positive, show
 
-__all__ = ["BASES", "DEFAULTS", "UNSET", "Settings", "SolverOptions"]
+__all__ = ["BASES", "DEFAULTS", "UNSET", "Settings", "SolverOptions", "check_time_limit"]
 
 
 class _Unset:
@@ -119,3 +120,34 @@ class SolverOptions:
         """Every option resolved: given, else ``defaults``, else :data:`DEFAULTS`."""
         values = {**defaults, **self.given()}
         return Settings(**values)
+
+
+def check_time_limit(settings: Settings, t_est: float, steps: int | None, solver: str) -> None:
+    """Refuse ``settings.t_max`` [s] when the times a solver lays out up to it (before it
+    allocates them) would be more than :data:`~fem_racket.impact.system.MAX_OUTPUT_TIMES`.
+
+    Those times are the output times (``output_step``) and, with or without them, the solver's
+    own grid of ``steps`` per contact time (estimated ``t_est`` [s], eq 11; None: no grid, its
+    work does not grow with t_max). The finer of the two binds, and the message names it.
+    """
+    t_max = settings.t_max
+    output = math.inf if settings.output_step is None else settings.output_step
+    grid = math.inf if steps is None else t_est / steps
+    step = min(output, grid)
+    if t_max is None or t_max <= MAX_OUTPUT_TIMES * step:
+        return
+    if output <= grid:
+        raise InputError(
+            f"t_max = {show(t_max)} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} output "
+            f"times of output_step = {output!r} s, so t_max <= {MAX_OUTPUT_TIMES * output:.3g} s "
+            "(or a larger output_step)",
+            parameter="t_max",
+            value=t_max,
+        )
+    raise InputError(
+        f"t_max = {show(t_max)} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} time steps of "
+        f"{grid:.3g} s (solver {solver!r} takes {steps} per contact time, {t_est:.3g} s by "
+        f"eq 11), so t_max <= {MAX_OUTPUT_TIMES * grid:.3g} s",
+        parameter="t_max",
+        value=t_max,
+    )

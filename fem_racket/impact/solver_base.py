@@ -11,6 +11,7 @@ protocol (:class:`~fem_racket.impact.problem_batch.ProblemBatch` in, a
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import replace
 from typing import Any, ClassVar
 
 from fem_racket.impact.clamped_solve import solve_clamped
@@ -18,7 +19,7 @@ from fem_racket.impact.held.run import HeldSettings, held_impact
 from fem_racket.impact.oblique.solve import solve_oblique
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
-from fem_racket.impact.settings import SolverOptions
+from fem_racket.impact.settings import SolverOptions, check_time_limit
 from fem_racket.impact.strung.solve import check_strung, solve_strung
 from fem_racket.validation import InputError, show, work_begins
 
@@ -100,12 +101,14 @@ class Solver:
                 "on a clamped head: every mode of the head is kept, and histories come only "
                 "from 'general', at its steps",
             )
+            self._check_time_limit(problem)
             return
         if problem.strings is not None:
             check_strung(problem, self.name, self.options)
             return
         if problem.held:
             self._refuse_options(self.held_refuses, _HELD_WHY)
+        self._check_time_limit(problem)
 
     def solve(self, problem: ImpactProblem) -> Any:
         """The outcome of ``problem``: an ImpactResult (a HeldRun for a hand-held racket, a
@@ -174,6 +177,23 @@ class Solver:
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         raise NotImplementedError
+
+    def _grid(self, problem: ImpactProblem) -> int | None:
+        """Time steps per estimated contact time this solver lays out up to t_max for
+        ``problem`` besides the output times (None: none, its work does not grow with t_max)."""
+        return None
+
+    def _check_time_limit(self, problem: ImpactProblem) -> None:
+        """Refuse a t_max whose times would be too many to allocate (the one size check of
+        every path: :func:`~fem_racket.impact.settings.check_time_limit`)."""
+        s = self.options.settings()
+        if s.t_max is None:
+            return
+        if problem.clamped:  # no output times: histories at the integrator's steps
+            s = replace(s, output_step=None)
+        law = problem.contact() if problem.law is None else problem.law
+        t_est = float(law.contact_time_estimate(problem.ball.mass, problem.closing_speed))
+        check_time_limit(s, t_est, self._grid(problem), self.name)
 
     def _solve(self, problem: ImpactProblem) -> Any:
         """Solve a checked problem on its structure: a string bed by the strung racket's paths

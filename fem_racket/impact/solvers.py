@@ -36,7 +36,10 @@ from typing import Any
 
 from fem_racket.impact.batch_solve import each_batch, engine_batch, law_batch
 from fem_racket.impact.constants import SOLVER_NAMES
+from fem_racket.impact.general.integrator import settings as general_settings
+from fem_racket.impact.general.vouch import first_steps
 from fem_racket.impact.held.batch import held_batch
+from fem_racket.impact.ode import integrators, law_cvode
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import SolverOptions
@@ -100,6 +103,12 @@ class GeneralSolver(Solver):
             raise InputError(
                 "solver = 'general' is not allowed with a hand: must be one of exact, cvode, bdf"
             )
+        else:
+            self._check_time_limit(problem)
+
+    def _grid(self, problem: ImpactProblem) -> int | None:
+        steps = general_settings(self.options.settings().tolerance)[0]
+        return int(first_steps(steps, getattr(problem.law, "exponent", 1.0), 1)[0])
 
     def _check_batch(self, batch: ProblemBatch) -> None:
         super()._check_batch(batch)
@@ -143,6 +152,13 @@ class _OdeSolver(Solver):
 
     def _check_batch(self, batch: ProblemBatch) -> None:
         """Each case is checked as its problem (:func:`.batch_solve.each_batch`)."""
+
+    def _grid(self, problem: ImpactProblem) -> int | None:
+        if self.options.settings().output_step is not None:
+            return None  # the output times are its grid
+        if problem.linear and problem.frame_velocity is None:
+            return integrators.GRID_STEPS
+        return law_cvode.GRID_STEPS
 
     def _batch(self, batch: ProblemBatch) -> BatchOutcome:
         return each_batch(self, batch)

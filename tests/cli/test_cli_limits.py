@@ -33,17 +33,19 @@ def test_limits_refused_at_once(capsys, cwd, argv, message):
 
 
 @pytest.mark.parametrize(
-    ("option", "message"),
+    ("option", "step", "message"),
     [
-        (["--t-max", "11"], "t_max = 11.0 s is not allowed"),
-        (["--kcb", "1e-6"], "kcb = 1e-06 N/m is not allowed"),
+        (["--t-max", "11"], [], "t_max = 11.0 s is not allowed"),
+        # the softest kcb allowed (audit F15) at a fine step
+        (["--kcb", "100"], ["--output-step", "1e-7"], "kcb = 100.0 N/m is not allowed"),
     ],
 )
-def test_output_times_limit_names_the_option_given(cwd, capsys, option, message):
+def test_output_times_limit_names_the_option_given(cwd, capsys, option, step, message):
     # Issue 12: refused with an error about output_step, which the user never gave. With --out
     # (histories written) the limit names what makes the output times so many; without it no
     # history is kept, so nothing limits the run.
-    assert message in refused_before_any_file(capsys, "simulate", *option, "--out", "r.json")
+    out = ["--out", "r.json"]
+    assert message in refused_before_any_file(capsys, "simulate", *option, *step, *out)
     assert main(["simulate", *option]) == 0
 
 

@@ -43,8 +43,9 @@ def test_significant_digits(value, digits, text):
 
 
 def test_small_peak_force_keeps_its_digits(capsys):
-    # 1 m/s on a soft 10 N/m string with a 10 g ball: a peak force well below 1 N.
-    argv = ["simulate", "--speed", "1", "--kcb", "10", "--ball-mass", "0.01"]
+    # 1 m/s on a soft 100 N/m string (the softest allowed) with a 5 g ball: a peak force below
+    # 1 N (0.64 N).
+    argv = ["simulate", "--speed", "1", "--kcb", "100", "--ball-mass", "0.005"]
     _, out, _ = run(capsys, *argv)
     _, js, _ = run(capsys, *argv, "--json")
     peak = json.loads(js)["peak_force_n"]

@@ -15,7 +15,7 @@ from fem_racket.contact.registry import FAMILIES
 #: :meth:`LawParameter.interval`) | key. The defaults of linear: the paper's K_CB at 20 m/s and
 #: zeta_from_cor(0.83), eq (4).
 EXPECTED = """
-linear | kcb | stiffness | N/m | 27400.0 | (0, 1e+12] | kcb_n_m
+linear | kcb | stiffness | N/m | 27400.0 | [100, 1e+07] | kcb_n_m
 linear | zeta | zeta | - | 0.05920650167927682 | [0, 1) | zeta
 hunt-crossley | hc_stiffness | stiffness | N/m^n | 2.978e+24 | [100, 1e+40] | hc_stiffness_n_m_n
 hunt-crossley | hc_exponent | exponent | - | 14.87 | [1, 20] | hc_exponent

@@ -40,8 +40,10 @@ def test_output_count_refusal_names_the_parameter_given():
     with pytest.raises(InputError, match=r"^t_max = 11\.0 s is not allowed"):
         simulate(t_max=11.0)
     with pytest.raises(InputError, match=r"^kcb = 1e-06 N/m is not allowed"):
-        simulate(kcb=1e-6)
-    assert simulate(kcb=1e-6, output_step=None).contact_time > 100.0
+        simulate(kcb=1e-6)  # now below kcb's range (audit F15): the softest allowed, 100 N/m
+    with pytest.raises(InputError, match=r"^kcb = 100\.0 N/m is not allowed with at most 1e\+06"):
+        simulate(kcb=100.0, output_step=1e-7)
+    assert simulate(kcb=100.0, output_step=None).contact_time > 0.06
 
 
 def test_ill_conditioned_exact_path_is_a_one_line_refusal(standard_model):

@@ -8,6 +8,7 @@ from fem_racket.contact.linear import kcb_from_speed
 from fem_racket.impact.simulate import simulate
 from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
 from fem_racket.validation import InputError
+from tests.clirun import one_error
 
 L = 0.68
 
@@ -54,6 +55,19 @@ def test_a_closing_speed_beyond_the_papers_k_cb_names_the_racket_speed(standard_
     assert simulate(
         standard_model, swing=Swing.from_speed(75.0, standard_model.mesh.length), output_step=None
     )
+
+
+def test_a_closing_speed_below_the_papers_k_cb_names_the_racket_speed(standard_model, capsys):
+    # Audit F10: --racket-speed -19.9 was refused (after the checks) as "speed =
+    # 0.10000000000000142 m/s", a value the user never gave: now at the problem, named as the
+    # racket's speed with the closing speed it gives, below the paper's 1 m/s.
+    swing = Swing.from_speed(-19.9, standard_model.mesh.length)
+    words = "m/s is not allowed with speed = 20.0 m/s: the closing speed 0.1 m/s is below the 1 m/s"
+    with pytest.raises(InputError, match=r"^racket speed at the impact point = -19\.9 " + words):
+        simulate(standard_model, swing=swing)
+    line = one_error(capsys, "simulate", "--racket-speed", "-19.9")
+    assert "racket_speed = -19.9 " + words in line
+    assert simulate(standard_model, swing=swing, kcb=2.74e4, output_step=None).cor > 0.0
 
 
 # (position x/L, ball speed, racket speed at 0.75 L, pivot [m]): translation, hand, shoulder,

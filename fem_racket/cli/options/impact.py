@@ -193,7 +193,8 @@ def add_solver_options(parser: argparse.ArgumentParser, *, t_max: bool = True) -
         default=DEFAULT_MODES,
         metavar="N",
         help=f"flexible frame modes kept in the modal basis (default {DEFAULT_MODES}; "
-        "a mesh of n elements has 2n, all kept when fewer)",
+        "a mesh of n elements has 2n, all kept when fewer; off the long axis N of bending "
+        "and N of torsion)",
     )
     if t_max:
         s.add_argument(

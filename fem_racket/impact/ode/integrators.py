@@ -33,6 +33,7 @@ from fem_racket.validation import AccuracyError, InputError, check_choice, check
 
 __all__ = [
     "ATOL_RANGE",
+    "GRID_STEPS",
     "PHYSICAL_MAX_ELEMENTS",
     "RTOL_RANGE",
     "SOLVERS",
@@ -58,6 +59,9 @@ ATOL_RANGE = (1e-16, 1e-8)
 #: Most elements for the physical basis (every FE DOF in the BDF system): its undamped high
 #: modes make CVODE take 3 s at 20 elements, 23 s at 40 and minutes at 80.
 PHYSICAL_MAX_ELEMENTS = 40
+#: Output grid of the BDF paths per estimated contact time when no output times are asked (the
+#: summary's peak force is taken on it).
+GRID_STEPS = 200
 
 
 def check_solver_settings(solver: str, basis: str, elements: int, rtol: float, atol: float) -> None:
@@ -87,16 +91,26 @@ def _bdf_setup(
     c = system.event_vector(run.separation)
     t_est = system.contact_time_estimate()
     t_max = 20.0 * t_est if run.t_max is None else run.t_max
-    step = t_est / 200.0 if run.output_step is None else run.output_step
+    step = t_est / GRID_STEPS if run.output_step is None else run.output_step
     tspan = np.arange(0.0, t_max + 0.5 * step, step)
     return A, c, tspan, system.initial_state()
 
 
-def _trajectory(system: CoupledSystem, t: np.ndarray, y: np.ndarray, keep_all: bool) -> Trajectory:
+def _peak_rate(system: CoupledSystem, A: Any) -> np.ndarray:
+    """Row r with dF/dt = r @ y (F = c @ y the contact force, y' = A y): its roots falling
+    through 0 are the force's maxima, found by the integrator's root finding on its dense
+    solution (so the peak force does not depend on the output times)."""
+    return np.asarray(A.T @ system.event_vector("force")).ravel()
+
+
+def _trajectory(
+    system: CoupledSystem, t: np.ndarray, y: np.ndarray, keep_all: bool, peaks: np.ndarray
+) -> Trajectory:
     """Split the states into coordinates and rates; the peak force over every computed time
-    (the output grid, or t_est / 200 steps when only the ends are kept)."""
+    (the output grid, or t_est / :data:`GRID_STEPS` steps when only the ends are kept) and the
+    force's maxima ``peaks`` (states, shape (k, 2 n)) found between them."""
     n = system.size
-    peak = float(np.max(y @ system.event_vector("force")))
+    peak = float(np.max(np.vstack([y, peaks]) @ system.event_vector("force")))
     if not keep_all:
         t, y = t[[0, -1]], y[[0, -1]]
     return Trajectory(np.asarray(t), y[:, :n].copy(), y[:, n:].copy(), peak)
@@ -141,18 +155,23 @@ def solve_cvode(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -
     def jac(t: float, y: np.ndarray, yp: np.ndarray, JJ: np.ndarray) -> None:
         JJ[:, :] = A
 
+    rate = _peak_rate(system, A)
+
     def events(t: float, y: np.ndarray, ev: np.ndarray) -> None:
         ev[0] = c @ y
+        ev[1] = rate @ y
 
-    events.terminal = [True]
-    events.direction = [-1]
-    solver = cvode_bdf(rhs, jac, events, 1, rtol=run.rtol, atol=run.atol, max_num_steps=100000)
+    events.terminal = [True, False]  # separation ends the run; a force maximum is recorded
+    events.direction = [-1, -1]
+    solver = cvode_bdf(rhs, jac, events, 2, rtol=run.rtol, atol=run.atol, max_num_steps=100000)
     sol = solver.solve(tspan, y0)
     if not sol.success:
         raise AccuracyError(f"solver = 'cvode' failed: {_one_line(sol.message)}")
-    if sol.t_events is None or len(sol.t_events) == 0:
+    hits = np.zeros((0, 2)) if sol.i_events is None else np.asarray(sol.i_events)
+    if not np.any(hits[:, 0]):
         raise no_separation(float(tspan[-1]))
-    return _trajectory(system, sol.t, sol.y, run.output_step is not None)
+    peaks = np.asarray(sol.y_events)[hits[:, 1] != 0]
+    return _trajectory(system, sol.t, sol.y, run.output_step is not None, peaks)
 
 
 def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
@@ -164,15 +183,21 @@ def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> 
     def event(t: float, y: np.ndarray) -> float:
         return float(c @ y)
 
+    rate = _peak_rate(system, A)
+
+    def peak(t: float, y: np.ndarray) -> float:
+        return float(rate @ y)
+
     event.terminal = True
     event.direction = -1
+    peak.direction = -1  # a force maximum, recorded (not terminal)
     sol = solve_ivp(
         lambda t, y: A @ y,
         (0.0, float(tspan[-1])),
         y0,
         method="BDF",
         t_eval=tspan,
-        events=event,
+        events=[event, peak],
         jac=lambda t, y: A,
         rtol=run.rtol,
         atol=run.atol,
@@ -185,7 +210,8 @@ def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> 
     y = np.vstack([sol.y.T, sol.y_events[0][0]])
     if t.size > 1 and t[-1] - t[-2] < 1e-12:
         t, y = np.delete(t, -2), np.delete(y, -2, axis=0)
-    return _trajectory(system, t, y, run.output_step is not None)
+    peaks = np.asarray(sol.y_events[1]).reshape(-1, y.shape[1])
+    return _trajectory(system, t, y, run.output_step is not None, peaks)
 
 
 #: Solver name -> function, all with the signature of :func:`solve_exact`.

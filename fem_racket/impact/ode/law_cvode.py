@@ -21,16 +21,21 @@ import numpy as np
 
 from fem_racket.contact.law import ContactLaw
 
-__all__ = ["LawTrajectory", "solve_law_cvode"]
+__all__ = ["GRID_STEPS", "LawTrajectory", "solve_law_cvode"]
+
+#: Stored times per estimated contact time when no output step is given.
+GRID_STEPS = 400
 
 
 @dataclass(frozen=True, eq=False)
 class LawTrajectory:
-    """CVODE's answer: times and states [u_B, eta, u_B', eta', (z)] up to separation."""
+    """CVODE's answer: times and states [u_B, eta, u_B', eta', (z)] up to separation, and
+    the contact force at its maxima between them (root-found: dF/dt falling through 0) [N]."""
 
     t: np.ndarray
     y: np.ndarray
     n: int
+    peaks: np.ndarray
 
     @property
     def contact_time(self) -> float:
@@ -75,7 +80,7 @@ def solve_law_cvode(
     t_max : float, optional
         Give up at this time [s]; 4 x the law's estimate by default.
     output_step : float, optional
-        Spacing of stored times [s]; by default 400 points per estimated contact time.
+        Spacing of stored times [s]; by default :data:`GRID_STEPS` per estimated contact time.
     """
     from fem_racket.impact.ode.integrators import cvode_bdf
     from fem_racket.impact.system import no_separation
@@ -89,7 +94,7 @@ def solve_law_cvode(
     meff = 1.0 / (1.0 / ball_mass + np.sum(a[omega == 0] ** 2))
     t_est = float(law.contact_time_estimate(meff, speed))
     t_max = 4.0 * t_est if t_max is None else t_max
-    step = t_est / 400.0 if output_step is None else output_step
+    step = t_est / GRID_STEPS if output_step is None else output_step
     base = np.zeros((size, size))
     base[:n, n : 2 * n] = np.eye(n)
     base[n : 2 * n, :n] = -np.diag(w2)
@@ -132,8 +137,17 @@ def solve_law_cvode(
             JJ[-1, n : 2 * n] = gv * h
             JJ[-1, -1] = gz
 
+    def force_rate(y: np.ndarray, d: float, v: float, z: float) -> float:
+        """dF/dt [N/s] = F_d delta' + F_v delta'' + F_z z' (z = delta while loading)."""
+        yp = np.empty(size)
+        rhs(0.0, y, yp)
+        fd, fv, fz = (float(x) for x in law.partials(d, v, z))
+        zp = yp[-1] if ode else (v if loading[0] else 0.0)
+        return fd * v + fv * float(h @ yp[n : 2 * n]) + fz * zp
+
     def events(t: float, y: np.ndarray, ev: np.ndarray) -> None:
         d, v, z = parts(y)
+        ev[2] = force_rate(y, d, v, z)
         if law.end == "force":
             ev[0] = law.force(d, v, z)
         elif law.end == "state":
@@ -143,25 +157,29 @@ def solve_law_cvode(
         # re-loading needs delta to climb back past the turning point (by a round-off margin)
         ev[1] = v if loading[0] else d - z_fixed[0] * (1.0 + 1e-9)
 
-    events.terminal = [True, law.state == "memory"]
-    events.direction = [-1, -1]
-    ts, ys = [np.array([0.0])], [y0[None, :]]
+    events.terminal = [True, law.state == "memory", False]  # a force maximum: recorded
+    events.direction = [-1, -1, -1]
+    ts, ys, peaks = [np.array([0.0])], [y0[None, :]], [np.zeros(0)]
     t0 = 0.0
     while True:
         if law.state == "memory":
-            events.direction = [-1, -1 if loading[0] else 1]
+            events.direction = [-1, -1 if loading[0] else 1, -1]
         span = np.arange(t0, t_max + 0.5 * step, step)
         if span.size < 2:
             raise no_separation(t_max)
-        solver = cvode_bdf(rhs, jac, events, 2, rtol=rtol, atol=atol, max_num_steps=200000)
+        solver = cvode_bdf(rhs, jac, events, 3, rtol=rtol, atol=atol, max_num_steps=200000)
         sol = solver.solve(span, y0)
         if not sol.success:
             raise RuntimeError(f"CVODE failed: {sol.message}")
         ts.append(sol.t[1:])
         ys.append(sol.y[1:])
-        if sol.i_events is None or len(sol.i_events) == 0:
+        hits = np.zeros((0, 3)) if sol.i_events is None else np.asarray(sol.i_events)
+        at_peaks = np.asarray(sol.y_events)[hits[:, 2] != 0] if hits.size else []
+        peaks.append(np.array([law.force(*parts(y)) for y in at_peaks], dtype=float))
+        ends = hits[np.any(hits[:, :2], axis=1), :2]  # the end and branch events
+        if ends.size == 0:
             raise no_separation(t_max)
-        which = np.flatnonzero(np.asarray(sol.i_events)[-1])
+        which = np.flatnonzero(ends[-1])
         if 0 in which and (law.state != "memory" or not loading[0]):
             break
         # a memory law changes branch: loading <-> unloading
@@ -169,4 +187,4 @@ def solve_law_cvode(
         if loading[0]:
             z_fixed[0] = float(h @ y0[:n])
         loading[0] = not loading[0]
-    return LawTrajectory(np.concatenate(ts), np.vstack(ys), n)
+    return LawTrajectory(np.concatenate(ts), np.vstack(ys), n, np.concatenate(peaks))

@@ -1,0 +1,64 @@
+"""A t_max is refused before anything its size is allocated, on every path (audit F14): the
+summary-only general and ODE paths once allocated their grid up to t_max (1 TiB at 1e6 s)."""
+
+import time
+
+import pytest
+
+from fem_racket import simulate
+from fem_racket.impact.clamped import CENTRE, ClampedHead
+from fem_racket.impact.problem import Impact, ImpactProblem
+from fem_racket.impact.settings import Settings, check_time_limit
+from fem_racket.impact.solvers import make_solver
+from fem_racket.impact.system import MAX_OUTPUT_TIMES
+from fem_racket.validation import InputError
+from tests.clirun import library_error, refused_before_any_file
+
+SUMMARY = [
+    (["--law", "hysteretic"], "general", {"law": "hysteretic"}),
+    (["--solver", "cvode"], "cvode", {"solver": "cvode"}),
+    (
+        ["--law", "hysteretic", "--solver", "cvode"],
+        "cvode",
+        {"law": "hysteretic", "solver": "cvode"},
+    ),
+    (["--solver", "bdf"], "bdf", {"solver": "bdf"}),
+]
+
+
+@pytest.mark.parametrize(("argv", "solver", "options"), SUMMARY)
+def test_summary_only_t_max_refused_before_allocating(capsys, cwd, argv, solver, options):
+    # Was a 57-line traceback "Unable to allocate 1.03 TiB" (general), 378 GiB (cvode, bdf).
+    t0 = time.process_time()
+    line = refused_before_any_file(capsys, "simulate", *argv, "--t-max", "1e6")
+    words = "t_max = 1000000.0 s is not allowed: at most 1e+06 time steps of"
+    assert words in line and f"(solver {solver!r} takes" in line, line
+    assert words in library_error(lambda: simulate(t_max=1e6, output_step=None, **options))
+    assert time.process_time() - t0 < 2.0  # CPU seconds: nothing was integrated
+
+
+def test_clamped_general_t_max_refused():
+    # The general integrator on a clamped head (summary only) takes t_max too.
+    problem = ImpactProblem(ClampedHead(), Impact(CENTRE, 20.0))
+    text = library_error(lambda: make_solver("general", t_max=1e6).solve(problem))
+    assert text.startswith("t_max = 1000000.0 s is not allowed: at most 1e+06 time steps of")
+
+
+def test_output_times_keep_their_wording_on_every_solver():
+    # With histories the output times bind, in the words of issue 12 (tests/cli/test_cli_limits).
+    for options in ({}, {"solver": "cvode"}, {"law": "hysteretic"}):
+        with pytest.raises(InputError, match=r"^t_max = 11\.0 s is not allowed: at most 1e\+06 "):
+            simulate(t_max=11.0, **options)
+
+
+def test_the_limit_is_the_finer_grid_at_its_edge():
+    # MAX_OUTPUT_TIMES steps of the finer of output_step and the solver's grid t_est / steps.
+    t_est, steps = 4.5e-3, 200
+    grid = t_est / steps
+    check_time_limit(Settings(t_max=MAX_OUTPUT_TIMES * grid, output_step=None), t_est, steps, "x")
+    with pytest.raises(InputError, match=r"time steps of 2\.25e-05 s .* t_max <= 22\.5 s$"):
+        check_time_limit(Settings(t_max=22.6, output_step=None), t_est, steps, "x")
+    with pytest.raises(InputError, match=r"output times of output_step = 1e-05 s, so t_max <= 10"):
+        check_time_limit(Settings(t_max=10.1, output_step=1e-5), t_est, steps, "x")
+    # no grid (the exact solver without histories): its work does not grow with t_max
+    check_time_limit(Settings(t_max=1e9, output_step=None), t_est, None, "exact")
