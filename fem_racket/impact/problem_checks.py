@@ -29,7 +29,6 @@ from fem_racket.strings.reach import on_bed, strike_interval
 from fem_racket.validation import InputError, show
 
 __all__ = [
-    "LUMPED",
     "check_build_options",
     "bed_coordinates",
     "check_held",
@@ -65,7 +64,11 @@ def named_law(law: Any, strings: Any) -> ContactLaw | None:
     law; that law named with a string bed (``strings`` not None) is refused as kcb and zeta are:
     its K_CB is the ball and strings together."""
     if law == "linear" and strings is not None:
-        raise InputError(f"law = 'linear' is not allowed with a string bed: {LUMPED}")
+        raise InputError(
+            f"law = 'linear' is not allowed with a string bed: {LUMPED}",
+            parameter="law",
+            value=law,
+        )
     return get_law(law) if isinstance(law, str) else law
 
 
@@ -217,13 +220,12 @@ def check_strings(problem: Any) -> None:
     if not isinstance(problem.strings, StringBed):
         raise InputError(f"strings = {problem.strings!r} is not allowed: must be a StringBed")
     at_rest = "the strung racket is free and at rest"
-    lumped = LUMPED
     refused = {
         "hand": (problem.held, at_rest),
         "swing": (problem.swing is not None, at_rest),
         "frame_velocity": (problem.frame_velocity is not None, at_rest),
-        "kcb": (problem.kcb is not None, lumped),
-        "zeta": (problem.zeta is not None, lumped),
+        "kcb": (problem.kcb is not None, LUMPED),
+        "zeta": (problem.zeta is not None, LUMPED),
     }
     for key, (given, why) in refused.items():
         if given:

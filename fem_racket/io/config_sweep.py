@@ -66,7 +66,7 @@ def sweep_file(cfg: RunConfig, *, backend: str | None = None, workers: int | Non
         frame,
         **grid,
         **kwargs,
-        law=settings.get("law", "linear"),
+        law=None if settings.get("law", "linear") == "linear" else settings["law"],  # at default
         peak_force=settings.get("peak_force", False),
         chunk_size=settings.get("chunk_size"),
         **where,

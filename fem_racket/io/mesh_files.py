@@ -247,5 +247,11 @@ def save_mesh(mesh: FrameMesh, path: str | os.PathLike, *, binary: bool = True) 
         kwargs["data_format"] = "XML"  # no .h5 beside it (named after a temporary, left behind)
     elif suffix == ".msh":
         kwargs["file_format"] = "gmsh"  # meshio would otherwise pick ANSYS for .msh
-    meshio.write(path, out, **kwargs)
+    try:
+        meshio.write(path, out, **kwargs)
+    except OSError:
+        raise  # a fault of the disk (full, ...): the caller's atomic output names the file
+    except Exception as exc:  # unsupported cell data, ... (the suffix is checked before)
+        msg = " ".join(str(exc).split()) or type(exc).__name__
+        raise InputError(f"mesh output = '{path}' cannot be written: {msg}") from None
     return path

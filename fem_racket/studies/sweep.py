@@ -29,9 +29,10 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.contact.presets import PRESETS, get_law
+from fem_racket.contact.presets import PRESETS
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.segments import Frame
+from fem_racket.impact.problem_checks import named_law
 from fem_racket.outputs import atomic_output, atomic_outputs, check_output_path, sidecar_path
 from fem_racket.studies.cases import COLUMNS, VARIABLES, chunk_problems, run_chunk, sweep_solver
 from fem_racket.studies.checkpoint import Checkpoint
@@ -216,12 +217,13 @@ def run_sweep(
     """The sweep of ``grid`` (parameter name -> values) on ``frame``, solved as ``solving``
     says and run as ``run`` says (:func:`sweep`)."""
     law = solving.law
-    given = sorted(k for k, v in grid.items() if k in LAW_PARAMETERS and v is not None)
-    if isinstance(law, str) and given and law in ("linear", *PRESETS):
+    params = sorted(k for k, v in grid.items() if k in LAW_PARAMETERS and v is not None)
+    if isinstance(law, str) and params and law in ("linear", *PRESETS):
         why = "it is built from kcb and zeta" if law == "linear" else "it is a preset"
-        raise InputError(f"law parameters {given} are not allowed with law {show(law)}: {why}")
+        raise InputError(f"law parameters {params} are not allowed with law {show(law)}: {why}")
     spec_options = {k: getattr(solving, k) for k in field_names(SweepSolving)}
-    spec_options["law"] = get_law(law) if isinstance(law, str) else law
+    # the paper's law named with a string bed is refused, as simulate's (its K_CB is both)
+    spec_options["law"] = named_law(law, given(grid, STRING_AXES) or None)
     spec = SweepSpec.build(frame, **grid, **spec_options)
     # the solver refuses, before any work, what it would refuse of the cases (as simulate's)
     sweep_solver(spec).check_batch(chunk_problems(spec, np.zeros(1, dtype=np.int64)))

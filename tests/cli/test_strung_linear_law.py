@@ -39,3 +39,27 @@ def test_linear_law_not_given_runs_unchanged(capsys, tmp_path):
     assert run_json(capsys, "simulate", *BED, "--config", cfg) == default
     ball = run_json(capsys, "simulate", *BED, "--law", "kawazoe-1997-ball")
     assert ball["cor"] == default["cor"] and ball["ball_law"] == "kawazoe-1997-ball"
+
+
+def test_linear_law_given_to_a_strung_sweep_is_refused(capsys, tmp_path):
+    out = tmp_path / "s.nc"
+    sweep = ("sweep", "--string-tension", "246", "--position", "0.6", "--serial", "--out", out)
+    line = one_error(capsys, *sweep, "--law", "linear")
+    assert line.endswith(WORDS), line
+    assert not out.exists()
+
+
+def test_linear_law_in_a_library_sweep_with_a_bed_is_refused():
+    from fem_racket.studies.sweep import sweep_result
+
+    line = library_error(lambda: sweep_result(position=[0.6], law="linear", string_tension=246.0))
+    assert line == WORDS
+
+
+def test_strung_sweep_without_a_law_and_linear_sweep_without_a_bed_run(tmp_path):
+    from fem_racket.studies.sweep import sweep_result
+
+    strung = sweep_result(position=[0.6], string_tension=246.0).summary()
+    paper = sweep_result(position=[0.6], law="linear").summary()
+    assert strung["contact_law"] == "linear" and paper["contact_law"] == "linear"
+    assert strung["cor_min"] != paper["cor_min"]  # the bed and the ball's own law, not K_CB

@@ -109,7 +109,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         type=float,
         default=None,
         metavar="N_M",
-        help="K_CB [N/m] of the linear law (default: from the closing speed)",
+        help="K_CB [N/m] of the linear law (default: from the closing speed; allowed [100, 1e+07])",
     )
     g.add_argument(
         "--zeta",

@@ -52,7 +52,7 @@ _HELP = {
     "ei_factor": "factor on every segment's EI [-] (default 1)",
     "ball_mass": "ball mass [kg] (default 0.057)",
     "zeta": "ball/string damping ratio [-], 0..1 (default 0.0592: clamped COR 0.83)",
-    "kcb": "ball/string stiffness K_CB [N/m] (default: from the speed)",
+    "kcb": "ball/string stiffness K_CB [N/m] (default: from the speed; allowed [100, 1e+07])",
     "elements": "number of beam elements (default 20)",
     "string_tension": "tension per string [N]: a string bed replaces the lumped K_CB "
     "(default: none; with --pattern alone 246)",
@@ -226,6 +226,8 @@ def run(args: argparse.Namespace) -> int:
         for k, v in fields_from_args(args, SweepSolving).items()
         if k not in SOLVING_DEFAULTS or k in told
     }
+    if "law" not in told:  # the paper's law by default; named, it is refused with a bed
+        solving["law"] = None
     result = sweep_result(frame, **values, **solving, **running, **law_parameters(vars(args)))
     wall = time.perf_counter() - start
     _note_modes(args, frame)

@@ -32,7 +32,13 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
         metavar="ADDRESS",
         help="Dask scheduler tcp://HOST:PORT (default none)",
     )
-    g.add_argument("--seed", type=int, default=1, help="random seed (default 1)")
+    g.add_argument(
+        "--seed",
+        type=int,
+        default=1,
+        help="random seed: an integer from 0 to 4294967295 (default 1); optimize "
+        "takes it with differential-evolution and nsga2",
+    )
 
 
 def execution_from_args(args: argparse.Namespace) -> ExecutionOptions:

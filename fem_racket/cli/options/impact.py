@@ -49,7 +49,8 @@ __all__ = [
 
 #: (name, default, metavar, help) of the paper's linear ball/string law's options.
 LINEAR_LAW = (
-    ("kcb", None, "N_M", "ball/string stiffness K_CB [N/m] (default: from the speed)"),
+    ("kcb", None, "N_M", "ball/string stiffness K_CB [N/m] (default: from the speed; allowed "
+     "[100, 1e+07])"),
     ("zeta", None, "ZETA", "ball/string damping ratio [-], 0..1 (default 0.0592, clamped COR "
      "0.83)"),
 )  # fmt: skip

@@ -20,7 +20,7 @@ BALL = (
      "the starting racket [m/s]; slower for heavier swings, ~I^-0.27 (Cross & Bower 2006) "
      "(default: a stationary racket)"),
     ("reference", None, "X", "reference point of --racket-speed x/L [-] "
-     f"(default {DEFAULT_REFERENCE})"),
+     f"(default {DEFAULT_REFERENCE} with --racket-speed; refused without it)"),
     ("pivot", 0.10, "M", "swing pivot (hand) from the butt [m] (default 0.10)"),
     ("swing_exponent", -0.27, None, "swing speed ~ I^exponent, the exponent [-] "
      "(default -0.27; 0: same swing for any racket)"),
