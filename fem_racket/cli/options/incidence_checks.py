@@ -15,7 +15,7 @@ __all__ = ["check_normal_speed", "refuse_idle_options"]
 
 def refuse_idle_options(args: argparse.Namespace, fields: dict[str, str]) -> None:
     """Refuse the contact's options given without an oblique or spinning ball
-    (:func:`~fem_racket.impact.incidence.refuse_idle_contact`): on the command line at any
+    (:func:`~fem_racket.impact.incidence_idle.refuse_idle_contact`): on the command line at any
     value, in the run file away from the Incidence's default. ``fields``: each oblique option's
     argparse dest -> its Incidence field."""
     cli, default = set(getattr(args, "explicit_options", ())) | set(COMPONENTS), Incidence()
