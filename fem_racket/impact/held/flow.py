@@ -65,7 +65,7 @@ def flow_energy(A: np.ndarray, q: np.ndarray, t: np.ndarray, y: np.ndarray) -> f
     for k in np.unique(key):
         on = key == k
         G = gramian(Ab, q * scale, float(np.mean(dt[on])))
-        total += float(np.einsum("ki,ij,kj->", z[on], G, z[on]))
+        total += float(np.sum((z[on] @ G) * z[on]))
     return total
 
 
