@@ -40,7 +40,13 @@ def exact():
 @pytest.mark.parametrize("case", list(CASES))
 @pytest.mark.parametrize(
     ("solver", "step"),
-    [("cvode", None), ("cvode", 1e-4), ("cvode", 2e-6), ("bdf", None), ("bdf", 1e-4)],
+    [
+        ("cvode", None),
+        ("cvode", 1e-4),
+        ("cvode", 2e-6),
+        ("bdf", 1e-4),
+        pytest.param("bdf", None, marks=pytest.mark.slow),  # scipy's BDF: 2-9 s a run
+    ],
 )
 def test_held_shock_measures_do_not_depend_on_the_output_step(exact, case, solver, step):
     s = simulate(elements=ELEMENTS, solver=solver, output_step=step, **CASES[case]).summary()
