@@ -135,7 +135,8 @@ def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False
     file, without a swing (``--racket-speed`` 0): the racket at rest would drop them. Left
     out, both are None (a run file's reference at its default too); the swing's reference
     point is then its default (:meth:`~fem_racket.impact.swing.Swing.from_speed`)."""
-    from fem_racket.impact.swing import check_kcb_closing, check_racket_speed
+    from fem_racket.impact.closing import check_kcb_closing
+    from fem_racket.impact.swing import check_racket_speed
     from fem_racket.studies.map_options import check_at_rest
 
     v_r = args.racket_speed
