@@ -27,7 +27,7 @@ from fem_racket.validation import InputError
 __all__ = ["history_columns", "sampled_impact", "shock_grid"]
 
 #: Grid points per contact time on which the free vibration's extrema are sought (one per
-#: ~2.6 us on the standard racket: the grip force's content reaches ~10 kHz).
+#: ~2.6 us on the standard racket; a grid 4 times finer moved its peak by 2e-12).
 SCAN = 1024
 
 
