@@ -10,7 +10,7 @@ integrated exactly between the samples (:mod:`fem_racket.impact.held.flow`)."""
 import pytest
 
 from fem_racket import simulate
-from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP
+from fem_racket.frame.hand import FIRM_GRIP, LOOSE_GRIP, Hand
 from fem_racket.impact.held.grip import simulate_held
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.swing import Swing
@@ -62,3 +62,15 @@ def test_simulate_held_peaks_are_root_found():
     coarse, fine = (simulate_held(problem, output_step=h).summary() for h in (1e-4, 2e-6))
     for key in ("peak_grip_force_n", "peak_grip_vibration_n"):
         assert coarse[key] == pytest.approx(fine[key], rel=1e-8), key
+
+
+def test_a_hand_joined_by_nothing_leaves_the_free_racket():
+    # No grip layer: the grip force is identically 0 (not watched: CVODE warns of a root
+    # function identically 0) and the impact is the free racket's, its root-found peak force
+    # and COR within the integrator's error (measured 3e-11 and 2e-13).
+    problem = ImpactProblem.build(elements=ELEMENTS, hand=Hand(stiffness=0.0, damping=0.0))
+    held = simulate_held(problem)
+    free = simulate(elements=ELEMENTS, solver="cvode", output_step=None)
+    assert held.summary()["peak_grip_force_n"] == 0.0
+    assert held.peak_force == pytest.approx(free.peak_force, rel=1e-9)
+    assert held.cor == pytest.approx(free.cor, abs=1e-10)
