@@ -6,13 +6,14 @@ for any ball law (:func:`strung_impact`, with histories), the exact batched engi
 ball (:func:`strung_engine`, COR and contact time only); a stretching bed CVODE alone
 (:mod:`fem_racket.impact.strung.stretch`). From the histories come the bed's and the ball's
 peak deflections and the energy bookkeeping (:class:`~fem_racket.impact.strung.result.
-StrungImpact`).
+StrungImpact`); they sample the solution (:mod:`fem_racket.impact.strung.solution`) at
+:data:`SAMPLES` times, and an oblique impact's normal history samples it at
+:data:`OBLIQUE_SAMPLES`.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass, replace
 from functools import partial
 from typing import Any
@@ -22,15 +23,11 @@ import numpy as np
 from fem_racket.contact.bed_ball import kawazoe_ball
 from fem_racket.contact.law import ContactLaw
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.general.histories import law_histories, ode_state_at
-from fem_racket.impact.general.integrator import solve_general
-from fem_racket.impact.general.receptance import Receptance
-from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
-from fem_racket.impact.strung.exact import strung_exact
 from fem_racket.impact.strung.point import StrungPoint, strung_point
 from fem_racket.impact.strung.result import StrungImpact
-from fem_racket.impact.strung.stretch import solve_stretch, stretch_energy
+from fem_racket.impact.strung.solution import States, strung_solution
+from fem_racket.impact.strung.stretch import stretch_energy
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import InputError, check_choice, check_positive, check_range
 
@@ -53,47 +50,6 @@ OBLIQUE_SAMPLES = 3201
 def _energies(point: StrungPoint, x: np.ndarray, v: np.ndarray) -> np.ndarray:
     """Energy of each structure coordinate at each time, shape (T, n) [J]."""
     return 0.5 * (v**2 + (point.omega * x) ** 2)
-
-
-#: The solution of a strung impact: its contact time [s] and, for times [s] in [0, t_c], the
-#: states [u_B, eta], their rates and the law's ODE state (None without one).
-Solution = tuple[float, Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, Any]]]
-
-
-def _interpolated(t_raw: np.ndarray, y: np.ndarray, n: int, ode: bool) -> Solution:
-    """A solution from CVODE's outputs ``y`` at ``t_raw`` (interpolated linearly)."""
-
-    def states(t: np.ndarray) -> tuple[np.ndarray, np.ndarray, Any]:
-        y_t = np.column_stack([np.interp(t, t_raw, col) for col in y.T])
-        return y_t[:, :n], y_t[:, n : 2 * n], y_t[:, -1] if ode else None
-
-    return float(t_raw[-1]), states
-
-
-def _solution(
-    point: StrungPoint, law: ContactLaw, ball_mass: float, speed: float, solver: str, how: dict
-) -> Solution:
-    """The strung impact by ``solver`` (``how``: its ``tolerance``, ``rtol``, ``atol``)."""
-    w, a = point.omega, point.a
-    if point.strings.stretch:
-        t_raw, y = solve_stretch(point, law, ball_mass, speed, rtol=how["rtol"], atol=how["atol"])
-        return _interpolated(t_raw, y, point.omega.size + 1, False)
-    if solver == "exact":
-        tc, exact = strung_exact(point, law, ball_mass, speed)
-        return tc, lambda t: (*exact(t), None)
-    if solver == "cvode":
-        tr = solve_law_cvode(law, w, a, ball_mass, speed, rtol=how["rtol"], atol=how["atol"])
-        tc, states = _interpolated(tr.t, tr.y, tr.n, law.state == "ode")
-        return tr.contact_time, states
-    rc = point.rigid_count
-    rec = Receptance(w[rc:], a[None, rc:], a[None, :rc], np.array([ball_mass]))
-    out = solve_general(law, rec, speed, tolerance=how["tolerance"])
-
-    def states(t: np.ndarray) -> tuple[np.ndarray, np.ndarray, Any]:
-        x, v = law_histories(out, w, a, ball_mass, speed, None, t)
-        return x, v, ode_state_at(law, out, t) if law.state == "ode" else None
-
-    return float(out.contact_time[0]), states
 
 
 def strung_impact(
@@ -123,20 +79,22 @@ def strung_impact(
             "is integrated by 'cvode'"
         )
     how = {"tolerance": tolerance, "rtol": rtol, "atol": atol}
-    solution = _solution(point, law, ball_mass, speed, solver, how)
-    return _sampled(_Run(point, law, ball_mass, float(speed), solver, solution), SAMPLES)
+    solution = strung_solution(point, law, ball_mass, speed, solver, how)
+    return _sampled(_Run(point, law, ball_mass, float(speed), solver, *solution), SAMPLES)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class _Run:
-    """A solved strung impact before its output times are chosen."""
+    """A solved strung impact before its output times are chosen
+    (:mod:`fem_racket.impact.strung.solution`)."""
 
     point: StrungPoint
     law: ContactLaw
     ball_mass: float
     speed: float
     solver: str
-    solution: Solution
+    contact_time: float
+    states: States
 
 
 def _oblique(run: _Run) -> StrungImpact:
@@ -147,9 +105,9 @@ def _oblique(run: _Run) -> StrungImpact:
 def _sampled(run: _Run, samples: int) -> StrungImpact:
     """The :class:`StrungImpact` of ``run`` at ``samples`` output times over the contact."""
     point, law, ball_mass, speed = run.point, run.law, run.ball_mass, run.speed
-    tc, states = run.solution
+    tc = run.contact_time
     t = np.linspace(0.0, tc, samples)
-    x, v, z = states(t)
+    x, v, z = run.states(t)
     a = point.a
     d = x[:, 0] - x[:, 1:] @ a
     rate = v[:, 0] - v[:, 1:] @ a

@@ -117,3 +117,18 @@ def test_off_axis_oblique_on_the_bed_runs(standard_model):
     )
     s = out.summary()
     assert math.isfinite(s["spin_out_rpm"]) and s["ball_speed_out_m_s"] < V
+
+
+def test_a_strung_result_pickles_with_its_solution(head_on):
+    # the result keeps its solution (to sample it again for an oblique impact's history) as
+    # module-level objects, so it still pickles (a process pool's results): after the round
+    # trip the denser history is the same to the bit
+    import pickle
+
+    import numpy as np
+
+    back = pickle.loads(pickle.dumps(head_on))
+    dense, again = head_on.normal_samples(), back.normal_samples()
+    np.testing.assert_array_equal(again.force, dense.force)
+    np.testing.assert_array_equal(again.t, dense.t)
+    assert again.compression_stiffness == dense.compression_stiffness
