@@ -150,11 +150,6 @@ class StrungImpact:
         """The impact point's lateral offset from the long axis y [m]."""
         return self.point.lateral_m
 
-    @property
-    def contact(self) -> None:
-        """None: the ball's own law acts on the bed (no lumped K_CB)."""
-        return None
-
     def summary(self) -> dict[str, Any]:
         """The results, the bed and what the run used, JSON-ready, units in the keys."""
         return {
