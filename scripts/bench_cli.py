@@ -88,8 +88,11 @@ def strung_commands(run_file: Path) -> dict[str, tuple[list[str], None]]:
 
 
 #: What the example run file leaves commented out that some checks need (fit and customise
-#: refuse a file without their targets, closest and compare check their tables' values).
+#: refuse a file without their targets, closest and compare check their tables' values), and a
+#: sweep on a Dask scheduler (its check finds distributed, the sweep would import it).
 CHECK_TABLES = """
+[sweep]
+scheduler = "tcp://127.0.0.1:8786"
 [fit]
 length = 0.685
 mass = 0.3
