@@ -13,7 +13,11 @@ from collections import namedtuple
 import numpy as np
 import pytest
 
+import fem_racket as fr
 from fem_racket.display import plain
+from fem_racket.frame.hand import Hand
+from fem_racket.frame.masses import AddedMass
+from fem_racket.frame.specs import fit_racket
 from fem_racket.io.config import toml_value
 from fem_racket.outputs import json_ready, provenance
 from fem_racket.validation import InputError, check_range, show
@@ -87,3 +91,29 @@ def test_toml_value_of_numpy_non_finite():
     assert math.isnan(tomllib.loads(f"x = {toml_value(np.float64('nan'))}")["x"])
     assert tomllib.loads(f"x = {toml_value(np.float64('inf'))}")["x"] == math.inf
     assert tomllib.loads(f"x = {toml_value(-math.inf)}")["x"] == -math.inf  # was written "inf"
+
+
+def _refusal(call):
+    with pytest.raises(InputError) as info:
+        call()
+    return str(info.value)
+
+
+F = np.float64
+
+
+@pytest.mark.parametrize(
+    ("call", "start"),
+    [
+        (lambda: fr.simulate(tolerance=F(0.5)), "tolerance = 0.5 is not allowed"),
+        (lambda: fr.simulate(kcb=F(100.0), output_step=F(1e-7)), "kcb = 100.0 N/m is not"),
+        (lambda: fr.simulate(hand=Hand(grip_end=F(0.9))), "grip_end = 0.9 m is not allowed"),
+        (lambda: Hand(stiffness=F(-1.0)), "grip stiffness = -1.0 N/m^2 is not allowed"),
+        (lambda: AddedMass(position=0.9, mass=F(-0.01)), "added mass = -0.01 kg is not"),
+        (lambda: fit_racket(0.685, 0.318, F(0.9), 316.0, 150.0), "balance = 0.9 m is not"),
+    ],
+)
+def test_a_library_refusal_of_a_numpy_scalar_shows_the_number(call, start):
+    # e.g. a loop over np.linspace: numpy 2 wrote these as "np.float64(0.5)" (audit A3)
+    line = _refusal(call)
+    assert line.startswith(start) and "np." not in line, line

@@ -19,7 +19,7 @@ from fem_racket.frame.hand import Hand, held_frame
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.held.grip import HeldImpact, simulate_held
 from fem_racket.impact.problem import ImpactProblem
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["history_columns", "sampled_impact", "shock_grid"]
 
@@ -79,7 +79,7 @@ def sampled_impact(problem: ImpactProblem, solver: str, window: float, tolerance
     tc = r.contact_time
     if not window > tc:
         raise InputError(
-            f"window = {window!r} s is not allowed: must exceed the contact time ({tc:.4g} s)"
+            f"window = {show(window)} s is not allowed: must exceed the contact time ({tc:.4g} s)"
         )
     _, off = shock_grid(step, tc, window)
     free = _free_grip(model, hand, r.state, np.append(0.0, off - tc))  # from t_c
