@@ -22,7 +22,8 @@ from pathlib import Path
 import numpy as np
 
 import fem_racket as fr
-from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.impact.closing import closing_speed
+from fem_racket.impact.swing import Swing
 from fem_racket.io.figure_files import save_figure
 from fem_racket.outputs import provenance
 from fem_racket.paper.figures.script import figure_script_options

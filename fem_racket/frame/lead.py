@@ -53,12 +53,16 @@ def check_grams(name: str, grams: float, shown: str | None = None) -> float:
     shown = show(grams) if shown is None else shown
     if not np.isfinite(g) or g <= 0.0:
         raise InputError(
-            f"{name} = {shown} is not allowed: must be > 0 g (a lead of 0 g changes nothing)"
+            f"{name} = {shown} is not allowed: must be > 0 g (a lead of 0 g changes nothing)",
+            parameter=name,
+            value=grams,
         )
     if g > MAX_LEAD_G:
         raise InputError(
             f"{name} = {shown} is not allowed: must be at most {MAX_LEAD_G:g} g (lead tape "
-            "adds a few grams; more than a racket weighs is no longer a racket)"
+            "adds a few grams; more than a racket weighs is no longer a racket)",
+            parameter=name,
+            value=grams,
         )
     return g
 

@@ -29,6 +29,7 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.engine_calls import grouped, per_frame, whole_modes
 from fem_racket.impact.general.batches import stack_receptances
 from fem_racket.impact.general.integrator import solve_general
@@ -39,7 +40,7 @@ from fem_racket.impact.law_impact import receptance
 from fem_racket.impact.oblique.solve import free_normal, oblique_on
 from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.settings import Settings
-from fem_racket.impact.swing import ball_speed_out, closing_speed
+from fem_racket.impact.swing import ball_speed_out
 from fem_racket.impact.system import NoSeparationError
 from fem_racket.validation import AccuracyError
 

@@ -34,6 +34,7 @@ from fem_racket.contact.linear import Ball, LinearContact
 from fem_racket.frame.hand import Hand
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import ClampedHead
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.constants import SEPARATION_EVENTS
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.model_cache import frame_model
@@ -48,7 +49,7 @@ from fem_racket.impact.problem_checks import (
     check_swing,
     named_law,
 )
-from fem_racket.impact.swing import Swing, closing_speed
+from fem_racket.impact.swing import Swing
 from fem_racket.strings.bed import StringBed
 from fem_racket.validation import (
     InputError,

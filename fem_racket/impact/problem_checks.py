@@ -19,10 +19,11 @@ from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.hand import check_grip
 from fem_racket.frame.model import FrameModel
 from fem_racket.impact.clamped import CENTRE, ClampedHead
+from fem_racket.impact.closing import check_kcb_closing
 from fem_racket.impact.incidence import check_incidence, check_kcb_normal
 from fem_racket.impact.incidence_idle import refuse_idle_incidence
 from fem_racket.impact.offaxis import check_offsets
-from fem_racket.impact.swing import check_kcb_closing, check_swing_speeds
+from fem_racket.impact.swing import check_swing_speeds
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.point import DEFAULT_REFINE
 from fem_racket.strings.reach import on_bed, strike_interval

@@ -134,7 +134,7 @@ def check_time_limit(settings: Settings, t_est: float, steps: int | None, solver
     output = math.inf if settings.output_step is None else settings.output_step
     grid = math.inf if steps is None else t_est / steps
     step = min(output, grid)
-    if t_max is None or t_max <= MAX_OUTPUT_TIMES * step:
+    if t_max is None or t_max / step <= MAX_OUTPUT_TIMES:  # as the output times are counted
         return
     if output <= grid:
         raise InputError(

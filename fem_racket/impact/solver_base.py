@@ -10,6 +10,7 @@ protocol (:class:`~fem_racket.impact.problem_batch.ProblemBatch` in, a
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from dataclasses import replace
 from typing import Any, ClassVar
@@ -142,7 +143,8 @@ class Solver:
     def check_batch(self, batch: ProblemBatch) -> None:
         """Refuse, in one line and before any work, what :meth:`solve_many` would refuse of
         ``batch``: the batch itself, then its first case as a problem (:meth:`check`; the
-        cases of a batch share its law, its solver options and its kind of structure)."""
+        cases of a batch share its law, its solver options and its kind of structure; a t_max
+        is checked on the case it binds, :meth:`_check_time_limits`)."""
         self._check_batch(batch)
         if len(batch):
             self.check(batch.problem(0))
@@ -191,9 +193,35 @@ class Solver:
             return
         if problem.clamped:  # no output times: histories at the integrator's steps
             s = replace(s, output_step=None)
+        check_time_limit(s, self._contact_time(problem), self._grid(problem), self.name)
+
+    def _check_time_limits(self, batch: ProblemBatch) -> None:
+        """Refuse, before any case is solved, a t_max too long for a case of ``batch``: the
+        case with the finest time grid (its contact time estimate over its steps per contact
+        time) checked as its problem is (:meth:`_check_time_limit`), named in the refusal. A
+        hand or a string bed refuses t_max itself (:meth:`check`)."""
+        if self.options.settings().t_max is None or batch.held or batch.strings is not None:
+            return
+        finest, grid, binding = 0, math.inf, None
+        for i in range(len(batch)):  # each case on its frame unscaled: t_est needs no EI
+            problem = batch.problem(i, batch.models[batch.frame[i]])
+            steps = self._grid(problem)
+            step = math.inf if steps is None else self._contact_time(problem) / steps
+            if binding is None or step < grid:
+                finest, grid, binding = i, step, problem
+        try:
+            self._check_time_limit(binding)
+        except InputError as err:
+            raise InputError(
+                f"{err} (case {finest} of the batch)", parameter=err.parameter, value=err.value
+            ) from None
+
+    @staticmethod
+    def _contact_time(problem: ImpactProblem) -> float:
+        """The contact time [s] ``problem``'s law estimates at its closing speed (eq 11 for
+        the paper's law)."""
         law = problem.contact() if problem.law is None else problem.law
-        t_est = float(law.contact_time_estimate(problem.ball.mass, problem.closing_speed))
-        check_time_limit(s, t_est, self._grid(problem), self.name)
+        return float(law.contact_time_estimate(problem.ball.mass, problem.closing_speed))
 
     def _solve(self, problem: ImpactProblem) -> Any:
         """Solve a checked problem on its structure: a string bed by the strung racket's paths

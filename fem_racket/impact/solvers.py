@@ -151,7 +151,9 @@ class _OdeSolver(Solver):
             )
 
     def _check_batch(self, batch: ProblemBatch) -> None:
-        """Each case is checked as its problem (:func:`.batch_solve.each_batch`)."""
+        """Each case is checked as its problem (:func:`.batch_solve.each_batch`); a t_max
+        before any, on the case with the finest time grid (:meth:`_check_time_limits`)."""
+        self._check_time_limits(batch)
 
     def _grid(self, problem: ImpactProblem) -> int | None:
         if self.options.settings().output_step is not None:

@@ -31,7 +31,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.closing import check_kcb_closing, closing_speed
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.constants import DEFAULT_REFERENCE, MAX_RACKET_SPEED
 from fem_racket.impact.swing_reach import allowed_pivots
 from fem_racket.impact.system import CoupledSystem, Trajectory
@@ -43,10 +43,8 @@ __all__ = [
     "Swing",
     "add_swing",
     "ball_speed_out",
-    "check_kcb_closing",
     "check_racket_speed",
     "check_swing_speeds",
-    "closing_speed",
     "racket_velocity",
     "rebound_summary",
     "swing_setup",

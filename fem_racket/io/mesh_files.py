@@ -40,11 +40,13 @@ MESH_SUFFIXES = (".vtu", ".vtk", ".xdmf", ".xmf", ".msh", ".med", ".dat", ".tec"
 def check_mesh_suffix(path: str | os.PathLike, name: str = "out") -> Path:
     """``path`` as a Path, refused (naming ``name`` and the path as given) unless it ends in a
     suffix of :data:`MESH_SUFFIXES` (any case): checked before a mesh is computed."""
-    path = Path(path)
+    given, path = path, Path(path)
     if path.suffix.lower() not in MESH_SUFFIXES:
         raise InputError(
             f"{name} = {show_path(path)} is not allowed: a mesh file must end in one of "
-            f"{', '.join(MESH_SUFFIXES)} (formats that keep line cells and their cell data)"
+            f"{', '.join(MESH_SUFFIXES)} (formats that keep line cells and their cell data)",
+            parameter=name,
+            value=given,
         )
     return path
 

@@ -34,11 +34,11 @@ from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.mesh import FrameMesh, frame_mesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, grip_peak, vibration_rms
 from fem_racket.impact.simulate import simulate
-from fem_racket.impact.swing import closing_speed
 from fem_racket.studies.face_map import FaceMap, face_map
 from fem_racket.studies.map_options import MapPlay, check_at_rest
 from fem_racket.studies.racket_map import RacketMap, racket_map

@@ -24,10 +24,11 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
 from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
-from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
+from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.studies.map_options import check_at_rest, check_map_points
 from fem_racket.studies.sweetspots import centre_of_percussion, mode_node_positions
 from fem_racket.validation import InputError, check_positive, check_range, show

@@ -19,8 +19,9 @@ from fem_racket.frame.segments import (
     standard_ei1_range,
     standard_frame,
 )
+from fem_racket.impact.closing import check_kcb_closing, closing_speed
 from fem_racket.impact.incidence import Incidence, check_kcb_normal
-from fem_racket.impact.swing import Swing, check_kcb_closing, check_racket_speed, closing_speed
+from fem_racket.impact.swing import Swing, check_racket_speed
 from fem_racket.studies.grid_values import STRING_AXES
 from fem_racket.studies.map_options import check_at_rest
 from fem_racket.studies.sweep_physics import LATERAL_AXES, given

@@ -5,8 +5,9 @@ from __future__ import annotations
 import pytest
 
 from fem_racket.contact.linear import kcb_from_speed
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.simulate import simulate
-from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
+from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.validation import InputError
 from tests.clirun import one_error
 

@@ -15,6 +15,7 @@ import pytest
 from clirun import one_error, refused_alike
 
 from fem_racket import load_config
+from fem_racket.validation import InputError
 
 MESH = Path(__file__).resolve().parents[2] / "meshes" / "tapered_racket.vtu"
 
@@ -112,3 +113,56 @@ def test_the_key_comes_from_the_parameter_and_value_the_error_carries(
     # a value the file did not give (500 from elsewhere), a text, or an error naming no
     # parameter (its words are not read) stays as the library wrote it
     assert str(out) == (named or line) and (out is exc) == (named is None)
+
+
+#: A run file's key whose value check_mesh_suffix or check_grams refuses: (run file, method, the
+#: parameter the refusal names = the key as the command's option or the file's dotted key, the
+#: value refused, the key the run-file layer names it by).
+PARAMETER_CARRIED = [
+    (
+        "[fit]\nlength = 0.685\nmass = 0.3\nbalance = 0.32\nswing_weight = 290\nout = 'r.stl'\n",
+        lambda cfg: cfg.fit(),
+        "out",
+        Path("r.stl"),
+        "fit.out",
+    ),
+    (
+        "[customise]\nswing_weight = 330\nout = 'r.stl'\n",
+        lambda cfg: cfg.customise(),
+        "out",
+        Path("r.stl"),
+        "customise.out",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "method", "parameter", "value", "key"), PARAMETER_CARRIED, ids=["fit", "customise"]
+)
+def test_a_mesh_suffix_refused_carries_its_key_and_value(cwd, text, method, parameter, value, key):
+    # check_mesh_suffix's refusal carried neither parameter nor value: a run file's key could not
+    # be named from them (a command table's key is named as the command's option, --out)
+    Path("run.toml").write_text(text)
+    with pytest.raises(InputError) as err:
+        method(load_config("run.toml"))
+    assert (err.value.parameter, err.value.value) == (parameter, value)
+    assert str(err.value).startswith(f"{parameter} = 'r.stl' is not allowed: a mesh file must")
+    named = str(err.value.named(key, "run.toml: "))
+    assert named.startswith(f"run.toml: {key} = 'r.stl' is not allowed: a mesh file must end")
+
+
+@pytest.mark.parametrize("grams", [0.0, 2000.0])
+def test_a_lead_refused_carries_its_key_and_grams(grams):
+    # check_grams' refusal carried neither: the file's key frame.lead[0].mass_g and --add-mass
+    # now ride on it with the grams refused, as every check's refusal does
+    from fem_racket.frame.lead import parse_lead
+    from fem_racket.io.config_lead import lead_tables
+
+    with pytest.raises(InputError) as err:
+        lead_tables("frame.lead", [{"place": "3/9", "mass_g": grams}])
+    assert (err.value.parameter, err.value.value) == ("frame.lead[0].mass_g", grams)
+    assert str(err.value).startswith(f"frame.lead[0].mass_g = {grams!r} is not allowed: must be")
+    with pytest.raises(InputError) as err:
+        parse_lead(f"3/9:{grams:g}")
+    assert (err.value.parameter, err.value.value) == ("add-mass", grams)
+    assert str(err.value).startswith(f"add-mass = '3/9:{grams:g}' is not allowed: must be")

@@ -37,7 +37,7 @@ from fem_racket.cli.common import (
     significant,
     swing_from_args,
 )
-from fem_racket.cli.options.impact import add_hand_options, hand_from_args
+from fem_racket.cli.options.impact import add_hand_options, hand_from_args, racket_speed_named
 from fem_racket.cli.options.oblique import add_oblique_options, incidence_from_args, run_oblique
 from fem_racket.cli.options.output import (
     core_rows,
@@ -253,6 +253,7 @@ def _check_unwritten(args: argparse.Namespace, dest: str) -> None:
         )
 
 
+@racket_speed_named  # a swing's closing speed: the library's check, named as the option
 def run(args: argparse.Namespace) -> int:
     """Simulate and print the result (and write it with ``--out``)."""
     from fem_racket.impact.simulate import simulate

@@ -5,7 +5,9 @@ their translation to the keyword arguments of :func:`fem_racket.simulate` (the h
 from __future__ import annotations
 
 import argparse
+import functools
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.options.frame import add_frame_options
@@ -43,6 +45,7 @@ __all__ = [
     "check_swing_options",
     "hand_from_args",
     "impact_kwargs",
+    "racket_speed_named",
     "swing_from_args",
     "swing_kwargs",
 ]
@@ -127,26 +130,48 @@ def add_swing_options(parser: argparse.ArgumentParser) -> None:
     add_options(g, SWING, type=float)
 
 
-def check_swing_options(args: argparse.Namespace, *, pivot_at_rest: bool = False) -> None:
-    """Refuse a ``--racket-speed`` beyond :data:`MAX_RACKET_SPEED`, or one whose closing speed
-    with ``--speed`` at the reference point leaves the paper's K_CB range (K_CB from the speed:
-    no --kcb, no --law); and a swing's ``--reference`` (and ``--pivot`` unless
-    ``pivot_at_rest``: the maps' centre of percussion) given, on the command line or in a run
-    file, without a swing (``--racket-speed`` 0): the racket at rest would drop them. Left
-    out, both are None (a run file's reference at its default too); the swing's reference
-    point is then its default (:meth:`~fem_racket.impact.swing.Swing.from_speed`)."""
-    from fem_racket.impact.swing import check_kcb_closing, check_racket_speed
+def check_swing_options(
+    args: argparse.Namespace, *, pivot_at_rest: bool = False, at_reference: bool = True
+) -> None:
+    """Refuse a ``--racket-speed`` beyond :data:`MAX_RACKET_SPEED`, or (``at_reference``: where
+    studies build the swing; simulate's impact point is the library's, :func:`racket_speed_named`)
+    one whose closing speed with ``--speed`` at the reference point leaves the paper's K_CB
+    range (K_CB from the speed: no --kcb, no --law); and a swing's ``--reference`` (and
+    ``--pivot`` unless ``pivot_at_rest``: the maps' centre of percussion) given, on the command
+    line or in a run file, without a swing (``--racket-speed`` 0): the racket at rest would drop
+    them. Left out, both are None (a run file's reference at its default too); the swing's
+    reference point is then its default (:meth:`~fem_racket.impact.swing.Swing.from_speed`)."""
+    from fem_racket.impact.closing import check_kcb_closing
+    from fem_racket.impact.swing import check_racket_speed
     from fem_racket.studies.map_options import check_at_rest
 
     v_r = args.racket_speed
     check_racket_speed(v_r)  # before the closing speed: Swing.from_speed's bound, no racket yet
     closing = getattr(args, "speed", 0.0) + v_r
     linear = getattr(args, "kcb", None) is None and getattr(args, "law", None) in (None, "linear")
-    if v_r != 0.0 and linear and math.isfinite(closing):
+    if at_reference and v_r != 0.0 and linear and math.isfinite(closing):
         check_kcb_closing(args.speed, v_r, closing, "racket_speed")
     if args.reference is not None:
         check_range("reference", args.reference, 0.0, 1.0, unit="x/L")  # as the swing's check
     check_at_rest(v_r, args.reference, None if pivot_at_rest else args.pivot)
+
+
+def racket_speed_named(command: Callable[[argparse.Namespace], int]) -> Callable[..., int]:
+    """Decorate a ``command``: the library's refusal of the racket's speed at the impact point
+    (:func:`fem_racket.impact.problem_checks.check_swing`) named as ``racket_speed`` when it is
+    that option's value (a translation), as a run file names its key
+    (:func:`fem_racket.io.config_named.named_by_key`)."""
+
+    @functools.wraps(command)
+    def run(args: argparse.Namespace) -> int:
+        from fem_racket.io.config_named import named_by_key
+
+        try:
+            return command(args)
+        except InputError as exc:
+            raise named_by_key(exc, {"racket_speed": "racket_speed"}, vars(args), None) from None
+
+    return run
 
 
 def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
@@ -163,7 +188,7 @@ def swing_from_args(args: argparse.Namespace, length: float) -> Swing | None:
     (the options checked by :func:`check_swing_options`)."""
     from fem_racket.impact.swing import Swing
 
-    check_swing_options(args)
+    check_swing_options(args, at_reference=False)  # the impact point's: the library's
     if args.racket_speed == 0.0:
         Swing.from_speed(0.0, length, reference=args.reference, pivot=args.pivot)  # checks
         return None

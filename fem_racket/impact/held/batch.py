@@ -19,12 +19,13 @@ import numpy as np
 
 from fem_racket.contact.linear import LinearContact
 from fem_racket.impact.batch_outcome import BatchOutcome
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.held.basis import held_basis
 from fem_racket.impact.held.modal import held_contacts
 from fem_racket.impact.held.run import HELD_MAX_ELEMENTS, MAX_WINDOW
 from fem_racket.impact.held.shock import DEFAULT_WINDOW, contact_peak, grip_peak, vibration_rms
 from fem_racket.impact.problem_batch import ProblemBatch
-from fem_racket.impact.swing import ball_speed_out, closing_speed
+from fem_racket.impact.swing import ball_speed_out
 from fem_racket.impact.system import NoSeparationError
 from fem_racket.validation import AccuracyError, InputError, check_range
 
