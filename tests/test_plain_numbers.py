@@ -19,7 +19,9 @@ from fem_racket.frame.hand import Hand
 from fem_racket.frame.masses import AddedMass
 from fem_racket.frame.specs import fit_racket
 from fem_racket.io.config import toml_value
+from fem_racket.io.figure_files import check_dpi
 from fem_racket.outputs import json_ready, provenance
+from fem_racket.studies.design.zone import uniform_zone
 from fem_racket.validation import InputError, check_range, show
 
 #: Computed values with every digit, and the kinds numpy hands out.
@@ -111,6 +113,8 @@ F = np.float64
         (lambda: Hand(stiffness=F(-1.0)), "grip stiffness = -1.0 N/m^2 is not allowed"),
         (lambda: AddedMass(position=0.9, mass=F(-0.01)), "added mass = -0.01 kg is not"),
         (lambda: fit_racket(0.685, 0.318, F(0.9), 316.0, 150.0), "balance = 0.9 m is not"),
+        (lambda: uniform_zone(F(0.8), F(0.7), 5), "zone high = 0.7 x/L is not allowed"),
+        (lambda: check_dpi(F(10.0)), "dpi = 10.0 is not allowed"),
     ],
 )
 def test_a_library_refusal_of_a_numpy_scalar_shows_the_number(call, start):
