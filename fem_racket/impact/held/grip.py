@@ -30,7 +30,7 @@ from fem_racket.impact.held.flow import flow_energy
 from fem_racket.impact.ode.integrators import INTEGRATORS, Watched
 from fem_racket.impact.problem import HeldRacket, ImpactProblem
 from fem_racket.impact.system import CoupledSystem, Integration, physical_system
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["HeldImpact", "simulate_held"]
 
@@ -171,7 +171,7 @@ def simulate_held(
     v_r = problem.racket_speed
     law = problem.contact()
     if not output_step > 0.0:
-        raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
+        raise InputError(f"output_step = {show(output_step)} s is not allowed: must be > 0")
     import scipy.sparse as sp
 
     held = held_frame(model.fe, hand)

@@ -38,7 +38,7 @@ from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS,
 from fem_racket.impact.problem import HeldRacket, ImpactProblem
 from fem_racket.impact.swing import Swing, ball_speed_out, rebound_summary
 from fem_racket.impact.system import check_output_count
-from fem_racket.validation import InputError, check_choice, check_range
+from fem_racket.validation import InputError, check_choice, check_range, show
 
 __all__ = ["HELD_RUN_SOLVERS", "HeldRun", "HeldSettings", "hand_summary", "held_impact"]
 
@@ -203,7 +203,7 @@ def held_impact(problem: ImpactProblem, settings: HeldSettings | None = None) ->
     window = DEFAULT_WINDOW if held.shock_window is None else held.shock_window
     window = check_range("shock_window", window, 0.0, MAX_WINDOW, unit="s", include_low=False)
     if not s.output_step > 0.0:
-        raise InputError(f"output_step = {s.output_step!r} s is not allowed: must be > 0")
+        raise InputError(f"output_step = {show(s.output_step)} s is not allowed: must be > 0")
     if s.histories or s.solver != "exact":  # the integrators sample at output_step
         check_output_count(s.output_step, window, f"the shock window's {window:g} s")
     if s.solver == "exact":

@@ -22,7 +22,7 @@ from fem_racket.frame.model import FrameModel
 from fem_racket.impact.held.flow import flow_energy, flow_extrema
 from fem_racket.impact.held.grip import HeldImpact, simulate_held
 from fem_racket.impact.problem import ImpactProblem
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["history_columns", "sampled_impact", "shock_grid"]
 
@@ -86,7 +86,7 @@ def sampled_impact(problem: ImpactProblem, solver: str, window: float, tolerance
     tc = r.contact_time
     if not window > tc:
         raise InputError(
-            f"window = {window!r} s is not allowed: must exceed the contact time ({tc:.4g} s)"
+            f"window = {show(window)} s is not allowed: must exceed the contact time ({tc:.4g} s)"
         )
     _, off = shock_grid(step, tc, window)
     s = np.append(0.0, off - tc)  # from t_c
