@@ -42,6 +42,7 @@ from fem_racket.impact.simulate import simulate
 from fem_racket.studies.face_map import FaceMap, face_map
 from fem_racket.studies.map_options import MapPlay, check_at_rest
 from fem_racket.studies.racket_map import RacketMap, racket_map
+from fem_racket.studies.swing_points import check_swing_points
 from fem_racket.validation import InputError, check_choice, check_range
 
 __all__ = ["Play", "Report", "Setup", "compare", "differences", "unique_names"]
@@ -201,10 +202,14 @@ def unique_names(names: Sequence[str]) -> list[str]:
 
 
 def compare(setups: Sequence[Setup], play: Play | None = None) -> list[Report]:
-    """One :class:`Report` per set-up, all played alike (at least two set-ups)."""
+    """One :class:`Report` per set-up, all played alike (at least two set-ups). A swing is
+    checked before any work at every set-up's impact points, the maps' and ``play.position``,
+    as one impact checks it (:func:`fem_racket.studies.swing_points.check_swing_points`)."""
     if len(setups) < 2:
         raise InputError(f"rackets = {len(setups)} is not allowed: compare needs at least 2")
     play = play or Play()
+    for s in setups:
+        check_swing_points(s.mesh(), play, s.contact(), [play.position])
     return [report(s, play) for s in setups]
 
 
