@@ -75,7 +75,7 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     from fem_racket.io.config_rerun import rerun_overwrite
     from fem_racket.io.config_unused import refuse_unused
     from fem_racket.io.setups import compare_play, read_setups
-    from fem_racket.studies.compare import compare, differences
+    from fem_racket.studies.compare import check_compare, compare, differences
 
     defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
     core = _core(cfg, defaults)
@@ -95,6 +95,7 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     check_compare_outputs(outs, overwrite=overwrite)
     setups = read_setups(rackets, elements=o["elements"], leads=o["add_mass"] or [])
     play = compare_play(o)
+    check_compare(setups, play)
     work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)

@@ -76,6 +76,9 @@ def test_compare_and_customise_refuse_at_the_impact_point_alike(cwd, capsys):
     customise = load_config("run.toml").customise
     refused_alike(capsys, ("customise", "--config", "run.toml"), customise, REFUSED_WORDS)
     assert REFUSED_WORDS in one_error(capsys, *cust, *REFUSED)
+    # and config --check finds it before any work (it passed the file: 95 m/s at the reference)
+    line = one_error(capsys, "config", "--check", "run.toml")
+    assert "fem-racket customise would refuse it: " + REFUSED_WORDS in line
     assert sorted(p.name for p in Path().iterdir()) == ["run.toml"]  # nothing written
 
 

@@ -10,7 +10,7 @@ table (or ``--json``: ``rackets`` with each one's values, ``differences`` with e
 minus the first) and writes the one-page figure (.png, .svg, .pdf) and/or netCDF of the maps
 (.nc), as one set. At the default ``--out`` an earlier compare's figure is replaced; anything
 else only with ``--overwrite``. A swing's closing speed is the library's to check, at the impact
-points (:func:`fem_racket.studies.compare.compare`).
+points (:func:`fem_racket.studies.compare.check_compare`).
 """
 
 from __future__ import annotations
@@ -98,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
     """Read the set-ups, compare, write the files and print."""
     from fem_racket.io.compare_files import check_compare_outputs, table_rows, write_compare
     from fem_racket.io.setups import compare_play, read_setups
-    from fem_racket.studies.compare import compare, differences
+    from fem_racket.studies.compare import check_compare, compare, differences
     from fem_racket.studies.grid_values import value_count
     from fem_racket.studies.map_options import check_map_points
     from fem_racket.validation import InputError, work_begins
@@ -118,6 +118,7 @@ def run(args: argparse.Namespace) -> int:
     setups = read_setups(args.rackets, elements=args.elements, leads=leads_of(args))
     names = [s.name for s in setups]
     play = compare_play(vars(args))
+    check_compare(setups, play)  # a swing at the impact points: the library's check
     work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)
