@@ -8,7 +8,8 @@ stays where the library keeps it (no copy here). The refusal says which paramete
 refused (``parameter`` and ``value`` of :class:`~fem_racket.validation.InputError`, set by the
 library's checks); the parameter is the file's key when its name is the key's argparse dest
 (spaces for underscores: ``string tension`` is ``string_tension``, set by ``strings.tension_n``)
-or one of :data:`ALIASES`, and the refused value is the file's number.
+or one of :data:`ALIASES`, and the refused value is the file's number (or its grid of numbers:
+a map's ``positions``, as the command parsed it).
 """
 
 from __future__ import annotations
@@ -22,8 +23,20 @@ from typing import Any
 
 from fem_racket.validation import InputError
 
-__all__ = ["ALIASES", "command_keys", "core_keys_named", "file_keys", "keys_named", "named_by_key"]
+__all__ = [
+    "ALIASES",
+    "GRIDS",
+    "command_keys",
+    "core_keys_named",
+    "file_keys",
+    "keys_named",
+    "named_by_key",
+    "named_by_table",
+]
 
+#: A command table's grids (``[map]``'s) -> the sweep parameter whose values they are: text or
+#: arrays, compared with the library's refused values as the command parses them.
+GRIDS = {"positions": "position", "offsets": "offset"}
 #: Parameter names of the library's checks that are not their key's dest (spaces as
 #: underscores) -> the dest.
 ALIASES = {
@@ -59,8 +72,22 @@ def command_keys(cfg: Any, command: str) -> dict[str, str]:
     return keys
 
 
+def _grid(x: Any) -> bool:
+    """Whether ``x`` is a grid's values (a list, tuple or 1-D array)."""
+    return isinstance(x, (list, tuple)) or getattr(x, "ndim", None) == 1
+
+
 def _same(refused: Any, value: Any) -> bool:
-    """Whether the number the library refused is the file's number ``value``."""
+    """Whether the number the library refused is the file's number ``value``, or the grid it
+    refused the file's grid (the same values, in order: a map's ``positions``)."""
+    if _grid(refused) and _grid(value):
+        import numpy as np
+
+        try:
+            a, b = (np.asarray(x, dtype=float) for x in (refused, value))
+        except (TypeError, ValueError):  # not numbers
+            return False
+        return a.shape == b.shape and bool(np.array_equal(a, b))
     if any(isinstance(x, bool) or not isinstance(x, numbers.Real) for x in (refused, value)):
         return False
     return math.isclose(refused, value, rel_tol=1e-9, abs_tol=0.0) or refused == value
@@ -89,6 +116,25 @@ def named_by_key(
     if dest not in keys or not _same(exc.value, values.get(dest)):
         return exc
     return exc.named(keys[dest], "" if source is None else f"{source}: ")
+
+
+def named_by_table(
+    exc: InputError, keys: Mapping[str, str], values: Mapping[str, Any], source: Any
+) -> InputError:
+    """:func:`named_by_key` for the values of a command's own table (``run.toml:
+    map.positions = 3 values is not allowed ...``): ``keys`` dest -> dotted key, ``values``
+    dest -> the value as the file gives it; a grid (:data:`GRIDS`) parsed as the command
+    parses it (a grid its parsing refuses is not the library's value: not named)."""
+    from fem_racket.studies.grid_values import as_values
+
+    keys, values = dict(keys), dict(values)
+    for dest, name in GRIDS.items():
+        if dest in keys:
+            try:
+                values[dest] = as_values(name, values[dest])
+            except InputError:
+                del keys[dest]
+    return named_by_key(exc, keys, values, source)
 
 
 @contextmanager

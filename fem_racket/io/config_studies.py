@@ -19,6 +19,7 @@ from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.io.config_keys import PRESETS, reject_unknown
+from fem_racket.io.config_named import named_by_table
 from fem_racket.io.config_run_keys import RUN_KEYS, run_keys
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS
 from fem_racket.validation import InputError, show
@@ -194,12 +195,24 @@ def map_file(cfg: RunConfig) -> list[Any]:
     """The maps ``fem-racket map --config`` computes from ``cfg``: a RacketMap per racket,
     a FaceMap with ``offsets``, a SpinMap with an oblique ball (:data:`OBLIQUE_KEYS`; the grids of
     :mod:`fem_racket.cli.options.faces` unless given)."""
+    o = _options(cfg, "map", MAP_DEFAULTS)
+    try:
+        return _maps(cfg, o)
+    except InputError as exc:  # a [map] value the library refused: named by its key, as
+        keys = {k.replace("-", "_"): f"map.{k}" for k in cfg.table("map")}  # the command's
+        named = named_by_table(exc, keys, o, cfg.source)
+        if named is exc:
+            raise
+        raise named from None
+
+
+def _maps(cfg: RunConfig, o: dict[str, Any]) -> list[Any]:
+    """The maps of :func:`map_file` from the command's options ``o``."""
     from fem_racket.impact.incidence import Incidence
     from fem_racket.studies.grid_values import as_values
     from fem_racket.studies.map_options import MapPlay
     from fem_racket.studies.racket_map import DEFAULT_POWER_FRACTION, racket_map
 
-    o = _options(cfg, "map", MAP_DEFAULTS)
     law = _law(o, cfg)
     impact = {k: o[k] for k in ("ball_mass", "kcb", "zeta", "separation", "modes", "tolerance")}
     impact = {k: v for k, v in impact.items() if v != MAP_DEFAULTS[k]}  # given: as the CLI

@@ -236,6 +236,8 @@ def increasing(name: str, values: Any, minimum: int) -> np.ndarray:
     if v.size < minimum or not np.all(np.isfinite(v)) or np.any(np.diff(v) <= 0.0):
         raise InputError(
             f"{name} = {v.size} values is not allowed: must be at least {minimum} increasing "
-            "finite numbers"
+            "finite numbers",
+            parameter=name,
+            value=values,  # as given (a run file's key is named by it)
         )
     return v

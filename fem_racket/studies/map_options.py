@@ -58,9 +58,12 @@ def check_map_points(positions: int, offsets: int = 1) -> None:
         what = f"positions = {positions} values with offsets = {offsets}"
     else:
         what = f"offsets = {offsets} values with positions = {positions}"
+    name = "positions" if offsets == 1 or positions >= offsets else "offsets"
     raise InputError(
         f"{what} is not allowed: a map takes at most {MAX_MAP_POINTS} points (positions x "
-        f"offsets = {positions * offsets})"
+        f"offsets = {positions * offsets})",
+        parameter=name,
+        value=positions if name == "positions" else offsets,  # the count refused
     )
 
 
@@ -159,6 +162,7 @@ def map_grid(positions: Any) -> np.ndarray:
         start, stop, num = DEFAULT_POSITIONS
         return np.linspace(start, stop, num)
     check_map_points(value_count(positions))
+    given = positions  # as the refusals name it
     if isinstance(positions, str):
         positions = as_values("position", positions)
     try:
@@ -166,11 +170,15 @@ def map_grid(positions: Any) -> np.ndarray:
     except (TypeError, ValueError):
         raise InputError(
             f"positions = {show(positions)} is not allowed: must be at least 3 increasing x/L "
-            "(numbers, a comma list or start:stop:num)"
+            "(numbers, a comma list or start:stop:num)",
+            parameter="positions",
+            value=given,
         ) from None
     if x.size < 3 or np.any(np.diff(x) <= 0.0):
         raise InputError(
-            f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L"
+            f"positions = {x.size} values is not allowed: must be at least 3 increasing x/L",
+            parameter="positions",
+            value=given,  # (a run file's key is named by it)
         )
     for p in (x[0], x[-1]):
         check_range("position", p, 0.0, 1.0, unit="x/L")
@@ -224,4 +232,8 @@ class MapSetup:
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str):  # a label of tables, plots and files
-            raise InputError(f"name = {show(self.name)} is not allowed: must be a string")
+            raise InputError(
+                f"name = {show(self.name)} is not allowed: must be a string",
+                parameter="name",
+                value=self.name,
+            )

@@ -21,6 +21,11 @@ import numpy as np
 
 from fem_racket.impact.batch_solve import LATERAL_EXTRA
 from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence_idle import (
+    CONTACT_FIELDS,
+    refuse_idle_contact,
+    refuse_idle_incidence,
+)
 from fem_racket.impact.oblique.solve import oblique_on
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import ProblemBatch
@@ -138,6 +143,7 @@ def oblique_sweep(
         dataclasses.replace(base, angle=x, spin=spin, friction=mu, side_angle=y, side_spin=z)
         for x in a for spin in s for mu in f for y in b for z in w
     ]  # fmt: skip
+    _refuse_idle(base, {"angle": a, "spin": s, "side_angle": b, "side_spin": w}, frictions, f)
     side = sided or base.lateral
     if clamped:
         got = _clamped(frame, incidences, v, kwargs, side)
@@ -146,6 +152,19 @@ def oblique_sweep(
     got = {key: values.reshape(shape) for key, values in got.items()}
     sides = (b, w) if sided else (None, None)
     return ObliqueSweep(a, s, f, got, *sides)
+
+
+def _refuse_idle(base: Incidence, axes: dict, frictions: Any, f: np.ndarray) -> None:
+    """Refuse the contact's parameters (the ``frictions`` axis given, at any value; ``base``'s
+    away from their defaults) when every case is head-on and spinless (all ``axes`` 0): no
+    tangential force acts in any (:func:`~fem_racket.impact.incidence_idle.refuse_idle_contact`,
+    as simulate and sweep refuse them)."""
+    default = Incidence()
+    idle = {n: getattr(base, n) for n in CONTACT_FIELDS if getattr(base, n) != getattr(default, n)}
+    if frictions is not None:  # the axis replaces the base's friction
+        idle.pop("friction", None)
+        idle["frictions"] = f.tolist()
+    refuse_idle_contact({**axes, **idle})
 
 
 def _clamped(
@@ -199,6 +218,7 @@ def oblique_map(
     """
     if not isinstance(incidence, Incidence):
         raise InputError(f"incidence = {incidence!r} is not allowed: must be an Incidence")
+    refuse_idle_incidence(incidence)  # its contact's parameters head-on and spinless
     x = _axis("positions", positions)
     v = check_positive("speed", speed, "m/s")
     if "position" in kwargs:

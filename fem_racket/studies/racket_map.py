@@ -95,7 +95,9 @@ def _prepared(
         if "kcb_factor" in options:  # given, at any value
             raise InputError(
                 f"kcb_factor = {show(kcb_factor)} is not allowed with contact law "
-                f"{show(law.name)}: it scales the linear law's K_CB only"
+                f"{show(law.name)}: it scales the linear law's K_CB only",
+                parameter="kcb_factor",
+                value=kcb_factor,
             )
         check_linear_options(law, kcb=options.get("kcb"), zeta=options.get("zeta"))
         linear = {k: options[k] for k in ("separation",) if k in options}

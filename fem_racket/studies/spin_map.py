@@ -24,6 +24,7 @@ from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
 from fem_racket.impact.incidence import Incidence
+from fem_racket.impact.incidence_idle import refuse_idle_incidence
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.solvers import make_solver
@@ -135,7 +136,10 @@ def spin_map(
     positions, offsets : array of float
         x/L and y [m] of the grid (increasing, at least 2 each).
     incidence : Incidence
-        Angle, spin and friction of the ball (and its inertia, radius, eta^2).
+        Angle, spin and friction of the ball (and its inertia, radius, eta^2): one ball for
+        every point. Its contact parameters (friction, inertia, radius, eta^2) away from their
+        defaults are refused on a head-on, spinless ball, whose tangential force is zero
+        (:func:`~fem_racket.impact.incidence_idle.refuse_idle_incidence`, as simulate's).
     speed : float
         Incident ball speed [m/s].
     name : str
@@ -145,6 +149,7 @@ def spin_map(
         (a ContactLaw: solved by the general solver, which refuses ``modes``; ``kcb``,
         ``zeta`` and ``separation`` are the paper's law's) and ``head`` (the 100 in^2 outline).
     """
+    refuse_idle_incidence(incidence)  # before any work, as simulate refuses it
     opts = dict(options or {})
     head = (opts.pop("head", None) or DEFAULT_HEAD).on_frame(model.mesh.length)
     unknown = set(opts) - {"ball_mass", "kcb", "zeta", "separation", "modes", "tolerance", "law"}

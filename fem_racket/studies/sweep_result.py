@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
 from fem_racket.outputs import provenance
 from fem_racket.outputs.labels import label
@@ -32,7 +33,7 @@ from fem_racket.studies.grid_values import pattern_label
 from fem_racket.studies.law_axes import family_of, law_attributes
 from fem_racket.studies.sweep_physics import STRING_AXES, fixed_label, given, regime_label
 
-__all__ = ["KCB_LAW", "SweepResult"]
+__all__ = ["BED_BALL", "KCB_LAW", "SweepResult", "swinging"]
 
 #: What a kcb of None means.
 KCB_LAW = (
@@ -42,17 +43,30 @@ KCB_LAW = (
 
 
 #: The fixed parameters of the paper's linear law only: a sweep under another law (its
-#: ``contact_*`` attributes) writes neither, as its dataset holds no ``kcb_n_m``.
+#: ``contact_*`` attributes) writes neither, as its dataset holds no ``kcb_n_m``; nor does a
+#: strung sweep, whose bed replaces the lumped K_CB (its ball's own law: :data:`BED_BALL`).
 PAPER_LAW_ONLY = ("kcb", "zeta")
+#: The ball's own law on a string bed under the paper's law (the ``ball_law`` attribute, as
+#: ``simulate --string-tension`` names it; its spring and dashpot as ``contact_*``).
+BED_BALL = "kawazoe-1997-ball"
+
+
+def swinging(spec: SweepSpec) -> bool:
+    """Whether any case swings the racket (a racket speed other than 0): only then does the
+    swing's ``reference`` point mean anything."""
+    return bool(np.any(np.atleast_1d(spec.values["racket_speed"]) != 0.0))
 
 
 def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
     """Provenance, every fixed parameter (units in the names; the paper law's only under it),
     solver and tolerances."""
     params: dict[str, Any] = {}
+    strung = bool(given(spec.values, STRING_AXES))  # the bed replaces the paper's K_CB
     for name, value in spec.fixed.items():
-        if spec.law is not None and name in PAPER_LAW_ONLY:
+        if (spec.law is not None or strung) and name in PAPER_LAW_ONLY:
             continue  # they describe a law not used
+        if name == "reference" and not swinging(spec):
+            continue  # no swing: no point whose speed it gives (as the Swing's reference)
         attr = parameter(name).attribute
         if value is None and name == "kcb":
             value = KCB_LAW
@@ -74,7 +88,10 @@ def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
         swept=" ".join(spec.dims),
         spec_sha256=spec.digest,
     )
-    if spec.law is None:
+    if spec.law is None and strung:  # the ball's own law on the bed, as simulate's
+        params["ball_law"] = BED_BALL
+        params.update(law_attributes(KAWAZOE_BALL, spec.values["ball_mass"]))  # contact_law too
+    elif spec.law is None:
         params["contact_law"] = "linear"
     elif family_of(spec.law) is None:  # no named parameters: the law as it describes itself
         params.update(law_attributes(spec.law, spec.values["ball_mass"]))  # to the balls struck
@@ -228,9 +245,11 @@ class SweepResult:
         return xr.Dataset(self.data_variables(), coords=self.coordinates(), attrs=dict(self.attrs))
 
     def summary(self) -> dict[str, Any]:
-        """Cases, dimensions, the COR range (NaN when no case solved), solver, law, backend."""
+        """Cases, dimensions, the COR range (NaN when no case solved), solver, law (and the
+        ball's own law on a string bed under the paper's), backend."""
         cor = self.values[:, 0]
         solved = cor[np.isfinite(cor)]
+        bed = {"ball_law": self.attrs["ball_law"]} if "ball_law" in self.attrs else {}
         return {
             "impacts": self.spec.size,
             "dims": dict(zip(self.spec.dims, map(int, self.spec.shape), strict=True)),
@@ -238,5 +257,6 @@ class SweepResult:
             "cor_max": float(solved.max()) if solved.size else math.nan,
             "solver": self.attrs["solver"],
             "contact_law": self.attrs["contact_law"],
+            **bed,
             "backend": self.backend,
         }

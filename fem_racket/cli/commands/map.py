@@ -187,7 +187,27 @@ def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Map every racket, write the files and print the sweet spots."""
+    """Map every racket, write the files and print the sweet spots; a library refusal of a
+    value of the run file's ``[map]`` table names its key (``run.toml: map.positions = ...``),
+    as a core table's value is named (:func:`fem_racket.io.config_named.named_by_key`)."""
+    try:
+        return _run(args)
+    except InputError as exc:
+        named = _named_by_key(exc, args)
+        if named is exc:
+            raise
+        raise named from None
+
+
+def _named_by_key(exc: InputError, args: argparse.Namespace) -> InputError:
+    """``exc`` named by the ``[map]`` key that set the value it refused, or ``exc`` itself."""
+    from fem_racket.io.config_named import named_by_table
+
+    keys = {d: k for d, k in getattr(args, "file_options", {}).items() if k.startswith("map.")}
+    return named_by_table(exc, keys, vars(args), args.config) if keys else exc
+
+
+def _run(args: argparse.Namespace) -> int:
     from fem_racket.io.map_files import check_map_outputs, map_targets, write_maps
     from fem_racket.studies.grid import as_values
     from fem_racket.studies.racket_map import racket_map

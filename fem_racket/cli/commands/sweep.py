@@ -240,6 +240,7 @@ def run(args: argparse.Namespace) -> int:
         "wall_s": wall,
         "impacts_per_s": n / wall if wall > 0 else None,
         **{k: done[k] for k in ("cor_min", "cor_max", "solver", "contact_law", "backend")},
+        **{k: done[k] for k in ("ball_law",) if k in done},  # a string bed's ball
     }
     if args.json:
         print_json(summary)

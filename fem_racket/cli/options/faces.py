@@ -10,7 +10,8 @@ spin its ``side_spin_out_rpm``, ``side_angle_out_deg`` and the racket's
 (:mod:`fem_racket.studies.spin_map`), on the grid of ``--positions`` and ``--offsets``
 (defaults :data:`fem_racket.studies.spin_map.SPIN_POSITIONS` and ``SPIN_OFFSETS``: each point
 is one oblique impact).
-Options the spin map cannot use are refused in one line.
+Options the spin map cannot use are refused in one line, and ``--friction`` without an angle
+or a spin (the ball head-on and spinless: no tangential force), as ``simulate`` refuses it.
 """
 
 from __future__ import annotations
@@ -144,6 +145,7 @@ def map_rackets(study: Callable[..., Any], args: argparse.Namespace, rackets: li
 
 def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: list) -> int:
     """``--angle`` ...: the oblique ball's spin over the face."""
+    from fem_racket.cli.options.incidence_checks import refuse_idle_options
     from fem_racket.impact.incidence import Incidence
     from fem_racket.io.spin_map_files import write_spin_map
     from fem_racket.studies.grid import as_values
@@ -154,6 +156,7 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
         if dest in given:
             raise InputError(f"{dest} is not allowed with {_oblique_given(args)}: {why}")
     inc = Incidence(**{d: getattr(args, d) for d in OBLIQUE if getattr(args, d) is not None})
+    refuse_idle_options(args, {d: d for d in OBLIQUE})  # --friction on a head-on, spinless ball
     positions = as_values("position", args.positions if "positions" in given else SPIN_POSITIONS)
     offsets = as_values("offset", args.offsets or SPIN_OFFSETS)
     options = {**map_impact(args), "law": law}
