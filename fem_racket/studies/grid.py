@@ -104,10 +104,9 @@ class SweepSpec(SweepSolving):
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
     law : ContactLaw or None
-        A contact law other than the paper's (with a string bed, the ball's own), its
-        parameters overridden case by case by those in ``values`` (:meth:`case_law`); None:
-        the paper's linear law from ``kcb`` and ``zeta``. The solver takes or refuses it as
-        simulate's (``auto`` picks as simulate's: :func:`~fem_racket.impact.solvers.auto_pick`).
+        A contact law other than the paper's (on a string bed the ball's own), its parameters
+        overridden case by case by those in ``values`` (:meth:`case_law`); None: the paper's
+        linear law from ``kcb`` and ``zeta``. ``auto`` picks as simulate's (``auto_pick``).
     tolerance : float or None
         COR tolerance of the batched engine (exact solver); None: every mode.
     peak_force : bool
@@ -169,12 +168,11 @@ class SweepSpec(SweepSolving):
                         f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
-        if kwargs.get("solver", "auto") == "auto":  # as simulate's auto picks (the registry's
-            bed = StringBed() if given(values, STRING_AXES) else None  # rule); no bed stretches
+        if kwargs.get("solver", "auto") == "auto":  # simulate's pick (no bed of a sweep stretches)
+            bed = StringBed() if given(values, STRING_AXES) else None
             kwargs["solver"] = auto_pick(kwargs.get("law"), bed)
         spec = cls(values=values, frame=frame, ei2=ei2, given=told, **kwargs)
-        # the solver refuses what it cannot do, with simulate's line: make_solver an unknown
-        # name, Solver.check the cases (studies.cases.check_first_case, before any work)
+        # no list of solvers: the solver refuses (make_solver, then cases.check_first_case)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         make_solver(spec.solver, **spec.solver_options())  # the options simulate's solver takes
