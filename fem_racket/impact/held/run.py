@@ -6,7 +6,8 @@ The entry of ``fem-racket simulate`` with a hand. Two ways to the same answer:
   shock measures of :mod:`fem_racket.impact.held.shock` (peak of the grip force, RMS of its
   vibration part over the window [0, T]);
 - ``cvode`` / ``bdf``: the integrators during contact and the free vibration after it
-  (:mod:`fem_racket.impact.held.sampled`), the shock measures from the samples.
+  (:mod:`fem_racket.impact.held.sampled`), the peaks root-found and the RMS integrated exactly
+  between the samples, so none depends on the output step.
 
 A swing (:mod:`fem_racket.impact.swing`) moves racket and hand rigidly; the grip layer is not
 stretched by it, so the impact superposes on the stationary one at the closing speed
@@ -144,8 +145,8 @@ class HeldSettings:
     ----------
     solver : {"exact", "cvode", "bdf"}
     output_step : float
-        Spacing of the histories' times and of the integrators' samples [s] (the integrators'
-        shock measures are to it, module docstring).
+        Spacing of the histories' times and of the integrators' samples [s] (the peaks and the
+        RMS do not depend on it, module docstring).
     histories : bool
         Keep the histories (:attr:`HeldRun.histories`).
     tolerance : float or None
