@@ -224,8 +224,13 @@ class AutoSolver(Solver):
     def pick(self, problem: ImpactProblem | ProblemBatch) -> Solver:
         """The solver this one stands for on ``problem`` (or a batch)."""
         if isinstance(problem, ProblemBatch):
-            stretch = any(s is not None and s.stretch for s in problem.strings or ())
-            name = "cvode" if stretch else auto_method(problem.linear)
+            beds = [s for s in problem.strings or () if s is not None]
+            if any(s.stretch for s in beds):
+                name = "cvode"
+            elif beds and len(beds) == len(problem.strings):  # every case on a bed: as one
+                name = auto_pick(problem.law, beds[0])
+            else:
+                name = auto_method(problem.linear)
         else:
             name = auto_pick(
                 problem.law, problem.strings, moving=problem.frame_velocity is not None

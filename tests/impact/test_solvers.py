@@ -112,3 +112,21 @@ def test_held_racket_through_the_solver_equals_the_held_path():
         fr.simulate(MODEL, hand=hand, solver="general")
     with pytest.raises(InputError, match="tolerance = 1e-08 is not allowed with solver 'cvode'"):
         fr.simulate(MODEL, hand=hand, solver="cvode", tolerance=1e-8)
+
+
+@pytest.mark.parametrize("law", [None, "kawazoe-1997-ball", "hunt-crossley"])
+def test_auto_picks_for_a_strung_batch_what_it_picks_for_each_case(law):
+    # One rule for auto (impact.solvers.auto_pick): a batch on string beds under the ball's
+    # linear preset used to take 'general' where each of its problems takes 'exact'
+    import numpy as np
+
+    from fem_racket.impact.problem_batch import ProblemBatch
+    from fem_racket.strings.bed import StringBed
+
+    kw = {} if law is None else {"law": law}
+    problem = ImpactProblem.build(elements=6, strings=StringBed(tension_n=250.0), **kw)
+    batch = ProblemBatch.of(problem, speed=np.array([20.0, 30.0]))
+    auto = make_solver("auto")
+    assert auto.pick(batch).name == auto.pick(problem).name
+    one = auto.solve(ImpactProblem.build(elements=6, strings=StringBed(tension_n=250.0), **kw))
+    assert auto.solve_many(batch).cor[0] == pytest.approx(one.cor, rel=1e-12)  # same method
