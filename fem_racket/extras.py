@@ -17,18 +17,21 @@ all       every one above
 :func:`require` is also the door to pyvista, a core library imported only where it is used: its
 import loads pooch, whose ``tqdm.auto`` warns in a Jupyter kernel without ipywidgets
 (``TqdmWarning: IProgress not found``) about download bars fem_racket never shows, so that one
-warning is silenced while pyvista is imported.
+warning is silenced while pyvista is imported. :func:`check_installed` refuses the same way
+without importing: a command's checks (``fem-racket config --check`` runs them) name a missing
+library before any work, and the library is imported where the work uses it.
 """
 
 from __future__ import annotations
 
 import importlib
+import importlib.util
 import warnings
 from types import ModuleType
 
 from fem_racket.validation import InputError
 
-__all__ = ["EXTRAS", "MissingExtra", "require"]
+__all__ = ["EXTRAS", "MissingExtra", "check_installed", "require"]
 
 #: Top-level module -> the extra that installs it.
 EXTRAS = {
@@ -74,3 +77,18 @@ def require(name: str, what: str) -> ModuleType:
             f"{what} needs {top}, which is not installed: pip install 'fem_racket[{extra}]' "
             f"(from a clone: pip install -e '.[{extra}]')"
         ) from None
+
+
+def check_installed(name: str, what: str) -> None:
+    """Refuse as :func:`require` does when the top-level module ``name`` cannot be found, without
+    importing it (its finders only: pyvista costs ~0.4 s to import, nothing to find).
+
+    Parameters
+    ----------
+    name : str
+        A top-level module, e.g. ``"imageio"``.
+    what : str
+        What needs it, for the message.
+    """
+    if importlib.util.find_spec(name) is None:
+        require(name, what)  # its import fails too: require's one line (or the import's error)

@@ -27,6 +27,11 @@ With ``--strung``, instead: ``config --check`` and ``simulate --config`` of a st
 file (:data:`STRUNG_RUN`): the string bed's reach check (its edge from the head outline, no
 membrane) and one strung impact.
 
+With ``--checks``, instead: ``config --check`` of a run file with every table (the example of
+``config --example`` and :data:`CHECK_TABLES`), and each command's dry run of it alone (what
+``config --check`` runs per command: its checks, no computation, no file), as
+``python -c DRY_RUN NAME FILE`` (:data:`DRY_RUN`); the import table shows what each check loads.
+
 With ``--help-commands``, instead: ``fem-racket --help`` and every ``fem-racket COMMAND --help``
 (what a user waits for before the first line of help, or for a usage error: the same parser is
 built), each with the package modules and the heavy libraries (:data:`HEAVY`) it imports (one
@@ -34,7 +39,8 @@ built), each with the package modules and the heavy libraries (:data:`HEAVY`) it
 ``--help`` of the same tree in the same run.
 
 Usage: python scripts/bench_cli.py [--quick] [--repeat N] [--tree DIR ...] [--no-cache]
-       [--million] [--strung] [--help-commands]  (with --quick: --help and simulate once each)
+       [--million] [--strung] [--checks] [--help-commands]
+       (with --quick: --help and simulate once each; with --checks: config --check only)
 """
 
 from __future__ import annotations
@@ -81,6 +87,50 @@ def strung_commands(run_file: Path) -> dict[str, tuple[list[str], None]]:
     }
 
 
+#: What the example run file leaves commented out that some checks need (fit and customise
+#: refuse a file without their targets, closest and compare check their tables' values), and a
+#: sweep on a Dask scheduler (its check finds distributed, the sweep would import it).
+CHECK_TABLES = """
+[sweep]
+scheduler = "tcp://127.0.0.1:8786"
+[fit]
+length = 0.685
+mass = 0.3
+balance = 0.33
+swing_weight = 320.0
+[customise]
+swing_weight = 330.0
+[closest]
+swing_weight = "300:330"
+[compare]
+point = 0.7
+"""
+#: One command's dry run on a run file: ``python -c DRY_RUN NAME FILE``.
+DRY_RUN = "import sys; from fem_racket.cli.commands.config import _dry_run; _dry_run(*sys.argv[1:])"
+
+
+def check_commands(env: dict[str, str], scratch: Path, quick: bool) -> dict[str, tuple]:
+    """``config --check`` of the run file of ``--checks`` (written to ``scratch``) and each
+    command's dry run of it (``quick``: the check alone); ``env``: the tree naming them."""
+
+    def output(code: str) -> str:
+        argv = [sys.executable, "-c", code]
+        done = subprocess.run(
+            argv, env=env, cwd=scratch, capture_output=True, text=True, check=True
+        )
+        return done.stdout
+
+    run_file = scratch / "checked.toml"
+    run_file.write_text(output("from fem_racket.cli import main; main(['config', '--example'])"))
+    with run_file.open("a") as f:
+        f.write(CHECK_TABLES)
+    names = output("from fem_racket.cli.commands.config import _commands; print(*_commands())")
+    commands = {"config --check (every table)": (["config", "--check", str(run_file)], None)}
+    for name in [] if quick else names.split():
+        commands[f"dry run of {name}"] = (["-c", DRY_RUN, name, str(run_file)], None)
+    return commands
+
+
 #: Third-party libraries too heavy for a command's ``--help`` (each with its submodules).
 HEAVY = ("numpy", "scipy", "skfem", "meshio", "pyvista", "sksundae", "matplotlib", "xarray")
 HEAVY += ("dask", "numba")
@@ -109,13 +159,14 @@ def run(
     args: list[str], env: dict[str, str], scratch: Path, flags: tuple[str, ...] = ()
 ) -> tuple[float, str, float]:
     """(wall time [s], stderr, CPU time [s] of the run and its own children) of
-    ``python FLAGS -m fem_racket ARGS`` in a fresh output folder."""
+    ``python FLAGS -m fem_racket ARGS`` (``python FLAGS -c ...`` for ``ARGS = ["-c", ...]``) in
+    a fresh output folder."""
     with tempfile.TemporaryDirectory(dir=scratch) as out:
         argv = [a.format(out=out) for a in args]
         cpu0 = _children_cpu()
         t0 = time.perf_counter()
         done = subprocess.run(
-            [sys.executable, *flags, "-m", "fem_racket", *argv],
+            [sys.executable, *flags, *([] if argv[0] == "-c" else ["-m", "fem_racket"]), *argv],
             env=env,
             cwd=out,  # not the repository: python puts the working directory first on the path
             capture_output=True,
@@ -217,6 +268,9 @@ def main(argv: list[str] | None = None) -> list[dict]:
         "--strung", action="store_true", help="instead: a strung run file's check and simulate"
     )
     parser.add_argument(
+        "--checks", action="store_true", help="instead: each command's checks of a run file"
+    )
+    parser.add_argument(
         "--help-commands",
         action="store_true",
         help="instead: --help of every command, what each imports and its time",
@@ -232,6 +286,8 @@ def main(argv: list[str] | None = None) -> list[dict]:
         if args.strung:
             (scratch / "strung.toml").write_text(STRUNG_RUN)
             commands = strung_commands(scratch / "strung.toml")
+        if args.checks:
+            commands = check_commands(environment(trees[0], None), scratch, args.quick)
         envs = {}
         for i, tree in enumerate(trees):
             envs[tree] = environment(tree, None if args.no_cache else scratch / f"pyc{i}")

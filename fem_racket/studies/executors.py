@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.extras import require
+from fem_racket.extras import check_installed
 from fem_racket.studies.backends import BACKENDS
 from fem_racket.studies.pool import pin_blas_threads, run_pool
 from fem_racket.validation import InputError, check_choice, show
@@ -65,7 +65,7 @@ def check_scheduler(address: str) -> str:
         raise InputError(
             f"scheduler = {show(address)} is not allowed: must look like tcp://HOST:PORT"
         )
-    require("distributed", "a Dask scheduler (--scheduler)")
+    check_installed("distributed", "a Dask scheduler (--scheduler)")  # the run imports it
     return address
 
 

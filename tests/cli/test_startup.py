@@ -19,6 +19,11 @@ so load on the machine cannot fail it. What each command must not import, and wh
   (which imports dask, dask.array and through them scipy, and dask.distributed to write), so
   no xarray, pandas or dask, and of scipy only what numba (the engine's compiled kernels)
   imports itself; ``--help`` and ``simulate`` (one impact, the numpy path) no numba.
+- ``config --check`` (every command's checks on a run file, no computation, no file): no scipy
+  at all, and none of the libraries the commands' work uses - scipy.optimize for calibrate,
+  pyvista and imageio for export-vtk and animate, SALib (and pandas) for sensitivity, distributed
+  for a sweep on a Dask scheduler: the checks only find them (a missing one is still refused),
+  the work imports them.
 """
 
 from __future__ import annotations
@@ -222,6 +227,60 @@ def test_sweep_writes_without_xarray_or_dask(law, tmp_path):
     assert "numba" in modules and not loaded(modules, heavy)
 
 
+#: A run file with a table for each command whose work uses a heavy library (calibrate:
+#: scipy.optimize; export-vtk, animate: pyvista, imageio; sensitivity: SALib; sweep on a Dask
+#: scheduler: distributed), not the default values, so its check takes the paths these choose.
+CHECKED_RUN = """[impact]
+position_x_over_l = 0.7
+[sweep]
+position = "0.6:0.9:4"
+scheduler = "tcp://127.0.0.1:1"
+[calibrate]
+family = "hunt-crossley"
+targets = "itf"
+[vtk]
+frames = 11
+[animate]
+out = "impact.mp4"
+[sensitivity]
+designs = 64
+"""
+
+
+def test_run_file_check_imports_no_library_of_the_commands_work(tmp_path):
+    run_file = tmp_path / "run.toml"
+    run_file.write_text(CHECKED_RUN)
+    modules = imported(["config", "--check", str(run_file)], tmp_path)
+    # the checks did run: calibrate's (its study module), the animation's targets, the design
+    assert {"fem_racket.studies.calibrate", "fem_racket.io.animate"} <= modules
+    assert "fem_racket.studies.design.problem" in modules
+    heavy = ("scipy", *SOLVERS, *FILES, *PLOTTING, *OTHERS)
+    assert not loaded(modules, heavy) and list(tmp_path.iterdir()) == [run_file]
+
+
+@pytest.mark.parametrize(
+    ("module", "needs"),
+    [
+        ("imageio", "fem-racket animate"),
+        ("SALib", "fem-racket sensitivity"),
+        ("distributed", "fem-racket sweep would refuse it: a Dask scheduler (--scheduler)"),
+    ],
+)
+def test_run_file_check_still_refuses_a_missing_library(
+    capsys, monkeypatch, tmp_path, module, needs
+):
+    """The checks find a library without importing it, and refuse one that is missing as the
+    command would (``fem_racket.extras.check_installed``; tests/cli/test_extras.py: the command)."""
+    from tests.clirun import run
+
+    run_file = tmp_path / "run.toml"
+    run_file.write_text(CHECKED_RUN)
+    monkeypatch.setitem(sys.modules, module, None)  # import fails as if not installed
+    code, out, err = run(capsys, "config", "--check", run_file)
+    assert (code, out) == (2, "") and err.count("\n") == 1
+    assert f"{needs} needs {module}, which is not installed: pip install" in err
+
+
 def test_version_is_looked_up_when_asked(capsys):
     from importlib.metadata import version
 
@@ -245,3 +304,15 @@ def test_the_command_table_names_each_commands_module():
         assert name in commands(build_parser([name, "--help"]))
     assert commands(build_parser(["-v", "sweep"])) == {"sweep"}
     assert commands(build_parser(["simulat"])) == set(COMMANDS)  # a typo sees every choice
+
+
+def test_bench_of_the_checks_runs(capsys):
+    """``scripts/bench_cli.py --checks`` (here ``--quick``: the check alone, once): its run file
+    (the example and the tables it leaves commented out) passes ``config --check``, whose
+    imports it lists; tests/paper/test_figure_scripts.py runs its other modes."""
+    from script_loader import load_script
+
+    rows = load_script("bench_cli").main(["--checks", "--quick"])
+    assert [r["command"] for r in rows] == ["config --check (every table)"]
+    assert "fem_racket" in rows[0]["imports_s"] and "scipy" not in rows[0]["imports_s"]
+    assert "import time [s] by package" in capsys.readouterr().out

@@ -7,7 +7,7 @@ import argparse
 from fem_racket.cli.options.design import add_design_options, add_study_tail, problem_from_args
 from fem_racket.cli.options.execution import execution_from_args
 from fem_racket.cli.options.output import overwrite_of
-from fem_racket.extras import require
+from fem_racket.extras import check_installed
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -46,7 +46,7 @@ def run(args: argparse.Namespace) -> int:
     )
     from fem_racket.studies.design.unused import refuse_power_fraction
 
-    require("SALib", "fem-racket sensitivity")
+    check_installed("SALib", "fem-racket sensitivity")  # imported where the indices are computed
 
     files = OutputOptions(args.out, overwrite_of(args, bool(args.out)), run_parameters(args))
     problem = problem_from_args(args)

@@ -21,7 +21,7 @@ from fem_racket.cli.options.output import print_written, print_written_folder
 from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.strings import add_strings_options, strings_from_args, strung_from_args
-from fem_racket.extras import require
+from fem_racket.extras import check_installed
 from fem_racket.validation import InputError
 
 #: Where export-vtk and animate write unless --out is given.
@@ -139,9 +139,10 @@ def _check_early(args: argparse.Namespace) -> bool:
     from fem_racket.io.vtk_series import check_scale, field_name
     from fem_racket.outputs import check_output_folder, check_targets
 
-    require("pyvista", f"fem-racket {args.command}")  # before the simulation
+    # before the simulation, without importing them: the writers do (config --check runs this)
+    check_installed("pyvista", f"fem-racket {args.command}")
     if args.command == "animate":
-        require("imageio", "fem-racket animate")
+        check_installed("imageio", "fem-racket animate")
     field_name(args.field)
     check_scale(args.scale)
     if args.frames is not None and args.frames < 2:
