@@ -49,7 +49,7 @@ from fem_racket.impact.solver_base import Solver
 from fem_racket.impact.strung.solve import check_strung
 from fem_racket.validation import InputError, check_choice
 
-__all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "make_solver"]
+__all__ = ["SOLVERS", "SOLVER_NAMES", "Solver", "auto_method", "auto_pick", "make_solver"]
 
 
 class ExactSolver(Solver):
@@ -200,6 +200,20 @@ def auto_method(linear: bool) -> str:
     return "exact" if linear else "general"
 
 
+def auto_pick(law: Any, strings: Any = None, *, moving: bool = False) -> str:
+    """The method ``auto`` picks for an impact under ``law`` (a ContactLaw; None: the paper's)
+    on ``strings`` (a StringBed; None: no bed), the racket moving as given (``moving``: a
+    frame_velocity) or not (at rest or swinging): on the bed ``cvode`` when it stretches,
+    else ``exact`` for a linear ball law (``law``, or the ``kawazoe-1997-ball`` when None),
+    ``general`` otherwise; off it ``exact`` for the paper's law on a racket not moving as
+    given, ``general`` otherwise."""
+    if strings is not None:
+        if strings.stretch:  # CVODE alone integrates the stretching bed
+            return "cvode"
+        return auto_method(law is None or law.name == "linear")  # the default ball's is
+    return auto_method(law is None and not moving)
+
+
 class AutoSolver(Solver):
     """``exact`` for the paper's law on a racket at rest or swinging, ``cvode`` on a stretching
     string bed (``strings.stretch``), ``general`` otherwise."""
@@ -209,15 +223,13 @@ class AutoSolver(Solver):
 
     def pick(self, problem: ImpactProblem | ProblemBatch) -> Solver:
         """The solver this one stands for on ``problem`` (or a batch)."""
-        linear = problem.linear
         if isinstance(problem, ProblemBatch):
             stretch = any(s is not None and s.stretch for s in problem.strings or ())
-            name = "cvode" if stretch else auto_method(linear)
-        elif problem.strings is not None:  # the ball's own law on the bed; a stretching bed:
-            linear = problem.ball_law().name == "linear"  # CVODE alone integrates it
-            name = "cvode" if problem.strings.stretch else auto_method(linear)
+            name = "cvode" if stretch else auto_method(problem.linear)
         else:
-            name = auto_method(linear and problem.frame_velocity is None)
+            name = auto_pick(
+                problem.law, problem.strings, moving=problem.frame_velocity is not None
+            )
         try:
             return SOLVERS[name](**self.options.given())
         except InputError as err:

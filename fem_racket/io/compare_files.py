@@ -19,13 +19,24 @@ from typing import Any
 
 import numpy as np
 
-from fem_racket.io.figure_files import FIGURE_FORMATS, save_figure
+from fem_racket.io.figure_files import FIGURE_FORMATS, fill_figure
 from fem_racket.io.map_files import map_dataset
-from fem_racket.outputs import atomic_output, check_output_path, provenance
+from fem_racket.outputs import Target, atomic_outputs, check_targets, provenance
 from fem_racket.studies.compare import Report
 from fem_racket.validation import InputError
 
-__all__ = ["COMPARE_SUFFIXES", "ROWS", "check_compare_output", "compare_figure", "write_compare"]
+__all__ = [
+    "COMPARE_OUTPUT",
+    "COMPARE_SUFFIXES",
+    "ROWS",
+    "check_compare_outputs",
+    "compare_figure",
+    "write_compare",
+]
+
+#: Where ``fem-racket compare`` writes its figure unless told (``--out``), replacing the figure an
+#: earlier compare wrote there.
+COMPARE_OUTPUT = Path("output") / "compare.png"
 
 #: Suffixes compare writes: a figure or netCDF.
 COMPARE_SUFFIXES = tuple(f".{f}" for f in FIGURE_FORMATS) + (".nc",)
@@ -50,14 +61,22 @@ ROWS = {
 }
 
 
-def check_compare_output(path: str | os.PathLike, *, overwrite: bool = False) -> Path:
-    """``path`` if compare can write it (suffix and destination checked before the work)."""
-    path = Path(path)
-    if path.suffix.lower() not in COMPARE_SUFFIXES:
-        raise InputError(
-            f"output = '{path}' is not allowed: must end in {', '.join(COMPARE_SUFFIXES)}"
-        )
-    return check_output_path(path, overwrite=overwrite)
+def _targets(paths: Sequence[str | os.PathLike]) -> list[Target]:
+    """The files of ``paths``, suffixes checked."""
+    for path in map(Path, paths):
+        if path.suffix.lower() not in COMPARE_SUFFIXES:
+            raise InputError(
+                f"output = '{path}' is not allowed: must end in {', '.join(COMPARE_SUFFIXES)}"
+            )
+    return [Target(Path(p)) for p in paths]
+
+
+def check_compare_outputs(
+    paths: Sequence[str | os.PathLike], *, overwrite: bool = False
+) -> list[Path]:
+    """``paths`` if compare can write them: suffixes, destinations and no path given twice,
+    checked before the work."""
+    return [t.path for t in check_targets(_targets(paths), overwrite=overwrite)]
 
 
 def _cell(value: float | None, factor: float, digits: int, signed: bool = False) -> str:
@@ -195,17 +214,20 @@ def _dataset(
 def write_compare(
     reports: Sequence[Report],
     diffs: Mapping[str, Mapping[str, Any]],
-    path: str | os.PathLike,
+    paths: Sequence[str | os.PathLike],
     *,
     overwrite: bool = False,
     parameters: Mapping[str, Any] | None = None,
-) -> Path:
-    """Write the figure (.png, .svg, .pdf) or the netCDF (.nc) to ``path``."""
-    path = check_compare_output(path, overwrite=overwrite)
-    if path.suffix.lower() != ".nc":
-        fig = compare_figure(reports, diffs)
-        return save_figure(fig, path, provenance(parameters), overwrite=overwrite)
-    ds = _dataset(reports, diffs, parameters)
-    with atomic_output(path, overwrite=overwrite) as tmp:
-        ds.to_netcdf(tmp)
-    return path
+) -> list[Path]:
+    """Write the figure (.png, .svg, .pdf) and/or the netCDF (.nc) to every one of ``paths``
+    as one set: all of them or, on any fault, none (:func:`fem_racket.outputs.atomic_outputs`)."""
+    targets = _targets(paths)
+    with atomic_outputs(targets, overwrite=overwrite) as temps:
+        for t, tmp in zip(targets, temps, strict=True):
+            suffix = t.path.suffix.lower()
+            if suffix == ".nc":
+                _dataset(reports, diffs, parameters).to_netcdf(tmp)
+            else:
+                fig = compare_figure(reports, diffs)
+                fill_figure(fig, tmp, suffix[1:], provenance(parameters))
+    return [t.path for t in targets]

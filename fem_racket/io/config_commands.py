@@ -153,18 +153,19 @@ class CommandMethods:
         ----------
         out : path, optional
             The customised racket's mesh file (sidecar ``out.json``; the maps before and after
-            to ``[customise] maps``, else the command's), as the command writes them (else
-            ``[customise] out``; neither: nothing written).
+            to ``[customise] maps``, else beside the mesh as the command puts them), as the command
+            writes them (else ``[customise] out``; neither: nothing written).
 
         Returns
         -------
         CustomisedRacket
-            Everything the command reports (:class:`fem_racket.io.racket_files.CustomisedRacket`):
-            ``customisation`` (of :func:`fem_racket.studies.customise.customise`: placement
-            [kg], the racket before and after; also ``.added``, ``.mesh``, ``.before``,
-            ``.after``, ``.total``), the ``maps`` before and after (sweet spots [x/L]) at the
-            file's ball speed [m/s] and swing, the ``targets``; ``.summary()`` is the
-            command's ``--json`` less the paths written. See
+            Everything the command reports
+            (:class:`fem_racket.io.customise_files.CustomisedRacket`): ``customisation`` (of
+            :func:`fem_racket.studies.customise.customise`: placement [kg], the racket before
+            and after; also ``.added``, ``.mesh``, ``.before``, ``.after``, ``.total``), the
+            ``maps`` before and after (sweet spots [x/L]) at the file's ball speed [m/s] and
+            swing, the ``targets``; ``.summary()`` is the command's ``--json`` less the paths
+            written. See
             :func:`fem_racket.io.config_racket.customise_file`.
         """
         from fem_racket.io.config_racket import customise_file

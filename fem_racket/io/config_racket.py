@@ -20,13 +20,11 @@ from fem_racket.frame.clock import PLACES
 from fem_racket.frame.specs import DEFAULT_ELEMENTS
 from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
 from fem_racket.io.config_tables import Option, flag, integer, number, table_options, text
-from fem_racket.io.constants import CUSTOMISE_MAPS
 from fem_racket.studies.target_values import RANKED, TARGETS, parse_target
 from fem_racket.validation import InputError, check_integer, show, work_begins
 
 __all__ = [
     "CLOSEST_OPTIONS",
-    "CUSTOMISE_MAPS",
     "CUSTOMISE_OPTIONS",
     "FIT_OPTIONS",
     "closest_file",
@@ -59,7 +57,7 @@ _FILES = {"out": (None, text), "overwrite": (False, flag)}
 _SPEC = ("length", "mass", "balance", "swing_weight", "f1", "twist_weight", "torsion_frequency")
 FIT_OPTIONS = {**dict.fromkeys(_SPEC, (None, number)), "elements": (DEFAULT_ELEMENTS, integer),
                **_FILES}  # fmt: skip
-CUSTOMISE_OPTIONS = {**_targets(False), **_FILES, "maps": (CUSTOMISE_MAPS, text)}
+CUSTOMISE_OPTIONS = {**_targets(False), **_FILES, "maps": (None, text)}
 CLOSEST_OPTIONS = {**_targets(True), "count": (3, integer)}
 
 
@@ -104,17 +102,26 @@ def fit_file(cfg: RunConfig, out: Any = None) -> Any:
 def customise_file(cfg: RunConfig, out: Any = None) -> Any:
     """The least lead ``fem-racket customise --config`` finds for the file's frame and the
     maps of the racket before and after it, everything the command reports (a
-    :class:`~fem_racket.io.racket_files.CustomisedRacket`); with ``out`` (else
+    :class:`~fem_racket.io.customise_files.CustomisedRacket`); with ``out`` (else
     ``[customise] out``) the customised racket's mesh file, its sidecar and the maps before and
-    after (``[customise] maps``, else the command's) written, as the command writes them;
-    ``[customise] maps`` without ``out`` is refused (the command writes no maps alone)."""
+    after (``[customise] maps``, else beside the mesh as the command puts them) written as one
+    set, as the command writes them: an existing one refused unless the file says
+    ``overwrite``, or ``out`` is the command's default (``output/customised.vtu``, the maps
+    beside it) and they are an earlier customise's; ``[customise] maps`` without ``out`` is
+    refused (the command writes no maps alone)."""
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
+    from fem_racket.io.config_rerun import rerun_overwrite
     from fem_racket.io.config_run import file_frame
-    from fem_racket.io.map_files import check_map_outputs
-    from fem_racket.io.racket_files import customise_files, customise_racket, mesh_files
-    from fem_racket.outputs import check_output_path
+    from fem_racket.io.customise_files import (
+        CUSTOMISE_OUTPUT,
+        customise_files,
+        customise_racket,
+        customise_targets,
+    )
+    from fem_racket.outputs import check_targets
     from fem_racket.studies.map_options import MapPlay
+    from fem_racket.studies.swing_points import check_swing_points
     from fem_racket.studies.target_values import place_list, targets_from
 
     d = cfg.defaults()
@@ -126,22 +133,23 @@ def customise_file(cfg: RunConfig, out: Any = None) -> Any:
             f"customise.maps = {show(o['maps'])} is not allowed without out: the maps are "
             "written with the customised racket's mesh file (give out)"
         )
-    paths = (Path(out), Path(o["maps"])) if out is not None else None
-    if paths is not None:
-        for f in mesh_files(paths[0]):
-            check_output_path(f, overwrite=o["overwrite"])
-        check_map_outputs([paths[1]], overwrite=o["overwrite"])
+    files = None if out is None else customise_targets(out, o["maps"])
+    if files is not None:
+        default = Path(out) == CUSTOMISE_OUTPUT and o["maps"] is None
+        overwrite = rerun_overwrite(o["overwrite"], default, [t.path for t in files])
+        check_targets(files, overwrite=overwrite)
     frame = file_frame(cfg)
     elements = d.get("elements", FRAME_ELEMENTS)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, elements)
     targets = targets_from(o, catalogue(mesh, f1=False))
     play = {k: o[k] for k in PLAY_DEFAULTS}
-    MapPlay(**play)  # a swing's point without a swing refused before any work
+    # a swing's point without a swing, its closing speed at the maps' points: before any work
+    check_swing_points(mesh, MapPlay(**play))
     work_begins()
-    if paths is None:
+    if files is None:
         return customise_racket(mesh, targets, places, play)
     parameters = {"config": str(cfg.source), **o, "out": str(out)}
-    return customise_files(mesh, targets, places, play, paths, parameters, o["overwrite"])[0]
+    return customise_files(mesh, targets, places, play, files, parameters, overwrite)[0]
 
 
 def closest_file(cfg: RunConfig, rackets: Any) -> list[Any]:

@@ -68,11 +68,14 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     ``+LOCATION:GRAMS``) compared as ``fem-racket compare RACKETS --config`` compares them: the
     Reports of :func:`fem_racket.studies.compare.compare`, in order; with ``out`` (a path or a
     list of them, else ``[compare] out``) the figure (.png, .svg, .pdf) and/or maps (.nc)
-    written, as the command writes them."""
-    from fem_racket.io.compare_files import check_compare_output, write_compare
+    written as one set, as the command writes them: an existing one refused unless the file
+    says ``overwrite``, or ``out`` is the command's default (``output/compare.png``) and holds
+    an earlier compare's figure."""
+    from fem_racket.io.compare_files import COMPARE_OUTPUT, check_compare_outputs, write_compare
+    from fem_racket.io.config_rerun import rerun_overwrite
     from fem_racket.io.config_unused import refuse_unused
     from fem_racket.io.setups import compare_play, read_setups
-    from fem_racket.studies.compare import compare, differences
+    from fem_racket.studies.compare import check_compare, compare, differences
 
     defaults = {**PLAY_DEFAULTS, "elements": FRAME_ELEMENTS, "add_mass": None, "overwrite": False}
     core = _core(cfg, defaults)
@@ -88,16 +91,17 @@ def compare_file(cfg: RunConfig, rackets: Any, out: Any = None) -> list[Any]:
     refuse_unused(cfg, "compare", {*defaults, *COMPARE_OPTIONS})  # as the command refuses it
     out = o["out"] if out is None else out
     outs = [Path(p) for p in ([out] if isinstance(out, (str, Path)) else out or [])]
-    for path in outs:
-        check_compare_output(path, overwrite=o["overwrite"])
+    overwrite = rerun_overwrite(o["overwrite"], outs == [COMPARE_OUTPUT], outs)
+    check_compare_outputs(outs, overwrite=overwrite)
     setups = read_setups(rackets, elements=o["elements"], leads=o["add_mass"] or [])
     play = compare_play(o)
+    check_compare(setups, play)
     work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)
     parameters = {"config": str(cfg.source), "rackets": rackets, **o, "out": [str(p) for p in outs]}
-    for path in outs:
-        write_compare(reports, diffs, path, overwrite=o["overwrite"], parameters=parameters)
+    if outs:
+        write_compare(reports, diffs, outs, overwrite=overwrite, parameters=parameters)
     return reports
 
 

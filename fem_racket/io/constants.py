@@ -1,21 +1,17 @@
 """The run files' named values that the command line shows before any work: plain tables,
 importing nothing of the library's numerics (``fem-racket COMMAND --help`` reads them without
-numpy). Each has this one home; :mod:`fem_racket.io.config_design`, :mod:`fem_racket.io.config_keys`
-and :mod:`fem_racket.io.config_racket` import them from here.
+numpy). Each has this one home; :mod:`fem_racket.io.config_design` and
+:mod:`fem_racket.io.config_keys` import them from here.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from fem_racket.frame.constants import PAPER_EI1, RIGID_EI1
 
-__all__ = ["CONSTRAINTS", "CUSTOMISE_MAPS", "PRESETS"]
+__all__ = ["CONSTRAINTS", "PRESETS"]
 
 #: Frame presets: name -> EI1 [N m^2] (EI2 = 0.88 EI1 unless ei2_n_m2 is given).
 PRESETS = {"standard": PAPER_EI1, "rigid": RIGID_EI1}
-#: The maps of ``customise`` unless ``--maps``/``[customise] maps`` says (the command's default).
-CUSTOMISE_MAPS = str(Path("output") / "customised_map.png")
 
 #: Constraint options (argparse dests, table keys) -> (quantity, help).
 CONSTRAINTS = {

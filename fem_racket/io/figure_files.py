@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.outputs import add_png_provenance, atomic_output, provenance
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "DEFAULT_DPI",
@@ -37,6 +37,7 @@ __all__ = [
     "check_dpi",
     "check_figure_format",
     "figure_format",
+    "fill_figure",
     "same_image",
     "save_figure",
     "save_map_png",
@@ -79,7 +80,7 @@ def check_dpi(dpi: float) -> float:
     except (TypeError, ValueError):
         ok = False
     if not ok:
-        raise InputError(f"dpi = {dpi!r} is not allowed: must be a number in [{low}, {high}]")
+        raise InputError(f"dpi = {show(dpi)} is not allowed: must be a number in [{low}, {high}]")
     return float(dpi)
 
 
@@ -146,22 +147,37 @@ def save_figure(
     """
     fmt = figure_format(path)
     dpi = check_dpi(dpi)
-    text = json.dumps(dict(meta), sort_keys=True, default=str)
-    creator = f"{meta.get('software', 'fem_racket')} {meta.get('version', '')}".strip()
     png = _png(fig, dpi) if fmt == "png" else b""
     if png and keep_unchanged and overwrite and same_image(Path(path), png):
         return Path(path)
     with atomic_output(path, overwrite=overwrite) as tmp:
-        if fmt == "png":
-            tmp.write_bytes(png)
-            add_png_provenance(tmp, meta)
-        elif fmt == "svg":
-            fig.savefig(
-                tmp, dpi=dpi, format="svg", metadata={"Creator": creator, "Description": text}
-            )
-        else:
-            fig.savefig(tmp, dpi=dpi, format="pdf", metadata={"Creator": creator, "Subject": text})
+        _fill(fig, tmp, fmt, meta, dpi, png)
     return Path(path)
+
+
+def fill_figure(
+    fig: Any, tmp: Path, fmt: str, meta: Mapping[str, Any], dpi: float = DEFAULT_DPI
+) -> None:
+    """Save ``fig`` as :func:`save_figure` saves it, in the format ``fmt`` (``"png"``, ``"svg"``,
+    ``"pdf"``), to the temporary ``tmp`` of an :func:`~fem_racket.outputs.atomic_outputs` block
+    that may hold other outputs of the same set."""
+    dpi = check_dpi(dpi)
+    _fill(fig, tmp, fmt, meta, dpi, _png(fig, dpi) if fmt == "png" else b"")
+
+
+def _fill(fig: Any, tmp: Path, fmt: str, meta: Mapping[str, Any], dpi: float, png: bytes) -> None:
+    """Write the figure to ``tmp``: its PNG bytes ``png`` with the provenance ``meta`` added, or
+    the SVG/PDF at ``dpi`` dots per inch with ``meta`` in its metadata."""
+    if fmt == "png":
+        tmp.write_bytes(png)
+        add_png_provenance(tmp, meta)
+        return
+    text = json.dumps(dict(meta), sort_keys=True, default=str)
+    creator = f"{meta.get('software', 'fem_racket')} {meta.get('version', '')}".strip()
+    if fmt == "svg":
+        fig.savefig(tmp, dpi=dpi, format="svg", metadata={"Creator": creator, "Description": text})
+    else:
+        fig.savefig(tmp, dpi=dpi, format="pdf", metadata={"Creator": creator, "Subject": text})
 
 
 def save_map_png(fig: Any, tmp: Path, parameters: Mapping[str, Any] | None) -> None:

@@ -36,6 +36,7 @@ from fem_racket.validation import InputError
 __all__ = [
     "MAP_SUFFIXES",
     "check_map_outputs",
+    "fill_maps",
     "map_dataset",
     "map_figure",
     "map_targets",
@@ -230,17 +231,19 @@ def _write_csv(
     side.write_text(json.dumps(meta, indent=2, default=str) + "\n", encoding="utf-8")
 
 
-def map_targets(paths: Sequence[str | os.PathLike]) -> list[Target]:
-    """Every file writing ``paths`` makes (a CSV's sidecar too), suffixes checked."""
+def map_targets(paths: Sequence[str | os.PathLike], name: str = "out") -> list[Target]:
+    """Every file writing ``paths`` makes (a CSV's sidecar too), suffixes checked; ``name`` the
+    option that named them, for the refusals of :func:`~fem_racket.outputs.check_targets`."""
     targets = []
     for path in map(Path, paths):
         if path.suffix.lower() not in MAP_SUFFIXES:
             raise InputError(
-                f"output = '{path}' is not allowed: must end in {', '.join(MAP_SUFFIXES)}"
+                f"{'output' if name == 'out' else name} = '{path}' is not allowed: must end in "
+                f"{', '.join(MAP_SUFFIXES)}"
             )
-        targets.append(Target(path))
+        targets.append(Target(path, name=name))
         if path.suffix.lower() == ".csv":
-            targets.append(Target(sidecar_path(path)))
+            targets.append(Target(sidecar_path(path), name=name))
     return targets
 
 
@@ -260,13 +263,25 @@ def write_maps(
     all of them or, on any fault, none (:func:`fem_racket.outputs.atomic_outputs`)."""
     targets = map_targets(paths)
     with atomic_outputs(targets, overwrite=overwrite) as temps:
-        pending = iter(zip(targets, temps, strict=True))
-        for t, tmp in pending:
-            suffix = t.path.suffix.lower()
-            if suffix == ".png":
-                save_map_png(map_figure(maps), tmp, parameters)
-            elif suffix == ".csv":
-                _write_csv(maps, tmp, next(pending)[1], parameters)
-            else:
-                map_dataset(maps, parameters).to_netcdf(tmp)
+        fill_maps(maps, targets, temps, parameters)
     return [Path(p) for p in paths]
+
+
+def fill_maps(
+    maps: Sequence[RacketMap],
+    targets: Sequence[Target],
+    temps: Sequence[Path],
+    parameters: Mapping[str, Any] | None = None,
+) -> None:
+    """Write the maps into the temporaries ``temps`` of ``targets`` (:func:`map_targets`: a
+    CSV followed by its sidecar), inside an :func:`~fem_racket.outputs.atomic_outputs` block
+    that may hold other outputs of the same set."""
+    pending = iter(zip(targets, temps, strict=True))
+    for t, tmp in pending:
+        suffix = t.path.suffix.lower()
+        if suffix == ".png":
+            save_map_png(map_figure(maps), tmp, parameters)
+        elif suffix == ".csv":
+            _write_csv(maps, tmp, next(pending)[1], parameters)
+        else:
+            map_dataset(maps, parameters).to_netcdf(tmp)

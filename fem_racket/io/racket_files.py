@@ -1,28 +1,25 @@
 """A racket made from catalogue numbers, written as a mesh file with its JSON sidecar: the work of
-``fem-racket fit`` (:func:`fit_files`) and ``fem-racket customise`` (:func:`customise_files`),
-shared by the commands and the run file's methods (:mod:`fem_racket.io.config_racket`) so that
-both compute and write the same files.
+``fem-racket fit`` (:func:`fit_files`), shared by the command and the run file's method
+(:mod:`fem_racket.io.config_racket`) so that both compute and write the same files; the mesh
+files of ``fem-racket customise`` too (:mod:`fem_racket.io.customise_files`).
 """
 
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2
 from fem_racket.outputs import json_ready, provenance
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "FIT_OUTPUT",
-    "CustomisedRacket",
     "FitSpec",
     "FittedRacket",
-    "customise_files",
-    "customise_racket",
     "fit_files",
     "fit_frame",
     "mesh_files",
@@ -133,7 +130,7 @@ def fit_frame(spec: FitSpec) -> FittedRacket:
                        elements=spec.elements)  # fmt: skip
     if spec.torsion_frequency is not None and spec.twist_weight is None:
         raise InputError(
-            f"torsion_frequency = {spec.torsion_frequency!r} Hz is not allowed without "
+            f"torsion_frequency = {show(spec.torsion_frequency)} Hz is not allowed without "
             "--twist-weight: the torsion profile is scaled to a twistweight"
         )
     if spec.twist_weight is not None:
@@ -168,104 +165,3 @@ def fit_files(
     text = json.dumps(json_ready({**meta, **summary}), indent=2, default=str)
     write_mesh_files(fitted.mesh, out, text + "\n", overwrite=overwrite)
     return fitted, summary
-
-
-@dataclass(frozen=True)
-class CustomisedRacket:
-    """Everything ``fem-racket customise`` reports: the least lead and the racket's maps.
-
-    Attributes
-    ----------
-    customisation : Customisation
-        Of :func:`fem_racket.studies.customise.customise`: the lead per place [kg], the
-        customised mesh, the catalogue numbers before and after.
-    maps : tuple of RacketMap
-        The frame ``before`` and ``customised``: apparent COR and ball speed along it, with
-        their sweet spots [x/L] (:func:`fem_racket.studies.racket_map.racket_map`).
-    targets : mapping
-        Spec name -> Target (SI) the lead meets.
-    """
-
-    customisation: Any
-    maps: tuple[Any, Any]
-    targets: Mapping[str, Any]
-
-    @property
-    def mesh(self) -> Any:
-        """The customised frame (a FrameMesh)."""
-        return self.customisation.mesh
-
-    @property
-    def added(self) -> dict[str, float]:
-        """Place -> added mass [kg]."""
-        return self.customisation.added
-
-    @property
-    def before(self) -> Any:
-        """Catalogue numbers before (SI)."""
-        return self.customisation.before
-
-    @property
-    def after(self) -> Any:
-        """Catalogue numbers after (SI)."""
-        return self.customisation.after
-
-    @property
-    def total(self) -> float:
-        """Total added mass [kg]."""
-        return self.customisation.total
-
-    def summary(self) -> dict[str, Any]:
-        """The object ``fem-racket customise --json`` prints, less the paths it wrote: the
-        placement [g], the catalogue numbers before and after, the targets and each map's
-        summary (sweet spots [x/L], no curves)."""
-        from fem_racket.studies.target_values import target_summary
-
-        summary = self.customisation.summary()
-        summary["targets"] = target_summary(self.targets)
-        summary["maps"] = {m.name: m.summary(curves=False) for m in self.maps}
-        return summary
-
-
-def customise_racket(
-    mesh: Any, targets: Mapping[str, Any], places: Sequence[str], play: Mapping[str, Any]
-) -> CustomisedRacket:
-    """Solve the least lead (:func:`fem_racket.studies.customise.customise`) bringing ``mesh``
-    (a FrameMesh) to ``targets`` (spec name -> Target, SI) with lead at ``places``, and map the
-    racket before and after (``play``: the maps' ``speed`` [m/s], ``racket_speed`` [m/s],
-    ``reference`` [x/L] and ``pivot`` [m])."""
-    from fem_racket.studies.customise import customise
-    from fem_racket.studies.racket_map import racket_map
-
-    result = customise(mesh, targets, places)
-    maps = tuple(
-        racket_map(m, name=name, **play)
-        for name, m in (("before", mesh), ("customised", result.mesh))
-    )
-    return CustomisedRacket(result, maps, dict(targets))
-
-
-def customise_files(
-    mesh: Any,
-    targets: Mapping[str, Any],
-    places: Sequence[str],
-    play: Mapping[str, Any],
-    files: tuple[Path, Path],
-    parameters: Mapping[str, Any],
-    overwrite: bool = False,
-) -> tuple[CustomisedRacket, dict[str, Any]]:
-    """Customise and map the racket (:func:`customise_racket`), write the customised mesh with
-    its sidecar to ``files[0]`` and the maps to ``files[1]`` (``parameters`` in their
-    provenance); the CustomisedRacket and the summary (placement, specs, targets, maps, the
-    paths written)."""
-    from fem_racket.io.map_files import write_maps
-
-    out, maps_path = files
-    report = customise_racket(mesh, targets, places, play)
-    summary = report.summary()
-    summary["mesh"], summary["maps_file"] = str(out), str(maps_path)
-    meta = provenance(dict(parameters))
-    text = json.dumps({**meta, **summary}, indent=2, default=str)
-    write_mesh_files(report.mesh, out, text + "\n", overwrite=overwrite)
-    write_maps(list(report.maps), [maps_path], overwrite=overwrite, parameters=parameters)
-    return report, summary

@@ -5,8 +5,11 @@ frames, EI factors, impact points, speeds, ball masses, the paper's K_CB and zet
 parameters, swings) that the sweep's solver solves
 (:meth:`fem_racket.impact.solvers.Solver.solve_many`): the exact solver by the batched engine
 to the sweep's COR tolerance, the general solver by one integrator call over the chunk, the
-ODE solvers case by case with 1 us output steps (the peak force the largest over them). The
-study chooses no method: the solver does.
+ODE solvers case by case with 1 us output steps (the peak force the largest over them). A
+solver that takes the chunk's cases one by one but not as a batch (the general solver under
+the paper's law, as simulate's) solves each as its own problem (:func:`solve_cases`). The
+study chooses no method: the solver does, and refuses what simulate's refuses
+(:func:`check_first_case`).
 
 Each process (the caller, a pool worker or a Dask worker) keeps the assembled frame and its
 free-free modes per mesh (``FrameModel``); EI changes that scale every segment are the batch's
@@ -27,7 +30,8 @@ import numpy as np
 
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import PAPER_EI1, standard_frame
-from fem_racket.impact.problem_batch import ProblemBatch
+from fem_racket.impact.batch_solve import each_batch
+from fem_racket.impact.problem_batch import BatchOutcome, ProblemBatch
 from fem_racket.impact.solvers import Solver, make_solver
 from fem_racket.studies.grid import LAW_PARAMETERS, SweepSpec
 from fem_racket.studies.law_cases import case_swings
@@ -40,6 +44,7 @@ from fem_racket.studies.sweep_physics import (
     given,
     regime_code,
 )
+from fem_racket.validation import InputError
 
 __all__ = [
     "ALL_VARIABLES",
@@ -47,9 +52,11 @@ __all__ = [
     "COLUMNS",
     "MODES_COLUMN",
     "VARIABLES",
+    "check_first_case",
     "clear_caches",
     "result_variables",
     "run_chunk",
+    "solve_cases",
 ]
 
 
@@ -195,12 +202,35 @@ def chunk_problems(spec: SweepSpec, chunk: np.ndarray) -> ProblemBatch:
 def sweep_solver(spec: SweepSpec) -> Solver:
     """The solver of a sweep, made with the options the sweep was given
     (:meth:`SweepSpec.solver_options`): it takes and refuses them as simulate's does. The ODE
-    solvers on the paper's law also give the peak force over 1 us output times; under another
+    solvers on the paper's law also give the peak force over 1 us output times, as they give
+    an oblique ball's tangential contact the normal impact's histories at them; under another
     law (or on a string bed) no histories."""
     options = spec.solver_options()
     if spec.solver in ("cvode", "bdf") and not given(spec.values, STRING_AXES):
-        options["output_step"] = BDF_OUTPUT_STEP if spec.law is None else None
+        histories = spec.law is None or given(spec.values, OBLIQUE_AXES)
+        options["output_step"] = BDF_OUTPUT_STEP if histories else None
     return make_solver(spec.solver, **options)
+
+
+def check_first_case(spec: SweepSpec) -> None:
+    """Refuse, before any work and in simulate's line, what the sweep's solver refuses of its
+    cases: the first case as its problem (the problem's own checks), then by the solver
+    (:meth:`~fem_racket.impact.solvers.Solver.check`), as simulate checks an impact; the
+    grid's checks (:meth:`SweepSpec.build`) hold the other cases to the same."""
+    sweep_solver(spec).check(chunk_problems(spec, np.zeros(1, dtype=np.int64)).problem(0))
+
+
+def solve_cases(solver: Solver, batch: ProblemBatch) -> BatchOutcome:
+    """The outcome of ``batch`` by ``solver``: the batch whole where the solver takes it as one
+    (:meth:`~fem_racket.impact.solvers.Solver.check_batch`), else each case as its own problem,
+    checked and solved as simulate's (:func:`~fem_racket.impact.batch_solve.each_batch`: the
+    general solver takes a batch only under a law other than the paper's, a problem under any
+    law)."""
+    try:
+        solver.check_batch(batch)
+    except InputError:  # the batch is refused, not its cases: each_batch checks every case
+        return each_batch(solver, batch)  # and raises what the solver refuses of one
+    return solver.solve_many(batch)
 
 
 def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
@@ -212,7 +242,7 @@ def run_chunk(chunk: np.ndarray, *, spec: SweepSpec) -> np.ndarray:
     gets NaN in every variable (the sweep reports how many); any other error stops the sweep.
     """
     chunk = np.asarray(chunk)
-    outcome = sweep_solver(spec).solve_many(chunk_problems(spec, chunk))
+    outcome = solve_cases(sweep_solver(spec), chunk_problems(spec, chunk))
     out = np.full((chunk.size, len(COLUMNS)), np.nan)
     base = outcome.columns()
     out[:, : len(VARIABLES)] = base[:, :-1]

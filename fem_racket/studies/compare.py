@@ -42,9 +42,10 @@ from fem_racket.impact.simulate import simulate
 from fem_racket.studies.face_map import FaceMap, face_map
 from fem_racket.studies.map_options import MapPlay, check_at_rest
 from fem_racket.studies.racket_map import RacketMap, racket_map
+from fem_racket.studies.swing_points import check_swing_points
 from fem_racket.validation import InputError, check_choice, check_range
 
-__all__ = ["Play", "Report", "Setup", "compare", "differences", "unique_names"]
+__all__ = ["Play", "Report", "Setup", "check_compare", "compare", "differences", "unique_names"]
 
 
 @dataclass(frozen=True)
@@ -200,11 +201,22 @@ def unique_names(names: Sequence[str]) -> list[str]:
     return out
 
 
-def compare(setups: Sequence[Setup], play: Play | None = None) -> list[Report]:
-    """One :class:`Report` per set-up, all played alike (at least two set-ups)."""
+def check_compare(setups: Sequence[Setup], play: Play) -> None:
+    """Refuse, before any work, what :func:`compare` cannot play: fewer than two set-ups, or a
+    swing the library refuses at one of a set-up's impact points, the maps' or
+    ``play.position``, as one impact refuses it
+    (:func:`fem_racket.studies.swing_points.check_swing_points`)."""
     if len(setups) < 2:
         raise InputError(f"rackets = {len(setups)} is not allowed: compare needs at least 2")
+    for s in setups:
+        check_swing_points(s.mesh(), play, s.contact(), [play.position])
+
+
+def compare(setups: Sequence[Setup], play: Play | None = None) -> list[Report]:
+    """One :class:`Report` per set-up, all played alike (at least two set-ups; checked first by
+    :func:`check_compare`)."""
     play = play or Play()
+    check_compare(setups, play)
     return [report(s, play) for s in setups]
 
 

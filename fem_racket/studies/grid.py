@@ -27,11 +27,12 @@ from fem_racket.frame.segments import (
     standard_frame,
 )
 from fem_racket.impact.constants import DEFAULT_REFERENCE
-from fem_racket.impact.ode.integrators import SOLVERS, check_solver_settings
+from fem_racket.impact.ode.integrators import check_solver_settings
 from fem_racket.impact.reduction import check_tolerance
 from fem_racket.impact.settings import UNSET, SolverOptions
-from fem_racket.impact.solvers import auto_method, make_solver
+from fem_racket.impact.solvers import auto_pick, make_solver
 from fem_racket.impact.system import SEPARATION_EVENTS
+from fem_racket.strings.bed import StringBed
 from fem_racket.studies.grid_checks import (
     check_incidences,
     check_offsets,
@@ -51,7 +52,7 @@ from fem_racket.studies.grid_values import (
 from fem_racket.studies.law_axes import case_law, check_law_grid, sweep_law_values
 from fem_racket.studies.limits import check_grid_size
 from fem_racket.studies.sweep_options import SOLVING_DEFAULTS, SweepSolving
-from fem_racket.studies.sweep_physics import check_physics
+from fem_racket.studies.sweep_physics import STRING_AXES, check_physics, given
 from fem_racket.validation import (
     InputError,
     check_choice,
@@ -103,9 +104,9 @@ class SweepSpec(SweepSolving):
     solver, separation, basis, modes, rtol, atol
         As for :func:`fem_racket.simulate`.
     law : ContactLaw or None
-        A contact law other than the paper's (every case then runs the general integrator, or
-        CVODE), its parameters overridden case by case by those in ``values``
-        (:meth:`case_law`); None: the paper's linear law from ``kcb`` and ``zeta``.
+        A contact law other than the paper's (on a string bed the ball's own), its parameters
+        overridden case by case by those in ``values`` (:meth:`case_law`); None: the paper's
+        linear law from ``kcb`` and ``zeta``. ``auto`` picks as simulate's (``auto_pick``).
     tolerance : float or None
         COR tolerance of the batched engine (exact solver); None: every mode.
     peak_force : bool
@@ -158,22 +159,20 @@ class SweepSpec(SweepSolving):
                     "ei1 and ei2 are not allowed with a custom frame: use ei_factor to scale its EI"
                 )
             if isinstance(frame, FrameMesh):
-                given = raw["elements"]
-                if given is not None and (
+                cells = raw["elements"]
+                if cells is not None and (
                     np.ndim(values["elements"]) == 1 or values["elements"] != frame.n_elements
                 ):
                     raise InputError(
-                        f"elements = {show(given)} is not allowed with a mesh: it has "
+                        f"elements = {show(cells)} is not allowed with a mesh: it has "
                         f"{frame.n_elements} elements"
                     )
                 values["elements"] = frame.n_elements
-        if kwargs.get("solver", "auto") == "auto":
-            kwargs["solver"] = auto_method(kwargs.get("law") is None)
+        if kwargs.get("solver", "auto") == "auto":  # simulate's pick (no bed of a sweep stretches)
+            bed = StringBed() if given(values, STRING_AXES) else None
+            kwargs["solver"] = auto_pick(kwargs.get("law"), bed)
         spec = cls(values=values, frame=frame, ei2=ei2, given=told, **kwargs)
-        if spec.law is not None:
-            check_choice("solver", spec.solver, ("general", "cvode"))
-        else:
-            check_choice("solver", spec.solver, SOLVERS)
+        # no list of solvers: the solver refuses (make_solver, then cases.check_first_case)
         check_choice("separation", spec.separation, SEPARATION_EVENTS)
         object.__setattr__(spec, "tolerance", check_tolerance(spec.tolerance))
         make_solver(spec.solver, **spec.solver_options())  # the options simulate's solver takes
@@ -182,7 +181,7 @@ class SweepSpec(SweepSolving):
         )
         check_rigidity(spec)
         frame_length = float((frame if frame is not None else standard_frame()).length)
-        check_physics(values, spec.solver, frame_length)
+        check_physics(values, frame_length)
         check_swings(spec)
         check_incidences(spec)
         check_offsets(spec)

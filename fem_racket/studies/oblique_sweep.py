@@ -89,7 +89,7 @@ class ObliqueSweep:
 def _axis(name: str, values: Any) -> np.ndarray:
     a = np.atleast_1d(np.asarray(values, dtype=float))
     if a.ndim != 1 or a.size == 0:
-        raise InputError(f"{name} = {values!r} is not allowed: must be one or more numbers")
+        raise InputError(f"{name} = {show(values)} is not allowed: must be one or more numbers")
     return a
 
 

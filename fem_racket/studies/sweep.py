@@ -34,7 +34,7 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.segments import Frame
 from fem_racket.impact.problem_checks import named_law
 from fem_racket.outputs import atomic_output, atomic_outputs, check_output_path, sidecar_path
-from fem_racket.studies.cases import COLUMNS, VARIABLES, chunk_problems, run_chunk, sweep_solver
+from fem_racket.studies.cases import COLUMNS, VARIABLES, check_first_case, run_chunk
 from fem_racket.studies.checkpoint import Checkpoint
 from fem_racket.studies.executors import BarCounts, run_chunks
 from fem_racket.studies.grid import LAW_PARAMETERS, PARAMETERS, SweepSpec, chunks
@@ -226,7 +226,7 @@ def run_sweep(
     spec_options["law"] = named_law(law, given(grid, STRING_AXES) or None)
     spec = SweepSpec.build(frame, **grid, **spec_options)
     # the solver refuses, before any work, what it would refuse of the cases (as simulate's)
-    sweep_solver(spec).check_batch(chunk_problems(spec, np.zeros(1, dtype=np.int64)))
+    check_first_case(spec)
     output, overwrite, backend, workers = run.output, run.overwrite, run.backend, run.workers
     scheduler, chunk_size = run.scheduler, run.chunk_size  # (checked by SweepRun)
     if output is not None:

@@ -31,7 +31,6 @@ import numpy as np
 from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.incidence_idle import refuse_idle_contact
 from fem_racket.impact.problem_checks import bed_coordinates
-from fem_racket.impact.strung.solve import STRUNG_OPTIONS
 from fem_racket.strings.bed import StringBed
 from fem_racket.strings.options import MAX_STRING_TENSION_N
 from fem_racket.studies.grid_values import OBLIQUE_AXES, STRING_AXES, pattern_label
@@ -65,15 +64,13 @@ def _nonzero(values: dict[str, Any], name: str) -> bool:
     return bool(np.any(np.atleast_1d(values[name]) != 0.0))
 
 
-def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
+def check_physics(values: dict[str, Any], length: float) -> None:
     """Refuse, in one line, a string-bed or oblique axis with what it cannot combine with.
 
-    ``values``: the sweep's parameter values; ``solver``: its solver's name (one that solves
-    the strung racket, :data:`~fem_racket.impact.strung.solve.STRUNG_OPTIONS`); ``length``:
-    the racket's length [m] (the string bed's head is placed on it). The solver's options on
-    the strung racket are the solver's to refuse
-    (:func:`fem_racket.impact.strung.solve.check_strung`, asked on the sweep's first case
-    before it runs).
+    ``values``: the sweep's parameter values; ``length``: the racket's length [m] (the string
+    bed's head is placed on it). The solver and its options on the strung racket are the
+    solver's to refuse (:func:`fem_racket.impact.strung.solve.check_strung`, asked on the
+    sweep's first case before it runs: :func:`fem_racket.studies.cases.check_first_case`).
     """
     refuse_idle_contact({n: values.get(n) for n in OBLIQUE_AXES})  # as simulate's
     strings = given(values, STRING_AXES)
@@ -99,10 +96,6 @@ def check_physics(values: dict[str, Any], solver: str, length: float) -> None:
             f"racket_speed = {show(values['racket_speed'])} is not allowed {what}: {why}",
             parameter="racket_speed",
             value=values["racket_speed"],
-        )
-    if solver not in STRUNG_OPTIONS:
-        raise InputError(
-            f"solver = {solver!r} is not allowed {what}: must be one of {', '.join(STRUNG_OPTIONS)}"
         )
     if values.get("string_tension") is not None:
         for tension in np.atleast_1d(values["string_tension"]).tolist():

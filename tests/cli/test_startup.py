@@ -175,6 +175,7 @@ RUN_ONLY = (
     "fem_racket.io.config_unused",
     "fem_racket.io.mesh_files",
     "fem_racket.io.racket_files",
+    "fem_racket.io.customise_files",
     "fem_racket.frame.plausible",
 )
 RUN_ONLY_OF = {

@@ -241,7 +241,8 @@ def test_the_methods_play_with_the_commands_defaults():
     # the speed, swing and elements the methods take unless the core tables say: the parsers'
     from fem_racket.cli.commands.config import _commands
     from fem_racket.io.config_defaults import FRAME_ELEMENTS, PLAY_DEFAULTS
-    from fem_racket.io.config_racket import CUSTOMISE_MAPS
+    from fem_racket.io.config_racket import CUSTOMISE_OPTIONS
+    from fem_racket.io.customise_files import CUSTOMISE_OUTPUT, customise_maps
 
     commands = _commands()
     for command in ("customise", "compare", "modes"):
@@ -249,8 +250,12 @@ def test_the_methods_play_with_the_commands_defaults():
         assert cli["elements"] == FRAME_ELEMENTS, command
         if command != "modes":
             assert {k: cli[k] for k in PLAY_DEFAULTS} == PLAY_DEFAULTS, command
+    # the maps: beside the mesh unless named, in the command and the method alike
     maps = next(a for a in commands["customise"]._actions if a.dest == "maps")
-    assert maps.default == CUSTOMISE_MAPS
+    out = next(a for a in commands["customise"]._actions if a.dest == "out")
+    assert maps.default is None and CUSTOMISE_OPTIONS["maps"][0] is None
+    assert Path(out.default) == CUSTOMISE_OUTPUT
+    assert customise_maps(CUSTOMISE_OUTPUT) == Path("output") / "customised_map.png"
 
 
 @pytest.mark.parametrize(

@@ -8,7 +8,9 @@ standard+12:10 --out cmp.png cmp.nc
 A set-up is read by :mod:`fem_racket.io.setups`; ``--add-mass`` adds lead to every one. Prints a
 table (or ``--json``: ``rackets`` with each one's values, ``differences`` with each later one
 minus the first) and writes the one-page figure (.png, .svg, .pdf) and/or netCDF of the maps
-(.nc).
+(.nc), as one set. At the default ``--out`` an earlier compare's figure is replaced; anything
+else only with ``--overwrite``. A swing's closing speed is the library's to check, at the impact
+points (:func:`fem_racket.studies.compare.check_compare`).
 """
 
 from __future__ import annotations
@@ -25,9 +27,10 @@ from fem_racket.cli.common import (
     print_written,
     run_parameters,
 )
-from fem_racket.cli.options.impact import check_swing_options
+from fem_racket.cli.options.impact import check_swing_options, racket_speed_named
 from fem_racket.cli.options.lead import add_lead_option, leads_of
 from fem_racket.cli.options.output import add_overwrite_json
+from fem_racket.cli.options.rerun import replace_own
 
 #: Where the figure goes unless --out is given.
 DEFAULT_OUTPUT = Path("output") / "compare.png"
@@ -83,17 +86,19 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         nargs="+",
         default=None,
         metavar="FILE",
-        help=f"file(s): a figure .png/.svg/.pdf and/or maps .nc (default {DEFAULT_OUTPUT})",
+        help=f"file(s): a figure .png/.svg/.pdf and/or maps .nc (default {DEFAULT_OUTPUT}, "
+        "replacing an earlier compare's figure there)",
     )
     add_overwrite_json(o, "a JSON object")
     add_config_option(p, private=("out",), requires=("rackets",))
 
 
+@racket_speed_named  # a swing's closing speed: the library's check, named as the option
 def run(args: argparse.Namespace) -> int:
     """Read the set-ups, compare, write the files and print."""
-    from fem_racket.io.compare_files import check_compare_output, table_rows, write_compare
+    from fem_racket.io.compare_files import check_compare_outputs, table_rows, write_compare
     from fem_racket.io.setups import compare_play, read_setups
-    from fem_racket.studies.compare import compare, differences
+    from fem_racket.studies.compare import check_compare, compare, differences
     from fem_racket.studies.grid_values import value_count
     from fem_racket.studies.map_options import check_map_points
     from fem_racket.validation import InputError, work_begins
@@ -101,23 +106,23 @@ def run(args: argparse.Namespace) -> int:
     if len(args.rackets) < 2:
         work_begins()  # a run file cannot name the rackets: its checks end here
         raise InputError(f"rackets = {len(args.rackets)} given is not allowed: need at least 2")
-    check_swing_options(args)  # compare shows no centre of percussion: --pivot needs a swing
+    # compare shows no centre of percussion: --pivot needs a swing; the closing speed is the
+    # library's to check, at the impact points
+    check_swing_options(args, at_reference=False)
     check_map_points(
         value_count(args.positions), 1 if args.offsets is None else value_count(args.offsets)
     )
     outs = [Path(p) for p in (args.out or [DEFAULT_OUTPUT])]
-    for path in outs:
-        check_compare_output(path, overwrite=args.overwrite)
+    overwrite = replace_own(args, outs == [DEFAULT_OUTPUT], outs)
+    check_compare_outputs(outs, overwrite=overwrite)
     setups = read_setups(args.rackets, elements=args.elements, leads=leads_of(args))
     names = [s.name for s in setups]
     play = compare_play(vars(args))
+    check_compare(setups, play)  # a swing at the impact points: the library's check
     work_begins()
     reports = compare(setups, play)
     diffs = differences(reports)
-    for path in outs:
-        write_compare(
-            reports, diffs, path, overwrite=args.overwrite, parameters=run_parameters(args)
-        )
+    write_compare(reports, diffs, outs, overwrite=overwrite, parameters=run_parameters(args))
     if args.json:
         arrays = ("curve", "face")
         scalar = {

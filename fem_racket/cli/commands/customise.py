@@ -7,8 +7,11 @@ custom.vtu
 
 The least total mass meeting every target is solved by :mod:`fem_racket.studies.customise`; the
 mesh file gets a ``.json`` sidecar, the maps of e_A and v_out before and after go to ``--maps``
-(.png, .nc or .csv) and the placement is printed; unreachable targets are refused with the range
-the places can reach.
+(.png, .nc or .csv; beside the mesh unless given, :mod:`fem_racket.io.customise_files`), all
+written as one set, and the placement is printed; unreachable targets are refused with the range
+the places can reach. At the default ``--out`` (maps beside it) an earlier customise's files are
+replaced; anything else only with ``--overwrite``. A swing's closing speed is the library's to
+check, at the maps' impact points (:func:`fem_racket.studies.swing_points.check_swing_points`).
 """
 
 from __future__ import annotations
@@ -26,19 +29,18 @@ from fem_racket.cli.common import (
     print_written,
     run_parameters,
     significant,
-    swing_kwargs,
 )
+from fem_racket.cli.options.impact import check_swing_options, racket_speed_named
 from fem_racket.cli.options.output import add_overwrite_json
+from fem_racket.cli.options.rerun import replace_own
 from fem_racket.cli.options.targets import (
     add_target_options,
     places_of,
     targets_from_args,
 )
-from fem_racket.io.constants import CUSTOMISE_MAPS
 
-#: Where the mesh and the maps go unless --out / --maps are given.
+#: Where the mesh goes unless --out is given (the maps beside it unless --maps is given).
 DEFAULT_OUTPUT = Path("output") / "customised.vtu"
-DEFAULT_MAPS = Path(CUSTOMISE_MAPS)
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -53,41 +55,46 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "--out",
         default=str(DEFAULT_OUTPUT),
         metavar="FILE",
-        help=f"customised racket's mesh file (default {DEFAULT_OUTPUT}); summary in FILE.json",
+        help=f"customised racket's mesh file (default {DEFAULT_OUTPUT}, replacing an earlier "
+        "customise's files there); summary in FILE.json",
     )
     o.add_argument(
         "--maps",
-        default=str(DEFAULT_MAPS),
+        default=None,
         metavar="FILE",
-        help=f"maps before and after: .png, .nc or .csv (default {DEFAULT_MAPS})",
+        help="maps before and after: .png, .nc or .csv (default beside --out: its name less "
+        "the suffix, then _map.png)",
     )
     add_overwrite_json(o)
     add_config_option(p, private=("out",), requires=("a target: swing_weight, balance, mass",))
 
 
+@racket_speed_named  # a swing's closing speed: the library's check, named as the option
 def run(args: argparse.Namespace) -> int:
     """Solve, write the mesh, its sidecar and the maps, print the placement."""
     from fem_racket.frame.catalogue import catalogue
     from fem_racket.frame.mesh import FrameMesh, frame_mesh
-    from fem_racket.io.map_files import check_map_outputs, map_targets
-    from fem_racket.io.racket_files import customise_files, mesh_files
-    from fem_racket.outputs import check_output_path
+    from fem_racket.io.customise_files import customise_files, customise_targets
+    from fem_racket.outputs import check_targets
+    from fem_racket.studies.map_options import MapPlay
+    from fem_racket.studies.swing_points import check_swing_points
     from fem_racket.validation import work_begins
 
     places = places_of(args)
-    out, maps_path = Path(args.out), Path(args.maps)
-    files = mesh_files(out)
-    for f in files:
-        check_output_path(f, overwrite=args.overwrite)
-    check_map_outputs([maps_path], overwrite=args.overwrite)
-    map_files = [t.path for t in map_targets([maps_path])]
+    files = customise_targets(args.out, args.maps)
+    default = Path(args.out) == DEFAULT_OUTPUT and args.maps is None
+    overwrite = replace_own(args, default, [t.path for t in files])
+    check_targets(files, overwrite=overwrite)
     frame = frame_from_args(args)
     mesh = frame if isinstance(frame, FrameMesh) else frame_mesh(frame, args.elements)
     targets = targets_from_args(args, catalogue(mesh, f1=False))
-    play = {"speed": args.speed, **swing_kwargs(args)}  # its checks before work (config --check)
+    # the swing's checks before work (config --check); its closing speed at the maps' points
+    check_swing_options(args, pivot_at_rest=True, at_reference=False)
+    play = {k: getattr(args, k) for k in ("speed", "racket_speed", "reference", "pivot")}
+    check_swing_points(mesh, MapPlay(**play))
     work_begins()
-    files_out, parameters = (out, maps_path), run_parameters(args)
-    _, summary = customise_files(mesh, targets, places, play, files_out, parameters, args.overwrite)
+    parameters = run_parameters(args)
+    _, summary = customise_files(mesh, targets, places, play, files, parameters, overwrite)
     if args.json:
         print_json(summary)
         return 0
@@ -103,5 +110,5 @@ def run(args: argparse.Namespace) -> int:
         spots = summary["maps"][name]
         best = significant(spots["max_apparent_cor_x_over_l"], 4)
         print(f"{'max e_A ' + name:<24} {best:>12} x/L")
-    print_written([*files, *map_files])
+    print_written([t.path for t in files])
     return 0

@@ -8,20 +8,14 @@ the stretch's direction and rho = mu F / k_t its length::
 
     s' = -mu F A d,   phi' = (s . d_perp) / rho,   d_perp = (-sin phi, cos phi)
 
-integrated by an explicit Runge-Kutta method of order 8 (scipy's DOP853, rtol 1e-13) until the
-slider stops (s . d = rho', an event located by the integrator, with the history's continuous
-``slope`` F') or the normal force returns to zero. A rigid tangential contact (eta^2 = 0)
-slides along the slip itself (d = s / |s|), written in polar form (|s|' = -mu F d.A d, the
-angle turning at -mu F d_perp.A d / |s|) until |s| = 0; the ball then rolls with no force.
-
-The stretch turns toward the slip at the rate |s_perp| / rho, fast where the normal force is
-small: below FLOOR of its largest value rho is held at that floor (the force there, under
-1e-6 of its peak, acts for ~1e-6 of the contact: an impulse error ~1e-12).
+integrated by :func:`fem_racket.impact.tangential.slide.integrate_slide` (DOP853, or Radau where
+the slide is stiff, at rtol 1e-13) until the slider stops (s . d = rho') or the normal force
+returns to zero. A rigid tangential contact (eta^2 = 0) slides along the slip itself
+(d = s / |s|) until |s| = 0; the ball then rolls with no force.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -35,15 +29,9 @@ from fem_racket.impact.tangential.march import (
     check_chattering,
 )
 from fem_racket.impact.tangential.normal import NormalHistory
-from fem_racket.impact.tangential.scalar import scalar_force
+from fem_racket.impact.tangential.slide import integrate_slide
 
 __all__ = ["PlaneContact", "PlanePhase", "PlaneSolution", "march_vector"]
-
-#: Relative tolerance of the slides' integration.
-RTOL = 1e-13
-METHOD = "DOP853"
-#: The stretch length below which the slide turns no faster, over its largest mu F / k_t.
-FLOOR = 1e-6
 
 
 @dataclass(frozen=True, eq=False)
@@ -181,57 +169,6 @@ def _start(c: PlaneContact, normal: NormalHistory, s0: np.ndarray) -> PlanePhase
     return PlanePhase("grip", 0.0, normal.end, s0, zero)
 
 
-def _integrate(c: PlaneContact, normal: NormalHistory, t0: float, slip, direction):
-    """Integrate a slide from ``t0``; (end time, dense solution, stopped by the slider)."""
-    from scipy.integrate import solve_ivp
-
-    mu, k, a = c.friction, c.stiffness, c.compliance
-    force, slope = scalar_force(normal)
-    (a00, a01), (a10, a11) = a.tolist()
-    phi0 = math.atan2(direction[1], direction[0])
-    scale = max(float(np.linalg.norm(slip)), 1e-300)
-    if c.rigid:
-
-        def rhs(t, y):
-            cos, sin = math.cos(y[1]), math.sin(y[1])
-            f = mu * max(force(t), 0.0)
-            ad = (a00 * cos + a01 * sin, a10 * cos + a11 * sin)
-            turn = -sin * ad[0] + cos * ad[1]
-            return [-f * (cos * ad[0] + sin * ad[1]), -f * turn / max(y[0], 1e-9 * scale)]
-
-        def stop(t, y):
-            return y[0]
-
-        y0, atol = [scale, phi0], [1e-14 * scale, 1e-12]
-    else:
-        floor = FLOOR * mu * max(float(np.max(normal.smooth_force(normal.grid))), 0.0) / k
-
-        def rhs(t, y):
-            cos, sin = math.cos(y[2]), math.sin(y[2])
-            f = mu * max(force(t), 0.0)
-            rho = max(f / k, floor)
-            return [
-                -f * (a00 * cos + a01 * sin),
-                -f * (a10 * cos + a11 * sin),
-                (-y[0] * sin + y[1] * cos) / rho,
-            ]
-
-        def stop(t, y):
-            return y[0] * math.cos(y[2]) + y[1] * math.sin(y[2]) - mu * slope(t) / k
-
-        y0, atol = [slip[0], slip[1], phi0], [1e-14 * scale, 1e-14 * scale, 1e-12]
-    stop.terminal, stop.direction = True, -1
-    sol = solve_ivp(
-        rhs, (t0, normal.end), y0, method=METHOD, rtol=RTOL, atol=atol, dense_output=True,
-        events=stop,
-    )  # fmt: skip
-    if sol.status < 0:
-        raise RuntimeError(f"the tangential slide's integration failed: {sol.message}")
-    hit = sol.status == 1 and sol.t_events[0].size > 0
-    end = float(sol.t_events[0][0]) if hit else normal.end
-    return end, sol.sol, hit
-
-
 def march_vector(c: PlaneContact, normal: NormalHistory, slip: np.ndarray) -> PlaneSolution:
     """March the vector contact from slip ``slip`` [m/s] (shape (2,)) and an unstretched
     spring (module docstring)."""
@@ -254,7 +191,7 @@ def march_vector(c: PlaneContact, normal: NormalHistory, slip: np.ndarray) -> Pl
             nxt = PlanePhase("slide", t1, normal.end, s1, u1 / np.linalg.norm(u1))
             phases[-1] = PlanePhase(p.kind, p.start, t1, p.slip, p.stretch)
         else:
-            t1, ode, hit = _integrate(c, normal, p.start, p.slip, p.stretch)
+            t1, ode, hit = integrate_slide(c, normal, p.start, p.slip, p.stretch)
             phases[-1] = PlanePhase(p.kind, p.start, t1, p.slip, p.stretch, ode)
             if not hit or t1 >= normal.end:
                 break
