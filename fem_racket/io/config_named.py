@@ -9,7 +9,10 @@ refused (``parameter`` and ``value`` of :class:`~fem_racket.validation.InputErro
 library's checks); the parameter is the file's key when its name is the key's argparse dest
 (spaces for underscores: ``string tension`` is ``string_tension``, set by ``strings.tension_n``)
 or one of :data:`ALIASES`, and the refused value is the file's number (or its grid of numbers:
-a map's ``positions``, as the command parsed it).
+a map's ``positions``, as the command parsed it). A command table's grid (:data:`GRIDS`) is
+read by one parser, :func:`grid_value`, for the command (``--config``) and for
+:meth:`~fem_racket.io.config.RunConfig.map` alike: a number, an array of numbers or a string as
+the command line takes it, refused while parsed by its key too.
 """
 
 from __future__ import annotations
@@ -21,7 +24,7 @@ from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from typing import Any
 
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "ALIASES",
@@ -29,6 +32,7 @@ __all__ = [
     "command_keys",
     "core_keys_named",
     "file_keys",
+    "grid_value",
     "keys_named",
     "named_by_key",
     "named_by_table",
@@ -44,6 +48,38 @@ ALIASES = {
     "shock_window": "hand_shock_window",
     "racket_speed_at_the_impact_point": "racket_speed",
 }
+
+
+def grid_value(where: str, value: Any) -> Any:
+    """A command table's grid (``map.positions``, ``map.offsets``: :data:`GRIDS`) from a run
+    file, as it is: a number, an array of numbers or a string as on the command line
+    (``'0.5:1.0:200'``, ``'0.6,0.7'``), counted before any array is made (at most
+    :data:`~fem_racket.studies.map_options.MAX_MAP_POINTS`); its values are checked where the
+    command and :meth:`~fem_racket.io.config.RunConfig.map` parse it, a refusal named by its key
+    (:func:`named_by_table`). The ``convert`` of the command's ``--config``
+    (:func:`fem_racket.cli.options.runfile.add_config_option`): one reading for both."""
+    from fem_racket.studies.grid_values import value_count
+    from fem_racket.studies.map_options import MAX_MAP_POINTS
+
+    array = isinstance(value, list) and all(
+        isinstance(v, numbers.Real) and not isinstance(v, bool) for v in value
+    )
+    if isinstance(value, bool) or not (isinstance(value, (int, float, str)) or array):
+        raise InputError(
+            f"{where} = {show(value)} is not allowed: must be a number, an array of numbers or "
+            "a string like '0.5:1.0:200'",
+            parameter=where,
+            value=value,
+        )
+    count = value_count(value)
+    if count > MAX_MAP_POINTS:
+        raise InputError(
+            f"{where} = {count} values is not allowed: a map takes at most {MAX_MAP_POINTS} "
+            "points (positions x offsets)",
+            parameter=where,
+            value=count,
+        )
+    return value
 
 
 def file_keys(values: Mapping[str, Mapping[str, Any]]) -> dict[str, str]:
@@ -124,7 +160,8 @@ def named_by_table(
     """:func:`named_by_key` for the values of a command's own table (``run.toml:
     map.positions = 3 values is not allowed ...``): ``keys`` dest -> dotted key, ``values``
     dest -> the value as the file gives it; a grid (:data:`GRIDS`) parsed as the command
-    parses it (a grid its parsing refuses is not the library's value: not named)."""
+    parses it: its parsing's own refusal (``position = 'a,b' is not allowed ...``, or a value of
+    it out of range) is named by the grid's key too."""
     from fem_racket.studies.grid_values import as_values
 
     keys, values = dict(keys), dict(values)
@@ -132,7 +169,9 @@ def named_by_table(
         if dest in keys:
             try:
                 values[dest] = as_values(name, values[dest])
-            except InputError:
+            except InputError as parse:  # the refusal itself, or not this grid's
+                if str(parse) == str(exc):
+                    return parse.named(keys[dest], "" if source is None else f"{source}: ")
                 del keys[dest]
     return named_by_key(exc, keys, values, source)
 

@@ -19,7 +19,7 @@ from fem_racket.contact.linear import DEFAULT_BALL_MASS
 from fem_racket.frame.model import DEFAULT_MODES
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.io.config_keys import PRESETS, reject_unknown
-from fem_racket.io.config_named import named_by_table
+from fem_racket.io.config_named import GRIDS, grid_value, named_by_table
 from fem_racket.io.config_run_keys import RUN_KEYS, run_keys
 from fem_racket.studies.refine import DEFAULT_ELEMENTS, DEFAULT_GRADING, DEFAULT_POSITIONS
 from fem_racket.validation import InputError, show
@@ -196,6 +196,12 @@ def map_file(cfg: RunConfig) -> list[Any]:
     a FaceMap with ``offsets``, a SpinMap with an oblique ball (:data:`OBLIQUE_KEYS`; the grids of
     :mod:`fem_racket.cli.options.faces` unless given)."""
     o = _options(cfg, "map", MAP_DEFAULTS)
+    for key in GRIDS:  # the file's grids read as the command reads them (its convert)
+        if key in cfg.table("map"):
+            try:
+                grid_value(f"map.{key}", o[key])
+            except InputError as exc:
+                raise InputError(f"{cfg.source}: {exc}", value=exc.value) from None
     try:
         return _maps(cfg, o)
     except InputError as exc:  # a [map] value the library refused: named by its key, as

@@ -80,6 +80,14 @@ def pattern_label(code: float) -> str:
     return f"{int(code) // 100}x{int(code) % 100}"
 
 
+def _refused(name: str, value: Any, allowed: str) -> InputError:
+    """``NAME = VALUE is not allowed: ALLOWED``, naming its parameter and value (a run file's
+    key names them: :func:`fem_racket.io.config_named.grid_value`)."""
+    return InputError(
+        f"{name} = {show(value)} is not allowed: {allowed}", parameter=name, value=value
+    )
+
+
 def _check_value(name: str, value: object, law: bool) -> float | int:
     """One value of parameter ``name`` checked; ``law``: it is a contact law's."""
     if law:
@@ -127,27 +135,19 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
         if log:
             parts = parts[:-1]
         if len(parts) != 3:
-            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}")
+            raise _refused(name, text, f"must be {form}")
         try:
             start, stop, num = float(parts[0]), float(parts[1]), float(parts[2])
         except ValueError:
-            raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
+            raise _refused(name, text, f"must be {form}") from None
         if not (num.is_integer() and 1 <= num <= MAX_CASES):
-            raise InputError(
-                f"{name} = {show(text)} is not allowed: num must be an integer from 1 to "
-                f"{MAX_CASES}"
-            )
+            raise _refused(name, text, f"num must be an integer from 1 to {MAX_CASES}")
         if not (math.isfinite(start) and math.isfinite(stop)):
-            raise InputError(f"{name} = {show(text)} is not allowed: start and stop must be finite")
+            raise _refused(name, text, "start and stop must be finite")
         if num == 1 and start != stop:  # one value cannot be both ends
-            raise InputError(
-                f"{name} = {show(text)} is not allowed: num 1 needs start = stop (or give one "
-                "number, or num >= 2)"
-            )
+            raise _refused(name, text, "num 1 needs start = stop (or give one number, or num >= 2)")
         if log and (start <= 0.0 or stop <= 0.0):
-            raise InputError(
-                f"{name} = {show(text)} is not allowed: log spacing needs start, stop > 0"
-            )
+            raise _refused(name, text, "log spacing needs start, stop > 0")
         values = (np.geomspace if log else np.linspace)(start, stop, int(num))
         if log:  # geomspace ends are exact in recent numpy; make sure
             values[0], values[-1] = start, stop
@@ -155,7 +155,7 @@ def parse_values(name: str, text: str) -> float | np.ndarray:
     try:
         numbers = [float(v) for v in text.split(",")]
     except ValueError:
-        raise InputError(f"{name} = {show(text)} is not allowed: must be {form}") from None
+        raise _refused(name, text, f"must be {form}") from None
     if len(numbers) == 1:
         return as_values(name, numbers[0])
     return as_values(name, numbers)
@@ -184,7 +184,7 @@ def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
     string (see :func:`parse_values`) or a sequence (swept; a 1-D array of distinct values)."""
     if name not in PARAMETERS and name not in LAW_PARAMETERS:
         known = ", ".join([*PARAMETERS, *LAW_PARAMETERS])
-        raise InputError(f"parameter = {show(name)} is not allowed: must be one of {known}")
+        raise _refused("parameter", name, f"must be one of {known}")
     if value is None:
         return None
     if isinstance(value, str) and not (name == "pattern" and "," not in value):
@@ -193,9 +193,9 @@ def as_values(name: str, value: Any) -> float | int | None | np.ndarray:
     if np.ndim(value) == 0:
         return _check_value(name, value, law)
     if np.ndim(value) != 1 or len(value) == 0:
-        raise InputError(f"{name} = {show(value)} is not allowed: must be a number or a 1-D list")
+        raise _refused(name, value, "must be a number or a 1-D list")
     checked = [_check_value(name, v, law) for v in value]
     arr = np.array(checked, dtype=np.int64 if name in ("elements", "pattern") else float)
     if np.unique(arr).size != arr.size:
-        raise InputError(f"{name} = {show(arr.tolist())} is not allowed: values must be distinct")
+        raise _refused(name, arr.tolist(), "values must be distinct")
     return arr

@@ -49,6 +49,14 @@ OUTPUTS = (
 #: Outputs across the face, as ``sweep``'s dataset names them (outgoing side angle [deg], side
 #: spin [rpm] and the racket's yaw rate [rad/s]), when the ball crosses the face.
 SIDE_OUTPUTS = LATERAL_EXTRA
+#: The axes of :func:`oblique_sweep` and the field of its base incidence each replaces.
+AXIS_FIELDS = {
+    "angles": "angle",
+    "spins": "spin",
+    "frictions": "friction",
+    "side_angles": "side_angle",
+    "side_spins": "side_spin",
+}
 
 
 @dataclass(frozen=True)
@@ -89,7 +97,7 @@ def oblique_sweep(
     frame: Any = None,
     *,
     angles: Any,
-    spins: Any = (0.0,),
+    spins: Any = None,
     frictions: Any = None,
     speed: float = 20.0,
     base: Incidence | None = None,
@@ -106,15 +114,17 @@ def oblique_sweep(
         The racket (as :func:`fem_racket.impact.simulate.simulate`); None with ``clamped``.
     angles : sequence of float
         Incidence angles from the face normal [deg].
-    spins : sequence of float
-        Incoming spins [rpm], positive = topspin.
+    spins : sequence of float, optional
+        Incoming spins [rpm], positive = topspin; the ``base`` incidence's (0 by default) when
+        None.
     frictions : sequence of float, optional
         Friction coefficients; the ``base`` incidence's when None.
     speed : float
         Incident ball speed [m/s].
     base : Incidence, optional
-        Ball inertia, radius, eta^2 (and friction, side angle and side spin when their axes
-        are None).
+        Ball inertia, radius, eta^2 (and spin, friction, side angle and side spin when their
+        axes are None). A value of it away from its default that an axis given replaces (its
+        angle, always: ``angles`` is the axis) is refused in one line naming both.
     clamped : bool
         A clamped head instead of the free racket.
     side_angles : sequence of float, optional
@@ -130,8 +140,10 @@ def oblique_sweep(
         (:func:`fem_racket.impact.simulate_oblique.normal_impact`).
     """
     base = Incidence() if base is None else base
+    _refuse_replaced(base, angles=angles, spins=spins, frictions=frictions,
+                     side_angles=side_angles, side_spins=side_spins)  # fmt: skip
     a = _axis("angles", angles)
-    s = _axis("spins", spins)
+    s = _axis("spins", (base.spin,) if spins is None else spins)
     f = _axis("frictions", (base.friction,) if frictions is None else frictions)
     b = _axis("side_angles", (base.side_angle,) if side_angles is None else side_angles)
     w = _axis("side_spins", (base.side_spin,) if side_spins is None else side_spins)
@@ -154,6 +166,25 @@ def oblique_sweep(
     return ObliqueSweep(a, s, f, got, *sides)
 
 
+def _refuse_replaced(base: Incidence, **axes: Any) -> None:
+    """Refuse a value of ``base`` away from its default that the axis given (not None)
+    replaces: the sweep would drop it silently."""
+    if not isinstance(base, Incidence):
+        raise InputError(f"base = {show(base)} is not allowed: must be an Incidence",
+                         parameter="base", value=base)  # fmt: skip
+    default = Incidence()
+    for axis, values in axes.items():
+        name = AXIS_FIELDS[axis]
+        value = getattr(base, name)
+        if values is not None and value != getattr(default, name):
+            raise InputError(
+                f"base.{name} = {show(value)} is not allowed with {axis} = {show(values)}: the "
+                f"axis replaces the base incidence's {name} (give one of them)",
+                parameter=f"base.{name}",
+                value=value,
+            )
+
+
 def _refuse_idle(base: Incidence, axes: dict, frictions: Any, f: np.ndarray) -> None:
     """Refuse the contact's parameters (the ``frictions`` axis given, at any value; ``base``'s
     away from their defaults) when every case is head-on and spinless (all ``axes`` 0): no
@@ -161,8 +192,7 @@ def _refuse_idle(base: Incidence, axes: dict, frictions: Any, f: np.ndarray) -> 
     as simulate and sweep refuse them)."""
     default = Incidence()
     idle = {n: getattr(base, n) for n in CONTACT_FIELDS if getattr(base, n) != getattr(default, n)}
-    if frictions is not None:  # the axis replaces the base's friction
-        idle.pop("friction", None)
+    if frictions is not None:  # the axis (the base's friction at its default: refused else)
         idle["frictions"] = f.tolist()
     refuse_idle_contact({**axes, **idle})
 

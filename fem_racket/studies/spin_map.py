@@ -47,7 +47,10 @@ __all__ = [
 #: The mapped outputs: field -> (unit, label).
 SPIN_FIELDS = {
     "spin_out_rpm": ("rpm", "outgoing spin [rpm] (+ topspin)"),
-    "angle_out_deg": ("deg", "outgoing angle from the face normal [deg]"),
+    "angle_out_deg": (
+        "deg",
+        "outgoing angle from the outward face normal [deg] (> 90: the ball keeps moving forward)",
+    ),
     "ball_speed_out_m_s": ("m/s", "outgoing ball speed [m/s]"),
 }
 #: The outputs across the face, mapped too when the ball crosses it (a side angle or side spin,
@@ -103,6 +106,14 @@ class SpinMap(FaceGrid):
             float(self.positions[hi[1]]),
             float(self.offsets[hi[0]]),
         )
+
+    def forward(self) -> tuple[int, int]:
+        """(points where the ball keeps moving forward, points on the face): the normal
+        rebound is negative there (COR < 0, near the tip and the rim of a free racket), so its
+        ``angle_out_deg`` from the outward face normal is over 90 in size (180 head-on)."""
+        angle = self.fields["angle_out_deg"]
+        face = np.isfinite(angle)
+        return int(np.count_nonzero(np.abs(angle[face]) > 90.0)), int(np.count_nonzero(face))
 
     def summary(self) -> dict[str, Any]:
         """JSON-ready, units in the keys."""

@@ -25,6 +25,7 @@ import numpy as np
 
 from fem_racket.contact.bed_ball import KAWAZOE_BALL
 from fem_racket.contact.linear import PAPER_CLAMPED_COR, zeta_from_cor
+from fem_racket.impact.exact.separation import TIME_TOL
 from fem_racket.outputs import provenance
 from fem_racket.outputs.labels import label
 from fem_racket.studies.cases import ALL_VARIABLES, MODES_COLUMN, result_variables
@@ -97,7 +98,14 @@ def spec_attributes(spec: SweepSpec) -> dict[str, Any]:
         params.update(law_attributes(spec.law, spec.values["ball_mass"]))  # to the balls struck
     else:  # its parameters: fixed ones above, swept ones are dimensions
         params["contact_law"] = spec.law.name
-    if spec.law is None and spec.solver == "exact":
+    if spec.law is None and spec.solver == "exact" and strung:  # every mode, no tolerance
+        params["tolerance"] = "all modes"
+        params["tolerances"] = (
+            "exact: closed form (the ball's spring-dashpot on the strung racket, every frame "
+            f"and string-bed mode), separation time to {TIME_TOL:g} s plus 4 eps relative; "
+            "tolerance, rtol, atol unused"
+        )
+    elif spec.law is None and spec.solver == "exact":
         params["tolerance"] = "all modes" if spec.tolerance is None else spec.tolerance
         params["tolerances"] = (
             "exact: closed form (batched engine), COR within 'tolerance' of every mode, "

@@ -127,7 +127,7 @@ CASES = [
         "map-positions",
         "map",
         '[map]\npositions = "0.5:1.5:5"\n',
-        ("position = 1.25 x/L", "[0, 1]"),
+        ("map.positions = 1.25 x/L", "[0, 1]"),  # named by its key (issue 21)
     ),
     Case(
         "map-power-fraction",

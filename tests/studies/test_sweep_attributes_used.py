@@ -14,6 +14,7 @@ from fem_racket.contact.bed_ball import kawazoe_ball
 from fem_racket.impact.simulate import simulate
 from fem_racket.strings.bed import StringBed
 from fem_racket.studies.sweep import sweep
+from fem_racket.validation import InputError
 from tests.clirun import run_json
 
 
@@ -58,3 +59,17 @@ def test_the_command_s_summary(cwd, capsys):
     out = run_json(capsys, "sweep", "--positions", "0.6,0.7", "--out", "p.csv", "--quiet")
     assert "ball_law" not in out
     assert json.loads(Path("p.csv.json").read_text())["kcb_n_m"].startswith("from the speed")
+
+
+def test_a_strung_sweep_states_its_tolerances_truly():
+    attrs = sweep(position=0.7, string_tension=246.0).attrs
+    # the strung racket's exact solution keeps every mode (the solver refuses a tolerance)
+    assert attrs["modes_kept"] == "all (string bed: every frame mode)"
+    assert attrs["tolerance"] == "all modes"
+    assert "within 'tolerance'" not in attrs["tolerances"]
+    assert "every frame and string-bed mode" in attrs["tolerances"]
+    assert "tolerance, rtol, atol unused" in attrs["tolerances"]
+    with pytest.raises(InputError, match="tolerance = 0.001 is not allowed with a string bed"):
+        sweep(position=0.7, string_tension=246.0, tolerance=1e-3)
+    plain = sweep(position=[0.6, 0.7]).attrs  # no bed: the engine's tolerance, as before
+    assert plain["tolerance"] == 1e-6 and "within 'tolerance'" in plain["tolerances"]

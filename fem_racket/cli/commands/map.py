@@ -50,6 +50,7 @@ from fem_racket.cli.options.runfile import given_options, option_name
 from fem_racket.cli.options.runfile_named import where_set
 from fem_racket.frame.constants import DEFAULT_MODES
 from fem_racket.impact.constants import DEFAULT_TOLERANCE, SEPARATION_EVENTS
+from fem_racket.io.config_named import GRIDS, grid_value
 from fem_racket.io.constants import PRESETS
 from fem_racket.studies.map_defaults import MAP_POSITIONS as DEFAULT_POSITIONS
 from fem_racket.studies.map_defaults import MAP_POWER_FRACTION as DEFAULT_POWER_FRACTION
@@ -168,7 +169,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         action="store_true",
         help="print sweet spots and curves as JSON (default: a table)",
     )
-    add_config_option(p, private=("out", "mesh"))
+    convert = dict.fromkeys(GRIDS, grid_value)  # arrays too: one parser with load_config's
+    add_config_option(p, private=("out", "mesh"), convert=convert)
 
 
 def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:

@@ -185,7 +185,10 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
         print(f"  {'spin out min':<26} {significant(lo, 4):>10} rpm at {significant(x_lo, 4)} x/L")
         print(f"  {'spin out max':<26} {significant(hi, 4):>10} rpm at {significant(x_hi, 4)} x/L,"
               f" y = {y_hi:g} m")  # fmt: skip
-        print(f"  {'angle out':<26} {significant(a_lo, 4):>10} to {significant(a_hi, 4)} deg")
+        ahead, points = m.forward()  # the convention stated where the ball goes on (COR < 0)
+        note = f" (> 90: the ball keeps moving forward, COR < 0, at {ahead} of {points} points)"
+        print(f"  {'angle out':<26} {significant(a_lo, 4):>10} to {significant(a_hi, 4)} deg"
+              f"{note if ahead else ''}")  # fmt: skip
         for key, label, unit in _SIDE_ROWS if inc.lateral else ():
             lo, _, hi, _, _ = m.extreme(key)
             print(f"  {label:<26} {significant(lo, 4):>10} to {significant(hi, 4)} {unit}")

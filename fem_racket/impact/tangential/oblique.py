@@ -151,8 +151,9 @@ class ObliqueOutcome:
 
     @property
     def angle_out(self) -> float:
-        """Angle of the outgoing path (projected on the plane of the long axis) from the face
-        normal [deg]."""
+        """Angle of the outgoing path (projected on the plane of the long axis) from the outward
+        face normal [deg], in (-180, 180]: over 90 in size where the ball keeps moving forward
+        (a negative normal rebound, COR < 0: 180 head-on), as simulate's rebound speed says."""
         return math.degrees(math.atan2(self.tangential_speed_out, self.ball.normal_speed_out))
 
     @property

@@ -35,15 +35,7 @@ class ProblemDescription:
                 "weights": self.zone.weights.tolist(),
             },
             "speeds_m_s": list(self.speeds),
-            "swing": None
-            if self.swing is None
-            else {
-                "head_speed_m_s": self.swing.head_speed,
-                "reference_x_over_l": self.swing.reference,
-                "pivot_m": self.swing.pivot,
-                "exponent": self.swing.exponent,
-                "reference_inertia_kg_m2": self.swing.reference_inertia,
-            },
+            "swing": None if self.swing is None else self._swing(),
             "constraints": [
                 {"name": c.name, "low": c.low, "high": c.high, "tolerance": c.tolerance}
                 for c in self.constraints
@@ -70,6 +62,19 @@ class ProblemDescription:
             ),
             **({} if self.law is None else {"law": self.law.describe()}),
         } | ({"hand": asdict(self.hand), "shock_window_s": self.shock_window} if self.shock else {})
+
+    def _swing(self) -> dict[str, Any]:
+        """The swing's description; its ``reference_x_over_l`` only with a swing (a racket
+        speed other than 0: at rest no point's speed is given, as a sweep's file writes it)."""
+        s = self.swing
+        reference = {"reference_x_over_l": s.reference} if s.head_speed != 0.0 else {}
+        return {
+            "head_speed_m_s": s.head_speed,
+            **reference,
+            "pivot_m": s.pivot,
+            "exponent": s.exponent,
+            "reference_inertia_kg_m2": s.reference_inertia,
+        }
 
     @property
     def digest(self) -> str:
