@@ -31,6 +31,7 @@ from fem_racket.impact.solvers import make_solver
 from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.studies.map_options import check_at_rest, check_map_points
 from fem_racket.studies.sweetspots import centre_of_percussion, mode_node_positions
+from fem_racket.studies.swing_points import check_swing_at
 from fem_racket.validation import InputError, check_positive, check_range, show
 
 __all__ = ["DEFAULT_AREA_FRACTION", "FaceGrid", "FaceMap", "face_map"]
@@ -208,6 +209,8 @@ def face_map(
     length = model.mesh.length
     head = head.on_frame(length)
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)
+    lumped = {k: opts[k] for k in ("ball_mass", "kcb", "zeta") if opts.get(k) is not None}
+    check_swing_at(model, speed, swing, x, lumped)  # where the library refuses it, before work
     v_r = np.asarray(swing.speed_at(x * length), dtype=float)
     closing = np.array([closing_speed(speed, v) for v in v_r])
     X, Y = np.meshgrid(x, y)

@@ -29,10 +29,11 @@ from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.segments import Frame
+from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.problem import ImpactProblem
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.solvers import make_solver
-from fem_racket.impact.swing import Swing, ball_speed_out, closing_speed
+from fem_racket.impact.swing import Swing, ball_speed_out
 from fem_racket.impact.system import SEPARATION_EVENTS
 from fem_racket.studies.map_options import (
     DEFAULT_POSITIONS,
@@ -50,6 +51,7 @@ from fem_racket.studies.sweetspots import (
     mode_node_positions,
     power_region,
 )
+from fem_racket.studies.swing_points import check_swing_at
 from fem_racket.studies.views import MapView
 from fem_racket.validation import (
     InputError,
@@ -261,6 +263,8 @@ def racket_map(frame: Frame | FrameMesh | FrameModel | None = None, **options: A
     model = map_model(frame, setup.elements if "elements" in options else None)
     length = model.mesh.length
     swing = play.swing(length)
+    lumped = {k: v for k, v in (("kcb", o.kcb), ("zeta", o.zeta)) if v is not None}
+    check_swing_at(model, speed, swing, x, {"ball_mass": ball_mass, "law": law, **lumped})
     v_r = swing.speed_at(x * length)
     closing = np.array([closing_speed(speed, v) for v in v_r])
     # the MapImpact options given (the solver and the law refuse those they cannot use)

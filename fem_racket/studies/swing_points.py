@@ -19,7 +19,7 @@ import numpy as np
 
 from fem_racket.studies.map_options import MapPlay, map_grid
 
-__all__ = ["check_swing_points"]
+__all__ = ["check_swing_at", "check_swing_points"]
 
 
 def check_swing_points(
@@ -31,19 +31,38 @@ def check_swing_points(
     """Refuse, before any work, the swing of ``play`` (ball speed [m/s], swing) on ``frame``
     (a FrameMesh or FrameModel) where the library refuses it at one of the impact points of
     the map's grid (``play.positions`` [x/L]) or of ``points`` [x/L] (compare's single
-    impact): at the slowest and the fastest of them. ``contact``: the ball's mass and the
-    ball/string law, as :meth:`ImpactProblem.build` takes them (default: the paper's law and
-    ball)."""
-    from fem_racket.frame.model import FrameModel
-    from fem_racket.impact.problem import ImpactProblem
-
+    impact): at the slowest and the fastest of them (:func:`check_swing_at`)."""
     if play.racket_speed == 0.0:
         return  # at rest: the ball's speed alone, checked with the play
     x = np.concatenate([map_grid(play.positions), np.asarray(points, dtype=float)])
-    length = float((frame.mesh if isinstance(frame, FrameModel) else frame).length)
-    swing = play.swing(length)
-    v_r = swing.speed_at(x * length)
+    check_swing_at(frame, play.speed, play.swing(_length(frame)), x, contact)
+
+
+def check_swing_at(
+    frame: Any,
+    speed: float,
+    swing: Any,
+    positions: Any,
+    contact: Mapping[str, Any] | None = None,
+) -> None:
+    """Refuse ``swing`` (a Swing) with a ball at ``speed`` [m/s] on ``frame`` (a FrameMesh or
+    FrameModel) where the library refuses it at one of ``positions`` [x/L]: at the slowest and
+    the fastest of them. ``contact``: the ball's mass and the ball/string law, as
+    :meth:`ImpactProblem.build` takes them (default: the paper's law and ball)."""
+    from fem_racket.impact.problem import ImpactProblem
+
+    x = np.asarray(positions, dtype=float)
+    v_r = swing.speed_at(x * _length(frame))
+    if not np.any(v_r):
+        return  # at rest: the ball's speed alone, checked by the study
     for k in sorted({int(np.argmin(v_r)), int(np.argmax(v_r))}):
         ImpactProblem.build(
-            frame, position=float(x[k]), speed=play.speed, swing=swing, **dict(contact or {})
+            frame, position=float(x[k]), speed=speed, swing=swing, **dict(contact or {})
         )
+
+
+def _length(frame: Any) -> float:
+    """The racket's length [m] of a FrameMesh or FrameModel."""
+    from fem_racket.frame.model import FrameModel
+
+    return float((frame.mesh if isinstance(frame, FrameModel) else frame).length)

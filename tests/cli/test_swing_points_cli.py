@@ -1,8 +1,8 @@
-"""``compare`` and ``customise`` check a swing's K_CB closing speed where the ball strikes, as the
-library does (:func:`fem_racket.studies.swing_points.check_swing_points`, ImpactProblem's
-check_swing), not at the swing's reference point: the command line, the run file's methods and
-the library accept and refuse alike, with one line (see tests/cli/test_swing_cli.py for
-``simulate``)."""
+"""``compare``, ``customise`` and ``map`` (its axis and its face) check a swing's K_CB closing
+speed where the ball strikes, as the library does
+(:func:`fem_racket.studies.swing_points.check_swing_points`, ImpactProblem's check_swing), not at
+the swing's reference point: the command line, the run file's methods and the library accept and
+refuse alike, with one line (see tests/cli/test_swing_cli.py for ``simulate``)."""
 
 from __future__ import annotations
 
@@ -99,3 +99,28 @@ def test_a_translation_is_named_as_its_option(cwd, capsys, command):
     line = one_error(capsys, *argv, "--racket-speed", "-30")
     assert line.endswith("error: racket_speed = -30 m/s is not allowed with ball speed 20 m/s: "
                          "the two must close (v_in + v_r > 0)")  # fmt: skip
+
+
+MAP = ("map", "--elements", "6", "--no-files", "--json")
+
+
+@pytest.mark.parametrize("face", [(), ("--offsets=-0.02,0,0.02",)], ids=["axis", "face"])
+def test_map_checks_at_the_impact_points_as_the_library(cwd, capsys, face):
+    # accepted: every struck point closes below 100 m/s (was refused at the reference point)
+    out = run_json(capsys, *MAP, *ACCEPTED, "--positions", "0.5:0.55:3", *face)
+    assert out
+    # refused at the tip, naming the racket's speed there (was 'speed = 100.01 m/s ... [1, 100]'
+    # for the axis map, the engine's line about the closing speed, after the checks)
+    assert REFUSED_WORDS in one_error(capsys, *MAP, *REFUSED, *face)
+
+
+def test_map_library_refuses_at_the_impact_point():
+    from fem_racket.studies.face_map import face_map
+    from fem_racket.studies.racket_map import racket_map
+
+    swing = {"speed": 20.0, "racket_speed": 75.0, "pivot": -0.5, "elements": 6}
+    with pytest.raises(InputError, match="^" + REFUSED_WORDS.replace(".", r"\.")):
+        racket_map(standard_frame(), **swing)
+    with pytest.raises(InputError, match="^" + REFUSED_WORDS.replace(".", r"\.")):
+        face_map(standard_frame(), positions=np.linspace(0.5, 1.0, 5), offsets=[0.0, 0.02],
+                 **{k: v for k, v in swing.items() if k != "elements"})  # fmt: skip

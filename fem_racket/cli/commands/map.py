@@ -43,6 +43,7 @@ from fem_racket.cli.options.faces import (
     print_maps_json,
     run_face,
 )
+from fem_racket.cli.options.impact import racket_speed_named
 from fem_racket.cli.options.laws import add_law_options, law_from_args
 from fem_racket.cli.options.lead import add_lead_option, with_lead
 from fem_racket.cli.options.rerun import replace_own
@@ -188,6 +189,7 @@ def _rackets(args: argparse.Namespace) -> list[tuple[str, Any]]:
     return [(name, with_lead(frame, args, args.elements)) for name, frame in out]
 
 
+@racket_speed_named  # a swing's closing speed: the library's check, named as the option
 def run(args: argparse.Namespace) -> int:
     """Map every racket, write the files and print the sweet spots; a library refusal of a
     value of the run file's ``[map]`` table names its key (``run.toml: map.positions = ...``),

@@ -179,7 +179,7 @@ def swing_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     maps (:func:`fem_racket.studies.racket_map.racket_map`, ``face_map``) and of compare's
     ``Play``, which build the swing themselves; ``--reference`` without a swing refused
     (``--pivot`` sets the maps' centre of percussion at rest too)."""
-    check_swing_options(args, pivot_at_rest=True)
+    check_swing_options(args, pivot_at_rest=True, at_reference=False)  # the maps' points: theirs
     return {name: getattr(args, name) for name, *_ in SWING}
 
 
