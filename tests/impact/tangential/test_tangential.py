@@ -240,7 +240,7 @@ def test_incidence_checks():
     ):
         Incidence(angle=90.0)
     with pytest.raises(
-        InputError, match=r"^friction = -0.1 is not allowed: must be a finite number >= 0$"
+        InputError, match=r"^friction = -0.1 is not allowed: must lie in \[0, 5\]$"
     ):
         Incidence(friction=-0.1)
     with pytest.raises(InputError, match="ball_inertia = 0.7"):
