@@ -28,8 +28,9 @@ turn the operator into a Laplacian; ``membrane.py``)::
 
 (the mapped head and contact disk as circles of their mean radius). Against the FE stiffness
 (``tests/strings/test_soft_bed.py``) it is within 1.1 % on the default head with 16 x 19 or 18 x 20,
-and up to 26 % low (soft) for a 4 x 40 pattern: never stiffer, so a bed the check passes is
-not softer than it says. k is proportional to T: the check is a least tension per bed.
+and up to 26 % low (soft) for a 4 x 40 pattern: stiffer for none of the beds tested, so a bed
+the check passes deflects at most the bound (the centre: the bed's softest point). k is
+proportional to T: the check is a least tension per bed.
 """
 
 from __future__ import annotations
