@@ -4,6 +4,11 @@ Every result type (an impact, a frame model, its modes, a refinement study, a re
 shows what a user needs at a glance instead of its arrays: ``repr`` is one line of
 :func:`short_repr`, and ``_repr_html_`` (Jupyter's rich display) a small table of
 :func:`html_table`.
+
+Every text made from numbers (CSV cells, TOML and JSON values, messages) goes through
+:func:`plain` first: numpy 2 writes a scalar's ``repr`` as ``np.float64(0.5)``, and JSON
+takes ``np.int64`` and ``np.bool_`` for strings, where Python writes ``0.5``, ``8`` and
+``true``.
 """
 
 from __future__ import annotations
@@ -12,7 +17,25 @@ import html
 import math
 from collections.abc import Iterable, Sequence
 
-__all__ = ["html_table", "number", "short_repr", "span"]
+__all__ = ["html_table", "number", "plain", "short_repr", "span"]
+
+
+def plain(value: object) -> object:
+    """``value`` with every numpy scalar and array (at any depth of dicts, lists and tuples)
+    as the Python numbers, bools and lists it holds; anything else unchanged.
+
+    ``repr`` of the result is Python's: ``np.float64(0.5)`` becomes ``0.5`` (the same float,
+    bit for bit), ``np.int64(8)`` ``8`` and ``np.bool_(True)`` ``True``."""
+    if isinstance(value, dict):
+        return {plain(k): plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        items = [plain(v) for v in value]
+        if isinstance(value, list):
+            return items
+        return type(value)(*items) if hasattr(value, "_fields") else type(value)(items)
+    if type(value).__module__.partition(".")[0] == "numpy" and hasattr(value, "tolist"):
+        return value.tolist()  # type: ignore[union-attr]
+    return value
 
 
 def number(value: float, digits: int = 5) -> str:

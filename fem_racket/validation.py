@@ -16,6 +16,8 @@ from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
+from fem_racket.display import plain
+
 __all__ = [
     "AccuracyError",
     "ChecksPassed",
@@ -72,21 +74,12 @@ class InputError(ValueError):
         return type(self)(renamed, parameter=None if prefix else name, value=self.value)
 
 
-def _plain(value: object) -> object:
-    """A numpy scalar or 0-d array as the Python number it holds; anything else unchanged."""
-    if getattr(value, "ndim", None) == 0 and hasattr(value, "item"):
-        return value.item()  # type: ignore[union-attr]
-    return value
-
-
 def show(value: object, limit: int = SHOW_LIMIT) -> str:
     """``value`` as it appears in a message: numbers and strings as Python writes them
     (``26.5``, ``'a.gif'``), numpy scalars and arrays as plain numbers and lists, and anything
     longer than ``limit`` characters shortened (``[0.5, 0.5, ... (80 values)]``,
     ``'aaaa...aaaa.json'``)."""
-    value = _plain(value)
-    if hasattr(value, "tolist") and getattr(value, "ndim", 0) >= 1:
-        value = value.tolist()  # type: ignore[union-attr]
+    value = plain(value)
     if isinstance(value, (list, tuple)):
         left, right = "()" if isinstance(value, tuple) else "[]"
         items = [show(v, limit) for v in value]
@@ -221,7 +214,7 @@ def check_elements(
     float such as 20.0 counts) from ``minimum`` to ``maximum``, in the words of
     :func:`check_integer` (every command's ``--elements``; the standard frame's two segments
     need at least 2)."""
-    number = _plain(value)
+    number = plain(value)
     whole = (
         isinstance(number, (int, float))
         and not isinstance(number, bool)

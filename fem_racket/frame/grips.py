@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from fem_racket.validation import InputError, check_finite, check_positive
+from fem_racket.validation import InputError, check_finite, check_positive, show
 
 __all__ = ["FIRM_GRIP", "GRIPS", "LOOSE_GRIP", "Hand"]
 
@@ -52,7 +52,9 @@ class Hand:
         ):
             if not check_finite(name, v, unit) >= 0.0:
                 raise InputError(
-                    f"{name} = {v!r} {unit} is not allowed: must be >= 0", parameter=name, value=v
+                    f"{name} = {show(v)} {unit} is not allowed: must be >= 0",
+                    parameter=name,
+                    value=v,
                 )
         if self.inertia is not None:
             check_positive("hand inertia", self.inertia, "kg m^2")

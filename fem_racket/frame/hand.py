@@ -26,7 +26,7 @@ import numpy as np
 
 from fem_racket.frame.fe import FrameFE
 from fem_racket.frame.grips import FIRM_GRIP, GRIPS, LOOSE_GRIP, Hand
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "FIRM_GRIP",
@@ -57,7 +57,7 @@ def check_grip(hand: Hand, length: float) -> None:
     """Refuse a grip that reaches beyond a frame ``length`` [m] long."""
     if hand.grip_end > length:
         raise InputError(
-            f"grip_end = {hand.grip_end!r} m is not allowed: beyond the frame ({length:g} m)",
+            f"grip_end = {show(hand.grip_end)} m is not allowed: beyond the frame ({length:g} m)",
             parameter="grip_end",
             value=hand.grip_end,
         )

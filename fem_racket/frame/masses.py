@@ -26,7 +26,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from fem_racket.frame.mesh import FrameMesh, insert_nodes
-from fem_racket.validation import InputError, check_positive, check_range
+from fem_racket.validation import InputError, check_positive, check_range, show
 
 __all__ = ["DEFAULT_WIDTH", "MIN_GAP", "AddedMass", "add_masses", "strip_ends"]
 
@@ -66,19 +66,19 @@ class AddedMass:
         )
         m = float(self.mass)
         if not np.isfinite(m) or m < 0.0:
-            raise InputError(f"added mass = {self.mass!r} kg is not allowed: must be >= 0")
+            raise InputError(f"added mass = {show(self.mass)} kg is not allowed: must be >= 0")
         object.__setattr__(self, "mass", m)
         object.__setattr__(self, "width", check_positive("mass width", self.width, "m"))
         r = float(self.radius)
         if not np.isfinite(r) or r < 0.0:
-            raise InputError(f"mass radius = {self.radius!r} m is not allowed: must be >= 0")
+            raise InputError(f"mass radius = {show(self.radius)} m is not allowed: must be >= 0")
         object.__setattr__(self, "radius", r)
 
 
 def strip_ends(position: float, width: float, length: float) -> tuple[float, float]:
     """Ends (a, b) [m] of a strip of ``width`` centred at ``position`` x/L, kept inside [0, L]."""
     if width >= length:
-        raise InputError(f"mass width = {width!r} m is not allowed: must be < L = {length:g} m")
+        raise InputError(f"mass width = {show(width)} m is not allowed: must be < L = {length:g} m")
     a = min(max(position * length - width / 2.0, 0.0), length - width)
     return a, a + width
 

@@ -34,7 +34,7 @@ from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
 from fem_racket.frame.plausible import check_fitted_f1
 from fem_racket.frame.segments import EI_RATIO, PAPER_EI1, Frame, Segment
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, show
 
 __all__ = [
     "RHOA_FLOOR",
@@ -215,12 +215,14 @@ def fit_racket(
     """
     spec = RacketSpec(length, mass, balance, swing_weight, f1)
     if not 0.0 < balance < length:
-        raise InputError(f"balance = {balance!r} m is not allowed: must lie in (0, {length:g}) m")
+        raise InputError(
+            f"balance = {show(balance)} m is not allowed: must lie in (0, {length:g}) m"
+        )
     bounds = spec_bounds(length, mass, balance)
     lo, hi = bounds["balance"]
     if not lo < balance < hi:
         raise InputError(
-            f"balance = {balance!r} m is not allowed: for length {length:g} m and mass "
+            f"balance = {show(balance)} m is not allowed: for length {length:g} m and mass "
             f"{mass:g} kg it must lie in ({lo:.4g}, {hi:.4g}) m"
         )
     lo, hi = bounds["swing_weight"]

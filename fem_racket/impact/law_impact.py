@@ -23,7 +23,7 @@ from fem_racket.impact.ode.law_cvode import solve_law_cvode
 from fem_racket.impact.offaxis import RIGID_OFFAXIS, combined_modes, combined_point_vector
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
 from fem_racket.impact.system import output_times
-from fem_racket.validation import AccuracyError, InputError, check_choice, check_finite
+from fem_racket.validation import AccuracyError, InputError, check_choice, check_finite, show
 
 __all__ = [
     "LAW_SOLVERS",
@@ -117,7 +117,7 @@ def modal_velocity(
         return fm.all_shapes.T @ (model.fe.M @ qd)
     if offset != 0.0:
         raise InputError(
-            f"frame_velocity of shape {arr.shape} is not allowed with offset = {offset!r} m: "
+            f"frame_velocity of shape {arr.shape} is not allowed with offset = {show(offset)} m: "
             "must be (v [m/s], omega [rad/s])"
         )
     if arr.shape != (n,) or not np.all(np.isfinite(arr)):

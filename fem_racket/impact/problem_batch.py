@@ -36,7 +36,7 @@ from fem_racket.impact.problem import HeldRacket, Impact, ImpactProblem
 from fem_racket.impact.problem_checks import refuse_separation
 from fem_racket.impact.swing import Swing
 from fem_racket.strings.bed import StringBed
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["BatchOutcome", "ProblemBatch"]  # BatchOutcome: from .batch_outcome
 
@@ -162,7 +162,7 @@ class ProblemBatch:
         problem (the grip on the handle, :func:`~fem_racket.impact.problem_checks.check_held`)."""
         if self.hand is None:
             raise InputError(
-                f"shock_window = {self.shock_window!r} s is not allowed without a hand: "
+                f"shock_window = {show(self.shock_window)} s is not allowed without a hand: "
                 "give a hand",
                 parameter="shock_window",
                 value=self.shock_window,

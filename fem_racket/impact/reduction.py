@@ -27,7 +27,7 @@ from collections.abc import Iterator
 import numpy as np
 
 from fem_racket.impact.constants import DEFAULT_TOLERANCE
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "CALIBRATION",
@@ -70,7 +70,7 @@ def check_tolerance(tolerance: float | None) -> float | None:
         tol = math.nan
     if isinstance(tolerance, bool) or not math.isfinite(tol) or not 0.0 <= tol <= 0.1:
         raise InputError(
-            f"tolerance = {tolerance!r} is not allowed: must be a COR error in [0, 0.1] "
+            f"tolerance = {show(tolerance)} is not allowed: must be a COR error in [0, 0.1] "
             "(0 or None: every mode)",
             parameter="tolerance",
             value=tolerance,

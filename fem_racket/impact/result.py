@@ -190,6 +190,23 @@ class ImpactResult:
             return np.asarray(self.law.force(self.deflection, rate, self.law_state))
         return self.contact.stiffness * self.deflection + self.damping * rate
 
+    @property
+    def compression_stiffness(self) -> float:
+        """The normal stiffness k_n [N/m] of an oblique impact's tangential contact: K_CB for
+        the paper's law (exact: its dashpot's force vanishes at the largest compression); under
+        another law its force over delta where delta peaks, located between the output times
+        (:func:`~fem_racket.impact.result_peak.peak_secant`). Needs histories."""
+        if self.contact is not None:
+            return self.contact.stiffness
+        from fem_racket.impact.result_peak import peak_secant
+
+        return peak_secant(self.t, self.deflection, self.deflection_rate, self.law, self.law_state)
+
+    def normal_samples(self) -> ImpactResult:
+        """The result whose samples drive an oblique impact's tangential contact: this one (its
+        output times are the caller's ``output_step``)."""
+        return self
+
     def frame_field(self, x: np.ndarray, order: int = 0, velocity: bool = False) -> np.ndarray:
         """Frame deflection (order 0, [m]), slope (1, [rad]) or curvature (2, [1/m]) at points
         ``x`` [m] for every output time, shape (nt, len(x)); of the velocity when asked."""

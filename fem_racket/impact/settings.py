@@ -139,7 +139,8 @@ def check_time_limit(settings: Settings, t_est: float, steps: int | None, solver
     if output <= grid:
         raise InputError(
             f"t_max = {show(t_max)} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} output "
-            f"times of output_step = {output!r} s, so t_max <= {MAX_OUTPUT_TIMES * output:.3g} s "
+            f"times of output_step = {show(output)} s, so t_max <= "
+            f"{MAX_OUTPUT_TIMES * output:.3g} s "
             "(or a larger output_step)",
             parameter="t_max",
             value=t_max,

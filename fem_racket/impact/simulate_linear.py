@@ -59,7 +59,8 @@ def build_system(
     if offset != 0.0:
         if basis != "modal":
             raise InputError(
-                f"basis = {show(basis)} is not allowed with offset = {offset!r} m: must be 'modal'"
+                f"basis = {show(basis)} is not allowed with offset = {show(offset)} m: "
+                "must be 'modal'"
             )
         cm = combined_modes(model, modes)
         g = combined_point_vector(model, impact.position * fe.mesh.length, offset)
@@ -86,15 +87,18 @@ def _check_output_count(
     span = 2.0 * t_est
     if span / output_step <= MAX_OUTPUT_TIMES:
         return
-    limit = f"at most {MAX_OUTPUT_TIMES:.0e} output times of output_step = {output_step!r} s"
+    limit = f"at most {MAX_OUTPUT_TIMES:.0e} output times of output_step = {show(output_step)} s"
     if kcb is not None:
         raise InputError(
-            f"kcb = {kcb!r} N/m is not allowed with {limit}: the contact would last about "
+            f"kcb = {show(kcb)} N/m is not allowed with {limit}: the contact would last about "
             f"{t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB)); give a larger output_step or none",
             parameter="kcb",
             value=kcb,
         )
-    what = f"twice the contact's {t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB), m_B = {ball_mass!r} kg)"
+    what = (
+        f"twice the contact's {t_est:.3g} s (eq 11, pi sqrt(m_B / K_CB), "
+        f"m_B = {show(ball_mass)} kg)"
+    )
     check_output_count(output_step, span, what)
 
 

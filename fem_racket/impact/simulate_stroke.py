@@ -19,7 +19,7 @@ from fem_racket.impact.oblique.stroke import Stroke
 from fem_racket.impact.simulate_oblique import normal_impact
 from fem_racket.impact.swing import Swing
 from fem_racket.impact.tangential.oblique import BallMotion, tangential_impact
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, show
 
 __all__ = ["simulate_stroke"]
 
@@ -55,7 +55,7 @@ def simulate_stroke(
     for name in ("angle", "side_angle"):
         if getattr(incidence, name) != 0.0:
             raise InputError(
-                f"{name} = {getattr(incidence, name)!r} deg is not allowed with a stroke: the "
+                f"{name} = {show(getattr(incidence, name))} deg is not allowed with a stroke: the "
                 "face and path angles set the incidence",
                 parameter=name,
                 value=getattr(incidence, name),
@@ -71,7 +71,8 @@ def simulate_stroke(
     c = stroke.components(v, s)
     if c.ball_normal + c.racket_normal <= 0.0:
         raise InputError(
-            f"face_angle = {stroke.face_angle!r} deg and path_angle = {stroke.path_angle!r} deg "
+            f"face_angle = {show(stroke.face_angle)} deg and "
+            f"path_angle = {show(stroke.path_angle)} deg "
             "are not allowed here: ball and strings do not close along the face normal",
             parameter="face_angle",
             value=stroke.face_angle,

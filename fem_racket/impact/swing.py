@@ -103,7 +103,7 @@ class Swing:
         p = check_finite("pivot", pivot, "m")
         if abs(ref - p) < 1e-9 * length:
             raise InputError(
-                f"pivot = {pivot!r} m is not allowed: it is the reference point "
+                f"pivot = {show(pivot)} m is not allowed: it is the reference point "
                 f"({ref:g} m), whose speed it would fix at zero",
                 parameter="pivot",
                 value=pivot,

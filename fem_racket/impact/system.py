@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from fem_racket.impact.constants import SEPARATION_EVENTS
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, show
 
 if TYPE_CHECKING:
     import scipy.sparse as sp
@@ -67,7 +67,7 @@ def check_output_count(step: float | None, span: float, what: str) -> None:
     [s] (``what`` says what the span is), before anything that size is allocated."""
     if step is not None and span / step > MAX_OUTPUT_TIMES:
         raise InputError(
-            f"output_step = {step!r} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} output "
+            f"output_step = {show(step)} s is not allowed: at most {MAX_OUTPUT_TIMES:.0e} output "
             f"times over {what}, so output_step >= {span / MAX_OUTPUT_TIMES:.3g} s"
         )
 

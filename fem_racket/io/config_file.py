@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.contact.linear import zeta_from_cor
+from fem_racket.display import plain
 from fem_racket.impact.constants import DEFAULT_REFERENCE
 from fem_racket.io.config_keys import COMMAND_TABLES, CORE_KEYS, PRESETS, reject_unknown
 from fem_racket.validation import InputError, show
@@ -201,10 +202,13 @@ def _check_combinations(values: dict[str, dict[str, Any]]) -> None:
 
 
 def _toml(value: Any) -> str:
+    value = plain(value)  # np.float64(0.5) as 0.5, np.bool_ as true, arrays as lists
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
-        return repr(value) if math.isfinite(value) else ("nan" if value != value else "inf")
+        if math.isfinite(value):
+            return repr(value)
+        return "nan" if value != value else ("-inf" if value < 0 else "inf")
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(_toml(v) for v in value) + "]"
     if isinstance(value, str):

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from fem_racket.outputs import add_png_provenance, atomic_output, provenance
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "DEFAULT_DPI",
@@ -79,7 +79,7 @@ def check_dpi(dpi: float) -> float:
     except (TypeError, ValueError):
         ok = False
     if not ok:
-        raise InputError(f"dpi = {dpi!r} is not allowed: must be a number in [{low}, {high}]")
+        raise InputError(f"dpi = {show(dpi)} is not allowed: must be a number in [{low}, {high}]")
     return float(dpi)
 
 

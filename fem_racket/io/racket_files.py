@@ -14,7 +14,7 @@ from typing import Any
 
 from fem_racket.frame.specs import DEFAULT_ELEMENTS, KG_CM2
 from fem_racket.outputs import json_ready, provenance
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "FIT_OUTPUT",
@@ -133,7 +133,7 @@ def fit_frame(spec: FitSpec) -> FittedRacket:
                        elements=spec.elements)  # fmt: skip
     if spec.torsion_frequency is not None and spec.twist_weight is None:
         raise InputError(
-            f"torsion_frequency = {spec.torsion_frequency!r} Hz is not allowed without "
+            f"torsion_frequency = {show(spec.torsion_frequency)} Hz is not allowed without "
             "--twist-weight: the torsion profile is scaled to a twistweight"
         )
     if spec.twist_weight is not None:

@@ -26,6 +26,7 @@ from typing import Any
 
 import numpy as np
 
+from fem_racket.display import plain
 from fem_racket.io.figure_files import DEFAULT_DPI, save_figure
 from fem_racket.outputs import Target, atomic_outputs, provenance, sidecar_path
 from fem_racket.studies.refine import ASYMPTOTIC_ORDERS, RefinementStudy
@@ -187,7 +188,7 @@ def _write_table(studies: Mapping[str, RefinementStudy], path: Path) -> None:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
         for r in rows:
-            w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in r.items()})
+            w.writerow({k: (repr(v) if isinstance(v, float) else v) for k, v in plain(r).items()})
 
 
 def plot_studies(

@@ -1,15 +1,19 @@
 """Numbers as JSON holds them: what every JSON a command prints or writes goes through.
 
-NaN and infinities, which JSON cannot hold, become ``null``; a float within a few units in the
-last place of a short decimal is written as that decimal, an input after arithmetic
-(``27400.0``, not ``27399.999999999993``; ``0.68``, not ``0.6799999999999999``), while a computed
-value keeps every digit, bit for bit the library's.
+Numpy scalars and arrays become the Python numbers, bools and lists they hold
+(:func:`fem_racket.display.plain`; ``json`` would write ``np.int64`` and ``np.bool_`` as strings
+or refuse them); NaN and infinities, which JSON cannot hold, become ``null``; a float within a
+few units in the last place of a short decimal is written as that decimal, an input after
+arithmetic (``27400.0``, not ``27399.999999999993``; ``0.68``, not ``0.6799999999999999``),
+while a computed value keeps every digit, bit for bit the library's.
 """
 
 from __future__ import annotations
 
 import math
 from typing import Any
+
+from fem_racket.display import plain
 
 __all__ = ["JSON_DIGITS", "JSON_ULPS", "json_ready"]
 
@@ -27,12 +31,17 @@ def _meant(v: float) -> float:
 
 
 def json_ready(v: Any) -> Any:
-    """``v`` with every non-finite float (at any depth of dicts, lists, tuples) replaced by None
-    and every float that is a short decimal plus rounding noise by that decimal."""
+    """``v`` with numpy scalars and arrays as Python numbers and lists, and every non-finite
+    float (at any depth of dicts, lists, tuples) replaced by None and every float that is a
+    short decimal plus rounding noise by that decimal."""
+    return _ready(plain(v))
+
+
+def _ready(v: Any) -> Any:
     if isinstance(v, float):
         return _meant(v) if math.isfinite(v) else None
     if isinstance(v, dict):
-        return {k: json_ready(x) for k, x in v.items()}
+        return {k: _ready(x) for k, x in v.items()}
     if isinstance(v, (list, tuple)):
-        return [json_ready(x) for x in v]
+        return [_ready(x) for x in v]
     return v

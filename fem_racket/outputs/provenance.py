@@ -10,11 +10,15 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
+from fem_racket.display import plain
+
 __all__ = ["add_png_provenance", "provenance", "sidecar_path"]
 
 
 def provenance(parameters: Mapping[str, Any] | None = None) -> dict[str, Any]:
-    """Metadata for an output file: package version, UTC date, platform and ``parameters``."""
+    """Metadata for an output file: package version, UTC date, platform and ``parameters``
+    (numpy scalars and arrays in them as Python numbers and lists,
+    :func:`fem_racket.display.plain`)."""
     from fem_racket.version import __version__
 
     out: dict[str, Any] = {
@@ -25,7 +29,7 @@ def provenance(parameters: Mapping[str, Any] | None = None) -> dict[str, Any]:
         "source": "Kawazoe & Kanda (1997), JSME Int. J. C 40(1)",
     }
     if parameters:
-        out["parameters"] = dict(parameters)
+        out["parameters"] = plain(dict(parameters))
     return out
 
 

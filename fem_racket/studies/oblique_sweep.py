@@ -32,7 +32,7 @@ from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.simulate import PROBLEM_OPTIONS
 from fem_racket.impact.simulate_oblique import normal_impact
 from fem_racket.impact.solvers import make_solver
-from fem_racket.validation import InputError, check_positive
+from fem_racket.validation import InputError, check_positive, show
 
 __all__ = ["OUTPUTS", "SIDE_OUTPUTS", "ObliqueSweep", "oblique_map", "oblique_sweep"]
 
@@ -81,7 +81,7 @@ class ObliqueSweep:
 def _axis(name: str, values: Any) -> np.ndarray:
     a = np.atleast_1d(np.asarray(values, dtype=float))
     if a.ndim != 1 or a.size == 0:
-        raise InputError(f"{name} = {values!r} is not allowed: must be one or more numbers")
+        raise InputError(f"{name} = {show(values)} is not allowed: must be one or more numbers")
     return a
 
 

@@ -28,7 +28,7 @@ import numpy as np
 from fem_racket.frame.modal import MassProperties, mode_nodes
 from fem_racket.frame.model import FrameModel
 from fem_racket.studies.views import SpotsView
-from fem_racket.validation import InputError, check_finite, check_range
+from fem_racket.validation import InputError, check_finite, check_range, show
 
 __all__ = [
     "SweetSpots",
@@ -48,7 +48,7 @@ def centre_of_percussion(props: MassProperties, pivot: float) -> float:
     arm = props.cg - p
     if abs(arm) < 1e-9 * props.length:
         raise InputError(
-            f"pivot = {pivot!r} m is not allowed for a centre of percussion: it is the centre "
+            f"pivot = {show(pivot)} m is not allowed for a centre of percussion: it is the centre "
             f"of gravity ({props.cg:g} m)",
             parameter="pivot",
             value=pivot,

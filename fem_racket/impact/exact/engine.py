@@ -54,7 +54,7 @@ from fem_racket.impact.exact.inputs import (
 )
 from fem_racket.impact.point import FIRST_MODES, ModalData
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE, cutoff_factor
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["DEFAULT_TOLERANCE", "EngineOptions", "ImpactBatch", "impacts", "modal_impacts"]
 
@@ -138,7 +138,7 @@ def modal_impacts(
     options = EngineOptions() if options is None else options
     if options.modes is not None:
         raise InputError(
-            f"modes = {options.modes!r} is not allowed with modal_impacts: the modes are those "
+            f"modes = {show(options.modes)} is not allowed with modal_impacts: the modes are those "
             "given (pass fewer columns)"
         )
     check_cases(speed, kcb, zeta, ball_mass)

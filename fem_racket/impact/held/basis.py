@@ -15,7 +15,7 @@ import numpy as np
 
 from fem_racket.frame.fe import FrameFE
 from fem_racket.frame.hand import Hand, held_frame
-from fem_racket.validation import AccuracyError, InputError
+from fem_racket.validation import AccuracyError, InputError, show
 
 __all__ = ["HeldBasis", "held_basis"]
 
@@ -79,7 +79,7 @@ def held_basis(fe: FrameFE, hand: Hand) -> HeldBasis:
     """
     if not hand.stiffness > 0.0:
         raise InputError(
-            f"grip stiffness = {hand.stiffness!r} N/m^2 is not allowed with the modal held "
+            f"grip stiffness = {show(hand.stiffness)} N/m^2 is not allowed with the modal held "
             "solver: must be > 0 (use solver 'cvode' or 'bdf': fem_racket.simulate_held)",
             parameter="grip stiffness",
             value=hand.stiffness,

@@ -11,6 +11,10 @@ which is also m_h u_h'' (nothing else acts on the hand). Its *rigid part* is the
 would carry the hand along with a rigid racket + hand pushed by the contact force F(t):
 ``m_h F (1/M_t + (x_i - x_G)(x_h - x_G)/I_t)`` (M_t, x_G, I_t of frame + hand); the rest is the
 *vibration part*: what the frame's bending and the hand's own motion on the grip layer add.
+
+All three forces are linear in the state, so their extrema are root-found by the integrator on
+its dense solution, as the free racket's peak force is (:class:`~fem_racket.impact.ode.
+integrators.Watched`): the peaks do not depend on the output times.
 """
 
 from __future__ import annotations
@@ -22,10 +26,11 @@ import numpy as np
 
 from fem_racket.frame.hand import HeldFrame, held_frame
 from fem_racket.frame.model import FrameModel
-from fem_racket.impact.ode.integrators import get_solver
+from fem_racket.impact.held.flow import flow_energy
+from fem_racket.impact.ode.integrators import INTEGRATORS, Watched
 from fem_racket.impact.problem import HeldRacket, ImpactProblem
 from fem_racket.impact.system import CoupledSystem, Integration, physical_system
-from fem_racket.validation import InputError, check_choice
+from fem_racket.validation import InputError, check_choice, show
 
 __all__ = ["HeldImpact", "simulate_held"]
 
@@ -63,6 +68,12 @@ class HeldImpact:
     contact_force, grip_force, grip_force_rigid : ndarray
         Contact force F [N], force of the grip on the hand F_h [N] (positive along the ball's
         travel) and its rigid part [N] (module docstring).
+    peak_force, peak_grip_force, peak_grip_vibration : float
+        Largest F, |F_h| and |F_h - rigid part| during contact [N], root-found between the
+        output times (module docstring).
+    grip_vibration_energy : float
+        int_0^t_c (F_h - rigid part)^2 dt [N^2 s] from the integrator's states, exact between
+        them (:func:`~fem_racket.impact.held.flow.flow_energy`).
     speed : float
         Incident ball speed [m/s].
     racket_speed : float
@@ -77,6 +88,10 @@ class HeldImpact:
     contact_force: np.ndarray
     grip_force: np.ndarray
     grip_force_rigid: np.ndarray
+    peak_force: float
+    peak_grip_force: float
+    peak_grip_vibration: float
+    grip_vibration_energy: float
     speed: float
     racket_speed: float = 0.0
     state: np.ndarray | None = None
@@ -103,8 +118,8 @@ class HeldImpact:
         return {
             "cor": self.cor,
             "contact_time_s": self.contact_time,
-            "peak_grip_force_n": float(np.max(np.abs(self.grip_force))),
-            "peak_grip_vibration_n": float(np.max(np.abs(self.grip_vibration))),
+            "peak_grip_force_n": self.peak_grip_force,
+            "peak_grip_vibration_n": self.peak_grip_vibration,
         }
 
 
@@ -156,7 +171,7 @@ def simulate_held(
     v_r = problem.racket_speed
     law = problem.contact()
     if not output_step > 0.0:
-        raise InputError(f"output_step = {output_step!r} s is not allowed: must be > 0")
+        raise InputError(f"output_step = {show(output_step)} s is not allowed: must be > 0")
     import scipy.sparse as sp
 
     held = held_frame(model.fe, hand)
@@ -173,14 +188,47 @@ def simulate_held(
         frame = model.fe.rigid_motion(-swing.velocity, -swing.omega)
         fields["frame_velocity0"] = np.concatenate([frame, [-hand_speed, -swing.omega]])
     system = _HeldSystem(**fields, grip_damping=held.C)
-    traj = get_solver(solver)(system, Integration(output_step=output_step, rtol=rtol, atol=atol))
     # Force of the grip layer on the hand's translation: -(k' G x + c' G x')[u_h] (G symmetric).
     row = held.grip[held.n_frame]
-    x, v = traj.x[:, 1:], traj.v[:, 1:]
+    factor = _rigid_factor(model, held, x_i)
+    rows = _force_rows(system, -hand.stiffness * row, -hand.damping * row, factor)
+    run = Integration(output_step=output_step, rtol=rtol, atol=atol)
+    # the contact force's maxima, the grip forces' extrema of either sign; an output identically
+    # 0 (no grip layer) has none (and CVODE would warn of it)
+    on = [i for i, c in enumerate(rows) if np.any(c)]
+    out = INTEGRATORS[solver](system, run, Watched(rows[on], tuple((-1, 0, 0)[i] for i in on)))
+    extrema = dict(zip(on, out.extrema, strict=True))
+    n = system.size
+    traj_x, traj_v = out.y[:, :n], out.y[:, n:]
+    x, v = traj_x[:, 1:], traj_v[:, 1:]
     f_hand = -(hand.stiffness * (x @ row) + hand.damping * (v @ row))
-    force = law.stiffness * (traj.x @ system.h) + ccb * (traj.v @ system.h)
-    rigid = _rigid_factor(model, held, x_i) * force
+    force = law.stiffness * (traj_x @ system.h) + ccb * (traj_v @ system.h)
+    rigid = factor * force
     state = np.concatenate([x[-1], v[-1]])
+    none = np.zeros((0, out.y.shape[1]))
+    peaks = [np.vstack([out.y, extrema.get(i, none)]) @ c for i, c in enumerate(rows)]
     return HeldImpact(
-        traj.t, traj.v[:, 0], v[:, held.n_frame], force, f_hand, rigid, speed, v_r, state
+        out.t,
+        traj_v[:, 0],
+        v[:, held.n_frame],
+        force,
+        f_hand,
+        rigid,
+        float(np.max(peaks[0])),
+        float(np.max(np.abs(peaks[1]))),
+        float(np.max(np.abs(peaks[2]))),
+        flow_energy(system.state_matrix, rows[2], out.t, out.y),
+        speed,
+        v_r,
+        state,
     )
+
+
+def _force_rows(system: CoupledSystem, kx: np.ndarray, cv: np.ndarray, factor: float):
+    """Rows of the contact force F, the grip force F_h and its vibration part F_h - factor F on
+    the state [x, x'] (ball first); ``kx`` and ``cv`` give F_h = kx @ x_held + cv @ x_held'."""
+    n = system.size
+    force = system.event_vector("force")
+    grip = np.zeros(2 * n)
+    grip[1:n], grip[n + 1 :] = kx, cv
+    return np.vstack([force, grip, grip - factor * force])

@@ -6,7 +6,8 @@ The entry of ``fem-racket simulate`` with a hand. Two ways to the same answer:
   shock measures of :mod:`fem_racket.impact.held.shock` (peak of the grip force, RMS of its
   vibration part over the window [0, T]);
 - ``cvode`` / ``bdf``: the integrators during contact and the free vibration after it
-  (:mod:`fem_racket.impact.held.sampled`), the shock measures from the samples.
+  (:mod:`fem_racket.impact.held.sampled`), the peaks root-found and the RMS integrated exactly
+  between the samples, so none depends on the output step.
 
 A swing (:mod:`fem_racket.impact.swing`) moves racket and hand rigidly; the grip layer is not
 stretched by it, so the impact superposes on the stationary one at the closing speed
@@ -37,7 +38,7 @@ from fem_racket.impact.ode.integrators import ATOL_RANGE, PHYSICAL_MAX_ELEMENTS,
 from fem_racket.impact.problem import HeldRacket, ImpactProblem
 from fem_racket.impact.swing import Swing, ball_speed_out, rebound_summary
 from fem_racket.impact.system import check_output_count
-from fem_racket.validation import InputError, check_choice, check_range
+from fem_racket.validation import InputError, check_choice, check_range, show
 
 __all__ = ["HELD_RUN_SOLVERS", "HeldRun", "HeldSettings", "hand_summary", "held_impact"]
 
@@ -144,8 +145,8 @@ class HeldSettings:
     ----------
     solver : {"exact", "cvode", "bdf"}
     output_step : float
-        Spacing of the histories' times and of the integrators' samples [s] (the integrators'
-        shock measures are to it, module docstring).
+        Spacing of the histories' times and of the integrators' samples [s] (the peaks and the
+        RMS do not depend on it, module docstring).
     histories : bool
         Keep the histories (:attr:`HeldRun.histories`).
     tolerance : float or None
@@ -202,7 +203,7 @@ def held_impact(problem: ImpactProblem, settings: HeldSettings | None = None) ->
     window = DEFAULT_WINDOW if held.shock_window is None else held.shock_window
     window = check_range("shock_window", window, 0.0, MAX_WINDOW, unit="s", include_low=False)
     if not s.output_step > 0.0:
-        raise InputError(f"output_step = {s.output_step!r} s is not allowed: must be > 0")
+        raise InputError(f"output_step = {show(s.output_step)} s is not allowed: must be > 0")
     if s.histories or s.solver != "exact":  # the integrators sample at output_step
         check_output_count(s.output_step, window, f"the shock window's {window:g} s")
     if s.solver == "exact":

@@ -29,7 +29,7 @@ import numpy as np
 
 from fem_racket.impact.constants import DEFAULT_WINDOW
 from fem_racket.impact.held.modal import HeldContact
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
 __all__ = ["DEFAULT_WINDOW", "contact_peak", "grip_peak", "vibration_energy", "vibration_rms"]
 
@@ -48,7 +48,7 @@ def _energy(lam: np.ndarray, w: np.ndarray, tau: float) -> float:
 def _check_window(c: HeldContact, window: float) -> float:
     if not window > c.contact_time:
         raise InputError(
-            f"window = {window!r} s is not allowed: must exceed the contact time "
+            f"window = {show(window)} s is not allowed: must exceed the contact time "
             f"({c.contact_time:.4g} s)"
         )
     return float(window)

@@ -7,6 +7,10 @@
 - ``cvode``: SUNDIALS CVODE (BDF, scikit-sundae) with a dense Jacobian and a root-finding event.
 - ``bdf``: scipy ``solve_ivp`` BDF with a terminal event, the fallback of ``cvode``.
 
+Both root-find the contact force's maxima on their dense solution (the peak force), and the
+extrema of any other linear outputs a caller watches (:class:`Watched`, :data:`INTEGRATORS`:
+the hand-held racket's grip force).
+
 The BDF paths accept either basis (``modal`` or the full ``physical`` FE system) and carry the
 general first-order form ``y' = A y``; the separation events are named parts of the model
 (:data:`fem_racket.impact.system.SEPARATION_EVENTS`) turned into terminal/direction settings here.
@@ -15,6 +19,7 @@ general first-order form ``y' = A y``; the separation events are named parts of 
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -34,6 +39,7 @@ from fem_racket.validation import AccuracyError, InputError, check_choice, check
 __all__ = [
     "ATOL_RANGE",
     "GRID_STEPS",
+    "INTEGRATORS",
     "PHYSICAL_MAX_ELEMENTS",
     "RTOL_RANGE",
     "SOLVERS",
@@ -41,9 +47,14 @@ __all__ = [
     "check_solver_settings",
     "cvode_bdf",
     "get_solver",
+    "Integrated",
+    "integrate_bdf",
+    "integrate_cvode",
+    "peak_rates",
     "solve_bdf",
     "solve_cvode",
     "solve_exact",
+    "Watched",
 ]
 
 Solver = Callable[[CoupledSystem, Integration], Trajectory]
@@ -96,22 +107,53 @@ def _bdf_setup(
     return A, c, tspan, system.initial_state()
 
 
-def _peak_rate(system: CoupledSystem, A: Any) -> np.ndarray:
-    """Row r with dF/dt = r @ y (F = c @ y the contact force, y' = A y): its roots falling
-    through 0 are the force's maxima, found by the integrator's root finding on its dense
-    solution (so the peak force does not depend on the output times)."""
-    return np.asarray(A.T @ system.event_vector("force")).ravel()
+def peak_rates(A: Any, rows: np.ndarray) -> np.ndarray:
+    """Rows r_i with d(c_i @ y)/dt = r_i @ y for the linear outputs c_i @ y (``rows``, shape
+    (k, 2 n); y' = A y): the roots of r_i @ y are the outputs' extrema (falling through 0 a
+    maximum, rising a minimum), found by the integrator's root finding on its dense solution (so
+    they do not depend on the output times)."""
+    return np.array([np.asarray(A.T @ c).ravel() for c in rows])
 
 
-def _trajectory(
-    system: CoupledSystem, t: np.ndarray, y: np.ndarray, keep_all: bool, peaks: np.ndarray
-) -> Trajectory:
-    """Split the states into coordinates and rates; the peak force over every computed time
-    (the output grid, or t_est / :data:`GRID_STEPS` steps when only the ends are kept) and the
-    force's maxima ``peaks`` (states, shape (k, 2 n)) found between them."""
+@dataclass(frozen=True, eq=False)
+class Watched:
+    """Linear outputs c_i @ y whose extrema an integrator root-finds (:func:`peak_rates`).
+
+    Attributes
+    ----------
+    rows : ndarray, shape (k, 2 n)
+        The rows c_i.
+    directions : tuple of int
+        Per output: -1 its maxima, 1 its minima, 0 both.
+    """
+
+    rows: np.ndarray
+    directions: tuple[int, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class Integrated:
+    """An integrator's states ``y`` [x, x'] at the times ``t`` (the output grid, or t_est /
+    :data:`GRID_STEPS` steps without one), ending at separation, and the states at each watched
+    output's extrema between them (``extrema[i]``, shape (m_i, 2 n))."""
+
+    t: np.ndarray
+    y: np.ndarray
+    extrema: list[np.ndarray]
+
+
+def _force_watch(system: CoupledSystem) -> Watched:
+    """The contact force's maxima: the free racket's peak force."""
+    return Watched(system.event_vector("force")[None, :], (-1,))
+
+
+def _trajectory(system: CoupledSystem, run: Integration, out: Integrated) -> Trajectory:
+    """Split the states into coordinates and rates; the peak force over every computed time and
+    the force's maxima ``out.extrema[0]`` found between them."""
     n = system.size
-    peak = float(np.max(np.vstack([y, peaks]) @ system.event_vector("force")))
-    if not keep_all:
+    t, y = out.t, out.y
+    peak = float(np.max(np.vstack([y, out.extrema[0]]) @ system.event_vector("force")))
+    if run.output_step is None:
         t, y = t[[0, -1]], y[[0, -1]]
     return Trajectory(np.asarray(t), y[:, :n].copy(), y[:, n:].copy(), peak)
 
@@ -145,8 +187,8 @@ def cvode_bdf(
     )
 
 
-def solve_cvode(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
-    """SUNDIALS CVODE (BDF) through scikit-sundae, dense constant Jacobian, root-found event."""
+def integrate_cvode(system: CoupledSystem, run: Integration, watch: Watched) -> Integrated:
+    """CVODE on ``system`` until separation, root-finding the extrema of ``watch``'s outputs."""
     A, c, tspan, y0 = _bdf_setup(system, run)
 
     def rhs(t: float, y: np.ndarray, yp: np.ndarray) -> None:
@@ -155,27 +197,30 @@ def solve_cvode(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -
     def jac(t: float, y: np.ndarray, yp: np.ndarray, JJ: np.ndarray) -> None:
         JJ[:, :] = A
 
-    rate = _peak_rate(system, A)
+    rates = peak_rates(A, watch.rows)
 
     def events(t: float, y: np.ndarray, ev: np.ndarray) -> None:
         ev[0] = c @ y
-        ev[1] = rate @ y
+        for i, rate in enumerate(rates):
+            ev[1 + i] = rate @ y
 
-    events.terminal = [True, False]  # separation ends the run; a force maximum is recorded
-    events.direction = [-1, -1]
-    solver = cvode_bdf(rhs, jac, events, 2, rtol=run.rtol, atol=run.atol, max_num_steps=100000)
+    k = len(rates)
+    events.terminal = [True] + [False] * k  # separation ends the run; an extremum is recorded
+    events.direction = [-1, *watch.directions]
+    solver = cvode_bdf(rhs, jac, events, 1 + k, rtol=run.rtol, atol=run.atol, max_num_steps=100000)
     sol = solver.solve(tspan, y0)
     if not sol.success:
         raise AccuracyError(f"solver = 'cvode' failed: {_one_line(sol.message)}")
-    hits = np.zeros((0, 2)) if sol.i_events is None else np.asarray(sol.i_events)
+    hits = np.zeros((0, 1 + k)) if sol.i_events is None else np.asarray(sol.i_events)
     if not np.any(hits[:, 0]):
         raise no_separation(float(tspan[-1]))
-    peaks = np.asarray(sol.y_events)[hits[:, 1] != 0]
-    return _trajectory(system, sol.t, sol.y, run.output_step is not None, peaks)
+    at = np.asarray(sol.y_events)
+    return Integrated(sol.t, sol.y, [at[hits[:, 1 + i] != 0] for i in range(k)])
 
 
-def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
-    """scipy ``solve_ivp`` BDF with a constant Jacobian and a terminal event."""
+def integrate_bdf(system: CoupledSystem, run: Integration, watch: Watched) -> Integrated:
+    """scipy ``solve_ivp`` BDF on ``system`` until separation (a terminal event),
+    root-finding the extrema of ``watch``'s outputs."""
     from scipy.integrate import solve_ivp
 
     A, c, tspan, y0 = _bdf_setup(system, run)
@@ -183,21 +228,17 @@ def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> 
     def event(t: float, y: np.ndarray) -> float:
         return float(c @ y)
 
-    rate = _peak_rate(system, A)
-
-    def peak(t: float, y: np.ndarray) -> float:
-        return float(rate @ y)
-
     event.terminal = True
     event.direction = -1
-    peak.direction = -1  # a force maximum, recorded (not terminal)
+    rates = peak_rates(A, watch.rows)
+    extrema = [_rate_event(r, d) for r, d in zip(rates, watch.directions, strict=True)]
     sol = solve_ivp(
         lambda t, y: A @ y,
         (0.0, float(tspan[-1])),
         y0,
         method="BDF",
         t_eval=tspan,
-        events=[event, peak],
+        events=[event, *extrema],
         jac=lambda t, y: A,
         rtol=run.rtol,
         atol=run.atol,
@@ -210,8 +251,32 @@ def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> 
     y = np.vstack([sol.y.T, sol.y_events[0][0]])
     if t.size > 1 and t[-1] - t[-2] < 1e-12:
         t, y = np.delete(t, -2), np.delete(y, -2, axis=0)
-    peaks = np.asarray(sol.y_events[1]).reshape(-1, y.shape[1])
-    return _trajectory(system, t, y, run.output_step is not None, peaks)
+    n2 = y.shape[1]
+    return Integrated(t, y, [np.asarray(e).reshape(-1, n2) for e in sol.y_events[1:]])
+
+
+def _rate_event(rate: np.ndarray, direction: int) -> Callable[[float, np.ndarray], float]:
+    """scipy's event for an output's extremum (recorded, not terminal)."""
+
+    def peak(t: float, y: np.ndarray) -> float:
+        return float(rate @ y)
+
+    peak.direction = direction
+    return peak
+
+
+def solve_cvode(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
+    """SUNDIALS CVODE (BDF) through scikit-sundae, dense constant Jacobian, root-found event."""
+    return _trajectory(system, run, integrate_cvode(system, run, _force_watch(system)))
+
+
+def solve_bdf(system: CoupledSystem, run: Integration = DEFAULT_INTEGRATION) -> Trajectory:
+    """scipy ``solve_ivp`` BDF with a constant Jacobian and a terminal event."""
+    return _trajectory(system, run, integrate_bdf(system, run, _force_watch(system)))
+
+
+#: Integrator name -> function taking the outputs to watch (:class:`Watched`).
+INTEGRATORS = {"cvode": integrate_cvode, "bdf": integrate_bdf}
 
 
 #: Solver name -> function, all with the signature of :func:`solve_exact`.

@@ -18,6 +18,7 @@ with every mode kept. From its roots lambda_j and contact-force residues f_j = (
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -28,7 +29,7 @@ from fem_racket.impact.strung.point import StrungPoint
 from fem_racket.impact.system import no_separation
 from fem_racket.validation import InputError, show
 
-__all__ = ["T_MAX_FACTOR", "strung_exact_states"]
+__all__ = ["T_MAX_FACTOR", "ExactStates", "strung_exact"]
 
 #: Give up on separation after this many spring-alone contact times.
 T_MAX_FACTOR = 40.0
@@ -44,10 +45,11 @@ def _linear(law: ContactLaw) -> tuple[float, float, str]:
     return float(law.stiffness), float(law.damping()), law.end
 
 
-def strung_exact_states(
-    point: StrungPoint, law: ContactLaw, ball_mass: float, speed: float, samples: int
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Times [s] (``samples`` over the contact) and the states ``[u_B, eta]`` and rates there.
+def strung_exact(
+    point: StrungPoint, law: ContactLaw, ball_mass: float, speed: float
+) -> tuple[float, ExactStates]:
+    """The contact time t_c [s] and the states ``[u_B, eta]`` and their rates at any times
+    in [0, t_c] (:class:`ExactStates`), in closed form (module docstring).
 
     Parameters
     ----------
@@ -56,8 +58,6 @@ def strung_exact_states(
         A linear spring-dashpot (``name == "linear"``).
     ball_mass, speed : float
         m_B [kg], V_B0 [m/s].
-    samples : int
-        Output times from 0 to t_c.
     """
     k, c, end = _linear(law)
     w, a = point.flexible
@@ -74,13 +74,33 @@ def strung_exact_states(
     tc = float(t_c[0])
     if not tc > 0.0:
         raise no_separation(T_MAX_FACTOR * t_est)
-    t = np.linspace(0.0, tc, samples)
-    e = np.exp(np.outer(t, lam))  # (T, R)
-    J = m * ((e - 1.0) / lam * fw).real.sum(axis=1)
-    P = m * ((e - 1.0 - np.outer(t, lam)) / lam**2 * fw).real.sum(axis=1)
-    den = lam[None, :] ** 2 + (w**2)[:, None]  # (modes, roots)
-    flex = m * ((e * fw) @ (1.0 / den).T).real * a  # (T, modes)
-    flex_v = m * ((e * fw * lam) @ (1.0 / den).T).real * a
-    x = np.column_stack([t - P / ball_mass, np.outer(P, point.rigid), flex]) * speed
-    xv = np.column_stack([1.0 - J / ball_mass, np.outer(J, point.rigid), flex_v]) * speed
-    return t, x, xv
+    inv = 1.0 / (lam[None, :] ** 2 + (w**2)[:, None])  # (modes, roots)
+    return tc, ExactStates(lam, m, fw, inv, a, point.rigid, ball_mass, speed)
+
+
+@dataclass(frozen=True, eq=False)
+class ExactStates:
+    """The states ``[u_B, eta]`` and their rates at times [s] in [0, t_c] (call it with the
+    times), from the roots ``lam``, their multiplicities ``mult`` and contact-force residues
+    ``fw``, ``inv`` = 1 / (lam^2 + omega_f^2) per flexible mode and root, the flexible and
+    rigid shapes at the point ``a`` and ``rigid``, m_B [kg] and V_B0 [m/s] (module docstring)."""
+
+    lam: np.ndarray
+    mult: np.ndarray
+    fw: np.ndarray
+    inv: np.ndarray
+    a: np.ndarray
+    rigid: np.ndarray
+    ball_mass: float
+    speed: float
+
+    def __call__(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        lam, m, fw, inv, mb = self.lam, self.mult, self.fw, self.inv, self.ball_mass
+        e = np.exp(np.outer(t, lam))  # (T, R)
+        J = m * ((e - 1.0) / lam * fw).real.sum(axis=1)
+        P = m * ((e - 1.0 - np.outer(t, lam)) / lam**2 * fw).real.sum(axis=1)
+        flex = m * ((e * fw) @ inv.T).real * self.a  # (T, modes)
+        flex_v = m * ((e * fw * lam) @ inv.T).real * self.a
+        x = np.column_stack([t - P / mb, np.outer(P, self.rigid), flex]) * self.speed
+        xv = np.column_stack([1.0 - J / mb, np.outer(J, self.rigid), flex_v]) * self.speed
+        return x, xv

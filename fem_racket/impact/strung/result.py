@@ -13,7 +13,8 @@ potential when they stretch)::
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -21,6 +22,7 @@ import numpy as np
 from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.linear import Ball
 from fem_racket.frame.model import FrameModel
+from fem_racket.impact.result_peak import peak_secant
 from fem_racket.impact.strung.point import StrungPoint
 
 __all__ = ["StrungImpact"]
@@ -57,16 +59,21 @@ class StrungImpact:
         u_B [m] and the structure's coordinates (:attr:`StrungPoint.omega` order) at ``t``.
     rates : ndarray, shape (nt, 1 + n)
         Their time derivatives (u_B' [m/s] first).
+    law_state : ndarray or None
+        The ball law's state at ``t`` [m] (None for a law without one).
+    resampled : callable
+        The same solution at the oblique impact's output times (:meth:`normal_samples`).
     model : FrameModel or None
         The frame (:func:`simulate_strung` sets it).
 
     The attributes an oblique impact reads of its normal impact
     (:func:`fem_racket.impact.oblique.solve.free_normal`) are those of an
     :class:`~fem_racket.impact.result.ImpactResult`: ``ball``, ``ball_velocity``,
-    ``ball_speed_out``, ``x_impact``, ``offset``, ``deflection`` (the ball law's, its
-    compression) and ``contact`` (None: no lumped K_CB; the normal stiffness of the tangential
-    contact is then the ball law's secant at its largest compression), ``model``, ``t`` and
-    :meth:`summary`.
+    ``ball_speed_out``, ``x_impact``, ``offset``, ``model``, ``t``, :meth:`summary`, and
+    those of the tangential contact's
+    :class:`~fem_racket.impact.tangential.result_history.NormalResult`: ``force``,
+    :attr:`compression_stiffness` (the ball law's secant at its largest compression: no
+    lumped K_CB) and :meth:`normal_samples`.
     """
 
     cor: float
@@ -88,6 +95,8 @@ class StrungImpact:
     solver: str
     coordinates: np.ndarray
     rates: np.ndarray
+    law_state: np.ndarray | None
+    resampled: Callable[[], StrungImpact] = field(repr=False)
     model: FrameModel | None = None
 
     @property
@@ -113,32 +122,23 @@ class StrungImpact:
     @property
     def compression_stiffness(self) -> float:
         """The ball law's secant stiffness F / delta at its largest compression [N/m]: the
-        normal stiffness k_n of an oblique impact's tangential contact.
-
-        The largest compression lies between two output times: it is the root of the rate
-        delta' (u_B' minus the bed's rate at the point) where the cubic Hermite spline through
-        delta and delta' peaks, and F there is P' of the impulse's spline (P = m_B (V_B0 -
-        u_B'), P' = F at the samples: the normal history's own force). The secant at the
-        output time of largest compression instead moved by 4e-4 relative with the number of
-        samples (the dashpot's force C delta' at up to half a step from the peak: 137 310,
-        137 388 and 137 349 N/m for the kawazoe-1997-ball at 801, 6 401 and 12 801 samples,
-        where this gives 137 357.74, 137 357.79 and 137 357.79 N/m, the law's K at delta' = 0
-        being 137 357.79), and the tangential spring's frequency with it: the outgoing spin of
-        a strung oblique impact moved by 1.2e-4 between 3 201 and 6 401 samples.
+        normal stiffness k_n of an oblique impact's tangential contact, located between the
+        output times (:func:`~fem_racket.impact.result_peak.peak_secant`; delta' is u_B' minus
+        the bed's rate at the point). For the kawazoe-1997-ball (F = K delta + C delta') it is
+        K = 137 357.79 N/m at any sample count; the secant at the output time of largest
+        compression instead moved by 4e-4 relative with the number of samples (the dashpot's
+        C delta' at up to half a step from the peak: 137 310, 137 388 and 137 349 N/m at 801,
+        6 401 and 12 801 samples), and the outgoing spin of a strung oblique impact with it
+        (by 1.2e-4 between 3 201 and 6 401 samples).
         """
-        from scipy.interpolate import CubicHermiteSpline
-
-        t, d = self.t, self.ball_deflection
         rate = self.rates[:, 0] - self.rates[:, 1:] @ self.point.a
-        spline = CubicHermiteSpline(t, d, rate)
-        i = int(np.argmax(d))
-        near = (t[max(i - 1, 0)], t[min(i + 1, t.size - 1)])
-        roots = spline.derivative().roots(extrapolate=False)
-        times = np.append(roots[(roots >= near[0]) & (roots <= near[1])], t[i])
-        peak = float(times[np.argmax(spline(times))])
-        impulse = self.ball_mass * (self.rates[0, 0] - self.rates[:, 0])
-        force = CubicHermiteSpline(t, impulse, self.force)(peak, 1)
-        return float(force / spline(peak))
+        return peak_secant(self.t, self.ball_deflection, rate, self.law, self.law_state)
+
+    def normal_samples(self) -> StrungImpact:
+        """The same solution at :data:`~fem_racket.impact.strung.impact.OBLIQUE_SAMPLES` output
+        times: the normal force history an oblique impact's tangential contact marches over
+        (the result's own samples serve its peaks and energies)."""
+        return replace(self.resampled(), model=self.model)
 
     @property
     def x_impact(self) -> float:
@@ -149,11 +149,6 @@ class StrungImpact:
     def offset(self) -> float:
         """The impact point's lateral offset from the long axis y [m]."""
         return self.point.lateral_m
-
-    @property
-    def contact(self) -> None:
-        """None: the ball's own law acts on the bed (no lumped K_CB)."""
-        return None
 
     def summary(self) -> dict[str, Any]:
         """The results, the bed and what the run used, JSON-ready, units in the keys."""

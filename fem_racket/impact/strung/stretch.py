@@ -36,7 +36,7 @@ from fem_racket.impact.strung.point import StrungPoint
 from fem_racket.strings.membrane import bed_mesh
 from fem_racket.validation import InputError, show
 
-__all__ = ["BedStretch", "bed_stretch", "solve_stretch", "stretch_energy", "stretch_states"]
+__all__ = ["BedStretch", "bed_stretch", "solve_stretch", "stretch_energy"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -158,23 +158,6 @@ def solve_stretch(
     if sol.i_events is None or len(sol.i_events) == 0:
         raise no_separation(t_max)
     return np.asarray(sol.t), np.asarray(sol.y)
-
-
-def stretch_states(
-    point: StrungPoint,
-    law: ContactLaw,
-    ball_mass: float,
-    speed: float,
-    samples: int,
-    tolerances: tuple[float, float] = (1e-10, 1e-13),
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """:func:`solve_stretch` at ``samples`` times over the contact (CVODE's outputs interpolated
-    linearly; ``tolerances``: rtol, atol): times [s], states [u_B, x] and their rates."""
-    t_raw, y = solve_stretch(point, law, ball_mass, speed, rtol=tolerances[0], atol=tolerances[1])
-    n = point.omega.size + 1
-    t = np.linspace(0.0, float(t_raw[-1]), samples)
-    y = np.column_stack([np.interp(t, t_raw, col) for col in y.T])
-    return t, y[:, :n], y[:, n:]
 
 
 def stretch_energy(point: StrungPoint, x: np.ndarray) -> np.ndarray:

@@ -43,6 +43,7 @@ from fem_racket.validation import (
     check_integer,
     check_positive,
     check_range,
+    show,
 )
 
 __all__ = ["DesignProblem"]
@@ -199,7 +200,8 @@ class DesignProblem(ParameterLayout, ProblemDescription):
                 )
             if not self.hand.grip_end < self.length:
                 raise InputError(
-                    f"grip_end = {self.hand.grip_end!r} m is not allowed: must lie on the frame "
+                    f"grip_end = {show(self.hand.grip_end)} m is not allowed: must lie on the "
+                    "frame "
                     f"(< {self.length:g} m)",
                     parameter="grip_end",
                     value=self.hand.grip_end,

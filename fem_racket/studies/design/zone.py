@@ -17,7 +17,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from fem_racket.studies.design.zone_kinds import ZONES
-from fem_racket.validation import InputError, check_integer, check_positive, check_range
+from fem_racket.validation import (
+    InputError,
+    check_integer,
+    check_positive,
+    check_range,
+    show,
+)
 
 __all__ = ["MAX_ZONE_POINTS", "ZONES", "ImpactZone", "gaussian_zone", "uniform_zone"]
 
@@ -70,7 +76,9 @@ def uniform_zone(low: float = 0.6, high: float = 0.9, points: int = 20) -> Impac
     hi = check_range("zone high", high, 0.0, 1.0, unit="x/L")
     n = check_integer("zone_points", points, minimum=1, maximum=MAX_ZONE_POINTS)
     if n > 1 and hi <= lo:
-        raise InputError(f"zone high = {high!r} x/L is not allowed: must exceed low = {low!r}")
+        raise InputError(
+            f"zone high = {show(high)} x/L is not allowed: must exceed low = {show(low)}"
+        )
     x = np.linspace(lo, hi, n) if n > 1 else np.array([0.5 * (lo + hi)])
     return ImpactZone(x, np.ones(n), f"uniform over {lo:g}-{hi:g} L, {n} points")
 

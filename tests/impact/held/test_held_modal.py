@@ -37,7 +37,11 @@ def check_against_cvode(model, basis, hand, position, speed):
     scale = np.max(np.abs(ref.grip_force))
     assert np.max(np.abs(total - ref.grip_force)) < 1e-6 * scale
     assert np.max(np.abs(rigid - ref.grip_force_rigid)) < 1e-6 * scale
-    assert np.max(np.abs(total)) == pytest.approx(ref.summary()["peak_grip_force_n"], rel=1e-6)
+    assert np.max(np.abs(total)) == pytest.approx(np.max(np.abs(ref.grip_force)), rel=1e-6)
+    # CVODE's peak is root-found between its output times (audit A7), so it is the exact peak
+    # over the contact (measured within 3e-9 here; the exact peak's grid and zoom alone give ~2e-9)
+    peak = ref.summary()["peak_grip_force_n"]
+    assert grip_peak(c, None) == pytest.approx(peak, rel=1e-8)
     # the exact peak over the contact is at least the peak at CVODE's output times
     assert grip_peak(c, None) >= np.max(np.abs(ref.grip_force)) * (1 - 1e-9)
 

@@ -7,7 +7,7 @@ import pytest
 from fem_racket.contact.bed_ball import BALL_STIFFNESS, BALL_ZETA, kawazoe_ball
 from fem_racket.impact.exact.engine import EngineOptions, modal_impacts
 from fem_racket.impact.offaxis import combined_modes, combined_point_vector
-from fem_racket.impact.strung.exact import strung_exact_states
+from fem_racket.impact.strung.exact import strung_exact
 from fem_racket.impact.strung.impact import strung_engine, strung_impact
 from fem_racket.impact.strung.point import strung_point
 from fem_racket.strings.bed import StringBed
@@ -68,7 +68,8 @@ def test_momentum_and_roll(standard_model, edge):
     # about the long axis is y J (the force acts at y; I_p theta' = sqrt(I_p) eta_roll').
     p = strung_point(standard_model, StringBed(edge=edge), X, Y)
     law = kawazoe_ball(MB)
-    t, x, v = strung_exact_states(p, law, MB, V, 5)
+    tc, states = strung_exact(p, law, MB, V)
+    x, v = states(np.linspace(0.0, tc, 5))
     e = -v[-1, 0] / V
     J = MB * V * (1.0 + e)
     I_p = standard_model.torsion.modes().polar_moment
