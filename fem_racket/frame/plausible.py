@@ -29,9 +29,16 @@ import numpy as np
 
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.segments import Frame
-from fem_racket.validation import InputError
+from fem_racket.validation import InputError, show
 
-__all__ = ["FREQUENCY_RANGE", "LENGTH_RANGE", "MASS_RANGE", "check_implement"]
+__all__ = [
+    "FREQUENCY_RANGE",
+    "LENGTH_RANGE",
+    "MASS_RANGE",
+    "check_fitted_f1",
+    "check_implement",
+    "mean_ei_frequency",
+]
 
 #: Allowed implement length [m].
 LENGTH_RANGE = (0.1, 2.5)
@@ -66,6 +73,44 @@ def _cells(frame: Frame | FrameMesh) -> tuple[np.ndarray, np.ndarray, np.ndarray
     return tuple(np.array([getattr(s, k) for s in segs]) for k in ("length", "EI", "rhoA"))
 
 
+def mean_ei_frequency(frame: Frame | FrameMesh) -> tuple[float, float]:
+    """The mean EI [N m^2] of ``frame`` and the first free-free bending frequency [Hz] of the
+    uniform beam of its length, mass and that EI (the estimate :func:`check_implement` bounds)."""
+    h, ei_cells, rhoa = _cells(frame)
+    length = float(np.sum(h))
+    mass = float(np.sum(rhoa * h))
+    ei = float(np.sum(ei_cells * h) / length)
+    return ei, _BETA1_L**2 / (2.0 * math.pi * length**2) * math.sqrt(ei * length / mass)
+
+
+def _digits(value: float, rounding) -> float:
+    """``value`` rounded to 4 significant digits by ``rounding`` (math.ceil or math.floor)."""
+    step = 10.0 ** (math.floor(math.log10(value)) - 3)
+    return rounding(value / step) * step
+
+
+def check_fitted_f1(f1: float, frame: Frame | FrameMesh) -> None:
+    """Refuse, naming ``f1`` [Hz], a target first frequency whose fitted ``frame`` every reader
+    of its mesh would refuse (:func:`check_implement`'s frequency estimate outside
+    :data:`FREQUENCY_RANGE`), stating the targets allowed for this racket: at fixed mass the
+    estimate is proportional to sqrt(EI), so to the fitted f1."""
+    estimate = mean_ei_frequency(frame)[1]
+    low, high = FREQUENCY_RANGE
+    if low <= estimate <= high:
+        return
+    if estimate < low:  # rounded up (down) to 4 digits, so the bound printed is allowed
+        bound = f"at least {_digits(f1 * low / estimate, math.ceil):.4g}"
+    else:
+        bound = f"at most {_digits(f1 * high / estimate, math.floor):.4g}"
+    raise InputError(
+        f"f1 = {show(f1)} Hz is not allowed: must be {bound} Hz for this racket (its mean EI "
+        f"then gives the uniform beam's first free-free frequency, {estimate:.4g} Hz here, within "
+        f"[{low:g}, {high:g}] Hz, the bound every reader of a mesh applies)",
+        parameter="f1",
+        value=f1,
+    )
+
+
 def check_implement(frame: Frame | FrameMesh, where: str = "frame") -> Frame | FrameMesh:
     """Return ``frame`` if its length, mass and first free-free frequency are those of an
     implement a ball is struck with (see the module docstring); else raise a one-line
@@ -75,8 +120,7 @@ def check_implement(frame: Frame | FrameMesh, where: str = "frame") -> Frame | F
     mass = float(np.sum(rhoa * h))
     _check(where, "length", length, LENGTH_RANGE, ("a mesh in millimetres", "mm", "m", "m"))
     _check(where, "mass", mass, MASS_RANGE, ("rhoA in g/m", "g", "kg", "kg"))
-    ei = float(np.sum(ei_cells * h) / length)
-    f1 = _BETA1_L**2 / (2.0 * math.pi * length**2) * math.sqrt(ei * length / mass)
+    ei, f1 = mean_ei_frequency(frame)
     low, high = FREQUENCY_RANGE
     if not low <= f1 <= high:
         hint = "EI in N mm^2 instead of N m^2?" if f1 > high else "limp as a string"

@@ -32,6 +32,7 @@ from fem_racket.frame.constants import FIT_ELEMENTS as DEFAULT_ELEMENTS
 from fem_racket.frame.constants import KG_CM2
 from fem_racket.frame.mesh import FrameMesh
 from fem_racket.frame.model import FrameModel
+from fem_racket.frame.plausible import check_fitted_f1
 from fem_racket.frame.segments import EI_RATIO, PAPER_EI1, Frame, Segment
 from fem_racket.validation import InputError, check_positive, show
 
@@ -247,4 +248,6 @@ def fit_racket(
     if spec.f1 is None:
         return base
     f_base = FrameModel.build(base, elements).modes(1).frequencies[0]
-    return frame(DEFAULT_EI1 * (spec.f1 / f_base) ** 2)
+    fitted = frame(DEFAULT_EI1 * (spec.f1 / f_base) ** 2)
+    check_fitted_f1(spec.f1, fitted)  # as every reader of its mesh would
+    return fitted

@@ -25,10 +25,17 @@ from functools import cached_property
 import numpy as np
 
 from fem_racket.frame.mesh import FrameMesh
+from fem_racket.frame.segments import Frame
 from fem_racket.lanczos import start_vector
 from fem_racket.validation import InputError, check_choice, check_integer
 
-__all__ = ["ORDERS", "TorsionModel", "TorsionModes"]
+#: What a frame without torsion data needs to be struck off its long axis, for messages.
+TORSION_DATA = (
+    "a frame with cell data GJ and rhoIp (torsion segments, or a mesh written by "
+    "fem-racket fit --twist-weight)"
+)
+
+__all__ = ["ORDERS", "TorsionModel", "TorsionModes", "check_off_axis"]
 
 #: Polynomial orders of the torsion elements.
 ORDERS = (1, 2)
@@ -61,6 +68,20 @@ class TorsionModes:
     def frequencies(self) -> np.ndarray:
         """Flexible natural frequencies [Hz]."""
         return self.omega / (2.0 * np.pi)
+
+
+def check_off_axis(
+    frame: FrameMesh | Frame, given: str, where: str = "this frame", allowed: str = ""
+) -> None:
+    """Refuse what the user ``given`` (``"offset = 0.02 m"``, ``"side_angle = 10.0 deg"``) on
+    ``frame`` without torsion data, naming the racket (``where``) and what is allowed there
+    (``allowed``; default: the long axis, 0) or what makes it allowed (:data:`TORSION_DATA`)."""
+    if frame.has_torsion if isinstance(frame, FrameMesh) else frame.torsion is not None:
+        return
+    raise InputError(
+        f"{given} is not allowed on {where}: it has no torsion data (GJ, rhoIp), so it is struck "
+        f"on its long axis only: {allowed or 'must be 0'}; off the axis, give {TORSION_DATA}"
+    )
 
 
 @dataclass(eq=False)

@@ -47,7 +47,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
-from fem_racket.validation import InputError, check_finite, check_range, show
+from fem_racket.validation import InputError, check_range, show
 
 __all__ = [
     "DEFAULT_BALL_INERTIA",
@@ -88,18 +88,6 @@ MAX_BALL_RADIUS = 0.1
 #: eta^2 = k_n / k_t: fitted 0.14 (0.10-0.18), Mindlin's solid sphere 1.5; ten times that bounds
 #: a tangential compliance that still belongs to a ball.
 MAX_COMPLIANCE_RATIO = 15.0
-
-
-def _non_negative(name: str, value: object, high: float) -> float:
-    """``value`` if a finite number in [0, ``high``] (the model's bound), else refused."""
-    number = check_finite(name, value)
-    if number < 0.0:
-        raise InputError(
-            f"{name} = {show(value)} is not allowed: must be a finite number >= 0",
-            parameter=name,
-            value=value,
-        )
-    return check_range(name, number, 0.0, high)
 
 
 @dataclass(frozen=True)
@@ -144,15 +132,15 @@ class Incidence:
         checks = {
             "angle": check_range("angle", self.angle, 0.0, 90.0, unit="deg", include_high=False),
             "spin": check_range("spin", self.spin, -MAX_SPIN_RPM, MAX_SPIN_RPM, unit="rpm"),
-            "friction": _non_negative("friction", self.friction, MAX_FRICTION),
+            "friction": check_range("friction", self.friction, 0.0, MAX_FRICTION),
             "ball_inertia": check_range(
                 "ball_inertia", self.ball_inertia, 0.0, 2.0 / 3.0, include_low=False
             ),
             "radius": check_range(
                 "radius", self.radius, 0.0, MAX_BALL_RADIUS, unit="m", include_low=False
             ),
-            "compliance_ratio": _non_negative(
-                "compliance_ratio", self.compliance_ratio, MAX_COMPLIANCE_RATIO
+            "compliance_ratio": check_range(
+                "compliance_ratio", self.compliance_ratio, 0.0, MAX_COMPLIANCE_RATIO
             ),
             "side_angle": check_range(
                 "side_angle",

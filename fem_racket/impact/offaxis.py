@@ -31,8 +31,9 @@ import numpy as np
 
 from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.model import FrameModel
+from fem_racket.frame.torsion import check_off_axis
 from fem_racket.impact.point import ModalData, modes_past
-from fem_racket.validation import check_finite
+from fem_racket.validation import check_finite, show
 
 __all__ = [
     "CombinedModes",
@@ -105,12 +106,13 @@ def check_offsets(
     model: FrameModel, positions: Any, offsets: Any, head: HeadOutline | None = None
 ) -> np.ndarray:
     """``offsets`` [m] as a float array if every (position x/L, offset) lies on the head (or
-    offset = 0, the long axis), else an InputError naming the first that does not."""
+    offset = 0, the long axis) of a frame with torsion data, else an InputError naming the
+    first that does not."""
     y = np.asarray(offsets, dtype=float)
     for v in np.ravel(y):
         check_finite("offset", v, "m")
     if np.any(y != 0.0):
-        _ = model.torsion  # refuses a frame without torsion data
+        check_off_axis(model.mesh, f"offset = {show(float(y[y != 0.0].flat[0]))} m")
         outline = (head or DEFAULT_HEAD).on_frame(model.mesh.length)
         x = np.broadcast_to(np.asarray(positions, dtype=float), np.broadcast(positions, y).shape)
         for xi, yi in zip(np.ravel(x), np.ravel(np.broadcast_to(y, x.shape)), strict=True):

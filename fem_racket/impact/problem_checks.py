@@ -18,6 +18,7 @@ from fem_racket.contact.law import ContactLaw
 from fem_racket.contact.presets import check_linear_options, get_law
 from fem_racket.frame.hand import check_grip
 from fem_racket.frame.model import FrameModel
+from fem_racket.frame.torsion import check_off_axis
 from fem_racket.impact.clamped import CENTRE, ClampedHead
 from fem_racket.impact.closing import check_kcb_closing
 from fem_racket.impact.incidence import check_incidence, check_kcb_normal
@@ -236,7 +237,7 @@ def check_strings(problem: Any) -> None:
     L = problem.model.mesh.length
     bed_coordinates(bed, problem.impact.position, offset, L, bed.head_centre)
     if offset != 0.0:
-        _ = problem.model.torsion  # refuses a frame without torsion data
+        check_off_axis(problem.model.mesh, f"offset = {show(offset)} m")
 
 
 def check_swing(problem: Any) -> None:
@@ -261,6 +262,13 @@ def check_oblique(problem: Any) -> None:
     follows from its normal speed (the paper's law without kcb, no string bed, the racket at
     rest), that speed within the speeds the paper gives K_CB for, named as the angle."""
     check_incidence(problem.incidence, strung=problem.strings is not None)
+    inc = problem.incidence
+    if inc is not None and inc.lateral and problem.model is not None and not problem.held:
+        # the racket's yaw under a ball across the face needs its polar moment
+        lateral = ("side_angle", "deg") if inc.side_angle != 0.0 else ("side_spin", "rpm")
+        check_off_axis(
+            problem.model.mesh, f"{lateral[0]} = {show(getattr(inc, lateral[0]))} {lateral[1]}"
+        )
     own_kcb = problem.law is not None or problem.kcb is not None or problem.strings is not None
     moving = problem.swing is not None or problem.frame_velocity is not None
     if problem.incidence is not None and not (own_kcb or moving):

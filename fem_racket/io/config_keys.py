@@ -17,6 +17,7 @@ from fem_racket.contact.parameters import LawParameter
 from fem_racket.contact.registry import LAW_NAMES, LiveView, family_parameters
 from fem_racket.frame.hand import GRIPS
 from fem_racket.frame.segments import Segment
+from fem_racket.impact.incidence import MAX_COMPLIANCE_RATIO, MAX_FRICTION
 from fem_racket.impact.simulate_linear import BASES
 from fem_racket.impact.solvers import SOLVER_NAMES
 from fem_racket.impact.system import SEPARATION_EVENTS
@@ -200,13 +201,15 @@ CORE_KEYS: dict[str, Mapping[str, Key]] = {
             _interval(0.0, 90.0, include_high=False), "angle", "ball's path from the face normal"
         ),
         "spin_rpm": Key(_number("rpm", check_finite), "spin", "incoming spin, + topspin"),
-        "friction": Key(_interval(0.0, math.inf), "friction", "sliding friction ball/strings"),
+        "friction": Key(_interval(0.0, MAX_FRICTION), "friction", "sliding friction ball/strings"),
         "ball_inertia": Key(
             _interval(0.0, 2.0 / 3.0, include_low=False), "ball_inertia", "ball's I/(m R^2)"
         ),
         "ball_radius_m": Key(_positive("m"), "ball_radius", "ball radius R"),
         "compliance_ratio": Key(
-            _interval(0.0, math.inf), "compliance_ratio", "eta^2 = k_n/k_t of the contact"
+            _interval(0.0, MAX_COMPLIANCE_RATIO),
+            "compliance_ratio",
+            "eta^2 = k_n/k_t of the contact",
         ),
         "side_angle_deg": Key(
             _interval(-90.0, 90.0, include_low=False, include_high=False),

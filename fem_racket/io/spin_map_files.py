@@ -48,7 +48,7 @@ def _netcdf(maps: Sequence[SpinMap], path: Path, parameters: Mapping[str, Any] |
         key: (dims, np.stack([m.fields[key] for m in maps]), {"units": u, "long_name": text})
         for key, (u, text) in map_fields(maps[0].incidence).items()
     }
-    variables["racket"] = (("racket",), np.arange(len(maps)), {"long_name": "racket index"})
+    variables["racket"] = (("racket",), [m.name for m in maps], {"long_name": "racket"})
     variables["offset"] = (("offset",), y, {"units": "m", "long_name": "lateral offset"})
     variables["position"] = (("position",), x, {"units": "x/L", "long_name": "impact point"})
     inc = maps[0].incidence.summary()

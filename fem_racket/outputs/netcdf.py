@@ -46,8 +46,8 @@ def write_netcdf(
         The file (replaced if it exists; pass a temporary of ``atomic_output``).
     variables : mapping
         Name -> (dimension names, float array of their sizes, attributes), in the order they are
-        written; a dimension's coordinate is the variable of its name. Dimensions are made in
-        the order first met.
+        written; a dimension's coordinate is the variable of its name (an array of strings, such
+        as racket names, is written as strings). Dimensions are made in the order first met.
     attrs : mapping
         Global attributes: strings, numbers or lists of them (netCDF cannot hold None, bool or
         a dict; they are refused, as by xarray).
@@ -66,12 +66,16 @@ def write_netcdf(
         for key, value in attrs.items():  # first, as xarray does
             _set_attribute(nc, key, value)
         for name, (dims, values, var_attrs) in variables.items():
-            values = np.asarray(values, dtype=float)
+            text = np.asarray(values).dtype.kind in "UO"  # names: strings, as xarray writes them
+            values = np.asarray(values, dtype=object if text else float)
             for dim, size in zip(dims, values.shape, strict=True):
                 if dim not in nc.dimensions:
                     nc.createDimension(dim, size)
-            var = nc.createVariable(name, "f8", dims, fill_value=np.nan)
-            var.set_auto_maskandscale(False)  # NaN is written as NaN, as xarray does
+            if text:
+                var = nc.createVariable(name, str, dims)
+            else:
+                var = nc.createVariable(name, "f8", dims, fill_value=np.nan)
+                var.set_auto_maskandscale(False)  # NaN is written as NaN, as xarray does
             for key, value in var_attrs.items():
                 _set_attribute(var, key, value)
             var[...] = values

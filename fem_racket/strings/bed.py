@@ -16,6 +16,21 @@ strung surface <= 39.4 cm x 29.2 cm; typical dimensions, an assumption). The bal
 over a disk of radius a (``load_radius_m``, 0.02 m: about the contact patch of a tennis ball at
 impact and the probe of a stringbed-stiffness meter; an assumption): the bed's deflection "at the
 impact point" is its mean over that disk.
+
+A bed too soft to be a string bed is refused (:meth:`StringBed.check_soft`), as the contact laws
+refuse a ball softer than a cushion: the bed's deflection at the head's centre under
+:data:`BED_LOAD_N` must not exceed half the head's smaller axis. Its static stiffness there is the
+closed form of the orthotropic membrane mapped to a circle (x = sqrt(N_x) xi, y = sqrt(N_y) eta
+turn the operator into a Laplacian; ``membrane.py``)::
+
+    k = 2 pi sqrt(N_x N_y) / (ln(R'/a') + 1/4),
+    R' = (L_h/(2 sqrt(N_x)) + W/(2 sqrt(N_y))) / 2,   a' = (a/sqrt(N_x) + a/sqrt(N_y)) / 2
+
+(the mapped head and contact disk as circles of their mean radius). Against the FE stiffness
+(``tests/strings/test_soft_bed.py``) it is within 1.1 % on the default head with 16 x 19 or 18 x 20,
+and up to 26 % low (soft) for a 4 x 40 pattern: stiffer for none of the beds tested, so a bed
+the check passes deflects at most the bound (the centre: the bed's softest point). k is
+proportional to T: the check is a least tension per bed.
 """
 
 from __future__ import annotations
@@ -34,7 +49,7 @@ from fem_racket.validation import (
     show,
 )
 
-__all__ = ["EDGES", "HEAD_AXIS_RANGE", "StringBed", "parse_pattern"]
+__all__ = ["BED_LOAD_N", "EDGES", "HEAD_AXIS_RANGE", "StringBed", "parse_pattern"]
 
 #: How the head ring follows the frame (:mod:`fem_racket.impact.strung.point`): uniformly with the
 #: impact point, or each edge point with the frame at its own x (bending along the hoop).
@@ -44,6 +59,13 @@ EDGES = ("point", "hoop")
 PATTERN_RANGE = (4, 40)
 #: Shortest and longest head axis [m] (rackets: about 0.25-0.35 m long, 0.2-0.27 m wide).
 HEAD_AXIS_RANGE = (0.05, 1.0)
+#: The load [N] at which a bed's deflection is checked: the order of a tennis impact's peak force
+#: (the contact laws' reference load; Cross 1999: 0.5-1.5 kN at 15-30 m/s for a ball on strings).
+#: Under it a bed may deflect at most half its head's smaller axis: the linear membrane assumes
+#: deflections small against the head (``DESIGN.md`` section 10: geometric stiffening is already
+#: 5-30 % at 10-20 mm), and a bed deflecting more than its half width is not a string bed (a
+#: strung racket's bed is of order 50 kN/m, 2 cm under 1 kN).
+BED_LOAD_N = 1e3
 
 
 def parse_pattern(text: str, name: str = "pattern") -> tuple[int, int]:
@@ -115,6 +137,42 @@ class StringBed:
                 f"load radius = {show(self.load_radius_m)} m is not allowed: must be < "
                 f"{0.5 * half:.4g} m (a quarter of the head's smaller axis)"
             )
+        self.check_soft("string tension", self.tension_n)
+
+    @property
+    def centre_stiffness_n_m(self) -> float:
+        """The closed-form static stiffness at the head's centre [N/m] (module docstring)."""
+        sx, sy = math.sqrt(self.n_x), math.sqrt(self.n_y)
+        radius = 0.25 * (self.head_length_m / sx + self.head_width_m / sy)
+        disk = 0.5 * self.load_radius_m * (1.0 / sx + 1.0 / sy)
+        return 2.0 * math.pi * sx * sy / (math.log(radius / disk) + 0.25)
+
+    @property
+    def least_tension_n(self) -> float:
+        """The least tension per string [N] at which this bed (its pattern, head, string and
+        load radius at any tension) deflects at most half its head's smaller axis under
+        :data:`BED_LOAD_N` at its centre (module docstring; k is proportional to T)."""
+        most = 0.5 * min(self.head_length_m, self.head_width_m)
+        return self.tension_n * BED_LOAD_N / (most * self.centre_stiffness_n_m)
+
+    def check_soft(self, name: str, tension: object) -> float:
+        """``tension`` [N] as a float, or refused naming ``name`` when this bed strung at it
+        would be softer than a string bed (:attr:`least_tension_n`)."""
+        value = check_range(name, tension, 1.0, 1e16, unit="N")
+        least = self.least_tension_n
+        if value < least:
+            most = 0.5 * min(self.head_length_m, self.head_width_m)
+            k = self.centre_stiffness_n_m * value / self.tension_n
+            raise InputError(
+                f"{name} = {show(tension)} N is not allowed: must be at least {least:.4g} N for a "
+                f"{self.pattern} bed on a {self.head_length_m:g} m x {self.head_width_m:g} m head "
+                f"(at {show(tension)} N it deflects {BED_LOAD_N / k:.3g} m under "
+                f"{BED_LOAD_N:g} N at its centre, more than {most:.4g} m, half the head's "
+                "smaller axis)",
+                parameter=name,
+                value=tension,
+            )
+        return value
 
     @property
     def material(self) -> StringMaterial:

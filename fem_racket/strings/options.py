@@ -10,12 +10,13 @@ lumped K_CB stays).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
 
 from fem_racket.strings.bed import HEAD_AXIS_RANGE, StringBed, parse_pattern
 from fem_racket.validation import InputError, check_positive, check_range, show
 
-__all__ = ["MAX_STRING_TENSION_N", "STRING_OPTIONS", "bed_from_options"]
+__all__ = ["MAX_STRING_TENSION_N", "STRING_OPTIONS", "bed_from_options", "check_tension"]
 
 #: Largest string tension [N] the options take: rackets are strung at about 180-300 N (40-65
 #: lb), and tennis strings break at a few hundred N (an assumption of this bound: about 500-700
@@ -72,9 +73,14 @@ def _axes(area: Any, length: Any, width: Any) -> tuple[float, float]:
     return axes
 
 
-def _tension(value: Any) -> float:
-    """``--string-tension`` [N], refused beyond :data:`MAX_STRING_TENSION_N`."""
-    return check_range("string tension", value, 1.0, MAX_STRING_TENSION_N, unit="N")
+def check_tension(name: str, value: Any, beds: Sequence[StringBed] = ()) -> float:
+    """A string tension [N] named ``name`` (``--string-tension``, a run file's or a sweep's),
+    refused beyond :data:`MAX_STRING_TENSION_N` and below the least tension of each of ``beds``
+    (:meth:`StringBed.check_soft`: a bed softer than a string bed)."""
+    number = check_range(name, value, 1.0, MAX_STRING_TENSION_N, unit="N")
+    for bed in beds:
+        bed.check_soft(name, value)
+    return number
 
 
 def bed_from_options(values: dict[str, Any]) -> StringBed | None:
@@ -90,7 +96,7 @@ def bed_from_options(values: dict[str, Any]) -> StringBed | None:
     )
     tension = values["string_tension"]
     return StringBed(
-        tension_n=d.tension_n if tension is None else _tension(tension),
+        tension_n=d.tension_n if tension is None else check_tension("string tension", tension),
         mains=mains,
         crosses=crosses,
         head_length_m=length,

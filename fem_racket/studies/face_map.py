@@ -24,6 +24,7 @@ import numpy as np
 from fem_racket.contact.linear import DEFAULT_BALL_MASS, Ball
 from fem_racket.frame.head import DEFAULT_HEAD, HeadOutline
 from fem_racket.frame.model import DEFAULT_MODES, FrameModel
+from fem_racket.frame.torsion import check_off_axis
 from fem_racket.impact.closing import closing_speed
 from fem_racket.impact.problem_batch import ProblemBatch
 from fem_racket.impact.reduction import DEFAULT_TOLERANCE
@@ -151,6 +152,10 @@ def power_area(x_m: np.ndarray, y_m: np.ndarray, e: np.ndarray, fraction: float)
     return float(np.sum(np.outer(_weights(y_m), _weights(x_m)) * inside) * 1e4)
 
 
+#: What a racket without torsion data is mapped with (its allowed "offsets").
+AXIS_ONLY = "map it without offsets (along its axis)"
+
+
 def face_map(
     frame: Any = None,
     *,
@@ -206,6 +211,13 @@ def face_map(
     x = increasing("positions", positions, 2)
     y = increasing("offsets", offsets, 2)
     model = frame if isinstance(frame, FrameModel) else FrameModel.build(frame, elements or 20)
+    if np.any(y != 0.0):  # off the long axis: named with this racket
+        check_off_axis(
+            model.mesh,
+            f"offsets = {show(y.tolist())} m",
+            where=f"racket {name!r}",
+            allowed=AXIS_ONLY,
+        )
     length = model.mesh.length
     head = head.on_frame(length)
     swing = Swing.from_speed(racket_speed, length, reference=reference, pivot=pivot)

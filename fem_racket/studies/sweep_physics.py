@@ -32,9 +32,9 @@ from fem_racket.impact.incidence import Incidence
 from fem_racket.impact.incidence_idle import refuse_idle_contact
 from fem_racket.impact.problem_checks import bed_coordinates
 from fem_racket.strings.bed import StringBed
-from fem_racket.strings.options import MAX_STRING_TENSION_N
+from fem_racket.strings.options import check_tension
 from fem_racket.studies.grid_values import OBLIQUE_AXES, STRING_AXES, pattern_label
-from fem_racket.validation import InputError, check_range, show
+from fem_racket.validation import InputError, show
 
 __all__ = [
     "LATERAL_AXES",
@@ -98,8 +98,10 @@ def check_physics(values: dict[str, Any], length: float) -> None:
             value=values["racket_speed"],
         )
     if values.get("string_tension") is not None:
+        codes = np.atleast_1d(1619 if values.get("pattern") is None else values["pattern"])
+        beds = [StringBed(mains=int(c) // 100, crosses=int(c) % 100) for c in codes]
         for tension in np.atleast_1d(values["string_tension"]).tolist():
-            check_range("string_tension", tension, 1.0, MAX_STRING_TENSION_N, unit="N")
+            check_tension("string_tension", tension, beds)  # too soft a bed: before any work
     bed = StringBed()  # every point struck on the bed, as the problem checks it
     offsets = np.atleast_1d(0.0 if values.get("offset") is None else values["offset"])
     for x in np.atleast_1d(values["position"]):

@@ -35,3 +35,21 @@ def test_inconsistent_specification_is_one_line_and_no_file(capsys, tmp_path):
     assert code == 2
     assert "swing weight = 600 kg cm^2 is not allowed" in err and len(err.splitlines()) == 1
     assert not out.exists()
+
+
+def test_f1_every_reader_refuses_is_refused_at_fit(capsys, tmp_path):
+    # The readers bound the uniform beam's f1 from the mean EI to [1, 50000] Hz
+    # (frame/plausible.py); on this racket that estimate is 0.9166 of the FE f1, so fit refuses
+    # f1 below 1/0.9166 = 1.091 Hz, with that bound (rounded up), and writes nothing.
+    out = tmp_path / "r.vtu"
+    code, _, err = run(capsys, "fit", *SPEC, "--f1", "1", "--out", str(out))
+    assert code == 2 and len(err.splitlines()) == 1 and not out.exists()
+    assert err.strip() == (
+        "fem-racket fit: error: f1 = 1.0 Hz is not allowed: must be at least 1.091 Hz for this "
+        "racket (its mean EI then gives the uniform beam's first free-free frequency, 0.9166 Hz "
+        "here, within [1, 50000] Hz, the bound every reader of a mesh applies)"
+    )
+    # the bound printed is allowed, and the mesh it writes is read by modes and simulate
+    run_json(capsys, "fit", *SPEC, "--f1", "1.091", "--out", out)
+    assert run(capsys, "modes", "--mesh", str(out), "--json")[0] == 0
+    assert run(capsys, "simulate", "--mesh", str(out), "--json")[0] == 0

@@ -97,3 +97,19 @@ def test_impossible_balance_is_one_clear_error():
         fit_racket(0.68, 0.36, 0.6, 300 * KG_CM2)
     with pytest.raises(InputError, match="balance = 0.9 m is not allowed"):
         fit_racket(0.68, 0.36, 0.9, 300 * KG_CM2)
+
+
+def test_fit_refuses_an_f1_the_implement_check_refuses():
+    # Library and CLI alike: the fitted frame's mean-EI estimate of f1 is proportional to the
+    # target (EI scales as f1^2), so the printed least target passes check_implement exactly
+    # where the readers start to accept it (estimate / f1 = 0.9166 here: 1/0.9166 = 1.091 Hz and
+    # 50 kHz/0.9166 = 54.55 kHz; a target beyond the CLI's 3 kHz only in the library).
+    from fem_racket.frame.plausible import check_implement
+
+    spec = (0.685, 0.318, 0.320, 316 * KG_CM2)
+    with pytest.raises(InputError, match=r"^f1 = 1.09 Hz is not allowed: must be at least 1.091"):
+        fit_racket(*spec, 1.09)
+    check_implement(fit_racket(*spec, 1.091))
+    with pytest.raises(InputError, match=r"^f1 = 60000.0 Hz .* must be at most 5.454e\+04 Hz"):
+        fit_racket(*spec, 6e4)
+    check_implement(fit_racket(*spec, 5.454e4))

@@ -15,7 +15,7 @@ from fem_racket.impact.incidence import (
 from fem_racket.validation import InputError
 
 SPIN = "rpm is not allowed: must lie in [-50000, 50000]"
-SIGN = "is not allowed: must be a finite number >= 0"
+SIGN = "is not allowed: must lie in [0, 15]"
 
 
 @pytest.mark.parametrize(

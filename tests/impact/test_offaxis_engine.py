@@ -90,5 +90,7 @@ def test_refusals(standard_model):
     with pytest.raises(InputError, match=r"^offset = 0.2 m is not allowed"):
         impacts(standard_model, position=0.74, offset=0.2)
     bare = FrameModel.build(Frame((Segment(0.68, 146.0, 0.5),)))
-    with pytest.raises(InputError, match="no cell data GJ"):
+    with pytest.raises(
+        InputError, match=r"^offset = 0.05 m is not allowed on this frame: it has no"
+    ):
         impacts(bare, position=0.74, offset=0.05)

@@ -145,7 +145,10 @@ def map_rackets(study: Callable[..., Any], args: argparse.Namespace, rackets: li
 
 def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: list) -> int:
     """``--angle`` ...: the oblique ball's spin over the face."""
+    import numpy as np
+
     from fem_racket.cli.options.incidence_checks import refuse_idle_options
+    from fem_racket.frame.torsion import check_off_axis
     from fem_racket.impact.incidence import Incidence
     from fem_racket.io.spin_map_files import write_spin_map
     from fem_racket.studies.grid import as_values
@@ -159,6 +162,15 @@ def _run_spin(args: argparse.Namespace, outs: list[Path], law: Any, rackets: lis
     refuse_idle_options(args, {d: d for d in OBLIQUE})  # --friction on a head-on, spinless ball
     positions = as_values("position", args.positions if "positions" in given else SPIN_POSITIONS)
     offsets = as_values("offset", args.offsets or SPIN_OFFSETS)
+    if np.any(np.asarray(offsets) != 0.0):  # each racket struck off its axis: named
+        given_offsets = (
+            f"offsets = {args.offsets} m"
+            if args.offsets
+            else f"offsets = {SPIN_OFFSETS} m (the spin map's default: no --offsets given)"
+        )
+        for name, frame in rackets:
+            why = "the spin map's offsets cross the face (simulate --angle strikes on the axis)"
+            check_off_axis(frame, given_offsets, where=f"racket {name!r}", allowed=why)
     options = {**map_impact(args), "law": law}
     if law is not None:
         for dest in ("kcb", "zeta", "separation", "modes"):

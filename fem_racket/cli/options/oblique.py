@@ -26,6 +26,8 @@ from fem_racket.impact.incidence import (
     DEFAULT_BALL_RADIUS,
     DEFAULT_COMPLIANCE_RATIO,
     DEFAULT_FRICTION,
+    MAX_COMPLIANCE_RATIO,
+    MAX_FRICTION,
     Incidence,
 )
 from fem_racket.outputs import provenance
@@ -52,14 +54,16 @@ OBLIQUE_OPTIONS = {
     "spin": ("--spin", "spin", "RPM", "incoming spin [rpm]: positive = topspin (the ball's "
              "surface on the strings' side moving backward, the sense of rolling along them), "
              "negative = backspin (default 0)"),
-    "friction": ("--friction", "friction", "MU", "sliding friction ball/strings [-], >= 0 "
+    "friction": ("--friction", "friction", "MU", "sliding friction ball/strings [-], "
+                 f"0..{MAX_FRICTION:g} "
                  f"(default {DEFAULT_FRICTION:g}, Cross 2003)"),
     "ball_inertia": ("--ball-inertia", "ball_inertia", "I_OVER_MR2", "ball's moment of inertia "
                      f"I/(m R^2) [-], 0..2/3 (default {DEFAULT_BALL_INERTIA:g}: a thick shell)"),
     "ball_radius": ("--ball-radius", "radius", "M", "ball radius R [m] (default "
                     f"{DEFAULT_BALL_RADIUS:g})"),
     "compliance_ratio": ("--compliance-ratio", "compliance_ratio", "ETA2", "normal over "
-                         "tangential contact stiffness eta^2 = k_n/k_t [-], >= 0 (default "
+                         "tangential contact stiffness eta^2 = k_n/k_t [-], "
+                         f"0..{MAX_COMPLIANCE_RATIO:g} (default "
                          f"{DEFAULT_COMPLIANCE_RATIO:g}, fitted to clamped-head spins; 0: rigid)"),
     "side_angle": ("--side-angle", "side_angle", "DEG", "angle of the ball's path from the plane "
                    "of the long axis and the face normal [deg], -90..90, positive toward the "

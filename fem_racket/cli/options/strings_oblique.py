@@ -15,7 +15,8 @@ from typing import TYPE_CHECKING, Any
 
 from fem_racket.cli.options.oblique import oblique_rows, write_oblique
 from fem_racket.cli.options.output import print_result
-from fem_racket.cli.options.strings import strung_from_args
+from fem_racket.cli.options.runfile_named import where_set
+from fem_racket.cli.options.strings import STRING_DESTS, strung_from_args
 from fem_racket.cli.text import significant
 from fem_racket.validation import InputError
 
@@ -39,7 +40,7 @@ def run_strung_oblique(
     for dest in REFUSED:
         if getattr(args, dest, None):
             raise InputError(
-                f"--{dest.replace('_', '-')} is not allowed with a string bed: the strung racket "
+                f"{where_set(args, dest)} is not allowed with {_bed(args)}: the strung racket "
                 "is free and at rest"
             )
     result = strung_from_args(args, strings, model, incidence)
@@ -50,6 +51,14 @@ def run_strung_oblique(
     if args.out:
         write_oblique(args, result, summary, files)
     return print_result(args, summary, _rows, files)
+
+
+def _bed(args: argparse.Namespace) -> str:
+    """The string bed, for a message: named by its first key when a run file set it
+    (``the string bed of strings.tension_n (run.toml)``)."""
+    files = getattr(args, "file_options", {})
+    keys = [d for d in STRING_DESTS if d in files and getattr(args, d, None) is not None]
+    return f"the string bed of {where_set(args, keys[0])}" if keys else "a string bed"
 
 
 def _rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
