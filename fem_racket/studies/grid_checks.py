@@ -19,13 +19,14 @@ from fem_racket.frame.segments import (
     standard_ei1_range,
     standard_frame,
 )
+from fem_racket.frame.torsion import check_off_axis
 from fem_racket.impact.closing import check_kcb_closing, closing_speed
 from fem_racket.impact.incidence import Incidence, check_kcb_normal
 from fem_racket.impact.swing import Swing, check_racket_speed
 from fem_racket.studies.grid_values import STRING_AXES
 from fem_racket.studies.map_options import check_at_rest
 from fem_racket.studies.sweep_physics import LATERAL_AXES, given
-from fem_racket.validation import InputError, check_range
+from fem_racket.validation import check_range, show
 
 __all__ = ["check_incidences", "check_offsets", "check_rigidity", "check_swings"]
 
@@ -66,16 +67,11 @@ def check_offsets(spec: Any) -> None:
     if np.all(y == 0.0) and not across:
         return
     frame = spec.frame if spec.frame is not None else standard_frame()
-    if not (frame.torsion if isinstance(frame, Frame) else frame.has_torsion):
-        if across:
-            raise InputError(
-                f"{across[0]} is not allowed with this frame: it has no torsion data (GJ, "
-                "rhoIp), which the racket's yaw under a ball across the face needs"
-            )
-        raise InputError(
-            "offset is not allowed with this frame: it has no torsion data (GJ, rhoIp) and "
-            "takes impacts on the long axis only"
-        )
+    name = across[0] if across else "offset"
+    values = np.atleast_1d(spec.values[name]).tolist()
+    unit = {"offset": " m", "side_angle": " deg", "side_spin": " rpm"}[name]
+    given = f"{name} = {show(values[0] if len(values) == 1 else values)}{unit}"
+    check_off_axis(frame, given, allowed="sweep it at 0")  # the racket's yaw needs GJ, rhoIp
     if np.all(y == 0.0):
         return
     head = DEFAULT_HEAD.on_frame(float(frame.length))

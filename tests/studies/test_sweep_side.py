@@ -4,6 +4,8 @@ sweep bit for bit, and what cannot combine is refused in one line before any wor
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
@@ -137,7 +139,8 @@ def test_a_frame_without_torsion_data_is_refused_before_any_work(tmp_path):
     from fem_racket.frame.segments import Frame, standard_frame
 
     bare = Frame(standard_frame().segments)  # no GJ, rhoIp: no yaw inertia
-    with pytest.raises(InputError, match=r"^side_spin is not allowed with this frame: it has no"):
+    words = r"^side_spin = \[0\.0, 500\.0\] rpm is not allowed on this frame: it has no torsion"
+    with pytest.raises(InputError, match=words):
         sweep_result(bare, angle=20.0, side_spin="0,500", output=tmp_path / "s.nc")
     assert not any(tmp_path.iterdir())  # no checkpoint folder: refused before any work
     ds = sweep_result(bare, angle=20.0, side_angle=0.0, backend="serial").to_xarray()
@@ -151,3 +154,21 @@ def test_kcb_is_the_normal_impacts():
     for b in ds.side_angle.values:
         ref = simulate_oblique(incidence=Incidence(angle=60.0, side_angle=b), speed=25.0)
         _close(float(ds.kcb_n_m.sel(side_angle=b)), ref.summary()["kcb_n_m"])
+
+
+@pytest.mark.parametrize(
+    ("axes", "words"),
+    [
+        ({"offset": "0,0.02"}, "offset = [0.0, 0.02] m is not allowed on this frame"),
+        ({"offset": 0.02}, "offset = 0.02 m is not allowed on this frame"),
+        ({"angle": 20.0, "side_angle": "0,10"}, "side_angle = [0.0, 10.0] deg is not allowed"),
+    ],
+)
+def test_the_refusal_without_torsion_data_names_the_values(tmp_path, axes, words):
+    from fem_racket.frame.segments import Frame, standard_frame
+
+    bare = Frame(standard_frame().segments)
+    with pytest.raises(InputError, match="^" + re.escape(words)) as err:
+        sweep_result(bare, output=tmp_path / "s.nc", **axes)
+    assert "sweep it at 0; off the axis, give a frame with cell data GJ" in str(err.value)
+    assert not any(tmp_path.iterdir())
