@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy.integrate import trapezoid
 
 from fem_racket.impact.tangential.normal import NormalHistory
 from fem_racket.impact.tangential.scalar import scalar_force
@@ -58,7 +59,7 @@ def stiffness_index(normal: NormalHistory, t0: float, size: float, floor: float,
     t = np.asarray(normal.grid, dtype=float)
     t = np.concatenate([[t0], t[(t > t0) & (t < normal.end)], [normal.end]])
     rho = np.maximum(ratio * np.maximum(normal.smooth_force(t), 0.0), floor)
-    return size * float(np.trapezoid(1.0 / rho, t))
+    return size * float(trapezoid(1.0 / rho, t))  # scipy's: numpy's is numpy >= 2 only
 
 
 def _budget(c, t0: float):
@@ -70,8 +71,8 @@ def _budget(c, t0: float):
         if count[0] > MAX_EVALUATIONS:
             raise AccuracyError(
                 f"friction = {show(c.friction)} is not allowed for this impact: the tangential "
-                f"slide from {t0 * 1e3:.4g} ms took over {MAX_EVALUATIONS} steps of its "
-                f"integrator at rtol {RTOL:g} without reaching its end",
+                f"slide from {t0 * 1e3:.4g} ms took over {MAX_EVALUATIONS} evaluations "
+                f"of its right-hand side at rtol {RTOL:g} without reaching its end",
                 parameter="friction",
                 value=c.friction,
             )
