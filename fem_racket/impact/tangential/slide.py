@@ -33,7 +33,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.integrate import trapezoid
 
 from fem_racket.impact.tangential.normal import NormalHistory
 from fem_racket.impact.tangential.scalar import scalar_force
@@ -59,7 +58,8 @@ def stiffness_index(normal: NormalHistory, t0: float, size: float, floor: float,
     t = np.asarray(normal.grid, dtype=float)
     t = np.concatenate([[t0], t[(t > t0) & (t < normal.end)], [normal.end]])
     rho = np.maximum(ratio * np.maximum(normal.smooth_force(t), 0.0), floor)
-    return size * float(trapezoid(1.0 / rho, t))  # scipy's: numpy's is numpy >= 2 only
+    f = 1.0 / rho  # the trapezoidal rule as numpy's trapezoid (numpy >= 2 only) writes it
+    return size * float((np.diff(t) * (f[1:] + f[:-1]) / 2.0).sum())
 
 
 def _budget(c, t0: float):
