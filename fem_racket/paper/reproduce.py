@@ -16,7 +16,7 @@ contact times against the paper's 6-3 ms. Its outputs belong in their own folder
 default: ``output/paper/<law>/``).
 
 Its own earlier outputs are replaced without ``overwrite`` (recognised by their provenance,
-:func:`fem_racket.paper.owned.written_by_fem_racket`); any other existing file is refused before
+:func:`fem_racket.outputs.owned.written_by_fem_racket`); any other existing file is refused before
 any work unless ``overwrite``.
 """
 
